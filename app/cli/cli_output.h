@@ -1,0 +1,19 @@
+#pragma once
+// Small helpers every trilho-cli command shares: exit statuses and UTF-8 output.
+#include <QString>
+
+namespace trilho::cli {
+
+/// Exit statuses, the same for every command (issue 2 and 4).
+enum Exit : int {
+    kOk = 0,
+    kCompileErrors = 1,
+    kUsage = 2,  ///< usage error, or a file that cannot be read
+    kAlarm = 3,
+    kTimeLimit = 4,
+};
+
+void out(const QString& text);  ///< stdout, UTF-8, no newline added
+void err(const QString& text);  ///< stderr, UTF-8, no newline added
+
+}  // namespace trilho::cli

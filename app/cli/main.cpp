@@ -1,0 +1,37 @@
+// trilho-cli <command> [options]: the headless face of trilho.
+#include <QCoreApplication>
+
+#include "app/cli/cli_output.h"
+#include "app/cli/commands.h"
+
+namespace {
+const char* kUsage =
+    "usage: trilho-cli <command> [options]\n"
+    "commands:\n"
+    "  compile   check a .G program and list every diagnostic\n"
+    "run 'trilho-cli <command> --help' for the options of a command\n";
+}
+
+int main(int argc, char* argv[]) {
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("trilho-cli"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(TRILHO_VERSION));
+    QStringList args = QCoreApplication::arguments();
+    if (args.size() < 2) {
+        trilho::cli::err(QString::fromLatin1(kUsage));
+        return trilho::cli::kUsage;
+    }
+    const QString command = args.takeAt(1);
+    args[0] = QStringLiteral("trilho-cli ") + command;
+    if (command == QLatin1String("compile")) return trilho::cli::compileCommand(args);
+    if (command == QLatin1String("--help") || command == QLatin1String("-h")) {
+        trilho::cli::out(QString::fromLatin1(kUsage));
+        return trilho::cli::kOk;
+    }
+    if (command == QLatin1String("--version")) {
+        trilho::cli::out(QStringLiteral("trilho-cli %1\n").arg(QStringLiteral(TRILHO_VERSION)));
+        return trilho::cli::kOk;
+    }
+    trilho::cli::err(QStringLiteral("trilho-cli: unknown command '%1'\n%2").arg(command, QString::fromLatin1(kUsage)));
+    return trilho::cli::kUsage;
+}

@@ -1,0 +1,83 @@
+#include "core/diagnostic_text.h"
+
+#include <QCoreApplication>
+
+namespace trilho {
+namespace {
+
+constexpr const char* kContext = "Diagnostic";
+
+// Placeholders: %1 the block number (or the file line when the block has none),
+// %2 the offending text, %3 a value (a limit, the previous n, a digit count).
+constexpr const char* kSource[kMessageCount] = {
+    QT_TRANSLATE_NOOP("Diagnostic", "every line must start with n (found '%2')"),
+    QT_TRANSLATE_NOOP("Diagnostic", "wrong n sequence on line %1: must be greater than %3"),
+    QT_TRANSLATE_NOOP("Diagnostic", "sequence number alone on line %1"),
+    QT_TRANSLATE_NOOP("Diagnostic", "separating spaces required on line %1 (found '%2')"),
+    QT_TRANSLATE_NOOP("Diagnostic", "there can be no more commands after %2 on line %1"),
+    QT_TRANSLATE_NOOP("Diagnostic", "g00 requires an x word on line %1"),
+    QT_TRANSLATE_NOOP("Diagnostic", "g01 requires an x word on line %1"),
+    QT_TRANSLATE_NOOP("Diagnostic", "g04 without x word (time) on line %1"),
+    QT_TRANSLATE_NOOP("Diagnostic", "g92 requires an x word on line %1"),
+    QT_TRANSLATE_NOOP("Diagnostic", "m03 without x word (block) on line %1"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid value after g04 on line %1: the time %2 is negative"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid value after m03 on line %1: the block %2 is negative"),
+    QT_TRANSLATE_NOOP("Diagnostic", "negative f command impossible on line %1 (%2)"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid g command on line %1 (%2)"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid m command on line %1 (%2)"),
+    QT_TRANSLATE_NOOP("Diagnostic", "g01 or g00 not defined on line %1"),
+    QT_TRANSLATE_NOOP("Diagnostic", "g01 needs f defined on line %1"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid character or g00 does not take f on line %1"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid character on line %1: '%2'"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid character on line %1: malformed number '%2'"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid character on line %1: '%2' must have exactly %3 digits"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid character on line %1: comment not closed"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid character on line %1: word '%2' repeated"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid character on line %1: n must be the first word ('%2')"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid value after m03 on line %1: '%2' is not a block number"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid character on line %1: number '%2' longer than %3 digits"),
+    QT_TRANSLATE_NOOP("Diagnostic", "program requires m02 (END) at the end"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid GO TO on line %1: block n%2 does not exist"),
+    QT_TRANSLATE_NOOP("Diagnostic", "feed f%2 out of range on line %1: must be above 0 and at most 100 %"),
+    QT_TRANSLATE_NOOP("Diagnostic", "target %2 mm on line %1 is beyond the soft limit %3 mm"),
+    QT_TRANSLATE_NOOP("Diagnostic", "axis %2 does not exist on this machine (line %1)"),
+};
+
+QString number(double v) { return QString::number(v, 'g', 12); }
+
+}  // namespace
+
+const char* diagnosticSourceText(MessageId id) { return kSource[static_cast<int>(id)]; }
+
+QString substitute(const QString& text, std::initializer_list<QString> args) {
+    QString out;
+    out.reserve(text.size() + 16);
+    for (qsizetype i = 0; i < text.size(); ++i) {
+        QChar c = text[i];
+        if (c == u'%' && i + 1 < text.size() && text[i + 1].isDigit() && text[i + 1] != u'0') {
+            auto index = static_cast<std::size_t>(text[i + 1].digitValue() - 1);
+            if (index < args.size()) {
+                out += *(args.begin() + index);
+                ++i;
+                continue;
+            }
+        }
+        out += c;
+    }
+    return out;
+}
+
+QString diagnosticMessage(const Diagnostic& d) {
+    const QString where = QString::number(d.n >= 0 ? static_cast<qint64>(d.n) : static_cast<qint64>(d.line));
+    const QString text = QCoreApplication::translate(kContext, diagnosticSourceText(d.id));
+    return substitute(text, {where, QString::fromUtf8(d.text), number(d.value)});
+}
+
+QString compileSummary(std::size_t errorCount) {
+    if (errorCount == 0)
+        return QCoreApplication::translate(kContext, "Compilation completed successfully");
+    return substitute(QCoreApplication::translate(kContext, "%1 compile error(s)"),
+                      {QString::number(errorCount)});
+}
+
+}  // namespace trilho

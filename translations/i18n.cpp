@@ -1,0 +1,34 @@
+#include "translations/i18n.h"
+
+#include <QCoreApplication>
+#include <QTranslator>
+
+namespace trilho {
+namespace {
+QTranslator*& current() {
+    static QTranslator* translator = nullptr;
+    return translator;
+}
+}  // namespace
+
+QStringList availableLanguages() { return {QStringLiteral("en"), QStringLiteral("pt_BR"), QStringLiteral("es")}; }
+
+bool installLanguage(const QString& lang) {
+    if (!availableLanguages().contains(lang)) return false;
+    if (current()) {
+        QCoreApplication::removeTranslator(current());
+        delete current();
+        current() = nullptr;
+    }
+    if (lang == QLatin1String("en")) return true;
+    auto* translator = new QTranslator(QCoreApplication::instance());
+    if (!translator->load(QStringLiteral(":/i18n/trilho_%1.qm").arg(lang))) {
+        delete translator;
+        return false;
+    }
+    QCoreApplication::installTranslator(translator);
+    current() = translator;
+    return true;
+}
+
+}  // namespace trilho
