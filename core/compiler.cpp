@@ -196,7 +196,7 @@ private:
             report(MessageId::NAlone, col(p));
             return false;
         }
-        int rank = 0;  // classic word order: g, x (y), f, m
+        int rank = 0;  // classic word order: g or m first, then x (y), then f
         while (p < e) {
             if (*p != ' ' || p + 1 == e || p[1] == ' ') {
                 report(MessageId::SpaceRequired, col(*p == ' ' ? p + 1 : p), charAt(*p == ' ' ? p + 1 : p));
@@ -214,7 +214,7 @@ private:
                     slot = &w.y, width = 4, wordRank = 3, sign = true;
                     break;
                 case 'f': slot = &w.f, width = 3, wordRank = 4, sign = true; break;
-                case 'm': slot = &w.m, width = 2, wordRank = 5; break;
+                case 'm': slot = &w.m, width = 2, wordRank = 1; break;
                 default:
                     if (isAxisLetter(*p)) return unknownAxis(p);
                     report(MessageId::InvalidChar, col(p), charAt(p));
@@ -240,6 +240,8 @@ private:
         const char* q = p + 1;
         bool negative = false;
         if (sign && q < lineEnd_ && *q == '-') negative = true, ++q;
+        // The VB read f as three characters, so "f-10" is a (negative) f of width 3.
+        if (negative && *p == 'f') --width;
         int digits = 0;
         int value = 0;
         while (q < lineEnd_ && isDigit(*q) && digits <= width) value = value * 10 + (*q - '0'), ++q, ++digits;
@@ -278,6 +280,7 @@ private:
         while (p < e && isBlank(*p)) ++p;
         if (p < e && *p == '%') return false;  // tape marks: ignored
         bool anyWord = false;
+        const char* nEnd = p;
         while (true) {
             while (p < e && isBlank(*p)) ++p;
             if (p == e) break;
@@ -335,6 +338,10 @@ private:
             }
             const char* after = s.end;
             bool endsWell = after == e || isBlank(*after) || *after == '(' || *after == ';' || isAlpha(*after);
+            if (s.ok && signOk && !endsWell && *after != '.' && !isDigit(*after) && *after != '-' && *after != '+') {
+                report(MessageId::InvalidChar, col(after), charAt(after));
+                return false;
+            }
             if (!s.ok || !signOk || !endsWell) {
                 report(MessageId::MalformedNumber, col(p), wordAt(p));
                 return false;
@@ -343,13 +350,13 @@ private:
             slot->value = s.value;
             slot->column = col(p);
             slot->integral = s.fracDigits == 0 && !s.hasPoint;
-            if (letter == 'n') acceptN(s.value, col(p));
+            if (letter == 'n') acceptN(s.value, col(p)), nEnd = after;
             anyWord = true;
             p = after;
         }
         if (!anyWord) return false;  // blank or comment-only line: no block
         if (!w.any()) {
-            report(MessageId::NAlone, w.n.column + 1);
+            report(MessageId::NAlone, col(nEnd));
             return false;
         }
         return true;

@@ -1,0 +1,61 @@
+// Every diagnostic message has a pt_BR and an es translation, and pt_BR gives the 1996 texts.
+#include <gtest/gtest.h>
+
+#include <QCoreApplication>
+
+#include "core/compiler.h"
+#include "core/diagnostic_text.h"
+#include "translations/i18n.h"
+
+namespace trilho {
+namespace {
+
+QCoreApplication& app() {
+    static int argc = 1;
+    static char name[] = "translation_test";
+    static char* argv[] = {name, nullptr};
+    static QCoreApplication instance(argc, argv);
+    return instance;
+}
+
+class Translations : public ::testing::TestWithParam<const char*> {
+protected:
+    void SetUp() override { app(); }
+    void TearDown() override { installLanguage(QStringLiteral("en")); }
+};
+
+TEST_P(Translations, EveryMessageIsTranslated) {
+    ASSERT_TRUE(installLanguage(QString::fromLatin1(GetParam())));
+    for (int i = 0; i < kMessageCount; ++i) {
+        const char* source = diagnosticSourceText(static_cast<MessageId>(i));
+        const QString translated = QCoreApplication::translate("Diagnostic", source);
+        EXPECT_NE(translated, QString::fromUtf8(source)) << GetParam() << ": " << source;
+        EXPECT_FALSE(translated.isEmpty());
+    }
+    EXPECT_NE(compileSummary(0), QStringLiteral("Compilation completed successfully"));
+    EXPECT_NE(compileSummary(3), QStringLiteral("3 compile error(s)"));
+}
+
+INSTANTIATE_TEST_SUITE_P(Languages, Translations, ::testing::Values("pt_BR", "es"));
+
+TEST(TranslationsPtBr, OriginalTexts) {
+    app();
+    ASSERT_TRUE(installLanguage(QStringLiteral("pt_BR")));
+    Program p = compile("n0020 g90\nn0010 g05\n", {Dialect::Classic, {}});
+    ASSERT_EQ(p.diagnostics.size(), 3u);
+    EXPECT_EQ(diagnosticMessage(p.diagnostics[0]), QStringLiteral("Erro: Seqüência n errada na linha 10"));
+    EXPECT_EQ(diagnosticMessage(p.diagnostics[1]), QStringLiteral("Erro: Comando g inválido na linha 10"));
+    EXPECT_EQ(diagnosticMessage(p.diagnostics[2]), QStringLiteral("Erro: Programa requer m02 (END) no final"));
+    EXPECT_EQ(compileSummary(3), QStringLiteral("Há 3 erro(s) de compilação !"));
+    EXPECT_EQ(compileSummary(0), QStringLiteral("Compilação completada com sucesso !"));
+    installLanguage(QStringLiteral("en"));
+    EXPECT_EQ(diagnosticMessage(p.diagnostics[1]), QStringLiteral("invalid g command on line 10 (g05)"));
+}
+
+TEST(TranslationsLanguages, UnknownLanguageIsRefused) {
+    app();
+    EXPECT_FALSE(installLanguage(QStringLiteral("xx")));
+}
+
+}  // namespace
+}  // namespace trilho
