@@ -22,22 +22,35 @@ enum class Op : std::uint8_t {
 
 constexpr std::string_view opName(Op op) {
     switch (op) {
-        case Op::Rapid: return "rapid";
-        case Op::Linear: return "linear";
-        case Op::Dwell: return "dwell";
-        case Op::Absolute: return "absolute";
-        case Op::Incremental: return "incremental";
-        case Op::SetZero: return "set_zero";
-        case Op::ResetZero: return "reset_zero";
-        case Op::Feed: return "feed";
-        case Op::Stop: return "stop";
-        case Op::End: return "end";
-        case Op::Goto: return "goto";
+        case Op::Rapid:
+            return "rapid";
+        case Op::Linear:
+            return "linear";
+        case Op::Dwell:
+            return "dwell";
+        case Op::Absolute:
+            return "absolute";
+        case Op::Incremental:
+            return "incremental";
+        case Op::SetZero:
+            return "set_zero";
+        case Op::ResetZero:
+            return "reset_zero";
+        case Op::Feed:
+            return "feed";
+        case Op::Stop:
+            return "stop";
+        case Op::End:
+            return "end";
+        case Op::Goto:
+            return "goto";
     }
     return "?";
 }
 
-constexpr bool isMotion(Op op) { return op == Op::Rapid || op == Op::Linear; }
+constexpr bool isMotion(Op op) {
+    return op == Op::Rapid || op == Op::Linear;
+}
 
 /// 32 bytes: a million-line program's blocks fit in 32 MB.
 struct Block {
@@ -46,9 +59,9 @@ struct Block {
     double x = 0.0;
     /// Percent of the maximum speed: 100 for Rapid, the effective feed for Linear and Feed.
     double feed = 0.0;
-    std::int32_t n = -1;             ///< block number, -1 when the line has none
-    std::uint32_t line = 0;          ///< 1-based line in the source file
-    std::int32_t targetIndex = -1;   ///< Goto: index into the block vector
+    std::int32_t n = -1;            ///< block number, -1 when the line has none
+    std::uint32_t line = 0;         ///< 1-based line in the source file
+    std::int32_t targetIndex = -1;  ///< Goto: index into the block vector
     Op op = Op::End;
 
     double seconds() const { return x; }

@@ -29,15 +29,27 @@ struct LineWords {
     bool any() const { return g.present || x.present || y.present || f.present || m.present; }
 };
 
-bool isDigit(char c) { return static_cast<unsigned>(c - '0') < 10u; }
-bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-char lower(char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c | 0x20) : c; }
-bool isAlpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+bool isDigit(char c) {
+    return static_cast<unsigned>(c - '0') < 10u;
+}
+bool isBlank(char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+char lower(char c) {
+    return (c >= 'A' && c <= 'Z') ? static_cast<char>(c | 0x20) : c;
+}
+bool isAlpha(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+}
 
 /// Length of a valid UTF-8 sequence starting at p, or 0 when the bytes are not valid UTF-8.
 std::size_t utf8Length(const char* p, const char* end) {
     auto b0 = static_cast<unsigned char>(*p);
-    std::size_t len = b0 < 0x80 ? 1 : (b0 >> 5) == 0x6 ? 2 : (b0 >> 4) == 0xE ? 3 : (b0 >> 3) == 0x1E ? 4 : 0;
+    std::size_t len = b0 < 0x80           ? 1
+                      : (b0 >> 5) == 0x6  ? 2
+                      : (b0 >> 4) == 0xE  ? 3
+                      : (b0 >> 3) == 0x1E ? 4
+                                          : 0;
     if (len == 0 || static_cast<std::size_t>(end - p) < len) return 0;
     for (std::size_t i = 1; i < len; ++i)
         if ((static_cast<unsigned char>(p[i]) & 0xC0) != 0x80) return 0;
@@ -56,7 +68,9 @@ void copyEscaped(char* dst, std::size_t cap, std::string_view src) {
         bool escape = len == 0 || (len == 1 && (byte < 0x20 || byte == 0x7F));
         std::size_t need = escape ? 4 : len;
         if (out + need > cap) {
-            if (cap >= 3) std::memcpy(dst + std::min(out, cap - 3), "...", 3), out = std::min(out, cap - 3) + 3;
+            if (cap >= 3)
+                std::memcpy(dst + std::min(out, cap - 3), "...", 3),
+                    out = std::min(out, cap - 3) + 3;
             break;
         }
         if (escape) {
@@ -94,7 +108,7 @@ std::string_view formatNumber(double v, char (&buf)[32]) {
 }
 
 class Compiler {
-public:
+  public:
     Compiler(std::string_view source, const CompileOptions& options)
         : source_(source), options_(options) {
         program_.dialect = options.dialect;
@@ -111,7 +125,8 @@ public:
         if (end - p >= 3 && std::memcmp(p, "\xEF\xBB\xBF", 3) == 0) p += 3;  // UTF-8 BOM
         std::uint32_t lineNo = 0;
         while (p < end) {
-            const char* nl = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
+            const char* nl =
+                static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
             const char* lineEnd = nl ? nl : end;
             const char* contentEnd = lineEnd;
             if (contentEnd > p && contentEnd[-1] == '\r') --contentEnd;
@@ -124,9 +139,10 @@ public:
         return std::move(program_);
     }
 
-private:
+  private:
     // ---- diagnostics -----------------------------------------------------------------------
-    Diagnostic& report(MessageId id, std::uint32_t column, std::string_view text = {}, double value = 0.0) {
+    Diagnostic& report(MessageId id, std::uint32_t column, std::string_view text = {},
+                       double value = 0.0) {
         Diagnostic& d = program_.diagnostics.emplace_back();
         d.id = id;
         d.line = line_;
@@ -137,11 +153,14 @@ private:
         lineError_ = true;
         return d;
     }
-    std::uint32_t col(const char* q) const { return static_cast<std::uint32_t>(q - lineBegin_ + 1); }
+    std::uint32_t col(const char* q) const {
+        return static_cast<std::uint32_t>(q - lineBegin_ + 1);
+    }
     /// The source from q up to the next blank, for naming an offending word.
     std::string_view wordAt(const char* q) const {
         const char* e = q;
-        while (e < lineEnd_ && !isBlank(*e) && e - q < 20) ++e;
+        while (e < lineEnd_ && !isBlank(*e) && e - q < 20)
+            ++e;
         if (e == q && q < lineEnd_) ++e;
         return {q, static_cast<std::size_t>(e - q)};
     }
@@ -173,11 +192,15 @@ private:
         lineEnd_ = e;
         LineWords w;
         bool lexed = options_.dialect == Dialect::Classic ? lexClassic(w) : lexStandard(w);
-        if (w.m.present) lastLineWasM02_ = w.m.value == 2.0;
-        else if (lexed || lineError_) lastLineWasM02_ = false;
+        if (w.m.present)
+            lastLineWasM02_ = w.m.value == 2.0;
+        else if (lexed || lineError_)
+            lastLineWasM02_ = false;
         if (lexed && !lineError_) validateAndCommit(w);
-        if (lineN_ >= 0 && (lexed || lineError_))
-            nIndex_.push_back({lineN_, lineError_ ? -1 : static_cast<std::int32_t>(program_.blocks.size()) - 1});
+        // Block numbers of lines that produced no block still count as goto targets that exist.
+        if (lineN_ >= 0 && lineError_) erroneousNs_.push_back(lineN_);
+        if (lineN_ >= 0 && lineN_ <= previousN_) nSorted_ = false;
+        if (lineN_ >= 0) previousN_ = lineN_;
     }
 
     /// Classic: n9999 g99 x9999 f999 m99, one space between words, lower case, fixed widths.
@@ -199,7 +222,8 @@ private:
         int rank = 0;  // classic word order: g or m first, then x (y), then f
         while (p < e) {
             if (*p != ' ' || p + 1 == e || p[1] == ' ') {
-                report(MessageId::SpaceRequired, col(*p == ' ' ? p + 1 : p), charAt(*p == ' ' ? p + 1 : p));
+                report(MessageId::SpaceRequired, col(*p == ' ' ? p + 1 : p),
+                       charAt(*p == ' ' ? p + 1 : p));
                 return false;
             }
             ++p;
@@ -207,14 +231,22 @@ private:
             int width = 0, wordRank = 0;
             bool sign = false;
             switch (*p) {
-                case 'g': slot = &w.g, width = 2, wordRank = 1; break;
-                case 'x': slot = &w.x, width = 4, wordRank = 2, sign = true; break;
+                case 'g':
+                    slot = &w.g, width = 2, wordRank = 1;
+                    break;
+                case 'x':
+                    slot = &w.x, width = 4, wordRank = 2, sign = true;
+                    break;
                 case 'y':
                     if (!options_.machine.hasY) return unknownAxis(p);
                     slot = &w.y, width = 4, wordRank = 3, sign = true;
                     break;
-                case 'f': slot = &w.f, width = 3, wordRank = 4, sign = true; break;
-                case 'm': slot = &w.m, width = 2, wordRank = 1; break;
+                case 'f':
+                    slot = &w.f, width = 3, wordRank = 4, sign = true;
+                    break;
+                case 'm':
+                    slot = &w.m, width = 2, wordRank = 1;
+                    break;
                 default:
                     if (isAxisLetter(*p)) return unknownAxis(p);
                     report(MessageId::InvalidChar, col(p), charAt(p));
@@ -244,7 +276,8 @@ private:
         if (negative && *p == 'f') --width;
         int digits = 0;
         int value = 0;
-        while (q < lineEnd_ && isDigit(*q) && digits <= width) value = value * 10 + (*q - '0'), ++q, ++digits;
+        while (q < lineEnd_ && isDigit(*q) && digits <= width)
+            value = value * 10 + (*q - '0'), ++q, ++digits;
         if (digits != width) {
             report(MessageId::WrongDigitCount, col(p), wordAt(p), width);
             return false;
@@ -262,9 +295,20 @@ private:
 
     static bool isAxisLetter(char c) {
         switch (lower(c)) {
-            case 'y': case 'z': case 'a': case 'b': case 'c': case 'u': case 'v': case 'w':
-            case 'i': case 'j': case 'k': return true;
-            default: return false;
+            case 'y':
+            case 'z':
+            case 'a':
+            case 'b':
+            case 'c':
+            case 'u':
+            case 'v':
+            case 'w':
+            case 'i':
+            case 'j':
+            case 'k':
+                return true;
+            default:
+                return false;
         }
     }
     bool unknownAxis(const char* p) {
@@ -277,12 +321,14 @@ private:
     bool lexStandard(LineWords& w) {
         const char* p = lineBegin_;
         const char* e = lineEnd_;
-        while (p < e && isBlank(*p)) ++p;
+        while (p < e && isBlank(*p))
+            ++p;
         if (p < e && *p == '%') return false;  // tape marks: ignored
         bool anyWord = false;
         const char* nEnd = p;
         while (true) {
-            while (p < e && isBlank(*p)) ++p;
+            while (p < e && isBlank(*p))
+                ++p;
             if (p == e) break;
             char c = *p;
             if (c == '(') {
@@ -303,11 +349,21 @@ private:
             Word* slot = nullptr;
             bool decimal = false;
             switch (letter) {
-                case 'n': slot = &w.n; break;
-                case 'g': slot = &w.g; break;
-                case 'm': slot = &w.m; break;
-                case 'x': slot = &w.x, decimal = true; break;
-                case 'f': slot = &w.f, decimal = true; break;
+                case 'n':
+                    slot = &w.n;
+                    break;
+                case 'g':
+                    slot = &w.g;
+                    break;
+                case 'm':
+                    slot = &w.m;
+                    break;
+                case 'x':
+                    slot = &w.x, decimal = true;
+                    break;
+                case 'f':
+                    slot = &w.f, decimal = true;
+                    break;
                 case 'y':
                     if (!options_.machine.hasY) return unknownAxis(p);
                     slot = &w.y, decimal = true;
@@ -337,8 +393,10 @@ private:
                 return false;
             }
             const char* after = s.end;
-            bool endsWell = after == e || isBlank(*after) || *after == '(' || *after == ';' || isAlpha(*after);
-            if (s.ok && signOk && !endsWell && *after != '.' && !isDigit(*after) && *after != '-' && *after != '+') {
+            bool endsWell =
+                after == e || isBlank(*after) || *after == '(' || *after == ';' || isAlpha(*after);
+            if (s.ok && signOk && !endsWell && *after != '.' && !isDigit(*after) && *after != '-' &&
+                *after != '+') {
                 report(MessageId::InvalidChar, col(after), charAt(after));
                 return false;
             }
@@ -370,10 +428,9 @@ private:
             if (w->present && (!first || w->column < first->column)) first = w;
         return first;
     }
-    std::string_view wordText(const Word& w) const {
-        return wordAt(lineBegin_ + (w.column - 1));
-    }
-    bool noMoreThan(const LineWords& w, char letter, double code, std::initializer_list<const Word*> extras) {
+    std::string_view wordText(const Word& w) const { return wordAt(lineBegin_ + (w.column - 1)); }
+    bool noMoreThan(const LineWords& w, char letter, double code,
+                    std::initializer_list<const Word*> extras) {
         if (const Word* extra = firstPresent(extras)) {
             char buf[16];
             report(MessageId::TrailingWords, extra->column, codeWord(letter, code, buf));
@@ -404,7 +461,8 @@ private:
         if (w.g.present && w.m.present) {
             char buf[16];
             report(MessageId::TrailingWords, std::max(w.g.column, w.m.column),
-                   w.g.column < w.m.column ? codeWord('g', w.g.value, buf) : codeWord('m', w.m.value, buf));
+                   w.g.column < w.m.column ? codeWord('g', w.g.value, buf)
+                                           : codeWord('m', w.m.value, buf));
             return;
         }
         if (w.g.present) {
@@ -414,17 +472,20 @@ private:
                 case 0:
                 case 1:
                     if (!w.x.present && !w.y.present) {
-                        report(g == 0 ? MessageId::MissingXG00 : MessageId::MissingXG01, w.g.column, wordText(w.g));
+                        report(g == 0 ? MessageId::MissingXG00 : MessageId::MissingXG01, w.g.column,
+                               wordText(w.g));
                         return;
                     }
                     if (!motion(g, w, b, yTarget)) return;
                     lastMotion_ = g;
                     break;
                 case 4:
-                    if (!w.x.present) return (void)report(MessageId::MissingXG04, w.g.column, wordText(w.g));
+                    if (!w.x.present)
+                        return (void)report(MessageId::MissingXG04, w.g.column, wordText(w.g));
                     if (!noMoreThan(w, 'g', 4, {&w.y, &w.f})) return;
                     if (w.x.value < 0)
-                        return (void)report(MessageId::NegativeDwell, w.x.column, formatNumber(w.x.value, buf), w.x.value);
+                        return (void)report(MessageId::NegativeDwell, w.x.column,
+                                            formatNumber(w.x.value, buf), w.x.value);
                     b.op = Op::Dwell;
                     b.x = w.x.value;
                     break;
@@ -435,7 +496,8 @@ private:
                     b.op = g == 90 ? Op::Absolute : g == 91 ? Op::Incremental : Op::ResetZero;
                     break;
                 case 92:
-                    if (!w.x.present) return (void)report(MessageId::MissingXG92, w.g.column, wordText(w.g));
+                    if (!w.x.present)
+                        return (void)report(MessageId::MissingXG92, w.g.column, wordText(w.g));
                     if (!noMoreThan(w, 'g', 92, {&w.f})) return;
                     b.op = Op::SetZero;
                     b.x = w.x.value;
@@ -457,12 +519,15 @@ private:
                     b.op = m == 0 ? Op::Stop : Op::End;
                     break;
                 case 3:
-                    if (!w.x.present) return (void)report(MessageId::MissingXM03, w.m.column, wordText(w.m));
+                    if (!w.x.present)
+                        return (void)report(MessageId::MissingXM03, w.m.column, wordText(w.m));
                     if (!noMoreThan(w, 'm', 3, {&w.y, &w.f})) return;
                     if (w.x.value < 0)
-                        return (void)report(MessageId::NegativeGoto, w.x.column, formatNumber(w.x.value, buf), w.x.value);
+                        return (void)report(MessageId::NegativeGoto, w.x.column,
+                                            formatNumber(w.x.value, buf), w.x.value);
                     if (!w.x.integral || w.x.value > 2147483647.0)
-                        return (void)report(MessageId::GotoNotInteger, w.x.column, wordText(w.x), w.x.value);
+                        return (void)report(MessageId::GotoNotInteger, w.x.column, wordText(w.x),
+                                            w.x.value);
                     b.op = Op::Goto;
                     b.x = w.x.value;
                     gotos_.push_back(program_.blocks.size());
@@ -475,7 +540,9 @@ private:
             return;
         }
         if (w.x.present || w.y.present) {
-            if (lastMotion_ < 0) return (void)report(MessageId::NoMotionMode, firstPresent({&w.x, &w.y})->column, wordText(*firstPresent({&w.x, &w.y})));
+            if (lastMotion_ < 0)
+                return (void)report(MessageId::NoMotionMode, firstPresent({&w.x, &w.y})->column,
+                                    wordText(*firstPresent({&w.x, &w.y})));
             if (!motion(lastMotion_, w, b, yTarget)) return;
             commit(b, w, yTarget);
             return;
@@ -505,8 +572,10 @@ private:
         // Documented meaning (gcode.md): absolute = x + zero; incremental = previous target + x.
         b.x = w.x.present ? (incremental_ ? prevX_ + w.x.value : w.x.value + zeroX_) : prevX_;
         if (w.y.present) yTarget = incremental_ ? prevY_ + w.y.value : w.y.value + zeroY_;
-        if (!withinTravel('x', b.x, options_.machine.x, w.x.present ? w.x : *firstPresent({&w.y}))) return false;
-        if (options_.machine.hasY && !withinTravel('y', yTarget, options_.machine.y, w.y.present ? w.y : w.x))
+        if (!withinTravel('x', b.x, options_.machine.x, w.x.present ? w.x : *firstPresent({&w.y})))
+            return false;
+        if (options_.machine.hasY &&
+            !withinTravel('y', yTarget, options_.machine.y, w.y.present ? w.y : w.x))
             return false;
         return true;
     }
@@ -530,15 +599,24 @@ private:
                 prevY_ = yTarget;
                 if (b.op == Op::Linear) haveFeed_ = true, feed_ = b.feed;
                 break;
-            case Op::Feed: haveFeed_ = true, feed_ = b.feed; break;
-            case Op::Absolute: incremental_ = false; break;
-            case Op::Incremental: incremental_ = true; break;
+            case Op::Feed:
+                haveFeed_ = true, feed_ = b.feed;
+                break;
+            case Op::Absolute:
+                incremental_ = false;
+                break;
+            case Op::Incremental:
+                incremental_ = true;
+                break;
             case Op::SetZero:
                 zeroX_ = b.x;
                 if (w.y.present) zeroY_ = w.y.value;
                 break;
-            case Op::ResetZero: zeroX_ = 0.0, zeroY_ = 0.0; break;
-            default: break;
+            case Op::ResetZero:
+                zeroX_ = 0.0, zeroY_ = 0.0;
+                break;
+            default:
+                break;
         }
         program_.blocks.push_back(b);
         if (options_.machine.hasY) program_.y.push_back(yTarget);
@@ -547,17 +625,16 @@ private:
     void finish(std::uint32_t lastLine) {
         line_ = std::max<std::uint32_t>(lastLine, 1);
         lineN_ = -1;
-        // Goto targets: n is strictly increasing in a correct program, so nIndex_ is sorted;
-        // sort anyway so a program with n-order errors still gets its goto errors right.
-        std::stable_sort(nIndex_.begin(), nIndex_.end(), [](auto& a, auto& b) { return a.first < b.first; });
+        // Goto targets: n is strictly increasing in a correct program, so the blocks are sorted
+        // by n (blocks without n are skipped by the search); otherwise fall back to a scan.
+        std::sort(erroneousNs_.begin(), erroneousNs_.end());
         for (std::size_t gi : gotos_) {
             Block& g = program_.blocks[gi];
-            auto it = std::lower_bound(nIndex_.begin(), nIndex_.end(), g.targetN(),
-                                       [](const auto& e, std::int32_t n) { return e.first < n; });
-            if (it != nIndex_.end() && it->first == g.targetN()) {
-                g.targetIndex = it->second;
+            const std::int32_t target = g.targetN();
+            g.targetIndex = nSorted_ ? findSorted(target) : program_.indexOfN(target);
+            if (g.targetIndex >= 0 ||
+                std::binary_search(erroneousNs_.begin(), erroneousNs_.end(), target))
                 continue;
-            }
             line_ = g.line;
             lineN_ = g.n;
             char buf[32];
@@ -577,11 +654,11 @@ private:
     // modal state, committed only by correct lines
     int lastMotion_ = -1;  ///< -1 before any g00/g01, then 0 or 1
     bool haveFeed_ = false;
-    double feed_ = 0.0;          ///< percent
-    bool incremental_ = false;   ///< g91 in force
-    double zeroX_ = 0.0;         ///< mm from the rail centre (g92)
+    double feed_ = 0.0;         ///< percent
+    bool incremental_ = false;  ///< g91 in force
+    double zeroX_ = 0.0;        ///< mm from the rail centre (g92)
     double zeroY_ = 0.0;
-    double prevX_ = 0.0;         ///< previous target, mm from the rail centre; starts at the centre
+    double prevX_ = 0.0;  ///< previous target, mm from the rail centre; starts at the centre
     double prevY_ = 0.0;
     std::int32_t lastN_ = -1;
     bool lastLineWasM02_ = false;
@@ -594,8 +671,31 @@ private:
     const char* lineEnd_ = nullptr;
     const char* numberEnd_ = nullptr;
 
-    std::vector<std::pair<std::int32_t, std::int32_t>> nIndex_;  ///< n -> block index (-1: line had errors)
-    std::vector<std::size_t> gotos_;                             ///< indices of goto blocks
+    /// Index of the block numbered n in blocks whose n increase (n = -1 blocks interleaved).
+    std::int32_t findSorted(std::int32_t n) const {
+        const auto& blocks = program_.blocks;
+        std::size_t lo = 0, hi = blocks.size();
+        while (lo < hi) {
+            std::size_t mid = lo + (hi - lo) / 2, probe = mid;
+            while (probe < hi && blocks[probe].n < 0)
+                ++probe;  // skip unnumbered blocks
+            if (probe == hi) {
+                hi = mid;
+                continue;
+            }
+            if (blocks[probe].n == n) return static_cast<std::int32_t>(probe);
+            if (blocks[probe].n < n)
+                lo = probe + 1;
+            else
+                hi = mid;
+        }
+        return -1;
+    }
+
+    std::vector<std::int32_t> erroneousNs_;  ///< block numbers of lines that had errors
+    std::vector<std::size_t> gotos_;         ///< indices of goto blocks
+    std::int32_t previousN_ = -1;
+    bool nSorted_ = true;  ///< every n so far greater than the one before
 };
 
 }  // namespace

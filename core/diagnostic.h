@@ -50,24 +50,36 @@ constexpr int kMessageCount = static_cast<int>(MessageId::Count_);
 /// The stable code of a message (gcode.md "Diagnostics"); the DNC link and tests rely on it.
 constexpr std::string_view diagnosticCode(MessageId id) {
     switch (id) {
-        case MessageId::MissingN: return "missing-n";
-        case MessageId::NOrder: return "n-order";
-        case MessageId::NAlone: return "n-alone";
-        case MessageId::SpaceRequired: return "space-required";
-        case MessageId::TrailingWords: return "trailing-words";
+        case MessageId::MissingN:
+            return "missing-n";
+        case MessageId::NOrder:
+            return "n-order";
+        case MessageId::NAlone:
+            return "n-alone";
+        case MessageId::SpaceRequired:
+            return "space-required";
+        case MessageId::TrailingWords:
+            return "trailing-words";
         case MessageId::MissingXG00:
         case MessageId::MissingXG01:
         case MessageId::MissingXG04:
         case MessageId::MissingXG92:
-        case MessageId::MissingXM03: return "missing-x";
+        case MessageId::MissingXM03:
+            return "missing-x";
         case MessageId::NegativeDwell:
         case MessageId::NegativeGoto:
-        case MessageId::NegativeFeed: return "negative-value";
-        case MessageId::InvalidG: return "invalid-g";
-        case MessageId::InvalidM: return "invalid-m";
-        case MessageId::NoMotionMode: return "no-motion-mode";
-        case MessageId::FeedUndefined: return "feed-undefined";
-        case MessageId::G00Feed: return "g00-feed";
+        case MessageId::NegativeFeed:
+            return "negative-value";
+        case MessageId::InvalidG:
+            return "invalid-g";
+        case MessageId::InvalidM:
+            return "invalid-m";
+        case MessageId::NoMotionMode:
+            return "no-motion-mode";
+        case MessageId::FeedUndefined:
+            return "feed-undefined";
+        case MessageId::G00Feed:
+            return "g00-feed";
         case MessageId::InvalidChar:
         case MessageId::MalformedNumber:
         case MessageId::WrongDigitCount:
@@ -75,13 +87,20 @@ constexpr std::string_view diagnosticCode(MessageId id) {
         case MessageId::RepeatedWord:
         case MessageId::NNotFirst:
         case MessageId::GotoNotInteger:
-        case MessageId::NumberTooLong: return "invalid-char";
-        case MessageId::MissingM02: return "missing-m02";
-        case MessageId::GotoTarget: return "goto-target";
-        case MessageId::FeedRange: return "feed-range";
-        case MessageId::SoftLimit: return "soft-limit";
-        case MessageId::UnknownAxis: return "unknown-axis";
-        case MessageId::Count_: break;
+        case MessageId::NumberTooLong:
+            return "invalid-char";
+        case MessageId::MissingM02:
+            return "missing-m02";
+        case MessageId::GotoTarget:
+            return "goto-target";
+        case MessageId::FeedRange:
+            return "feed-range";
+        case MessageId::SoftLimit:
+            return "soft-limit";
+        case MessageId::UnknownAxis:
+            return "unknown-axis";
+        case MessageId::Count_:
+            break;
     }
     return "?";
 }

@@ -30,24 +30,33 @@ constexpr const char* kSource[kMessageCount] = {
     QT_TRANSLATE_NOOP("Diagnostic", "invalid character or g00 does not take f on line %1"),
     QT_TRANSLATE_NOOP("Diagnostic", "invalid character on line %1: '%2'"),
     QT_TRANSLATE_NOOP("Diagnostic", "invalid character on line %1: malformed number '%2'"),
-    QT_TRANSLATE_NOOP("Diagnostic", "invalid character on line %1: '%2' must have exactly %3 digits"),
+    QT_TRANSLATE_NOOP("Diagnostic",
+                      "invalid character on line %1: '%2' must have exactly %3 digits"),
     QT_TRANSLATE_NOOP("Diagnostic", "invalid character on line %1: comment not closed"),
     QT_TRANSLATE_NOOP("Diagnostic", "invalid character on line %1: word '%2' repeated"),
-    QT_TRANSLATE_NOOP("Diagnostic", "invalid character on line %1: n must be the first word ('%2')"),
-    QT_TRANSLATE_NOOP("Diagnostic", "invalid value after m03 on line %1: '%2' is not a block number"),
-    QT_TRANSLATE_NOOP("Diagnostic", "invalid character on line %1: number '%2' longer than %3 digits"),
+    QT_TRANSLATE_NOOP("Diagnostic",
+                      "invalid character on line %1: n must be the first word ('%2')"),
+    QT_TRANSLATE_NOOP("Diagnostic",
+                      "invalid value after m03 on line %1: '%2' is not a block number"),
+    QT_TRANSLATE_NOOP("Diagnostic",
+                      "invalid character on line %1: number '%2' longer than %3 digits"),
     QT_TRANSLATE_NOOP("Diagnostic", "program requires m02 (END) at the end"),
     QT_TRANSLATE_NOOP("Diagnostic", "invalid GO TO on line %1: block n%2 does not exist"),
-    QT_TRANSLATE_NOOP("Diagnostic", "feed f%2 out of range on line %1: must be above 0 and at most 100 %"),
+    QT_TRANSLATE_NOOP("Diagnostic",
+                      "feed f%2 out of range on line %1: must be above 0 and at most 100 %"),
     QT_TRANSLATE_NOOP("Diagnostic", "target %2 mm on line %1 is beyond the soft limit %3 mm"),
     QT_TRANSLATE_NOOP("Diagnostic", "axis %2 does not exist on this machine (line %1)"),
 };
 
-QString number(double v) { return QString::number(v, 'g', 12); }
+QString number(double v) {
+    return QString::number(v, 'g', 12);
+}
 
 }  // namespace
 
-const char* diagnosticSourceText(MessageId id) { return kSource[static_cast<int>(id)]; }
+const char* diagnosticSourceText(MessageId id) {
+    return kSource[static_cast<int>(id)];
+}
 
 QString substitute(const QString& text, std::initializer_list<QString> args) {
     QString out;
@@ -68,7 +77,8 @@ QString substitute(const QString& text, std::initializer_list<QString> args) {
 }
 
 QString diagnosticMessage(const Diagnostic& d) {
-    const QString where = QString::number(d.n >= 0 ? static_cast<qint64>(d.n) : static_cast<qint64>(d.line));
+    const QString where =
+        QString::number(d.n >= 0 ? static_cast<qint64>(d.n) : static_cast<qint64>(d.line));
     const QString text = QCoreApplication::translate(kContext, diagnosticSourceText(d.id));
     return substitute(text, {where, QString::fromUtf8(d.text), number(d.value)});
 }

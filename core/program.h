@@ -19,7 +19,8 @@ struct Program {
 
     std::size_t errorCount() const {
         std::size_t count = 0;
-        for (const auto& d : diagnostics) count += d.severity == Severity::Error ? 1 : 0;
+        for (const auto& d : diagnostics)
+            count += d.severity == Severity::Error ? 1 : 0;
         return count;
     }
     bool ok() const { return errorCount() == 0; }

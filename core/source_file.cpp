@@ -29,7 +29,8 @@ SourceFile readSourceFile(const std::string& path) {
     }
     if (st.st_size > kMaxSourceBytes) {
         ::close(fd);
-        f.error = "cannot read '" + path + "': larger than " + std::to_string(kMaxSourceBytes >> 20) + " MB";
+        f.error = "cannot read '" + path + "': larger than " +
+                  std::to_string(kMaxSourceBytes >> 20) + " MB";
         return f;
     }
     if (S_ISREG(st.st_mode)) f.bytes.reserve(static_cast<std::size_t>(st.st_size));
@@ -46,7 +47,8 @@ SourceFile readSourceFile(const std::string& path) {
         if (got == 0) break;
         if (static_cast<long long>(f.bytes.size()) + got > kMaxSourceBytes) {
             ::close(fd);
-            f.error = "cannot read '" + path + "': larger than " + std::to_string(kMaxSourceBytes >> 20) + " MB";
+            f.error = "cannot read '" + path + "': larger than " +
+                      std::to_string(kMaxSourceBytes >> 20) + " MB";
             return f;
         }
         f.bytes.append(buffer, static_cast<std::size_t>(got));

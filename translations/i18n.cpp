@@ -11,7 +11,9 @@ QTranslator*& current() {
 }
 }  // namespace
 
-QStringList availableLanguages() { return {QStringLiteral("en"), QStringLiteral("pt_BR"), QStringLiteral("es")}; }
+QStringList availableLanguages() {
+    return {QStringLiteral("en"), QStringLiteral("pt_BR"), QStringLiteral("es")};
+}
 
 bool installLanguage(const QString& lang) {
     if (!availableLanguages().contains(lang)) return false;

@@ -15,20 +15,25 @@ namespace trilho::cli {
 QString formatDiagnosticLine(const QString& file, const Diagnostic& d) {
     QString place = file + QLatin1Char(':') + QString::number(d.line);
     if (d.column) place += QLatin1Char(':') + QString::number(d.column);
-    const QString severity = d.severity == Severity::Error ? QStringLiteral("error") : QStringLiteral("warning");
+    const QString severity =
+        d.severity == Severity::Error ? QStringLiteral("error") : QStringLiteral("warning");
     return QStringLiteral("%1: %2[%3]: %4\n")
-        .arg(place, severity, QString::fromLatin1(d.code().data(), static_cast<qsizetype>(d.code().size())),
+        .arg(place, severity,
+             QString::fromLatin1(d.code().data(), static_cast<qsizetype>(d.code().size())),
              diagnosticMessage(d));
 }
 
 int compileCommand(const QStringList& args) {
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("Check a .G program and list every diagnostic."));
+    parser.setApplicationDescription(
+        QStringLiteral("Check a .G program and list every diagnostic."));
     parser.addHelpOption();
-    QCommandLineOption dialectOpt(QStringLiteral("dialect"), QStringLiteral("classic or standard (default)."),
+    QCommandLineOption dialectOpt(QStringLiteral("dialect"),
+                                  QStringLiteral("classic or standard (default)."),
                                   QStringLiteral("dialect"), QStringLiteral("standard"));
     QCommandLineOption jsonOpt(QStringLiteral("json"), QStringLiteral("Print one JSON object."));
-    QCommandLineOption langOpt(QStringLiteral("lang"), QStringLiteral("Message language: en, pt_BR or es."),
+    QCommandLineOption langOpt(QStringLiteral("lang"),
+                               QStringLiteral("Message language: en, pt_BR or es."),
                                QStringLiteral("lang"), QStringLiteral("en"));
     parser.addOptions({dialectOpt, jsonOpt, langOpt});
     parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("The program to compile."));
@@ -42,16 +47,19 @@ int compileCommand(const QStringList& args) {
     }
     const auto dialect = parseDialect(parser.value(dialectOpt).toStdString());
     if (!dialect) {
-        err(QStringLiteral("trilho-cli compile: unknown dialect '%1' (classic or standard)\n").arg(parser.value(dialectOpt)));
+        err(QStringLiteral("trilho-cli compile: unknown dialect '%1' (classic or standard)\n")
+                .arg(parser.value(dialectOpt)));
         return kUsage;
     }
     if (!installLanguage(parser.value(langOpt))) {
-        err(QStringLiteral("trilho-cli compile: unknown language '%1' (en, pt_BR or es)\n").arg(parser.value(langOpt)));
+        err(QStringLiteral("trilho-cli compile: unknown language '%1' (en, pt_BR or es)\n")
+                .arg(parser.value(langOpt)));
         return kUsage;
     }
     const QStringList files = parser.positionalArguments();
     if (files.size() != 1) {
-        err(QStringLiteral("trilho-cli compile: expected exactly one FILE, got %1\n").arg(files.size()));
+        err(QStringLiteral("trilho-cli compile: expected exactly one FILE, got %1\n")
+                .arg(files.size()));
         return kUsage;
     }
     const QString file = files.front();
@@ -65,11 +73,13 @@ int compileCommand(const QStringList& args) {
     const Program program = compile(source.bytes, options);
 
     if (parser.isSet(jsonOpt)) {
-        out(QString::fromUtf8(QJsonDocument(programToJson(file, program)).toJson(QJsonDocument::Compact)) +
+        out(QString::fromUtf8(
+                QJsonDocument(programToJson(file, program)).toJson(QJsonDocument::Compact)) +
             QLatin1Char('\n'));
     } else {
         QString text;
-        for (const Diagnostic& d : program.diagnostics) text += formatDiagnosticLine(file, d);
+        for (const Diagnostic& d : program.diagnostics)
+            text += formatDiagnosticLine(file, d);
         text += compileSummary(program.errorCount()) + QLatin1Char('\n');
         out(text);
     }

@@ -32,6 +32,7 @@ int main(int argc, char* argv[]) {
         trilho::cli::out(QStringLiteral("trilho-cli %1\n").arg(QStringLiteral(TRILHO_VERSION)));
         return trilho::cli::kOk;
     }
-    trilho::cli::err(QStringLiteral("trilho-cli: unknown command '%1'\n%2").arg(command, QString::fromLatin1(kUsage)));
+    trilho::cli::err(QStringLiteral("trilho-cli: unknown command '%1'\n%2")
+                         .arg(command, QString::fromLatin1(kUsage)));
     return trilho::cli::kUsage;
 }

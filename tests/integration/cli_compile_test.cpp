@@ -21,11 +21,12 @@ Result run(const QStringList& args) {
     QProcess p;
     p.start(QStringLiteral(TRILHO_CLI), args);
     EXPECT_TRUE(p.waitForFinished(60000));
-    return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()), QString::fromUtf8(p.readAllStandardError())};
+    return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()),
+            QString::fromUtf8(p.readAllStandardError())};
 }
 
 class CliCompile : public ::testing::Test {
-protected:
+  protected:
     QTemporaryDir dir;
     QString write(const QString& name, const QByteArray& content) {
         QString path = dir.filePath(name);
@@ -37,20 +38,27 @@ protected:
 };
 
 TEST_F(CliCompile, CleanProgramExitsZero) {
-    Result r = run({QStringLiteral("compile"), write(QStringLiteral("ok.G"), "G1 X10 F20\nX20\nM2\n")});
+    Result r =
+        run({QStringLiteral("compile"), write(QStringLiteral("ok.G"), "G1 X10 F20\nX20\nM2\n")});
     EXPECT_EQ(r.exit, 0);
     EXPECT_EQ(r.out, QStringLiteral("Compilation completed successfully\n"));
 }
 
 TEST_F(CliCompile, ErrorsListedWithPlaceAndCodeExitOne) {
     QString file = write(QStringLiteral("bad.G"), "n0010 g07\nn0020 x0010\n");
-    Result r = run({QStringLiteral("compile"), QStringLiteral("--dialect"), QStringLiteral("classic"), file});
+    Result r = run(
+        {QStringLiteral("compile"), QStringLiteral("--dialect"), QStringLiteral("classic"), file});
     EXPECT_EQ(r.exit, 1);
     QStringList lines = r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
     ASSERT_EQ(lines.size(), 4);
-    EXPECT_EQ(lines[0], file + QStringLiteral(":1:7: error[invalid-g]: invalid g command on line 10 (g07)"));
-    EXPECT_EQ(lines[1], file + QStringLiteral(":2:7: error[no-motion-mode]: g01 or g00 not defined on line 20"));
-    EXPECT_EQ(lines[2], file + QStringLiteral(":2: error[missing-m02]: program requires m02 (END) at the end"));
+    EXPECT_EQ(lines[0],
+              file + QStringLiteral(":1:7: error[invalid-g]: invalid g command on line 10 (g07)"));
+    EXPECT_EQ(
+        lines[1],
+        file + QStringLiteral(":2:7: error[no-motion-mode]: g01 or g00 not defined on line 20"));
+    EXPECT_EQ(
+        lines[2],
+        file + QStringLiteral(":2: error[missing-m02]: program requires m02 (END) at the end"));
     EXPECT_EQ(lines[3], QStringLiteral("3 compile error(s)"));
 }
 
@@ -59,11 +67,13 @@ TEST_F(CliCompile, PortugueseSummary) {
     Result r = run({QStringLiteral("compile"), QStringLiteral("--lang"), QStringLiteral("pt_BR"),
                     QStringLiteral("--dialect"), QStringLiteral("classic"), file});
     EXPECT_EQ(r.exit, 1);
-    EXPECT_TRUE(r.out.endsWith(QStringLiteral("Há 1 erro(s) de compilação !\n"))) << r.out.toStdString();
+    EXPECT_TRUE(r.out.endsWith(QStringLiteral("Há 1 erro(s) de compilação !\n")))
+        << r.out.toStdString();
 }
 
 TEST_F(CliCompile, JsonShape) {
-    QString file = write(QStringLiteral("p.G"), "N10 G92 X100\nN20 G1 X10 F20\nN30 G4 X1.5\nN40 M3 X20\nN50 Q1\nM2\n");
+    QString file = write(QStringLiteral("p.G"),
+                         "N10 G92 X100\nN20 G1 X10 F20\nN30 G4 X1.5\nN40 M3 X20\nN50 Q1\nM2\n");
     Result r = run({QStringLiteral("compile"), QStringLiteral("--json"), file});
     EXPECT_EQ(r.exit, 1);
     QJsonParseError error{};
@@ -84,8 +94,8 @@ TEST_F(CliCompile, JsonShape) {
     EXPECT_FALSE(d[QStringLiteral("message")].toString().isEmpty());
     QJsonArray blocks = o[QStringLiteral("blocks")].toArray();
     ASSERT_EQ(blocks.size(), 5);
-    QJsonObject zero = blocks[0].toObject(), lin = blocks[1].toObject(), dwell = blocks[2].toObject(),
-                go = blocks[3].toObject(), end = blocks[4].toObject();
+    QJsonObject zero = blocks[0].toObject(), lin = blocks[1].toObject(),
+                dwell = blocks[2].toObject(), go = blocks[3].toObject(), end = blocks[4].toObject();
     EXPECT_EQ(zero[QStringLiteral("op")].toString(), QStringLiteral("set_zero"));
     EXPECT_EQ(zero[QStringLiteral("zero")].toDouble(), 100.0);
     EXPECT_FALSE(zero.contains(QStringLiteral("x")));
@@ -103,14 +113,16 @@ TEST_F(CliCompile, JsonShape) {
 
 TEST_F(CliCompile, UsageAndFileErrorsExitTwoWithOneLine) {
     const QString ok = write(QStringLiteral("ok.G"), "M2\n");
-    for (const QStringList& args : {QStringList{QStringLiteral("compile")},
-                                    QStringList{QStringLiteral("compile"), dir.filePath(QStringLiteral("missing.G"))},
-                                    QStringList{QStringLiteral("compile"), dir.path()},
-                                    QStringList{QStringLiteral("compile"), QStringLiteral("--dialect"), QStringLiteral("basic"), ok},
-                                    QStringList{QStringLiteral("compile"), QStringLiteral("--lang"), QStringLiteral("fr"), ok},
-                                    QStringList{QStringLiteral("compile"), QStringLiteral("--bogus"), ok},
-                                    QStringList{QStringLiteral("frobnicate")},
-                                    QStringList{}}) {
+    for (const QStringList& args :
+         {QStringList{QStringLiteral("compile")},
+          QStringList{QStringLiteral("compile"), dir.filePath(QStringLiteral("missing.G"))},
+          QStringList{QStringLiteral("compile"), dir.path()},
+          QStringList{QStringLiteral("compile"), QStringLiteral("--dialect"),
+                      QStringLiteral("basic"), ok},
+          QStringList{QStringLiteral("compile"), QStringLiteral("--lang"), QStringLiteral("fr"),
+                      ok},
+          QStringList{QStringLiteral("compile"), QStringLiteral("--bogus"), ok},
+          QStringList{QStringLiteral("frobnicate")}, QStringList{}}) {
         Result r = run(args);
         EXPECT_EQ(r.exit, 2) << args.join(QLatin1Char(' ')).toStdString();
         EXPECT_TRUE(r.out.isEmpty());
@@ -130,7 +142,8 @@ TEST_F(CliCompile, UnreadableFileExitsTwo) {
 
 TEST_F(CliCompile, BinaryFileGetsDiagnosticsNotACrash) {
     QByteArray bytes;
-    for (int i = 0; i < 100000; ++i) bytes.append(static_cast<char>((i * 7919) & 0xFF));
+    for (int i = 0; i < 100000; ++i)
+        bytes.append(static_cast<char>((i * 7919) & 0xFF));
     Result r = run({QStringLiteral("compile"), write(QStringLiteral("bin.G"), bytes)});
     EXPECT_EQ(r.exit, 1);
     EXPECT_TRUE(r.out.contains(QStringLiteral("error[invalid-char]")));
@@ -142,7 +155,8 @@ TEST_F(CliCompile, ExamplePrograms) {
     ASSERT_GE(files.size(), 5);
     for (const QString& name : files) {
         QStringList args{QStringLiteral("compile"), programs.filePath(name)};
-        if (name.endsWith(QLatin1String(".classic.G"))) args << QStringLiteral("--dialect") << QStringLiteral("classic");
+        if (name.endsWith(QLatin1String(".classic.G")))
+            args << QStringLiteral("--dialect") << QStringLiteral("classic");
         Result r = run(args);
         EXPECT_EQ(r.exit, 0) << name.toStdString() << "\n" << r.out.toStdString();
     }

@@ -40,18 +40,22 @@ struct Generator {
         if (dialect == Dialect::Classic || !decimals) {
             int v = pick(lo, hi);
             value = v;
-            if (dialect == Dialect::Classic) std::snprintf(buf, sizeof buf, v < 0 ? "-%04d" : "%04d", std::abs(v));
-            else std::snprintf(buf, sizeof buf, "%d", v);
+            if (dialect == Dialect::Classic)
+                std::snprintf(buf, sizeof buf, v < 0 ? "-%04d" : "%04d", std::abs(v));
+            else
+                std::snprintf(buf, sizeof buf, "%d", v);
         } else {
             int digits = pick(0, 3);
-            std::snprintf(buf, sizeof buf, "%.*f", digits, std::uniform_real_distribution<double>(lo, hi)(rng));
+            std::snprintf(buf, sizeof buf, "%.*f", digits,
+                          std::uniform_real_distribution<double>(lo, hi)(rng));
             value = std::strtod(buf, nullptr);  // the independent parse
         }
         return buf;
     }
     std::string g(int code) {
         char buf[8];
-        std::snprintf(buf, sizeof buf, dialect == Dialect::Classic ? "g%02d" : (pick(0, 1) ? "G%d" : "g%02d"), code);
+        std::snprintf(buf, sizeof buf,
+                      dialect == Dialect::Classic ? "g%02d" : (pick(0, 1) ? "G%d" : "g%02d"), code);
         return buf;
     }
     void line(const std::string& words) {
@@ -101,8 +105,12 @@ struct Generator {
         std::vector<int> ns{n};
         for (int i = 0; i < blocks; ++i) {
             switch (pick(0, 9)) {
-                case 0: incremental = false, line(g(90)), expected.push_back({Op::Absolute}); break;
-                case 1: incremental = true, line(g(91)), expected.push_back({Op::Incremental}); break;
+                case 0:
+                    incremental = false, line(g(90)), expected.push_back({Op::Absolute});
+                    break;
+                case 1:
+                    incremental = true, line(g(91)), expected.push_back({Op::Incremental});
+                    break;
                 case 2: {
                     double v = 0;
                     std::string w = number(v, -500, 500, true);
@@ -111,7 +119,9 @@ struct Generator {
                     expected.push_back({Op::SetZero, v});
                     break;
                 }
-                case 3: zero = 0, line(g(93)), expected.push_back({Op::ResetZero}); break;
+                case 3:
+                    zero = 0, line(g(93)), expected.push_back({Op::ResetZero});
+                    break;
                 case 4: {
                     double v = 0;
                     std::string w = number(v, 0, 20, true);
@@ -119,9 +129,13 @@ struct Generator {
                     expected.push_back({Op::Dwell, v});
                     break;
                 }
-                case 5: line(dialect == Dialect::Classic ? "m00" : "M0"), expected.push_back({Op::Stop}); break;
+                case 5:
+                    line(dialect == Dialect::Classic ? "m00" : "M0"),
+                        expected.push_back({Op::Stop});
+                    break;
                 case 6: {
-                    int target = ns[static_cast<std::size_t>(pick(0, static_cast<int>(ns.size()) - 1))];
+                    int target =
+                        ns[static_cast<std::size_t>(pick(0, static_cast<int>(ns.size()) - 1))];
                     char buf[24];
                     std::snprintf(buf, sizeof buf, "m03 x%04d", target);
                     line(buf);
@@ -129,8 +143,12 @@ struct Generator {
                     expected.push_back({Op::Goto, static_cast<double>(target)});
                     break;
                 }
-                case 7: line(move(-1)); break;
-                default: line(move(pick(0, 1))); break;
+                case 7:
+                    line(move(-1));
+                    break;
+                default:
+                    line(move(pick(0, 1)));
+                    break;
             }
             ns.push_back(n);
         }
@@ -153,7 +171,8 @@ TEST_P(CompilerProperty, RandomValidProgramsResolveAsComputedIndependently) {
         gen.generate(static_cast<int>(seed % 60) + 5);
         Program p = compile(gen.text, {dialect, {}});
         ASSERT_TRUE(p.ok()) << "seed " << seed << ": " << p.diagnostics[0].code() << " at line "
-                            << p.diagnostics[0].line << "\n" << gen.text;
+                            << p.diagnostics[0].line << "\n"
+                            << gen.text;
         ASSERT_EQ(p.blocks.size(), gen.expected.size()) << "seed " << seed;
         for (std::size_t i = 0; i < p.blocks.size(); ++i) {
             const Block& b = p.blocks[i];
@@ -171,8 +190,11 @@ TEST_P(CompilerProperty, RandomValidProgramsResolveAsComputedIndependently) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(BothDialects, CompilerProperty, ::testing::Values(Dialect::Classic, Dialect::Standard),
-                         [](const auto& param_info) { return std::string(dialectName(param_info.param)); });
+INSTANTIATE_TEST_SUITE_P(BothDialects, CompilerProperty,
+                         ::testing::Values(Dialect::Classic, Dialect::Standard),
+                         [](const auto& param_info) {
+                             return std::string(dialectName(param_info.param));
+                         });
 
 }  // namespace
 }  // namespace trilho

@@ -16,12 +16,17 @@ Program compileIn(Dialect d, const std::string& src, MachineLimits m = {}) {
     o.machine = m;
     return compile(src, o);
 }
-Program std_(const std::string& src) { return compileIn(Dialect::Standard, src); }
-Program classic(const std::string& src) { return compileIn(Dialect::Classic, src); }
+Program std_(const std::string& src) {
+    return compileIn(Dialect::Standard, src);
+}
+Program classic(const std::string& src) {
+    return compileIn(Dialect::Classic, src);
+}
 
 std::vector<std::string> codes(const Program& p) {
     std::vector<std::string> out;
-    for (const auto& d : p.diagnostics) out.emplace_back(d.code());
+    for (const auto& d : p.diagnostics)
+        out.emplace_back(d.code());
     return out;
 }
 bool has(const Program& p, std::string_view code) {
@@ -89,7 +94,8 @@ class Resolution : public ::testing::TestWithParam<Case> {};
 TEST_P(Resolution, TargetsAreAbsoluteRailCoordinates) {
     const Case& c = GetParam();
     Program p = std_(c.program);
-    ASSERT_TRUE(p.ok()) << c.name << ": " << (p.diagnostics.empty() ? "" : std::string(p.diagnostics[0].code()));
+    ASSERT_TRUE(p.ok()) << c.name << ": "
+                        << (p.diagnostics.empty() ? "" : std::string(p.diagnostics[0].code()));
     std::vector<double> got;
     for (const auto& b : p.blocks)
         if (isMotion(b.op)) got.push_back(b.x);
@@ -104,10 +110,16 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"absolute with zero", "G92 X200\nG0 X100\nG0 X-50\nM2\n", {300, 150}},
         Case{"incremental after zero ignores zero", "G0 X10\nG92 X500\nG91\nG0 X5\nM2\n", {10, 15}},
         Case{"zero then reset", "G92 X200\nG0 X0\nG93\nG0 X0\nM2\n", {200, 0}},
-        Case{"incremental then absolute", "G91\nG0 X100\nG0 X100\nG90\nG0 X-100\nM2\n", {100, 200, -100}},
+        Case{"incremental then absolute",
+             "G91\nG0 X100\nG0 X100\nG90\nG0 X-100\nM2\n",
+             {100, 200, -100}},
         Case{"zero changes twice", "G92 X100\nG0 X1\nG92 X-100\nG0 X1\nM2\n", {101, -99}},
-        Case{"negative zero and incremental", "G92 X-300\nG0 X0\nG91\nG1 X-10 F50\nX-10\nM2\n", {-300, -310, -320}},
-        Case{"g93 in incremental keeps previous", "G91\nG92 X100\nG0 X10\nG93\nG0 X10\nM2\n", {10, 20}},
+        Case{"negative zero and incremental",
+             "G92 X-300\nG0 X0\nG91\nG1 X-10 F50\nX-10\nM2\n",
+             {-300, -310, -320}},
+        Case{"g93 in incremental keeps previous",
+             "G91\nG92 X100\nG0 X10\nG93\nG0 X10\nM2\n",
+             {10, 20}},
         Case{"decimals", "G0 X0.1\nG91\nG0 X0.2\nM2\n", {0.1, 0.1 + 0.2}}),
     [](const auto& param_info) {
         std::string n = param_info.param.name;
@@ -148,7 +160,7 @@ struct CodeCase {
     const char* bad;   // must produce the code
     const char* good;  // a near miss that must not
     unsigned line;
-    unsigned column;   // 0: no column
+    unsigned column;  // 0: no column
 };
 
 class EveryCode : public ::testing::TestWithParam<CodeCase> {};
@@ -163,7 +175,9 @@ TEST_P(EveryCode, ReportedWhereItAppliesAndNotOtherwise) {
     EXPECT_EQ(d->severity, Severity::Error);
     Program good = compileIn(c.dialect, c.good);
     EXPECT_FALSE(has(good, c.code)) << c.code << " reported for: " << c.good;
-    EXPECT_TRUE(good.ok()) << c.good << " first: " << (good.diagnostics.empty() ? "" : std::string(good.diagnostics[0].code()));
+    EXPECT_TRUE(good.ok()) << c.good << " first: "
+                           << (good.diagnostics.empty() ? ""
+                                                        : std::string(good.diagnostics[0].code()));
 }
 
 constexpr Dialect C = Dialect::Classic;
@@ -178,8 +192,10 @@ INSTANTIATE_TEST_SUITE_P(
         CodeCase{"n-alone", C, "n0010\nn0020 m02\n", "n0010 g90\nn0020 m02\n", 1, 6},
         CodeCase{"n-alone", S, "N10 (just a number)\nM2\n", "N10 G90 (a number)\nM2\n", 1, 4},
         CodeCase{"space-required", C, "n0010  g90\nn0020 m02\n", "n0010 g90\nn0020 m02\n", 1, 7},
-        CodeCase{"space-required", C, "n0010 g00 x0010f020\nn0020 m02\n", "n0010 g01 x0010 f020\nn0020 m02\n", 1, 16},
-        CodeCase{"trailing-words", C, "n0010 g90 m02\nn0020 m02\n", "n0010 g90\nn0020 m02\n", 1, 11},
+        CodeCase{"space-required", C, "n0010 g00 x0010f020\nn0020 m02\n",
+                 "n0010 g01 x0010 f020\nn0020 m02\n", 1, 16},
+        CodeCase{"trailing-words", C, "n0010 g90 m02\nn0020 m02\n", "n0010 g90\nn0020 m02\n", 1,
+                 11},
         CodeCase{"trailing-words", S, "G90 X10\nM2\n", "G90\nX10 G0\nM2\n", 1, 5},
         CodeCase{"trailing-words", S, "G90 G0 X10\nM2\n", "G90\nG0 X10\nM2\n", 1, 5},
         CodeCase{"trailing-words", S, "M0 X10\nM2\n", "M0\nM2\n", 1, 4},
@@ -187,18 +203,22 @@ INSTANTIATE_TEST_SUITE_P(
         CodeCase{"missing-x", S, "G4\nM2\n", "G4 X1\nM2\n", 1, 1},
         CodeCase{"missing-x", S, "G92\nM2\n", "G92 X1\nM2\n", 1, 1},
         CodeCase{"missing-x", C, "n0010 m03\nn0020 m02\n", "n0010 m03 x0020\nn0020 m02\n", 1, 7},
-        CodeCase{"negative-value", C, "n0010 g04 x-0005\nn0020 m02\n", "n0010 g04 x0005\nn0020 m02\n", 1, 11},
+        CodeCase{"negative-value", C, "n0010 g04 x-0005\nn0020 m02\n",
+                 "n0010 g04 x0005\nn0020 m02\n", 1, 11},
         CodeCase{"negative-value", S, "M3 X-10\nM2\n", "N10 M3 X10\nM2\n", 1, 4},
         CodeCase{"negative-value", C, "n0010 f-10\nn0020 m02\n", "n0010 f010\nn0020 m02\n", 1, 7},
         CodeCase{"invalid-g", C, "n0010 g05\nn0020 m02\n", "n0010 g90\nn0020 m02\n", 1, 7},
         CodeCase{"invalid-g", S, "G17\nM2\n", "G91\nM2\n", 1, 1},
         CodeCase{"invalid-m", C, "n0010 m05\nn0020 m02\n", "n0010 m00\nn0020 m02\n", 1, 7},
         CodeCase{"invalid-m", S, "M30\nM2\n", "M0\nM2\n", 1, 1},
-        CodeCase{"no-motion-mode", C, "n0010 x0010\nn0020 m02\n", "n0005 g00 x0000\nn0010 x0010\nn0020 m02\n", 1, 7},
+        CodeCase{"no-motion-mode", C, "n0010 x0010\nn0020 m02\n",
+                 "n0005 g00 x0000\nn0010 x0010\nn0020 m02\n", 1, 7},
         CodeCase{"no-motion-mode", S, "X10\nM2\n", "G0 X0\nX10\nM2\n", 1, 1},
-        CodeCase{"feed-undefined", C, "n0010 g01 x0010\nn0020 m02\n", "n0010 g01 x0010 f010\nn0020 m02\n", 1, 7},
+        CodeCase{"feed-undefined", C, "n0010 g01 x0010\nn0020 m02\n",
+                 "n0010 g01 x0010 f010\nn0020 m02\n", 1, 7},
         CodeCase{"feed-undefined", S, "G0 X1\nX2 G1\nM2\n", "F10\nG0 X1\nX2 G1\nM2\n", 2, 4},
-        CodeCase{"g00-feed", C, "n0010 g00 x0010 f020\nn0020 m02\n", "n0010 g00 x0010\nn0020 m02\n", 1, 17},
+        CodeCase{"g00-feed", C, "n0010 g00 x0010 f020\nn0020 m02\n", "n0010 g00 x0010\nn0020 m02\n",
+                 1, 17},
         CodeCase{"g00-feed", S, "G0 X1\nX2 F20\nM2\n", "G0 X1\nG1 X2 F20\nM2\n", 2, 4},
         CodeCase{"invalid-char", C, "n0010 q0010\nn0020 m02\n", "n0010 g90\nn0020 m02\n", 1, 7},
         CodeCase{"invalid-char", C, "n001a g90\nn0020 m02\n", "n0010 g90\nn0020 m02\n", 1, 1},
@@ -211,16 +231,20 @@ INSTANTIATE_TEST_SUITE_P(
         CodeCase{"invalid-char", S, "G0 X1234567890123456789\nM2\n", "G0 X123\nM2\n", 1, 4},
         CodeCase{"missing-m02", C, "n0010 g90\n", "n0010 g90\nn0020 m02\n", 1, 0},
         CodeCase{"missing-m02", S, "M2\nG90\n", "G90\nM2\n", 2, 0},
-        CodeCase{"goto-target", C, "n0010 m03 x0030\nn0020 m02\n", "n0010 m03 x0020\nn0020 m02\n", 1, 0},
+        CodeCase{"goto-target", C, "n0010 m03 x0030\nn0020 m02\n", "n0010 m03 x0020\nn0020 m02\n",
+                 1, 0},
         CodeCase{"feed-range", S, "G1 X1 F100.5\nM2\n", "G1 X1 F100\nM2\n", 1, 7},
         CodeCase{"feed-range", C, "n0010 f000\nn0020 m02\n", "n0010 f001\nn0020 m02\n", 1, 7},
-        CodeCase{"soft-limit", C, "n0010 g00 x1300\nn0020 m02\n", "n0010 g00 x1200\nn0020 m02\n", 1, 11},
+        CodeCase{"soft-limit", C, "n0010 g00 x1300\nn0020 m02\n", "n0010 g00 x1200\nn0020 m02\n", 1,
+                 11},
         CodeCase{"soft-limit", S, "G92 X1000\nG0 X300\nM2\n", "G92 X1000\nG0 X200\nM2\n", 2, 4},
         CodeCase{"unknown-axis", S, "G0 X1 Y2\nM2\n", "G0 X1\nM2\n", 1, 7},
-        CodeCase{"unknown-axis", C, "n0010 g00 z0010\nn0020 m02\n", "n0010 g00 x0010\nn0020 m02\n", 1, 11}),
+        CodeCase{"unknown-axis", C, "n0010 g00 z0010\nn0020 m02\n", "n0010 g00 x0010\nn0020 m02\n",
+                 1, 11}),
     [](const auto& param_info) {
-        std::string n = std::string(param_info.param.code) + "_" + (param_info.param.dialect == C ? "classic" : "standard") +
-                        "_" + std::to_string(param_info.index);
+        std::string n = std::string(param_info.param.code) + "_" +
+                        (param_info.param.dialect == C ? "classic" : "standard") + "_" +
+                        std::to_string(param_info.index);
         for (char& ch : n)
             if (ch == '-') ch = '_';
         return n;
@@ -228,8 +252,9 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(CompilerDiagnostics, EveryErrorIsListedAndNothingStopsEarly) {
     Program p = classic("n0010 g01 x0010\nn0005 g00 x0020 f050\nn0030 g07\nn0050 m05\nn0060\n");
-    EXPECT_EQ(codes(p), (std::vector<std::string>{"feed-undefined", "n-order", "g00-feed", "invalid-g", "invalid-m",
-                                                  "n-alone", "missing-m02"}));
+    EXPECT_EQ(codes(p),
+              (std::vector<std::string>{"feed-undefined", "n-order", "g00-feed", "invalid-g",
+                                        "invalid-m", "n-alone", "missing-m02"}));
     EXPECT_EQ(p.errorCount(), 7u);
 }
 
@@ -255,7 +280,8 @@ TEST(CompilerDiagnostics, MachineProfileSetsTravelAndAxes) {
     xy.hasY = true;
     xy.x = {0, 300};
     xy.y = {0, 200};
-    Program p = compileIn(Dialect::Standard, "G0 X100 Y50\nG91\nG1 Y10 F50\nG90\nG0 X400\nM2\n", xy);
+    Program p =
+        compileIn(Dialect::Standard, "G0 X100 Y50\nG91\nG1 Y10 F50\nG90\nG0 X400\nM2\n", xy);
     ASSERT_EQ(codes(p), std::vector<std::string>{"soft-limit"});
     ASSERT_EQ(p.y.size(), p.blocks.size());
     EXPECT_DOUBLE_EQ(p.blocks[2].x, 100.0);  // y-only move keeps x
@@ -299,7 +325,8 @@ TEST(CompilerBadInput, NulBytesAndBinaryAreInvalidCharacters) {
     EXPECT_EQ(p.diagnostics[0].textView(), "\\x00");
     EXPECT_EQ(p.diagnostics[0].column, 6u);
     std::string noise;
-    for (int i = 0; i < 4096; ++i) noise.push_back(static_cast<char>((i * 131 + 7) & 0xFF));
+    for (int i = 0; i < 4096; ++i)
+        noise.push_back(static_cast<char>((i * 131 + 7) & 0xFF));
     for (Dialect d : {C, S}) {
         Program q = compileIn(d, noise);
         EXPECT_FALSE(q.ok());
@@ -321,7 +348,8 @@ TEST(CompilerBadInput, TenMegabyteSingleLine) {
 TEST(CompilerBadInput, AMillionLines) {
     std::string src;
     src.reserve(12 * 1000000);
-    for (int i = 0; i < 999999; ++i) src += "G0 X1.5\n";
+    for (int i = 0; i < 999999; ++i)
+        src += "G0 X1.5\n";
     src += "M2\n";
     Program p = std_(src);
     ASSERT_TRUE(p.ok());
@@ -331,6 +359,27 @@ TEST(CompilerBadInput, AMillionLines) {
 
 TEST(CompilerBadInput, ByteOrderMarkIsSkipped) {
     EXPECT_TRUE(classic("\xEF\xBB\xBFn0010 m02\n").ok());
+}
+
+}  // namespace
+}  // namespace trilho
+
+namespace trilho {
+namespace {
+
+TEST(CompilerGoto, TargetsAmongUnnumberedBlocks) {
+    Program p =
+        std_("N10 G0 X1\nG0 X2\nG0 X3\nN20 G4 X1\nG0 X4\nN30 M3 X20\nN40 M3 X10\nM3 X30\nN50 M2\n");
+    ASSERT_TRUE(p.ok());
+    EXPECT_EQ(p.blocks[5].targetIndex, 3);
+    EXPECT_EQ(p.blocks[6].targetIndex, 0);
+    EXPECT_EQ(p.blocks[7].targetIndex, 5);
+}
+
+TEST(CompilerGoto, OutOfOrderNumbersStillResolve) {
+    Program p = std_("N30 G0 X1\nN10 M3 X30\nN20 M2\n");
+    EXPECT_EQ(codes(p), std::vector<std::string>{"n-order"});
+    EXPECT_EQ(p.blocks[1].targetIndex, 0);
 }
 
 }  // namespace

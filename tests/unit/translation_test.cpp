@@ -19,7 +19,7 @@ QCoreApplication& app() {
 }
 
 class Translations : public ::testing::TestWithParam<const char*> {
-protected:
+  protected:
     void SetUp() override { app(); }
     void TearDown() override { installLanguage(QStringLiteral("en")); }
 };
@@ -43,13 +43,17 @@ TEST(TranslationsPtBr, OriginalTexts) {
     ASSERT_TRUE(installLanguage(QStringLiteral("pt_BR")));
     Program p = compile("n0020 g90\nn0010 g05\n", {Dialect::Classic, {}});
     ASSERT_EQ(p.diagnostics.size(), 3u);
-    EXPECT_EQ(diagnosticMessage(p.diagnostics[0]), QStringLiteral("Erro: Seqüência n errada na linha 10"));
-    EXPECT_EQ(diagnosticMessage(p.diagnostics[1]), QStringLiteral("Erro: Comando g inválido na linha 10"));
-    EXPECT_EQ(diagnosticMessage(p.diagnostics[2]), QStringLiteral("Erro: Programa requer m02 (END) no final"));
+    EXPECT_EQ(diagnosticMessage(p.diagnostics[0]),
+              QStringLiteral("Erro: Seqüência n errada na linha 10"));
+    EXPECT_EQ(diagnosticMessage(p.diagnostics[1]),
+              QStringLiteral("Erro: Comando g inválido na linha 10"));
+    EXPECT_EQ(diagnosticMessage(p.diagnostics[2]),
+              QStringLiteral("Erro: Programa requer m02 (END) no final"));
     EXPECT_EQ(compileSummary(3), QStringLiteral("Há 3 erro(s) de compilação !"));
     EXPECT_EQ(compileSummary(0), QStringLiteral("Compilação completada com sucesso !"));
     installLanguage(QStringLiteral("en"));
-    EXPECT_EQ(diagnosticMessage(p.diagnostics[1]), QStringLiteral("invalid g command on line 10 (g05)"));
+    EXPECT_EQ(diagnosticMessage(p.diagnostics[1]),
+              QStringLiteral("invalid g command on line 10 (g05)"));
 }
 
 TEST(TranslationsLanguages, UnknownLanguageIsRefused) {
