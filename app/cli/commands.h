@@ -6,5 +6,6 @@ namespace trilho::cli {
 /// Each command takes its own arguments (argv[0] is "trilho-cli <command>") and returns the
 /// process exit status (cli_output.h).
 int compileCommand(const QStringList& args);
+int profileCommand(const QStringList& args);
 
 }  // namespace trilho::cli

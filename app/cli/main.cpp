@@ -9,6 +9,7 @@ const char* kUsage =
     "usage: trilho-cli <command> [options]\n"
     "commands:\n"
     "  compile   check a .G program and list every diagnostic\n"
+    "  profile   check a machine profile (JSON) and print it in full\n"
     "run 'trilho-cli <command> --help' for the options of a command\n";
 }
 
@@ -24,6 +25,7 @@ int main(int argc, char* argv[]) {
     const QString command = args.takeAt(1);
     args[0] = QStringLiteral("trilho-cli ") + command;
     if (command == QLatin1String("compile")) return trilho::cli::compileCommand(args);
+    if (command == QLatin1String("profile")) return trilho::cli::profileCommand(args);
     if (command == QLatin1String("--help") || command == QLatin1String("-h")) {
         trilho::cli::out(QString::fromLatin1(kUsage));
         return trilho::cli::kOk;

@@ -1,0 +1,97 @@
+#pragma once
+// The machine profile: one JSON file with the plant's parameters, the limits, the loop law and
+// its gains, and the sample period. The rail of machine.md is the default and ships as
+// resources/machines/rail.json. Every default below says where its figure comes from.
+#include <QString>
+#include <optional>
+
+#include "core/machine_limits.h"
+
+namespace trilho {
+
+enum class LoopLaw : unsigned char {
+    Classic,     ///< the 1996 difference equation (machine.md), step setpoint, DAC codes
+    Engineered,  ///< follows the profile: feed-forward, anti-windup, filtered D, slew limit
+};
+
+/// The simulated rail (hal/sim). Figures from machine.md unless marked "chosen".
+struct PlantParams {
+    double motorNoLoadRpm = 3000.0;   ///< VARIMOT SD-2530 at full reference
+    double gearRatio = 10.0;          ///< CESTARI K-40 worm reducer, 1:10
+    double drumDiameterMm = 120.0;    ///< steel drum
+    double peakTorqueNm = 5.0;        ///< chosen: amplifier current limit, 1.67x the rated 3 N.m
+    double gearEfficiency = 0.8;      ///< chosen: a 1:10 single-start worm is typically 0.75-0.85
+    double movingMassKg = 175.0;      ///< chosen: ASEA robot about 125 kg plus a 50 kg platform
+    double reflectedMassKg = 18.0;    ///< chosen: motor (6e-4 kg.m2) and drum inertia seen at the cable
+    double massFactor = 1.0;          ///< multiplies movingMassKg (payload changes; the loop is not told)
+    double speedLoopTauS = 0.015;     ///< chosen: TRANSAXE 710 PI speed loop, first-order time constant
+    double coulombFrictionN = 40.0;   ///< chosen: rollers and cable
+    double viscousFrictionNsPerM = 30.0;  ///< chosen
+    double countsPerMm = 22.8;        ///< machine.md: 100 mm = 2280 counts
+    double endSwitchMm = 1280.0;      ///< chosen: end switches 15 mm inside the hard stops
+    double hardStopMm = 1295.0;       ///< machine.md: about 2590 mm of travel, centre origin
+    double centreSwitchHalfWidthMm = 2.0;  ///< chosen: the centre vane reads active within +-2 mm
+    double endSwitchLengthMm = 15.0;  ///< the end switch stays active from endSwitchMm to the stop
+
+    /// Platform speed at +10 V reference: 3000 rpm / 10 * pi * 120 mm = 1885 mm/s.
+    double maxSpeedMmS() const;
+    /// Peak force at the cable, N.
+    double peakForceN() const;
+};
+
+struct LoopGains {
+    double kp = 0.0;
+    double ki = 0.0;
+    double kd = 0.0;
+};
+
+struct LoopParams {
+    LoopLaw law = LoopLaw::Engineered;
+    double samplePeriodS = 0.001;  ///< 1 kHz; the original VB timer was 10 ms
+    /// machine.md: the original screen's defaults (Kp code/mm, Ki code/(mm.tick), Kd code.ms/mm).
+    LoopGains classic{0.2, 0.0005, 1.0};
+    /// Engineered: Kp code/mm, Ki code/(mm.s), Kd code/(mm/s). Chosen by simulation, see
+    /// tests/integration/rail_moves_test.cpp.
+    LoopGains engineered{1.2, 0.5, 0.02};
+    double derivativeFilterS = 0.004;   ///< first-order filter on the measured velocity
+    double slewCodesPerS = 10000.0;     ///< output slew limit, DAC codes per second
+    double followingErrorLimitMm = 25.0;  ///< beyond this a move stops with an alarm
+    double inPositionWindowMm = 0.044;  ///< one count
+    double inPositionTimeS = 0.05;      ///< must stay inside the window this long
+    double classicInPositionMm = 0.5;   ///< the VB's epsilon
+    double replanErrorMm = 1.0;         ///< lag beyond which the profile is re-planned gentler
+    double switchDebounceS = 0.005;     ///< a switch bit must read the same this long to count
+};
+
+struct MotionLimits {
+    double rapidSpeedMmS = 1700.0;  ///< chosen: 90 % of the plant's 1885 mm/s, headroom for the loop
+    double accelerationMmS2 = 2500.0;  ///< chosen: 80 % of the nominal 3.1 m/s2 the current allows
+    double minAccelerationMmS2 = 300.0;  ///< re-planning never goes gentler than this
+    double jogMaxFraction = 0.5;    ///< manual mode caps the speed at this fraction of rapid
+};
+
+struct MachineProfile {
+    QString name = QStringLiteral("rail");
+    QString description = QStringLiteral("Robot rail of the USP manufacturing cell (1996)");
+    MachineLimits limits;   ///< axes and soft limits (compiler)
+    PlantParams plant;
+    LoopParams loop;
+    MotionLimits motion;
+
+    /// The default profile: the rail of machine.md.
+    static MachineProfile rail();
+};
+
+struct ProfileLoad {
+    std::optional<MachineProfile> profile;
+    QString error;  ///< "rail.json: loop.samplePeriodS: must be between 0.0001 and 0.1 (got 5)"
+};
+
+/// Reads a profile; keys not given keep the defaults of rail(). Every bad value names its key.
+ProfileLoad loadMachineProfile(const QString& path);
+ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin);
+QByteArray machineProfileToJson(const MachineProfile& profile);
+/// Writes atomically (QSaveFile): a crash never leaves half a profile.
+bool saveMachineProfile(const MachineProfile& profile, const QString& path, QString* error);
+
+}  // namespace trilho

@@ -1,0 +1,104 @@
+#pragma once
+// The servo tick of the rail (style.md, "a dumb servo tick"): each tick reads the inputs once,
+// samples the motion, runs the position loop, checks the limits and writes the drive once.
+// Time is passed in; nothing here allocates, locks, sleeps or logs, so tests and the
+// command-line tool run whole moves in virtual time.
+#include <cstdint>
+
+#include "core/counter_reader.h"
+#include "core/machine_profile.h"
+#include "core/position_loop.h"
+#include "core/switch_filter.h"
+#include "core/trapezoid.h"
+#include "hal/rail_io.h"
+
+namespace trilho {
+
+enum class ServoMode : std::uint8_t {
+    Idle,    ///< drive at 128 (0 V), no loop: the VB's state between moves
+    Hold,    ///< the loop holds the last setpoint
+    Move,    ///< following a profile (engineered) or a step setpoint (classic) to a target
+    Direct,  ///< the operator sets the drive code (the original manual mode)
+    Fault,   ///< drive at 128 until the fault is cleared
+};
+
+enum class ServoFault : std::uint8_t {
+    None,
+    FollowingError,  ///< |setpoint - position| beyond the limit (a stuck encoder ends here)
+    LeftEndSwitch,   ///< the left end switch while moving left
+    RightEndSwitch,
+    AmplifierFault,  ///< the amplifier's ready input dropped
+    HardStop,        ///< not reported by the servo; reserved for the plant's own stop
+};
+
+/// Everything one tick knew, for the controller, the screens and traces.
+struct ServoSample {
+    double timeS = 0.0;
+    double setpointMm = 0.0;
+    double setpointVelocityMmS = 0.0;
+    double positionMm = 0.0;
+    double velocityMmS = 0.0;       ///< filtered estimate from the counter
+    double accelerationMmS2 = 0.0;  ///< filtered estimate
+    double errorMm = 0.0;           ///< setpoint - position
+    double targetMm = 0.0;
+    double moveStartMm = 0.0;
+    LoopOutput loop;
+    std::uint8_t switches = 248;    ///< debounced switch byte
+    ServoMode mode = ServoMode::Idle;
+    ServoFault fault = ServoFault::None;
+    bool inPosition = false;        ///< the move is over and the position settled in the window
+    std::uint32_t replans = 0;      ///< profiles re-planned gentler because the plant lagged
+    std::uint32_t rejectedReads = 0;
+};
+
+class RailServo {
+public:
+    RailServo(const MachineProfile& profile, RailIo& io);
+
+    /// One servo period of dtS seconds (measured, may jitter).
+    void tick(double dtS);
+    const ServoSample& sample() const { return sample_; }
+
+    /// Moves to target (mm from the centre) at speedFraction of the rapid speed (0..1].
+    void moveTo(double targetMm, double speedFraction);
+    /// Controlled stop: brakes to rest along a profile, then holds.
+    void stop();
+    /// E-stop: drive to 0 V at once and stay idle.
+    void emergencyStop();
+    /// Drive at 0 V without the loop (the VB after a move).
+    void release();
+    /// Sets the drive code directly (manual mode of 1996); refused towards an active end switch.
+    bool setDirect(std::uint8_t code);
+    void hold();
+    void clearFault();
+    /// Speed override (0..1.5] applied to the move in progress and the next ones.
+    void setSpeedOverride(double factor);
+    double speedOverride() const { return override_; }
+    void setGains(LoopLaw law, const LoopGains& gains) { loop_.setGains(law, gains); }
+    void setLaw(LoopLaw law);
+    const PositionLoop& loop() const { return loop_; }
+    /// Takes the counter's current value as `positionMm` (after homing on the centre switch).
+    void resync(double positionMm);
+    const MachineProfile& profile() const { return profile_; }
+
+private:
+    void fault(ServoFault f);
+    void planFrom(double positionMm, double velocityMmS);
+
+    MachineProfile profile_;
+    RailIo& io_;
+    PositionLoop loop_;
+    CounterReader counter_;
+    SwitchFilter switches_;
+    ServoSample sample_;
+    Trapezoid profileMotion_;
+    double profileTime_ = 0.0;
+    double speedFraction_ = 1.0;   ///< of the rapid speed, as programmed
+    double override_ = 1.0;
+    double accel_ = 0.0;           ///< current planning acceleration, mm/s2 (lowered by re-plans)
+    double settledFor_ = 0.0;      ///< s inside the in-position window
+    double velocity_ = 0.0, acceleration_ = 0.0;
+    std::uint8_t directCode_ = kDacZero;
+};
+
+}  // namespace trilho

@@ -1,0 +1,69 @@
+#pragma once
+// The simulated rail (machine.md): differential DAC -> +-10 V reference -> amplifier speed
+// loop (first order, with a current limit that becomes an acceleration limit depending on the
+// moving mass) -> motor -> 1:10 reducer -> 120 mm drum -> cable -> platform, with Coulomb and
+// viscous friction, a 16-bit quadrature counter at 22.8 counts/mm that wraps, end switches and
+// a centre switch that clears the counter. Deterministic for a seed; advanced only by step().
+#include <cstdint>
+#include <random>
+
+#include "core/machine_profile.h"
+#include "hal/rail_io.h"
+#include "hal/sim/fault_injection.h"
+
+namespace trilho {
+
+struct PlantState {
+    double timeS = 0.0;
+    double positionMm = 0.0;      ///< platform, mm from the rail centre (the truth)
+    double velocityMmS = 0.0;
+    double accelerationMmS2 = 0.0;
+    double drumMm = 0.0;          ///< drum travel (what the encoder sees), differs by slip
+    double referenceV = 0.0;      ///< amplifier input
+    double forceN = 0.0;          ///< at the cable
+    bool atHardStop = false;
+    bool amplifierFaulted = false;
+};
+
+class SimRail final : public RailIo {
+public:
+    explicit SimRail(const PlantParams& params = {}, std::uint64_t seed = 1);
+
+    // RailIo
+    void writeDrive(std::uint8_t code) override { code_ = code; }
+    std::uint16_t readCounter() override;
+    std::uint8_t readSwitches() override;
+
+    /// Advances the plant by dt seconds (internally in sub-steps of at most 0.25 ms).
+    void step(double dt);
+
+    void setFaults(const FaultInjection& faults) { faults_ = faults; }
+    const FaultInjection& faults() const { return faults_; }
+    /// Puts the platform at rest at x (mm from the centre); the counter reads as if homed.
+    void placeAt(double positionMm);
+    void setMassFactor(double factor) { params_.massFactor = factor; }
+
+    const PlantState& state() const { return state_; }
+    const PlantParams& params() const { return params_; }
+    std::uint8_t driveCode() const { return code_; }
+
+private:
+    void subStep(double h);
+    std::int64_t encoderCounts() const;
+
+    PlantParams params_;
+    FaultInjection faults_;
+    PlantState state_;
+    std::mt19937_64 rng_;
+    std::uint8_t code_ = kDacZero;
+    double vmax_ = 0.0;           ///< mm/s at +10 V
+    double forceMax_ = 0.0;       ///< N
+    std::int64_t counterOffset_ = 0;  ///< counts subtracted so the counter reads 0 at the reset
+    double lostCounts_ = 0.0;     ///< counts the card missed (fault)
+    std::int64_t stuckCounts_ = 0;
+    bool stuck_ = false;
+    std::uint16_t previousCounter_ = 0;  ///< counter one sub-step ago (for torn reads)
+    bool tornArmed_ = false;  ///< the first read after a step may straddle a carry; a re-read never does
+};
+
+}  // namespace trilho

@@ -1,0 +1,172 @@
+// The simulated rail against the figures of machine.md, and each injectable fault.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/counter_reader.h"
+#include "core/switch_filter.h"
+#include "hal/sim/sim_rail.h"
+
+namespace trilho {
+namespace {
+
+void run(SimRail& rail, double seconds, double dt = 0.001) {
+    for (double t = 0; t < seconds - 1e-12; t += dt) rail.step(dt);
+}
+
+TEST(SimRail, DerivedFiguresMatchTheDocument) {
+    PlantParams p;
+    EXPECT_NEAR(p.maxSpeedMmS(), 1884.96, 0.01);  // 3000 rpm / 10 * pi * 120 mm
+    EXPECT_NEAR(p.peakForceN(), 5.0 * 10 * 0.8 / 0.06, 1e-9);
+}
+
+TEST(SimRail, DacCodeSetsTheSpeed) {
+    SimRail rail;
+    rail.placeAt(-1200);
+    rail.writeDrive(255);
+    run(rail, 1.0);
+    EXPECT_NEAR(rail.state().referenceV, 10.0, 1e-12);
+    EXPECT_NEAR(rail.state().velocityMmS, PlantParams{}.maxSpeedMmS(), 1.0);
+    rail.placeAt(0);
+    rail.writeDrive(128);
+    run(rail, 0.5);
+    EXPECT_EQ(rail.state().positionMm, 0.0);
+    rail.writeDrive(64);  // -64 codes: about -5 V, half speed to the left
+    run(rail, 1.0);
+    EXPECT_NEAR(rail.state().velocityMmS, -PlantParams{}.maxSpeedMmS() * 64.0 / 127, 1.0);
+}
+
+TEST(SimRail, AccelerationLimitFallsWithTheMovingMass) {
+    PlantParams light, heavy;
+    heavy.massFactor = 3.0;
+    SimRail a(light), b(heavy);
+    a.writeDrive(255), b.writeDrive(255);
+    run(a, 0.2), run(b, 0.2);
+    const double massLight = light.movingMassKg + light.reflectedMassKg;
+    const double massHeavy = 3 * heavy.movingMassKg + heavy.reflectedMassKg;
+    // Both current-limited: speed after 0.2 s in the ratio of the accelerations.
+    const double expectLight = (light.peakForceN() - light.coulombFrictionN) / massLight;
+    const double expectHeavy = (heavy.peakForceN() - heavy.coulombFrictionN) / massHeavy;
+    EXPECT_NEAR(a.state().velocityMmS / b.state().velocityMmS, expectLight / expectHeavy, 0.05);
+}
+
+TEST(SimRail, CounterScaleAndSixteenBitWrap) {
+    SimRail rail;
+    rail.placeAt(100.0);
+    EXPECT_EQ(rail.readCounter(), 2280);  // 100 mm = 2280 counts
+    rail.placeAt(-100.0);
+    EXPECT_EQ(rail.readCounter(), static_cast<std::uint16_t>(-2280));
+}
+
+TEST(SimRail, SwitchBytesAsTheVbReadThem) {
+    SimRail rail;
+    rail.placeAt(500);
+    EXPECT_EQ(rail.readSwitches(), 248);
+    rail.placeAt(0);
+    EXPECT_EQ(rail.readSwitches(), 250);
+    rail.placeAt(-1285);
+    EXPECT_EQ(rail.readSwitches(), 249);
+    rail.placeAt(1285);
+    EXPECT_EQ(rail.readSwitches(), 252);
+}
+
+TEST(SimRail, CentreMarkClearsTheCounterAtTheCrossing) {
+    FaultInjection slip;
+    slip.slipFraction = 0.05;
+    slip.slipForceN = 0;  // always slipping: the drum turns more than the platform travels
+    SimRail rail;
+    rail.placeAt(-300);
+    rail.setFaults(slip);
+    rail.writeDrive(160);
+    double before = 0;
+    while (rail.state().positionMm < -5) rail.step(0.001);
+    before = static_cast<std::int16_t>(rail.readCounter()) / 22.8 - rail.state().positionMm;
+    EXPECT_GT(std::abs(before), 5.0);  // the slip shows in the count
+    while (rail.state().positionMm < 50) rail.step(0.001);
+    const double after = static_cast<std::int16_t>(rail.readCounter()) / 22.8 - rail.state().positionMm;
+    EXPECT_LT(std::abs(after), 50 * 0.06);  // re-zeroed at the centre; slip since then only
+}
+
+TEST(SimRail, SameSeedSameRun) {
+    FaultInjection f;
+    f.switchGlitchProbability = 0.2;
+    SimRail a({}, 7), b({}, 7), c({}, 8);
+    a.setFaults(f), b.setFaults(f), c.setFaults(f);
+    int differ = 0;
+    for (int i = 0; i < 1000; ++i) {
+        const auto x = a.readSwitches(), y = b.readSwitches(), z = c.readSwitches();
+        EXPECT_EQ(x, y);
+        differ += x != z;
+    }
+    EXPECT_GT(differ, 0);
+}
+
+TEST(SimRailFaults, SwitchGlitchesAreFilteredOut) {
+    FaultInjection f;
+    f.switchGlitchProbability = 0.05;
+    SimRail rail({}, 3);
+    rail.placeAt(500);
+    rail.setFaults(f);
+    SwitchFilter filter(5);  // the servo's 5 ms at 1 kHz
+    int rawGlitches = 0;
+    for (int i = 0; i < 10000; ++i) {
+        const auto raw = rail.readSwitches();
+        rawGlitches += raw != 248;
+        EXPECT_EQ(filter.update(raw), 248) << i;
+    }
+    EXPECT_GT(rawGlitches, 300);
+}
+
+TEST(SimRailFaults, TornReadsNeverMoveTheReaderPosition) {
+    FaultInjection f;
+    f.tornReads = true;
+    SimRail rail;
+    rail.setFaults(f);
+    CounterReader reader(22.8, PlantParams{}.maxSpeedMmS());
+    reader.resync(rail);
+    rail.writeDrive(255);
+    double previous = 0;
+    int torn = 0;
+    for (int i = 0; i < 600; ++i) {
+        rail.step(0.001);
+        reader.read(rail, 0.001, false);
+        const double truth = rail.state().positionMm;
+        EXPECT_NEAR(reader.positionMm(), truth, 0.1) << i;
+        EXPECT_LT(std::abs(reader.positionMm() - previous), 1.5 * 1885 * 0.001 + 0.2);
+        previous = reader.positionMm();
+    }
+    torn = static_cast<int>(reader.disagreements());
+    EXPECT_GT(torn, 5);  // the fault really happened
+}
+
+TEST(SimRailFaults, CountsLostAboveTheCardRate) {
+    FaultInjection f;
+    f.maxCountRateHz = 20000;  // 877 mm/s
+    SimRail rail;
+    rail.setFaults(f);
+    rail.writeDrive(255);
+    run(rail, 1.0);
+    const double counted = static_cast<std::int16_t>(rail.readCounter()) / 22.8;
+    EXPECT_LT(counted, rail.state().positionMm - 100);
+}
+
+TEST(SimRailFaults, StuckEncoderAndAmplifierTrip) {
+    FaultInjection f;
+    f.stuckEncoderAtS = 0.1;
+    f.amplifierFaultAtS = 0.5;
+    SimRail rail;
+    rail.setFaults(f);
+    rail.writeDrive(140);  // 178 mm/s
+    run(rail, 0.1);
+    const auto frozen = rail.readCounter();
+    run(rail, 0.2);
+    EXPECT_EQ(rail.readCounter(), frozen);
+    EXPECT_GT(rail.state().positionMm, 30);
+    EXPECT_TRUE(rail.readSwitches() & 0x08);
+    run(rail, 2.0);
+    EXPECT_FALSE(rail.readSwitches() & 0x08);
+    EXPECT_EQ(rail.state().velocityMmS, 0.0);  // coasted to a stop on friction
+}
+
+}  // namespace
+}  // namespace trilho

@@ -1,0 +1,105 @@
+// Motion profiles: option 2 of section 3.3 and planning from a moving state, checked by
+// seeded random properties (limits never exceeded, exact end, continuity).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "core/line_profile.h"
+#include "core/trapezoid.h"
+
+namespace trilho {
+namespace {
+
+TEST(Trapezoid, ReachesSpeedAndHoldsItWithEqualRampTimes) {
+    // 1000 mm at 500 mm/s, 1000 mm/s2: ramps of 0.5 s (125 mm each), cruise 750 mm = 1.5 s.
+    Trapezoid t = Trapezoid::restToRest(0, 1000, 500, 1000);
+    EXPECT_NEAR(t.duration(), 2.5, 1e-12);
+    EXPECT_NEAR(t.at(0.5).velocityMmS, 500, 1e-9);
+    EXPECT_NEAR(t.at(0.5).positionMm, 125, 1e-9);
+    EXPECT_NEAR(t.at(1.0).accelerationMmS2, 0, 1e-12);
+    EXPECT_NEAR(t.at(2.0).positionMm, 875, 1e-9);
+    EXPECT_NEAR(t.at(2.25).accelerationMmS2, -1000, 1e-12);
+    EXPECT_EQ(t.at(2.5).positionMm, 1000);
+}
+
+TEST(Trapezoid, TriangularWhenTheSpeedCannotBeReachedByHalfway) {
+    // 100 mm at 1000 mm/s2: peak sqrt(a d) = 316 mm/s < 500, halfway at t = sqrt(d/a) = 0.316 s.
+    Trapezoid t = Trapezoid::restToRest(0, -100, 500, 1000);
+    EXPECT_NEAR(t.duration(), 2 * std::sqrt(0.1), 1e-12);
+    EXPECT_NEAR(t.peakSpeed(), std::sqrt(1000.0 * 100), 1e-9);
+    EXPECT_NEAR(t.at(t.duration() / 2).positionMm, -50, 1e-9);
+}
+
+TEST(Trapezoid, FromAMovingStateTooFastToStopBrakesAndComesBack) {
+    Trapezoid t = Trapezoid::fromState(0, 1000, 100, 1500, 1000);  // needs 500 mm to stop
+    EXPECT_NEAR(t.at(1.0).velocityMmS, 0, 1e-9);
+    EXPECT_NEAR(t.at(1.0).positionMm, 500, 1e-9);
+    EXPECT_EQ(t.at(t.duration()).positionMm, 100);
+}
+
+TEST(Trapezoid, ZeroLengthMoveIsEmpty) {
+    Trapezoid t = Trapezoid::restToRest(5, 5, 100, 100);
+    EXPECT_EQ(t.duration(), 0);
+    EXPECT_EQ(t.at(1).positionMm, 5);
+}
+
+TEST(TrapezoidProperty, RandomProfilesRespectLimitsEndExactlyAndAreContinuous) {
+    std::mt19937_64 rng(20261122);
+    std::uniform_real_distribution<double> pos(-1300, 1300), speed(1, 2000), accel(10, 5000), unit(-1, 1);
+    for (int i = 0; i < 20000; ++i) {
+        const double v = speed(rng), a = accel(rng), p0 = pos(rng), target = pos(rng);
+        const bool moving = i % 2 == 1;
+        const double v0 = moving ? unit(rng) * v : 0.0;  // start within the speed limit
+        Trapezoid t = moving ? Trapezoid::fromState(p0, v0, target, v, a) : Trapezoid::restToRest(p0, target, v, a);
+        ASSERT_EQ(t.at(t.duration()).positionMm, target);
+        ASSERT_EQ(t.at(t.duration() + 1).velocityMmS, 0.0);
+        ASSERT_NEAR(t.at(t.duration() - 1e-12).positionMm, target, 1e-6 * (1 + std::abs(target)));
+        ASSERT_LE(t.peakSpeed(), v * (1 + 1e-9)) << i;
+        const int steps = 400;
+        MotionSample prev = t.at(0);
+        ASSERT_EQ(prev.positionMm, p0);
+        ASSERT_EQ(prev.velocityMmS, v0);
+        const double h = t.duration() / steps;
+        for (int k = 1; k <= steps; ++k) {
+            MotionSample s = t.at(k * h);
+            ASSERT_LE(std::abs(s.accelerationMmS2), a * (1 + 1e-9));
+            ASSERT_LE(std::abs(s.velocityMmS), v * (1 + 1e-9));
+            // Continuity: the change over a step is bounded by the limits.
+            ASSERT_LE(std::abs(s.velocityMmS - prev.velocityMmS), a * h * (1 + 1e-6) + 1e-9) << i << " " << k;
+            ASSERT_LE(std::abs(s.positionMm - prev.positionMm), v * h * (1 + 1e-6) + 1e-9) << i << " " << k;
+            prev = s;
+        }
+    }
+}
+
+TEST(LineProfile, AxesStartAndStopTogetherOnTheLine) {
+    Eigen::Vector2d start(0, 0), target(300, 100), speeds(150, 150), accels(300, 300);
+    LineProfile line(start, target, speeds, accels);
+    // X is the long axis: it runs at its limits, Y follows the line.
+    const double length = std::sqrt(300.0 * 300 + 100 * 100);
+    const double share = 300 / length;
+    Trapezoid alongX = Trapezoid::restToRest(0, length, 150 / share, 300 / share);
+    EXPECT_NEAR(line.duration(), alongX.duration(), 1e-12);
+    for (double t = 0; t <= line.duration(); t += 0.01) {
+        LineSample s = line.at(t);
+        EXPECT_NEAR(s.position[1], s.position[0] / 3.0, 1e-9);  // on the line y = x/3
+        EXPECT_LE(std::abs(s.velocity[0]), 150 * (1 + 1e-9));
+        EXPECT_LE(std::abs(s.acceleration[0]), 300 * (1 + 1e-9));
+        EXPECT_LE(std::abs(s.velocity[1]), 150 * (1 + 1e-9));
+    }
+    LineSample end = line.at(line.duration());
+    EXPECT_NEAR(end.position[0], 300, 1e-9);
+    EXPECT_NEAR(end.position[1], 100, 1e-9);
+    EXPECT_EQ(end.velocity.norm(), 0.0);
+}
+
+TEST(LineProfile, MatchesTheSeedTimeForTheSlowestAxis) {
+    // xy.md B: tf = (vmax^2 + a|d|) / (a vmax) for a trapezoid; 300 mm at 150 mm/s, 300 mm/s2.
+    Eigen::Vector2d start(0, 0), target(300, 0), speeds(150, 150), accels(300, 300);
+    LineProfile line(start, target, speeds, accels);
+    EXPECT_NEAR(line.duration(), LineProfile::seedAxisTime(300, 150, 300), 1e-12);
+}
+
+}  // namespace
+}  // namespace trilho
