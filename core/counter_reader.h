@@ -13,14 +13,18 @@ class CounterReader {
 public:
     CounterReader(double countsPerMm, double maxSpeedMmS) : countsPerMm_(countsPerMm), maxSpeedMmS_(maxSpeedMmS) {}
 
-    /// Reads the counter; centreActive is the centre switch seen this tick.
-    void read(RailIo& io, double dtS, bool centreActive);
+    /// Reads the counter. nearCentre: the centre switch read active this tick (raw, not
+    /// debounced: at speed the platform crosses its band in 3 ms) or the platform is close to it.
+    void read(RailIo& io, double dtS, bool nearCentre);
     /// Starts counting from the counter's current value, as position `counts`.
     void resync(RailIo& io, std::int64_t counts = 0);
 
     std::int64_t counts() const { return counts_; }
     double positionMm() const { return static_cast<double>(counts_) / countsPerMm_; }
     std::int64_t lastDelta() const { return lastDelta_; }
+    /// The last read re-based the count (the centre mark cleared the counter, or the counter
+    /// jumped and stayed there): the change is a new reference, not motion.
+    bool rebased() const { return rebased_; }
     std::uint32_t rejected() const { return rejected_; }     ///< implausible reads refused
     std::uint32_t disagreements() const { return disagreements_; }  ///< double reads that differed
 
@@ -33,6 +37,8 @@ private:
     std::uint32_t rejected_ = 0;
     std::uint32_t disagreements_ = 0;
     int rejectRun_ = 0;
+    bool rebased_ = false;
+    std::uint16_t pendingRaw_ = 0;  ///< last refused raw value
 };
 
 }  // namespace trilho

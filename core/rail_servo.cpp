@@ -143,15 +143,23 @@ void RailServo::tick(double dtS) {
     s.timeS += dtS;
 
     // ---- inputs, read once -------------------------------------------------------------------
-    const std::uint8_t sw = switches_.update(io_.readSwitches());
+    const std::uint8_t rawSwitches = io_.readSwitches();
+    const std::uint8_t sw = switches_.update(rawSwitches);
     s.switches = sw;
     const double previous = s.positionMm;
-    counter_.read(io_, dtS, (sw & switch_bits::kCentre) != 0);
+    const bool nearCentre = ((rawSwitches | sw) & switch_bits::kCentre) || std::abs(s.positionMm) < 30.0;
+    counter_.read(io_, dtS, nearCentre);
     s.positionMm = counter_.positionMm();
     s.rejectedReads = counter_.rejected();
+    double jumpMm = 0.0;
+    if (counter_.rebased()) {
+        // A new reference, not motion: keep it out of the velocity estimate.
+        jumpMm = (s.positionMm - previous) - velocity_ * dtS;
+        ++s.rebases;
+    }
     // Filtered velocity and acceleration (first order, derivativeFilterS).
     const double alpha = dtS / (profile_.loop.derivativeFilterS + dtS);
-    const double rawVelocity = (s.positionMm - previous) / dtS;
+    const double rawVelocity = (s.positionMm - previous - jumpMm) / dtS;
     const double newVelocity = velocity_ + alpha * (rawVelocity - velocity_);
     acceleration_ += alpha * ((newVelocity - velocity_) / dtS - acceleration_);
     velocity_ = newVelocity;
@@ -161,6 +169,13 @@ void RailServo::tick(double dtS) {
     if (s.mode == ServoMode::Fault) {
         io_.writeDrive(kDacZero);
         return;
+    }
+    // After a re-base the platform is not where the plan thought: plan the rest of the move
+    // from the corrected position, at the speed the setpoint had (no jump in the command).
+    if (jumpMm != 0.0 && s.mode == ServoMode::Move && profile_.loop.law == LoopLaw::Engineered &&
+        profileTime_ < profileMotion_.duration()) {
+        const MotionSample m = profileMotion_.at(profileTime_);
+        planFrom(m.positionMm + jumpMm, m.velocityMmS);
     }
     if (!(sw & switch_bits::kAmplifierReady) && s.mode != ServoMode::Idle) return fault(ServoFault::AmplifierFault);
 
@@ -213,9 +228,12 @@ void RailServo::tick(double dtS) {
 
     // The plant cannot follow (a heavier load than planned): re-plan from the measured state
     // with a gentler acceleration instead of letting the integrator drive past the target.
+    // Only when the platform does move the planned way, slower: a frozen count (stuck
+    // encoder) must grow into a following error, not be planned away.
+    const bool movingAlong = velocity_ * spVelocity > 0.0 && std::abs(velocity_) >= 0.25 * std::abs(spVelocity);
     if (s.mode == ServoMode::Move && profile_.loop.law == LoopLaw::Engineered &&
         profileTime_ < profileMotion_.duration() && std::abs(s.errorMm) > profile_.loop.replanErrorMm &&
-        accel_ > profile_.motion.minAccelerationMmS2) {
+        accel_ > profile_.motion.minAccelerationMmS2 && movingAlong) {
         accel_ = std::max(profile_.motion.minAccelerationMmS2, accel_ * 0.7);
         planFrom(s.positionMm, velocity_);
         ++s.replans;

@@ -49,6 +49,7 @@ struct ServoSample {
     bool inPosition = false;        ///< the move is over and the position settled in the window
     std::uint32_t replans = 0;      ///< profiles re-planned gentler because the plant lagged
     std::uint32_t rejectedReads = 0;
+    std::uint32_t rebases = 0;      ///< counter re-zeroed under us (the centre mark)
 };
 
 class RailServo {
