@@ -8,7 +8,7 @@
 namespace trilho {
 
 PositionLoop::PositionLoop(const LoopParams& params, const PlantParams& plant)
-    : params_(params), speedPerCode_(plant.maxSpeedMmS() / 127.0), lagS_(plant.speedLoopTauS) {}
+    : params_(params), codesPerSpeed_(127.0 / plant.maxSpeedMmS()), lagS_(plant.speedLoopTauS) {}
 
 void PositionLoop::reset() {
     previousError_ = 0.0;
@@ -77,7 +77,7 @@ double PositionLoop::engineeredTerms(const LoopGains& g, const LoopInput& in, do
     // D on the measurement (no kick when the setpoint moves); the feed-forward adds Kd v_sp so
     // D damps only the deviation from the profile's velocity.
     *d = -g.kd * in.measuredVelocityMmS;
-    *ff = (in.setpointVelocityMmS + lagS_ * in.setpointAccelerationMmS2) / speedPerCode_ + g.kd * in.setpointVelocityMmS;
+    *ff = (in.setpointVelocityMmS + lagS_ * in.setpointAccelerationMmS2) * codesPerSpeed_ + g.kd * in.setpointVelocityMmS;
     return *p + *d + *ff;
 }
 

@@ -52,7 +52,7 @@ private:
     double engineeredTerms(const LoopGains& g, const LoopInput& in, double* p, double* d, double* ff) const;
 
     LoopParams params_;
-    double speedPerCode_;  ///< mm/s per DAC code: 1885 / 127
+    double codesPerSpeed_;  ///< DAC codes per mm/s: 127 / 1885
     double lagS_;          ///< amplifier speed-loop time constant
     // classic state
     double previousError_ = 0.0;

@@ -157,11 +157,16 @@ void RailServo::tick(double dtS) {
         jumpMm = (s.positionMm - previous) - velocity_ * dtS;
         ++s.rebases;
     }
-    // Filtered velocity and acceleration (first order, derivativeFilterS).
-    const double alpha = dtS / (profile_.loop.derivativeFilterS + dtS);
-    const double rawVelocity = (s.positionMm - previous - jumpMm) / dtS;
-    const double newVelocity = velocity_ + alpha * (rawVelocity - velocity_);
-    acceleration_ += alpha * ((newVelocity - velocity_) / dtS - acceleration_);
+    // Filtered velocity and acceleration (first order, derivativeFilterS). The period hardly
+    // ever changes, so its reciprocals are kept (divisions were a third of the tick).
+    if (dtS != cachedDt_) {
+        cachedDt_ = dtS;
+        inverseDt_ = 1.0 / dtS;
+        alpha_ = dtS / (profile_.loop.derivativeFilterS + dtS);
+    }
+    const double rawVelocity = (s.positionMm - previous - jumpMm) * inverseDt_;
+    const double newVelocity = velocity_ + alpha_ * (rawVelocity - velocity_);
+    acceleration_ += alpha_ * ((newVelocity - velocity_) * inverseDt_ - acceleration_);
     velocity_ = newVelocity;
     s.velocityMmS = velocity_;
     s.accelerationMmS2 = acceleration_;

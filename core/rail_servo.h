@@ -99,6 +99,7 @@ private:
     double accel_ = 0.0;           ///< current planning acceleration, mm/s2 (lowered by re-plans)
     double settledFor_ = 0.0;      ///< s inside the in-position window
     double velocity_ = 0.0, acceleration_ = 0.0;
+    double cachedDt_ = 0.0, inverseDt_ = 0.0, alpha_ = 0.0;
     std::uint8_t directCode_ = kDacZero;
 };
 

@@ -10,6 +10,8 @@ public:
     explicit SwitchFilter(int reads = 3) : reads_(reads) {}
 
     std::uint8_t update(std::uint8_t raw) {
+        if (raw == stable_ && !pending_) return stable_;  // the common case: nothing changing
+        pending_ = false;
         for (int bit = 0; bit < 8; ++bit) {
             const auto mask = static_cast<std::uint8_t>(1u << bit);
             if ((raw & mask) == (stable_ & mask)) {
@@ -17,12 +19,15 @@ public:
             } else if (++run_[bit] >= reads_) {
                 stable_ ^= mask;
                 run_[bit] = 0;
+            } else {
+                pending_ = true;
             }
         }
         return stable_;
     }
     void reset(std::uint8_t value) {
         stable_ = value;
+        pending_ = false;
         for (auto& r : run_) r = 0;
     }
     std::uint8_t value() const { return stable_; }
@@ -31,6 +36,7 @@ private:
     int reads_;
     std::uint8_t stable_ = 248;
     int run_[8] = {};
+    bool pending_ = false;  ///< some bit is part-way through its run
 };
 
 }  // namespace trilho

@@ -34,7 +34,7 @@ public:
     std::uint16_t readCounter() override;
     std::uint8_t readSwitches() override;
 
-    /// Advances the plant by dt seconds (internally in sub-steps of at most 0.25 ms).
+    /// Advances the plant by dt seconds (internally in sub-steps of at most 1 ms).
     void step(double dt);
 
     void setFaults(const FaultInjection& faults) { faults_ = faults; }
