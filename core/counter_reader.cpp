@@ -12,6 +12,13 @@ void CounterReader::resync(RailIo& io, std::int64_t counts) {
     rejectRun_ = 0;
 }
 
+void CounterReader::resyncToCounter(RailIo& io) {
+    lastRaw_ = io.readCounter();
+    counts_ = static_cast<std::int16_t>(lastRaw_);
+    lastDelta_ = 0;
+    rejectRun_ = 0;
+}
+
 void CounterReader::read(RailIo& io, double dtS, bool nearCentre) {
     const std::uint16_t r1 = io.readCounter();
     std::uint16_t raw = io.readCounter();

@@ -18,6 +18,8 @@ public:
     void read(RailIo& io, double dtS, bool nearCentre);
     /// Starts counting from the counter's current value, as position `counts`.
     void resync(RailIo& io, std::int64_t counts = 0);
+    /// Takes the counter itself as the position: after the centre mark cleared it (homing).
+    void resyncToCounter(RailIo& io);
 
     std::int64_t counts() const { return counts_; }
     double positionMm() const { return static_cast<double>(counts_) / countsPerMm_; }

@@ -58,6 +58,7 @@ void forEachNumber(MachineProfile& p, F&& f) {
     f("loop.classicInPositionMm", l.classicInPositionMm, 0.001, 100.0);
     f("loop.replanErrorMm", l.replanErrorMm, 0.01, 1000.0);
     f("loop.switchDebounceS", l.switchDebounceS, 0.0, 1.0);
+    f("loop.watchdogS", l.watchdogS, 0.001, 10.0);
     auto& m = p.motion;
     f("motion.rapidSpeedMmS", m.rapidSpeedMmS, 1.0, 100000.0);
     f("motion.accelerationMmS2", m.accelerationMmS2, 1.0, 1e6);

@@ -61,6 +61,7 @@ struct LoopParams {
     double classicInPositionMm = 0.5;   ///< the VB's epsilon
     double replanErrorMm = 1.0;         ///< lag beyond which the profile is re-planned gentler
     double switchDebounceS = 0.005;     ///< a switch bit must read the same this long to count
+    double watchdogS = 0.05;            ///< a servo period longer than this stops the machine
 };
 
 struct MotionLimits {

@@ -24,6 +24,13 @@ void RailServo::resync(double positionMm) {
     velocity_ = acceleration_ = 0.0;
 }
 
+void RailServo::resyncToCounter() {
+    counter_.resyncToCounter(io_);
+    sample_.positionMm = counter_.positionMm();
+    sample_.setpointMm = sample_.positionMm;
+    velocity_ = acceleration_ = 0.0;
+}
+
 void RailServo::setLaw(LoopLaw law) {
     loop_.setLaw(law);
     profile_.loop.law = law;

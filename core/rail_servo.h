@@ -80,6 +80,8 @@ public:
     const PositionLoop& loop() const { return loop_; }
     /// Takes the counter's current value as `positionMm` (after homing on the centre switch).
     void resync(double positionMm);
+    /// Takes the counter as the position (the centre mark cleared it: homing).
+    void resyncToCounter();
     const MachineProfile& profile() const { return profile_; }
 
 private:

@@ -136,4 +136,223 @@
         <translation>%1 error(es) de compilación</translation>
     </message>
 </context>
+<context>
+    <name>Controller</name>
+    <message>
+        <source>%1: Positioning to x=%2 at maximum speed.</source>
+        <translation>%1: Posicionamiento a x=%2 con velocidad máxima.</translation>
+    </message>
+    <message>
+        <source>%1: Positioning to x=%2 at %3% of maximum speed.</source>
+        <translation>%1: Posicionamiento a x=%2 con %3% de la velocidad máxima.</translation>
+    </message>
+    <message>
+        <source>%1: Waiting %2 seconds.</source>
+        <translation>%1: Esperando %2 segundos.</translation>
+    </message>
+    <message>
+        <source>%1: Change to absolute coordinates.</source>
+        <translation>%1: Cambio a coordenadas absolutas.</translation>
+    </message>
+    <message>
+        <source>%1: Change to incremental coordinates.</source>
+        <translation>%1: Cambio a coordenadas incrementales.</translation>
+    </message>
+    <message>
+        <source>%1: System zero changed to x=%2.</source>
+        <translation>%1: Cero del sistema cambiado a x=%2.</translation>
+    </message>
+    <message>
+        <source>%1: Return to the rail's absolute zero.</source>
+        <translation>%1: Retorno al cero absoluto del riel.</translation>
+    </message>
+    <message>
+        <source>%1: Feed set to %3% of maximum speed.</source>
+        <translation>%1: Avance cambiado a %3% de la velocidad máxima.</translation>
+    </message>
+    <message>
+        <source>%1: Waiting for the Continue key.</source>
+        <translation>%1: Esperando la tecla Continuar.</translation>
+    </message>
+    <message>
+        <source>%1: Program jumped to line %2.</source>
+        <translation>%1: Programa desviado a la línea %2.</translation>
+    </message>
+    <message>
+        <source>Program finished !</source>
+        <translation>¡Programa finalizado!</translation>
+    </message>
+    <message>
+        <source>There are %2 compile error(s)! Nothing moved.</source>
+        <translation>¡Hay %2 error(es) de compilación! Nada se movió.</translation>
+    </message>
+    <message>
+        <source>Manual mode.</source>
+        <translation>Modo manual.</translation>
+    </message>
+    <message>
+        <source>Automatic mode.</source>
+        <translation>Modo automático.</translation>
+    </message>
+    <message>
+        <source>Homing: going to the rail centre.</source>
+        <translation>Referenciando: plataforma yendo al centro del riel.</translation>
+    </message>
+    <message>
+        <source>Homing done: platform at the rail centre.</source>
+        <translation>Plataforma en el centro del riel.</translation>
+    </message>
+    <message>
+        <source>Careful: left end of travel reached !!!</source>
+        <translation>¡¡¡Cuidado: fin de carrera izquierdo alcanzado!!!</translation>
+    </message>
+    <message>
+        <source>Careful: right end of travel reached !!!</source>
+        <translation>¡¡¡Cuidado: fin de carrera derecho alcanzado!!!</translation>
+    </message>
+    <message>
+        <source>Maximum manual speed reached: lower the speed.</source>
+        <translation>Velocidad máxima alcanzada: disminuya la velocidad.</translation>
+    </message>
+    <message>
+        <source>Program paused by the operator.</source>
+        <translation>Programa pausado por el operador.</translation>
+    </message>
+    <message>
+        <source>Program resumed.</source>
+        <translation>Programa reanudado.</translation>
+    </message>
+    <message>
+        <source>Program stopped by the operator.</source>
+        <translation>Programa detenido por el operador.</translation>
+    </message>
+    <message>
+        <source>Continue pressed.</source>
+        <translation>Tecla Continuar pulsada.</translation>
+    </message>
+    <message>
+        <source>%1: Single block: press Continue for the next block.</source>
+        <translation>%1: Bloque a bloque: pulse Continuar para el siguiente bloque.</translation>
+    </message>
+    <message>
+        <source>Starting from block %1.</source>
+        <translation>Ejecución desde el bloque %1.</translation>
+    </message>
+    <message>
+        <source>Alarm %2: %3</source>
+        <translation>Alarma %2: %3</translation>
+    </message>
+    <message>
+        <source>Alarm %2 acknowledged.</source>
+        <translation>Alarma %2 reconocida.</translation>
+    </message>
+    <message>
+        <source>Emergency stop reset.</source>
+        <translation>Emergencia liberada.</translation>
+    </message>
+    <message>
+        <source>POSITIONING</source>
+        <translation>POSICIONANDO</translation>
+    </message>
+    <message>
+        <source>WAITING</source>
+        <translation>ESPERANDO</translation>
+    </message>
+    <message>
+        <source>Absolute coordinates</source>
+        <translation>Coordenadas absolutas</translation>
+    </message>
+    <message>
+        <source>Incremental coordinates</source>
+        <translation>Coordenadas incrementales</translation>
+    </message>
+    <message>
+        <source>System zero changed</source>
+        <translation>Cero del sistema cambiado</translation>
+    </message>
+    <message>
+        <source>Rail zero restored</source>
+        <translation>Cero del riel restablecido</translation>
+    </message>
+    <message>
+        <source>Feed changed</source>
+        <translation>Avance cambiado</translation>
+    </message>
+    <message>
+        <source>Press Continue</source>
+        <translation>Pulse Continuar</translation>
+    </message>
+    <message>
+        <source>Program jump</source>
+        <translation>Desvío de programa</translation>
+    </message>
+    <message>
+        <source>Program ended !</source>
+        <translation>¡Programa terminado!</translation>
+    </message>
+    <message>
+        <source>Compile error(s)!</source>
+        <translation>¡Error(es) de compilación!</translation>
+    </message>
+    <message>
+        <source>HOMING</source>
+        <translation>REFERENCIANDO</translation>
+    </message>
+    <message>
+        <source>Ready</source>
+        <translation>Listo</translation>
+    </message>
+    <message>
+        <source>PAUSED</source>
+        <translation>PAUSADO</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Detenido</translation>
+    </message>
+    <message>
+        <source>ALARM</source>
+        <translation>ALARMA</translation>
+    </message>
+    <message>
+        <source>Left end of travel reached !</source>
+        <translation>¡Fin de carrera izquierdo alcanzado!</translation>
+    </message>
+    <message>
+        <source>Right end of travel reached !</source>
+        <translation>¡Fin de carrera derecho alcanzado!</translation>
+    </message>
+    <message>
+        <source>Following error: the platform did not follow the command</source>
+        <translation>Error de seguimiento: la plataforma no siguió la orden</translation>
+    </message>
+    <message>
+        <source>Soft limit reached</source>
+        <translation>Límite de software alcanzado</translation>
+    </message>
+    <message>
+        <source>The program has compile errors</source>
+        <translation>El programa tiene errores de compilación</translation>
+    </message>
+    <message>
+        <source>Encoder fault: implausible counter readings</source>
+        <translation>Falla del encoder: lecturas imposibles del contador</translation>
+    </message>
+    <message>
+        <source>Amplifier fault</source>
+        <translation>Falla del amplificador</translation>
+    </message>
+    <message>
+        <source>Servo loop overrun: the watchdog stopped the drive</source>
+        <translation>Retraso del lazo de control: el watchdog detuvo el accionamiento</translation>
+    </message>
+    <message>
+        <source>Emergency stop</source>
+        <translation>Parada de emergencia</translation>
+    </message>
+    <message>
+        <source>Homing failed: centre switch not found</source>
+        <translation>Referenciado fallido: interruptor central no encontrado</translation>
+    </message>
+</context>
 </TS>

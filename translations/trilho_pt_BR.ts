@@ -136,4 +136,223 @@
         <translation>Há %1 erro(s) de compilação !</translation>
     </message>
 </context>
+<context>
+    <name>Controller</name>
+    <message>
+        <source>%1: Positioning to x=%2 at maximum speed.</source>
+        <translation>%1: Posicionamento para x=%2 com velocidade máxima.</translation>
+    </message>
+    <message>
+        <source>%1: Positioning to x=%2 at %3% of maximum speed.</source>
+        <translation>%1: Posicionamento para x=%2 com %3% da velocidade máxima.</translation>
+    </message>
+    <message>
+        <source>%1: Waiting %2 seconds.</source>
+        <translation>%1: Aguardando %2 segundos.</translation>
+    </message>
+    <message>
+        <source>%1: Change to absolute coordinates.</source>
+        <translation>%1: Mudança para coordenada absoluta.</translation>
+    </message>
+    <message>
+        <source>%1: Change to incremental coordinates.</source>
+        <translation>%1: Mudança para coordenada incremental.</translation>
+    </message>
+    <message>
+        <source>%1: System zero changed to x=%2.</source>
+        <translation>%1: Mudança do zero do sistema para x=%2.</translation>
+    </message>
+    <message>
+        <source>%1: Return to the rail's absolute zero.</source>
+        <translation>%1: Retorno para zero absoluto do trilho.</translation>
+    </message>
+    <message>
+        <source>%1: Feed set to %3% of maximum speed.</source>
+        <translation>%1: Avanço mudado para %3% da velocidade máxima.</translation>
+    </message>
+    <message>
+        <source>%1: Waiting for the Continue key.</source>
+        <translation>%1: Aguardando tecla Continua.</translation>
+    </message>
+    <message>
+        <source>%1: Program jumped to line %2.</source>
+        <translation>%1: Programa desviado para linha %2.</translation>
+    </message>
+    <message>
+        <source>Program finished !</source>
+        <translation>Programa finalizado !</translation>
+    </message>
+    <message>
+        <source>There are %2 compile error(s)! Nothing moved.</source>
+        <translation>Há %2 erro(s) de compilação! Nada foi movido.</translation>
+    </message>
+    <message>
+        <source>Manual mode.</source>
+        <translation>Modo manual.</translation>
+    </message>
+    <message>
+        <source>Automatic mode.</source>
+        <translation>Modo automático.</translation>
+    </message>
+    <message>
+        <source>Homing: going to the rail centre.</source>
+        <translation>Plataforma indo para o centro do trilho.</translation>
+    </message>
+    <message>
+        <source>Homing done: platform at the rail centre.</source>
+        <translation>Plataforma no centro do trilho.</translation>
+    </message>
+    <message>
+        <source>Careful: left end of travel reached !!!</source>
+        <translation>Cuidado : Fim de curso Esquerdo atingido !!!</translation>
+    </message>
+    <message>
+        <source>Careful: right end of travel reached !!!</source>
+        <translation>Cuidado : Fim de curso Direito atingido !!!</translation>
+    </message>
+    <message>
+        <source>Maximum manual speed reached: lower the speed.</source>
+        <translation>Velocidade máxima atingida: diminua a velocidade.</translation>
+    </message>
+    <message>
+        <source>Program paused by the operator.</source>
+        <translation>Programa pausado pelo operador.</translation>
+    </message>
+    <message>
+        <source>Program resumed.</source>
+        <translation>Programa retomado.</translation>
+    </message>
+    <message>
+        <source>Program stopped by the operator.</source>
+        <translation>Programa interrompido pelo operador.</translation>
+    </message>
+    <message>
+        <source>Continue pressed.</source>
+        <translation>Tecla Continua pressionada.</translation>
+    </message>
+    <message>
+        <source>%1: Single block: press Continue for the next block.</source>
+        <translation>%1: Bloco a bloco: pressione Continua para o próximo bloco.</translation>
+    </message>
+    <message>
+        <source>Starting from block %1.</source>
+        <translation>Execução a partir do bloco %1.</translation>
+    </message>
+    <message>
+        <source>Alarm %2: %3</source>
+        <translation>Alarme %2: %3</translation>
+    </message>
+    <message>
+        <source>Alarm %2 acknowledged.</source>
+        <translation>Alarme %2 reconhecido.</translation>
+    </message>
+    <message>
+        <source>Emergency stop reset.</source>
+        <translation>Emergência liberada.</translation>
+    </message>
+    <message>
+        <source>POSITIONING</source>
+        <translation>POSICIONANDO</translation>
+    </message>
+    <message>
+        <source>WAITING</source>
+        <translation>AGUARDANDO</translation>
+    </message>
+    <message>
+        <source>Absolute coordinates</source>
+        <translation>Coordenada absoluta</translation>
+    </message>
+    <message>
+        <source>Incremental coordinates</source>
+        <translation>Coordenada incremental</translation>
+    </message>
+    <message>
+        <source>System zero changed</source>
+        <translation>Zero do sistema mudado</translation>
+    </message>
+    <message>
+        <source>Rail zero restored</source>
+        <translation>Zera sistema trilho</translation>
+    </message>
+    <message>
+        <source>Feed changed</source>
+        <translation>Avanço mudado</translation>
+    </message>
+    <message>
+        <source>Press Continue</source>
+        <translation>Pressione Continua</translation>
+    </message>
+    <message>
+        <source>Program jump</source>
+        <translation>Desvio de programa</translation>
+    </message>
+    <message>
+        <source>Program ended !</source>
+        <translation>Programa terminado !</translation>
+    </message>
+    <message>
+        <source>Compile error(s)!</source>
+        <translation>Há erro(s) de compilação!</translation>
+    </message>
+    <message>
+        <source>HOMING</source>
+        <translation>REFERENCIANDO</translation>
+    </message>
+    <message>
+        <source>Ready</source>
+        <translation>Pronto</translation>
+    </message>
+    <message>
+        <source>PAUSED</source>
+        <translation>PAUSADO</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Parado</translation>
+    </message>
+    <message>
+        <source>ALARM</source>
+        <translation>ALARME</translation>
+    </message>
+    <message>
+        <source>Left end of travel reached !</source>
+        <translation>Fim de curso da esquerda atingido !</translation>
+    </message>
+    <message>
+        <source>Right end of travel reached !</source>
+        <translation>Fim de curso da direita atingido !</translation>
+    </message>
+    <message>
+        <source>Following error: the platform did not follow the command</source>
+        <translation>Erro de seguimento: a plataforma não seguiu o comando</translation>
+    </message>
+    <message>
+        <source>Soft limit reached</source>
+        <translation>Limite de curso programado atingido</translation>
+    </message>
+    <message>
+        <source>The program has compile errors</source>
+        <translation>O programa tem erros de compilação</translation>
+    </message>
+    <message>
+        <source>Encoder fault: implausible counter readings</source>
+        <translation>Falha do encoder: leituras impossíveis do contador</translation>
+    </message>
+    <message>
+        <source>Amplifier fault</source>
+        <translation>Falha do amplificador</translation>
+    </message>
+    <message>
+        <source>Servo loop overrun: the watchdog stopped the drive</source>
+        <translation>Atraso da malha de controle: o watchdog parou o acionamento</translation>
+    </message>
+    <message>
+        <source>Emergency stop</source>
+        <translation>Parada de emergência</translation>
+    </message>
+    <message>
+        <source>Homing failed: centre switch not found</source>
+        <translation>Falha ao ir para o centro: chave central não encontrada</translation>
+    </message>
+</context>
 </TS>

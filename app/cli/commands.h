@@ -7,5 +7,7 @@ namespace trilho::cli {
 /// process exit status (cli_output.h).
 int compileCommand(const QStringList& args);
 int profileCommand(const QStringList& args);
+int runCommand(const QStringList& args);
+int latencyCommand(const QStringList& args);
 
 }  // namespace trilho::cli

@@ -9,6 +9,8 @@ const char* kUsage =
     "usage: trilho-cli <command> [options]\n"
     "commands:\n"
     "  compile   check a .G program and list every diagnostic\n"
+    "  run       compile, home and run a program on the simulated rail\n"
+    "  latency   measure the servo loop's wake-up latency and body time\n"
     "  profile   check a machine profile (JSON) and print it in full\n"
     "run 'trilho-cli <command> --help' for the options of a command\n";
 }
@@ -26,6 +28,8 @@ int main(int argc, char* argv[]) {
     args[0] = QStringLiteral("trilho-cli ") + command;
     if (command == QLatin1String("compile")) return trilho::cli::compileCommand(args);
     if (command == QLatin1String("profile")) return trilho::cli::profileCommand(args);
+    if (command == QLatin1String("run")) return trilho::cli::runCommand(args);
+    if (command == QLatin1String("latency")) return trilho::cli::latencyCommand(args);
     if (command == QLatin1String("--help") || command == QLatin1String("-h")) {
         trilho::cli::out(QString::fromLatin1(kUsage));
         return trilho::cli::kOk;

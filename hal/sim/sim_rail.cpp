@@ -76,7 +76,7 @@ void SimRail::subStep(double h) {
 
     // DAC: channel A = V, channel B = 255 - V, each 0..255 -> -5..+5 V; the amplifier takes
     // A - B. Its offset is trimmed so that 128 is 0 V, as the document states: 127 codes a side.
-    s.referenceV = std::clamp(10.0 * (static_cast<int>(code_) - kDacZero) / 127.0, -10.0, 10.0);
+    s.referenceV = std::clamp(10.0 * (static_cast<int>(driveCode()) - kDacZero) / 127.0, -10.0, 10.0);
 
     // Amplifier speed loop: first order towards the commanded speed; the force it may use is
     // the current limit, so the acceleration limit falls as the moving mass rises.

@@ -4,6 +4,7 @@
 // moving mass) -> motor -> 1:10 reducer -> 120 mm drum -> cable -> platform, with Coulomb and
 // viscous friction, a 16-bit quadrature counter at 22.8 counts/mm that wraps, end switches and
 // a centre switch that clears the counter. Deterministic for a seed; advanced only by step().
+#include <atomic>
 #include <cstdint>
 #include <random>
 
@@ -30,7 +31,8 @@ public:
     explicit SimRail(const PlantParams& params = {}, std::uint64_t seed = 1);
 
     // RailIo
-    void writeDrive(std::uint8_t code) override { code_ = code; }
+    /// Thread-safe: the worker's watchdog may write 0 V from its own thread.
+    void writeDrive(std::uint8_t code) override { code_.store(code, std::memory_order_relaxed); }
     std::uint16_t readCounter() override;
     std::uint8_t readSwitches() override;
 
@@ -45,7 +47,7 @@ public:
 
     const PlantState& state() const { return state_; }
     const PlantParams& params() const { return params_; }
-    std::uint8_t driveCode() const { return code_; }
+    std::uint8_t driveCode() const { return code_.load(std::memory_order_relaxed); }
 
 private:
     void subStep(double h);
@@ -55,7 +57,7 @@ private:
     FaultInjection faults_;
     PlantState state_;
     std::mt19937_64 rng_;
-    std::uint8_t code_ = kDacZero;
+    std::atomic<std::uint8_t> code_{kDacZero};
     double vmax_ = 0.0;           ///< mm/s at +10 V
     double forceMax_ = 0.0;       ///< N
     std::int64_t counterOffset_ = 0;  ///< counts subtracted so the counter reads 0 at the reset

@@ -1,0 +1,297 @@
+// trilho-cli run [--dialect ...] [--lang ...] [--virtual-time] [--mass-factor F]
+//   [--continue-after SECONDS] [--max-seconds SECONDS] [--trace FILE.csv] [--json]
+//   [--machine PROFILE.json] FILE
+// Compiles (errors: exit 1, nothing moves), homes, and runs the program on the simulated rail.
+#include <QCommandLineParser>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <thread>
+
+#include "app/cli/cli_output.h"
+#include "app/cli/commands.h"
+#include "core/compiler.h"
+#include "core/diagnostic_text.h"
+#include "core/event_text.h"
+#include "core/servo_worker.h"
+#include "core/source_file.h"
+#include "hal/sim/sim_session.h"
+#include "translations/i18n.h"
+
+namespace trilho::cli {
+
+QString formatDiagnosticLine(const QString& file, const Diagnostic& d);
+
+namespace {
+
+struct RunOptions {
+    bool virtualTime = false;
+    double massFactor = 1.0;
+    double continueAfterS = -1.0;  ///< < 0: never press Continue
+    double maxSeconds = -1.0;      ///< < 0: unbounded (real time) / 3600 s (virtual time)
+    bool json = false;
+    QString tracePath;
+};
+
+/// Collects what the run said, for the text and JSON reports.
+struct Report {
+    QStringList history;
+    QJsonArray alarms;
+    void add(const ControllerEvent& e) {
+        history << historyLine(e);
+        if (e.kind == EventKind::AlarmRaised) {
+            QJsonObject a;
+            a[QStringLiteral("code")] = static_cast<int>(e.alarm);
+            a[QStringLiteral("text")] = alarmText(e.alarm);
+            alarms.append(a);
+        }
+    }
+};
+
+class TraceFile {
+public:
+    bool open(const QString& path, QString* error) {
+        if (path.isEmpty()) return true;
+        file_ = std::make_unique<QSaveFile>(path);
+        if (!file_->open(QIODevice::WriteOnly)) {
+            *error = QStringLiteral("cannot write trace '%1': %2").arg(path, file_->errorString());
+            file_.reset();
+            return false;
+        }
+        file_->write("t_s,block_n,setpoint_mm,position_mm,error_mm,velocity_mm_s,drive\n");
+        return true;
+    }
+    void row(const TraceRow& r) {
+        if (!file_) return;
+        char line[192];
+        const int len = std::snprintf(line, sizeof line, "%.4f,%d,%.4f,%.4f,%.4f,%.3f,%d\n", r.timeS, r.blockN,
+                                      r.setpointMm, r.positionMm, r.errorMm, r.velocityMmS, r.drive);
+        file_->write(line, len);
+    }
+    bool close() { return !file_ || file_->commit(); }
+    bool active() const { return file_ != nullptr; }
+
+private:
+    std::unique_ptr<QSaveFile> file_;
+};
+
+enum class Outcome { Finished, Alarm, TimeLimit };
+
+/// What to do with the controller after a period; shared by both time bases.
+struct Supervisor {
+    const RunOptions& options;
+    double pausedSince = -1.0;
+    /// Returns true when the run is over, setting outcome.
+    bool check(const ControllerStatus& s, double elapsedS, Outcome& outcome, bool& pressContinue) {
+        pressContinue = false;
+        if (s.programFinished && s.state == ControllerState::AutoIdle) return outcome = Outcome::Finished, true;
+        if (s.state == ControllerState::Alarm || s.state == ControllerState::EStop) return outcome = Outcome::Alarm, true;
+        if (options.maxSeconds >= 0 && elapsedS >= options.maxSeconds) return outcome = Outcome::TimeLimit, true;
+        if (s.state == ControllerState::Paused && s.pause == PauseReason::M00) {
+            if (pausedSince < 0) pausedSince = elapsedS;
+            if (options.continueAfterS >= 0 && elapsedS - pausedSince >= options.continueAfterS - 1e-9) {
+                pressContinue = true;
+                pausedSince = -1.0;
+            }
+        } else {
+            pausedSince = -1.0;
+        }
+        return false;
+    }
+};
+
+Outcome runVirtual(const MachineProfile& profile, std::shared_ptr<const Program> program, const RunOptions& options,
+                   Report& report, TraceFile& trace, ControllerStatus& last) {
+    SimSession session(profile);
+    MachineController& c = session.controller();
+    c.selectAutomatic();
+    c.loadProgram(std::move(program));
+    c.start(0);  // after homing
+    Supervisor sup{options};
+    const double dt = profile.loop.samplePeriodS;
+    Outcome outcome = Outcome::Finished;
+    for (long k = 0;; ++k) {
+        session.step(dt);
+        c.drainEvents([&](const ControllerEvent& e) { report.add(e); });
+        const ControllerStatus& s = c.status();
+        if (trace.active())
+            trace.row({s.timeS, s.blockN, s.servo.setpointMm, s.servo.positionMm, s.servo.errorMm, s.servo.velocityMmS,
+                       s.servo.loop.code});
+        bool press = false;
+        if (sup.check(s, static_cast<double>(k + 1) * dt, outcome, press)) break;
+        if (press) c.pressContinue();
+    }
+    last = c.status();
+    return outcome;
+}
+
+Outcome runRealTime(const MachineProfile& profile, std::shared_ptr<const Program> program, const RunOptions& options,
+                    Report& report, TraceFile& trace, ControllerStatus& last) {
+    SimRail rail(profile.plant);
+    rail.placeAt(0.0);
+    MachineController controller(profile, rail);
+    ServoWorker worker(controller, rail, [&rail](double dt) { rail.step(dt); });
+    worker.setTracing(trace.active());
+    worker.start();
+    worker.send(CommandKind::SelectAutomatic);
+    worker.loadProgram(std::move(program));
+    const std::uint64_t startSeq = worker.send(CommandKind::Start, 0);
+    Supervisor sup{options};
+    Outcome outcome = Outcome::Finished;
+    const std::int64_t t0 = monotonicNs();
+    while (true) {
+        // The command line polls the snapshot; the servo thread never waits for it.
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        worker.drainEvents([&](const ControllerEvent& e) { report.add(e); });
+        worker.drainTrace([&](const TraceRow& r) { trace.row(r); });
+        const ControllerStatus s = worker.snapshot();
+        if (s.lastCommandSeq < startSeq) continue;
+        bool press = false;
+        if (sup.check(s, static_cast<double>(monotonicNs() - t0) * 1e-9, outcome, press)) break;
+        if (press) worker.send(CommandKind::Continue);
+    }
+    worker.stopThread();
+    worker.drainEvents([&](const ControllerEvent& e) { report.add(e); });
+    worker.drainTrace([&](const TraceRow& r) { trace.row(r); });
+    last = worker.snapshot();
+    return outcome;
+}
+
+}  // namespace
+
+int runCommand(const QStringList& args) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral("Compile, home and run a program on the simulated rail."));
+    parser.addHelpOption();
+    const QCommandLineOption dialectOpt(QStringLiteral("dialect"), QStringLiteral("classic or standard (default)."), QStringLiteral("dialect"), QStringLiteral("standard"));
+    const QCommandLineOption langOpt(QStringLiteral("lang"), QStringLiteral("Message language: en, pt_BR or es."), QStringLiteral("lang"), QStringLiteral("en"));
+    const QCommandLineOption virtualOpt(QStringLiteral("virtual-time"), QStringLiteral("Run in virtual time, as fast as possible."));
+    const QCommandLineOption massOpt(QStringLiteral("mass-factor"), QStringLiteral("Multiply the simulated moving mass (the controller is not told)."), QStringLiteral("F"), QStringLiteral("1"));
+    const QCommandLineOption continueOpt(QStringLiteral("continue-after"), QStringLiteral("Press Continue this many seconds after each m00."), QStringLiteral("SECONDS"));
+    const QCommandLineOption maxOpt(QStringLiteral("max-seconds"), QStringLiteral("End the run after this long (default 3600 in virtual time)."), QStringLiteral("SECONDS"));
+    const QCommandLineOption traceOpt(QStringLiteral("trace"), QStringLiteral("Write every servo tick to this CSV file."), QStringLiteral("FILE.csv"));
+    const QCommandLineOption jsonOpt(QStringLiteral("json"), QStringLiteral("Print one JSON object."));
+    const QCommandLineOption machineOpt(QStringLiteral("machine"), QStringLiteral("Machine profile (default: the rail)."), QStringLiteral("PROFILE.json"));
+    parser.addOptions({dialectOpt, langOpt, virtualOpt, massOpt, continueOpt, maxOpt, traceOpt, jsonOpt, machineOpt});
+    parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("The program to run."));
+    auto usage = [](const QString& message) {
+        err(QStringLiteral("trilho-cli run: %1\n").arg(message));
+        return kUsage;
+    };
+    if (!parser.parse(args)) return usage(parser.errorText());
+    if (parser.isSet(QStringLiteral("help"))) {
+        out(parser.helpText());
+        return kOk;
+    }
+    const auto dialect = parseDialect(parser.value(dialectOpt).toStdString());
+    if (!dialect) return usage(QStringLiteral("unknown dialect '%1' (classic or standard)").arg(parser.value(dialectOpt)));
+    if (!installLanguage(parser.value(langOpt)))
+        return usage(QStringLiteral("unknown language '%1' (en, pt_BR or es)").arg(parser.value(langOpt)));
+    RunOptions options;
+    options.virtualTime = parser.isSet(virtualOpt);
+    options.json = parser.isSet(jsonOpt);
+    options.tracePath = parser.value(traceOpt);
+    auto number = [&](const QCommandLineOption& opt, double lo, double hi, double& into) -> bool {
+        if (!parser.isSet(opt)) return true;
+        bool ok = false;
+        const double v = parser.value(opt).toDouble(&ok);
+        if (!ok || !std::isfinite(v) || v < lo || v > hi) return false;
+        into = v;
+        return true;
+    };
+    if (!number(massOpt, 0.1, 20.0, options.massFactor))
+        return usage(QStringLiteral("--mass-factor must be a number from 0.1 to 20 (got '%1')").arg(parser.value(massOpt)));
+    if (!number(continueOpt, 0.0, 1e6, options.continueAfterS))
+        return usage(QStringLiteral("--continue-after must be a number of seconds >= 0 (got '%1')").arg(parser.value(continueOpt)));
+    if (!number(maxOpt, 0.0, 1e7, options.maxSeconds))
+        return usage(QStringLiteral("--max-seconds must be a number of seconds >= 0 (got '%1')").arg(parser.value(maxOpt)));
+    if (options.virtualTime && options.maxSeconds < 0) options.maxSeconds = 3600.0;
+    const QStringList files = parser.positionalArguments();
+    if (files.size() != 1) return usage(QStringLiteral("expected exactly one FILE, got %1").arg(files.size()));
+
+    MachineProfile profile = MachineProfile::rail();
+    if (parser.isSet(machineOpt)) {
+        ProfileLoad load = loadMachineProfile(parser.value(machineOpt));
+        if (!load.profile) return usage(load.error);
+        profile = *load.profile;
+    }
+    profile.plant.massFactor *= options.massFactor;
+
+    const QString file = files.front();
+    const SourceFile source = readSourceFile(file.toStdString());
+    if (!source.ok) return usage(QString::fromStdString(source.error));
+    CompileOptions compileOptions;
+    compileOptions.dialect = *dialect;
+    compileOptions.machine = profile.limits;
+    auto program = std::make_shared<Program>(compile(source.bytes, compileOptions));
+    Report report;
+    if (!program->ok()) {
+        ControllerEvent e;
+        e.kind = EventKind::CompileFailed;
+        e.x = static_cast<double>(program->errorCount());
+        report.add(e);
+        if (options.json) {
+            QJsonObject o;
+            o[QStringLiteral("ok")] = false;
+            QJsonArray history;
+            for (const auto& d : program->diagnostics) history.append(formatDiagnosticLine(file, d).trimmed());
+            history.append(report.history.front());
+            o[QStringLiteral("history")] = history;
+            o[QStringLiteral("alarms")] = QJsonArray{QJsonObject{{QStringLiteral("code"), static_cast<int>(AlarmCode::CompileErrors)},
+                                                                 {QStringLiteral("text"), alarmText(AlarmCode::CompileErrors)}}};
+            o[QStringLiteral("final_position_mm")] = 0.0;
+            o[QStringLiteral("duration_s")] = 0.0;
+            out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
+        } else {
+            QString text;
+            for (const auto& d : program->diagnostics) text += formatDiagnosticLine(file, d);
+            text += compileSummary(program->errorCount()) + QLatin1Char('\n');
+            out(text);
+        }
+        return kCompileErrors;
+    }
+    if (options.virtualTime && options.continueAfterS < 0) {
+        for (const Block& b : program->blocks)
+            if (b.op == Op::Stop)
+                return usage(QStringLiteral("%1:%2: m00 waits for Continue: in virtual time give --continue-after SECONDS")
+                                 .arg(file)
+                                 .arg(b.line));
+    }
+    TraceFile trace;
+    QString traceError;
+    if (!trace.open(options.tracePath, &traceError)) return usage(traceError);
+
+    ControllerStatus last;
+    const Outcome outcome = options.virtualTime ? runVirtual(profile, program, options, report, trace, last)
+                                                : runRealTime(profile, program, options, report, trace, last);
+    if (!trace.close()) return usage(QStringLiteral("cannot write trace '%1'").arg(options.tracePath));
+
+    const double finalMm = last.servo.positionMm;
+    if (options.json) {
+        QJsonObject o;
+        o[QStringLiteral("ok")] = outcome == Outcome::Finished;
+        o[QStringLiteral("history")] = QJsonArray::fromStringList(report.history);
+        o[QStringLiteral("alarms")] = report.alarms;
+        o[QStringLiteral("final_position_mm")] = std::round(finalMm * 1e4) / 1e4;
+        o[QStringLiteral("duration_s")] = std::round(last.timeS * 1e4) / 1e4;
+        out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
+    } else {
+        QString text = report.history.join(QLatin1Char('\n')) + QLatin1Char('\n');
+        text += QStringLiteral("final position: %1 mm (%2 s)\n").arg(finalMm, 0, 'f', 3).arg(last.timeS, 0, 'f', 3);
+        if (outcome == Outcome::TimeLimit)
+            text += QStringLiteral("stopped by --max-seconds %1\n").arg(options.maxSeconds);
+        out(text);
+    }
+    switch (outcome) {
+        case Outcome::Finished: return kOk;
+        case Outcome::Alarm: return kAlarm;
+        case Outcome::TimeLimit: return kTimeLimit;
+    }
+    return kOk;
+}
+
+}  // namespace trilho::cli

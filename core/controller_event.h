@@ -1,0 +1,53 @@
+#pragma once
+// What the controller tells the operator: each executed block, mode change and alarm is an
+// event; event_text.h turns it into the history line and the online status of gcode.md's
+// interpreter table. Events are small values so the servo thread can queue them without
+// allocating.
+#include <cstdint>
+
+#include "core/alarm.h"
+
+namespace trilho {
+
+enum class EventKind : std::uint8_t {
+    Rapid,          ///< n, x
+    Linear,         ///< n, x, feed
+    Dwell,          ///< n, seconds
+    Absolute,       ///< n
+    Incremental,    ///< n
+    SetZero,        ///< n, x
+    ResetZero,      ///< n
+    Feed,           ///< n, feed
+    WaitContinue,   ///< n (m00)
+    Goto,           ///< n, target n
+    ProgramEnd,
+    CompileFailed,  ///< value = error count
+    ModeManual,
+    ModeAutomatic,
+    HomingStarted,
+    HomingDone,
+    ManualLeftEnd,   ///< the original's "Cuidado : Fim de curso Esquerdo atingido !!!"
+    ManualRightEnd,
+    ManualSpeedCap,  ///< asked for more than the manual speed limit
+    Paused,
+    Resumed,
+    Stopped,
+    ContinuePressed,
+    SingleBlockWait,
+    StartFromBlock,  ///< n
+    AlarmRaised,     ///< alarm
+    AlarmAcknowledged,
+    EStopReset,
+    Count_
+};
+
+struct ControllerEvent {
+    double timeS = 0.0;  ///< controller time
+    EventKind kind = EventKind::ProgramEnd;
+    AlarmCode alarm = AlarmCode::None;
+    std::int32_t n = -1;  ///< block number, -1 when none
+    double x = 0.0;       ///< position mm, seconds, target n, error count
+    double feed = 0.0;    ///< percent
+};
+
+}  // namespace trilho

@@ -1,0 +1,123 @@
+#include "core/event_text.h"
+
+#include <QCoreApplication>
+#include <cmath>
+
+#include "core/diagnostic_text.h"
+
+namespace trilho {
+namespace {
+
+constexpr const char* kContext = "Controller";
+
+// %1 block number (4 digits, as the VB printed n), %2 x, %3 feed.
+constexpr const char* kHistory[static_cast<int>(EventKind::Count_)] = {
+    QT_TRANSLATE_NOOP("Controller", "%1: Positioning to x=%2 at maximum speed."),
+    QT_TRANSLATE_NOOP("Controller", "%1: Positioning to x=%2 at %3% of maximum speed."),
+    QT_TRANSLATE_NOOP("Controller", "%1: Waiting %2 seconds."),
+    QT_TRANSLATE_NOOP("Controller", "%1: Change to absolute coordinates."),
+    QT_TRANSLATE_NOOP("Controller", "%1: Change to incremental coordinates."),
+    QT_TRANSLATE_NOOP("Controller", "%1: System zero changed to x=%2."),
+    QT_TRANSLATE_NOOP("Controller", "%1: Return to the rail's absolute zero."),
+    QT_TRANSLATE_NOOP("Controller", "%1: Feed set to %3% of maximum speed."),
+    QT_TRANSLATE_NOOP("Controller", "%1: Waiting for the Continue key."),
+    QT_TRANSLATE_NOOP("Controller", "%1: Program jumped to line %2."),
+    QT_TRANSLATE_NOOP("Controller", "Program finished !"),
+    QT_TRANSLATE_NOOP("Controller", "There are %2 compile error(s)! Nothing moved."),
+    QT_TRANSLATE_NOOP("Controller", "Manual mode."),
+    QT_TRANSLATE_NOOP("Controller", "Automatic mode."),
+    QT_TRANSLATE_NOOP("Controller", "Homing: going to the rail centre."),
+    QT_TRANSLATE_NOOP("Controller", "Homing done: platform at the rail centre."),
+    QT_TRANSLATE_NOOP("Controller", "Careful: left end of travel reached !!!"),
+    QT_TRANSLATE_NOOP("Controller", "Careful: right end of travel reached !!!"),
+    QT_TRANSLATE_NOOP("Controller", "Maximum manual speed reached: lower the speed."),
+    QT_TRANSLATE_NOOP("Controller", "Program paused by the operator."),
+    QT_TRANSLATE_NOOP("Controller", "Program resumed."),
+    QT_TRANSLATE_NOOP("Controller", "Program stopped by the operator."),
+    QT_TRANSLATE_NOOP("Controller", "Continue pressed."),
+    QT_TRANSLATE_NOOP("Controller", "%1: Single block: press Continue for the next block."),
+    QT_TRANSLATE_NOOP("Controller", "Starting from block %1."),
+    QT_TRANSLATE_NOOP("Controller", "Alarm %2: %3"),
+    QT_TRANSLATE_NOOP("Controller", "Alarm %2 acknowledged."),
+    QT_TRANSLATE_NOOP("Controller", "Emergency stop reset."),
+};
+
+constexpr const char* kOnline[static_cast<int>(EventKind::Count_)] = {
+    QT_TRANSLATE_NOOP("Controller", "POSITIONING"),
+    QT_TRANSLATE_NOOP("Controller", "POSITIONING"),
+    QT_TRANSLATE_NOOP("Controller", "WAITING"),
+    QT_TRANSLATE_NOOP("Controller", "Absolute coordinates"),
+    QT_TRANSLATE_NOOP("Controller", "Incremental coordinates"),
+    QT_TRANSLATE_NOOP("Controller", "System zero changed"),
+    QT_TRANSLATE_NOOP("Controller", "Rail zero restored"),
+    QT_TRANSLATE_NOOP("Controller", "Feed changed"),
+    QT_TRANSLATE_NOOP("Controller", "Press Continue"),
+    QT_TRANSLATE_NOOP("Controller", "Program jump"),
+    QT_TRANSLATE_NOOP("Controller", "Program ended !"),
+    QT_TRANSLATE_NOOP("Controller", "Compile error(s)!"),
+    nullptr,
+    nullptr,
+    QT_TRANSLATE_NOOP("Controller", "HOMING"),
+    QT_TRANSLATE_NOOP("Controller", "Ready"),
+    nullptr,
+    nullptr,
+    nullptr,
+    QT_TRANSLATE_NOOP("Controller", "PAUSED"),
+    QT_TRANSLATE_NOOP("Controller", "POSITIONING"),
+    QT_TRANSLATE_NOOP("Controller", "Stopped"),
+    nullptr,
+    QT_TRANSLATE_NOOP("Controller", "Press Continue"),
+    nullptr,
+    QT_TRANSLATE_NOOP("Controller", "ALARM"),
+    nullptr,
+    nullptr,
+};
+
+constexpr const char* kAlarm[static_cast<int>(AlarmCode::Count_)] = {
+    "",
+    QT_TRANSLATE_NOOP("Controller", "Left end of travel reached !"),
+    QT_TRANSLATE_NOOP("Controller", "Right end of travel reached !"),
+    QT_TRANSLATE_NOOP("Controller", "Following error: the platform did not follow the command"),
+    QT_TRANSLATE_NOOP("Controller", "Soft limit reached"),
+    QT_TRANSLATE_NOOP("Controller", "The program has compile errors"),
+    QT_TRANSLATE_NOOP("Controller", "Encoder fault: implausible counter readings"),
+    QT_TRANSLATE_NOOP("Controller", "Amplifier fault"),
+    QT_TRANSLATE_NOOP("Controller", "Servo loop overrun: the watchdog stopped the drive"),
+    QT_TRANSLATE_NOOP("Controller", "Emergency stop"),
+    QT_TRANSLATE_NOOP("Controller", "Homing failed: centre switch not found"),
+};
+
+QString number(double v) {
+    // The VB printed CStr(): integers plainly, decimals as needed.
+    if (v == std::floor(v) && std::abs(v) < 1e15) return QString::number(static_cast<qint64>(v));
+    return QString::number(v, 'g', 10);
+}
+
+}  // namespace
+
+const char* historySource(EventKind kind) { return kHistory[static_cast<int>(kind)]; }
+const char* onlineSource(EventKind kind) { return kOnline[static_cast<int>(kind)]; }
+const char* alarmSource(AlarmCode code) { return kAlarm[static_cast<int>(code)]; }
+
+QString alarmText(AlarmCode code) {
+    if (code == AlarmCode::None || code >= AlarmCode::Count_) return {};
+    return QCoreApplication::translate(kContext, kAlarm[static_cast<int>(code)]);
+}
+
+QString historyLine(const ControllerEvent& e) {
+    const QString n = e.n >= 0 ? QStringLiteral("%1").arg(e.n, 4, 10, QLatin1Char('0')) : QString();
+    QString x = number(e.x);
+    QString third = number(e.feed);
+    if (e.kind == EventKind::AlarmRaised || e.kind == EventKind::AlarmAcknowledged) {
+        x = QString::number(static_cast<int>(e.alarm));
+        third = alarmText(e.alarm);
+    }
+    return substitute(QCoreApplication::translate(kContext, historySource(e.kind)), {n, x, third});
+}
+
+QString onlineStatus(const ControllerEvent& e) {
+    const char* source = onlineSource(e.kind);
+    return source ? QCoreApplication::translate(kContext, source) : QString();
+}
+
+}  // namespace trilho

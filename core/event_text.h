@@ -1,0 +1,21 @@
+#pragma once
+// The texts of events and alarms in the UI language (Qt Linguist context "Controller");
+// pt_BR gives the 1996 program's own lines.
+#include <QString>
+
+#include "core/controller_event.h"
+
+namespace trilho {
+
+/// The history line: "0010: Posicionamento para x=100 com velocidade máxima."
+QString historyLine(const ControllerEvent& e);
+/// The online status box: "POSICIONANDO". Empty when the event does not change it.
+QString onlineStatus(const ControllerEvent& e);
+/// "Fim de curso da esquerda atingido !" and the like.
+QString alarmText(AlarmCode code);
+/// Untranslated sources, for the translation-completeness test.
+const char* historySource(EventKind kind);
+const char* onlineSource(EventKind kind);
+const char* alarmSource(AlarmCode code);
+
+}  // namespace trilho

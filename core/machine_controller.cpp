@@ -1,0 +1,558 @@
+#include "core/machine_controller.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace trilho {
+
+namespace {
+constexpr int kHomingSearchCodes = 20;      ///< 297 mm/s: the search for the centre switch
+constexpr double kHomingTimeoutS = 60.0;    ///< longer than a full-length search at that speed
+constexpr double kStillSpeedMmS = 0.5;
+constexpr double kStillTimeS = 0.05;
+constexpr int kMaxBlocksPerStep = 64;       ///< status-only blocks run without waiting a period
+}  // namespace
+
+const char* controllerStateName(ControllerState s) {
+    switch (s) {
+        case ControllerState::Manual: return "manual";
+        case ControllerState::AutoIdle: return "auto-idle";
+        case ControllerState::Homing: return "homing";
+        case ControllerState::Running: return "running";
+        case ControllerState::Waiting: return "waiting";
+        case ControllerState::Paused: return "paused";
+        case ControllerState::Alarm: return "alarm";
+        case ControllerState::EStop: return "e-stop";
+    }
+    return "?";
+}
+
+MachineController::MachineController(const MachineProfile& profile, RailIo& io) : servo_(profile, io) {
+    status_.law = profile.loop.law;
+    status_.gains = profile.loop.law == LoopLaw::Classic ? profile.loop.classic : profile.loop.engineered;
+    status_.servo = servo_.sample();
+}
+
+void MachineController::post(EventKind kind, std::int32_t n, double x, double feed, AlarmCode alarm) {
+    ControllerEvent e;
+    e.timeS = status_.timeS;
+    e.kind = kind;
+    e.n = n;
+    e.x = x;
+    e.feed = feed;
+    e.alarm = alarm;
+    events_.push(e);
+    if (kind == EventKind::AlarmRaised || (kind < EventKind::Count_ && kind != EventKind::ContinuePressed &&
+                                           kind != EventKind::AlarmAcknowledged && kind != EventKind::ManualLeftEnd &&
+                                           kind != EventKind::ManualRightEnd && kind != EventKind::ManualSpeedCap &&
+                                           kind != EventKind::ModeManual && kind != EventKind::ModeAutomatic &&
+                                           kind != EventKind::StartFromBlock && kind != EventKind::EStopReset))
+        status_.lastStatus = e;
+}
+
+// ---- modes -----------------------------------------------------------------------------------
+
+void MachineController::selectManual() {
+    if (status_.state == ControllerState::EStop || status_.state == ControllerState::Alarm) return;
+    if (status_.state != ControllerState::Manual) servo_.stop();
+    status_.automatic = false;
+    status_.pause = PauseReason::None;
+    status_.blockIndex = -1;
+    status_.manualCode = kDacZero;
+    jogging_ = false;
+    startAfterHoming_ = false;
+    setState(ControllerState::Manual);
+    post(EventKind::ModeManual);
+}
+
+void MachineController::selectAutomatic() {
+    if (status_.state == ControllerState::EStop || status_.state == ControllerState::Alarm) return;
+    if (status_.automatic && status_.state != ControllerState::Manual) return;
+    servo_.release();
+    status_.automatic = true;
+    status_.manualCode = kDacZero;
+    jogging_ = false;
+    post(EventKind::ModeAutomatic);
+    // machine.md: selecting Automatic sends the platform to the rail centre.
+    homingPhase_ = (servo_.sample().switches & switch_bits::kCentre) ? HomingPhase::Settle : HomingPhase::SearchLeft;
+    if (homingPhase_ == HomingPhase::Settle) {
+        // Sitting on the centre vane: leave it to the right first so the search crosses it.
+        homingPhase_ = HomingPhase::SearchRight;
+        leavingCentre_ = true;
+    }
+    homingTimeS_ = 0.0;
+    stillForS_ = 0.0;
+    status_.homed = false;
+    setState(ControllerState::Homing);
+    post(EventKind::HomingStarted);
+}
+
+void MachineController::stepHoming(double dtS) {
+    homingTimeS_ += dtS;
+    if (homingTimeS_ > kHomingTimeoutS) return raiseAlarm(AlarmCode::HomingFailed);
+    const ServoSample& s = servo_.sample();
+    const bool centre = s.switches & switch_bits::kCentre;
+    const bool left = s.switches & switch_bits::kLeftEnd, right = s.switches & switch_bits::kRightEnd;
+    const auto code = [](int offset) { return static_cast<std::uint8_t>(kDacZero + offset); };
+    switch (homingPhase_) {
+        case HomingPhase::SearchLeft:
+            // Drive left until the centre switch or the left end (the VB's Automatico_Click).
+            if (centre) {
+                homingPhase_ = HomingPhase::CrossLeft;
+            } else if (left) {
+                homingPhase_ = HomingPhase::SearchRight;
+            } else {
+                servo_.setDirect(code(-kHomingSearchCodes));
+            }
+            break;
+        case HomingPhase::CrossLeft:
+            // Keep going until the vane is behind us: the counter was cleared at its middle.
+            if (!centre) homingPhase_ = HomingPhase::Settle, stillForS_ = 0.0;
+            else servo_.setDirect(code(-kHomingSearchCodes));
+            break;
+        case HomingPhase::SearchRight:
+            if (leavingCentre_) {
+                if (!centre) leavingCentre_ = false, homingPhase_ = HomingPhase::SearchLeft;
+                else servo_.setDirect(code(kHomingSearchCodes));
+            } else if (centre) {
+                homingPhase_ = HomingPhase::CrossRight;
+            } else if (right) {
+                return raiseAlarm(AlarmCode::HomingFailed);
+            } else {
+                servo_.setDirect(code(kHomingSearchCodes));
+            }
+            break;
+        case HomingPhase::CrossRight:
+            if (!centre) homingPhase_ = HomingPhase::Settle, stillForS_ = 0.0;
+            else servo_.setDirect(code(kHomingSearchCodes));
+            break;
+        case HomingPhase::Settle:
+            servo_.release();
+            stillForS_ = std::abs(s.velocityMmS) < kStillSpeedMmS ? stillForS_ + dtS : 0.0;
+            if (stillForS_ >= kStillTimeS) {
+                servo_.resyncToCounter();
+                servo_.moveTo(0.0, 0.25);
+                homingPhase_ = HomingPhase::Centre;
+            }
+            break;
+        case HomingPhase::Centre:
+            if (s.inPosition) {
+                status_.homed = true;
+                setState(ControllerState::AutoIdle);
+                post(EventKind::HomingDone);
+                if (startAfterHoming_) {
+                    startAfterHoming_ = false;
+                    start(pendingStart_);
+                }
+            }
+            break;
+    }
+}
+
+// ---- manual ----------------------------------------------------------------------------------
+
+void MachineController::manualLeft() {
+    if (status_.state != ControllerState::Manual) return;
+    if (jogging_) servo_.release(), jogging_ = false;
+    const int cap = static_cast<int>(std::lround(profile().motion.jogMaxFraction * 127.0));
+    if (servo_.sample().switches & switch_bits::kLeftEnd) {
+        status_.manualCode = kDacZero;
+        servo_.setDirect(kDacZero);
+        return post(EventKind::ManualLeftEnd);
+    }
+    if (status_.manualCode <= kDacZero - cap) return post(EventKind::ManualSpeedCap);
+    --status_.manualCode;
+    servo_.setDirect(status_.manualCode);
+}
+
+void MachineController::manualRight() {
+    if (status_.state != ControllerState::Manual) return;
+    if (jogging_) servo_.release(), jogging_ = false;
+    const int cap = static_cast<int>(std::lround(profile().motion.jogMaxFraction * 127.0));
+    if (servo_.sample().switches & switch_bits::kRightEnd) {
+        status_.manualCode = kDacZero;
+        servo_.setDirect(kDacZero);
+        return post(EventKind::ManualRightEnd);
+    }
+    if (status_.manualCode >= kDacZero + cap) return post(EventKind::ManualSpeedCap);
+    ++status_.manualCode;
+    servo_.setDirect(status_.manualCode);
+}
+
+void MachineController::manualStop() {
+    if (status_.state != ControllerState::Manual) return;
+    status_.manualCode = kDacZero;
+    if (jogging_) servo_.stop();
+    else servo_.release();
+}
+
+void MachineController::jogStart(int direction, double speedFraction) {
+    if (status_.state != ControllerState::Manual || direction == 0) return;
+    const auto& lim = profile().limits.x;
+    const double target = direction > 0 ? lim.softMaxMm : lim.softMinMm;
+    const double pos = servo_.sample().positionMm;
+    if ((direction > 0 && pos >= lim.softMaxMm) || (direction < 0 && pos <= lim.softMinMm))
+        return raiseAlarm(AlarmCode::SoftLimit);
+    status_.manualCode = kDacZero;
+    servo_.moveTo(target, std::clamp(speedFraction, 0.001, profile().motion.jogMaxFraction));
+    jogging_ = true;
+}
+
+void MachineController::jogStop() {
+    if (status_.state != ControllerState::Manual || !jogging_) return;
+    servo_.stop();
+}
+
+void MachineController::jogIncrement(double deltaMm, double speedFraction) {
+    if (status_.state != ControllerState::Manual) return;
+    const auto& lim = profile().limits.x;
+    const ServoSample& s = servo_.sample();
+    const double from = s.mode == ServoMode::Hold ? s.setpointMm : s.positionMm;
+    const double target = std::clamp(from + deltaMm, lim.softMinMm, lim.softMaxMm);
+    if (target != from + deltaMm) raiseAlarm(AlarmCode::SoftLimit);
+    if (target == from) return;
+    status_.manualCode = kDacZero;
+    servo_.moveTo(target, std::clamp(speedFraction, 0.001, profile().motion.jogMaxFraction));
+    jogging_ = true;
+}
+
+void MachineController::checkManualLimits() {
+    const ServoSample& s = servo_.sample();
+    if (s.mode == ServoMode::Direct) {
+        const auto code = status_.manualCode;
+        if (code < kDacZero && (s.switches & switch_bits::kLeftEnd)) {
+            status_.manualCode = kDacZero;
+            servo_.setDirect(kDacZero);
+            post(EventKind::ManualLeftEnd);
+        } else if (code > kDacZero && (s.switches & switch_bits::kRightEnd)) {
+            status_.manualCode = kDacZero;
+            servo_.setDirect(kDacZero);
+            post(EventKind::ManualRightEnd);
+        } else if ((code < kDacZero && s.positionMm <= profile().limits.x.softMinMm) ||
+                   (code > kDacZero && s.positionMm >= profile().limits.x.softMaxMm)) {
+            status_.manualCode = kDacZero;
+            servo_.setDirect(kDacZero);
+            raiseAlarm(AlarmCode::SoftLimit);
+        }
+    }
+    if (jogging_ && s.inPosition) jogging_ = false;
+}
+
+// ---- automatic -------------------------------------------------------------------------------
+
+bool MachineController::loadProgram(std::shared_ptr<const Program> program) {
+    if (status_.state == ControllerState::Running || status_.state == ControllerState::Waiting ||
+        status_.state == ControllerState::Paused)
+        return false;
+    if (!program || !program->ok()) {
+        const double errors = program ? static_cast<double>(program->errorCount()) : 0.0;
+        post(EventKind::CompileFailed, -1, errors);
+        raiseAlarm(AlarmCode::CompileErrors);
+        program_.reset();
+        status_.programLoaded = false;
+        return false;
+    }
+    program_ = std::move(program);
+    status_.programLoaded = true;
+    status_.programFinished = false;
+    return true;
+}
+
+bool MachineController::start(std::size_t fromIndex) {
+    if (!status_.automatic || !program_ || fromIndex >= program_->blocks.size()) return false;
+    if (status_.state == ControllerState::Homing) {
+        pendingStart_ = fromIndex;
+        startAfterHoming_ = true;
+        return true;
+    }
+    if (status_.state != ControllerState::AutoIdle) return false;
+    if (!status_.homed) {
+        pendingStart_ = fromIndex;
+        startAfterHoming_ = true;
+        selectAutomatic();
+        return true;
+    }
+    status_.modal = modalStateBefore(*program_, fromIndex);
+    pc_ = fromIndex;
+    blockStarted_ = false;
+    status_.programFinished = false;
+    status_.pause = PauseReason::None;
+    if (fromIndex > 0) post(EventKind::StartFromBlock, program_->blocks[fromIndex].n);
+    // Execution starts at the rail centre (gcode.md); from a block, where the program would
+    // have left the platform.
+    const double startAt = status_.modal.hasPosition ? status_.modal.positionMm : 0.0;
+    approachFirst_ = std::abs(servo_.sample().positionMm - startAt) > profile().loop.inPositionWindowMm;
+    if (approachFirst_) servo_.moveTo(startAt, 1.0);
+    setState(ControllerState::Running);
+    return true;
+}
+
+void MachineController::beginBlock() {
+    const Block& b = program_->blocks[pc_];
+    blockStarted_ = true;
+    status_.blockIndex = static_cast<std::int32_t>(pc_);
+    status_.blockN = b.n;
+    status_.blockLine = b.line;
+    status_.modal.apply(b);
+    switch (b.op) {
+        case Op::Rapid:
+            post(EventKind::Rapid, b.n, b.x);
+            servo_.moveTo(b.x, 1.0);
+            break;
+        case Op::Linear:
+            post(EventKind::Linear, b.n, b.x, b.feed);
+            servo_.moveTo(b.x, b.feed / 100.0);
+            break;
+        case Op::Dwell:
+            post(EventKind::Dwell, b.n, b.seconds());
+            status_.dwellRemainingS = b.seconds();
+            setState(ControllerState::Waiting);
+            break;
+        case Op::Absolute: post(EventKind::Absolute, b.n), finishBlock(); break;
+        case Op::Incremental: post(EventKind::Incremental, b.n), finishBlock(); break;
+        case Op::SetZero: post(EventKind::SetZero, b.n, b.zero()), finishBlock(); break;
+        case Op::ResetZero: post(EventKind::ResetZero, b.n), finishBlock(); break;
+        case Op::Feed: post(EventKind::Feed, b.n, 0.0, b.feed), finishBlock(); break;
+        case Op::Stop:
+            post(EventKind::WaitContinue, b.n);
+            status_.pause = PauseReason::M00;
+            setState(ControllerState::Paused);
+            break;
+        case Op::Goto:
+            post(EventKind::Goto, b.n, b.targetN());
+            pc_ = static_cast<std::size_t>(b.targetIndex);
+            blockStarted_ = false;
+            if (status_.singleBlock) {
+                status_.pause = PauseReason::SingleBlock;
+                setState(ControllerState::Paused);
+                post(EventKind::SingleBlockWait, b.n);
+            }
+            break;
+        case Op::End:
+            post(EventKind::ProgramEnd);
+            status_.programFinished = true;
+            status_.blockIndex = -1;
+            blockStarted_ = false;
+            setState(ControllerState::AutoIdle);
+            break;
+    }
+}
+
+void MachineController::finishBlock() {
+    const Block& b = program_->blocks[pc_];
+    ++pc_;
+    blockStarted_ = false;
+    setState(ControllerState::Running);
+    if (status_.singleBlock) {
+        status_.pause = PauseReason::SingleBlock;
+        setState(ControllerState::Paused);
+        post(EventKind::SingleBlockWait, b.n);
+    }
+}
+
+void MachineController::stepRunning(double dtS) {
+    if (approachFirst_) {
+        if (!servo_.sample().inPosition) return;
+        approachFirst_ = false;
+    }
+    for (int k = 0; k < kMaxBlocksPerStep && status_.state == ControllerState::Running; ++k) {
+        if (!blockStarted_) {
+            beginBlock();
+            continue;
+        }
+        const Block& b = program_->blocks[pc_];
+        if (isMotion(b.op) && servo_.sample().inPosition) {
+            finishBlock();
+            continue;
+        }
+        break;  // a move in progress
+    }
+    if (status_.state == ControllerState::Waiting) {
+        status_.dwellRemainingS -= dtS;
+        if (status_.dwellRemainingS <= 1e-12) {
+            status_.dwellRemainingS = 0.0;
+            finishBlock();
+        }
+    }
+}
+
+void MachineController::pressContinue() {
+    if (status_.state != ControllerState::Paused) return;
+    if (status_.pause == PauseReason::M00) {
+        post(EventKind::ContinuePressed);
+        status_.pause = PauseReason::None;
+        finishBlock();
+    } else if (status_.pause == PauseReason::SingleBlock) {
+        status_.pause = PauseReason::None;
+        setState(ControllerState::Running);
+    } else {
+        resume();
+    }
+}
+
+void MachineController::hold() {
+    if (status_.state != ControllerState::Running && status_.state != ControllerState::Waiting) return;
+    holdFrom_ = status_.state;
+    servo_.stop();
+    status_.pause = PauseReason::Hold;
+    setState(ControllerState::Paused);
+    post(EventKind::Paused, status_.blockN);
+}
+
+void MachineController::resume() {
+    if (status_.state != ControllerState::Paused) return;
+    if (status_.pause != PauseReason::Hold) return pressContinue();
+    status_.pause = PauseReason::None;
+    post(EventKind::Resumed, status_.blockN);
+    if (approachFirst_) {
+        const double startAt = status_.modal.hasPosition ? status_.modal.positionMm : 0.0;
+        servo_.moveTo(startAt, 1.0);
+    } else if (blockStarted_ && pc_ < program_->blocks.size() && isMotion(program_->blocks[pc_].op)) {
+        const Block& b = program_->blocks[pc_];
+        servo_.moveTo(b.x, b.op == Op::Rapid ? 1.0 : b.feed / 100.0);
+    }
+    setState(holdFrom_ == ControllerState::Waiting ? ControllerState::Waiting : ControllerState::Running);
+}
+
+void MachineController::stop() {
+    const auto s = status_.state;
+    if (s != ControllerState::Running && s != ControllerState::Waiting && s != ControllerState::Paused &&
+        s != ControllerState::Homing)
+        return;
+    servo_.stop();
+    status_.pause = PauseReason::None;
+    status_.blockIndex = -1;
+    blockStarted_ = false;
+    approachFirst_ = false;
+    startAfterHoming_ = false;
+    setState(ControllerState::AutoIdle);
+    post(EventKind::Stopped);
+}
+
+void MachineController::setSingleBlock(bool on) { status_.singleBlock = on; }
+
+void MachineController::setFeedOverride(double factor) {
+    status_.feedOverride = std::clamp(factor, 0.0, 1.5);
+    servo_.setSpeedOverride(status_.feedOverride);
+}
+
+// ---- always ----------------------------------------------------------------------------------
+
+void MachineController::emergencyStop() {
+    servo_.emergencyStop();
+    if (status_.state == ControllerState::EStop) return;
+    status_.pause = PauseReason::None;
+    status_.blockIndex = -1;
+    blockStarted_ = false;
+    approachFirst_ = false;
+    startAfterHoming_ = false;
+    jogging_ = false;
+    status_.manualCode = kDacZero;
+    status_.activeAlarms |= alarmBit(AlarmCode::EmergencyStop);
+    status_.lastAlarm = AlarmCode::EmergencyStop;
+    setState(ControllerState::EStop);
+    post(EventKind::AlarmRaised, -1, 0.0, 0.0, AlarmCode::EmergencyStop);
+}
+
+void MachineController::resetEmergencyStop() {
+    if (status_.state != ControllerState::EStop) return;
+    status_.activeAlarms &= ~alarmBit(AlarmCode::EmergencyStop);
+    servo_.clearFault();
+    servo_.release();
+    status_.automatic = false;
+    setState(ControllerState::Manual);
+    post(EventKind::EStopReset);
+}
+
+void MachineController::raiseAlarm(AlarmCode code) {
+    if (code == AlarmCode::None) return;
+    if (code == AlarmCode::EmergencyStop) return emergencyStop();
+    status_.lastAlarm = code;
+    post(EventKind::AlarmRaised, -1, 0.0, 0.0, code);
+    if (alarmSeverity(code) == AlarmSeverity::Warning) {
+        if (code == AlarmCode::SoftLimit && jogging_) servo_.stop();
+        return;
+    }
+    status_.activeAlarms |= alarmBit(code);
+    if (status_.state == ControllerState::Alarm || status_.state == ControllerState::EStop) return;
+    // Anything that needs the operator stops the machine: drive at 0 V, program abandoned.
+    if (servo_.sample().mode != ServoMode::Fault) servo_.emergencyStop();
+    status_.modeBeforeAlarm = status_.automatic ? ControllerState::AutoIdle : ControllerState::Manual;
+    status_.pause = PauseReason::None;
+    status_.blockIndex = -1;
+    blockStarted_ = false;
+    approachFirst_ = false;
+    startAfterHoming_ = false;
+    jogging_ = false;
+    status_.manualCode = kDacZero;
+    setState(ControllerState::Alarm);
+}
+
+void MachineController::acknowledgeAlarms() {
+    if (status_.state != ControllerState::Alarm) return;
+    for (unsigned c = 1; c < static_cast<unsigned>(AlarmCode::Count_); ++c) {
+        const auto code = static_cast<AlarmCode>(c);
+        if (status_.activeAlarms & alarmBit(code)) post(EventKind::AlarmAcknowledged, -1, 0.0, 0.0, code);
+    }
+    // After a fault of the position chain the count cannot be trusted: home again.
+    const std::uint32_t positionFaults = alarmBit(AlarmCode::FollowingError) | alarmBit(AlarmCode::EncoderFault) |
+                                         alarmBit(AlarmCode::LoopOverrun) | alarmBit(AlarmCode::HomingFailed) |
+                                         alarmBit(AlarmCode::AmplifierFault);
+    if (status_.activeAlarms & positionFaults) status_.homed = false;
+    status_.activeAlarms = 0;
+    servo_.clearFault();
+    servo_.release();
+    setState(status_.modeBeforeAlarm);
+    if (status_.state == ControllerState::AutoIdle && !status_.homed) status_.state = ControllerState::AutoIdle;
+}
+
+void MachineController::setGains(LoopLaw law, const LoopGains& gains) {
+    servo_.setGains(law, gains);
+    if (law == status_.law) status_.gains = gains;
+}
+
+void MachineController::setLaw(LoopLaw law) {
+    servo_.setLaw(law);
+    status_.law = law;
+    status_.gains = servo_.loop().gains();
+}
+
+void MachineController::checkServoFault() {
+    const ServoFault f = servo_.sample().fault;
+    if (f == ServoFault::None || status_.state == ControllerState::Alarm || status_.state == ControllerState::EStop)
+        return;
+    switch (f) {
+        case ServoFault::FollowingError: raiseAlarm(AlarmCode::FollowingError); break;
+        case ServoFault::LeftEndSwitch: raiseAlarm(AlarmCode::LeftEndSwitch); break;
+        case ServoFault::RightEndSwitch: raiseAlarm(AlarmCode::RightEndSwitch); break;
+        case ServoFault::AmplifierFault: raiseAlarm(AlarmCode::AmplifierFault); break;
+        default: break;
+    }
+}
+
+void MachineController::step(double dtS) {
+    servo_.tick(dtS);
+    status_.timeS += dtS;
+    // Repeated implausible counter reads: the position chain is broken.
+    const std::uint32_t rejected = servo_.sample().rejectedReads;
+    rejectWindow_ = std::max(0.0, rejectWindow_ - dtS * 10.0) + static_cast<double>(rejected - lastRejected_);
+    lastRejected_ = rejected;
+    if (rejectWindow_ > 20.0 && status_.state != ControllerState::Alarm && status_.state != ControllerState::EStop)
+        raiseAlarm(AlarmCode::EncoderFault);
+    // A period far longer than asked means the loop stalled.
+    if (dtS > std::max(profile().loop.watchdogS, 5.0 * profile().loop.samplePeriodS) &&
+        status_.state != ControllerState::EStop)
+        raiseAlarm(AlarmCode::LoopOverrun);
+    checkServoFault();
+    switch (status_.state) {
+        case ControllerState::Manual: checkManualLimits(); break;
+        case ControllerState::Homing: stepHoming(dtS); break;
+        case ControllerState::Running:
+        case ControllerState::Waiting: stepRunning(dtS); break;
+        default: break;
+    }
+    status_.servo = servo_.sample();
+    status_.feedOverride = servo_.speedOverride();
+}
+
+}  // namespace trilho

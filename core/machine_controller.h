@@ -1,0 +1,142 @@
+#pragma once
+// The machine controller (document 3.8.2 and machine.md "Operating modes"): one explicit state
+// machine over the servo. Manual is the default; Automatic homes to the centre switch; a
+// compiled program runs block by block exactly as gcode.md's interpreter table says. Plain and
+// steppable: step(dt) is one servo period, so a whole program runs in virtual time in tests
+// and in `trilho-cli run --virtual-time`; the worker thread is a thin shell around it.
+#include <cstdint>
+#include <memory>
+
+#include "core/controller_event.h"
+#include "core/event_ring.h"
+#include "core/modal_state.h"
+#include "core/program.h"
+#include "core/rail_servo.h"
+
+namespace trilho {
+
+enum class ControllerState : std::uint8_t {
+    Manual,     ///< default at start: the operator drives the rail
+    AutoIdle,   ///< automatic, homed, no program running
+    Homing,     ///< going to the centre switch
+    Running,    ///< executing a block (a move, or status blocks)
+    Waiting,    ///< g04 dwell
+    Paused,     ///< m00, an operator hold, or single block
+    Alarm,      ///< an alarm that must be acknowledged stopped the machine
+    EStop,      ///< emergency stop: drive at 0 V until reset
+};
+
+enum class PauseReason : std::uint8_t { None, M00, Hold, SingleBlock };
+
+/// Everything the screens and the command line show; trivially copyable for the seqlock.
+struct ControllerStatus {
+    double timeS = 0.0;
+    ControllerState state = ControllerState::Manual;
+    ControllerState modeBeforeAlarm = ControllerState::Manual;
+    PauseReason pause = PauseReason::None;
+    bool automatic = false;    ///< Automatic selected (as opposed to Manual)
+    bool homed = false;
+    bool singleBlock = false;
+    bool programLoaded = false;
+    bool programFinished = false;
+    double feedOverride = 1.0;
+    std::int32_t blockIndex = -1;  ///< block being executed, -1 when none
+    std::int32_t blockN = -1;
+    std::uint32_t blockLine = 0;
+    double dwellRemainingS = 0.0;
+    std::uint8_t manualCode = 128;  ///< the manual drive code (original manual mode)
+    std::uint32_t activeAlarms = 0;  ///< alarmBit() of each alarm not yet acknowledged
+    AlarmCode lastAlarm = AlarmCode::None;
+    ControllerEvent lastStatus{};    ///< the event that set the online status text
+    ModalState modal;
+    LoopLaw law = LoopLaw::Engineered;
+    LoopGains gains;
+    ServoSample servo;
+    std::uint64_t lastCommandSeq = 0;  ///< the last command applied (echoed by the worker)
+};
+
+class MachineController {
+public:
+    MachineController(const MachineProfile& profile, RailIo& io);
+
+    /// One servo period of dtS seconds.
+    void step(double dtS);
+    const ControllerStatus& status() const { return status_; }
+    const MachineProfile& profile() const { return servo_.profile(); }
+
+    /// Events since the last drain, in order (history lines, alarms, mode changes).
+    template <typename F>
+    void drainEvents(F&& f) {
+        ControllerEvent e;
+        while (events_.pop(e)) f(e);
+    }
+
+    // ---- modes ----
+    void selectManual();
+    void selectAutomatic();  ///< homes to the centre switch first
+
+    // ---- manual mode, as in 1996: '<' and '>' change the drive code a step, space stops ----
+    void manualLeft();
+    void manualRight();
+    void manualStop();
+    // ---- manual mode, as today ----
+    void jogStart(int direction, double speedFraction);  ///< hold-to-jog: -1 left, +1 right
+    void jogStop();                                      ///< release: controlled stop
+    void jogIncrement(double deltaMm, double speedFraction);
+
+    // ---- automatic mode ----
+    /// Takes a compiled program (Execute recompiles first; the caller does). A program with
+    /// errors is refused with the CompileErrors warning and nothing moves.
+    bool loadProgram(std::shared_ptr<const Program> program);
+    /// Runs from block `fromIndex` (0: the whole program) with the modal state rebuilt.
+    bool start(std::size_t fromIndex = 0);
+    void pressContinue();
+    void hold();    ///< controlled stop, then paused; resume() goes on
+    void resume();
+    void stop();    ///< controlled stop, program abandoned
+    void setSingleBlock(bool on);
+    void setFeedOverride(double factor);
+
+    // ---- always ----
+    void emergencyStop();
+    void resetEmergencyStop();
+    void acknowledgeAlarms();
+    void raiseAlarm(AlarmCode code);  ///< also used by the worker's watchdog
+    void setGains(LoopLaw law, const LoopGains& gains);
+    void setLaw(LoopLaw law);
+    void setCommandSeq(std::uint64_t seq) { status_.lastCommandSeq = seq; }
+
+private:
+    enum class HomingPhase : std::uint8_t { SearchLeft, CrossLeft, SearchRight, CrossRight, Settle, Centre };
+
+    void post(EventKind kind, std::int32_t n = -1, double x = 0.0, double feed = 0.0, AlarmCode alarm = AlarmCode::None);
+    void setState(ControllerState s) { status_.state = s; }
+    void beginBlock();
+    void finishBlock();
+    void stepRunning(double dtS);
+    void stepHoming(double dtS);
+    void checkServoFault();
+    void checkManualLimits();
+
+    RailServo servo_;
+    ControllerStatus status_;
+    SpscRing<ControllerEvent, 1024> events_;
+    std::shared_ptr<const Program> program_;
+    std::size_t pc_ = 0;           ///< index of the block being executed
+    bool blockStarted_ = false;
+    HomingPhase homingPhase_ = HomingPhase::SearchLeft;
+    double homingTimeS_ = 0.0;
+    double stillForS_ = 0.0;
+    bool jogging_ = false;
+    std::size_t pendingStart_ = 0;  ///< start() asked before homing finished
+    bool startAfterHoming_ = false;
+    bool approachFirst_ = false;    ///< start-from-block: move to the modal position first
+    bool leavingCentre_ = false;    ///< homing began on the centre vane: leave it first
+    ControllerState holdFrom_ = ControllerState::Running;
+    double rejectWindow_ = 0.0;     ///< recent implausible counter reads (decays 10 per s)
+    std::uint32_t lastRejected_ = 0;
+};
+
+const char* controllerStateName(ControllerState s);
+
+}  // namespace trilho

@@ -1,0 +1,173 @@
+#include "core/servo_worker.h"
+
+#include <pthread.h>
+#include <sched.h>
+#include <time.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace trilho {
+
+std::int64_t monotonicNs() {
+    timespec ts{};
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return static_cast<std::int64_t>(ts.tv_sec) * 1000000000LL + ts.tv_nsec;
+}
+
+namespace {
+timespec toTimespec(std::int64_t ns) {
+    timespec ts{};
+    ts.tv_sec = static_cast<time_t>(ns / 1000000000LL);
+    ts.tv_nsec = static_cast<long>(ns % 1000000000LL);
+    return ts;
+}
+}  // namespace
+
+ServoWorker::ServoWorker(MachineController& controller, RailIo& io, PlantStep plantStep, double periodS)
+    : controller_(controller),
+      io_(io),
+      plantStep_(std::move(plantStep)),
+      periodS_(periodS > 0.0 ? periodS : controller.profile().loop.samplePeriodS) {
+    status_.store(controller_.status());
+}
+
+ServoWorker::~ServoWorker() { stopThread(); }
+
+void ServoWorker::start(bool tryRealtime) {
+    if (running_.exchange(true)) return;
+    heartbeatNs_.store(monotonicNs());
+    thread_ = std::thread([this, tryRealtime] {
+        if (tryRealtime) {
+            sched_param param{};
+            param.sched_priority = 80;
+            timing_.realtimePriority = pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0;
+        }
+        run();
+    });
+    watchdogThread_ = std::thread([this] { watchdog(); });
+}
+
+void ServoWorker::stopThread() {
+    if (!running_.exchange(false)) return;
+    if (thread_.joinable()) thread_.join();
+    if (watchdogThread_.joinable()) watchdogThread_.join();
+}
+
+std::uint64_t ServoWorker::send(CommandKind kind, std::int64_t i, double a, double b, double c) {
+    std::lock_guard lock(sendMutex_);
+    Command cmd{nextSeq_++, kind, i, a, b, c};
+    commands_.push(cmd);
+    return cmd.seq;
+}
+
+std::uint64_t ServoWorker::loadProgram(std::shared_ptr<const Program> program) {
+    {
+        std::lock_guard lock(programMutex_);
+        pendingProgram_ = std::move(program);
+    }
+    return send(CommandKind::LoadProgram);
+}
+
+void ServoWorker::apply(const Command& c) {
+    MachineController& m = controller_;
+    switch (c.kind) {
+        case CommandKind::SelectManual: m.selectManual(); break;
+        case CommandKind::SelectAutomatic: m.selectAutomatic(); break;
+        case CommandKind::ManualLeft: m.manualLeft(); break;
+        case CommandKind::ManualRight: m.manualRight(); break;
+        case CommandKind::ManualStop: m.manualStop(); break;
+        case CommandKind::JogStart: m.jogStart(static_cast<int>(c.i), c.a); break;
+        case CommandKind::JogStop: m.jogStop(); break;
+        case CommandKind::JogIncrement: m.jogIncrement(c.a, c.b); break;
+        case CommandKind::Start: m.start(static_cast<std::size_t>(std::max<std::int64_t>(0, c.i))); break;
+        case CommandKind::Continue: m.pressContinue(); break;
+        case CommandKind::Hold: m.hold(); break;
+        case CommandKind::Resume: m.resume(); break;
+        case CommandKind::SingleBlock: m.setSingleBlock(c.i != 0); break;
+        case CommandKind::FeedOverride: m.setFeedOverride(c.a); break;
+        case CommandKind::Acknowledge: m.acknowledgeAlarms(); break;
+        case CommandKind::ResetEStop: m.resetEmergencyStop(); break;
+        case CommandKind::SetGains: m.setGains(static_cast<LoopLaw>(c.i), {c.a, c.b, c.c}); break;
+        case CommandKind::SetLaw: m.setLaw(static_cast<LoopLaw>(c.i)); break;
+        case CommandKind::LoadProgram: {
+            // The program may be large: the handover is a pointer swap under a lock the
+            // servo thread only tries, so a producer holding it never blocks a tick.
+            std::unique_lock lock(programMutex_, std::try_to_lock);
+            if (!lock.owns_lock()) {
+                commands_.push(c);  // try again next tick
+                return;
+            }
+            m.loadProgram(std::move(pendingProgram_));
+            pendingProgram_.reset();
+            break;
+        }
+    }
+    m.setCommandSeq(c.seq);
+}
+
+void ServoWorker::run() {
+    const auto period = static_cast<std::int64_t>(std::llround(periodS_ * 1e9));
+    std::int64_t next = monotonicNs() + period;
+    std::int64_t lastWake = next - period;
+    while (running_.load(std::memory_order_relaxed)) {
+        const timespec ts = toTimespec(next);
+        while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR) {
+        }
+        const std::int64_t wake = monotonicNs();
+        timing_.wakeLatency.add(wake - next);
+        const double dt = static_cast<double>(wake - lastWake) * 1e-9;
+        lastWake = wake;
+
+        if (estopFlag_.exchange(false)) controller_.emergencyStop();
+        if (stopFlag_.exchange(false)) {
+            controller_.stop();
+            controller_.jogStop();
+            controller_.manualStop();
+        }
+        if (watchdogFlag_.exchange(false)) controller_.raiseAlarm(AlarmCode::LoopOverrun);
+        Command cmd;
+        for (int k = 0; k < 16 && commands_.pop(cmd); ++k) apply(cmd);
+        if (tickHook_) tickHook_();
+
+        controller_.step(dt);
+        if (plantStep_) plantStep_(dt);
+        controller_.drainEvents([this](const ControllerEvent& e) { events_.push(e); });
+        const ControllerStatus& s = controller_.status();
+        if (tracing_.load(std::memory_order_relaxed)) {
+            trace_.push({s.timeS, s.blockN, s.servo.setpointMm, s.servo.positionMm, s.servo.errorMm,
+                         s.servo.velocityMmS, s.servo.loop.code});
+        }
+        status_.store(s);
+
+        const std::int64_t end = monotonicNs();
+        heartbeatNs_.store(end, std::memory_order_relaxed);
+        timing_.loopBody.add(end - wake);
+        next += period;
+        if (end > next) {  // overran: skip the missed periods rather than burst to catch up
+            ++timing_.overruns;
+            next = end + period - (end - next) % period;
+        }
+    }
+    io_.writeDrive(kDacZero);
+}
+
+void ServoWorker::watchdog() {
+    // Stalled when no tick finished within the profile's watchdog time (and 5 periods).
+    const std::int64_t limit = static_cast<std::int64_t>(
+        std::max(controller_.profile().loop.watchdogS, 5.0 * periodS_) * 1e9);
+    bool tripped = false;
+    while (running_.load()) {
+        timespec ts = toTimespec(monotonicNs() + limit / 4);
+        clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr);
+        const bool stale = monotonicNs() - heartbeatNs_.load(std::memory_order_relaxed) > limit;
+        if (stale && !tripped) {
+            io_.writeDrive(kDacZero);  // 0 V now, from this thread
+            watchdogFlag_.store(true);
+            watchdogTrips_.fetch_add(1);
+        }
+        tripped = stale;
+    }
+}
+
+}  // namespace trilho

@@ -1,0 +1,135 @@
+#pragma once
+// The servo thread: a thin shell around MachineController. It wakes at absolute times (one
+// period apart), passes the measured dt to the controller, steps the plant when simulated,
+// publishes a consistent snapshot (seqlock) and the controller's events, and takes commands
+// through a queue whose sequence numbers it echoes. Stop and E-stop are flags that bypass the
+// queue. A watchdog thread drives the output to 0 V and raises an alarm if the loop stalls.
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include "core/event_ring.h"
+#include "core/latency_stats.h"
+#include "core/machine_controller.h"
+#include "core/seqlock.h"
+
+namespace trilho {
+
+enum class CommandKind : std::uint8_t {
+    SelectManual,
+    SelectAutomatic,
+    ManualLeft,
+    ManualRight,
+    ManualStop,
+    JogStart,      ///< i = direction, a = speed fraction
+    JogStop,
+    JogIncrement,  ///< a = mm, b = speed fraction
+    Start,         ///< i = first block index
+    Continue,
+    Hold,
+    Resume,
+    SingleBlock,   ///< i = 0/1
+    FeedOverride,  ///< a = factor
+    Acknowledge,
+    ResetEStop,
+    SetGains,      ///< i = law, a, b, c = kp, ki, kd
+    SetLaw,        ///< i = law
+    LoadProgram,   ///< takes the program handed over with loadProgram()
+};
+
+struct Command {
+    std::uint64_t seq = 0;
+    CommandKind kind = CommandKind::ManualStop;
+    std::int64_t i = 0;
+    double a = 0.0, b = 0.0, c = 0.0;
+};
+
+/// One row of `--trace`: every servo tick.
+struct TraceRow {
+    double timeS;
+    std::int32_t blockN;
+    double setpointMm, positionMm, errorMm, velocityMmS;
+    std::uint8_t drive;
+};
+
+struct WorkerTiming {
+    LatencyHistogram wakeLatency{1000};  ///< ns late against the absolute wake time, 1 us bins
+    LatencyHistogram loopBody{100};      ///< ns from wake to the end of the tick, 100 ns bins
+    std::uint64_t overruns = 0;          ///< periods that ended after the next one was due
+    bool realtimePriority = false;       ///< SCHED_FIFO was granted
+};
+
+class ServoWorker {
+public:
+    using PlantStep = std::function<void(double dtS)>;
+
+    /// controller and io outlive the worker. plantStep (optional) advances a simulated plant
+    /// by the measured dt after each controller step. periodS: default from the profile.
+    ServoWorker(MachineController& controller, RailIo& io, PlantStep plantStep = {}, double periodS = 0.0);
+    ~ServoWorker();
+
+    void start(bool tryRealtime = true);
+    void stopThread();
+    bool running() const { return running_.load(); }
+
+    /// Queues a command; returns its sequence number (the snapshot echoes the last applied).
+    std::uint64_t send(CommandKind kind, std::int64_t i = 0, double a = 0.0, double b = 0.0, double c = 0.0);
+    /// Hands a compiled program over and queues LoadProgram.
+    std::uint64_t loadProgram(std::shared_ptr<const Program> program);
+    /// Bypass the queue: acted on at the very next tick.
+    void requestStop() { stopFlag_.store(true); }
+    void requestEmergencyStop() { estopFlag_.store(true); }
+
+    ControllerStatus snapshot() const { return status_.load(); }
+    std::uint64_t snapshotVersion() const { return status_.version(); }
+    template <typename F>
+    void drainEvents(F&& f) {
+        ControllerEvent e;
+        while (events_.pop(e)) f(e);
+    }
+    template <typename F>
+    void drainTrace(F&& f) {
+        TraceRow r;
+        while (trace_.pop(r)) f(r);
+    }
+    void setTracing(bool on) { tracing_.store(on); }
+    /// Timing statistics; read after stopThread() (the servo thread owns them while running).
+    const WorkerTiming& timing() const { return timing_; }
+    /// Test hook run inside each tick (e.g. to stall the loop on purpose).
+    void setTickHook(std::function<void()> hook) { tickHook_ = std::move(hook); }
+    double periodS() const { return periodS_; }
+    bool watchdogTripped() const { return watchdogTrips_.load() > 0; }
+
+private:
+    void run();
+    void watchdog();
+    void apply(const Command& c);
+
+    MachineController& controller_;
+    RailIo& io_;
+    PlantStep plantStep_;
+    double periodS_;
+    std::thread thread_, watchdogThread_;
+    std::atomic<bool> running_{false};
+    std::atomic<bool> stopFlag_{false}, estopFlag_{false}, tracing_{false};
+    std::atomic<bool> watchdogFlag_{false};
+    std::atomic<std::uint64_t> watchdogTrips_{0};
+    std::atomic<std::int64_t> heartbeatNs_{0};
+    std::mutex sendMutex_;  ///< producers only; the servo thread never takes it
+    std::uint64_t nextSeq_ = 1;
+    SpscRing<Command, 256> commands_;
+    std::mutex programMutex_;  ///< the servo thread only try_locks it
+    std::shared_ptr<const Program> pendingProgram_;
+    SeqLock<ControllerStatus> status_;
+    SpscRing<ControllerEvent, 4096> events_;
+    SpscRing<TraceRow, 65536> trace_;
+    WorkerTiming timing_;
+    std::function<void()> tickHook_;
+};
+
+/// Current CLOCK_MONOTONIC time, ns.
+std::int64_t monotonicNs();
+
+}  // namespace trilho
