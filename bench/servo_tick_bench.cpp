@@ -1,6 +1,7 @@
 // Cost of one servo tick on the simulated rail (profile sample + loop law + plant step), and
 // how many times faster than real time a 1 kHz simulation runs. Google Benchmark; run with
-//   build/release/bench/trilho-bench-servo --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+//   build/release/bench/trilho-bench-servo --benchmark_repetitions=5
+//   --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
 #include "core/position_loop.h"
@@ -27,7 +28,8 @@ void BM_ServoTickWithPlant(benchmark::State& state) {
         ++ticks;
     }
     benchmark::DoNotOptimize(servo.sample());
-    state.counters["x_real_time"] = benchmark::Counter(static_cast<double>(ticks) * 0.001, benchmark::Counter::kIsRate);
+    state.counters["x_real_time"] =
+        benchmark::Counter(static_cast<double>(ticks) * 0.001, benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_ServoTickWithPlant);
 

@@ -10,23 +10,23 @@
 namespace trilho {
 
 enum class EventKind : std::uint8_t {
-    Rapid,          ///< n, x
-    Linear,         ///< n, x, feed
-    Dwell,          ///< n, seconds
-    Absolute,       ///< n
-    Incremental,    ///< n
-    SetZero,        ///< n, x
-    ResetZero,      ///< n
-    Feed,           ///< n, feed
-    WaitContinue,   ///< n (m00)
-    Goto,           ///< n, target n
+    Rapid,         ///< n, x
+    Linear,        ///< n, x, feed
+    Dwell,         ///< n, seconds
+    Absolute,      ///< n
+    Incremental,   ///< n
+    SetZero,       ///< n, x
+    ResetZero,     ///< n
+    Feed,          ///< n, feed
+    WaitContinue,  ///< n (m00)
+    Goto,          ///< n, target n
     ProgramEnd,
     CompileFailed,  ///< value = error count
     ModeManual,
     ModeAutomatic,
     HomingStarted,
     HomingDone,
-    ManualLeftEnd,   ///< the original's "Cuidado : Fim de curso Esquerdo atingido !!!"
+    ManualLeftEnd,  ///< the original's "Cuidado : Fim de curso Esquerdo atingido !!!"
     ManualRightEnd,
     ManualSpeedCap,  ///< asked for more than the manual speed limit
     Paused,

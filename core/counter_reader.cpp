@@ -53,7 +53,8 @@ void CounterReader::read(RailIo& io, double dtS, bool nearCentre) {
     // after three reads that agree with one another, follow it rather than lock up.
     ++rejected_;
     lastDelta_ = 0;
-    const auto fromPending = static_cast<std::int16_t>(static_cast<std::uint16_t>(raw - pendingRaw_));
+    const auto fromPending =
+        static_cast<std::int16_t>(static_cast<std::uint16_t>(raw - pendingRaw_));
     rejectRun_ = (rejectRun_ > 0 && std::abs(fromPending) <= maxDelta) ? rejectRun_ + 1 : 1;
     pendingRaw_ = raw;
     if (rejectRun_ >= 3) {

@@ -10,8 +10,9 @@
 namespace trilho {
 
 class CounterReader {
-public:
-    CounterReader(double countsPerMm, double maxSpeedMmS) : countsPerMm_(countsPerMm), maxSpeedMmS_(maxSpeedMmS) {}
+  public:
+    CounterReader(double countsPerMm, double maxSpeedMmS)
+        : countsPerMm_(countsPerMm), maxSpeedMmS_(maxSpeedMmS) {}
 
     /// Reads the counter. nearCentre: the centre switch read active this tick (raw, not
     /// debounced: at speed the platform crosses its band in 3 ms) or the platform is close to it.
@@ -27,10 +28,10 @@ public:
     /// The last read re-based the count (the centre mark cleared the counter, or the counter
     /// jumped and stayed there): the change is a new reference, not motion.
     bool rebased() const { return rebased_; }
-    std::uint32_t rejected() const { return rejected_; }     ///< implausible reads refused
+    std::uint32_t rejected() const { return rejected_; }            ///< implausible reads refused
     std::uint32_t disagreements() const { return disagreements_; }  ///< double reads that differed
 
-private:
+  private:
     double countsPerMm_;
     double maxSpeedMmS_;
     std::uint16_t lastRaw_ = 0;

@@ -15,7 +15,7 @@ class SpscRing {
     static_assert(std::is_trivially_copyable_v<T>);
     static_assert((Capacity & (Capacity - 1)) == 0, "capacity must be a power of two");
 
-public:
+  public:
     bool push(const T& value) {
         const std::size_t head = head_.load(std::memory_order_relaxed);
         if (head - tail_.load(std::memory_order_acquire) >= Capacity) {
@@ -35,7 +35,7 @@ public:
     }
     std::uint64_t dropped() const { return dropped_.load(std::memory_order_relaxed); }
 
-private:
+  private:
     std::array<T, Capacity> items_{};
     alignas(64) std::atomic<std::size_t> head_{0};
     alignas(64) std::atomic<std::size_t> tail_{0};

@@ -95,9 +95,15 @@ QString number(double v) {
 
 }  // namespace
 
-const char* historySource(EventKind kind) { return kHistory[static_cast<int>(kind)]; }
-const char* onlineSource(EventKind kind) { return kOnline[static_cast<int>(kind)]; }
-const char* alarmSource(AlarmCode code) { return kAlarm[static_cast<int>(code)]; }
+const char* historySource(EventKind kind) {
+    return kHistory[static_cast<int>(kind)];
+}
+const char* onlineSource(EventKind kind) {
+    return kOnline[static_cast<int>(kind)];
+}
+const char* alarmSource(AlarmCode code) {
+    return kAlarm[static_cast<int>(code)];
+}
 
 QString alarmText(AlarmCode code) {
     if (code == AlarmCode::None || code >= AlarmCode::Count_) return {};

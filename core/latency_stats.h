@@ -7,7 +7,7 @@
 namespace trilho {
 
 class LatencyHistogram {
-public:
+  public:
     /// binNs: width of a bin; values past the last bin count in the last one (max is exact).
     explicit LatencyHistogram(std::int64_t binNs = 1000) : binNs_(binNs) {}
     void add(std::int64_t ns) {
@@ -28,13 +28,16 @@ public:
         std::uint64_t seen = 0;
         for (std::size_t i = 0; i < kBins; ++i) {
             seen += bins_[i];
-            if (seen >= rank) return static_cast<std::int64_t>(i + 1) * binNs_ < max_ ? static_cast<std::int64_t>(i + 1) * binNs_ : max_;
+            if (seen >= rank)
+                return static_cast<std::int64_t>(i + 1) * binNs_ < max_
+                           ? static_cast<std::int64_t>(i + 1) * binNs_
+                           : max_;
         }
         return max_;
     }
     void reset() { *this = LatencyHistogram(binNs_); }
 
-private:
+  private:
     static constexpr std::size_t kBins = 20000;
     std::int64_t binNs_;
     std::array<std::uint32_t, kBins> bins_{};

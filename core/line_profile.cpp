@@ -5,8 +5,8 @@
 
 namespace trilho {
 
-LineProfile::LineProfile(const Eigen::VectorXd& start, const Eigen::VectorXd& target, const Eigen::VectorXd& speeds,
-                         const Eigen::VectorXd& accels)
+LineProfile::LineProfile(const Eigen::VectorXd& start, const Eigen::VectorXd& target,
+                         const Eigen::VectorXd& speeds, const Eigen::VectorXd& accels)
     : start_(start), direction_(Eigen::VectorXd::Zero(start.size())) {
     const Eigen::VectorXd delta = target - start;
     const double length = delta.norm();
@@ -25,7 +25,8 @@ LineProfile::LineProfile(const Eigen::VectorXd& start, const Eigen::VectorXd& ta
 
 LineSample LineProfile::at(double tS) const {
     const MotionSample s = path_.at(tS);
-    return {start_ + direction_ * s.positionMm, direction_ * s.velocityMmS, direction_ * s.accelerationMmS2};
+    return {start_ + direction_ * s.positionMm, direction_ * s.velocityMmS,
+            direction_ * s.accelerationMmS2};
 }
 
 double LineProfile::seedAxisTime(double distanceMm, double speedMmS, double accelMmS2) {

@@ -16,17 +16,17 @@ struct LineSample {
 };
 
 class LineProfile {
-public:
+  public:
     /// speeds and accels are per-axis limits (mm/s, mm/s2), all > 0.
-    LineProfile(const Eigen::VectorXd& start, const Eigen::VectorXd& target, const Eigen::VectorXd& speeds,
-                const Eigen::VectorXd& accels);
+    LineProfile(const Eigen::VectorXd& start, const Eigen::VectorXd& target,
+                const Eigen::VectorXd& speeds, const Eigen::VectorXd& accels);
 
     LineSample at(double tS) const;
     double duration() const { return path_.duration(); }
     /// The seed's per-axis time, tf = (vmax^2 + a |d|) / (a vmax), for comparison.
     static double seedAxisTime(double distanceMm, double speedMmS, double accelMmS2);
 
-private:
+  private:
     Eigen::VectorXd start_, direction_;  ///< unit direction (zero for a null move)
     Trapezoid path_;                     ///< along the path length, mm
 };

@@ -6,34 +6,45 @@
 namespace trilho {
 
 namespace {
-constexpr int kHomingSearchCodes = 20;      ///< 297 mm/s: the search for the centre switch
-constexpr double kHomingTimeoutS = 60.0;    ///< longer than a full-length search at that speed
+constexpr int kHomingSearchCodes = 20;    ///< 297 mm/s: the search for the centre switch
+constexpr double kHomingTimeoutS = 60.0;  ///< longer than a full-length search at that speed
 constexpr double kStillSpeedMmS = 0.5;
 constexpr double kStillTimeS = 0.05;
-constexpr int kMaxBlocksPerStep = 64;       ///< status-only blocks run without waiting a period
+constexpr int kMaxBlocksPerStep = 64;  ///< status-only blocks run without waiting a period
 }  // namespace
 
 const char* controllerStateName(ControllerState s) {
     switch (s) {
-        case ControllerState::Manual: return "manual";
-        case ControllerState::AutoIdle: return "auto-idle";
-        case ControllerState::Homing: return "homing";
-        case ControllerState::Running: return "running";
-        case ControllerState::Waiting: return "waiting";
-        case ControllerState::Paused: return "paused";
-        case ControllerState::Alarm: return "alarm";
-        case ControllerState::EStop: return "e-stop";
+        case ControllerState::Manual:
+            return "manual";
+        case ControllerState::AutoIdle:
+            return "auto-idle";
+        case ControllerState::Homing:
+            return "homing";
+        case ControllerState::Running:
+            return "running";
+        case ControllerState::Waiting:
+            return "waiting";
+        case ControllerState::Paused:
+            return "paused";
+        case ControllerState::Alarm:
+            return "alarm";
+        case ControllerState::EStop:
+            return "e-stop";
     }
     return "?";
 }
 
-MachineController::MachineController(const MachineProfile& profile, RailIo& io) : servo_(profile, io) {
+MachineController::MachineController(const MachineProfile& profile, RailIo& io)
+    : servo_(profile, io) {
     status_.law = profile.loop.law;
-    status_.gains = profile.loop.law == LoopLaw::Classic ? profile.loop.classic : profile.loop.engineered;
+    status_.gains =
+        profile.loop.law == LoopLaw::Classic ? profile.loop.classic : profile.loop.engineered;
     status_.servo = servo_.sample();
 }
 
-void MachineController::post(EventKind kind, std::int32_t n, double x, double feed, AlarmCode alarm) {
+void MachineController::post(EventKind kind, std::int32_t n, double x, double feed,
+                             AlarmCode alarm) {
     ControllerEvent e;
     e.timeS = status_.timeS;
     e.kind = kind;
@@ -42,11 +53,12 @@ void MachineController::post(EventKind kind, std::int32_t n, double x, double fe
     e.feed = feed;
     e.alarm = alarm;
     events_.push(e);
-    if (kind == EventKind::AlarmRaised || (kind < EventKind::Count_ && kind != EventKind::ContinuePressed &&
-                                           kind != EventKind::AlarmAcknowledged && kind != EventKind::ManualLeftEnd &&
-                                           kind != EventKind::ManualRightEnd && kind != EventKind::ManualSpeedCap &&
-                                           kind != EventKind::ModeManual && kind != EventKind::ModeAutomatic &&
-                                           kind != EventKind::StartFromBlock && kind != EventKind::EStopReset))
+    if (kind == EventKind::AlarmRaised ||
+        (kind < EventKind::Count_ && kind != EventKind::ContinuePressed &&
+         kind != EventKind::AlarmAcknowledged && kind != EventKind::ManualLeftEnd &&
+         kind != EventKind::ManualRightEnd && kind != EventKind::ManualSpeedCap &&
+         kind != EventKind::ModeManual && kind != EventKind::ModeAutomatic &&
+         kind != EventKind::StartFromBlock && kind != EventKind::EStopReset))
         status_.lastStatus = e;
 }
 
@@ -74,7 +86,8 @@ void MachineController::selectAutomatic() {
     jogging_ = false;
     post(EventKind::ModeAutomatic);
     // machine.md: selecting Automatic sends the platform to the rail centre.
-    homingPhase_ = (servo_.sample().switches & switch_bits::kCentre) ? HomingPhase::Settle : HomingPhase::SearchLeft;
+    homingPhase_ = (servo_.sample().switches & switch_bits::kCentre) ? HomingPhase::Settle
+                                                                     : HomingPhase::SearchLeft;
     if (homingPhase_ == HomingPhase::Settle) {
         // Sitting on the centre vane: leave it to the right first so the search crosses it.
         homingPhase_ = HomingPhase::SearchRight;
@@ -92,7 +105,8 @@ void MachineController::stepHoming(double dtS) {
     if (homingTimeS_ > kHomingTimeoutS) return raiseAlarm(AlarmCode::HomingFailed);
     const ServoSample& s = servo_.sample();
     const bool centre = s.switches & switch_bits::kCentre;
-    const bool left = s.switches & switch_bits::kLeftEnd, right = s.switches & switch_bits::kRightEnd;
+    const bool left = s.switches & switch_bits::kLeftEnd,
+               right = s.switches & switch_bits::kRightEnd;
     const auto code = [](int offset) { return static_cast<std::uint8_t>(kDacZero + offset); };
     switch (homingPhase_) {
         case HomingPhase::SearchLeft:
@@ -107,13 +121,17 @@ void MachineController::stepHoming(double dtS) {
             break;
         case HomingPhase::CrossLeft:
             // Keep going until the vane is behind us: the counter was cleared at its middle.
-            if (!centre) homingPhase_ = HomingPhase::Settle, stillForS_ = 0.0;
-            else servo_.setDirect(code(-kHomingSearchCodes));
+            if (!centre)
+                homingPhase_ = HomingPhase::Settle, stillForS_ = 0.0;
+            else
+                servo_.setDirect(code(-kHomingSearchCodes));
             break;
         case HomingPhase::SearchRight:
             if (leavingCentre_) {
-                if (!centre) leavingCentre_ = false, homingPhase_ = HomingPhase::SearchLeft;
-                else servo_.setDirect(code(kHomingSearchCodes));
+                if (!centre)
+                    leavingCentre_ = false, homingPhase_ = HomingPhase::SearchLeft;
+                else
+                    servo_.setDirect(code(kHomingSearchCodes));
             } else if (centre) {
                 homingPhase_ = HomingPhase::CrossRight;
             } else if (right) {
@@ -123,8 +141,10 @@ void MachineController::stepHoming(double dtS) {
             }
             break;
         case HomingPhase::CrossRight:
-            if (!centre) homingPhase_ = HomingPhase::Settle, stillForS_ = 0.0;
-            else servo_.setDirect(code(kHomingSearchCodes));
+            if (!centre)
+                homingPhase_ = HomingPhase::Settle, stillForS_ = 0.0;
+            else
+                servo_.setDirect(code(kHomingSearchCodes));
             break;
         case HomingPhase::Settle:
             servo_.release();
@@ -182,8 +202,10 @@ void MachineController::manualRight() {
 void MachineController::manualStop() {
     if (status_.state != ControllerState::Manual) return;
     status_.manualCode = kDacZero;
-    if (jogging_) servo_.stop();
-    else servo_.release();
+    if (jogging_)
+        servo_.stop();
+    else
+        servo_.release();
 }
 
 void MachineController::jogStart(int direction, double speedFraction) {
@@ -281,7 +303,8 @@ bool MachineController::start(std::size_t fromIndex) {
     // Execution starts at the rail centre (gcode.md); from a block, where the program would
     // have left the platform.
     const double startAt = status_.modal.hasPosition ? status_.modal.positionMm : 0.0;
-    approachFirst_ = std::abs(servo_.sample().positionMm - startAt) > profile().loop.inPositionWindowMm;
+    approachFirst_ =
+        std::abs(servo_.sample().positionMm - startAt) > profile().loop.inPositionWindowMm;
     if (approachFirst_) servo_.moveTo(startAt, 1.0);
     setState(ControllerState::Running);
     return true;
@@ -308,11 +331,21 @@ void MachineController::beginBlock() {
             status_.dwellRemainingS = b.seconds();
             setState(ControllerState::Waiting);
             break;
-        case Op::Absolute: post(EventKind::Absolute, b.n), finishBlock(); break;
-        case Op::Incremental: post(EventKind::Incremental, b.n), finishBlock(); break;
-        case Op::SetZero: post(EventKind::SetZero, b.n, b.zero()), finishBlock(); break;
-        case Op::ResetZero: post(EventKind::ResetZero, b.n), finishBlock(); break;
-        case Op::Feed: post(EventKind::Feed, b.n, 0.0, b.feed), finishBlock(); break;
+        case Op::Absolute:
+            post(EventKind::Absolute, b.n), finishBlock();
+            break;
+        case Op::Incremental:
+            post(EventKind::Incremental, b.n), finishBlock();
+            break;
+        case Op::SetZero:
+            post(EventKind::SetZero, b.n, b.zero()), finishBlock();
+            break;
+        case Op::ResetZero:
+            post(EventKind::ResetZero, b.n), finishBlock();
+            break;
+        case Op::Feed:
+            post(EventKind::Feed, b.n, 0.0, b.feed), finishBlock();
+            break;
         case Op::Stop:
             post(EventKind::WaitContinue, b.n);
             status_.pause = PauseReason::M00;
@@ -391,7 +424,8 @@ void MachineController::pressContinue() {
 }
 
 void MachineController::hold() {
-    if (status_.state != ControllerState::Running && status_.state != ControllerState::Waiting) return;
+    if (status_.state != ControllerState::Running && status_.state != ControllerState::Waiting)
+        return;
     holdFrom_ = status_.state;
     servo_.stop();
     status_.pause = PauseReason::Hold;
@@ -407,17 +441,19 @@ void MachineController::resume() {
     if (approachFirst_) {
         const double startAt = status_.modal.hasPosition ? status_.modal.positionMm : 0.0;
         servo_.moveTo(startAt, 1.0);
-    } else if (blockStarted_ && pc_ < program_->blocks.size() && isMotion(program_->blocks[pc_].op)) {
+    } else if (blockStarted_ && pc_ < program_->blocks.size() &&
+               isMotion(program_->blocks[pc_].op)) {
         const Block& b = program_->blocks[pc_];
         servo_.moveTo(b.x, b.op == Op::Rapid ? 1.0 : b.feed / 100.0);
     }
-    setState(holdFrom_ == ControllerState::Waiting ? ControllerState::Waiting : ControllerState::Running);
+    setState(holdFrom_ == ControllerState::Waiting ? ControllerState::Waiting
+                                                   : ControllerState::Running);
 }
 
 void MachineController::stop() {
     const auto s = status_.state;
-    if (s != ControllerState::Running && s != ControllerState::Waiting && s != ControllerState::Paused &&
-        s != ControllerState::Homing)
+    if (s != ControllerState::Running && s != ControllerState::Waiting &&
+        s != ControllerState::Paused && s != ControllerState::Homing)
         return;
     servo_.stop();
     status_.pause = PauseReason::None;
@@ -429,7 +465,9 @@ void MachineController::stop() {
     post(EventKind::Stopped);
 }
 
-void MachineController::setSingleBlock(bool on) { status_.singleBlock = on; }
+void MachineController::setSingleBlock(bool on) {
+    status_.singleBlock = on;
+}
 
 void MachineController::setFeedOverride(double factor) {
     status_.feedOverride = std::clamp(factor, 0.0, 1.5);
@@ -477,7 +515,8 @@ void MachineController::raiseAlarm(AlarmCode code) {
     if (status_.state == ControllerState::Alarm || status_.state == ControllerState::EStop) return;
     // Anything that needs the operator stops the machine: drive at 0 V, program abandoned.
     if (servo_.sample().mode != ServoMode::Fault) servo_.emergencyStop();
-    status_.modeBeforeAlarm = status_.automatic ? ControllerState::AutoIdle : ControllerState::Manual;
+    status_.modeBeforeAlarm =
+        status_.automatic ? ControllerState::AutoIdle : ControllerState::Manual;
     status_.pause = PauseReason::None;
     status_.blockIndex = -1;
     blockStarted_ = false;
@@ -492,18 +531,21 @@ void MachineController::acknowledgeAlarms() {
     if (status_.state != ControllerState::Alarm) return;
     for (unsigned c = 1; c < static_cast<unsigned>(AlarmCode::Count_); ++c) {
         const auto code = static_cast<AlarmCode>(c);
-        if (status_.activeAlarms & alarmBit(code)) post(EventKind::AlarmAcknowledged, -1, 0.0, 0.0, code);
+        if (status_.activeAlarms & alarmBit(code))
+            post(EventKind::AlarmAcknowledged, -1, 0.0, 0.0, code);
     }
     // After a fault of the position chain the count cannot be trusted: home again.
-    const std::uint32_t positionFaults = alarmBit(AlarmCode::FollowingError) | alarmBit(AlarmCode::EncoderFault) |
-                                         alarmBit(AlarmCode::LoopOverrun) | alarmBit(AlarmCode::HomingFailed) |
-                                         alarmBit(AlarmCode::AmplifierFault);
+    const std::uint32_t positionFaults =
+        alarmBit(AlarmCode::FollowingError) | alarmBit(AlarmCode::EncoderFault) |
+        alarmBit(AlarmCode::LoopOverrun) | alarmBit(AlarmCode::HomingFailed) |
+        alarmBit(AlarmCode::AmplifierFault);
     if (status_.activeAlarms & positionFaults) status_.homed = false;
     status_.activeAlarms = 0;
     servo_.clearFault();
     servo_.release();
     setState(status_.modeBeforeAlarm);
-    if (status_.state == ControllerState::AutoIdle && !status_.homed) status_.state = ControllerState::AutoIdle;
+    if (status_.state == ControllerState::AutoIdle && !status_.homed)
+        status_.state = ControllerState::AutoIdle;
 }
 
 void MachineController::setGains(LoopLaw law, const LoopGains& gains) {
@@ -519,14 +561,24 @@ void MachineController::setLaw(LoopLaw law) {
 
 void MachineController::checkServoFault() {
     const ServoFault f = servo_.sample().fault;
-    if (f == ServoFault::None || status_.state == ControllerState::Alarm || status_.state == ControllerState::EStop)
+    if (f == ServoFault::None || status_.state == ControllerState::Alarm ||
+        status_.state == ControllerState::EStop)
         return;
     switch (f) {
-        case ServoFault::FollowingError: raiseAlarm(AlarmCode::FollowingError); break;
-        case ServoFault::LeftEndSwitch: raiseAlarm(AlarmCode::LeftEndSwitch); break;
-        case ServoFault::RightEndSwitch: raiseAlarm(AlarmCode::RightEndSwitch); break;
-        case ServoFault::AmplifierFault: raiseAlarm(AlarmCode::AmplifierFault); break;
-        default: break;
+        case ServoFault::FollowingError:
+            raiseAlarm(AlarmCode::FollowingError);
+            break;
+        case ServoFault::LeftEndSwitch:
+            raiseAlarm(AlarmCode::LeftEndSwitch);
+            break;
+        case ServoFault::RightEndSwitch:
+            raiseAlarm(AlarmCode::RightEndSwitch);
+            break;
+        case ServoFault::AmplifierFault:
+            raiseAlarm(AlarmCode::AmplifierFault);
+            break;
+        default:
+            break;
     }
 }
 
@@ -535,9 +587,11 @@ void MachineController::step(double dtS) {
     status_.timeS += dtS;
     // Repeated implausible counter reads: the position chain is broken.
     const std::uint32_t rejected = servo_.sample().rejectedReads;
-    rejectWindow_ = std::max(0.0, rejectWindow_ - dtS * 10.0) + static_cast<double>(rejected - lastRejected_);
+    rejectWindow_ =
+        std::max(0.0, rejectWindow_ - dtS * 10.0) + static_cast<double>(rejected - lastRejected_);
     lastRejected_ = rejected;
-    if (rejectWindow_ > 20.0 && status_.state != ControllerState::Alarm && status_.state != ControllerState::EStop)
+    if (rejectWindow_ > 20.0 && status_.state != ControllerState::Alarm &&
+        status_.state != ControllerState::EStop)
         raiseAlarm(AlarmCode::EncoderFault);
     // A period far longer than asked means the loop stalled.
     if (dtS > std::max(profile().loop.watchdogS, 5.0 * profile().loop.samplePeriodS) &&
@@ -545,11 +599,18 @@ void MachineController::step(double dtS) {
         raiseAlarm(AlarmCode::LoopOverrun);
     checkServoFault();
     switch (status_.state) {
-        case ControllerState::Manual: checkManualLimits(); break;
-        case ControllerState::Homing: stepHoming(dtS); break;
+        case ControllerState::Manual:
+            checkManualLimits();
+            break;
+        case ControllerState::Homing:
+            stepHoming(dtS);
+            break;
         case ControllerState::Running:
-        case ControllerState::Waiting: stepRunning(dtS); break;
-        default: break;
+        case ControllerState::Waiting:
+            stepRunning(dtS);
+            break;
+        default:
+            break;
     }
     status_.servo = servo_.sample();
     status_.feedOverride = servo_.speedOverride();

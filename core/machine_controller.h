@@ -16,14 +16,14 @@
 namespace trilho {
 
 enum class ControllerState : std::uint8_t {
-    Manual,     ///< default at start: the operator drives the rail
-    AutoIdle,   ///< automatic, homed, no program running
-    Homing,     ///< going to the centre switch
-    Running,    ///< executing a block (a move, or status blocks)
-    Waiting,    ///< g04 dwell
-    Paused,     ///< m00, an operator hold, or single block
-    Alarm,      ///< an alarm that must be acknowledged stopped the machine
-    EStop,      ///< emergency stop: drive at 0 V until reset
+    Manual,    ///< default at start: the operator drives the rail
+    AutoIdle,  ///< automatic, homed, no program running
+    Homing,    ///< going to the centre switch
+    Running,   ///< executing a block (a move, or status blocks)
+    Waiting,   ///< g04 dwell
+    Paused,    ///< m00, an operator hold, or single block
+    Alarm,     ///< an alarm that must be acknowledged stopped the machine
+    EStop,     ///< emergency stop: drive at 0 V until reset
 };
 
 enum class PauseReason : std::uint8_t { None, M00, Hold, SingleBlock };
@@ -34,7 +34,7 @@ struct ControllerStatus {
     ControllerState state = ControllerState::Manual;
     ControllerState modeBeforeAlarm = ControllerState::Manual;
     PauseReason pause = PauseReason::None;
-    bool automatic = false;    ///< Automatic selected (as opposed to Manual)
+    bool automatic = false;  ///< Automatic selected (as opposed to Manual)
     bool homed = false;
     bool singleBlock = false;
     bool programLoaded = false;
@@ -44,10 +44,10 @@ struct ControllerStatus {
     std::int32_t blockN = -1;
     std::uint32_t blockLine = 0;
     double dwellRemainingS = 0.0;
-    std::uint8_t manualCode = 128;  ///< the manual drive code (original manual mode)
+    std::uint8_t manualCode = 128;   ///< the manual drive code (original manual mode)
     std::uint32_t activeAlarms = 0;  ///< alarmBit() of each alarm not yet acknowledged
     AlarmCode lastAlarm = AlarmCode::None;
-    ControllerEvent lastStatus{};    ///< the event that set the online status text
+    ControllerEvent lastStatus{};  ///< the event that set the online status text
     ModalState modal;
     LoopLaw law = LoopLaw::Engineered;
     LoopGains gains;
@@ -56,19 +56,25 @@ struct ControllerStatus {
 };
 
 class MachineController {
-public:
+  public:
     MachineController(const MachineProfile& profile, RailIo& io);
 
     /// One servo period of dtS seconds.
     void step(double dtS);
-    const ControllerStatus& status() const { return status_; }
+    /// The servo part is refreshed on each call, so a command's effect shows at once.
+    const ControllerStatus& status() const {
+        status_.servo = servo_.sample();
+        status_.feedOverride = servo_.speedOverride();
+        return status_;
+    }
     const MachineProfile& profile() const { return servo_.profile(); }
 
     /// Events since the last drain, in order (history lines, alarms, mode changes).
     template <typename F>
     void drainEvents(F&& f) {
         ControllerEvent e;
-        while (events_.pop(e)) f(e);
+        while (events_.pop(e))
+            f(e);
     }
 
     // ---- modes ----
@@ -91,9 +97,9 @@ public:
     /// Runs from block `fromIndex` (0: the whole program) with the modal state rebuilt.
     bool start(std::size_t fromIndex = 0);
     void pressContinue();
-    void hold();    ///< controlled stop, then paused; resume() goes on
+    void hold();  ///< controlled stop, then paused; resume() goes on
     void resume();
-    void stop();    ///< controlled stop, program abandoned
+    void stop();  ///< controlled stop, program abandoned
     void setSingleBlock(bool on);
     void setFeedOverride(double factor);
 
@@ -106,10 +112,18 @@ public:
     void setLaw(LoopLaw law);
     void setCommandSeq(std::uint64_t seq) { status_.lastCommandSeq = seq; }
 
-private:
-    enum class HomingPhase : std::uint8_t { SearchLeft, CrossLeft, SearchRight, CrossRight, Settle, Centre };
+  private:
+    enum class HomingPhase : std::uint8_t {
+        SearchLeft,
+        CrossLeft,
+        SearchRight,
+        CrossRight,
+        Settle,
+        Centre
+    };
 
-    void post(EventKind kind, std::int32_t n = -1, double x = 0.0, double feed = 0.0, AlarmCode alarm = AlarmCode::None);
+    void post(EventKind kind, std::int32_t n = -1, double x = 0.0, double feed = 0.0,
+              AlarmCode alarm = AlarmCode::None);
     void setState(ControllerState s) { status_.state = s; }
     void beginBlock();
     void finishBlock();
@@ -119,10 +133,10 @@ private:
     void checkManualLimits();
 
     RailServo servo_;
-    ControllerStatus status_;
+    mutable ControllerStatus status_;
     SpscRing<ControllerEvent, 1024> events_;
     std::shared_ptr<const Program> program_;
-    std::size_t pc_ = 0;           ///< index of the block being executed
+    std::size_t pc_ = 0;  ///< index of the block being executed
     bool blockStarted_ = false;
     HomingPhase homingPhase_ = HomingPhase::SearchLeft;
     double homingTimeS_ = 0.0;
@@ -130,10 +144,10 @@ private:
     bool jogging_ = false;
     std::size_t pendingStart_ = 0;  ///< start() asked before homing finished
     bool startAfterHoming_ = false;
-    bool approachFirst_ = false;    ///< start-from-block: move to the modal position first
-    bool leavingCentre_ = false;    ///< homing began on the centre vane: leave it first
+    bool approachFirst_ = false;  ///< start-from-block: move to the modal position first
+    bool leavingCentre_ = false;  ///< homing began on the centre vane: leave it first
     ControllerState holdFrom_ = ControllerState::Running;
-    double rejectWindow_ = 0.0;     ///< recent implausible counter reads (decays 10 per s)
+    double rejectWindow_ = 0.0;  ///< recent implausible counter reads (decays 10 per s)
     std::uint32_t lastRejected_ = 0;
 };
 

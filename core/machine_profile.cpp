@@ -1,8 +1,8 @@
 #include "core/machine_profile.h"
 
 #include <QFile>
-#include <QJsonDocument>
 #include <QJsonArray>
+#include <QJsonDocument>
 #include <QJsonObject>
 #include <QSaveFile>
 #include <cmath>
@@ -18,7 +18,9 @@ double PlantParams::peakForceN() const {
     return peakTorqueNm * gearRatio * gearEfficiency / (drumDiameterMm / 2000.0);
 }
 
-MachineProfile MachineProfile::rail() { return MachineProfile{}; }
+MachineProfile MachineProfile::rail() {
+    return MachineProfile{};
+}
 
 namespace {
 
@@ -109,7 +111,8 @@ ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin
     }
     const QJsonObject root = doc.object();
     MachineProfile p = MachineProfile::rail();
-    if (root.contains(QStringLiteral("name"))) p.name = root.value(QStringLiteral("name")).toString();
+    if (root.contains(QStringLiteral("name")))
+        p.name = root.value(QStringLiteral("name")).toString();
     if (root.contains(QStringLiteral("description")))
         p.description = root.value(QStringLiteral("description")).toString();
     const QJsonValue hasY = lookup(root, QStringLiteral("limits.hasY"));
@@ -122,11 +125,16 @@ ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin
     }
     const QJsonValue law = lookup(root, QStringLiteral("loop.law"));
     if (!law.isUndefined()) {
-        if (law.toString() == QLatin1String("classic")) p.loop.law = LoopLaw::Classic;
-        else if (law.toString() == QLatin1String("engineered")) p.loop.law = LoopLaw::Engineered;
+        if (law.toString() == QLatin1String("classic"))
+            p.loop.law = LoopLaw::Classic;
+        else if (law.toString() == QLatin1String("engineered"))
+            p.loop.law = LoopLaw::Engineered;
         else {
-            result.error = QStringLiteral("%1: loop.law: must be \"classic\" or \"engineered\" (got %2)")
-                               .arg(origin, QString::fromUtf8(QJsonDocument(QJsonArray{law}).toJson(QJsonDocument::Compact)));
+            result.error =
+                QStringLiteral("%1: loop.law: must be \"classic\" or \"engineered\" (got %2)")
+                    .arg(origin,
+                         QString::fromUtf8(
+                             QJsonDocument(QJsonArray{law}).toJson(QJsonDocument::Compact)));
             return result;
         }
     }
@@ -136,7 +144,8 @@ ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin
         const QJsonValue v = lookup(root, QString::fromLatin1(key));
         if (v.isUndefined()) return;
         if (!v.isDouble() || !std::isfinite(v.toDouble())) {
-            error = QStringLiteral("%1: %2: must be a number").arg(origin, QString::fromLatin1(key));
+            error =
+                QStringLiteral("%1: %2: must be a number").arg(origin, QString::fromLatin1(key));
             return;
         }
         const double d = v.toDouble();
@@ -178,8 +187,9 @@ QByteArray machineProfileToJson(const MachineProfile& profile) {
     root.insert(QStringLiteral("name"), p.name);
     root.insert(QStringLiteral("description"), p.description);
     insert(root, {QStringLiteral("limits"), QStringLiteral("hasY")}, 0, p.limits.hasY);
-    insert(root, {QStringLiteral("loop"), QStringLiteral("law")}, 0,
-           p.loop.law == LoopLaw::Classic ? QStringLiteral("classic") : QStringLiteral("engineered"));
+    insert(
+        root, {QStringLiteral("loop"), QStringLiteral("law")}, 0,
+        p.loop.law == LoopLaw::Classic ? QStringLiteral("classic") : QStringLiteral("engineered"));
     forEachNumber(p, [&](const char* key, double& value, double, double) {
         insert(root, QString::fromLatin1(key).split(QLatin1Char('.')), 0, value);
     });
@@ -188,8 +198,11 @@ QByteArray machineProfileToJson(const MachineProfile& profile) {
 
 bool saveMachineProfile(const MachineProfile& profile, const QString& path, QString* error) {
     QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly) || f.write(machineProfileToJson(profile)) < 0 || !f.commit()) {
-        if (error) *error = QStringLiteral("cannot save machine profile '%1': %2").arg(path, f.errorString());
+    if (!f.open(QIODevice::WriteOnly) || f.write(machineProfileToJson(profile)) < 0 ||
+        !f.commit()) {
+        if (error)
+            *error =
+                QStringLiteral("cannot save machine profile '%1': %2").arg(path, f.errorString());
         return false;
     }
     return true;

@@ -16,20 +16,22 @@ enum class LoopLaw : unsigned char {
 
 /// The simulated rail (hal/sim). Figures from machine.md unless marked "chosen".
 struct PlantParams {
-    double motorNoLoadRpm = 3000.0;   ///< VARIMOT SD-2530 at full reference
-    double gearRatio = 10.0;          ///< CESTARI K-40 worm reducer, 1:10
-    double drumDiameterMm = 120.0;    ///< steel drum
-    double peakTorqueNm = 5.0;        ///< chosen: amplifier current limit, 1.67x the rated 3 N.m
-    double gearEfficiency = 0.8;      ///< chosen: a 1:10 single-start worm is typically 0.75-0.85
-    double movingMassKg = 175.0;      ///< chosen: ASEA robot about 125 kg plus a 50 kg platform
-    double reflectedMassKg = 18.0;    ///< chosen: motor (6e-4 kg.m2) and drum inertia seen at the cable
-    double massFactor = 1.0;          ///< multiplies movingMassKg (payload changes; the loop is not told)
-    double speedLoopTauS = 0.015;     ///< chosen: TRANSAXE 710 PI speed loop, first-order time constant
-    double coulombFrictionN = 40.0;   ///< chosen: rollers and cable
-    double viscousFrictionNsPerM = 30.0;  ///< chosen
-    double countsPerMm = 22.8;        ///< machine.md: 100 mm = 2280 counts
-    double endSwitchMm = 1280.0;      ///< chosen: end switches 15 mm inside the hard stops
-    double hardStopMm = 1295.0;       ///< machine.md: about 2590 mm of travel, centre origin
+    double motorNoLoadRpm = 3000.0;  ///< VARIMOT SD-2530 at full reference
+    double gearRatio = 10.0;         ///< CESTARI K-40 worm reducer, 1:10
+    double drumDiameterMm = 120.0;   ///< steel drum
+    double peakTorqueNm = 5.0;       ///< chosen: amplifier current limit, 1.67x the rated 3 N.m
+    double gearEfficiency = 0.8;     ///< chosen: a 1:10 single-start worm is typically 0.75-0.85
+    double movingMassKg = 175.0;     ///< chosen: ASEA robot about 125 kg plus a 50 kg platform
+    double reflectedMassKg =
+        18.0;                 ///< chosen: motor (6e-4 kg.m2) and drum inertia seen at the cable
+    double massFactor = 1.0;  ///< multiplies movingMassKg (payload changes; the loop is not told)
+    double speedLoopTauS =
+        0.015;  ///< chosen: TRANSAXE 710 PI speed loop, first-order time constant
+    double coulombFrictionN = 40.0;        ///< chosen: rollers and cable
+    double viscousFrictionNsPerM = 30.0;   ///< chosen
+    double countsPerMm = 22.8;             ///< machine.md: 100 mm = 2280 counts
+    double endSwitchMm = 1280.0;           ///< chosen: end switches 15 mm inside the hard stops
+    double hardStopMm = 1295.0;            ///< machine.md: about 2590 mm of travel, centre origin
     double centreSwitchHalfWidthMm = 2.0;  ///< chosen: the centre vane reads active within +-2 mm
     double endSwitchLengthMm = 15.0;  ///< the end switch stays active from endSwitchMm to the stop
 
@@ -53,28 +55,29 @@ struct LoopParams {
     /// Engineered: Kp code/mm, Ki code/(mm.s), Kd code/(mm/s). Chosen by simulation, see
     /// tests/integration/rail_moves_test.cpp.
     LoopGains engineered{1.2, 0.5, 0.02};
-    double derivativeFilterS = 0.004;   ///< first-order filter on the measured velocity
-    double slewCodesPerS = 10000.0;     ///< output slew limit, DAC codes per second
+    double derivativeFilterS = 0.004;     ///< first-order filter on the measured velocity
+    double slewCodesPerS = 10000.0;       ///< output slew limit, DAC codes per second
     double followingErrorLimitMm = 25.0;  ///< beyond this a move stops with an alarm
-    double inPositionWindowMm = 0.044;  ///< one count
-    double inPositionTimeS = 0.05;      ///< must stay inside the window this long
-    double classicInPositionMm = 0.5;   ///< the VB's epsilon
-    double replanErrorMm = 1.0;         ///< lag beyond which the profile is re-planned gentler
-    double switchDebounceS = 0.005;     ///< a switch bit must read the same this long to count
-    double watchdogS = 0.05;            ///< a servo period longer than this stops the machine
+    double inPositionWindowMm = 0.044;    ///< one count
+    double inPositionTimeS = 0.05;        ///< must stay inside the window this long
+    double classicInPositionMm = 0.5;     ///< the VB's epsilon
+    double replanErrorMm = 1.0;           ///< lag beyond which the profile is re-planned gentler
+    double switchDebounceS = 0.005;       ///< a switch bit must read the same this long to count
+    double watchdogS = 0.05;              ///< a servo period longer than this stops the machine
 };
 
 struct MotionLimits {
-    double rapidSpeedMmS = 1700.0;  ///< chosen: 90 % of the plant's 1885 mm/s, headroom for the loop
+    double rapidSpeedMmS =
+        1700.0;  ///< chosen: 90 % of the plant's 1885 mm/s, headroom for the loop
     double accelerationMmS2 = 2500.0;  ///< chosen: 80 % of the nominal 3.1 m/s2 the current allows
     double minAccelerationMmS2 = 300.0;  ///< re-planning never goes gentler than this
-    double jogMaxFraction = 0.5;    ///< manual mode caps the speed at this fraction of rapid
+    double jogMaxFraction = 0.5;         ///< manual mode caps the speed at this fraction of rapid
 };
 
 struct MachineProfile {
     QString name = QStringLiteral("rail");
     QString description = QStringLiteral("Robot rail of the USP manufacturing cell (1996)");
-    MachineLimits limits;   ///< axes and soft limits (compiler)
+    MachineLimits limits;  ///< axes and soft limits (compiler)
     PlantParams plant;
     LoopParams loop;
     MotionLimits motion;

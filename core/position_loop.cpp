@@ -49,7 +49,8 @@ LoopOutput PositionLoop::update(const LoopInput& in) {
 
 LoopOutput PositionLoop::classic(const LoopInput& in) {
     // machine.md: V = floor(Vzero + Kp e + (Kd/TC)(e - e_prev) + Ki sum_e + 0.5), TC in ms as
-    // the VB passed it (periodo = 10), clamped to [Vzero - M (Vzero - Vmin), Vzero + M (Vmax - Vzero)].
+    // the VB passed it (periodo = 10), clamped to [Vzero - M (Vzero - Vmin), Vzero + M (Vmax -
+    // Vzero)].
     constexpr double kVzero = 128.0, kVmax = 255.0, kVmin = 0.0;
     const LoopGains& g = params_.classic;
     const double e = in.setpointMm - in.measuredMm;
@@ -71,13 +72,15 @@ LoopOutput PositionLoop::classic(const LoopInput& in) {
     return out;
 }
 
-double PositionLoop::engineeredTerms(const LoopGains& g, const LoopInput& in, double* p, double* d, double* ff) const {
+double PositionLoop::engineeredTerms(const LoopGains& g, const LoopInput& in, double* p, double* d,
+                                     double* ff) const {
     const double e = in.setpointMm - in.measuredMm;
     *p = g.kp * e;
     // D on the measurement (no kick when the setpoint moves); the feed-forward adds Kd v_sp so
     // D damps only the deviation from the profile's velocity.
     *d = -g.kd * in.measuredVelocityMmS;
-    *ff = (in.setpointVelocityMmS + lagS_ * in.setpointAccelerationMmS2) * codesPerSpeed_ + g.kd * in.setpointVelocityMmS;
+    *ff = (in.setpointVelocityMmS + lagS_ * in.setpointAccelerationMmS2) * codesPerSpeed_ +
+          g.kd * in.setpointVelocityMmS;
     return *p + *d + *ff;
 }
 

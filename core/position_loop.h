@@ -32,7 +32,7 @@ struct LoopOutput {
 };
 
 class PositionLoop {
-public:
+  public:
     /// plant: for the engineered feed-forward (nominal speed per code and speed-loop lag).
     PositionLoop(const LoopParams& params, const PlantParams& plant);
 
@@ -43,24 +43,27 @@ public:
     void setGains(LoopLaw law, const LoopGains& gains);
     void setLaw(LoopLaw law);
     LoopLaw law() const { return params_.law; }
-    const LoopGains& gains() const { return params_.law == LoopLaw::Classic ? params_.classic : params_.engineered; }
+    const LoopGains& gains() const {
+        return params_.law == LoopLaw::Classic ? params_.classic : params_.engineered;
+    }
     const LoopParams& params() const { return params_; }
 
-private:
+  private:
     LoopOutput classic(const LoopInput& in);
     LoopOutput engineered(const LoopInput& in);
-    double engineeredTerms(const LoopGains& g, const LoopInput& in, double* p, double* d, double* ff) const;
+    double engineeredTerms(const LoopGains& g, const LoopInput& in, double* p, double* d,
+                           double* ff) const;
 
     LoopParams params_;
     double codesPerSpeed_;  ///< DAC codes per mm/s: 127 / 1885
-    double lagS_;          ///< amplifier speed-loop time constant
+    double lagS_;           ///< amplifier speed-loop time constant
     // classic state
     double previousError_ = 0.0;
     double errorSum_ = 0.0;  ///< mm, summed every tick (not scaled by the period, as the VB did)
     // engineered state
-    double integral_ = 0.0;       ///< codes
+    double integral_ = 0.0;  ///< codes
     double previousCommand_ = 0.0;
-    double residue_ = 0.0;        ///< quantization error carried to the next tick, codes
+    double residue_ = 0.0;  ///< quantization error carried to the next tick, codes
     LoopInput last_{};
     bool haveLast_ = false;
 };

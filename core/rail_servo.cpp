@@ -10,7 +10,8 @@ RailServo::RailServo(const MachineProfile& profile, RailIo& io)
       io_(io),
       loop_(profile.loop, profile.plant),
       counter_(profile.plant.countsPerMm, profile.plant.maxSpeedMmS()),
-      switches_(std::max(1, static_cast<int>(std::lround(profile.loop.switchDebounceS / profile.loop.samplePeriodS)))),
+      switches_(std::max(1, static_cast<int>(std::lround(profile.loop.switchDebounceS /
+                                                         profile.loop.samplePeriodS)))),
       accel_(profile.motion.accelerationMmS2) {
     switches_.reset(io_.readSwitches());
     counter_.resync(io_, 0);
@@ -18,7 +19,8 @@ RailServo::RailServo(const MachineProfile& profile, RailIo& io)
 }
 
 void RailServo::resync(double positionMm) {
-    counter_.resync(io_, static_cast<std::int64_t>(std::llround(positionMm * profile_.plant.countsPerMm)));
+    counter_.resync(
+        io_, static_cast<std::int64_t>(std::llround(positionMm * profile_.plant.countsPerMm)));
     sample_.positionMm = counter_.positionMm();
     sample_.setpointMm = sample_.positionMm;
     velocity_ = acceleration_ = 0.0;
@@ -37,7 +39,8 @@ void RailServo::setLaw(LoopLaw law) {
 }
 
 void RailServo::planFrom(double positionMm, double velocityMmS) {
-    const double speed = profile_.motion.rapidSpeedMmS * std::clamp(speedFraction_ * override_, 0.001, 1.0);
+    const double speed =
+        profile_.motion.rapidSpeedMmS * std::clamp(speedFraction_ * override_, 0.001, 1.0);
     profileMotion_ = Trapezoid::fromState(positionMm, velocityMmS, sample_.targetMm, speed, accel_);
     profileTime_ = 0.0;
 }
@@ -56,8 +59,11 @@ void RailServo::moveTo(double targetMm, double speedFraction) {
     } else {
         // From the setpoint's own state when already moving (no jump), else from rest here.
         const MotionSample now = profileMotion_.at(profileTime_);
-        if (wasMoving) planFrom(now.positionMm, now.velocityMmS);
-        else planFrom(sample_.mode == ServoMode::Hold ? sample_.setpointMm : sample_.positionMm, 0.0);
+        if (wasMoving)
+            planFrom(now.positionMm, now.velocityMmS);
+        else
+            planFrom(sample_.mode == ServoMode::Hold ? sample_.setpointMm : sample_.positionMm,
+                     0.0);
     }
     sample_.mode = ServoMode::Move;
 }
@@ -78,7 +84,8 @@ void RailServo::stop() {
     const double v = sample_.mode == ServoMode::Move ? now.velocityMmS : 0.0;
     const double p = sample_.mode == ServoMode::Move ? now.positionMm : sample_.setpointMm;
     sample_.targetMm = p + v * std::abs(v) / (2.0 * accel_);
-    profileMotion_ = Trapezoid::fromState(p, v, sample_.targetMm, std::max(std::abs(v), 1.0), accel_);
+    profileMotion_ =
+        Trapezoid::fromState(p, v, sample_.targetMm, std::max(std::abs(v), 1.0), accel_);
     profileTime_ = 0.0;
     sample_.inPosition = false;
     settledFor_ = 0.0;
@@ -110,7 +117,8 @@ void RailServo::hold() {
 bool RailServo::setDirect(std::uint8_t code) {
     if (sample_.mode == ServoMode::Fault) return false;
     const std::uint8_t sw = sample_.switches;
-    if ((code < kDacZero && (sw & switch_bits::kLeftEnd)) || (code > kDacZero && (sw & switch_bits::kRightEnd)))
+    if ((code < kDacZero && (sw & switch_bits::kLeftEnd)) ||
+        (code > kDacZero && (sw & switch_bits::kRightEnd)))
         return false;
     directCode_ = code;
     sample_.mode = ServoMode::Direct;
@@ -126,7 +134,8 @@ void RailServo::clearFault() {
 
 void RailServo::setSpeedOverride(double factor) {
     override_ = std::clamp(factor, 0.0, 1.5);
-    if (sample_.mode == ServoMode::Move && !sample_.inPosition && profile_.loop.law == LoopLaw::Engineered) {
+    if (sample_.mode == ServoMode::Move && !sample_.inPosition &&
+        profile_.loop.law == LoopLaw::Engineered) {
         const MotionSample now = profileMotion_.at(profileTime_);
         if (override_ == 0.0) {
             stop();  // a zero override is a feed hold
@@ -154,7 +163,8 @@ void RailServo::tick(double dtS) {
     const std::uint8_t sw = switches_.update(rawSwitches);
     s.switches = sw;
     const double previous = s.positionMm;
-    const bool nearCentre = ((rawSwitches | sw) & switch_bits::kCentre) || std::abs(s.positionMm) < 30.0;
+    const bool nearCentre =
+        ((rawSwitches | sw) & switch_bits::kCentre) || std::abs(s.positionMm) < 30.0;
     counter_.read(io_, dtS, nearCentre);
     s.positionMm = counter_.positionMm();
     s.rejectedReads = counter_.rejected();
@@ -189,7 +199,8 @@ void RailServo::tick(double dtS) {
         const MotionSample m = profileMotion_.at(profileTime_);
         planFrom(m.positionMm + jumpMm, m.velocityMmS);
     }
-    if (!(sw & switch_bits::kAmplifierReady) && s.mode != ServoMode::Idle) return fault(ServoFault::AmplifierFault);
+    if (!(sw & switch_bits::kAmplifierReady) && s.mode != ServoMode::Idle)
+        return fault(ServoFault::AmplifierFault);
 
     // ---- setpoint ----------------------------------------------------------------------------
     double spVelocity = 0.0, spAcceleration = 0.0;
@@ -225,7 +236,8 @@ void RailServo::tick(double dtS) {
                 spAcceleration = m.accelerationMmS2;
             }
             break;
-        case ServoMode::Fault: break;
+        case ServoMode::Fault:
+            break;
     }
     s.setpointVelocityMmS = spVelocity;
     s.errorMm = s.setpointMm - s.positionMm;
@@ -235,16 +247,19 @@ void RailServo::tick(double dtS) {
     const double heading = s.mode == ServoMode::Move ? s.targetMm - s.positionMm : s.errorMm;
     if (leftEnd && (heading < 0 || velocity_ < -1.0)) return fault(ServoFault::LeftEndSwitch);
     if (rightEnd && (heading > 0 || velocity_ > 1.0)) return fault(ServoFault::RightEndSwitch);
-    if (profile_.loop.law == LoopLaw::Engineered && std::abs(s.errorMm) > profile_.loop.followingErrorLimitMm)
+    if (profile_.loop.law == LoopLaw::Engineered &&
+        std::abs(s.errorMm) > profile_.loop.followingErrorLimitMm)
         return fault(ServoFault::FollowingError);
 
     // The plant cannot follow (a heavier load than planned): re-plan from the measured state
     // with a gentler acceleration instead of letting the integrator drive past the target.
     // Only when the platform does move the planned way, slower: a frozen count (stuck
     // encoder) must grow into a following error, not be planned away.
-    const bool movingAlong = velocity_ * spVelocity > 0.0 && std::abs(velocity_) >= 0.25 * std::abs(spVelocity);
+    const bool movingAlong =
+        velocity_ * spVelocity > 0.0 && std::abs(velocity_) >= 0.25 * std::abs(spVelocity);
     if (s.mode == ServoMode::Move && profile_.loop.law == LoopLaw::Engineered &&
-        profileTime_ < profileMotion_.duration() && std::abs(s.errorMm) > profile_.loop.replanErrorMm &&
+        profileTime_ < profileMotion_.duration() &&
+        std::abs(s.errorMm) > profile_.loop.replanErrorMm &&
         accel_ > profile_.motion.minAccelerationMmS2 && movingAlong) {
         accel_ = std::max(profile_.motion.minAccelerationMmS2, accel_ * 0.7);
         planFrom(s.positionMm, velocity_);
@@ -276,7 +291,9 @@ void RailServo::tick(double dtS) {
                 release();  // as the VB did: motor(128) once in position
             }
         } else if (profileTime_ >= profileMotion_.duration()) {
-            settledFor_ = std::abs(s.errorMm) <= profile_.loop.inPositionWindowMm + 1e-9 ? settledFor_ + dtS : 0.0;
+            settledFor_ = std::abs(s.errorMm) <= profile_.loop.inPositionWindowMm + 1e-9
+                              ? settledFor_ + dtS
+                              : 0.0;
             if (settledFor_ >= profile_.loop.inPositionTimeS) {
                 s.inPosition = true;
                 s.mode = ServoMode::Hold;

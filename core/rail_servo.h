@@ -43,17 +43,17 @@ struct ServoSample {
     double targetMm = 0.0;
     double moveStartMm = 0.0;
     LoopOutput loop;
-    std::uint8_t switches = 248;    ///< debounced switch byte
+    std::uint8_t switches = 248;  ///< debounced switch byte
     ServoMode mode = ServoMode::Idle;
     ServoFault fault = ServoFault::None;
-    bool inPosition = false;        ///< the move is over and the position settled in the window
-    std::uint32_t replans = 0;      ///< profiles re-planned gentler because the plant lagged
+    bool inPosition = false;    ///< the move is over and the position settled in the window
+    std::uint32_t replans = 0;  ///< profiles re-planned gentler because the plant lagged
     std::uint32_t rejectedReads = 0;
-    std::uint32_t rebases = 0;      ///< counter re-zeroed under us (the centre mark)
+    std::uint32_t rebases = 0;  ///< counter re-zeroed under us (the centre mark)
 };
 
 class RailServo {
-public:
+  public:
     RailServo(const MachineProfile& profile, RailIo& io);
 
     /// One servo period of dtS seconds (measured, may jitter).
@@ -84,7 +84,7 @@ public:
     void resyncToCounter();
     const MachineProfile& profile() const { return profile_; }
 
-private:
+  private:
     void fault(ServoFault f);
     void planFrom(double positionMm, double velocityMmS);
 
@@ -96,10 +96,10 @@ private:
     ServoSample sample_;
     Trapezoid profileMotion_;
     double profileTime_ = 0.0;
-    double speedFraction_ = 1.0;   ///< of the rapid speed, as programmed
+    double speedFraction_ = 1.0;  ///< of the rapid speed, as programmed
     double override_ = 1.0;
-    double accel_ = 0.0;           ///< current planning acceleration, mm/s2 (lowered by re-plans)
-    double settledFor_ = 0.0;      ///< s inside the in-position window
+    double accel_ = 0.0;       ///< current planning acceleration, mm/s2 (lowered by re-plans)
+    double settledFor_ = 0.0;  ///< s inside the in-position window
     double velocity_ = 0.0, acceleration_ = 0.0;
     double cachedDt_ = 0.0, inverseDt_ = 0.0, alpha_ = 0.0;
     std::uint8_t directCode_ = kDacZero;

@@ -13,16 +13,18 @@ namespace trilho {
 template <typename T>
 class SeqLock {
     static_assert(std::is_trivially_copyable_v<T>);
-    static constexpr std::size_t kWords = (sizeof(T) + sizeof(std::uint64_t) - 1) / sizeof(std::uint64_t);
+    static constexpr std::size_t kWords =
+        (sizeof(T) + sizeof(std::uint64_t) - 1) / sizeof(std::uint64_t);
 
-public:
+  public:
     void store(const T& value) {
         std::uint64_t buffer[kWords] = {};
         std::memcpy(buffer, &value, sizeof(T));
         const std::uint64_t s = seq_.load(std::memory_order_relaxed);
         seq_.store(s + 1, std::memory_order_relaxed);
         std::atomic_thread_fence(std::memory_order_release);
-        for (std::size_t i = 0; i < kWords; ++i) words_[i].store(buffer[i], std::memory_order_relaxed);
+        for (std::size_t i = 0; i < kWords; ++i)
+            words_[i].store(buffer[i], std::memory_order_relaxed);
         seq_.store(s + 2, std::memory_order_release);
     }
 
@@ -31,7 +33,8 @@ public:
         while (true) {
             const std::uint64_t before = seq_.load(std::memory_order_acquire);
             if (before & 1) continue;
-            for (std::size_t i = 0; i < kWords; ++i) buffer[i] = words_[i].load(std::memory_order_relaxed);
+            for (std::size_t i = 0; i < kWords; ++i)
+                buffer[i] = words_[i].load(std::memory_order_relaxed);
             std::atomic_thread_fence(std::memory_order_acquire);
             if (seq_.load(std::memory_order_relaxed) == before) break;
         }
@@ -42,7 +45,7 @@ public:
 
     std::uint64_t version() const { return seq_.load(std::memory_order_acquire) / 2; }
 
-private:
+  private:
     std::atomic<std::uint64_t> seq_{0};
     std::atomic<std::uint64_t> words_[kWords] = {};
 };

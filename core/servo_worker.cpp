@@ -24,7 +24,8 @@ timespec toTimespec(std::int64_t ns) {
 }
 }  // namespace
 
-ServoWorker::ServoWorker(MachineController& controller, RailIo& io, PlantStep plantStep, double periodS)
+ServoWorker::ServoWorker(MachineController& controller, RailIo& io, PlantStep plantStep,
+                         double periodS)
     : controller_(controller),
       io_(io),
       plantStep_(std::move(plantStep)),
@@ -32,7 +33,9 @@ ServoWorker::ServoWorker(MachineController& controller, RailIo& io, PlantStep pl
     status_.store(controller_.status());
 }
 
-ServoWorker::~ServoWorker() { stopThread(); }
+ServoWorker::~ServoWorker() {
+    stopThread();
+}
 
 void ServoWorker::start(bool tryRealtime) {
     if (running_.exchange(true)) return;
@@ -41,7 +44,8 @@ void ServoWorker::start(bool tryRealtime) {
         if (tryRealtime) {
             sched_param param{};
             param.sched_priority = 80;
-            timing_.realtimePriority = pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0;
+            timing_.realtimePriority =
+                pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0;
         }
         run();
     });
@@ -72,24 +76,60 @@ std::uint64_t ServoWorker::loadProgram(std::shared_ptr<const Program> program) {
 void ServoWorker::apply(const Command& c) {
     MachineController& m = controller_;
     switch (c.kind) {
-        case CommandKind::SelectManual: m.selectManual(); break;
-        case CommandKind::SelectAutomatic: m.selectAutomatic(); break;
-        case CommandKind::ManualLeft: m.manualLeft(); break;
-        case CommandKind::ManualRight: m.manualRight(); break;
-        case CommandKind::ManualStop: m.manualStop(); break;
-        case CommandKind::JogStart: m.jogStart(static_cast<int>(c.i), c.a); break;
-        case CommandKind::JogStop: m.jogStop(); break;
-        case CommandKind::JogIncrement: m.jogIncrement(c.a, c.b); break;
-        case CommandKind::Start: m.start(static_cast<std::size_t>(std::max<std::int64_t>(0, c.i))); break;
-        case CommandKind::Continue: m.pressContinue(); break;
-        case CommandKind::Hold: m.hold(); break;
-        case CommandKind::Resume: m.resume(); break;
-        case CommandKind::SingleBlock: m.setSingleBlock(c.i != 0); break;
-        case CommandKind::FeedOverride: m.setFeedOverride(c.a); break;
-        case CommandKind::Acknowledge: m.acknowledgeAlarms(); break;
-        case CommandKind::ResetEStop: m.resetEmergencyStop(); break;
-        case CommandKind::SetGains: m.setGains(static_cast<LoopLaw>(c.i), {c.a, c.b, c.c}); break;
-        case CommandKind::SetLaw: m.setLaw(static_cast<LoopLaw>(c.i)); break;
+        case CommandKind::SelectManual:
+            m.selectManual();
+            break;
+        case CommandKind::SelectAutomatic:
+            m.selectAutomatic();
+            break;
+        case CommandKind::ManualLeft:
+            m.manualLeft();
+            break;
+        case CommandKind::ManualRight:
+            m.manualRight();
+            break;
+        case CommandKind::ManualStop:
+            m.manualStop();
+            break;
+        case CommandKind::JogStart:
+            m.jogStart(static_cast<int>(c.i), c.a);
+            break;
+        case CommandKind::JogStop:
+            m.jogStop();
+            break;
+        case CommandKind::JogIncrement:
+            m.jogIncrement(c.a, c.b);
+            break;
+        case CommandKind::Start:
+            m.start(static_cast<std::size_t>(std::max<std::int64_t>(0, c.i)));
+            break;
+        case CommandKind::Continue:
+            m.pressContinue();
+            break;
+        case CommandKind::Hold:
+            m.hold();
+            break;
+        case CommandKind::Resume:
+            m.resume();
+            break;
+        case CommandKind::SingleBlock:
+            m.setSingleBlock(c.i != 0);
+            break;
+        case CommandKind::FeedOverride:
+            m.setFeedOverride(c.a);
+            break;
+        case CommandKind::Acknowledge:
+            m.acknowledgeAlarms();
+            break;
+        case CommandKind::ResetEStop:
+            m.resetEmergencyStop();
+            break;
+        case CommandKind::SetGains:
+            m.setGains(static_cast<LoopLaw>(c.i), {c.a, c.b, c.c});
+            break;
+        case CommandKind::SetLaw:
+            m.setLaw(static_cast<LoopLaw>(c.i));
+            break;
         case CommandKind::LoadProgram: {
             // The program may be large: the handover is a pointer swap under a lock the
             // servo thread only tries, so a producer holding it never blocks a tick.
@@ -127,7 +167,8 @@ void ServoWorker::run() {
         }
         if (watchdogFlag_.exchange(false)) controller_.raiseAlarm(AlarmCode::LoopOverrun);
         Command cmd;
-        for (int k = 0; k < 16 && commands_.pop(cmd); ++k) apply(cmd);
+        for (int k = 0; k < 16 && commands_.pop(cmd); ++k)
+            apply(cmd);
         if (tickHook_) tickHook_();
 
         controller_.step(dt);

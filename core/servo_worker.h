@@ -23,7 +23,7 @@ enum class CommandKind : std::uint8_t {
     ManualLeft,
     ManualRight,
     ManualStop,
-    JogStart,      ///< i = direction, a = speed fraction
+    JogStart,  ///< i = direction, a = speed fraction
     JogStop,
     JogIncrement,  ///< a = mm, b = speed fraction
     Start,         ///< i = first block index
@@ -34,9 +34,9 @@ enum class CommandKind : std::uint8_t {
     FeedOverride,  ///< a = factor
     Acknowledge,
     ResetEStop,
-    SetGains,      ///< i = law, a, b, c = kp, ki, kd
-    SetLaw,        ///< i = law
-    LoadProgram,   ///< takes the program handed over with loadProgram()
+    SetGains,     ///< i = law, a, b, c = kp, ki, kd
+    SetLaw,       ///< i = law
+    LoadProgram,  ///< takes the program handed over with loadProgram()
 };
 
 struct Command {
@@ -62,12 +62,13 @@ struct WorkerTiming {
 };
 
 class ServoWorker {
-public:
+  public:
     using PlantStep = std::function<void(double dtS)>;
 
     /// controller and io outlive the worker. plantStep (optional) advances a simulated plant
     /// by the measured dt after each controller step. periodS: default from the profile.
-    ServoWorker(MachineController& controller, RailIo& io, PlantStep plantStep = {}, double periodS = 0.0);
+    ServoWorker(MachineController& controller, RailIo& io, PlantStep plantStep = {},
+                double periodS = 0.0);
     ~ServoWorker();
 
     void start(bool tryRealtime = true);
@@ -75,7 +76,8 @@ public:
     bool running() const { return running_.load(); }
 
     /// Queues a command; returns its sequence number (the snapshot echoes the last applied).
-    std::uint64_t send(CommandKind kind, std::int64_t i = 0, double a = 0.0, double b = 0.0, double c = 0.0);
+    std::uint64_t send(CommandKind kind, std::int64_t i = 0, double a = 0.0, double b = 0.0,
+                       double c = 0.0);
     /// Hands a compiled program over and queues LoadProgram.
     std::uint64_t loadProgram(std::shared_ptr<const Program> program);
     /// Bypass the queue: acted on at the very next tick.
@@ -87,12 +89,14 @@ public:
     template <typename F>
     void drainEvents(F&& f) {
         ControllerEvent e;
-        while (events_.pop(e)) f(e);
+        while (events_.pop(e))
+            f(e);
     }
     template <typename F>
     void drainTrace(F&& f) {
         TraceRow r;
-        while (trace_.pop(r)) f(r);
+        while (trace_.pop(r))
+            f(r);
     }
     void setTracing(bool on) { tracing_.store(on); }
     /// Timing statistics; read after stopThread() (the servo thread owns them while running).
@@ -102,7 +106,7 @@ public:
     double periodS() const { return periodS_; }
     bool watchdogTripped() const { return watchdogTrips_.load() > 0; }
 
-private:
+  private:
     void run();
     void watchdog();
     void apply(const Command& c);

@@ -6,7 +6,7 @@
 namespace trilho {
 
 class SwitchFilter {
-public:
+  public:
     explicit SwitchFilter(int reads = 3) : reads_(reads) {}
 
     std::uint8_t update(std::uint8_t raw) {
@@ -28,11 +28,12 @@ public:
     void reset(std::uint8_t value) {
         stable_ = value;
         pending_ = false;
-        for (auto& r : run_) r = 0;
+        for (auto& r : run_)
+            r = 0;
     }
     std::uint8_t value() const { return stable_; }
 
-private:
+  private:
     int reads_;
     std::uint8_t stable_ = 248;
     int run_[8] = {};

@@ -22,7 +22,8 @@ void Trapezoid::append(double accel, double duration) {
     duration_ = s.t0 + duration;
 }
 
-Trapezoid Trapezoid::restToRest(double startMm, double targetMm, double speedMmS, double accelMmS2) {
+Trapezoid Trapezoid::restToRest(double startMm, double targetMm, double speedMmS,
+                                double accelMmS2) {
     return fromState(startMm, 0.0, targetMm, speedMmS, accelMmS2);
 }
 
@@ -79,7 +80,8 @@ MotionSample Trapezoid::at(double tS) const {
     if (tS <= 0.0) return {segments_[0].p0, segments_[0].v0, segments_[0].a};
     if (tS >= duration_) return {target_, 0.0, 0.0};
     int i = 0;
-    while (i + 1 < count_ && tS >= segments_[i + 1].t0) ++i;
+    while (i + 1 < count_ && tS >= segments_[i + 1].t0)
+        ++i;
     const Segment& s = segments_[i];
     const double tau = tS - s.t0;
     return {s.p0 + s.v0 * tau + 0.5 * s.a * tau * tau, s.v0 + s.a * tau, s.a};

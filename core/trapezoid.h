@@ -16,15 +16,15 @@ struct MotionSample {
 };
 
 class Trapezoid {
-public:
+  public:
     Trapezoid() = default;
 
     /// From rest at start to rest at target (option 2). speed mm/s > 0, accel mm/s2 > 0.
     static Trapezoid restToRest(double startMm, double targetMm, double speedMmS, double accelMmS2);
     /// From (position, velocity) to rest at target. If the target cannot be reached without
     /// passing it, brakes to a stop first and comes back.
-    static Trapezoid fromState(double positionMm, double velocityMmS, double targetMm, double speedMmS,
-                               double accelMmS2);
+    static Trapezoid fromState(double positionMm, double velocityMmS, double targetMm,
+                               double speedMmS, double accelMmS2);
 
     MotionSample at(double tS) const;
     double duration() const { return duration_; }
@@ -36,7 +36,7 @@ public:
     double peakSpeed() const;
     bool empty() const { return count_ == 0; }
 
-private:
+  private:
     struct Segment {
         double t0 = 0.0, p0 = 0.0, v0 = 0.0, a = 0.0, duration = 0.0;
     };

@@ -19,7 +19,7 @@ inline constexpr std::uint8_t kIdle = 248;
 inline constexpr std::uint8_t kDacZero = 128;  ///< Vzero: 0 V reference
 
 class RailIo {
-public:
+  public:
     virtual ~RailIo() = default;
     /// Writes the drive command: the card outputs V on channel A and 255-V on channel B; the
     /// amplifier takes the difference, -10..+10 V. 128 = 0 V; above 128 drives towards +x.

@@ -7,13 +7,13 @@
 namespace trilho {
 
 class TimeSource {
-public:
+  public:
     virtual ~TimeSource() = default;
     virtual std::int64_t nowNs() const = 0;  ///< monotonic, nanoseconds
 };
 
 class SteadyTimeSource final : public TimeSource {
-public:
+  public:
     std::int64_t nowNs() const override {
         return std::chrono::duration_cast<std::chrono::nanoseconds>(
                    std::chrono::steady_clock::now().time_since_epoch())
@@ -22,11 +22,11 @@ public:
 };
 
 class VirtualTimeSource final : public TimeSource {
-public:
+  public:
     std::int64_t nowNs() const override { return now_; }
     void advance(std::int64_t ns) { now_ += ns; }
 
-private:
+  private:
     std::int64_t now_ = 0;
 };
 

@@ -14,7 +14,9 @@
 namespace trilho::cli {
 namespace {
 
-QString us(std::int64_t ns) { return QString::number(static_cast<double>(ns) / 1000.0, 'f', 1); }
+QString us(std::int64_t ns) {
+    return QString::number(static_cast<double>(ns) / 1000.0, 'f', 1);
+}
 
 QString row(const QString& name, const LatencyHistogram& h) {
     return QStringLiteral("%1 %2 %3 %4 %5 %6\n")
@@ -36,7 +38,8 @@ LatencyHistogram bareLoop(double seconds, std::int64_t periodNs, bool realtime) 
     std::int64_t next = monotonicNs() + periodNs;
     const std::int64_t end = next + static_cast<std::int64_t>(seconds * 1e9);
     while (next < end) {
-        timespec ts{static_cast<time_t>(next / 1000000000LL), static_cast<long>(next % 1000000000LL)};
+        timespec ts{static_cast<time_t>(next / 1000000000LL),
+                    static_cast<long>(next % 1000000000LL)};
         while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR) {
         }
         h.add(monotonicNs() - next);
@@ -53,9 +56,12 @@ LatencyHistogram bareLoop(double seconds, std::int64_t periodNs, bool realtime) 
 
 int latencyCommand(const QStringList& args) {
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("Measure the servo loop's wake-up latency and body time."));
+    parser.setApplicationDescription(
+        QStringLiteral("Measure the servo loop's wake-up latency and body time."));
     parser.addHelpOption();
-    const QCommandLineOption secondsOpt(QStringLiteral("seconds"), QStringLiteral("Seconds for each of the two runs (default 10)."), QStringLiteral("N"), QStringLiteral("10"));
+    const QCommandLineOption secondsOpt(
+        QStringLiteral("seconds"), QStringLiteral("Seconds for each of the two runs (default 10)."),
+        QStringLiteral("N"), QStringLiteral("10"));
     parser.addOption(secondsOpt);
     if (!parser.parse(args)) {
         err(QStringLiteral("trilho-cli latency: %1\n").arg(parser.errorText()));
@@ -68,7 +74,8 @@ int latencyCommand(const QStringList& args) {
     bool ok = false;
     const double seconds = parser.value(secondsOpt).toDouble(&ok);
     if (!ok || !std::isfinite(seconds) || seconds <= 0 || seconds > 86400) {
-        err(QStringLiteral("trilho-cli latency: --seconds must be a number above 0 (got '%1')\n").arg(parser.value(secondsOpt)));
+        err(QStringLiteral("trilho-cli latency: --seconds must be a number above 0 (got '%1')\n")
+                .arg(parser.value(secondsOpt)));
         return kUsage;
     }
     const MachineProfile profile = MachineProfile::rail();
@@ -79,7 +86,8 @@ int latencyCommand(const QStringList& args) {
     MachineController controller(profile, rail);
     ServoWorker worker(controller, rail, [&rail](double dt) { rail.step(dt); });
     worker.start(true);
-    timespec wait{static_cast<time_t>(seconds), static_cast<long>((seconds - std::floor(seconds)) * 1e9)};
+    timespec wait{static_cast<time_t>(seconds),
+                  static_cast<long>((seconds - std::floor(seconds)) * 1e9)};
     while (nanosleep(&wait, &wait) != 0) {
     }
     worker.stopThread();
@@ -90,7 +98,8 @@ int latencyCommand(const QStringList& args) {
     QString text = QStringLiteral("servo period %1 us, %2 s each, real-time priority: %3\n")
                        .arg(periodNs / 1000)
                        .arg(seconds)
-                       .arg(t.realtimePriority ? QStringLiteral("yes (SCHED_FIFO 80)") : QStringLiteral("no (not permitted)"));
+                       .arg(t.realtimePriority ? QStringLiteral("yes (SCHED_FIFO 80)")
+                                               : QStringLiteral("no (not permitted)"));
     text += QStringLiteral("%1 %2 %3 %4 %5 %6\n")
                 .arg(QStringLiteral("(microseconds)"), -28)
                 .arg(QStringLiteral("min"), 8)
@@ -101,8 +110,10 @@ int latencyCommand(const QStringList& args) {
     text += row(QStringLiteral("bare clock_nanosleep wake-up"), bare);
     text += row(QStringLiteral("worker wake-up"), t.wakeLatency);
     text += row(QStringLiteral("worker loop body"), t.loopBody);
-    const double medianRatio = static_cast<double>(t.wakeLatency.quantileNs(0.5)) / std::max<double>(1.0, static_cast<double>(bare.quantileNs(0.5)));
-    const double p99Ratio = static_cast<double>(t.wakeLatency.quantileNs(0.99)) / std::max<double>(1.0, static_cast<double>(bare.quantileNs(0.99)));
+    const double medianRatio = static_cast<double>(t.wakeLatency.quantileNs(0.5)) /
+                               std::max<double>(1.0, static_cast<double>(bare.quantileNs(0.5)));
+    const double p99Ratio = static_cast<double>(t.wakeLatency.quantileNs(0.99)) /
+                            std::max<double>(1.0, static_cast<double>(bare.quantileNs(0.99)));
     text += QStringLiteral("worker / bare wake-up: median %1x, p99 %2x; overruns %3\n")
                 .arg(medianRatio, 0, 'f', 2)
                 .arg(p99Ratio, 0, 'f', 2)

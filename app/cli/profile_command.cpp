@@ -10,9 +10,12 @@ namespace trilho::cli {
 
 int profileCommand(const QStringList& args) {
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("Check a machine profile and print it in full."));
+    parser.setApplicationDescription(
+        QStringLiteral("Check a machine profile and print it in full."));
     parser.addHelpOption();
-    parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("Profile to check (default: the rail)."), QStringLiteral("[FILE]"));
+    parser.addPositionalArgument(QStringLiteral("FILE"),
+                                 QStringLiteral("Profile to check (default: the rail)."),
+                                 QStringLiteral("[FILE]"));
     if (!parser.parse(args)) {
         err(QStringLiteral("trilho-cli profile: %1\n").arg(parser.errorText()));
         return kUsage;

@@ -53,7 +53,7 @@ struct Report {
 };
 
 class TraceFile {
-public:
+  public:
     bool open(const QString& path, QString* error) {
         if (path.isEmpty()) return true;
         file_ = std::make_unique<QSaveFile>(path);
@@ -68,14 +68,15 @@ public:
     void row(const TraceRow& r) {
         if (!file_) return;
         char line[192];
-        const int len = std::snprintf(line, sizeof line, "%.4f,%d,%.4f,%.4f,%.4f,%.3f,%d\n", r.timeS, r.blockN,
-                                      r.setpointMm, r.positionMm, r.errorMm, r.velocityMmS, r.drive);
+        const int len =
+            std::snprintf(line, sizeof line, "%.4f,%d,%.4f,%.4f,%.4f,%.3f,%d\n", r.timeS, r.blockN,
+                          r.setpointMm, r.positionMm, r.errorMm, r.velocityMmS, r.drive);
         file_->write(line, len);
     }
     bool close() { return !file_ || file_->commit(); }
     bool active() const { return file_ != nullptr; }
 
-private:
+  private:
     std::unique_ptr<QSaveFile> file_;
 };
 
@@ -88,12 +89,16 @@ struct Supervisor {
     /// Returns true when the run is over, setting outcome.
     bool check(const ControllerStatus& s, double elapsedS, Outcome& outcome, bool& pressContinue) {
         pressContinue = false;
-        if (s.programFinished && s.state == ControllerState::AutoIdle) return outcome = Outcome::Finished, true;
-        if (s.state == ControllerState::Alarm || s.state == ControllerState::EStop) return outcome = Outcome::Alarm, true;
-        if (options.maxSeconds >= 0 && elapsedS >= options.maxSeconds) return outcome = Outcome::TimeLimit, true;
+        if (s.programFinished && s.state == ControllerState::AutoIdle)
+            return outcome = Outcome::Finished, true;
+        if (s.state == ControllerState::Alarm || s.state == ControllerState::EStop)
+            return outcome = Outcome::Alarm, true;
+        if (options.maxSeconds >= 0 && elapsedS >= options.maxSeconds)
+            return outcome = Outcome::TimeLimit, true;
         if (s.state == ControllerState::Paused && s.pause == PauseReason::M00) {
             if (pausedSince < 0) pausedSince = elapsedS;
-            if (options.continueAfterS >= 0 && elapsedS - pausedSince >= options.continueAfterS - 1e-9) {
+            if (options.continueAfterS >= 0 &&
+                elapsedS - pausedSince >= options.continueAfterS - 1e-9) {
                 pressContinue = true;
                 pausedSince = -1.0;
             }
@@ -104,8 +109,9 @@ struct Supervisor {
     }
 };
 
-Outcome runVirtual(const MachineProfile& profile, std::shared_ptr<const Program> program, const RunOptions& options,
-                   Report& report, TraceFile& trace, ControllerStatus& last) {
+Outcome runVirtual(const MachineProfile& profile, std::shared_ptr<const Program> program,
+                   const RunOptions& options, Report& report, TraceFile& trace,
+                   ControllerStatus& last) {
     SimSession session(profile);
     MachineController& c = session.controller();
     c.selectAutomatic();
@@ -119,8 +125,8 @@ Outcome runVirtual(const MachineProfile& profile, std::shared_ptr<const Program>
         c.drainEvents([&](const ControllerEvent& e) { report.add(e); });
         const ControllerStatus& s = c.status();
         if (trace.active())
-            trace.row({s.timeS, s.blockN, s.servo.setpointMm, s.servo.positionMm, s.servo.errorMm, s.servo.velocityMmS,
-                       s.servo.loop.code});
+            trace.row({s.timeS, s.blockN, s.servo.setpointMm, s.servo.positionMm, s.servo.errorMm,
+                       s.servo.velocityMmS, s.servo.loop.code});
         bool press = false;
         if (sup.check(s, static_cast<double>(k + 1) * dt, outcome, press)) break;
         if (press) c.pressContinue();
@@ -129,8 +135,9 @@ Outcome runVirtual(const MachineProfile& profile, std::shared_ptr<const Program>
     return outcome;
 }
 
-Outcome runRealTime(const MachineProfile& profile, std::shared_ptr<const Program> program, const RunOptions& options,
-                    Report& report, TraceFile& trace, ControllerStatus& last) {
+Outcome runRealTime(const MachineProfile& profile, std::shared_ptr<const Program> program,
+                    const RunOptions& options, Report& report, TraceFile& trace,
+                    ControllerStatus& last) {
     SimRail rail(profile.plant);
     rail.placeAt(0.0);
     MachineController controller(profile, rail);
@@ -165,18 +172,40 @@ Outcome runRealTime(const MachineProfile& profile, std::shared_ptr<const Program
 
 int runCommand(const QStringList& args) {
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("Compile, home and run a program on the simulated rail."));
+    parser.setApplicationDescription(
+        QStringLiteral("Compile, home and run a program on the simulated rail."));
     parser.addHelpOption();
-    const QCommandLineOption dialectOpt(QStringLiteral("dialect"), QStringLiteral("classic or standard (default)."), QStringLiteral("dialect"), QStringLiteral("standard"));
-    const QCommandLineOption langOpt(QStringLiteral("lang"), QStringLiteral("Message language: en, pt_BR or es."), QStringLiteral("lang"), QStringLiteral("en"));
-    const QCommandLineOption virtualOpt(QStringLiteral("virtual-time"), QStringLiteral("Run in virtual time, as fast as possible."));
-    const QCommandLineOption massOpt(QStringLiteral("mass-factor"), QStringLiteral("Multiply the simulated moving mass (the controller is not told)."), QStringLiteral("F"), QStringLiteral("1"));
-    const QCommandLineOption continueOpt(QStringLiteral("continue-after"), QStringLiteral("Press Continue this many seconds after each m00."), QStringLiteral("SECONDS"));
-    const QCommandLineOption maxOpt(QStringLiteral("max-seconds"), QStringLiteral("End the run after this long (default 3600 in virtual time)."), QStringLiteral("SECONDS"));
-    const QCommandLineOption traceOpt(QStringLiteral("trace"), QStringLiteral("Write every servo tick to this CSV file."), QStringLiteral("FILE.csv"));
-    const QCommandLineOption jsonOpt(QStringLiteral("json"), QStringLiteral("Print one JSON object."));
-    const QCommandLineOption machineOpt(QStringLiteral("machine"), QStringLiteral("Machine profile (default: the rail)."), QStringLiteral("PROFILE.json"));
-    parser.addOptions({dialectOpt, langOpt, virtualOpt, massOpt, continueOpt, maxOpt, traceOpt, jsonOpt, machineOpt});
+    const QCommandLineOption dialectOpt(QStringLiteral("dialect"),
+                                        QStringLiteral("classic or standard (default)."),
+                                        QStringLiteral("dialect"), QStringLiteral("standard"));
+    const QCommandLineOption langOpt(QStringLiteral("lang"),
+                                     QStringLiteral("Message language: en, pt_BR or es."),
+                                     QStringLiteral("lang"), QStringLiteral("en"));
+    const QCommandLineOption virtualOpt(
+        QStringLiteral("virtual-time"),
+        QStringLiteral("Run in virtual time, as fast as possible."));
+    const QCommandLineOption massOpt(
+        QStringLiteral("mass-factor"),
+        QStringLiteral("Multiply the simulated moving mass (the controller is not told)."),
+        QStringLiteral("F"), QStringLiteral("1"));
+    const QCommandLineOption continueOpt(
+        QStringLiteral("continue-after"),
+        QStringLiteral("Press Continue this many seconds after each m00."),
+        QStringLiteral("SECONDS"));
+    const QCommandLineOption maxOpt(
+        QStringLiteral("max-seconds"),
+        QStringLiteral("End the run after this long (default 3600 in virtual time)."),
+        QStringLiteral("SECONDS"));
+    const QCommandLineOption traceOpt(QStringLiteral("trace"),
+                                      QStringLiteral("Write every servo tick to this CSV file."),
+                                      QStringLiteral("FILE.csv"));
+    const QCommandLineOption jsonOpt(QStringLiteral("json"),
+                                     QStringLiteral("Print one JSON object."));
+    const QCommandLineOption machineOpt(QStringLiteral("machine"),
+                                        QStringLiteral("Machine profile (default: the rail)."),
+                                        QStringLiteral("PROFILE.json"));
+    parser.addOptions({dialectOpt, langOpt, virtualOpt, massOpt, continueOpt, maxOpt, traceOpt,
+                       jsonOpt, machineOpt});
     parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("The program to run."));
     auto usage = [](const QString& message) {
         err(QStringLiteral("trilho-cli run: %1\n").arg(message));
@@ -188,9 +217,12 @@ int runCommand(const QStringList& args) {
         return kOk;
     }
     const auto dialect = parseDialect(parser.value(dialectOpt).toStdString());
-    if (!dialect) return usage(QStringLiteral("unknown dialect '%1' (classic or standard)").arg(parser.value(dialectOpt)));
+    if (!dialect)
+        return usage(QStringLiteral("unknown dialect '%1' (classic or standard)")
+                         .arg(parser.value(dialectOpt)));
     if (!installLanguage(parser.value(langOpt)))
-        return usage(QStringLiteral("unknown language '%1' (en, pt_BR or es)").arg(parser.value(langOpt)));
+        return usage(
+            QStringLiteral("unknown language '%1' (en, pt_BR or es)").arg(parser.value(langOpt)));
     RunOptions options;
     options.virtualTime = parser.isSet(virtualOpt);
     options.json = parser.isSet(jsonOpt);
@@ -204,14 +236,18 @@ int runCommand(const QStringList& args) {
         return true;
     };
     if (!number(massOpt, 0.1, 20.0, options.massFactor))
-        return usage(QStringLiteral("--mass-factor must be a number from 0.1 to 20 (got '%1')").arg(parser.value(massOpt)));
+        return usage(QStringLiteral("--mass-factor must be a number from 0.1 to 20 (got '%1')")
+                         .arg(parser.value(massOpt)));
     if (!number(continueOpt, 0.0, 1e6, options.continueAfterS))
-        return usage(QStringLiteral("--continue-after must be a number of seconds >= 0 (got '%1')").arg(parser.value(continueOpt)));
+        return usage(QStringLiteral("--continue-after must be a number of seconds >= 0 (got '%1')")
+                         .arg(parser.value(continueOpt)));
     if (!number(maxOpt, 0.0, 1e7, options.maxSeconds))
-        return usage(QStringLiteral("--max-seconds must be a number of seconds >= 0 (got '%1')").arg(parser.value(maxOpt)));
+        return usage(QStringLiteral("--max-seconds must be a number of seconds >= 0 (got '%1')")
+                         .arg(parser.value(maxOpt)));
     if (options.virtualTime && options.maxSeconds < 0) options.maxSeconds = 3600.0;
     const QStringList files = parser.positionalArguments();
-    if (files.size() != 1) return usage(QStringLiteral("expected exactly one FILE, got %1").arg(files.size()));
+    if (files.size() != 1)
+        return usage(QStringLiteral("expected exactly one FILE, got %1").arg(files.size()));
 
     MachineProfile profile = MachineProfile::rail();
     if (parser.isSet(machineOpt)) {
@@ -238,17 +274,21 @@ int runCommand(const QStringList& args) {
             QJsonObject o;
             o[QStringLiteral("ok")] = false;
             QJsonArray history;
-            for (const auto& d : program->diagnostics) history.append(formatDiagnosticLine(file, d).trimmed());
+            for (const auto& d : program->diagnostics)
+                history.append(formatDiagnosticLine(file, d).trimmed());
             history.append(report.history.front());
             o[QStringLiteral("history")] = history;
-            o[QStringLiteral("alarms")] = QJsonArray{QJsonObject{{QStringLiteral("code"), static_cast<int>(AlarmCode::CompileErrors)},
-                                                                 {QStringLiteral("text"), alarmText(AlarmCode::CompileErrors)}}};
+            o[QStringLiteral("alarms")] = QJsonArray{
+                QJsonObject{{QStringLiteral("code"), static_cast<int>(AlarmCode::CompileErrors)},
+                            {QStringLiteral("text"), alarmText(AlarmCode::CompileErrors)}}};
             o[QStringLiteral("final_position_mm")] = 0.0;
             o[QStringLiteral("duration_s")] = 0.0;
-            out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
+            out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) +
+                QLatin1Char('\n'));
         } else {
             QString text;
-            for (const auto& d : program->diagnostics) text += formatDiagnosticLine(file, d);
+            for (const auto& d : program->diagnostics)
+                text += formatDiagnosticLine(file, d);
             text += compileSummary(program->errorCount()) + QLatin1Char('\n');
             out(text);
         }
@@ -257,7 +297,8 @@ int runCommand(const QStringList& args) {
     if (options.virtualTime && options.continueAfterS < 0) {
         for (const Block& b : program->blocks)
             if (b.op == Op::Stop)
-                return usage(QStringLiteral("%1:%2: m00 waits for Continue: in virtual time give --continue-after SECONDS")
+                return usage(QStringLiteral("%1:%2: m00 waits for Continue: in virtual time give "
+                                            "--continue-after SECONDS")
                                  .arg(file)
                                  .arg(b.line));
     }
@@ -266,9 +307,11 @@ int runCommand(const QStringList& args) {
     if (!trace.open(options.tracePath, &traceError)) return usage(traceError);
 
     ControllerStatus last;
-    const Outcome outcome = options.virtualTime ? runVirtual(profile, program, options, report, trace, last)
-                                                : runRealTime(profile, program, options, report, trace, last);
-    if (!trace.close()) return usage(QStringLiteral("cannot write trace '%1'").arg(options.tracePath));
+    const Outcome outcome = options.virtualTime
+                                ? runVirtual(profile, program, options, report, trace, last)
+                                : runRealTime(profile, program, options, report, trace, last);
+    if (!trace.close())
+        return usage(QStringLiteral("cannot write trace '%1'").arg(options.tracePath));
 
     const double finalMm = last.servo.positionMm;
     if (options.json) {
@@ -281,15 +324,20 @@ int runCommand(const QStringList& args) {
         out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
     } else {
         QString text = report.history.join(QLatin1Char('\n')) + QLatin1Char('\n');
-        text += QStringLiteral("final position: %1 mm (%2 s)\n").arg(finalMm, 0, 'f', 3).arg(last.timeS, 0, 'f', 3);
+        text += QStringLiteral("final position: %1 mm (%2 s)\n")
+                    .arg(finalMm, 0, 'f', 3)
+                    .arg(last.timeS, 0, 'f', 3);
         if (outcome == Outcome::TimeLimit)
             text += QStringLiteral("stopped by --max-seconds %1\n").arg(options.maxSeconds);
         out(text);
     }
     switch (outcome) {
-        case Outcome::Finished: return kOk;
-        case Outcome::Alarm: return kAlarm;
-        case Outcome::TimeLimit: return kTimeLimit;
+        case Outcome::Finished:
+            return kOk;
+        case Outcome::Alarm:
+            return kAlarm;
+        case Outcome::TimeLimit:
+            return kTimeLimit;
     }
     return kOk;
 }

@@ -9,7 +9,7 @@ namespace {
 // 1 ms: h/tau = 0.067 for the 15 ms speed loop, well inside Euler's accurate range; a 10 ms
 // (classic) period is split into ten.
 constexpr double kMaxSubStepS = 0.001;
-}
+}  // namespace
 
 SimRail::SimRail(const PlantParams& params, std::uint64_t seed) : params_(params), rng_(seed) {
     vmax_ = params_.maxSpeedMmS();
@@ -60,7 +60,8 @@ void SimRail::step(double dt) {
     if (!(dt > 0.0)) return;
     const int n = std::max(1, static_cast<int>(std::ceil(dt / kMaxSubStepS - 1e-9)));
     const double h = dt / n;
-    for (int i = 0; i < n; ++i) subStep(h);
+    for (int i = 0; i < n; ++i)
+        subStep(h);
     tornArmed_ = true;
 }
 
@@ -68,7 +69,8 @@ void SimRail::subStep(double h) {
     PlantState& s = state_;
     previousCounter_ = static_cast<std::uint16_t>(encoderCounts() - counterOffset_);
     s.timeS += h;
-    if (faults_.amplifierFaultAtS >= 0.0 && s.timeS >= faults_.amplifierFaultAtS) s.amplifierFaulted = true;
+    if (faults_.amplifierFaultAtS >= 0.0 && s.timeS >= faults_.amplifierFaultAtS)
+        s.amplifierFaulted = true;
     if (faults_.stuckEncoderAtS >= 0.0 && s.timeS >= faults_.stuckEncoderAtS && !stuck_) {
         stuckCounts_ = encoderCounts();
         stuck_ = true;
@@ -76,7 +78,8 @@ void SimRail::subStep(double h) {
 
     // DAC: channel A = V, channel B = 255 - V, each 0..255 -> -5..+5 V; the amplifier takes
     // A - B. Its offset is trimmed so that 128 is 0 V, as the document states: 127 codes a side.
-    s.referenceV = std::clamp(10.0 * (static_cast<int>(driveCode()) - kDacZero) / 127.0, -10.0, 10.0);
+    s.referenceV =
+        std::clamp(10.0 * (static_cast<int>(driveCode()) - kDacZero) / 127.0, -10.0, 10.0);
 
     // Amplifier speed loop: first order towards the commanded speed; the force it may use is
     // the current limit, so the acceleration limit falls as the moving mass rises.
@@ -84,7 +87,10 @@ void SimRail::subStep(double h) {
     const double vCmd = s.referenceV / 10.0 * vmax_;
     const double v = s.velocityMmS;
     const double vM = v / 1000.0;  // m/s
-    const double friction = (v > 0 ? 1.0 : v < 0 ? -1.0 : 0.0) * params_.coulombFrictionN +
+    const double friction = (v > 0   ? 1.0
+                             : v < 0 ? -1.0
+                                     : 0.0) *
+                                params_.coulombFrictionN +
                             params_.viscousFrictionNsPerM * vM;
     double force = 0.0;
     if (!s.amplifierFaulted) {
@@ -94,7 +100,8 @@ void SimRail::subStep(double h) {
     double a = (force - friction) / massKg * 1000.0;  // mm/s2
     double vNext = v + a * h;
     // Coulomb friction stops the platform; it never reverses it.
-    if (v != 0.0 && (vNext > 0) != (v > 0) && std::abs(force) < params_.coulombFrictionN) vNext = 0.0;
+    if (v != 0.0 && (vNext > 0) != (v > 0) && std::abs(force) < params_.coulombFrictionN)
+        vNext = 0.0;
     if (v == 0.0 && std::abs(force) <= params_.coulombFrictionN) vNext = 0.0, a = 0.0;
     double dx = 0.5 * (v + vNext) * h;
     double x = s.positionMm + dx;
@@ -108,7 +115,8 @@ void SimRail::subStep(double h) {
 
     // Drum and cable: above the slip force the platform loses a fraction of the drum travel.
     double drumDx = dx;
-    if (faults_.slipFraction > 0.0 && std::abs(force) > faults_.slipForceN) drumDx = dx / (1.0 - faults_.slipFraction);
+    if (faults_.slipFraction > 0.0 && std::abs(force) > faults_.slipForceN)
+        drumDx = dx / (1.0 - faults_.slipFraction);
     // Counts the input card misses above its rate.
     if (faults_.maxCountRateHz > 0.0) {
         const double rate = std::abs(drumDx) * params_.countsPerMm / h;
@@ -126,8 +134,9 @@ void SimRail::subStep(double h) {
     // point itself (the drum's reading there, not a sub-step later).
     if ((previousX < 0.0) != (x < 0.0) && !stuck_) {
         const double drumAtCrossing = s.drumMm - x * (drumDx != 0.0 ? drumDx / dx : 1.0);
-        counterOffset_ = static_cast<std::int64_t>(std::floor(drumAtCrossing * params_.countsPerMm + 0.5)) -
-                         static_cast<std::int64_t>(lostCounts_);
+        counterOffset_ =
+            static_cast<std::int64_t>(std::floor(drumAtCrossing * params_.countsPerMm + 0.5)) -
+            static_cast<std::int64_t>(lostCounts_);
     }
 }
 

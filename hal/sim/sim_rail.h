@@ -16,18 +16,18 @@ namespace trilho {
 
 struct PlantState {
     double timeS = 0.0;
-    double positionMm = 0.0;      ///< platform, mm from the rail centre (the truth)
+    double positionMm = 0.0;  ///< platform, mm from the rail centre (the truth)
     double velocityMmS = 0.0;
     double accelerationMmS2 = 0.0;
-    double drumMm = 0.0;          ///< drum travel (what the encoder sees), differs by slip
-    double referenceV = 0.0;      ///< amplifier input
-    double forceN = 0.0;          ///< at the cable
+    double drumMm = 0.0;      ///< drum travel (what the encoder sees), differs by slip
+    double referenceV = 0.0;  ///< amplifier input
+    double forceN = 0.0;      ///< at the cable
     bool atHardStop = false;
     bool amplifierFaulted = false;
 };
 
 class SimRail final : public RailIo {
-public:
+  public:
     explicit SimRail(const PlantParams& params = {}, std::uint64_t seed = 1);
 
     // RailIo
@@ -49,7 +49,7 @@ public:
     const PlantParams& params() const { return params_; }
     std::uint8_t driveCode() const { return code_.load(std::memory_order_relaxed); }
 
-private:
+  private:
     void subStep(double h);
     std::int64_t encoderCounts() const;
 
@@ -58,14 +58,15 @@ private:
     PlantState state_;
     std::mt19937_64 rng_;
     std::atomic<std::uint8_t> code_{kDacZero};
-    double vmax_ = 0.0;           ///< mm/s at +10 V
-    double forceMax_ = 0.0;       ///< N
+    double vmax_ = 0.0;               ///< mm/s at +10 V
+    double forceMax_ = 0.0;           ///< N
     std::int64_t counterOffset_ = 0;  ///< counts subtracted so the counter reads 0 at the reset
-    double lostCounts_ = 0.0;     ///< counts the card missed (fault)
+    double lostCounts_ = 0.0;         ///< counts the card missed (fault)
     std::int64_t stuckCounts_ = 0;
     bool stuck_ = false;
     std::uint16_t previousCounter_ = 0;  ///< counter one sub-step ago (for torn reads)
-    bool tornArmed_ = false;  ///< the first read after a step may straddle a carry; a re-read never does
+    bool tornArmed_ =
+        false;  ///< the first read after a step may straddle a carry; a re-read never does
 };
 
 }  // namespace trilho

@@ -9,9 +9,9 @@
 namespace trilho {
 
 class SimSession {
-public:
-    explicit SimSession(const MachineProfile& profile = MachineProfile::rail(), std::uint64_t seed = 1,
-                        double startMm = 0.0)
+  public:
+    explicit SimSession(const MachineProfile& profile = MachineProfile::rail(),
+                        std::uint64_t seed = 1, double startMm = 0.0)
         : rail_(profile.plant, seed), controller_((rail_.placeAt(startMm), profile), rail_) {}
 
     void step() { step(controller_.profile().loop.samplePeriodS); }
@@ -23,14 +23,15 @@ public:
     template <typename Pred>
     bool runUntil(Pred&& pred, double maxS) {
         const double dt = controller_.profile().loop.samplePeriodS;
-        for (double t = 0; t < maxS && !pred(); t += dt) step(dt);
+        for (double t = 0; t < maxS && !pred(); t += dt)
+            step(dt);
         return pred();
     }
 
     SimRail& rail() { return rail_; }
     MachineController& controller() { return controller_; }
 
-private:
+  private:
     SimRail rail_;
     MachineController controller_;
 };

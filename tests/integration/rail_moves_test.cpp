@@ -63,8 +63,8 @@ TEST_P(RailSpan, OvershootAndFinalErrorWithinOneCount) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ShortAndLong, RailSpan,
-                         ::testing::Values(Span{0, 1}, Span{0, -1}, Span{-1000, 1000}, Span{1000, -1000}, Span{0, -1000},
-                                           Span{250, 270}));
+                         ::testing::Values(Span{0, 1}, Span{0, -1}, Span{-1000, 1000},
+                                           Span{1000, -1000}, Span{0, -1000}, Span{250, 270}));
 
 TEST(RailMoves, ClassicLawWithTheOriginalGainsDoesNotRunAway) {
     MachineProfile p = MachineProfile::rail();
@@ -78,7 +78,8 @@ TEST(RailMoves, ClassicLawWithTheOriginalGainsDoesNotRunAway) {
     EXPECT_EQ(r.fault, ServoFault::None);
     ASSERT_TRUE(r.inPosition);  // |e| <= 0.5 mm once, then the VB released the drive
     double minX = 0, maxX = 0;
-    for (const auto& s : r.plant) minX = std::min(minX, s.positionMm), maxX = std::max(maxX, s.positionMm);
+    for (const auto& s : r.plant)
+        minX = std::min(minX, s.positionMm), maxX = std::max(maxX, s.positionMm);
     EXPECT_GE(minX, -1.0);
     EXPECT_LE(maxX, 520.0);  // bounded: no runaway
     EXPECT_NEAR(r.plant.back().velocityMmS, 0.0, 1e-6);
@@ -86,11 +87,13 @@ TEST(RailMoves, ClassicLawWithTheOriginalGainsDoesNotRunAway) {
     RecordProperty("classic_in_position_s", std::to_string(r.inPositionAtS));
     RecordProperty("classic_final_mm", std::to_string(r.plant.back().positionMm));
     RecordProperty("classic_overshoot_mm", std::to_string(r.overshootMm));
-    std::printf("classic law, 500 mm: in position at %.3f s, rests at %.3f mm (overshoot %.3f mm)\n",
-                r.inPositionAtS, r.plant.back().positionMm, r.overshootMm);
+    std::printf(
+        "classic law, 500 mm: in position at %.3f s, rests at %.3f mm (overshoot %.3f mm)\n",
+        r.inPositionAtS, r.plant.back().positionMm, r.overshootMm);
     auto e = move(0, 500);
-    std::printf("engineered law, 500 mm: in position at %.3f s, rests at %.4f mm (overshoot %.4f mm)\n",
-                e.inPositionAtS, 500 + (e.finalErrorMm), e.overshootMm);
+    std::printf(
+        "engineered law, 500 mm: in position at %.3f s, rests at %.4f mm (overshoot %.4f mm)\n",
+        e.inPositionAtS, 500 + (e.finalErrorMm), e.overshootMm);
     EXPECT_LT(e.inPositionAtS, r.inPositionAtS + 10);
 }
 
@@ -186,8 +189,9 @@ TEST_P(GoldenTrace, MatchesTheKeptTraceWithinTolerance) {
     const std::size_t every = g.classic ? 1 : 10;
     for (std::size_t k = every - 1; k < r.trace.size(); k += every) {
         char row[160];
-        std::snprintf(row, sizeof row, "%.3f,%.4f,%.4f,%.4f,%d\n", r.trace[k].timeS, r.trace[k].setpointMm,
-                      r.trace[k].positionMm, r.plant[k].positionMm, r.trace[k].loop.code);
+        std::snprintf(row, sizeof row, "%.3f,%.4f,%.4f,%.4f,%d\n", r.trace[k].timeS,
+                      r.trace[k].setpointMm, r.trace[k].positionMm, r.plant[k].positionMm,
+                      r.trace[k].loop.code);
         now << row;
     }
     const std::string path = std::string(TRILHO_GOLDEN_DIR) + "/" + g.name + ".csv";
@@ -202,10 +206,13 @@ TEST_P(GoldenTrace, MatchesTheKeptTraceWithinTolerance) {
     std::istringstream fresh(now.str());
     int rows = 0;
     while (std::getline(kept, want)) {
-        ASSERT_TRUE(std::getline(fresh, got)) << "trace shorter than the golden one at row " << rows;
+        ASSERT_TRUE(std::getline(fresh, got))
+            << "trace shorter than the golden one at row " << rows;
         double a[5], b[5];
-        ASSERT_EQ(std::sscanf(want.c_str(), "%lf,%lf,%lf,%lf,%lf", &a[0], &a[1], &a[2], &a[3], &a[4]), 5);
-        ASSERT_EQ(std::sscanf(got.c_str(), "%lf,%lf,%lf,%lf,%lf", &b[0], &b[1], &b[2], &b[3], &b[4]), 5);
+        ASSERT_EQ(
+            std::sscanf(want.c_str(), "%lf,%lf,%lf,%lf,%lf", &a[0], &a[1], &a[2], &a[3], &a[4]), 5);
+        ASSERT_EQ(
+            std::sscanf(got.c_str(), "%lf,%lf,%lf,%lf,%lf", &b[0], &b[1], &b[2], &b[3], &b[4]), 5);
         EXPECT_NEAR(a[0], b[0], 1e-9) << g.name << " row " << rows;
         EXPECT_NEAR(a[1], b[1], 0.01) << g.name << " row " << rows << " setpoint";
         EXPECT_NEAR(a[2], b[2], 0.1) << g.name << " row " << rows << " position";

@@ -32,7 +32,8 @@ MoveResult runMove(const MachineProfile& profile, const MoveSpec& spec) {
         if (nowInside && !inside) enteredAt = t;
         inside = nowInside;
         if (s.inPosition && r.inPositionAtS < 0) r.inPositionAtS = t;
-        if (s.fault != ServoFault::None && r.fault == ServoFault::None) r.fault = s.fault, r.faultAtS = t;
+        if (s.fault != ServoFault::None && r.fault == ServoFault::None)
+            r.fault = s.fault, r.faultAtS = t;
         if (spec.keepTrace) r.trace.push_back(s), r.plant.push_back(rail.state());
         if (spec.each && !spec.each(servo, rail)) break;
     }

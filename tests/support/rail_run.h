@@ -10,11 +10,11 @@
 namespace trilho::test {
 
 struct MoveResult {
-    bool inPosition = false;       ///< the servo declared it
-    double settleTimeS = -1.0;     ///< last entry into the window (true position) that lasted
-    double overshootMm = 0.0;      ///< beyond the target in the direction of motion, true position
-    double finalErrorMm = 0.0;     ///< |true - target| at the end
-    double inPositionAtS = -1.0;   ///< when the servo declared in position
+    bool inPosition = false;      ///< the servo declared it
+    double settleTimeS = -1.0;    ///< last entry into the window (true position) that lasted
+    double overshootMm = 0.0;     ///< beyond the target in the direction of motion, true position
+    double finalErrorMm = 0.0;    ///< |true - target| at the end
+    double inPositionAtS = -1.0;  ///< when the servo declared in position
     ServoFault fault = ServoFault::None;
     double faultAtS = -1.0;
     std::uint32_t replans = 0;

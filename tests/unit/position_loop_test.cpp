@@ -29,7 +29,8 @@ TEST(ClassicLaw, DifferenceEquationWithTheOriginalGains) {
     // First tick: e = 100, no previous error: V = floor(128 + 0.2*100 + 0 + 0 + 0.5) = 148.
     LoopOutput o = loop.update(at(100, 0));
     EXPECT_EQ(o.code, 148);
-    // Second: e = 90: V = floor(128 + 18 + (1/10)(90-100) + 0.0005*100 + 0.5) = floor(145.55) = 145.
+    // Second: e = 90: V = floor(128 + 18 + (1/10)(90-100) + 0.0005*100 + 0.5) = floor(145.55) =
+    // 145.
     o = loop.update(at(100, 10));
     EXPECT_EQ(o.code, 145);
     EXPECT_DOUBLE_EQ(o.p, 18.0);
@@ -57,7 +58,7 @@ TEST(ClassicLaw, SmallErrorsRoundToZeroVolts) {
 }
 
 class Engineered : public ::testing::Test {
-protected:
+  protected:
     LoopParams params;
     PlantParams plant;
     void SetUp() override { params.law = LoopLaw::Engineered; }
@@ -68,16 +69,19 @@ TEST_F(Engineered, FeedForwardAloneDrivesTheProfileVelocity) {
     PositionLoop loop(params, plant);
     LoopInput in = at(0, 0, 1, 0.001);
     in.setpointVelocityMmS = plant.maxSpeedMmS() / 2;  // half speed: 63.5 codes
-    for (int k = 0; k < 20; ++k) loop.update(in);  // past the slew-limited start
+    for (int k = 0; k < 20; ++k)
+        loop.update(in);  // past the slew-limited start
     double sum = 0;
-    for (int k = 0; k < 1000; ++k) sum += loop.update(in).code - 128.0;
+    for (int k = 0; k < 1000; ++k)
+        sum += loop.update(in).code - 128.0;
     EXPECT_NEAR(sum / 1000, 63.5, 0.01);  // noise-shaped: the average is exact
 }
 
 TEST_F(Engineered, IntegratorStopsWhileSaturated) {
     params.engineered = {1.0, 10.0, 0.0};
     PositionLoop loop(params, plant);
-    for (int k = 0; k < 5000; ++k) loop.update(at(500, 0, 1, 0.001));  // pinned at +127
+    for (int k = 0; k < 5000; ++k)
+        loop.update(at(500, 0, 1, 0.001));  // pinned at +127
     LoopOutput o = loop.update(at(500, 0, 1, 0.001));
     EXPECT_TRUE(o.saturated);
     EXPECT_EQ(o.code, 255);
@@ -97,7 +101,8 @@ TEST_F(Engineered, GainChangesAreBumpless) {
     LoopInput in = at(3, 0, 1, 0.001);
     in.measuredVelocityMmS = 20;
     double before = 0;
-    for (int k = 0; k < 20; ++k) before = loop.update(in).command;
+    for (int k = 0; k < 20; ++k)
+        before = loop.update(in).command;
     loop.setGains(LoopLaw::Engineered, {5.0, 0.5, 0.1});
     const double after = loop.update(in).command;
     // Only one tick of integration (Ki e dt) separates the two.

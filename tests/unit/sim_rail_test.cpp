@@ -11,7 +11,8 @@ namespace trilho {
 namespace {
 
 void run(SimRail& rail, double seconds, double dt = 0.001) {
-    for (double t = 0; t < seconds - 1e-12; t += dt) rail.step(dt);
+    for (double t = 0; t < seconds - 1e-12; t += dt)
+        rail.step(dt);
 }
 
 TEST(SimRail, DerivedFiguresMatchTheDocument) {
@@ -79,11 +80,14 @@ TEST(SimRail, CentreMarkClearsTheCounterAtTheCrossing) {
     rail.setFaults(slip);
     rail.writeDrive(160);
     double before = 0;
-    while (rail.state().positionMm < -5) rail.step(0.001);
+    while (rail.state().positionMm < -5)
+        rail.step(0.001);
     before = static_cast<std::int16_t>(rail.readCounter()) / 22.8 - rail.state().positionMm;
     EXPECT_GT(std::abs(before), 5.0);  // the slip shows in the count
-    while (rail.state().positionMm < 50) rail.step(0.001);
-    const double after = static_cast<std::int16_t>(rail.readCounter()) / 22.8 - rail.state().positionMm;
+    while (rail.state().positionMm < 50)
+        rail.step(0.001);
+    const double after =
+        static_cast<std::int16_t>(rail.readCounter()) / 22.8 - rail.state().positionMm;
     EXPECT_LT(std::abs(after), 50 * 0.06);  // re-zeroed at the centre; slip since then only
 }
 

@@ -46,12 +46,14 @@ TEST(Trapezoid, ZeroLengthMoveIsEmpty) {
 
 TEST(TrapezoidProperty, RandomProfilesRespectLimitsEndExactlyAndAreContinuous) {
     std::mt19937_64 rng(20261122);
-    std::uniform_real_distribution<double> pos(-1300, 1300), speed(1, 2000), accel(10, 5000), unit(-1, 1);
+    std::uniform_real_distribution<double> pos(-1300, 1300), speed(1, 2000), accel(10, 5000),
+        unit(-1, 1);
     for (int i = 0; i < 20000; ++i) {
         const double v = speed(rng), a = accel(rng), p0 = pos(rng), target = pos(rng);
         const bool moving = i % 2 == 1;
         const double v0 = moving ? unit(rng) * v : 0.0;  // start within the speed limit
-        Trapezoid t = moving ? Trapezoid::fromState(p0, v0, target, v, a) : Trapezoid::restToRest(p0, target, v, a);
+        Trapezoid t = moving ? Trapezoid::fromState(p0, v0, target, v, a)
+                             : Trapezoid::restToRest(p0, target, v, a);
         ASSERT_EQ(t.at(t.duration()).positionMm, target);
         ASSERT_EQ(t.at(t.duration() + 1).velocityMmS, 0.0);
         ASSERT_NEAR(t.at(t.duration() - 1e-12).positionMm, target, 1e-6 * (1 + std::abs(target)));
@@ -66,8 +68,10 @@ TEST(TrapezoidProperty, RandomProfilesRespectLimitsEndExactlyAndAreContinuous) {
             ASSERT_LE(std::abs(s.accelerationMmS2), a * (1 + 1e-9));
             ASSERT_LE(std::abs(s.velocityMmS), v * (1 + 1e-9));
             // Continuity: the change over a step is bounded by the limits.
-            ASSERT_LE(std::abs(s.velocityMmS - prev.velocityMmS), a * h * (1 + 1e-6) + 1e-9) << i << " " << k;
-            ASSERT_LE(std::abs(s.positionMm - prev.positionMm), v * h * (1 + 1e-6) + 1e-9) << i << " " << k;
+            ASSERT_LE(std::abs(s.velocityMmS - prev.velocityMmS), a * h * (1 + 1e-6) + 1e-9)
+                << i << " " << k;
+            ASSERT_LE(std::abs(s.positionMm - prev.positionMm), v * h * (1 + 1e-6) + 1e-9)
+                << i << " " << k;
             prev = s;
         }
     }

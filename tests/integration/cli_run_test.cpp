@@ -1,0 +1,167 @@
+// trilho-cli run: exit statuses, history, JSON and trace, in virtual time.
+#include <gtest/gtest.h>
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+
+namespace {
+
+struct Result {
+    int exit = -1;
+    QString out, err;
+};
+
+Result run(const QStringList& args) {
+    QProcess p;
+    p.start(QStringLiteral(TRILHO_CLI), QStringList{QStringLiteral("run")} + args);
+    EXPECT_TRUE(p.waitForFinished(120000));
+    return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()),
+            QString::fromUtf8(p.readAllStandardError())};
+}
+
+class CliRun : public ::testing::Test {
+  protected:
+    QTemporaryDir dir;
+    QString write(const QString& name, const QByteArray& content) {
+        const QString path = dir.filePath(name);
+        QFile f(path);
+        EXPECT_TRUE(f.open(QIODevice::WriteOnly));
+        f.write(content);
+        return path;
+    }
+    QString program(const char* name) {
+        return QStringLiteral(TRILHO_PROGRAMS_DIR "/") + QString::fromLatin1(name);
+    }
+};
+
+TEST_F(CliRun, ProgramToM02ExitsZeroWithHistoryAndFinalPosition) {
+    Result r = run({QStringLiteral("--virtual-time"), program("exemplo_documento.G")});
+    EXPECT_EQ(r.exit, 0) << r.err.toStdString();
+    EXPECT_TRUE(
+        r.out.contains(QStringLiteral("0010: Positioning to x=10 at 20% of maximum speed.\n")));
+    EXPECT_TRUE(r.out.contains(QStringLiteral("Program finished !\n")));
+    EXPECT_TRUE(r.out.contains(
+        QRegularExpression(QStringLiteral("final position: (19\\.9[5-9]|20\\.0[0-4])\\d* mm"))))
+        << r.out.toStdString();
+}
+
+TEST_F(CliRun, JsonShapeAndPortuguese) {
+    Result r =
+        run({QStringLiteral("--virtual-time"), QStringLiteral("--json"), QStringLiteral("--lang"),
+             QStringLiteral("pt_BR"), QStringLiteral("--continue-after"), QStringLiteral("0.5"),
+             program("ciclo_carga.G")});
+    EXPECT_EQ(r.exit, 0);
+    const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+    EXPECT_TRUE(o[QStringLiteral("ok")].toBool());
+    const QJsonArray history = o[QStringLiteral("history")].toArray();
+    EXPECT_TRUE(history.contains(QStringLiteral("0060: Aguardando tecla Continua.")));
+    EXPECT_TRUE(history.contains(QStringLiteral("0090: Mudança do zero do sistema para x=850.")));
+    EXPECT_EQ(history.last().toString(), QStringLiteral("Programa finalizado !"));
+    EXPECT_TRUE(o[QStringLiteral("alarms")].toArray().isEmpty());
+    EXPECT_NEAR(o[QStringLiteral("final_position_mm")].toDouble(), 0.0, 0.05);
+    EXPECT_GT(o[QStringLiteral("duration_s")].toDouble(), 8.0);  // dwells alone are 5 s
+}
+
+TEST_F(CliRun, CompileErrorsExitOneWithoutMoving) {
+    Result r = run({QStringLiteral("--virtual-time"), write(QStringLiteral("bad.G"), "G7\nM2\n")});
+    EXPECT_EQ(r.exit, 1);
+    EXPECT_TRUE(r.out.contains(QStringLiteral("error[invalid-g]")));
+    EXPECT_FALSE(r.out.contains(QStringLiteral("Homing")));
+}
+
+TEST_F(CliRun, AnAlarmExitsThree) {
+    const QString profile =
+        write(QStringLiteral("m.json"), R"({"limits": {"x": {"softMaxMm": 1294}}})");
+    Result r = run({QStringLiteral("--virtual-time"), QStringLiteral("--json"),
+                    QStringLiteral("--machine"), profile,
+                    write(QStringLiteral("end.G"), "G1 X1290 F30\nM2\n")});
+    EXPECT_EQ(r.exit, 3);
+    const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+    EXPECT_FALSE(o[QStringLiteral("ok")].toBool(true));
+    ASSERT_EQ(o[QStringLiteral("alarms")].toArray().size(), 1);
+    EXPECT_EQ(o[QStringLiteral("alarms")].toArray()[0].toObject()[QStringLiteral("code")].toInt(),
+              2);
+}
+
+TEST_F(CliRun, MaxSecondsBoundsALoopAndExitsFour) {
+    Result r = run({QStringLiteral("--virtual-time"), QStringLiteral("--max-seconds"),
+                    QStringLiteral("15"), program("ciclo_continuo.G")});
+    EXPECT_EQ(r.exit, 4);
+    EXPECT_GE(r.out.count(QStringLiteral("0060: Program jumped to line 20.")), 2);
+    EXPECT_TRUE(r.out.contains(QStringLiteral("(15.000 s)")));
+}
+
+TEST_F(CliRun, M00InVirtualTimeNeedsContinueAfter) {
+    Result r = run({QStringLiteral("--virtual-time"), program("ciclo_carga.G")});
+    EXPECT_EQ(r.exit, 2);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("--continue-after")));
+}
+
+TEST_F(CliRun, HeavierPayloadStillArrives) {
+    Result r = run({QStringLiteral("--virtual-time"), QStringLiteral("--json"),
+                    QStringLiteral("--mass-factor"), QStringLiteral("3"),
+                    write(QStringLiteral("m.G"), "G0 X1000\nM2\n")});
+    EXPECT_EQ(r.exit, 0);
+    EXPECT_NEAR(QJsonDocument::fromJson(r.out.toUtf8())
+                    .object()[QStringLiteral("final_position_mm")]
+                    .toDouble(),
+                1000, 0.05);
+}
+
+TEST_F(CliRun, TraceHasAHeaderAndOneRowPerTick) {
+    const QString trace = dir.filePath(QStringLiteral("t.csv"));
+    Result r = run({QStringLiteral("--virtual-time"), QStringLiteral("--trace"), trace,
+                    write(QStringLiteral("m.G"), "N10 G1 X50 F50\nN20 M2\n")});
+    ASSERT_EQ(r.exit, 0);
+    QFile f(trace);
+    ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+    const QStringList lines =
+        QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    EXPECT_EQ(lines.front(),
+              QStringLiteral("t_s,block_n,setpoint_mm,position_mm,error_mm,velocity_mm_s,drive"));
+    ASSERT_GT(lines.size(), 500);
+    double previous = 0;
+    bool sawBlock10 = false;
+    for (int i = 1; i < lines.size(); ++i) {
+        const QStringList f7 = lines[i].split(QLatin1Char(','));
+        ASSERT_EQ(f7.size(), 7) << lines[i].toStdString();
+        const double t = f7[0].toDouble();
+        EXPECT_NEAR(t - previous, 0.001, 1e-6) << i;
+        previous = t;
+        sawBlock10 |= f7[1] == QLatin1String("10");
+        const int drive = f7[6].toInt();
+        EXPECT_TRUE(drive >= 0 && drive <= 255);
+    }
+    EXPECT_TRUE(sawBlock10);
+    EXPECT_NEAR(lines.last().split(QLatin1Char(','))[3].toDouble(), 50.0, 0.05);
+}
+
+TEST_F(CliRun, BadOptionsExitTwo) {
+    const QString ok = program("exemplo_documento.G");
+    for (const QStringList& args :
+         {QStringList{QStringLiteral("--mass-factor"), QStringLiteral("heavy"), ok},
+          QStringList{QStringLiteral("--max-seconds"), QStringLiteral("-1"), ok},
+          QStringList{QStringLiteral("--machine"), dir.filePath(QStringLiteral("none.json")), ok},
+          QStringList{QStringLiteral("--trace"), QStringLiteral("/nonexistent/dir/t.csv"), ok},
+          QStringList{dir.filePath(QStringLiteral("missing.G"))}, QStringList{}}) {
+        Result r = run(QStringList{QStringLiteral("--virtual-time")} + args);
+        EXPECT_EQ(r.exit, 2) << args.join(QLatin1Char(' ')).toStdString();
+        EXPECT_EQ(r.err.count(QLatin1Char('\n')), 1) << r.err.toStdString();
+    }
+}
+
+TEST_F(CliRun, RealTimeRunOfAShortProgram) {
+    Result r = run({QStringLiteral("--json"), write(QStringLiteral("m.G"), "G1 X20 F20\nM2\n")});
+    EXPECT_EQ(r.exit, 0) << r.err.toStdString();
+    EXPECT_NEAR(QJsonDocument::fromJson(r.out.toUtf8())
+                    .object()[QStringLiteral("final_position_mm")]
+                    .toDouble(),
+                20, 0.05);
+}
+
+}  // namespace
