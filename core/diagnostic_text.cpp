@@ -85,8 +85,8 @@ QString diagnosticMessage(const Diagnostic& d) {
 
 QString compileSummary(std::size_t errorCount) {
     if (errorCount == 0)
-        return QCoreApplication::translate(kContext, "Compilation completed successfully");
-    return substitute(QCoreApplication::translate(kContext, "%1 compile error(s)"),
+        return QCoreApplication::translate("Diagnostic", "Compilation completed successfully");
+    return substitute(QCoreApplication::translate("Diagnostic", "%1 compile error(s)"),
                       {QString::number(errorCount)});
 }
 

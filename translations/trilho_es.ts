@@ -1,141 +1,6 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
-<TS version="2.1" language="es">
-<context>
-    <name>Diagnostic</name>
-    <message>
-        <source>every line must start with n (found '%2')</source>
-        <translation>toda línea debe comenzar con n (se encontró '%2')</translation>
-    </message>
-    <message>
-        <source>wrong n sequence on line %1: must be greater than %3</source>
-        <translation>secuencia n incorrecta en la línea %1: debe ser mayor que %3</translation>
-    </message>
-    <message>
-        <source>sequence number alone on line %1</source>
-        <translation>número de secuencia solo en la línea %1</translation>
-    </message>
-    <message>
-        <source>separating spaces required on line %1 (found '%2')</source>
-        <translation>se requieren espacios de separación en la línea %1 (se encontró '%2')</translation>
-    </message>
-    <message>
-        <source>there can be no more commands after %2 on line %1</source>
-        <translation>no puede haber más comandos después de %2 en la línea %1</translation>
-    </message>
-    <message>
-        <source>g00 requires an x word on line %1</source>
-        <translation>g00 requiere comando x en la línea %1</translation>
-    </message>
-    <message>
-        <source>g01 requires an x word on line %1</source>
-        <translation>g01 requiere comando x en la línea %1</translation>
-    </message>
-    <message>
-        <source>g04 without x word (time) on line %1</source>
-        <translation>g04 sin comando x (tiempo) en la línea %1</translation>
-    </message>
-    <message>
-        <source>g92 requires an x word on line %1</source>
-        <translation>g92 requiere comando x en la línea %1</translation>
-    </message>
-    <message>
-        <source>m03 without x word (block) on line %1</source>
-        <translation>m03 sin comando x (bloque) en la línea %1</translation>
-    </message>
-    <message>
-        <source>invalid value after g04 on line %1: the time %2 is negative</source>
-        <translation>valor inválido después de g04 en la línea %1: el tiempo %2 es negativo</translation>
-    </message>
-    <message>
-        <source>invalid value after m03 on line %1: the block %2 is negative</source>
-        <translation>valor inválido después de m03 en la línea %1: el bloque %2 es negativo</translation>
-    </message>
-    <message>
-        <source>negative f command impossible on line %1 (%2)</source>
-        <translation>comando f negativo imposible en la línea %1 (%2)</translation>
-    </message>
-    <message>
-        <source>invalid g command on line %1 (%2)</source>
-        <translation>comando g inválido en la línea %1 (%2)</translation>
-    </message>
-    <message>
-        <source>invalid m command on line %1 (%2)</source>
-        <translation>comando m inválido en la línea %1 (%2)</translation>
-    </message>
-    <message>
-        <source>g01 or g00 not defined on line %1</source>
-        <translation>g01 o g00 no definidos en la línea %1</translation>
-    </message>
-    <message>
-        <source>g01 needs f defined on line %1</source>
-        <translation>g01 necesita f definido en la línea %1</translation>
-    </message>
-    <message>
-        <source>invalid character or g00 does not take f on line %1</source>
-        <translation>carácter inválido o g00 no admite f en la línea %1</translation>
-    </message>
-    <message>
-        <source>invalid character on line %1: '%2'</source>
-        <translation>carácter inválido en la línea %1: '%2'</translation>
-    </message>
-    <message>
-        <source>invalid character on line %1: malformed number '%2'</source>
-        <translation>carácter inválido en la línea %1: número mal formado '%2'</translation>
-    </message>
-    <message>
-        <source>invalid character on line %1: '%2' must have exactly %3 digits</source>
-        <translation>carácter inválido en la línea %1: '%2' debe tener exactamente %3 dígitos</translation>
-    </message>
-    <message>
-        <source>invalid character on line %1: comment not closed</source>
-        <translation>carácter inválido en la línea %1: comentario sin cerrar</translation>
-    </message>
-    <message>
-        <source>invalid character on line %1: word '%2' repeated</source>
-        <translation>carácter inválido en la línea %1: palabra '%2' repetida</translation>
-    </message>
-    <message>
-        <source>invalid character on line %1: n must be the first word ('%2')</source>
-        <translation>carácter inválido en la línea %1: n debe ser la primera palabra ('%2')</translation>
-    </message>
-    <message>
-        <source>invalid value after m03 on line %1: '%2' is not a block number</source>
-        <translation>valor inválido después de m03 en la línea %1: '%2' no es un número de bloque</translation>
-    </message>
-    <message>
-        <source>invalid character on line %1: number '%2' longer than %3 digits</source>
-        <translation>carácter inválido en la línea %1: número '%2' de más de %3 dígitos</translation>
-    </message>
-    <message>
-        <source>program requires m02 (END) at the end</source>
-        <translation>el programa requiere m02 (END) al final</translation>
-    </message>
-    <message>
-        <source>invalid GO TO on line %1: block n%2 does not exist</source>
-        <translation>GO TO inválido en la línea %1: el bloque n%2 no existe</translation>
-    </message>
-    <message>
-        <source>feed f%2 out of range on line %1: must be above 0 and at most 100 %</source>
-        <translation>avance f%2 fuera de rango en la línea %1: debe ser mayor que 0 y como máximo 100 %</translation>
-    </message>
-    <message>
-        <source>target %2 mm on line %1 is beyond the soft limit %3 mm</source>
-        <translation>destino %2 mm en la línea %1 más allá del límite de recorrido %3 mm</translation>
-    </message>
-    <message>
-        <source>axis %2 does not exist on this machine (line %1)</source>
-        <translation>el eje %2 no existe en esta máquina (línea %1)</translation>
-    </message>
-    <message>
-        <source>Compilation completed successfully</source>
-        <translation>Compilación completada con éxito</translation>
-    </message>
-    <message>
-        <source>%1 compile error(s)</source>
-        <translation>%1 error(es) de compilación</translation>
-    </message>
-</context>
+<TS version="2.1" language="es_ES">
 <context>
     <name>Controller</name>
     <message>
@@ -163,7 +28,7 @@
         <translation>%1: Cero del sistema cambiado a x=%2.</translation>
     </message>
     <message>
-        <source>%1: Return to the rail's absolute zero.</source>
+        <source>%1: Return to the rail&apos;s absolute zero.</source>
         <translation>%1: Retorno al cero absoluto del riel.</translation>
     </message>
     <message>
@@ -353,6 +218,604 @@
     <message>
         <source>Homing failed: centre switch not found</source>
         <translation>Referenciado fallido: interruptor central no encontrado</translation>
+    </message>
+</context>
+<context>
+    <name>Diagnostic</name>
+    <message>
+        <source>every line must start with n (found &apos;%2&apos;)</source>
+        <translation>toda línea debe comenzar con n (se encontró &apos;%2&apos;)</translation>
+    </message>
+    <message>
+        <source>wrong n sequence on line %1: must be greater than %3</source>
+        <translation>secuencia n incorrecta en la línea %1: debe ser mayor que %3</translation>
+    </message>
+    <message>
+        <source>sequence number alone on line %1</source>
+        <translation>número de secuencia solo en la línea %1</translation>
+    </message>
+    <message>
+        <source>separating spaces required on line %1 (found &apos;%2&apos;)</source>
+        <translation>se requieren espacios de separación en la línea %1 (se encontró &apos;%2&apos;)</translation>
+    </message>
+    <message>
+        <source>there can be no more commands after %2 on line %1</source>
+        <translation>no puede haber más comandos después de %2 en la línea %1</translation>
+    </message>
+    <message>
+        <source>g00 requires an x word on line %1</source>
+        <translation>g00 requiere comando x en la línea %1</translation>
+    </message>
+    <message>
+        <source>g01 requires an x word on line %1</source>
+        <translation>g01 requiere comando x en la línea %1</translation>
+    </message>
+    <message>
+        <source>g04 without x word (time) on line %1</source>
+        <translation>g04 sin comando x (tiempo) en la línea %1</translation>
+    </message>
+    <message>
+        <source>g92 requires an x word on line %1</source>
+        <translation>g92 requiere comando x en la línea %1</translation>
+    </message>
+    <message>
+        <source>m03 without x word (block) on line %1</source>
+        <translation>m03 sin comando x (bloque) en la línea %1</translation>
+    </message>
+    <message>
+        <source>invalid value after g04 on line %1: the time %2 is negative</source>
+        <translation>valor inválido después de g04 en la línea %1: el tiempo %2 es negativo</translation>
+    </message>
+    <message>
+        <source>invalid value after m03 on line %1: the block %2 is negative</source>
+        <translation>valor inválido después de m03 en la línea %1: el bloque %2 es negativo</translation>
+    </message>
+    <message>
+        <source>negative f command impossible on line %1 (%2)</source>
+        <translation>comando f negativo imposible en la línea %1 (%2)</translation>
+    </message>
+    <message>
+        <source>invalid g command on line %1 (%2)</source>
+        <translation>comando g inválido en la línea %1 (%2)</translation>
+    </message>
+    <message>
+        <source>invalid m command on line %1 (%2)</source>
+        <translation>comando m inválido en la línea %1 (%2)</translation>
+    </message>
+    <message>
+        <source>g01 or g00 not defined on line %1</source>
+        <translation>g01 o g00 no definidos en la línea %1</translation>
+    </message>
+    <message>
+        <source>g01 needs f defined on line %1</source>
+        <translation>g01 necesita f definido en la línea %1</translation>
+    </message>
+    <message>
+        <source>invalid character or g00 does not take f on line %1</source>
+        <translation>carácter inválido o g00 no admite f en la línea %1</translation>
+    </message>
+    <message>
+        <source>invalid character on line %1: &apos;%2&apos;</source>
+        <translation>carácter inválido en la línea %1: &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>invalid character on line %1: malformed number &apos;%2&apos;</source>
+        <translation>carácter inválido en la línea %1: número mal formado &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>invalid character on line %1: &apos;%2&apos; must have exactly %3 digits</source>
+        <translation>carácter inválido en la línea %1: &apos;%2&apos; debe tener exactamente %3 dígitos</translation>
+    </message>
+    <message>
+        <source>invalid character on line %1: comment not closed</source>
+        <translation>carácter inválido en la línea %1: comentario sin cerrar</translation>
+    </message>
+    <message>
+        <source>invalid character on line %1: word &apos;%2&apos; repeated</source>
+        <translation>carácter inválido en la línea %1: palabra &apos;%2&apos; repetida</translation>
+    </message>
+    <message>
+        <source>invalid character on line %1: n must be the first word (&apos;%2&apos;)</source>
+        <translation>carácter inválido en la línea %1: n debe ser la primera palabra (&apos;%2&apos;)</translation>
+    </message>
+    <message>
+        <source>invalid value after m03 on line %1: &apos;%2&apos; is not a block number</source>
+        <translation>valor inválido después de m03 en la línea %1: &apos;%2&apos; no es un número de bloque</translation>
+    </message>
+    <message>
+        <source>invalid character on line %1: number &apos;%2&apos; longer than %3 digits</source>
+        <translation>carácter inválido en la línea %1: número &apos;%2&apos; de más de %3 dígitos</translation>
+    </message>
+    <message>
+        <source>program requires m02 (END) at the end</source>
+        <translation>el programa requiere m02 (END) al final</translation>
+    </message>
+    <message>
+        <source>invalid GO TO on line %1: block n%2 does not exist</source>
+        <translation>GO TO inválido en la línea %1: el bloque n%2 no existe</translation>
+    </message>
+    <message>
+        <source>feed f%2 out of range on line %1: must be above 0 and at most 100 %</source>
+        <translation>avance f%2 fuera de rango en la línea %1: debe ser mayor que 0 y como máximo 100 %</translation>
+    </message>
+    <message>
+        <source>target %2 mm on line %1 is beyond the soft limit %3 mm</source>
+        <translation>destino %2 mm en la línea %1 más allá del límite de recorrido %3 mm</translation>
+    </message>
+    <message>
+        <source>axis %2 does not exist on this machine (line %1)</source>
+        <translation>el eje %2 no existe en esta máquina (línea %1)</translation>
+    </message>
+    <message>
+        <source>Compilation completed successfully</source>
+        <translation>Compilación completada con éxito</translation>
+    </message>
+    <message>
+        <source>%1 compile error(s)</source>
+        <translation>%1 error(es) de compilación</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::ExecutionPanel</name>
+    <message>
+        <source>Alarms :</source>
+        <translation>Alarmas :</translation>
+    </message>
+    <message>
+        <source>Status :</source>
+        <translation>Estado :</translation>
+    </message>
+    <message>
+        <source>Automatic Mode :</source>
+        <translation>Modo Automático :</translation>
+    </message>
+    <message>
+        <source>Manual Mode :</source>
+        <translation>Modo Manual :</translation>
+    </message>
+    <message>
+        <source>Current Data :</source>
+        <translation>Datos Actuales :</translation>
+    </message>
+    <message>
+        <source>Controller :</source>
+        <translation>Controlador :</translation>
+    </message>
+    <message>
+        <source>Loop :</source>
+        <translation>Lazo :</translation>
+    </message>
+    <message>
+        <source>Program :</source>
+        <translation>Programa :</translation>
+    </message>
+    <message>
+        <source>Line :</source>
+        <translation>Línea :</translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation>Continuar</translation>
+    </message>
+    <message>
+        <source>Left</source>
+        <translation>Izquierda</translation>
+    </message>
+    <message>
+        <source>Right</source>
+        <translation>Derecha</translation>
+    </message>
+    <message>
+        <source>STOP</source>
+        <translation>PARA</translation>
+    </message>
+    <message>
+        <source>Position :</source>
+        <translation>Posición :</translation>
+    </message>
+    <message>
+        <source>Speed :</source>
+        <translation>Velocidad :</translation>
+    </message>
+    <message>
+        <source>Acceleration :</source>
+        <translation>Aceleración :</translation>
+    </message>
+    <message>
+        <source>Proportional :</source>
+        <translation>Proporcional :</translation>
+    </message>
+    <message>
+        <source>Derivative :</source>
+        <translation>Derivativa :</translation>
+    </message>
+    <message>
+        <source>Integral :</source>
+        <translation>Integral :</translation>
+    </message>
+    <message>
+        <source>Setpoint :</source>
+        <translation>Consigna :</translation>
+    </message>
+    <message>
+        <source>Actual value :</source>
+        <translation>Valor real :</translation>
+    </message>
+    <message>
+        <source>Error :</source>
+        <translation>Error :</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::HistoryPanel</name>
+    <message>
+        <source>Export history</source>
+        <translation>Exportar historial</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Hora</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>Código</translation>
+    </message>
+    <message>
+        <source>Text</source>
+        <translation>Texto</translation>
+    </message>
+    <message>
+        <source>Acknowledge alarms</source>
+        <translation>Reconocer alarmas</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>Exportar CSV</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::JogPanel</name>
+    <message>
+        <source>Feed override %1 %</source>
+        <translation>Corrección de avance %1 %</translation>
+    </message>
+    <message>
+        <source>Jog speed %1 %</source>
+        <translation>Velocidad de jog %1 %</translation>
+    </message>
+    <message>
+        <source>◀ hold to jog</source>
+        <translation>◀ mantenga para mover</translation>
+    </message>
+    <message>
+        <source>hold to jog ▶</source>
+        <translation>mantenga para mover ▶</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Paso</translation>
+    </message>
+    <message>
+        <source>Single block</source>
+        <translation>Bloque a bloque</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Pausar</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Reanudar</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Detener</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::MainWindow</name>
+    <message>
+        <source>Didactic D.N.C. system for the automatic rail</source>
+        <translation>Sistema D.N.C. didáctico para riel automático</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Archivo</translation>
+    </message>
+    <message>
+        <source>&amp;Select</source>
+        <translation>&amp;Seleccionar</translation>
+    </message>
+    <message>
+        <source>E&amp;xit</source>
+        <translation>Sa&amp;lir</translation>
+    </message>
+    <message>
+        <source>C&amp;ommand</source>
+        <translation>C&amp;omando</translation>
+    </message>
+    <message>
+        <source>&amp;Manual</source>
+        <translation>&amp;Manual</translation>
+    </message>
+    <message>
+        <source>&amp;Automatic</source>
+        <translation>&amp;Automático</translation>
+    </message>
+    <message>
+        <source>&amp;Compile file</source>
+        <translation>&amp;Compilar archivo</translation>
+    </message>
+    <message>
+        <source>&amp;Execute file</source>
+        <translation>&amp;Ejecutar archivo</translation>
+    </message>
+    <message>
+        <source>O&amp;ptions</source>
+        <translation>O&amp;pciones</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Idioma</translation>
+    </message>
+    <message>
+        <source>&amp;Theme</source>
+        <translation>&amp;Tema</translation>
+    </message>
+    <message>
+        <source>Classic (1996 colours)</source>
+        <translation>Clásico (colores de 1996)</translation>
+    </message>
+    <message>
+        <source>System</source>
+        <translation>Sistema</translation>
+    </message>
+    <message>
+        <source>Control &amp;law</source>
+        <translation>&amp;Ley de control</translation>
+    </message>
+    <message>
+        <source>Classic (the 1996 difference equation)</source>
+        <translation>Clásica (la ecuación en diferencias de 1996)</translation>
+    </message>
+    <message>
+        <source>Engineered (profile, feed-forward)</source>
+        <translation>Diseñada (perfil, prealimentación)</translation>
+    </message>
+    <message>
+        <source>G-code &amp;dialect</source>
+        <translation>&amp;Dialecto de código G</translation>
+    </message>
+    <message>
+        <source>Standard</source>
+        <translation>Estándar</translation>
+    </message>
+    <message>
+        <source>Classic (1996)</source>
+        <translation>Clásico (1996)</translation>
+    </message>
+    <message>
+        <source>&amp;Windows</source>
+        <translation>&amp;Ventanas</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Programa</translation>
+    </message>
+    <message>
+        <source>Plots</source>
+        <translation>Gráficos</translation>
+    </message>
+    <message>
+        <source>Jog and run</source>
+        <translation>Movimiento y ejecución</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>Historial</translation>
+    </message>
+    <message>
+        <source>Rail</source>
+        <translation>Riel</translation>
+    </message>
+    <message>
+        <source>E-STOP (Esc)</source>
+        <translation>EMERGENCIA (Esc)</translation>
+    </message>
+    <message>
+        <source>Reset E-stop</source>
+        <translation>Liberar emergencia</translation>
+    </message>
+    <message>
+        <source>Acknowledge</source>
+        <translation>Reconocer</translation>
+    </message>
+    <message>
+        <source>File message</source>
+        <translation>Mensaje de archivo</translation>
+    </message>
+    <message>
+        <source>Select the file first !</source>
+        <translation>¡Seleccione el archivo primero!</translation>
+    </message>
+    <message>
+        <source>End</source>
+        <translation>Final</translation>
+    </message>
+    <message>
+        <source>Compilation finished !</source>
+        <translation>¡Compilación terminada!</translation>
+    </message>
+    <message>
+        <source>There are compile error(s)!</source>
+        <translation>¡Hay error(es) de compilación!</translation>
+    </message>
+    <message>
+        <source>Manual</source>
+        <translation>Manual</translation>
+    </message>
+    <message>
+        <source>Automatic, ready</source>
+        <translation>Automático, listo</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>Referenciando</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Ejecutando</translation>
+    </message>
+    <message>
+        <source>Waiting</source>
+        <translation>Esperando</translation>
+    </message>
+    <message>
+        <source>Paused</source>
+        <translation>Pausado</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Alarma</translation>
+    </message>
+    <message>
+        <source>Emergency stop</source>
+        <translation>Parada de emergencia</translation>
+    </message>
+    <message>
+        <source>Unsaved program</source>
+        <translation>Programa sin guardar</translation>
+    </message>
+    <message>
+        <source>The program has unsaved changes. Save them before leaving?</source>
+        <translation>El programa tiene cambios sin guardar. ¿Guardarlos antes de salir?</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Guardar</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::PlotPanel</name>
+    <message>
+        <source>Export PNG</source>
+        <translation>Exportar PNG</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>Exportar CSV</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pausar</translation>
+    </message>
+    <message>
+        <source>Rolling window</source>
+        <translation>Ventana de tiempo</translation>
+    </message>
+    <message>
+        <source>setpoint</source>
+        <translation>consigna</translation>
+    </message>
+    <message>
+        <source>position</source>
+        <translation>posición</translation>
+    </message>
+    <message>
+        <source>position (mm)</source>
+        <translation>posición (mm)</translation>
+    </message>
+    <message>
+        <source>following error (mm)</source>
+        <translation>error de seguimiento (mm)</translation>
+    </message>
+    <message>
+        <source>drive (DAC code)</source>
+        <translation>accionamiento (código DAC)</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::ProgramPanel</name>
+    <message>
+        <source>Save</source>
+        <translation>Guardar</translation>
+    </message>
+    <message>
+        <source>Start from the selected block</source>
+        <translation>Ejecutar desde el bloque seleccionado</translation>
+    </message>
+    <message>
+        <source>Saves atomically: a crash never leaves half a file</source>
+        <translation>Guarda de forma atómica: un fallo nunca deja medio archivo</translation>
+    </message>
+    <message>
+        <source>cannot open &apos;%1&apos;: %2</source>
+        <translation>no se pudo abrir &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>cannot save &apos;%1&apos;: %2</source>
+        <translation>no se pudo guardar &apos;%1&apos;: %2</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::RailView</name>
+    <message>
+        <source>left end</source>
+        <translation>fin izquierdo</translation>
+    </message>
+    <message>
+        <source>centre</source>
+        <translation>centro</translation>
+    </message>
+    <message>
+        <source>right end</source>
+        <translation>fin derecho</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::SelectFileDialog</name>
+    <message>
+        <source>Select</source>
+        <translation>Seleccionar</translation>
+    </message>
+    <message>
+        <source>Files</source>
+        <translation>Archivos</translation>
+    </message>
+    <message>
+        <source>E&amp;xit</source>
+        <translation>Sa&amp;lir</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::StartScreen</name>
+    <message>
+        <source>Didactic D.N.C. system for the automatic rail</source>
+        <translation>Sistema D.N.C. didáctico para riel automático</translation>
+    </message>
+    <message>
+        <source>University of São Paulo</source>
+        <translation>Universidad de São Paulo</translation>
+    </message>
+    <message>
+        <source>Polytechnic School</source>
+        <translation>Escuela Politécnica</translation>
+    </message>
+    <message>
+        <source>Numerical Control for the robot&apos;s rail</source>
+        <translation>Control Numérico para el riel del robot</translation>
+    </message>
+    <message>
+        <source>Original design, 1996. Rebuilt and finished as trilho.</source>
+        <translation>Diseño original de 1996. Reconstruido y terminado como trilho.</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
     </message>
 </context>
 </TS>

@@ -2,141 +2,6 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="pt_BR">
 <context>
-    <name>Diagnostic</name>
-    <message>
-        <source>every line must start with n (found '%2')</source>
-        <translation>Erro: Toda linha deve iniciar com n.</translation>
-    </message>
-    <message>
-        <source>wrong n sequence on line %1: must be greater than %3</source>
-        <translation>Erro: Seqüência n errada na linha %1</translation>
-    </message>
-    <message>
-        <source>sequence number alone on line %1</source>
-        <translation>Erro: Seqüência n sozinha na linha %1</translation>
-    </message>
-    <message>
-        <source>separating spaces required on line %1 (found '%2')</source>
-        <translation>Erro: Espaços para separação requeridos na linha %1</translation>
-    </message>
-    <message>
-        <source>there can be no more commands after %2 on line %1</source>
-        <translation>Erro: Não pode haver mais comandos após %2 na linha %1</translation>
-    </message>
-    <message>
-        <source>g00 requires an x word on line %1</source>
-        <translation>Erro: g00 requer comando x na linha %1</translation>
-    </message>
-    <message>
-        <source>g01 requires an x word on line %1</source>
-        <translation>Erro: g01 requer comando x na linha %1</translation>
-    </message>
-    <message>
-        <source>g04 without x word (time) on line %1</source>
-        <translation>Erro: g04 sem comando x (tempo) na linha %1</translation>
-    </message>
-    <message>
-        <source>g92 requires an x word on line %1</source>
-        <translation>Erro: g92 requer comando x na linha %1</translation>
-    </message>
-    <message>
-        <source>m03 without x word (block) on line %1</source>
-        <translation>Erro: m03 sem comando x (linha) na linha %1</translation>
-    </message>
-    <message>
-        <source>invalid value after g04 on line %1: the time %2 is negative</source>
-        <translation>Erro: Caracter inválido após g04 na linha %1</translation>
-    </message>
-    <message>
-        <source>invalid value after m03 on line %1: the block %2 is negative</source>
-        <translation>Erro: Caracter inválido após m03 na linha %1</translation>
-    </message>
-    <message>
-        <source>negative f command impossible on line %1 (%2)</source>
-        <translation>Erro: Comando f negativo impossível na linha %1</translation>
-    </message>
-    <message>
-        <source>invalid g command on line %1 (%2)</source>
-        <translation>Erro: Comando g inválido na linha %1</translation>
-    </message>
-    <message>
-        <source>invalid m command on line %1 (%2)</source>
-        <translation>Erro: Comando m inválido na linha %1</translation>
-    </message>
-    <message>
-        <source>g01 or g00 not defined on line %1</source>
-        <translation>Erro: g01 ou g00 não definidos na linha %1</translation>
-    </message>
-    <message>
-        <source>g01 needs f defined on line %1</source>
-        <translation>Erro: g01 precisa de f definido na linha %1</translation>
-    </message>
-    <message>
-        <source>invalid character or g00 does not take f on line %1</source>
-        <translation>Erro: Caracter inválido ou g00 não requer f na linha %1</translation>
-    </message>
-    <message>
-        <source>invalid character on line %1: '%2'</source>
-        <translation>Erro: Caracter inválido na linha %1 ('%2')</translation>
-    </message>
-    <message>
-        <source>invalid character on line %1: malformed number '%2'</source>
-        <translation>Erro: Caracter inválido na linha %1 (número malformado '%2')</translation>
-    </message>
-    <message>
-        <source>invalid character on line %1: '%2' must have exactly %3 digits</source>
-        <translation>Erro: Caracter inválido na linha %1 ('%2' deve ter %3 dígitos)</translation>
-    </message>
-    <message>
-        <source>invalid character on line %1: comment not closed</source>
-        <translation>Erro: Caracter inválido na linha %1 (comentário não fechado)</translation>
-    </message>
-    <message>
-        <source>invalid character on line %1: word '%2' repeated</source>
-        <translation>Erro: Caracter inválido na linha %1 (comando '%2' repetido)</translation>
-    </message>
-    <message>
-        <source>invalid character on line %1: n must be the first word ('%2')</source>
-        <translation>Erro: Caracter inválido na linha %1 (n deve ser o primeiro comando: '%2')</translation>
-    </message>
-    <message>
-        <source>invalid value after m03 on line %1: '%2' is not a block number</source>
-        <translation>Erro: Caracter inválido após m03 na linha %1 ('%2')</translation>
-    </message>
-    <message>
-        <source>invalid character on line %1: number '%2' longer than %3 digits</source>
-        <translation>Erro: Caracter inválido na linha %1 (número '%2' com mais de %3 dígitos)</translation>
-    </message>
-    <message>
-        <source>program requires m02 (END) at the end</source>
-        <translation>Erro: Programa requer m02 (END) no final</translation>
-    </message>
-    <message>
-        <source>invalid GO TO on line %1: block n%2 does not exist</source>
-        <translation>Erro: GO TO Inválido na linha %1 (bloco n%2 não existe)</translation>
-    </message>
-    <message>
-        <source>feed f%2 out of range on line %1: must be above 0 and at most 100 %</source>
-        <translation>Erro: Comando f fora da faixa na linha %1 (f%2; deve ser maior que 0 e no máximo 100 %)</translation>
-    </message>
-    <message>
-        <source>target %2 mm on line %1 is beyond the soft limit %3 mm</source>
-        <translation>Erro: Posição %2 mm na linha %1 além do limite de curso %3 mm</translation>
-    </message>
-    <message>
-        <source>axis %2 does not exist on this machine (line %1)</source>
-        <translation>Erro: Eixo %2 não existe nesta máquina (linha %1)</translation>
-    </message>
-    <message>
-        <source>Compilation completed successfully</source>
-        <translation>Compilação completada com sucesso !</translation>
-    </message>
-    <message>
-        <source>%1 compile error(s)</source>
-        <translation>Há %1 erro(s) de compilação !</translation>
-    </message>
-</context>
-<context>
     <name>Controller</name>
     <message>
         <source>%1: Positioning to x=%2 at maximum speed.</source>
@@ -163,7 +28,7 @@
         <translation>%1: Mudança do zero do sistema para x=%2.</translation>
     </message>
     <message>
-        <source>%1: Return to the rail's absolute zero.</source>
+        <source>%1: Return to the rail&apos;s absolute zero.</source>
         <translation>%1: Retorno para zero absoluto do trilho.</translation>
     </message>
     <message>
@@ -353,6 +218,604 @@
     <message>
         <source>Homing failed: centre switch not found</source>
         <translation>Falha ao ir para o centro: chave central não encontrada</translation>
+    </message>
+</context>
+<context>
+    <name>Diagnostic</name>
+    <message>
+        <source>every line must start with n (found &apos;%2&apos;)</source>
+        <translation>Erro: Toda linha deve iniciar com n.</translation>
+    </message>
+    <message>
+        <source>wrong n sequence on line %1: must be greater than %3</source>
+        <translation>Erro: Seqüência n errada na linha %1</translation>
+    </message>
+    <message>
+        <source>sequence number alone on line %1</source>
+        <translation>Erro: Seqüência n sozinha na linha %1</translation>
+    </message>
+    <message>
+        <source>separating spaces required on line %1 (found &apos;%2&apos;)</source>
+        <translation>Erro: Espaços para separação requeridos na linha %1</translation>
+    </message>
+    <message>
+        <source>there can be no more commands after %2 on line %1</source>
+        <translation>Erro: Não pode haver mais comandos após %2 na linha %1</translation>
+    </message>
+    <message>
+        <source>g00 requires an x word on line %1</source>
+        <translation>Erro: g00 requer comando x na linha %1</translation>
+    </message>
+    <message>
+        <source>g01 requires an x word on line %1</source>
+        <translation>Erro: g01 requer comando x na linha %1</translation>
+    </message>
+    <message>
+        <source>g04 without x word (time) on line %1</source>
+        <translation>Erro: g04 sem comando x (tempo) na linha %1</translation>
+    </message>
+    <message>
+        <source>g92 requires an x word on line %1</source>
+        <translation>Erro: g92 requer comando x na linha %1</translation>
+    </message>
+    <message>
+        <source>m03 without x word (block) on line %1</source>
+        <translation>Erro: m03 sem comando x (linha) na linha %1</translation>
+    </message>
+    <message>
+        <source>invalid value after g04 on line %1: the time %2 is negative</source>
+        <translation>Erro: Caracter inválido após g04 na linha %1</translation>
+    </message>
+    <message>
+        <source>invalid value after m03 on line %1: the block %2 is negative</source>
+        <translation>Erro: Caracter inválido após m03 na linha %1</translation>
+    </message>
+    <message>
+        <source>negative f command impossible on line %1 (%2)</source>
+        <translation>Erro: Comando f negativo impossível na linha %1</translation>
+    </message>
+    <message>
+        <source>invalid g command on line %1 (%2)</source>
+        <translation>Erro: Comando g inválido na linha %1</translation>
+    </message>
+    <message>
+        <source>invalid m command on line %1 (%2)</source>
+        <translation>Erro: Comando m inválido na linha %1</translation>
+    </message>
+    <message>
+        <source>g01 or g00 not defined on line %1</source>
+        <translation>Erro: g01 ou g00 não definidos na linha %1</translation>
+    </message>
+    <message>
+        <source>g01 needs f defined on line %1</source>
+        <translation>Erro: g01 precisa de f definido na linha %1</translation>
+    </message>
+    <message>
+        <source>invalid character or g00 does not take f on line %1</source>
+        <translation>Erro: Caracter inválido ou g00 não requer f na linha %1</translation>
+    </message>
+    <message>
+        <source>invalid character on line %1: &apos;%2&apos;</source>
+        <translation>Erro: Caracter inválido na linha %1 (&apos;%2&apos;)</translation>
+    </message>
+    <message>
+        <source>invalid character on line %1: malformed number &apos;%2&apos;</source>
+        <translation>Erro: Caracter inválido na linha %1 (número malformado &apos;%2&apos;)</translation>
+    </message>
+    <message>
+        <source>invalid character on line %1: &apos;%2&apos; must have exactly %3 digits</source>
+        <translation>Erro: Caracter inválido na linha %1 (&apos;%2&apos; deve ter %3 dígitos)</translation>
+    </message>
+    <message>
+        <source>invalid character on line %1: comment not closed</source>
+        <translation>Erro: Caracter inválido na linha %1 (comentário não fechado)</translation>
+    </message>
+    <message>
+        <source>invalid character on line %1: word &apos;%2&apos; repeated</source>
+        <translation>Erro: Caracter inválido na linha %1 (comando &apos;%2&apos; repetido)</translation>
+    </message>
+    <message>
+        <source>invalid character on line %1: n must be the first word (&apos;%2&apos;)</source>
+        <translation>Erro: Caracter inválido na linha %1 (n deve ser o primeiro comando: &apos;%2&apos;)</translation>
+    </message>
+    <message>
+        <source>invalid value after m03 on line %1: &apos;%2&apos; is not a block number</source>
+        <translation>Erro: Caracter inválido após m03 na linha %1 (&apos;%2&apos;)</translation>
+    </message>
+    <message>
+        <source>invalid character on line %1: number &apos;%2&apos; longer than %3 digits</source>
+        <translation>Erro: Caracter inválido na linha %1 (número &apos;%2&apos; com mais de %3 dígitos)</translation>
+    </message>
+    <message>
+        <source>program requires m02 (END) at the end</source>
+        <translation>Erro: Programa requer m02 (END) no final</translation>
+    </message>
+    <message>
+        <source>invalid GO TO on line %1: block n%2 does not exist</source>
+        <translation>Erro: GO TO Inválido na linha %1 (bloco n%2 não existe)</translation>
+    </message>
+    <message>
+        <source>feed f%2 out of range on line %1: must be above 0 and at most 100 %</source>
+        <translation>Erro: Comando f fora da faixa na linha %1 (f%2; deve ser maior que 0 e no máximo 100 %)</translation>
+    </message>
+    <message>
+        <source>target %2 mm on line %1 is beyond the soft limit %3 mm</source>
+        <translation>Erro: Posição %2 mm na linha %1 além do limite de curso %3 mm</translation>
+    </message>
+    <message>
+        <source>axis %2 does not exist on this machine (line %1)</source>
+        <translation>Erro: Eixo %2 não existe nesta máquina (linha %1)</translation>
+    </message>
+    <message>
+        <source>Compilation completed successfully</source>
+        <translation>Compilação completada com sucesso !</translation>
+    </message>
+    <message>
+        <source>%1 compile error(s)</source>
+        <translation>Há %1 erro(s) de compilação !</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::ExecutionPanel</name>
+    <message>
+        <source>Alarms :</source>
+        <translation>Alarmes :</translation>
+    </message>
+    <message>
+        <source>Status :</source>
+        <translation>Status :</translation>
+    </message>
+    <message>
+        <source>Automatic Mode :</source>
+        <translation>Modo Automático :</translation>
+    </message>
+    <message>
+        <source>Manual Mode :</source>
+        <translation>Modo Manual :</translation>
+    </message>
+    <message>
+        <source>Current Data :</source>
+        <translation>Dados Atuais :</translation>
+    </message>
+    <message>
+        <source>Controller :</source>
+        <translation>Controlador :</translation>
+    </message>
+    <message>
+        <source>Loop :</source>
+        <translation>Malha :</translation>
+    </message>
+    <message>
+        <source>Program :</source>
+        <translation>Programa :</translation>
+    </message>
+    <message>
+        <source>Line :</source>
+        <translation>Linha :</translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation>Continua</translation>
+    </message>
+    <message>
+        <source>Left</source>
+        <translation>Esquerda</translation>
+    </message>
+    <message>
+        <source>Right</source>
+        <translation>Direita</translation>
+    </message>
+    <message>
+        <source>STOP</source>
+        <translation>PÁRA</translation>
+    </message>
+    <message>
+        <source>Position :</source>
+        <translation>Posição :</translation>
+    </message>
+    <message>
+        <source>Speed :</source>
+        <translation>Velocidade :</translation>
+    </message>
+    <message>
+        <source>Acceleration :</source>
+        <translation>Aceleração :</translation>
+    </message>
+    <message>
+        <source>Proportional :</source>
+        <translation>Proporcional :</translation>
+    </message>
+    <message>
+        <source>Derivative :</source>
+        <translation>Derivativa :</translation>
+    </message>
+    <message>
+        <source>Integral :</source>
+        <translation>Integrativa :</translation>
+    </message>
+    <message>
+        <source>Setpoint :</source>
+        <translation>Setpoint :</translation>
+    </message>
+    <message>
+        <source>Actual value :</source>
+        <translation>Valor real :</translation>
+    </message>
+    <message>
+        <source>Error :</source>
+        <translation>Erro :</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::HistoryPanel</name>
+    <message>
+        <source>Export history</source>
+        <translation>Exportar histórico</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Hora</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>Código</translation>
+    </message>
+    <message>
+        <source>Text</source>
+        <translation>Texto</translation>
+    </message>
+    <message>
+        <source>Acknowledge alarms</source>
+        <translation>Reconhecer alarmes</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>Exportar CSV</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::JogPanel</name>
+    <message>
+        <source>Feed override %1 %</source>
+        <translation>Correção de avanço %1 %</translation>
+    </message>
+    <message>
+        <source>Jog speed %1 %</source>
+        <translation>Velocidade de jog %1 %</translation>
+    </message>
+    <message>
+        <source>◀ hold to jog</source>
+        <translation>◀ segure para mover</translation>
+    </message>
+    <message>
+        <source>hold to jog ▶</source>
+        <translation>segure para mover ▶</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Passo</translation>
+    </message>
+    <message>
+        <source>Single block</source>
+        <translation>Bloco a bloco</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Pausar</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Retomar</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Parar</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::MainWindow</name>
+    <message>
+        <source>Didactic D.N.C. system for the automatic rail</source>
+        <translation>Sistema D.N.C. didático para trilho automático</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Arquivo</translation>
+    </message>
+    <message>
+        <source>&amp;Select</source>
+        <translation>&amp;Selecionar</translation>
+    </message>
+    <message>
+        <source>E&amp;xit</source>
+        <translation>Sai&amp;r</translation>
+    </message>
+    <message>
+        <source>C&amp;ommand</source>
+        <translation>C&amp;omando</translation>
+    </message>
+    <message>
+        <source>&amp;Manual</source>
+        <translation>&amp;Manual</translation>
+    </message>
+    <message>
+        <source>&amp;Automatic</source>
+        <translation>&amp;Automático</translation>
+    </message>
+    <message>
+        <source>&amp;Compile file</source>
+        <translation>&amp;Compilar arquivo</translation>
+    </message>
+    <message>
+        <source>&amp;Execute file</source>
+        <translation>&amp;Executar arquivo</translation>
+    </message>
+    <message>
+        <source>O&amp;ptions</source>
+        <translation>O&amp;pções</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Idioma</translation>
+    </message>
+    <message>
+        <source>&amp;Theme</source>
+        <translation>&amp;Tema</translation>
+    </message>
+    <message>
+        <source>Classic (1996 colours)</source>
+        <translation>Clássico (cores de 1996)</translation>
+    </message>
+    <message>
+        <source>System</source>
+        <translation>Sistema</translation>
+    </message>
+    <message>
+        <source>Control &amp;law</source>
+        <translation>&amp;Lei de controle</translation>
+    </message>
+    <message>
+        <source>Classic (the 1996 difference equation)</source>
+        <translation>Clássica (a equação de diferenças de 1996)</translation>
+    </message>
+    <message>
+        <source>Engineered (profile, feed-forward)</source>
+        <translation>Projetada (perfil, pré-alimentação)</translation>
+    </message>
+    <message>
+        <source>G-code &amp;dialect</source>
+        <translation>&amp;Dialeto de código G</translation>
+    </message>
+    <message>
+        <source>Standard</source>
+        <translation>Padrão</translation>
+    </message>
+    <message>
+        <source>Classic (1996)</source>
+        <translation>Clássico (1996)</translation>
+    </message>
+    <message>
+        <source>&amp;Windows</source>
+        <translation>&amp;Janelas</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Programa</translation>
+    </message>
+    <message>
+        <source>Plots</source>
+        <translation>Gráficos</translation>
+    </message>
+    <message>
+        <source>Jog and run</source>
+        <translation>Movimento e execução</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>Histórico</translation>
+    </message>
+    <message>
+        <source>Rail</source>
+        <translation>Trilho</translation>
+    </message>
+    <message>
+        <source>E-STOP (Esc)</source>
+        <translation>EMERGÊNCIA (Esc)</translation>
+    </message>
+    <message>
+        <source>Reset E-stop</source>
+        <translation>Liberar emergência</translation>
+    </message>
+    <message>
+        <source>Acknowledge</source>
+        <translation>Reconhecer</translation>
+    </message>
+    <message>
+        <source>File message</source>
+        <translation>Mensagem de Arquivo</translation>
+    </message>
+    <message>
+        <source>Select the file first !</source>
+        <translation>Selecione o arquivo primeiro !</translation>
+    </message>
+    <message>
+        <source>End</source>
+        <translation>Final</translation>
+    </message>
+    <message>
+        <source>Compilation finished !</source>
+        <translation>Compilação terminada !</translation>
+    </message>
+    <message>
+        <source>There are compile error(s)!</source>
+        <translation>Há erro(s) de compilação!</translation>
+    </message>
+    <message>
+        <source>Manual</source>
+        <translation>Manual</translation>
+    </message>
+    <message>
+        <source>Automatic, ready</source>
+        <translation>Automático, pronto</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>Indo para o centro</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Executando</translation>
+    </message>
+    <message>
+        <source>Waiting</source>
+        <translation>Aguardando</translation>
+    </message>
+    <message>
+        <source>Paused</source>
+        <translation>Pausado</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Alarme</translation>
+    </message>
+    <message>
+        <source>Emergency stop</source>
+        <translation>Parada de emergência</translation>
+    </message>
+    <message>
+        <source>Unsaved program</source>
+        <translation>Programa não salvo</translation>
+    </message>
+    <message>
+        <source>The program has unsaved changes. Save them before leaving?</source>
+        <translation>O programa tem alterações não salvas. Salvar antes de sair?</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Salvar</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::PlotPanel</name>
+    <message>
+        <source>Export PNG</source>
+        <translation>Exportar PNG</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>Exportar CSV</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pausar</translation>
+    </message>
+    <message>
+        <source>Rolling window</source>
+        <translation>Janela de tempo</translation>
+    </message>
+    <message>
+        <source>setpoint</source>
+        <translation>setpoint</translation>
+    </message>
+    <message>
+        <source>position</source>
+        <translation>posição</translation>
+    </message>
+    <message>
+        <source>position (mm)</source>
+        <translation>posição (mm)</translation>
+    </message>
+    <message>
+        <source>following error (mm)</source>
+        <translation>erro de seguimento (mm)</translation>
+    </message>
+    <message>
+        <source>drive (DAC code)</source>
+        <translation>acionamento (código DAC)</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::ProgramPanel</name>
+    <message>
+        <source>Save</source>
+        <translation>Salvar</translation>
+    </message>
+    <message>
+        <source>Start from the selected block</source>
+        <translation>Executar a partir do bloco selecionado</translation>
+    </message>
+    <message>
+        <source>Saves atomically: a crash never leaves half a file</source>
+        <translation>Salva de forma atômica: uma falha nunca deixa meio arquivo</translation>
+    </message>
+    <message>
+        <source>cannot open &apos;%1&apos;: %2</source>
+        <translation>não foi possível abrir &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>cannot save &apos;%1&apos;: %2</source>
+        <translation>não foi possível salvar &apos;%1&apos;: %2</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::RailView</name>
+    <message>
+        <source>left end</source>
+        <translation>fim esquerdo</translation>
+    </message>
+    <message>
+        <source>centre</source>
+        <translation>centro</translation>
+    </message>
+    <message>
+        <source>right end</source>
+        <translation>fim direito</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::SelectFileDialog</name>
+    <message>
+        <source>Select</source>
+        <translation>Selecionar</translation>
+    </message>
+    <message>
+        <source>Files</source>
+        <translation>Arquivos</translation>
+    </message>
+    <message>
+        <source>E&amp;xit</source>
+        <translation>Sai&amp;r</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::StartScreen</name>
+    <message>
+        <source>Didactic D.N.C. system for the automatic rail</source>
+        <translation>Sistema D.N.C. didático para trilho automático</translation>
+    </message>
+    <message>
+        <source>University of São Paulo</source>
+        <translation>Universidade de São Paulo</translation>
+    </message>
+    <message>
+        <source>Polytechnic School</source>
+        <translation>Escola Politécnica</translation>
+    </message>
+    <message>
+        <source>Numerical Control for the robot&apos;s rail</source>
+        <translation>Comando Numérico para trilho de comando do robô</translation>
+    </message>
+    <message>
+        <source>Original design, 1996. Rebuilt and finished as trilho.</source>
+        <translation>Projeto original de 1996. Reconstruído e concluído como trilho.</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
     </message>
 </context>
 </TS>

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <QCoreApplication>
+#include <QFile>
+#include <QXmlStreamReader>
 
 #include "core/compiler.h"
 #include "core/diagnostic_text.h"
@@ -59,6 +61,39 @@ TEST(TranslationsPtBr, OriginalTexts) {
 TEST(TranslationsLanguages, UnknownLanguageIsRefused) {
     app();
     EXPECT_FALSE(installLanguage(QStringLiteral("xx")));
+}
+
+}  // namespace
+}  // namespace trilho
+
+namespace trilho {
+namespace {
+
+// Every text lupdate found in the sources has a translation in both files (translations/tools/
+// update.sh regenerates them and fails on a missing text; this guards the committed files).
+TEST(TranslationFiles, NoUnfinishedOrEmptyTranslation) {
+    for (const char* lang : {"pt_BR", "es"}) {
+        QFile f(QStringLiteral(TRILHO_TRANSLATIONS_DIR "/trilho_%1.ts").arg(QLatin1String(lang)));
+        ASSERT_TRUE(f.open(QIODevice::ReadOnly)) << lang;
+        QXmlStreamReader xml(&f);
+        int messages = 0;
+        QString source;
+        while (!xml.atEnd()) {
+            xml.readNext();
+            if (!xml.isStartElement()) continue;
+            if (xml.name() == QLatin1String("source")) source = xml.readElementText();
+            if (xml.name() == QLatin1String("translation")) {
+                EXPECT_NE(xml.attributes().value(QLatin1String("type")),
+                          QLatin1String("unfinished"))
+                    << lang << ": " << source.toStdString();
+                EXPECT_FALSE(xml.readElementText().isEmpty())
+                    << lang << ": " << source.toStdString();
+                ++messages;
+            }
+        }
+        EXPECT_FALSE(xml.hasError()) << xml.errorString().toStdString();
+        EXPECT_GT(messages, 150) << lang;
+    }
 }
 
 }  // namespace

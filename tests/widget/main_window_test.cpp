@@ -1,0 +1,302 @@
+// The screens as an operator drives them, offscreen, on the simulated rail in real time.
+// Every wait is on an observed condition with a deadline (QTRY_*), never a bare sleep.
+#include <QAction>
+#include <QComboBox>
+#include <QFile>
+#include <QGroupBox>
+#include <QLineEdit>
+#include <QListView>
+#include <QListWidget>
+#include <QMenuBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTextBlock>
+#include <QToolButton>
+
+#include "translations/i18n.h"
+#include "ui/code_editor.h"
+#include "ui/execution_panel.h"
+#include "ui/gauge_widget.h"
+#include "ui/machine_link.h"
+#include "ui/main_window.h"
+#include "ui/plot_panel.h"
+#include "ui/program_panel.h"
+#include "ui/select_file_dialog.h"
+#include "ui/start_screen.h"
+#include "ui/theme.h"
+
+using namespace trilho;
+using namespace trilho::ui;
+
+class MainWindowTest : public QObject {
+    Q_OBJECT
+
+  private:
+    QTemporaryDir dir_;
+    std::unique_ptr<QSettings> settings_;
+    std::unique_ptr<MachineLink> link_;
+    std::unique_ptr<MainWindow> window_;
+
+    ExecutionPanel* panel() { return window_->panel(); }
+    const ControllerStatus& status() { return link_->status(); }
+    QString programs(const char* name) {
+        return QStringLiteral(TRILHO_PROGRAMS_DIR "/") + QLatin1String(name);
+    }
+    QString writeProgram(const char* name, const QByteArray& text) {
+        const QString path = dir_.filePath(QLatin1String(name));
+        QFile f(path);
+        f.open(QIODevice::WriteOnly);
+        f.write(text);
+        return path;
+    }
+    void goAutomatic() {
+        window_->automaticAction()->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(
+            status().automatic && status().homed && status().state == ControllerState::AutoIdle,
+            30000);
+    }
+
+  private slots:
+    void init() {
+        installLanguage(QStringLiteral("en"));
+        settings_ = std::make_unique<QSettings>(dir_.filePath(QStringLiteral("s.ini")),
+                                                QSettings::IniFormat);
+        settings_->clear();
+        link_ = std::make_unique<MachineLink>(MachineProfile::rail());
+        window_ = std::make_unique<MainWindow>(*link_, *settings_);
+        window_->resize(1280, 900);
+        window_->show();
+        QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+        window_->activateWindow();
+    }
+    void cleanup() {
+        window_.reset();
+        link_.reset();
+    }
+
+    void startScreenLeadsOnWithOk() {
+        StartScreen start;
+        QSignalSpy accepted(&start, &QDialog::accepted);
+        start.show();
+        QTest::mouseClick(start.okButton(), Qt::LeftButton);
+        QCOMPARE(accepted.count(), 1);
+    }
+
+    void modesEnableAndGreyAsTheOriginal() {
+        // Manual at start: Compile/Execute disabled, manual buttons on, automatic fields grey.
+        QVERIFY(window_->manualAction()->isChecked());
+        QVERIFY(!window_->compileAction()->isEnabled());
+        QVERIFY(!window_->executeAction()->isEnabled());
+        QVERIFY(panel()->leftButton()->isEnabled());
+        QCOMPARE(panel()->programField()->palette().color(QPalette::Base), kSilver);
+        QVERIFY(!panel()->continueButton()->isEnabled());
+        goAutomatic();
+        QVERIFY(window_->automaticAction()->isChecked());
+        QVERIFY(window_->compileAction()->isEnabled());
+        QVERIFY(window_->executeAction()->isEnabled());
+        QVERIFY(!panel()->leftButton()->isEnabled());
+        QVERIFY(!panel()->stopButton()->isEnabled());
+        QCOMPARE(panel()->programField()->palette().color(QPalette::Base), QColor(Qt::white));
+        window_->manualAction()->trigger();
+        QTRY_VERIFY(!status().automatic);
+        QTRY_VERIFY(!window_->compileAction()->isEnabled());
+        QVERIFY(panel()->rightButton()->isEnabled());
+    }
+
+    void selectDialogDoubleClickPicksAFile() {
+        SelectFileDialog dialog(QStringLiteral(TRILHO_PROGRAMS_DIR));
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        QListView* list = dialog.fileList();
+        QModelIndex found;
+        QTRY_VERIFY_WITH_TIMEOUT(
+            [&] {
+                for (int r = 0; r < list->model()->rowCount(list->rootIndex()); ++r) {
+                    const QModelIndex i = list->model()->index(r, 0, list->rootIndex());
+                    if (i.data().toString() == QLatin1String("ciclo_carga.G")) found = i;
+                }
+                return found.isValid();
+            }(),
+            10000);
+        // The *.G pattern filters: the machine profile (.json) is not listed.
+        dialog.setPattern(QStringLiteral("*.json"));
+        QTRY_VERIFY(list->model()->rowCount(list->rootIndex()) == 0 ||
+                    list->model()
+                        ->index(0, 0, list->rootIndex())
+                        .data()
+                        .toString()
+                        .endsWith(QLatin1String(".json")));
+        dialog.setPattern(QStringLiteral("*.G"));
+        QTRY_VERIFY(list->model()->rowCount(list->rootIndex()) > 0);
+        for (int r = 0; r < list->model()->rowCount(list->rootIndex());
+             ++r) {  // sorting may have moved it
+            const QModelIndex i = list->model()->index(r, 0, list->rootIndex());
+            if (i.data().toString() == QLatin1String("ciclo_carga.G")) found = i;
+        }
+        list->scrollTo(found);
+        const QRect r = list->visualRect(found);
+        QVERIFY(r.isValid());
+        QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, r.center());
+        QTest::mouseDClick(list->viewport(), Qt::LeftButton, {}, r.center());
+        QCOMPARE(dialog.result(), int(QDialog::Accepted));
+        QCOMPARE(dialog.selectedFile(), programs("ciclo_carga.G"));
+        QVERIFY(window_->selectProgram(dialog.selectedFile()));
+        QCOMPARE(panel()->programField()->text(), QStringLiteral("ciclo_carga.G"));
+    }
+
+    void compilingABadProgramFillsTheAlarmsList() {
+        goAutomatic();
+        window_->classicDialectAction()->trigger();
+        QVERIFY(window_->selectProgram(QStringLiteral(TRILHO_TEST_DATA "/com_erros.classic.G")));
+        window_->compileAction()->trigger();
+        QComboBox* alarms = panel()->alarms();
+        QCOMPARE(alarms->count(), 9);  // as `trilho-cli compile --dialect classic` lists them
+        QCOMPARE(alarms->currentText(), QStringLiteral("9 compile error(s)"));
+        QVERIFY(alarms->itemText(3).startsWith(QStringLiteral("3: invalid g command on line 30")));
+        QCOMPARE(window_->programPanel()->editor()->markedLines(), 9);
+        // Executing it does not move: recompiled, refused.
+        const double before = status().servo.positionMm;
+        window_->executeAction()->trigger();
+        QCOMPARE(panel()->onlineStatusField()->text(),
+                 QStringLiteral("There are compile error(s)!"));
+        QTest::qWait(200);  // nothing to wait for: proving that nothing happens takes time
+        QVERIFY(std::abs(status().servo.positionMm - before) < 0.1);
+        // A click on a listed diagnostic jumps to its line.
+        QListWidget* list = window_->programPanel()->diagnosticsList();
+        list->setCurrentRow(3);
+        emit list->itemClicked(list->item(3));
+        QCOMPARE(window_->programPanel()->cursorLine(), 3);
+    }
+
+    void executingAGoodProgramMovesTheScreen() {
+        goAutomatic();
+        QVERIFY(window_->selectProgram(programs("exemplo_documento.G")));
+        window_->executeAction()->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(panel()->onlineStatusField()->text(),
+                                  QStringLiteral("POSITIONING"), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            panel()->lineField()->text() == QLatin1String("0020") || status().programFinished,
+            10000);
+        QTRY_VERIFY_WITH_TIMEOUT(status().programFinished, 15000);
+        QCOMPARE(panel()->statusList()->currentText(), QStringLiteral("Program finished !"));
+        QCOMPARE(panel()->onlineStatusField()->text(), QStringLiteral("Program ended !"));
+        // The gauges were rescaled to the last move (from where the platform was, as the VB
+        // took pos_geral, to 20 mm) and show the position.
+        QVERIFY(std::abs(panel()->realGauge()->minimum() - 10.0) < 0.1);
+        QCOMPARE(panel()->realGauge()->maximum(), 20.0);
+        QTRY_VERIFY(std::abs(panel()->realGauge()->value() - 20.0) < 0.1);
+        QVERIFY(std::abs(panel()->errorGauge()->maximum() - 10.0) < 0.1);
+        QVERIFY(std::abs(panel()->positionField()->text().toDouble() - 20.0) < 0.1);
+        QVERIFY(window_->plots()->sampleCount() > 10);
+    }
+
+    void continueIsEnabledOnlyWhileM00Waits() {
+        goAutomatic();
+        QVERIFY(window_->selectProgram(
+            writeProgram("m00.G", "N10 G0 X30\nN20 M0\nN30 G0 X0\nN40 M2\n")));
+        window_->executeAction()->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(panel()->continueButton()->isEnabled(), 10000);
+        QCOMPARE(panel()->onlineStatusField()->text(), QStringLiteral("Press Continue"));
+        QCOMPARE(panel()->lineField()->text(), QStringLiteral("0020"));
+        QTest::mouseClick(panel()->continueButton(), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(status().programFinished, 10000);
+        QVERIFY(!panel()->continueButton()->isEnabled());
+    }
+
+    void manualKeysDriveTheRail() {
+        window_->setFocus();
+        QTest::keyClick(window_.get(), '>');
+        QTest::keyClick(window_.get(), '>');
+        QTRY_COMPARE(int(status().manualCode), 130);
+        QTRY_VERIFY(status().servo.positionMm > 1.0);
+        QTest::keyClick(window_.get(), '<');
+        QTRY_COMPARE(int(status().manualCode), 129);
+        QTest::keyClick(window_.get(), Qt::Key_Space);
+        QTRY_COMPARE(int(status().manualCode), 128);
+        QTest::mouseClick(panel()->leftButton(), Qt::LeftButton);
+        QTRY_COMPARE(int(status().manualCode), 127);
+        QTest::mouseClick(panel()->stopButton(), Qt::LeftButton);
+        QTRY_COMPARE(int(status().manualCode), 128);
+    }
+
+    void escapeIsTheEmergencyStop() {
+        QTest::keyClick(window_.get(), '>');
+        QTRY_COMPARE(int(status().manualCode), 129);
+        QTest::keyClick(window_.get(), Qt::Key_Escape);
+        QTRY_COMPARE(status().state, ControllerState::EStop);
+        QCOMPARE(link_->rail().driveCode(), 128);
+        QVERIFY(window_->emergencyButton()->isVisible());
+    }
+
+    void editingAGainReachesTheLoop() {
+        QLineEdit* kp = panel()->gainField(0);
+        QTRY_COMPARE(kp->text(), QStringLiteral("1.2"));
+        kp->setFocus();
+        kp->selectAll();
+        QTest::keyClicks(kp, QStringLiteral("2.5"));
+        QTest::keyClick(kp, Qt::Key_Return);
+        QTRY_COMPARE(status().gains.kp, 2.5);
+        QCOMPARE(settings_->value(QStringLiteral("gains/engineered/kp")).toDouble(), 2.5);
+        // A letter is refused by the validator: the loop keeps its gain.
+        QLineEdit* kd = panel()->gainField(1);
+        kd->setFocus();
+        kd->selectAll();
+        QTest::keyClicks(kd, QStringLiteral("x"));
+        QTest::keyClick(kd, Qt::Key_Return);
+        QTRY_COMPARE(status().gains.kd, 0.02);
+    }
+
+    void portugueseCaptionsAreTheOriginals() {
+        window_->setLanguage(QStringLiteral("pt_BR"));
+        QTRY_COMPARE(panel()->stopButton()->text(),
+                     QStringLiteral("PÁRA"));  // LanguageChange is posted
+        QCOMPARE(panel()->continueButton()->text(), QStringLiteral("Continua"));
+        QCOMPARE(panel()->automaticFrame()->title(), QStringLiteral("Modo Automático :"));
+        QCOMPARE(panel()->manualFrame()->title(), QStringLiteral("Modo Manual :"));
+        QCOMPARE(window_->menuBar()->actions().at(0)->text(), QStringLiteral("&Arquivo"));
+        QCOMPARE(window_->menuBar()->actions().at(1)->text(), QStringLiteral("C&omando"));
+        QCOMPARE(window_->compileAction()->text(), QStringLiteral("&Compilar arquivo"));
+        QCOMPARE(window_->windowTitle(),
+                 QStringLiteral("Sistema D.N.C. didático para trilho automático"));
+        QCOMPARE(settings_->value(QStringLiteral("language")).toString(), QStringLiteral("pt_BR"));
+        window_->setLanguage(QStringLiteral("en"));
+        QTRY_COMPARE(panel()->stopButton()->text(), QStringLiteral("STOP"));
+    }
+
+    void editorSavesAtomicallyAndPlotsExport() {
+        const QString path = writeProgram("edit.G", "G0 X1\nM2\n");
+        QVERIFY(window_->selectProgram(path));
+        ProgramPanel* program = window_->programPanel();
+        QVERIFY(!program->dirty());
+        program->editor()->appendPlainText(QStringLiteral("( edited )"));
+        QVERIFY(program->dirty());
+        QString error;
+        QVERIFY(program->save(&error));
+        QVERIFY(!program->dirty());
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(QString::fromUtf8(f.readAll()), QStringLiteral("G0 X1\nM2\n\n( edited )"));
+        QTRY_VERIFY(window_->plots()->sampleCount() > 5);
+        QVERIFY(window_->plots()->exportPng(dir_.filePath(QStringLiteral("p.png"))));
+        QVERIFY(window_->plots()->exportCsv(dir_.filePath(QStringLiteral("p.csv"))));
+        QFile csv(dir_.filePath(QStringLiteral("p.csv")));
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        QVERIFY(csv.readLine().startsWith("t_s,setpoint_mm,position_mm,error_mm,drive"));
+    }
+
+    void windowScalesDownTo1024x768() {
+        window_->resize(1024, 768);
+        QTRY_VERIFY(window_->height() <= 768);
+        QVERIFY(window_->width() <= 1024);
+        QVERIFY(panel()->isVisible());
+        QVERIFY(
+            panel()->positionField()->width() >=
+            panel()->positionField()->fontMetrics().horizontalAdvance(QStringLiteral("-1234.56")));
+    }
+};
+
+QTEST_MAIN(MainWindowTest)
+#include "main_window_test.moc"

@@ -1,0 +1,328 @@
+#include "ui/execution_panel.h"
+
+#include <QComboBox>
+#include <QDoubleValidator>
+#include <QEvent>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPainter>
+#include <QPushButton>
+#include <QStyleOption>
+#include <cmath>
+
+#include "ui/gauge_widget.h"
+#include "ui/theme.h"
+
+namespace trilho {
+namespace ui {
+
+namespace {
+QGroupBox* frame(QWidget* parent) {
+    auto* g = new QGroupBox(parent);
+    g->setObjectName(QStringLiteral("vbFrame"));
+    return g;
+}
+QString mm(double v, int decimals = 2) {
+    return QString::number(v, 'f', decimals);
+}
+}  // namespace
+
+QLineEdit* ExecutionPanel::readOnly() {
+    auto* e = new QLineEdit(this);
+    e->setReadOnly(true);
+    e->setFocusPolicy(Qt::NoFocus);
+    return e;
+}
+
+ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
+    setObjectName(QStringLiteral("executionPanel"));
+    setAutoFillBackground(true);
+    auto* grid = new QGridLayout(this);
+    grid->setContentsMargins(24, 6, 24, 8);
+    grid->setHorizontalSpacing(36);
+    grid->setVerticalSpacing(4);
+
+    // Alarmes and Status, the two drop-down lists across the top (360,120 / 1560,120,7695,300).
+    alarmsLabel_ = new QLabel(this);
+    statusLabel_ = new QLabel(this);
+    alarms_ = new QComboBox(this);
+    status_ = new QComboBox(this);
+    for (QComboBox* c : {alarms_, status_}) {
+        c->setEditable(true);  // the box shows the latest line or the summary, as the VB's
+        c->lineEdit()->setReadOnly(true);
+        c->setMaxVisibleItems(20);
+        c->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        c->setMinimumContentsLength(40);
+    }
+    auto* top = new QGridLayout;
+    top->addWidget(alarmsLabel_, 0, 0);
+    top->addWidget(alarms_, 0, 1);
+    top->addWidget(statusLabel_, 1, 0);
+    top->addWidget(status_, 1, 1);
+    top->setColumnStretch(1, 1);
+    grid->addLayout(top, 0, 0, 1, 2);
+
+    // Modo Automático (600,1200,3975,2175).
+    autoFrame_ = frame(this);
+    auto* a = new QGridLayout(autoFrame_);
+    programLabel_ = new QLabel(autoFrame_);
+    lineLabel_ = new QLabel(autoFrame_);
+    program_ = readOnly();
+    line_ = readOnly();
+    continue_ = new QPushButton(autoFrame_);
+    continue_->setEnabled(false);
+    continue_->setMinimumSize(81, 25);
+    online_ = readOnly();
+    QPalette op = online_->palette();
+    op.setColor(QPalette::Text, kOnlineStatusText);
+    online_->setPalette(op);
+    online_->setAlignment(Qt::AlignCenter);
+    a->addWidget(programLabel_, 0, 0);
+    a->addWidget(program_, 0, 1);
+    a->addWidget(lineLabel_, 1, 0);
+    a->addWidget(line_, 1, 1);
+    a->addWidget(continue_, 2, 1, Qt::AlignLeft);
+    a->addWidget(online_, 3, 0, 1, 2);
+    a->setColumnStretch(1, 1);
+
+    // Modo Manual (600,3840,3975,2055): Esquerda "<", Direita ">", PÁRA.
+    manualFrame_ = frame(this);
+    auto* m = new QGridLayout(manualFrame_);
+    leftLabel_ = new QLabel(manualFrame_);
+    rightLabel_ = new QLabel(manualFrame_);
+    left_ = new QPushButton(QStringLiteral("<"), manualFrame_);
+    right_ = new QPushButton(QStringLiteral(">"), manualFrame_);
+    stop_ = new QPushButton(manualFrame_);
+    for (QPushButton* b : {left_, right_}) {
+        b->setMinimumSize(41, 33);
+        QFont f = b->font();
+        f.setBold(true);
+        f.setPointSize(f.pointSize() + 4);
+        b->setFont(f);
+        b->setFocusPolicy(Qt::NoFocus);
+    }
+    stop_->setFocusPolicy(Qt::NoFocus);
+    m->addWidget(leftLabel_, 0, 0, Qt::AlignCenter);
+    m->addWidget(rightLabel_, 0, 2, Qt::AlignCenter);
+    m->addWidget(left_, 1, 0, Qt::AlignCenter);
+    m->addWidget(right_, 1, 2, Qt::AlignCenter);
+    m->addWidget(stop_, 2, 0, 1, 3);
+    m->setColumnStretch(1, 1);
+
+    // Dados Atuais (5520,960,3255,1575).
+    dataFrame_ = frame(this);
+    auto* d = new QGridLayout(dataFrame_);
+    positionLabel_ = new QLabel(dataFrame_);
+    speedLabel_ = new QLabel(dataFrame_);
+    accelerationLabel_ = new QLabel(dataFrame_);
+    position_ = readOnly();
+    speed_ = readOnly();
+    acceleration_ = readOnly();
+    positionUnit_ = new QLabel(QStringLiteral("mm"), dataFrame_);
+    speedUnit_ = new QLabel(QStringLiteral("mm/s"), dataFrame_);
+    accelerationUnit_ = new QLabel(QStringLiteral("mm/s*s"), dataFrame_);
+    QLabel* dl[] = {positionLabel_, speedLabel_, accelerationLabel_};
+    QLineEdit* de[] = {position_, speed_, acceleration_};
+    QLabel* du[] = {positionUnit_, speedUnit_, accelerationUnit_};
+    for (int i = 0; i < 3; ++i) {
+        d->addWidget(dl[i], i, 0);
+        d->addWidget(de[i], i, 1);
+        d->addWidget(du[i], i, 2);
+        de[i]->setAlignment(Qt::AlignRight);
+        de[i]->setMinimumWidth(de[i]->fontMetrics().horizontalAdvance(QStringLiteral("-88888.88")) +
+                               12);
+    }
+    d->setColumnStretch(1, 1);
+
+    // Controlador (5520,2640): Proporcional, Derivativa, Integrativa - validated, live.
+    controllerFrame_ = frame(this);
+    auto* c = new QGridLayout(controllerFrame_);
+    for (int i = 0; i < 3; ++i) {
+        gainLabels_[i] = new QLabel(controllerFrame_);
+        gains_[i] = new QLineEdit(controllerFrame_);
+        auto* v = new QDoubleValidator(0.0, 1000.0, 8, gains_[i]);
+        v->setLocale(QLocale::c());  // "0.2" as the VB screen wrote it, whatever the desktop locale
+        v->setNotation(QDoubleValidator::StandardNotation);
+        gains_[i]->setValidator(v);
+        gains_[i]->setAlignment(Qt::AlignRight);
+        c->addWidget(gainLabels_[i], i, 0);
+        c->addWidget(gains_[i], i, 1);
+        connect(gains_[i], &QLineEdit::editingFinished, this, [this, i] {
+            bool ok = false;
+            const double value = QLocale::c().toDouble(gains_[i]->text(), &ok);
+            markGainInvalid(i, !ok);
+            if (ok) emit gainEdited(i, value);
+        });
+        connect(gains_[i], &QLineEdit::textEdited, this,
+                [this, i] { markGainInvalid(i, !gains_[i]->hasAcceptableInput()); });
+    }
+    c->setColumnStretch(1, 1);
+
+    // Malha (5520,4320): Setpoint, Valor real (green needle), Erro (red needle).
+    loopFrame_ = frame(this);
+    auto* l = new QGridLayout(loopFrame_);
+    setpointLabel_ = new QLabel(loopFrame_);
+    setpoint_ = readOnly();
+    setpoint_->setAlignment(Qt::AlignRight);
+    setpoint_->setMinimumWidth(
+        setpoint_->fontMetrics().horizontalAdvance(QStringLiteral("-88888.88")) + 12);
+    setpointUnit_ = new QLabel(QStringLiteral("mm"), loopFrame_);
+    realLabel_ = new QLabel(loopFrame_);
+    errorLabel_ = new QLabel(loopFrame_);
+    real_ = new GaugeWidget(QColor(0, 160, 0), loopFrame_);
+    error_ = new GaugeWidget(QColor(210, 0, 0), loopFrame_);
+    l->addWidget(setpointLabel_, 0, 0);
+    l->addWidget(setpoint_, 0, 1);
+    l->addWidget(setpointUnit_, 0, 2);
+    l->addWidget(realLabel_, 1, 0);
+    l->addWidget(real_, 1, 1, 1, 2);
+    l->addWidget(errorLabel_, 2, 0);
+    l->addWidget(error_, 2, 1, 1, 2);
+    l->setColumnStretch(1, 1);
+
+    grid->addWidget(autoFrame_, 1, 0, 2, 1);
+    grid->addWidget(manualFrame_, 3, 0, 2, 1);
+    grid->addWidget(dataFrame_, 1, 1);
+    grid->addWidget(controllerFrame_, 2, 1, 2, 1);
+    grid->addWidget(loopFrame_, 4, 1);
+    grid->setColumnStretch(0, 4);
+    grid->setColumnStretch(1, 3);
+    grid->setRowStretch(5, 1);
+
+    connect(continue_, &QPushButton::clicked, this, &ExecutionPanel::continuePressed);
+    connect(left_, &QPushButton::clicked, this, &ExecutionPanel::leftPressed);
+    connect(right_, &QPushButton::clicked, this, &ExecutionPanel::rightPressed);
+    connect(stop_, &QPushButton::clicked, this, &ExecutionPanel::stopPressed);
+    retranslate();
+    setAutomaticMode(false);
+}
+
+void ExecutionPanel::retranslate() {
+    alarmsLabel_->setText(tr("Alarms :"));
+    statusLabel_->setText(tr("Status :"));
+    autoFrame_->setTitle(tr("Automatic Mode :"));
+    manualFrame_->setTitle(tr("Manual Mode :"));
+    dataFrame_->setTitle(tr("Current Data :"));
+    controllerFrame_->setTitle(tr("Controller :"));
+    loopFrame_->setTitle(tr("Loop :"));
+    programLabel_->setText(tr("Program :"));
+    lineLabel_->setText(tr("Line :"));
+    continue_->setText(tr("Continue"));
+    leftLabel_->setText(tr("Left"));
+    rightLabel_->setText(tr("Right"));
+    stop_->setText(tr("STOP"));
+    positionLabel_->setText(tr("Position :"));
+    speedLabel_->setText(tr("Speed :"));
+    accelerationLabel_->setText(tr("Acceleration :"));
+    gainLabels_[0]->setText(tr("Proportional :"));
+    gainLabels_[1]->setText(tr("Derivative :"));
+    gainLabels_[2]->setText(tr("Integral :"));
+    setpointLabel_->setText(tr("Setpoint :"));
+    realLabel_->setText(tr("Actual value :"));
+    errorLabel_->setText(tr("Error :"));
+}
+
+void ExecutionPanel::paintEvent(QPaintEvent*) {
+    QStyleOption option;
+    option.initFrom(this);
+    QPainter painter(this);
+    style()->drawPrimitive(QStyle::PE_Widget, &option, &painter, this);
+}
+
+void ExecutionPanel::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::LanguageChange) retranslate();
+    QWidget::changeEvent(e);
+}
+
+void ExecutionPanel::setAutomaticMode(bool automatic) {
+    automatic_ = automatic;
+    // Automatico_Click / Manual_Click: the automatic fields turn white or grey (&HC0C0C0), the
+    // manual buttons enable or disable.
+    const QColor fieldColour = automatic ? Qt::white : kSilver;
+    for (QLineEdit* e : {program_, line_, online_, setpoint_, speed_, acceleration_}) {
+        QPalette p = e->palette();
+        p.setColor(QPalette::Base, fieldColour);
+        e->setPalette(p);
+    }
+    left_->setEnabled(!automatic);
+    right_->setEnabled(!automatic);
+    stop_->setEnabled(!automatic);
+}
+
+void ExecutionPanel::setProgramName(const QString& name) {
+    program_->setText(name);
+    program_->setCursorPosition(0);  // show the start of a long name
+    program_->setToolTip(name);
+}
+
+void ExecutionPanel::addStatusLine(const QString& line) {
+    status_->addItem(line);
+    status_->setCurrentIndex(status_->count() - 1);
+    if (status_->count() > 5000) status_->removeItem(0);  // the journal keeps everything
+}
+
+void ExecutionPanel::addAlarmLine(const QString& line) {
+    alarms_->addItem(line);
+    alarms_->setEditText(line);
+}
+
+void ExecutionPanel::clearAlarms() {
+    alarms_->clear();
+    alarms_->setEditText(QString());
+}
+
+void ExecutionPanel::setAlarmSummary(const QString& text) {
+    alarms_->setEditText(text);
+}
+void ExecutionPanel::setLineText(const QString& text) {
+    line_->setText(text);
+}
+void ExecutionPanel::setOnlineStatus(const QString& text) {
+    online_->setText(text);
+}
+
+void ExecutionPanel::showGains(const LoopGains& g) {
+    const double values[3] = {g.kp, g.kd, g.ki};
+    for (int i = 0; i < 3; ++i) {
+        if (gains_[i]->hasFocus()) continue;  // never overwrite what the operator is typing
+        gains_[i]->setText(QLocale::c().toString(values[i], 'g', 8));
+        markGainInvalid(i, false);
+    }
+}
+
+void ExecutionPanel::markGainInvalid(int which, bool invalid) {
+    QPalette p = gains_[which]->palette();
+    p.setColor(QPalette::Base, invalid ? QColor(255, 200, 200) : Qt::white);
+    gains_[which]->setPalette(p);
+}
+
+void ExecutionPanel::showStatus(const ControllerStatus& s) {
+    if (s.automatic != automatic_) setAutomaticMode(s.automatic);
+    position_->setText(mm(s.servo.positionMm));
+    speed_->setText(mm(s.servo.velocityMmS, 1));
+    acceleration_->setText(mm(s.servo.accelerationMmS2, 0));
+    continue_->setEnabled(s.state == ControllerState::Paused && s.pause == PauseReason::M00);
+    const bool moving = s.servo.mode == ServoMode::Move;
+    if (moving || s.state == ControllerState::Running) {
+        setpoint_->setText(mm(s.servo.targetMm));
+        // The VB rescaled both gauges at each posiciona: start..target and 0..length.
+        if (s.servo.targetMm != gaugeTarget_ || s.servo.moveStartMm != gaugeStart_) {
+            gaugeTarget_ = s.servo.targetMm;
+            gaugeStart_ = s.servo.moveStartMm;
+            real_->setRange(std::min(gaugeStart_, gaugeTarget_),
+                            std::max(gaugeStart_, gaugeTarget_));
+            error_->setRange(0.0, std::abs(gaugeTarget_ - gaugeStart_));
+        }
+    }
+    real_->setValue(s.servo.positionMm);
+    error_->setValue(std::abs(gaugeTarget_ - s.servo.positionMm));
+    if (s.blockN >= 0 &&
+        (s.state == ControllerState::Running || s.state == ControllerState::Waiting ||
+         s.state == ControllerState::Paused))
+        line_->setText(QStringLiteral("%1").arg(s.blockN, 4, 10, QLatin1Char('0')));
+}
+
+}  // namespace ui
+}  // namespace trilho

@@ -1,0 +1,48 @@
+#include "ui/gauge_widget.h"
+
+#include <QPainter>
+#include <algorithm>
+
+namespace trilho {
+namespace ui {
+
+GaugeWidget::GaugeWidget(QColor needle, QWidget* parent) : QWidget(parent), needle_(needle) {
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+}
+
+void GaugeWidget::setRange(double min, double max) {
+    if (min == min_ && max == max_) return;
+    min_ = min;
+    max_ = max;
+    update();
+}
+
+void GaugeWidget::setValue(double value) {
+    if (value == value_) return;
+    value_ = value;
+    update();
+}
+
+void GaugeWidget::paintEvent(QPaintEvent*) {
+    QPainter p(this);
+    p.setRenderHint(QPainter::Antialiasing);
+    const QRectF r = QRectF(rect()).adjusted(1, 1, -1, -1);
+    p.fillRect(r, Qt::white);
+    p.setPen(QPen(Qt::darkGray, 1));
+    p.drawRect(r);
+    // Ten ticks, as the VB gauge's face.
+    p.setPen(QPen(Qt::gray, 1));
+    for (int i = 1; i < 10; ++i) {
+        const double x = r.left() + r.width() * i / 10.0;
+        p.drawLine(QPointF(x, r.bottom()),
+                   QPointF(x, r.bottom() - r.height() * (i == 5 ? 0.5 : 0.3)));
+    }
+    const double span = max_ - min_;
+    const double f = span > 0 ? std::clamp((value_ - min_) / span, 0.0, 1.0) : 0.0;
+    const double x = r.left() + r.width() * f;
+    p.setPen(QPen(needle_, 3));
+    p.drawLine(QPointF(x, r.top() + 2), QPointF(x, r.bottom() - 1));
+}
+
+}  // namespace ui
+}  // namespace trilho

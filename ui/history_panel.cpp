@@ -1,0 +1,72 @@
+#include "ui/history_panel.h"
+
+#include <QEvent>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include "core/journal.h"
+
+namespace trilho {
+namespace ui {
+
+HistoryPanel::HistoryPanel(QWidget* parent) : QWidget(parent) {
+    table_ = new QTableWidget(0, 4, this);
+    table_->horizontalHeader()->setStretchLastSection(true);
+    table_->verticalHeader()->hide();
+    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    ack_ = new QPushButton(this);
+    export_ = new QPushButton(this);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(ack_);
+    buttons->addStretch();
+    buttons->addWidget(export_);
+    auto* v = new QVBoxLayout(this);
+    v->addLayout(buttons);
+    v->addWidget(table_);
+    connect(ack_, &QPushButton::clicked, this, &HistoryPanel::acknowledgeRequested);
+    connect(export_, &QPushButton::clicked, this, [this] {
+        const QString f = QFileDialog::getSaveFileName(this, tr("Export history"), QString(),
+                                                       QStringLiteral("CSV (*.csv)"));
+        QString error;
+        if (!f.isEmpty() && !exportCsv(f, &error))
+            QMessageBox::warning(this, tr("Export history"), error);
+    });
+    retranslate();
+}
+
+void HistoryPanel::retranslate() {
+    table_->setHorizontalHeaderLabels({tr("Time"), tr("Kind"), tr("Code"), tr("Text")});
+    ack_->setText(tr("Acknowledge alarms"));
+    export_->setText(tr("Export CSV"));
+}
+
+void HistoryPanel::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::LanguageChange) retranslate();
+    QWidget::changeEvent(e);
+}
+
+void HistoryPanel::add(const QString& when, const QString& kind, int code, const QString& text) {
+    const int row = table_->rowCount();
+    table_->insertRow(row);
+    table_->setItem(row, 0, new QTableWidgetItem(when));
+    table_->setItem(row, 1, new QTableWidgetItem(kind));
+    table_->setItem(row, 2, new QTableWidgetItem(code ? QString::number(code) : QString()));
+    auto* t = new QTableWidgetItem(text);
+    if (kind == QLatin1String("alarm")) t->setForeground(Qt::darkRed);
+    table_->setItem(row, 3, t);
+    if (table_->rowCount() > 10000) table_->removeRow(0);  // the journal keeps everything
+    table_->scrollToBottom();
+}
+
+bool HistoryPanel::exportCsv(const QString& path, QString* error) {
+    return Journal::exportCsv(Journal::read(journal_), path, error);
+}
+
+}  // namespace ui
+}  // namespace trilho

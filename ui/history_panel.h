@@ -1,0 +1,34 @@
+#pragma once
+// The full alarm and status history with times, acknowledge, CSV export (from the journal).
+#include <QWidget>
+
+class QPushButton;
+class QTableWidget;
+
+namespace trilho {
+namespace ui {
+
+class HistoryPanel : public QWidget {
+    Q_OBJECT
+  public:
+    explicit HistoryPanel(QWidget* parent = nullptr);
+    void add(const QString& when, const QString& kind, int code, const QString& text);
+    QTableWidget* table() const { return table_; }
+    void setJournalPath(const QString& path) { journal_ = path; }
+    bool exportCsv(const QString& path, QString* error = nullptr);
+
+  signals:
+    void acknowledgeRequested();
+
+  protected:
+    void changeEvent(QEvent* e) override;
+
+  private:
+    void retranslate();
+    QTableWidget* table_;
+    QPushButton *ack_, *export_;
+    QString journal_;
+};
+
+}  // namespace ui
+}  // namespace trilho

@@ -1,0 +1,79 @@
+#pragma once
+// The screens' side of the machine: owns the simulated rail, the controller and the servo
+// worker; reads the worker's snapshot and events on a timer (50 Hz) and sends commands. No
+// slot here ever waits on the worker.
+#include <QObject>
+#include <QTimer>
+#include <memory>
+
+#include "core/journal.h"
+#include "core/program.h"
+#include "core/servo_worker.h"
+#include "hal/sim/sim_rail.h"
+
+namespace trilho {
+namespace ui {
+
+class MachineLink : public QObject {
+    Q_OBJECT
+  public:
+    explicit MachineLink(const MachineProfile& profile, QObject* parent = nullptr);
+    ~MachineLink() override;
+
+    const MachineProfile& profile() const { return profile_; }
+    const ControllerStatus& status() const { return status_; }
+    ServoWorker& worker() { return *worker_; }
+    SimRail& rail() { return *rail_; }
+
+    /// Opens the persistent history (append-only) at path.
+    bool openJournal(const QString& path, QString* error);
+    QString journalPath() const { return journal_.path(); }
+    void journalNote(const QString& kind, int code, const QString& text);
+
+    // commands
+    void selectManual() { worker_->send(CommandKind::SelectManual); }
+    void selectAutomatic() { worker_->send(CommandKind::SelectAutomatic); }
+    void manualLeft() { worker_->send(CommandKind::ManualLeft); }
+    void manualRight() { worker_->send(CommandKind::ManualRight); }
+    void manualStop() { worker_->send(CommandKind::ManualStop); }
+    void jogStart(int direction, double fraction) {
+        worker_->send(CommandKind::JogStart, direction, fraction);
+    }
+    void jogStop() { worker_->send(CommandKind::JogStop); }
+    void jogIncrement(double mm, double fraction) {
+        worker_->send(CommandKind::JogIncrement, 0, mm, fraction);
+    }
+    void run(std::shared_ptr<const Program> program, std::size_t fromIndex);
+    void pressContinue() { worker_->send(CommandKind::Continue); }
+    void hold() { worker_->send(CommandKind::Hold); }
+    void resume() { worker_->send(CommandKind::Resume); }
+    void stop() { worker_->requestStop(); }
+    void emergencyStop() { worker_->requestEmergencyStop(); }
+    void resetEmergencyStop() { worker_->send(CommandKind::ResetEStop); }
+    void acknowledge() { worker_->send(CommandKind::Acknowledge); }
+    void setSingleBlock(bool on) { worker_->send(CommandKind::SingleBlock, on ? 1 : 0); }
+    void setFeedOverride(double f) { worker_->send(CommandKind::FeedOverride, 0, f); }
+    void setGains(LoopLaw law, const LoopGains& g) {
+        worker_->send(CommandKind::SetGains, static_cast<int>(law), g.kp, g.ki, g.kd);
+    }
+    void setLaw(LoopLaw law) { worker_->send(CommandKind::SetLaw, static_cast<int>(law)); }
+    /// Reads the worker now (also done by the timer); tests call it to avoid waiting a tick.
+    void poll();
+
+  signals:
+    void statusChanged(const trilho::ControllerStatus& status);
+    void eventArrived(const trilho::ControllerEvent& event);
+
+  private:
+    MachineProfile profile_;
+    std::unique_ptr<SimRail> rail_;
+    std::unique_ptr<MachineController> controller_;
+    std::unique_ptr<ServoWorker> worker_;
+    QTimer timer_;
+    ControllerStatus status_;
+    std::uint64_t version_ = 0;
+    Journal journal_;
+};
+
+}  // namespace ui
+}  // namespace trilho

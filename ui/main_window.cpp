@@ -1,0 +1,432 @@
+#include "ui/main_window.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QDateTime>
+#include <QDockWidget>
+#include <QFileInfo>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QStatusBar>
+#include <QToolBar>
+#include <QToolButton>
+
+#include "core/compiler.h"
+#include "core/diagnostic_text.h"
+#include "core/event_text.h"
+#include "translations/i18n.h"
+#include "ui/code_editor.h"
+#include "ui/execution_panel.h"
+#include "ui/history_panel.h"
+#include "ui/jog_panel.h"
+#include "ui/machine_link.h"
+#include "ui/plot_panel.h"
+#include "ui/program_panel.h"
+#include "ui/rail_view.h"
+#include "ui/select_file_dialog.h"
+
+namespace trilho {
+namespace ui {
+
+MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
+    : QMainWindow(parent), link_(link), settings_(settings) {
+    setObjectName(QStringLiteral("mainWindow"));
+    panel_ = new ExecutionPanel(this);
+    setCentralWidget(panel_);
+    buildMenus();
+    buildDocks();
+    stateLabel_ = new QLabel(this);
+    statusBar()->addPermanentWidget(stateLabel_);
+
+    connect(&link_, &MachineLink::statusChanged, this, &MainWindow::onStatus);
+    connect(&link_, &MachineLink::eventArrived, this, &MainWindow::onEvent);
+    connect(panel_, &ExecutionPanel::continuePressed, &link_, &MachineLink::pressContinue);
+    connect(panel_, &ExecutionPanel::leftPressed, &link_, &MachineLink::manualLeft);
+    connect(panel_, &ExecutionPanel::rightPressed, &link_, &MachineLink::manualRight);
+    connect(panel_, &ExecutionPanel::stopPressed, &link_, &MachineLink::manualStop);
+    connect(panel_, &ExecutionPanel::gainEdited, this, &MainWindow::applyGain);
+    qApp->installEventFilter(this);
+
+    dialect_ = settings_.value(QStringLiteral("dialect")).toString() == QLatin1String("classic")
+                   ? Dialect::Classic
+                   : Dialect::Standard;
+    (dialect_ == Dialect::Classic ? classicDialect_ : standardDialect_)->setChecked(true);
+    const bool classicLaw =
+        settings_.value(QStringLiteral("law")).toString() == QLatin1String("classic");
+    (classicLaw ? classicLaw_ : engineeredLaw_)->setChecked(true);
+    link_.setLaw(classicLaw ? LoopLaw::Classic : LoopLaw::Engineered);
+    loadGainsFromSettings();
+    retranslate();
+    onStatus(link_.status());
+    restoreGeometry(settings_.value(QStringLiteral("geometry")).toByteArray());
+    restoreState(settings_.value(QStringLiteral("windowState")).toByteArray());
+    const QString lastProgram = settings_.value(QStringLiteral("lastProgram")).toString();
+    if (!lastProgram.isEmpty() && QFileInfo::exists(lastProgram)) selectProgram(lastProgram);
+}
+
+MainWindow::~MainWindow() {
+    qApp->removeEventFilter(this);
+}
+
+void MainWindow::buildMenus() {
+    fileMenu_ = menuBar()->addMenu(QString());
+    select_ = fileMenu_->addAction(QString(), this, &MainWindow::chooseFile);
+    fileMenu_->addSeparator();
+    exit_ = fileMenu_->addAction(QString(), this, &QWidget::close);
+
+    commandMenu_ = menuBar()->addMenu(QString());
+    manual_ = commandMenu_->addAction(QString(), &link_, &MachineLink::selectManual);
+    automatic_ = commandMenu_->addAction(QString(), &link_, &MachineLink::selectAutomatic);
+    manual_->setCheckable(true);
+    automatic_->setCheckable(true);
+    manual_->setChecked(true);
+    commandMenu_->addSeparator();
+    compile_ = commandMenu_->addAction(QString(), this, &MainWindow::compileSelected);
+    execute_ = commandMenu_->addAction(QString(), this, [this] { executeSelected(0); });
+    compile_->setEnabled(false);  // until Automatic, as the original
+    execute_->setEnabled(false);
+
+    optionsMenu_ = menuBar()->addMenu(QString());
+    languageMenu_ = optionsMenu_->addMenu(QString());
+    languages_ = new QActionGroup(this);
+    for (const auto& [code, name] :
+         {std::pair{QStringLiteral("en"), QStringLiteral("English")},
+          std::pair{QStringLiteral("pt_BR"), QStringLiteral("Português (Brasil)")},
+          std::pair{QStringLiteral("es"), QStringLiteral("Español")}}) {
+        QAction* a = languageMenu_->addAction(name);
+        a->setCheckable(true);
+        a->setData(code);
+        languages_->addAction(a);
+        connect(a, &QAction::triggered, this, [this, c = code] { setLanguage(c); });
+    }
+    themeMenu_ = optionsMenu_->addMenu(QString());
+    auto* themes = new QActionGroup(this);
+    classicTheme_ = themeMenu_->addAction(QString(), this, [this] { setTheme(Theme::Classic); });
+    systemTheme_ = themeMenu_->addAction(QString(), this, [this] { setTheme(Theme::System); });
+    for (QAction* a : {classicTheme_, systemTheme_})
+        a->setCheckable(true), themes->addAction(a);
+    lawMenu_ = optionsMenu_->addMenu(QString());
+    auto* laws = new QActionGroup(this);
+    classicLaw_ = lawMenu_->addAction(QString(), this, [this] {
+        settings_.setValue(QStringLiteral("law"), QStringLiteral("classic"));
+        link_.setLaw(LoopLaw::Classic);
+        loadGainsFromSettings();
+    });
+    engineeredLaw_ = lawMenu_->addAction(QString(), this, [this] {
+        settings_.setValue(QStringLiteral("law"), QStringLiteral("engineered"));
+        link_.setLaw(LoopLaw::Engineered);
+        loadGainsFromSettings();
+    });
+    for (QAction* a : {classicLaw_, engineeredLaw_})
+        a->setCheckable(true), laws->addAction(a);
+    dialectMenu_ = optionsMenu_->addMenu(QString());
+    auto* dialects = new QActionGroup(this);
+    standardDialect_ = dialectMenu_->addAction(QString(), this, [this] {
+        dialect_ = Dialect::Standard;
+        settings_.setValue(QStringLiteral("dialect"), QStringLiteral("standard"));
+    });
+    classicDialect_ = dialectMenu_->addAction(QString(), this, [this] {
+        dialect_ = Dialect::Classic;
+        settings_.setValue(QStringLiteral("dialect"), QStringLiteral("classic"));
+    });
+    for (QAction* a : {standardDialect_, classicDialect_})
+        a->setCheckable(true), dialects->addAction(a);
+    viewMenu_ = menuBar()->addMenu(QString());
+
+    // E-stop always visible (key: Esc), with reset and acknowledge beside it.
+    QToolBar* bar = addToolBar(QStringLiteral("safety"));
+    bar->setObjectName(QStringLiteral("safetyBar"));
+    bar->setMovable(false);
+    estop_ = new QToolButton(bar);
+    estop_->setObjectName(QStringLiteral("estop"));
+    estop_->setStyleSheet(
+        QStringLiteral("QToolButton#estop { background: rgb(200,0,0); color: white; font-weight: "
+                       "bold; padding: 6px 14px;"
+                       " border: 2px solid rgb(120,0,0); border-radius: 4px; }"));
+    resetEstop_ = new QToolButton(bar);
+    ack_ = new QToolButton(bar);
+    bar->addWidget(estop_);
+    bar->addWidget(resetEstop_);
+    bar->addWidget(ack_);
+    connect(estop_, &QToolButton::clicked, &link_, &MachineLink::emergencyStop);
+    connect(resetEstop_, &QToolButton::clicked, &link_, &MachineLink::resetEmergencyStop);
+    connect(ack_, &QToolButton::clicked, &link_, &MachineLink::acknowledge);
+}
+
+void MainWindow::buildDocks() {
+    auto dock = [this](QWidget* w, const char* name, Qt::DockWidgetArea area) {
+        auto* d = new QDockWidget(this);
+        d->setObjectName(QString::fromLatin1(name));
+        d->setWidget(w);
+        addDockWidget(area, d);
+        viewMenu_->addAction(d->toggleViewAction());
+        return d;
+    };
+    program_ = new ProgramPanel(this);
+    plots_ = new PlotPanel(this);
+    jogPanel_ = new JogPanel(this);
+    history_ = new HistoryPanel(this);
+    rail_ = new RailView(link_.profile(), this);
+    history_->setJournalPath(link_.journalPath());
+    programDock_ = dock(program_, "programDock", Qt::RightDockWidgetArea);
+    railDock_ = dock(rail_, "railDock", Qt::RightDockWidgetArea);
+    jogDock_ = dock(jogPanel_, "jogDock", Qt::RightDockWidgetArea);
+    plotDock_ = dock(plots_, "plotDock", Qt::BottomDockWidgetArea);
+    historyDock_ = dock(history_, "historyDock", Qt::BottomDockWidgetArea);
+    tabifyDockWidget(plotDock_, historyDock_);
+    plotDock_->raise();
+    tabifyDockWidget(programDock_, jogDock_);
+    programDock_->raise();
+
+    connect(program_, &ProgramPanel::startFromCursorRequested, this, [this] {
+        auto p = compileEditor(true);
+        if (!p || !p->ok()) return;
+        executeSelected(p->blockAtOrAfterLine(static_cast<std::uint32_t>(program_->cursorLine())));
+    });
+    connect(jogPanel_, &JogPanel::jogStart, this,
+            [this](int dir) { link_.jogStart(dir, jogPanel_->jogFraction()); });
+    connect(jogPanel_, &JogPanel::jogStop, &link_, &MachineLink::jogStop);
+    connect(jogPanel_, &JogPanel::jogStep, this,
+            [this](double mm) { link_.jogIncrement(mm, jogPanel_->jogFraction()); });
+    connect(jogPanel_, &JogPanel::feedOverrideChanged, &link_, &MachineLink::setFeedOverride);
+    connect(jogPanel_, &JogPanel::singleBlockToggled, &link_, &MachineLink::setSingleBlock);
+    connect(jogPanel_, &JogPanel::holdRequested, &link_, &MachineLink::hold);
+    connect(jogPanel_, &JogPanel::resumeRequested, &link_, &MachineLink::resume);
+    connect(jogPanel_, &JogPanel::stopRequested, &link_, &MachineLink::stop);
+    connect(history_, &HistoryPanel::acknowledgeRequested, &link_, &MachineLink::acknowledge);
+}
+
+void MainWindow::retranslate() {
+    setWindowTitle(tr("Didactic D.N.C. system for the automatic rail"));
+    fileMenu_->setTitle(tr("&File"));
+    select_->setText(tr("&Select"));
+    exit_->setText(tr("E&xit"));
+    commandMenu_->setTitle(tr("C&ommand"));
+    manual_->setText(tr("&Manual"));
+    automatic_->setText(tr("&Automatic"));
+    compile_->setText(tr("&Compile file"));
+    execute_->setText(tr("&Execute file"));
+    optionsMenu_->setTitle(tr("O&ptions"));
+    languageMenu_->setTitle(tr("&Language"));
+    themeMenu_->setTitle(tr("&Theme"));
+    classicTheme_->setText(tr("Classic (1996 colours)"));
+    systemTheme_->setText(tr("System"));
+    lawMenu_->setTitle(tr("Control &law"));
+    classicLaw_->setText(tr("Classic (the 1996 difference equation)"));
+    engineeredLaw_->setText(tr("Engineered (profile, feed-forward)"));
+    dialectMenu_->setTitle(tr("G-code &dialect"));
+    standardDialect_->setText(tr("Standard"));
+    classicDialect_->setText(tr("Classic (1996)"));
+    viewMenu_->setTitle(tr("&Windows"));
+    programDock_->setWindowTitle(tr("Program"));
+    plotDock_->setWindowTitle(tr("Plots"));
+    jogDock_->setWindowTitle(tr("Jog and run"));
+    historyDock_->setWindowTitle(tr("History"));
+    railDock_->setWindowTitle(tr("Rail"));
+    estop_->setText(tr("E-STOP (Esc)"));
+    resetEstop_->setText(tr("Reset E-stop"));
+    ack_->setText(tr("Acknowledge"));
+    for (QAction* a : languages_->actions())
+        a->setChecked(a->data().toString() == language_);
+    onStatus(last_);
+}
+
+void MainWindow::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::LanguageChange) retranslate();
+    QMainWindow::changeEvent(e);
+}
+
+void MainWindow::setLanguage(const QString& lang) {
+    if (!installLanguage(lang)) return;
+    language_ = lang;
+    settings_.setValue(QStringLiteral("language"), lang);
+    retranslate();  // widgets get LanguageChange too; this covers the window itself at once
+}
+
+void MainWindow::setTheme(Theme theme) {
+    applyTheme(*qApp, theme);
+    settings_.setValue(QStringLiteral("theme"), themeName(theme));
+    (theme == Theme::Classic ? classicTheme_ : systemTheme_)->setChecked(true);
+    panel_->setAutomaticMode(last_.automatic);
+}
+
+void MainWindow::chooseFile() {
+    SelectFileDialog dialog(settings_.value(QStringLiteral("lastFolder")).toString(), this);
+    if (dialog.exec() == QDialog::Accepted && !dialog.selectedFile().isEmpty())
+        selectProgram(dialog.selectedFile());
+    settings_.setValue(QStringLiteral("lastFolder"), dialog.currentFolder());
+}
+
+bool MainWindow::selectProgram(const QString& path) {
+    QString error;
+    if (!program_->load(path, &error)) {
+        statusBar()->showMessage(error, 8000);
+        return false;
+    }
+    selectedFile_ = path;
+    panel_->setProgramName(QFileInfo(path).fileName());
+    settings_.setValue(QStringLiteral("lastProgram"), path);
+    settings_.setValue(QStringLiteral("lastFolder"), QFileInfo(path).absolutePath());
+    return true;
+}
+
+std::shared_ptr<Program> MainWindow::compileEditor(bool showInAlarms) {
+    if (selectedFile_.isEmpty()) {
+        QMessageBox::warning(this, tr("File message"), tr("Select the file first !"));
+        return nullptr;
+    }
+    CompileOptions options;
+    options.dialect = dialect_;
+    options.machine = link_.profile().limits;
+    // What the operator sees is what runs: the editor's text, saved or not.
+    auto program = std::make_shared<Program>(compile(program_->text().toStdString(), options));
+    QStringList messages;
+    for (const Diagnostic& d : program->diagnostics)
+        messages << diagnosticMessage(d);
+    program_->showDiagnostics(program->diagnostics, messages);
+    if (showInAlarms) {
+        panel_->clearAlarms();
+        for (qsizetype i = 0; i < messages.size(); ++i)
+            panel_->addAlarmLine(QStringLiteral("%1: %2")
+                                     .arg(program->diagnostics[static_cast<std::size_t>(i)].line)
+                                     .arg(messages[i]));
+        panel_->setAlarmSummary(compileSummary(program->errorCount()));
+    }
+    return program;
+}
+
+void MainWindow::compileSelected() {
+    auto program = compileEditor(true);
+    if (!program) return;
+    panel_->setLineText(tr("End"));
+    panel_->setOnlineStatus(tr("Compilation finished !"));
+}
+
+void MainWindow::executeSelected(std::size_t fromIndex) {
+    auto program = compileEditor(true);  // Execute always recompiles first
+    if (!program) return;
+    if (!program->ok()) {
+        panel_->setOnlineStatus(tr("There are compile error(s)!"));
+        return;
+    }
+    link_.run(program, fromIndex);
+}
+
+void MainWindow::loadGainsFromSettings() {
+    const bool classic = classicLaw_->isChecked();
+    const LoopGains defaults =
+        classic ? link_.profile().loop.classic : link_.profile().loop.engineered;
+    const QString prefix =
+        classic ? QStringLiteral("gains/classic/") : QStringLiteral("gains/engineered/");
+    LoopGains g{settings_.value(prefix + QStringLiteral("kp"), defaults.kp).toDouble(),
+                settings_.value(prefix + QStringLiteral("ki"), defaults.ki).toDouble(),
+                settings_.value(prefix + QStringLiteral("kd"), defaults.kd).toDouble()};
+    link_.setGains(classic ? LoopLaw::Classic : LoopLaw::Engineered, g);
+    panel_->showGains(g);
+}
+
+void MainWindow::applyGain(int which, double value) {
+    const bool classic = last_.law == LoopLaw::Classic;
+    LoopGains g = last_.gains;
+    (which == 0 ? g.kp : which == 1 ? g.kd : g.ki) = value;
+    link_.setGains(last_.law, g);  // applied live; the loop absorbs the change without a bump
+    const QString prefix =
+        classic ? QStringLiteral("gains/classic/") : QStringLiteral("gains/engineered/");
+    settings_.setValue(prefix + QStringLiteral("kp"), g.kp);
+    settings_.setValue(prefix + QStringLiteral("ki"), g.ki);
+    settings_.setValue(prefix + QStringLiteral("kd"), g.kd);
+}
+
+void MainWindow::onStatus(const ControllerStatus& s) {
+    last_ = s;
+    panel_->showStatus(s);
+    panel_->showGains(s.gains);
+    manual_->setChecked(!s.automatic);
+    automatic_->setChecked(s.automatic);
+    const bool idle = s.state == ControllerState::AutoIdle;
+    compile_->setEnabled(s.automatic);
+    execute_->setEnabled(s.automatic && idle);
+    jogPanel_->setManual(!s.automatic);
+    rail_->setState(s.servo.positionMm, s.servo.targetMm, s.servo.switches,
+                    s.servo.mode == ServoMode::Move);
+    const bool executing = s.state == ControllerState::Running ||
+                           s.state == ControllerState::Waiting ||
+                           s.state == ControllerState::Paused;
+    program_->setExecutingLine(executing ? static_cast<int>(s.blockLine) : 0);
+    if (++plotDivider_ % 2 == 0) plots_->addSample(s);  // 25 Hz is plenty for the eye
+    static const char* const kStates[] = {QT_TR_NOOP("Manual"),  QT_TR_NOOP("Automatic, ready"),
+                                          QT_TR_NOOP("Homing"),  QT_TR_NOOP("Running"),
+                                          QT_TR_NOOP("Waiting"), QT_TR_NOOP("Paused"),
+                                          QT_TR_NOOP("Alarm"),   QT_TR_NOOP("Emergency stop")};
+    stateLabel_->setText(QStringLiteral("%1  |  x = %2 mm")
+                             .arg(tr(kStates[static_cast<int>(s.state)]))
+                             .arg(s.servo.positionMm, 0, 'f', 2));
+    resetEstop_->setEnabled(s.state == ControllerState::EStop);
+    ack_->setEnabled(s.state == ControllerState::Alarm);
+}
+
+void MainWindow::onEvent(const ControllerEvent& e) {
+    const QString line = historyLine(e);
+    const QString online = onlineStatus(e);
+    if (!online.isEmpty()) panel_->setOnlineStatus(online);
+    panel_->addStatusLine(line);
+    const bool alarm = e.kind == EventKind::AlarmRaised;
+    if (alarm || e.kind == EventKind::CompileFailed) panel_->addAlarmLine(line);
+    if (e.kind == EventKind::ManualLeftEnd || e.kind == EventKind::ManualRightEnd)
+        panel_->addAlarmLine(line);
+    if (e.kind == EventKind::ProgramEnd) panel_->setLineText(QString());
+    history_->add(QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")),
+                  alarm                                    ? QStringLiteral("alarm")
+                  : e.kind == EventKind::AlarmAcknowledged ? QStringLiteral("ack")
+                                                           : QStringLiteral("status"),
+                  static_cast<int>(e.alarm), line);
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() != QEvent::KeyPress || !isActiveWindow())
+        return QMainWindow::eventFilter(watched, event);
+    auto* key = static_cast<QKeyEvent*>(event);
+    if (key->key() == Qt::Key_Escape) {  // E-stop, wherever the focus is
+        link_.emergencyStop();
+        return true;
+    }
+    // The original's keys in manual mode: '<' left, '>' right, space stops - unless the
+    // operator is typing in a field.
+    QWidget* focus = QApplication::focusWidget();
+    const bool typing = qobject_cast<QLineEdit*>(focus) || qobject_cast<QPlainTextEdit*>(focus);
+    if (typing || last_.automatic) return QMainWindow::eventFilter(watched, event);
+    const QString text = key->text();
+    if (text == QLatin1String("<") || text == QLatin1String(",")) return link_.manualLeft(), true;
+    if (text == QLatin1String(">") || text == QLatin1String(".")) return link_.manualRight(), true;
+    if (key->key() == Qt::Key_Space) return link_.manualStop(), true;
+    return QMainWindow::eventFilter(watched, event);
+}
+
+void MainWindow::closeEvent(QCloseEvent* e) {
+    if (program_->dirty()) {
+        const auto answer =
+            QMessageBox::question(this, tr("Unsaved program"),
+                                  tr("The program has unsaved changes. Save them before leaving?"),
+                                  QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+        if (answer == QMessageBox::Cancel) return e->ignore();
+        QString error;
+        if (answer == QMessageBox::Save && !program_->save(&error)) {
+            QMessageBox::warning(this, tr("Save"), error);
+            return e->ignore();
+        }
+    }
+    link_.emergencyStop();
+    settings_.setValue(QStringLiteral("geometry"), saveGeometry());
+    settings_.setValue(QStringLiteral("windowState"), saveState());
+    e->accept();
+}
+
+}  // namespace ui
+}  // namespace trilho

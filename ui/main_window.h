@@ -1,0 +1,100 @@
+#pragma once
+// The main screen: the replicated execucao form in the centre, today's tools in docks around
+// it, menus as the original (Arquivo, Comando) plus Options. It reads the controller through
+// MachineLink's snapshots and sends commands; it never waits on the servo thread.
+#include <QMainWindow>
+#include <QSettings>
+#include <memory>
+
+#include "core/dialect.h"
+#include "core/machine_controller.h"
+#include "ui/theme.h"
+
+class QAction;
+class QActionGroup;
+class QDockWidget;
+class QLabel;
+class QMenu;
+class QToolButton;
+
+namespace trilho {
+namespace ui {
+
+class ExecutionPanel;
+class HistoryPanel;
+class JogPanel;
+class MachineLink;
+class PlotPanel;
+class ProgramPanel;
+class RailView;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+  public:
+    MainWindow(MachineLink& link, QSettings& settings, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    /// Makes path the selected program (as a double click in Selecionar) and shows it.
+    bool selectProgram(const QString& path);
+    void compileSelected();                           ///< Comando > Compilar arquivo
+    void executeSelected(std::size_t fromIndex = 0);  ///< Comando > Executar arquivo
+    void setLanguage(const QString& lang);
+    void setTheme(Theme theme);
+    QString language() const { return language_; }
+
+    ExecutionPanel* panel() const { return panel_; }
+    ProgramPanel* programPanel() const { return program_; }
+    PlotPanel* plots() const { return plots_; }
+    JogPanel* jog() const { return jogPanel_; }
+    HistoryPanel* history() const { return history_; }
+    RailView* railView() const { return rail_; }
+    QAction* manualAction() const { return manual_; }
+    QAction* automaticAction() const { return automatic_; }
+    QAction* compileAction() const { return compile_; }
+    QAction* executeAction() const { return execute_; }
+    QAction* selectAction() const { return select_; }
+    QAction* classicDialectAction() const { return classicDialect_; }
+    QToolButton* emergencyButton() const { return estop_; }
+
+  protected:
+    void closeEvent(QCloseEvent* e) override;
+    void changeEvent(QEvent* e) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+  private:
+    void buildMenus();
+    void buildDocks();
+    void retranslate();
+    void onStatus(const ControllerStatus& s);
+    void onEvent(const ControllerEvent& e);
+    void chooseFile();
+    std::shared_ptr<Program> compileEditor(bool showInAlarms);
+    void applyGain(int which, double value);
+    void loadGainsFromSettings();
+
+    MachineLink& link_;
+    QSettings& settings_;
+    ExecutionPanel* panel_;
+    ProgramPanel* program_;
+    PlotPanel* plots_;
+    JogPanel* jogPanel_;
+    HistoryPanel* history_;
+    RailView* rail_;
+    QDockWidget *programDock_, *plotDock_, *jogDock_, *historyDock_, *railDock_;
+    QMenu *fileMenu_, *commandMenu_, *optionsMenu_, *languageMenu_, *themeMenu_, *lawMenu_,
+        *dialectMenu_, *viewMenu_;
+    QAction *select_, *exit_, *manual_, *automatic_, *compile_, *execute_;
+    QAction *classicTheme_, *systemTheme_, *classicLaw_, *engineeredLaw_, *standardDialect_,
+        *classicDialect_;
+    QActionGroup* languages_;
+    QToolButton *estop_, *resetEstop_, *ack_;
+    QLabel* stateLabel_;
+    QString selectedFile_;
+    QString language_ = QStringLiteral("en");
+    Dialect dialect_ = Dialect::Standard;
+    ControllerStatus last_;
+    int plotDivider_ = 0;
+};
+
+}  // namespace ui
+}  // namespace trilho

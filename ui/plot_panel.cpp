@@ -1,0 +1,179 @@
+#include "ui/plot_panel.h"
+
+#include <qcustomplot.h>
+#include <QEvent>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QPushButton>
+#include <QSaveFile>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+namespace trilho {
+namespace ui {
+
+namespace {
+QCustomPlot* makePlot(QWidget* parent) {
+    auto* p = new QCustomPlot(parent);
+    p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    p->axisRect()->setRangeZoom(Qt::Horizontal | Qt::Vertical);
+    p->setMinimumHeight(60);
+    p->setNotAntialiasedElements(QCP::aeAll);  // cheap redraws at 25 Hz
+    QFont small = p->font();
+    small.setPointSizeF(small.pointSizeF() * 0.8);
+    p->legend->setFont(small);
+    p->legend->setBrush(QColor(255, 255, 255, 200));
+    p->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
+    p->legend->setVisible(true);
+    return p;
+}
+}  // namespace
+
+PlotPanel::PlotPanel(QWidget* parent) : QWidget(parent) {
+    position_ = makePlot(this);
+    error_ = makePlot(this);
+    setpointGraph_ = position_->addGraph();
+    setpointGraph_->setPen(QPen(QColor(200, 0, 0), 1, Qt::DashLine));
+    positionGraph_ = position_->addGraph();
+    positionGraph_->setPen(QPen(QColor(0, 90, 200), 1.5));
+    position_->legend->setVisible(true);
+    errorGraph_ = error_->addGraph();
+    errorGraph_->setPen(QPen(QColor(200, 0, 0)));
+    error_->yAxis2->setVisible(true);
+    error_->yAxis2->setRange(0, 255);
+    driveGraph_ = error_->addGraph(error_->xAxis, error_->yAxis2);
+    driveGraph_->setPen(QPen(QColor(0, 130, 0)));
+    error_->legend->setVisible(true);
+    error_->xAxis->setLabel(QStringLiteral("t (s)"));
+
+    pause_ = new QPushButton(this);
+    pause_->setCheckable(true);
+    png_ = new QPushButton(this);
+    csv_ = new QPushButton(this);
+    window_ = new QSpinBox(this);
+    window_->setRange(2, 600);
+    window_->setValue(20);
+    window_->setSuffix(QStringLiteral(" s"));
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(pause_);
+    buttons->addWidget(window_);
+    buttons->addStretch();
+    buttons->addWidget(png_);
+    buttons->addWidget(csv_);
+    auto* v = new QVBoxLayout(this);
+    v->addLayout(buttons);
+    v->addWidget(position_, 1);
+    v->addWidget(error_, 1);
+    connect(pause_, &QPushButton::toggled, this, &PlotPanel::setPaused);
+    connect(png_, &QPushButton::clicked, this, [this] {
+        const QString f = QFileDialog::getSaveFileName(this, tr("Export PNG"), QString(),
+                                                       QStringLiteral("PNG (*.png)"));
+        if (!f.isEmpty()) exportPng(f);
+    });
+    connect(csv_, &QPushButton::clicked, this, [this] {
+        const QString f = QFileDialog::getSaveFileName(this, tr("Export CSV"), QString(),
+                                                       QStringLiteral("CSV (*.csv)"));
+        if (!f.isEmpty()) exportCsv(f);
+    });
+    retranslate();
+}
+
+void PlotPanel::retranslate() {
+    pause_->setText(tr("Pause"));
+    png_->setText(tr("Export PNG"));
+    csv_->setText(tr("Export CSV"));
+    window_->setToolTip(tr("Rolling window"));
+    setpointGraph_->setName(tr("setpoint"));
+    positionGraph_->setName(tr("position"));
+    position_->yAxis->setLabel(tr("position (mm)"));
+    error_->yAxis->setLabel(tr("following error (mm)"));
+    error_->yAxis2->setLabel(tr("drive (DAC code)"));
+    errorGraph_->setName(tr("following error (mm)"));
+    driveGraph_->setName(tr("drive (DAC code)"));
+    replot();
+}
+
+void PlotPanel::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::LanguageChange) retranslate();
+    QWidget::changeEvent(e);
+}
+
+void PlotPanel::setPaused(bool paused) {
+    paused_ = paused;
+    if (pause_->isChecked() != paused) pause_->setChecked(paused);
+}
+
+int PlotPanel::sampleCount() const {
+    return static_cast<int>(positionGraph_->data()->size());
+}
+
+void PlotPanel::addSample(const ControllerStatus& s) {
+    if (s.timeS <= lastT_) return;
+    lastT_ = s.timeS;
+    const double t = s.timeS;
+    setpointGraph_->addData(t, s.servo.setpointMm);
+    positionGraph_->addData(t, s.servo.positionMm);
+    errorGraph_->addData(t, s.servo.errorMm);
+    driveGraph_->addData(t, s.servo.loop.code);
+    // Keep 10 minutes at most: memory stays flat in a long run.
+    const double keepFrom = t - 600.0;
+    for (QCPGraph* g : {setpointGraph_, positionGraph_, errorGraph_, driveGraph_})
+        g->data()->removeBefore(keepFrom);
+    if (!paused_) replot();
+}
+
+void PlotPanel::replot() {
+    if (lastT_ < 0) return;
+    const double w = window_->value();
+    for (QCustomPlot* p : {position_, error_}) {
+        p->xAxis->setRange(lastT_ - w, lastT_);
+        {
+            bool found = false;
+            QCPRange r =
+                p->graph(0)->getValueRange(found, QCP::sdBoth, QCPRange(lastT_ - w, lastT_));
+            if (p == position_) {
+                bool f2 = false;
+                r.expand(p->graph(1)->getValueRange(f2, QCP::sdBoth, QCPRange(lastT_ - w, lastT_)));
+                found |= f2;
+            }
+            if (found)
+                p->yAxis->setRange(r.lower - 0.05 * r.size() - 0.01,
+                                   r.upper + 0.05 * r.size() + 0.01);
+        }
+        // A legend taller than half the plot hides the curves: show it only when there is room.
+        p->legend->setVisible(p->axisRect()->height() >
+                              3 * p->legend->minimumOuterSizeHint().height());
+        p->replot(QCustomPlot::rpQueuedReplot);
+    }
+}
+
+bool PlotPanel::exportPng(const QString& path) {
+    return position_->savePng(path, 0, 0, 1.0, -1, 96);
+}
+
+bool PlotPanel::exportCsv(const QString& path, QString* error) {
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly)) {
+        if (error) *error = f.errorString();
+        return false;
+    }
+    QByteArray out = "t_s,setpoint_mm,position_mm,error_mm,drive\n";
+    auto sp = setpointGraph_->data(), pos = positionGraph_->data(), err = errorGraph_->data(),
+         drv = driveGraph_->data();
+    for (int i = 0; i < pos->size(); ++i) {
+        out += QByteArray::number(pos->at(i)->key, 'f', 4) + ',' +
+               QByteArray::number(sp->at(i)->value, 'f', 4) + ',' +
+               QByteArray::number(pos->at(i)->value, 'f', 4) + ',' +
+               QByteArray::number(err->at(i)->value, 'f', 4) + ',' +
+               QByteArray::number(drv->at(i)->value, 'f', 0) + '\n';
+    }
+    f.write(out);
+    if (!f.commit()) {
+        if (error) *error = f.errorString();
+        return false;
+    }
+    return true;
+}
+
+}  // namespace ui
+}  // namespace trilho

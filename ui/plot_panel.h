@@ -1,0 +1,43 @@
+#pragma once
+// Live plots (QCustomPlot): setpoint and position, following error, and drive output against
+// time over a rolling window; pause, zoom (wheel and drag), export PNG and CSV.
+#include <QWidget>
+
+#include "core/machine_controller.h"
+
+class QCustomPlot;
+class QCPGraph;
+class QPushButton;
+class QSpinBox;
+
+namespace trilho {
+namespace ui {
+
+class PlotPanel : public QWidget {
+    Q_OBJECT
+  public:
+    explicit PlotPanel(QWidget* parent = nullptr);
+    void addSample(const ControllerStatus& s);
+    void setPaused(bool paused);
+    bool paused() const { return paused_; }
+    bool exportPng(const QString& path);
+    bool exportCsv(const QString& path, QString* error = nullptr);
+    int sampleCount() const;
+    QCustomPlot* positionPlot() const { return position_; }
+
+  protected:
+    void changeEvent(QEvent* e) override;
+
+  private:
+    void retranslate();
+    void replot();
+    QCustomPlot *position_, *error_;  ///< drive shares the error plot, on its right axis
+    QCPGraph *setpointGraph_, *positionGraph_, *errorGraph_, *driveGraph_;
+    QPushButton *pause_, *png_, *csv_;
+    QSpinBox* window_;
+    bool paused_ = false;
+    double lastT_ = -1.0;
+};
+
+}  // namespace ui
+}  // namespace trilho
