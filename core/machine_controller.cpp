@@ -172,30 +172,27 @@ void MachineController::stepHoming(double dtS) {
 // ---- manual ----------------------------------------------------------------------------------
 
 void MachineController::manualLeft() {
-    if (status_.state != ControllerState::Manual) return;
-    if (jogging_) servo_.release(), jogging_ = false;
-    const int cap = static_cast<int>(std::lround(profile().motion.jogMaxFraction * 127.0));
-    if (servo_.sample().switches & switch_bits::kLeftEnd) {
-        status_.manualCode = kDacZero;
-        servo_.setDirect(kDacZero);
-        return post(EventKind::ManualLeftEnd);
-    }
-    if (status_.manualCode <= kDacZero - cap) return post(EventKind::ManualSpeedCap);
-    --status_.manualCode;
-    servo_.setDirect(status_.manualCode);
+    manualStep(-1);
+}
+void MachineController::manualRight() {
+    manualStep(+1);
 }
 
-void MachineController::manualRight() {
+void MachineController::manualStep(int direction) {
+    // Manual_Click of 1996: each key press moves the drive code one step from 128, capped, and
+    // refused towards an end switch that is already active.
     if (status_.state != ControllerState::Manual) return;
     if (jogging_) servo_.release(), jogging_ = false;
     const int cap = static_cast<int>(std::lround(profile().motion.jogMaxFraction * 127.0));
-    if (servo_.sample().switches & switch_bits::kRightEnd) {
+    const std::uint8_t endBit = direction < 0 ? switch_bits::kLeftEnd : switch_bits::kRightEnd;
+    if (servo_.sample().switches & endBit) {
         status_.manualCode = kDacZero;
         servo_.setDirect(kDacZero);
-        return post(EventKind::ManualRightEnd);
+        return post(direction < 0 ? EventKind::ManualLeftEnd : EventKind::ManualRightEnd);
     }
-    if (status_.manualCode >= kDacZero + cap) return post(EventKind::ManualSpeedCap);
-    ++status_.manualCode;
+    const int next = status_.manualCode + direction;
+    if (next < kDacZero - cap || next > kDacZero + cap) return post(EventKind::ManualSpeedCap);
+    status_.manualCode = static_cast<std::uint8_t>(next);
     servo_.setDirect(status_.manualCode);
 }
 

@@ -131,6 +131,7 @@ class MachineController {
     void stepHoming(double dtS);
     void checkServoFault();
     void checkManualLimits();
+    void manualStep(int direction);
 
     RailServo servo_;
     mutable ControllerStatus status_;

@@ -27,7 +27,6 @@ int compileCommand(const QStringList& args) {
     QCommandLineParser parser;
     parser.setApplicationDescription(
         QStringLiteral("Check a .G program and list every diagnostic."));
-    parser.addHelpOption();
     QCommandLineOption dialectOpt(QStringLiteral("dialect"),
                                   QStringLiteral("classic or standard (default)."),
                                   QStringLiteral("dialect"), QStringLiteral("standard"));
@@ -37,37 +36,22 @@ int compileCommand(const QStringList& args) {
                                QStringLiteral("lang"), QStringLiteral("en"));
     parser.addOptions({dialectOpt, jsonOpt, langOpt});
     parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("The program to compile."));
-    if (!parser.parse(args)) {
-        err(QStringLiteral("trilho-cli compile: %1\n").arg(parser.errorText()));
-        return kUsage;
-    }
-    if (parser.isSet(QStringLiteral("help"))) {
-        out(parser.helpText());
-        return kOk;
-    }
+    if (auto done = parseArguments(parser, args, "compile")) return *done;
     const auto dialect = parseDialect(parser.value(dialectOpt).toStdString());
-    if (!dialect) {
-        err(QStringLiteral("trilho-cli compile: unknown dialect '%1' (classic or standard)\n")
-                .arg(parser.value(dialectOpt)));
-        return kUsage;
-    }
-    if (!installLanguage(parser.value(langOpt))) {
-        err(QStringLiteral("trilho-cli compile: unknown language '%1' (en, pt_BR or es)\n")
-                .arg(parser.value(langOpt)));
-        return kUsage;
-    }
+    if (!dialect)
+        return usageError("compile", QStringLiteral("unknown dialect '%1' (classic or standard)")
+                                         .arg(parser.value(dialectOpt)));
+    if (!installLanguage(parser.value(langOpt)))
+        return usageError(
+            "compile",
+            QStringLiteral("unknown language '%1' (en, pt_BR or es)").arg(parser.value(langOpt)));
     const QStringList files = parser.positionalArguments();
-    if (files.size() != 1) {
-        err(QStringLiteral("trilho-cli compile: expected exactly one FILE, got %1\n")
-                .arg(files.size()));
-        return kUsage;
-    }
+    if (files.size() != 1)
+        return usageError("compile",
+                          QStringLiteral("expected exactly one FILE, got %1").arg(files.size()));
     const QString file = files.front();
     const SourceFile source = readSourceFile(file.toStdString());
-    if (!source.ok) {
-        err(QStringLiteral("trilho-cli compile: %1\n").arg(QString::fromStdString(source.error)));
-        return kUsage;
-    }
+    if (!source.ok) return usageError("compile", QString::fromStdString(source.error));
     CompileOptions options;
     options.dialect = *dialect;
     const Program program = compile(source.bytes, options);

@@ -58,26 +58,16 @@ int latencyCommand(const QStringList& args) {
     QCommandLineParser parser;
     parser.setApplicationDescription(
         QStringLiteral("Measure the servo loop's wake-up latency and body time."));
-    parser.addHelpOption();
     const QCommandLineOption secondsOpt(
         QStringLiteral("seconds"), QStringLiteral("Seconds for each of the two runs (default 10)."),
         QStringLiteral("N"), QStringLiteral("10"));
     parser.addOption(secondsOpt);
-    if (!parser.parse(args)) {
-        err(QStringLiteral("trilho-cli latency: %1\n").arg(parser.errorText()));
-        return kUsage;
-    }
-    if (parser.isSet(QStringLiteral("help"))) {
-        out(parser.helpText());
-        return kOk;
-    }
+    if (auto done = parseArguments(parser, args, "latency")) return *done;
     bool ok = false;
     const double seconds = parser.value(secondsOpt).toDouble(&ok);
-    if (!ok || !std::isfinite(seconds) || seconds <= 0 || seconds > 86400) {
-        err(QStringLiteral("trilho-cli latency: --seconds must be a number above 0 (got '%1')\n")
-                .arg(parser.value(secondsOpt)));
-        return kUsage;
-    }
+    if (!ok || !std::isfinite(seconds) || seconds <= 0 || seconds > 86400)
+        return usageError("latency", QStringLiteral("--seconds must be a number above 0 (got '%1')")
+                                         .arg(parser.value(secondsOpt)));
     const MachineProfile profile = MachineProfile::rail();
     const auto periodNs = static_cast<std::int64_t>(std::llround(profile.loop.samplePeriodS * 1e9));
 

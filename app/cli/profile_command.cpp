@@ -12,30 +12,16 @@ int profileCommand(const QStringList& args) {
     QCommandLineParser parser;
     parser.setApplicationDescription(
         QStringLiteral("Check a machine profile and print it in full."));
-    parser.addHelpOption();
     parser.addPositionalArgument(QStringLiteral("FILE"),
                                  QStringLiteral("Profile to check (default: the rail)."),
                                  QStringLiteral("[FILE]"));
-    if (!parser.parse(args)) {
-        err(QStringLiteral("trilho-cli profile: %1\n").arg(parser.errorText()));
-        return kUsage;
-    }
-    if (parser.isSet(QStringLiteral("help"))) {
-        out(parser.helpText());
-        return kOk;
-    }
+    if (auto done = parseArguments(parser, args, "profile")) return *done;
     const QStringList files = parser.positionalArguments();
-    if (files.size() > 1) {
-        err(QStringLiteral("trilho-cli profile: expected at most one FILE\n"));
-        return kUsage;
-    }
+    if (files.size() > 1) return usageError("profile", QStringLiteral("expected at most one FILE"));
     MachineProfile profile = MachineProfile::rail();
     if (!files.isEmpty()) {
         ProfileLoad load = loadMachineProfile(files.front());
-        if (!load.profile) {
-            err(QStringLiteral("trilho-cli profile: %1\n").arg(load.error));
-            return kUsage;
-        }
+        if (!load.profile) return usageError("profile", load.error);
         profile = *load.profile;
     }
     out(QString::fromUtf8(machineProfileToJson(profile)));

@@ -174,7 +174,6 @@ int runCommand(const QStringList& args) {
     QCommandLineParser parser;
     parser.setApplicationDescription(
         QStringLiteral("Compile, home and run a program on the simulated rail."));
-    parser.addHelpOption();
     const QCommandLineOption dialectOpt(QStringLiteral("dialect"),
                                         QStringLiteral("classic or standard (default)."),
                                         QStringLiteral("dialect"), QStringLiteral("standard"));
@@ -207,15 +206,8 @@ int runCommand(const QStringList& args) {
     parser.addOptions({dialectOpt, langOpt, virtualOpt, massOpt, continueOpt, maxOpt, traceOpt,
                        jsonOpt, machineOpt});
     parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("The program to run."));
-    auto usage = [](const QString& message) {
-        err(QStringLiteral("trilho-cli run: %1\n").arg(message));
-        return kUsage;
-    };
-    if (!parser.parse(args)) return usage(parser.errorText());
-    if (parser.isSet(QStringLiteral("help"))) {
-        out(parser.helpText());
-        return kOk;
-    }
+    auto usage = [](const QString& message) { return usageError("run", message); };
+    if (auto done = parseArguments(parser, args, "run")) return *done;
     const auto dialect = parseDialect(parser.value(dialectOpt).toStdString());
     if (!dialect)
         return usage(QStringLiteral("unknown dialect '%1' (classic or standard)")

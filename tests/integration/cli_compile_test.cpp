@@ -10,19 +10,13 @@
 #include <QProcess>
 #include <QTemporaryDir>
 
+#include "tests/integration/cli_process.h"
+
 namespace {
 
-struct Result {
-    int exit = -1;
-    QString out, err;
-};
-
+using Result = trilho::test::CliResult;
 Result run(const QStringList& args) {
-    QProcess p;
-    p.start(QStringLiteral(TRILHO_CLI), args);
-    EXPECT_TRUE(p.waitForFinished(60000));
-    return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()),
-            QString::fromUtf8(p.readAllStandardError())};
+    return trilho::test::runCli(args);
 }
 
 class CliCompile : public ::testing::Test {

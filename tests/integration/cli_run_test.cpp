@@ -9,19 +9,13 @@
 #include <QRegularExpression>
 #include <QTemporaryDir>
 
+#include "tests/integration/cli_process.h"
+
 namespace {
 
-struct Result {
-    int exit = -1;
-    QString out, err;
-};
-
+using Result = trilho::test::CliResult;
 Result run(const QStringList& args) {
-    QProcess p;
-    p.start(QStringLiteral(TRILHO_CLI), QStringList{QStringLiteral("run")} + args);
-    EXPECT_TRUE(p.waitForFinished(120000));
-    return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()),
-            QString::fromUtf8(p.readAllStandardError())};
+    return trilho::test::runCli(QStringList{QStringLiteral("run")} + args);
 }
 
 class CliRun : public ::testing::Test {
