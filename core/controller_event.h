@@ -41,6 +41,25 @@ enum class EventKind : std::uint8_t {
     Count_
 };
 
+/// Whether an event changes the online status box (the rest only add a history line).
+constexpr bool setsOnlineStatus(EventKind k) {
+    switch (k) {
+        case EventKind::ModeManual:
+        case EventKind::ModeAutomatic:
+        case EventKind::ManualLeftEnd:
+        case EventKind::ManualRightEnd:
+        case EventKind::ManualSpeedCap:
+        case EventKind::ContinuePressed:
+        case EventKind::StartFromBlock:
+        case EventKind::AlarmAcknowledged:
+        case EventKind::EStopReset:
+        case EventKind::Count_:
+            return false;
+        default:
+            return true;
+    }
+}
+
 struct ControllerEvent {
     double timeS = 0.0;  ///< controller time
     EventKind kind = EventKind::ProgramEnd;

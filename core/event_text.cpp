@@ -99,7 +99,7 @@ const char* historySource(EventKind kind) {
     return kHistory[static_cast<int>(kind)];
 }
 const char* onlineSource(EventKind kind) {
-    return kOnline[static_cast<int>(kind)];
+    return setsOnlineStatus(kind) ? kOnline[static_cast<int>(kind)] : nullptr;
 }
 const char* alarmSource(AlarmCode code) {
     return kAlarm[static_cast<int>(code)];

@@ -53,13 +53,7 @@ void MachineController::post(EventKind kind, std::int32_t n, double x, double fe
     e.feed = feed;
     e.alarm = alarm;
     events_.push(e);
-    if (kind == EventKind::AlarmRaised ||
-        (kind < EventKind::Count_ && kind != EventKind::ContinuePressed &&
-         kind != EventKind::AlarmAcknowledged && kind != EventKind::ManualLeftEnd &&
-         kind != EventKind::ManualRightEnd && kind != EventKind::ManualSpeedCap &&
-         kind != EventKind::ModeManual && kind != EventKind::ModeAutomatic &&
-         kind != EventKind::StartFromBlock && kind != EventKind::EStopReset))
-        status_.lastStatus = e;
+    if (setsOnlineStatus(kind)) status_.lastStatus = e;
 }
 
 // ---- modes -----------------------------------------------------------------------------------
@@ -541,8 +535,6 @@ void MachineController::acknowledgeAlarms() {
     servo_.clearFault();
     servo_.release();
     setState(status_.modeBeforeAlarm);
-    if (status_.state == ControllerState::AutoIdle && !status_.homed)
-        status_.state = ControllerState::AutoIdle;
 }
 
 void MachineController::setGains(LoopLaw law, const LoopGains& gains) {

@@ -75,8 +75,10 @@ void RailServo::stop() {
         return;
     }
     if (profile_.loop.law == LoopLaw::Classic) {
+        // The classic setpoint is the move's target itself: hold where the platform is.
         sample_.targetMm = sample_.positionMm;
-        hold();
+        sample_.setpointMm = sample_.positionMm;
+        sample_.mode = ServoMode::Hold;
         return;
     }
     // Brake to rest: target the braking point, which fromState reaches without overshoot.

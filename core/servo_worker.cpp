@@ -135,9 +135,10 @@ void ServoWorker::apply(const Command& c) {
             // servo thread only tries, so a producer holding it never blocks a tick.
             std::unique_lock lock(programMutex_, std::try_to_lock);
             if (!lock.owns_lock()) {
-                commands_.push(c);  // try again next tick
+                deferredLoad_ = c;  // retried next tick; the command ring has one producer only
                 return;
             }
+            deferredLoad_.reset();
             m.loadProgram(std::move(pendingProgram_));
             pendingProgram_.reset();
             break;
@@ -167,7 +168,8 @@ void ServoWorker::run() {
         }
         if (watchdogFlag_.exchange(false)) controller_.raiseAlarm(AlarmCode::LoopOverrun);
         Command cmd;
-        for (int k = 0; k < 16 && commands_.pop(cmd); ++k)
+        if (deferredLoad_) apply(*deferredLoad_);
+        for (int k = 0; k < 16 && !deferredLoad_ && commands_.pop(cmd); ++k)
             apply(cmd);
         if (tickHook_) tickHook_();
 

@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "core/event_ring.h"
@@ -126,6 +127,7 @@ class ServoWorker {
     SpscRing<Command, 256> commands_;
     std::mutex programMutex_;  ///< the servo thread only try_locks it
     std::shared_ptr<const Program> pendingProgram_;
+    std::optional<Command> deferredLoad_;  ///< servo thread only: a load that found the lock taken
     SeqLock<ControllerStatus> status_;
     SpscRing<ControllerEvent, 4096> events_;
     SpscRing<TraceRow, 65536> trace_;

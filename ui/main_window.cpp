@@ -73,6 +73,11 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
 
 MainWindow::~MainWindow() {
     qApp->removeEventFilter(this);
+    // Children are destroyed after this body: a focused gain field then loses focus and emits
+    // editingFinished. Nothing may reach this half-destroyed window any more.
+    for (QObject* child : findChildren<QObject*>())
+        disconnect(child, nullptr, this, nullptr);
+    disconnect(&link_, nullptr, this, nullptr);
 }
 
 void MainWindow::buildMenus() {

@@ -384,6 +384,21 @@ TEST(ControllerManual, HoldToJogStopsOnReleaseAndIncrementsAreExact) {
     EXPECT_NEAR(r.session.rail().state().positionMm, stopped + 10.0, 2 * kCount);
 }
 
+TEST(Controller, StopInTheClassicLawHoldsWhereThePlatformIs) {
+    MachineProfile p = MachineProfile::rail();
+    p.loop.law = LoopLaw::Classic;
+    p.loop.samplePeriodS = 0.01;
+    RailRun r(0.0, p);
+    ASSERT_TRUE(r.home());
+    ASSERT_TRUE(r.c().loadProgram(compileText("G0 X800\nM2\n")));
+    ASSERT_TRUE(r.c().start());
+    ASSERT_TRUE(r.until([&] { return r.session.rail().state().positionMm > 200; }, 10));
+    r.c().stop();
+    r.until([] { return false; }, 5.0);
+    EXPECT_EQ(r.c().status().state, ControllerState::AutoIdle);
+    EXPECT_LT(r.session.rail().state().positionMm, 500);  // it did not go on to 800
+}
+
 TEST(Controller, CompileErrorsAreRefusedAndNothingMoves) {
     RailRun r;
     ASSERT_TRUE(r.home());

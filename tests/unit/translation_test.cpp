@@ -7,6 +7,7 @@
 
 #include "core/compiler.h"
 #include "core/diagnostic_text.h"
+#include "core/event_text.h"
 #include "translations/i18n.h"
 
 namespace trilho {
@@ -93,6 +94,20 @@ TEST(TranslationFiles, NoUnfinishedOrEmptyTranslation) {
         }
         EXPECT_FALSE(xml.hasError()) << xml.errorString().toStdString();
         EXPECT_GT(messages, 150) << lang;
+    }
+}
+
+}  // namespace
+}  // namespace trilho
+
+namespace trilho {
+namespace {
+
+TEST(OnlineStatus, EveryEventThatSetsItHasAText) {
+    for (int k = 0; k < static_cast<int>(EventKind::Count_); ++k) {
+        const auto kind = static_cast<EventKind>(k);
+        EXPECT_EQ(onlineSource(kind) != nullptr, setsOnlineStatus(kind)) << k;
+        EXPECT_NE(historySource(kind), nullptr) << k;
     }
 }
 
