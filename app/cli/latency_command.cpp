@@ -1,5 +1,5 @@
-// trilho-cli latency [--seconds N]: wake-up latency and loop-body time of the servo worker, next
-// to a bare clock_nanosleep loop on the same machine (as LinuxCNC's latency test).
+// trilho-cli latency [--seconds N] [--no-realtime]: wake-up latency and loop-body time of the servo
+// worker, next to a bare clock_nanosleep loop on the same machine (as LinuxCNC's latency test).
 #include <sched.h>
 #include <time.h>
 
@@ -62,6 +62,10 @@ int latencyCommand(const QStringList& args) {
         QStringLiteral("seconds"), QStringLiteral("Seconds for each of the two runs (default 10)."),
         QStringLiteral("N"), QStringLiteral("10"));
     parser.addOption(secondsOpt);
+    const QCommandLineOption noRtOpt(
+        QStringLiteral("no-realtime"),
+        QStringLiteral("Do not ask for SCHED_FIFO (both loops run as ordinary threads)."));
+    parser.addOption(noRtOpt);
     if (auto done = parseArguments(parser, args, "latency")) return *done;
     bool ok = false;
     const double seconds = parser.value(secondsOpt).toDouble(&ok);
@@ -75,7 +79,7 @@ int latencyCommand(const QStringList& args) {
     SimRail rail(profile.plant);
     MachineController controller(profile, rail);
     ServoWorker worker(controller, rail, [&rail](double dt) { rail.step(dt); });
-    worker.start(true);
+    worker.start(!parser.isSet(noRtOpt));
     timespec wait{static_cast<time_t>(seconds),
                   static_cast<long>((seconds - std::floor(seconds)) * 1e9)};
     while (nanosleep(&wait, &wait) != 0) {
@@ -88,8 +92,9 @@ int latencyCommand(const QStringList& args) {
     QString text = QStringLiteral("servo period %1 us, %2 s each, real-time priority: %3\n")
                        .arg(periodNs / 1000)
                        .arg(seconds)
-                       .arg(t.realtimePriority ? QStringLiteral("yes (SCHED_FIFO 80)")
-                                               : QStringLiteral("no (not permitted)"));
+                       .arg(t.realtimePriority      ? QStringLiteral("yes (SCHED_FIFO 80)")
+                            : parser.isSet(noRtOpt) ? QStringLiteral("no (--no-realtime)")
+                                                    : QStringLiteral("no (not permitted)"));
     text += QStringLiteral("%1 %2 %3 %4 %5 %6\n")
                 .arg(QStringLiteral("(microseconds)"), -28)
                 .arg(QStringLiteral("min"), 8)
