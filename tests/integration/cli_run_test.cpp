@@ -159,3 +159,40 @@ TEST_F(CliRun, RealTimeRunOfAShortProgram) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CliLatency, PrintsBothLoopsAndRefusesBadSeconds) {
+    auto r = trilho::test::runCli(
+        {QStringLiteral("latency"), QStringLiteral("--seconds"), QStringLiteral("0.3")});
+    EXPECT_EQ(r.exit, 0) << r.err.toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral("bare clock_nanosleep wake-up")));
+    EXPECT_TRUE(r.out.contains(QStringLiteral("worker loop body")));
+    for (const char* bad : {"abc", "0", "-1"}) {
+        auto b = trilho::test::runCli(
+            {QStringLiteral("latency"), QStringLiteral("--seconds"), QLatin1String(bad)});
+        EXPECT_EQ(b.exit, 2) << bad;
+        EXPECT_EQ(b.err.count(QLatin1Char('\n')), 1) << b.err.toStdString();
+    }
+}
+
+TEST(CliProfile, DefaultIsTheShippedRailAndBadFilesAreNamed) {
+    auto r = trilho::test::runCli({QStringLiteral("profile")});
+    EXPECT_EQ(r.exit, 0);
+    QFile shipped(QStringLiteral(TRILHO_PROGRAMS_DIR "/../machines/rail.json"));
+    ASSERT_TRUE(shipped.open(QIODevice::ReadOnly));
+    EXPECT_EQ(r.out.toUtf8(), shipped.readAll());
+    QTemporaryDir dir;
+    const QString bad = dir.filePath(QStringLiteral("bad.json"));
+    QFile f(bad);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write(R"({"plant": {"countsPerMm": -3}})");
+    f.close();
+    auto b = trilho::test::runCli({QStringLiteral("profile"), bad});
+    EXPECT_EQ(b.exit, 2);
+    EXPECT_TRUE(
+        b.err.contains(QStringLiteral("plant.countsPerMm: must be between 0.1 and 10000 (got -3)")))
+        << b.err.toStdString();
+}
+
+}  // namespace
