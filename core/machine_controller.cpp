@@ -467,9 +467,7 @@ void MachineController::setFeedOverride(double factor) {
 
 // ---- always ----------------------------------------------------------------------------------
 
-void MachineController::emergencyStop() {
-    servo_.emergencyStop();
-    if (status_.state == ControllerState::EStop) return;
+void MachineController::abandonRun() {
     status_.pause = PauseReason::None;
     status_.blockIndex = -1;
     blockStarted_ = false;
@@ -477,6 +475,12 @@ void MachineController::emergencyStop() {
     startAfterHoming_ = false;
     jogging_ = false;
     status_.manualCode = kDacZero;
+}
+
+void MachineController::emergencyStop() {
+    servo_.emergencyStop();
+    if (status_.state == ControllerState::EStop) return;
+    abandonRun();
     status_.activeAlarms |= alarmBit(AlarmCode::EmergencyStop);
     status_.lastAlarm = AlarmCode::EmergencyStop;
     setState(ControllerState::EStop);
@@ -508,13 +512,7 @@ void MachineController::raiseAlarm(AlarmCode code) {
     if (servo_.sample().mode != ServoMode::Fault) servo_.emergencyStop();
     status_.modeBeforeAlarm =
         status_.automatic ? ControllerState::AutoIdle : ControllerState::Manual;
-    status_.pause = PauseReason::None;
-    status_.blockIndex = -1;
-    blockStarted_ = false;
-    approachFirst_ = false;
-    startAfterHoming_ = false;
-    jogging_ = false;
-    status_.manualCode = kDacZero;
+    abandonRun();
     setState(ControllerState::Alarm);
 }
 

@@ -132,6 +132,8 @@ class MachineController {
     void checkServoFault();
     void checkManualLimits();
     void manualStep(int direction);
+    /// Forgets the program in progress, a pending start and any jog (E-stop, alarms).
+    void abandonRun();
 
     RailServo servo_;
     mutable ControllerStatus status_;
