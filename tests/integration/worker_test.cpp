@@ -101,21 +101,30 @@ TEST(SeqLock, ReaderNeverSeesAHalfWrittenValue) {
         std::uint64_t a, b, c, d;
     };
     SeqLock<Pair> lock;
-    std::atomic<bool> done{false};
+    std::atomic<bool> stop{false};
+    std::atomic<std::uint64_t> written{0};
+    // The writer runs until the reader has done all its reads, so the two always overlap
+    // however the threads are scheduled (an earlier version let the writer finish first).
     std::thread writer([&] {
-        for (std::uint64_t i = 1; i < 200000; ++i)
+        for (std::uint64_t i = 1; !stop.load(std::memory_order_relaxed) && i < 100000000; ++i) {
             lock.store({i, i, i, i});
-        done = true;
+            written.store(i, std::memory_order_relaxed);
+        }
     });
-    std::uint64_t reads = 0;
-    while (!done) {
+    while (written.load() == 0) std::this_thread::yield();  // the writer has started
+    std::uint64_t changes = 0, last = 0;
+    for (int k = 0; k < 200000; ++k) {
         const Pair p = lock.load();
         ASSERT_EQ(p.a, p.b);
+        ASSERT_EQ(p.a, p.c);
         ASSERT_EQ(p.a, p.d);
-        ++reads;
+        ASSERT_GE(p.a, last);  // never goes back in time
+        changes += p.a != last;
+        last = p.a;
     }
+    stop = true;
     writer.join();
-    EXPECT_GT(reads, 0u);
+    EXPECT_GT(changes, 1u);  // the reads really raced with the writes
 }
 
 }  // namespace
