@@ -111,7 +111,8 @@ TEST(SeqLock, ReaderNeverSeesAHalfWrittenValue) {
             written.store(i, std::memory_order_relaxed);
         }
     });
-    while (written.load() == 0) std::this_thread::yield();  // the writer has started
+    while (written.load() == 0)
+        std::this_thread::yield();  // the writer has started
     // Read until a few thousand different values went by (the writer may be descheduled for
     // a while on a loaded machine), with a deadline so the test always ends.
     std::uint64_t changes = 0, last = 0;
