@@ -12,8 +12,15 @@ constexpr double kMaxSubStepS = 0.001;
 }  // namespace
 
 SimRail::SimRail(const PlantParams& params, std::uint64_t seed) : params_(params), rng_(seed) {
+    derive();
+}
+
+void SimRail::derive() {
     vmax_ = params_.maxSpeedMmS();
     forceMax_ = params_.peakForceN();
+    massKg_ = params_.movingMassKg * params_.massFactor + params_.reflectedMassKg;
+    perMassMm_ = 1000.0 / massKg_;
+    perTauM_ = 1.0 / (params_.speedLoopTauS * 1000.0);
 }
 
 void SimRail::placeAt(double positionMm) {
@@ -79,11 +86,10 @@ void SimRail::subStep(double h) {
     // DAC: channel A = V, channel B = 255 - V, each 0..255 -> -5..+5 V; the amplifier takes
     // A - B. Its offset is trimmed so that 128 is 0 V, as the document states: 127 codes a side.
     s.referenceV =
-        std::clamp(10.0 * (static_cast<int>(driveCode()) - kDacZero) / 127.0, -10.0, 10.0);
+        std::clamp((static_cast<int>(driveCode()) - kDacZero) * (10.0 / 127.0), -10.0, 10.0);
 
     // Amplifier speed loop: first order towards the commanded speed; the force it may use is
     // the current limit, so the acceleration limit falls as the moving mass rises.
-    const double massKg = params_.movingMassKg * params_.massFactor + params_.reflectedMassKg;
     const double vCmd = s.referenceV / 10.0 * vmax_;
     const double v = s.velocityMmS;
     const double vM = v / 1000.0;  // m/s
@@ -94,10 +100,10 @@ void SimRail::subStep(double h) {
                             params_.viscousFrictionNsPerM * vM;
     double force = 0.0;
     if (!s.amplifierFaulted) {
-        const double aWanted = (vCmd - v) / params_.speedLoopTauS / 1000.0;  // m/s2
-        force = std::clamp(massKg * aWanted + friction, -forceMax_, forceMax_);
+        const double aWanted = (vCmd - v) * perTauM_;  // m/s2
+        force = std::clamp(massKg_ * aWanted + friction, -forceMax_, forceMax_);
     }
-    double a = (force - friction) / massKg * 1000.0;  // mm/s2
+    double a = (force - friction) * perMassMm_;  // mm/s2
     double vNext = v + a * h;
     // Coulomb friction stops the platform; it never reverses it.
     if (v != 0.0 && (vNext > 0) != (v > 0) && std::abs(force) < params_.coulombFrictionN)

@@ -43,7 +43,10 @@ class SimRail final : public RailIo {
     const FaultInjection& faults() const { return faults_; }
     /// Puts the platform at rest at x (mm from the centre); the counter reads as if homed.
     void placeAt(double positionMm);
-    void setMassFactor(double factor) { params_.massFactor = factor; }
+    void setMassFactor(double factor) {
+        params_.massFactor = factor;
+        derive();
+    }
 
     const PlantState& state() const { return state_; }
     const PlantParams& params() const { return params_; }
@@ -51,6 +54,7 @@ class SimRail final : public RailIo {
 
   private:
     void subStep(double h);
+    void derive();  ///< recomputes the constants below from params_
     std::int64_t encoderCounts() const;
 
     PlantParams params_;
@@ -60,6 +64,9 @@ class SimRail final : public RailIo {
     std::atomic<std::uint8_t> code_{kDacZero};
     double vmax_ = 0.0;               ///< mm/s at +10 V
     double forceMax_ = 0.0;           ///< N
+    double massKg_ = 1.0;             ///< moving plus reflected mass
+    double perMassMm_ = 0.0;          ///< 1000 / mass: N -> mm/s2 (a division saved every step)
+    double perTauM_ = 0.0;            ///< 1 / (tau * 1000): mm/s of speed error -> m/s2
     std::int64_t counterOffset_ = 0;  ///< counts subtracted so the counter reads 0 at the reset
     double lostCounts_ = 0.0;         ///< counts the card missed (fault)
     std::int64_t stuckCounts_ = 0;
