@@ -1,4 +1,5 @@
-// trilho-cli compile [--dialect classic|standard] [--json] [--lang en|pt_BR|es] FILE
+// trilho-cli compile [--dialect classic|standard] [--json] [--lang en|pt_BR|es] [--machine
+// PROFILE.json] FILE
 #include <QCommandLineParser>
 #include <QJsonDocument>
 
@@ -7,6 +8,7 @@
 #include "app/cli/program_json.h"
 #include "core/compiler.h"
 #include "core/diagnostic_text.h"
+#include "core/machine_profile.h"
 #include "core/source_file.h"
 #include "translations/i18n.h"
 
@@ -34,7 +36,11 @@ int compileCommand(const QStringList& args) {
     QCommandLineOption langOpt(QStringLiteral("lang"),
                                QStringLiteral("Message language: en, pt_BR or es."),
                                QStringLiteral("lang"), QStringLiteral("en"));
-    parser.addOptions({dialectOpt, jsonOpt, langOpt});
+    QCommandLineOption machineOpt(
+        QStringLiteral("machine"),
+        QStringLiteral("Machine profile: axes and soft limits (default: the rail)."),
+        QStringLiteral("PROFILE.json"));
+    parser.addOptions({dialectOpt, jsonOpt, langOpt, machineOpt});
     parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("The program to compile."));
     if (auto done = parseArguments(parser, args, "compile")) return *done;
     const auto dialect = parseDialect(parser.value(dialectOpt).toStdString());
@@ -54,6 +60,11 @@ int compileCommand(const QStringList& args) {
     if (!source.ok) return usageError("compile", QString::fromStdString(source.error));
     CompileOptions options;
     options.dialect = *dialect;
+    if (parser.isSet(machineOpt)) {
+        const ProfileLoad load = loadMachineProfile(parser.value(machineOpt));
+        if (!load.profile) return usageError("compile", load.error);
+        options.machine = load.profile->limits;
+    }
     const Program program = compile(source.bytes, options);
 
     if (parser.isSet(jsonOpt)) {

@@ -163,3 +163,40 @@ int main(int argc, char** argv) {
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
 }
+
+namespace {
+
+TEST(CliCompileMachine, TheProfileSetsAxesAndTravel) {
+    QTemporaryDir dir;
+    const QString program = dir.filePath(QStringLiteral("xy.G"));
+    QFile f(program);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write("G0 X100 Y50\nG1 Y350 F50\nM2\n");
+    f.close();
+    const QString xy = QStringLiteral(TRILHO_PROGRAMS_DIR "/../machines/xy_dc_table.json");
+    // On the rail (default) y does not exist; on the XY table it does, within 0..300 mm.
+    auto rail =
+        trilho::test::runCli({QStringLiteral("compile"), QStringLiteral("--json"), program});
+    auto table = trilho::test::runCli({QStringLiteral("compile"), QStringLiteral("--json"),
+                                       QStringLiteral("--machine"), xy, program});
+    const auto codes = [](const QString& json) {
+        QStringList c;
+        for (const auto& d : QJsonDocument::fromJson(json.toUtf8())
+                                 .object()[QStringLiteral("diagnostics")]
+                                 .toArray())
+            c << d.toObject()[QStringLiteral("code")].toString();
+        return c;
+    };
+    EXPECT_EQ(codes(rail.out),
+              (QStringList{QStringLiteral("unknown-axis"), QStringLiteral("unknown-axis")}));
+    EXPECT_EQ(codes(table.out), QStringList{QStringLiteral("soft-limit")});
+    const QJsonArray blocks =
+        QJsonDocument::fromJson(table.out.toUtf8()).object()[QStringLiteral("blocks")].toArray();
+    ASSERT_EQ(blocks.size(), 2);
+    EXPECT_EQ(blocks[0].toObject()[QStringLiteral("y")].toDouble(), 50.0);
+    auto missing = trilho::test::runCli({QStringLiteral("compile"), QStringLiteral("--machine"),
+                                         dir.filePath(QStringLiteral("none.json")), program});
+    EXPECT_EQ(missing.exit, 2);
+}
+
+}  // namespace
