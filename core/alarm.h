@@ -9,14 +9,20 @@ enum class AlarmCode : std::uint8_t {
     None = 0,
     LeftEndSwitch = 1,  ///< "Fim de curso da esquerda atingido !"
     RightEndSwitch = 2,
-    FollowingError = 3,  ///< the platform did not follow (stuck encoder, jam, lost cable)
-    SoftLimit = 4,       ///< a jog or manual move reached the soft limit
-    CompileErrors = 5,   ///< Execute found compile errors: nothing moved
-    EncoderFault = 6,    ///< the counter gave implausible readings repeatedly
-    AmplifierFault = 7,  ///< the amplifier's ready input dropped
-    LoopOverrun = 8,     ///< watchdog: the servo loop stalled or overran its period
-    EmergencyStop = 9,   ///< the operator pressed E-stop
-    HomingFailed = 10,   ///< the centre switch was not found
+    FollowingError = 3,      ///< the platform did not follow (stuck encoder, jam, lost cable)
+    SoftLimit = 4,           ///< a jog or manual move reached the soft limit
+    CompileErrors = 5,       ///< Execute found compile errors: nothing moved
+    EncoderFault = 6,        ///< the counter gave implausible readings repeatedly
+    AmplifierFault = 7,      ///< the amplifier's ready input dropped
+    LoopOverrun = 8,         ///< watchdog: the servo loop stalled or overran its period
+    EmergencyStop = 9,       ///< the operator pressed E-stop
+    HomingFailed = 10,       ///< the centre switch was not found
+    SoftLimitStop = 11,      ///< a move would have passed a soft limit: stopped before the switch
+    InPositionTimeout = 12,  ///< a move ended but the platform never settled on its target
+    FinalPositionOff = 13,   ///< a program ended with the platform outside the final window
+    CounterCorrected = 14,   ///< the centre mark corrected the count (lost counts, cable slip)
+    MotionlessLoop = 15,     ///< a cycle of blocks that neither moves nor waits: held
+    EncoderStalled = 16,     ///< the drive ran with no change of the counter: drive cut
     Count_
 };
 
@@ -29,6 +35,9 @@ constexpr AlarmSeverity alarmSeverity(AlarmCode code) {
     switch (code) {
         case AlarmCode::SoftLimit:
         case AlarmCode::CompileErrors:
+        case AlarmCode::FinalPositionOff:
+        case AlarmCode::CounterCorrected:
+        case AlarmCode::MotionlessLoop:
             return AlarmSeverity::Warning;
         default:
             return AlarmSeverity::MustAcknowledge;

@@ -67,6 +67,7 @@ struct ControllerEvent {
     std::int32_t n = -1;  ///< block number, -1 when none
     double x = 0.0;       ///< position mm, seconds, target n, error count
     double feed = 0.0;    ///< percent
+    double value = 0.0;   ///< an alarm's figure (%1 of its text): mm, s
 };
 
 }  // namespace trilho

@@ -85,6 +85,25 @@ constexpr const char* kAlarm[static_cast<int>(AlarmCode::Count_)] = {
     QT_TRANSLATE_NOOP("Controller", "Servo loop overrun: the watchdog stopped the drive"),
     QT_TRANSLATE_NOOP("Controller", "Emergency stop"),
     QT_TRANSLATE_NOOP("Controller", "Homing failed: centre switch not found"),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Soft limit: the platform would have passed the soft limit at x=%1 mm and "
+                      "was stopped before the end switch. Acknowledge, then move it back "
+                      "inside the limits."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Not in position: the platform did not settle on its target (%1 mm off). "
+                      "Check the payload and the gains, acknowledge, then run again."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "The program ended with the platform %1 mm from its last target, outside "
+                      "the final-position window."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "The centre mark corrected the position by %1 mm: counts were lost or the "
+                      "cable slipped."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Motionless loop: the program repeats blocks that neither move nor wait. "
+                      "It is held: press Stop, or Continue to run it again."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Encoder stalled: the drive ran %1 mm without a single count and was cut. "
+                      "Check the encoder and its cable, acknowledge, then home again."),
 };
 
 QString number(double v) {
@@ -105,9 +124,10 @@ const char* alarmSource(AlarmCode code) {
     return kAlarm[static_cast<int>(code)];
 }
 
-QString alarmText(AlarmCode code) {
+QString alarmText(AlarmCode code, double value) {
     if (code == AlarmCode::None || code >= AlarmCode::Count_) return {};
-    return QCoreApplication::translate(kContext, kAlarm[static_cast<int>(code)]);
+    return substitute(QCoreApplication::translate(kContext, kAlarm[static_cast<int>(code)]),
+                      {number(std::round(value * 100.0) / 100.0)});
 }
 
 QString historyLine(const ControllerEvent& e) {
@@ -116,7 +136,7 @@ QString historyLine(const ControllerEvent& e) {
     QString third = number(e.feed);
     if (e.kind == EventKind::AlarmRaised || e.kind == EventKind::AlarmAcknowledged) {
         x = QString::number(static_cast<int>(e.alarm));
-        third = alarmText(e.alarm);
+        third = alarmText(e.alarm, e.value);
     }
     return substitute(QCoreApplication::translate(kContext, historySource(e.kind)), {n, x, third});
 }

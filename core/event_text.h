@@ -12,7 +12,8 @@ QString historyLine(const ControllerEvent& e);
 /// The online status box: "POSICIONANDO". Empty when the event does not change it.
 QString onlineStatus(const ControllerEvent& e);
 /// "Fim de curso da esquerda atingido !" and the like.
-QString alarmText(AlarmCode code);
+/// The alarm's text; value fills its %1 (mm, s) where the text has one.
+QString alarmText(AlarmCode code, double value = 0.0);
 /// Untranslated sources, for the translation-completeness test.
 const char* historySource(EventKind kind);
 const char* onlineSource(EventKind kind);

@@ -10,7 +10,9 @@ constexpr int kHomingSearchCodes = 20;    ///< 297 mm/s: the search for the cent
 constexpr double kHomingTimeoutS = 60.0;  ///< longer than a full-length search at that speed
 constexpr double kStillSpeedMmS = 0.5;
 constexpr double kStillTimeS = 0.05;
-constexpr int kMaxBlocksPerStep = 64;  ///< status-only blocks run without waiting a period
+/// Status-only blocks run without waiting a period, at most this many a tick: a program's
+/// status lines arrive at the screens at a bounded rate whatever the program does.
+constexpr int kMaxBlocksPerStep = 8;
 }  // namespace
 
 const char* controllerStateName(ControllerState s) {
@@ -43,8 +45,8 @@ MachineController::MachineController(const MachineProfile& profile, RailIo& io)
     status_.servo = servo_.sample();
 }
 
-void MachineController::post(EventKind kind, std::int32_t n, double x, double feed,
-                             AlarmCode alarm) {
+void MachineController::post(EventKind kind, std::int32_t n, double x, double feed, AlarmCode alarm,
+                             double value) {
     ControllerEvent e;
     e.timeS = status_.timeS;
     e.kind = kind;
@@ -52,6 +54,7 @@ void MachineController::post(EventKind kind, std::int32_t n, double x, double fe
     e.x = x;
     e.feed = feed;
     e.alarm = alarm;
+    e.value = value;
     events_.push(e);
     if (setsOnlineStatus(kind)) status_.lastStatus = e;
 }
@@ -79,7 +82,14 @@ void MachineController::selectAutomatic() {
     status_.manualCode = kDacZero;
     jogging_ = false;
     post(EventKind::ModeAutomatic);
-    // machine.md: selecting Automatic sends the platform to the rail centre.
+    beginHoming();
+}
+
+void MachineController::beginHoming() {
+    // machine.md: selecting Automatic sends the platform to the rail centre. The position is
+    // not known until the centre mark is crossed: no soft limits during the search.
+    servo_.release();
+    servo_.setSoftLimitsActive(false);
     homingPhase_ = (servo_.sample().switches & switch_bits::kCentre) ? HomingPhase::Settle
                                                                      : HomingPhase::SearchLeft;
     if (homingPhase_ == HomingPhase::Settle) {
@@ -145,7 +155,8 @@ void MachineController::stepHoming(double dtS) {
             stillForS_ = std::abs(s.velocityMmS) < kStillSpeedMmS ? stillForS_ + dtS : 0.0;
             if (stillForS_ >= kStillTimeS) {
                 servo_.resyncToCounter();
-                servo_.moveTo(0.0, 0.25);
+                servo_.setSoftLimitsActive(true);
+                servo_.moveTo(0.0, 0.25, false);
                 homingPhase_ = HomingPhase::Centre;
             }
             break;
@@ -266,6 +277,9 @@ bool MachineController::loadProgram(std::shared_ptr<const Program> program) {
         return false;
     }
     program_ = std::move(program);
+    gotoBlocks_ =
+        static_cast<std::size_t>(std::count_if(program_->blocks.begin(), program_->blocks.end(),
+                                               [](const Block& b) { return b.op == Op::Goto; }));
     status_.programLoaded = true;
     status_.programFinished = false;
     return true;
@@ -280,9 +294,11 @@ bool MachineController::start(std::size_t fromIndex) {
     }
     if (status_.state != ControllerState::AutoIdle) return false;
     if (!status_.homed) {
+        // After an alarm of the position chain: Execute homes first, then runs (it used to do
+        // nothing, silently).
         pendingStart_ = fromIndex;
         startAfterHoming_ = true;
-        selectAutomatic();
+        beginHoming();
         return true;
     }
     status_.modal = modalStateBefore(*program_, fromIndex);
@@ -290,6 +306,9 @@ bool MachineController::start(std::size_t fromIndex) {
     blockStarted_ = false;
     status_.programFinished = false;
     status_.pause = PauseReason::None;
+    gotosSinceActivity_ = 0;
+    ending_ = false;
+    haveTarget_ = false;
     if (fromIndex > 0) post(EventKind::StartFromBlock, program_->blocks[fromIndex].n);
     // Execution starts at the rail centre (gcode.md); from a block, where the program would
     // have left the platform.
@@ -312,12 +331,15 @@ void MachineController::beginBlock() {
         case Op::Rapid:
             post(EventKind::Rapid, b.n, b.x);
             servo_.moveTo(b.x, 1.0);
+            gotosSinceActivity_ = 0, haveTarget_ = true, lastTargetMm_ = b.x;
             break;
         case Op::Linear:
             post(EventKind::Linear, b.n, b.x, b.feed);
             servo_.moveTo(b.x, b.feed / 100.0);
+            gotosSinceActivity_ = 0, haveTarget_ = true, lastTargetMm_ = b.x;
             break;
         case Op::Dwell:
+            gotosSinceActivity_ = 0;
             post(EventKind::Dwell, b.n, b.seconds());
             status_.dwellRemainingS = b.seconds();
             setState(ControllerState::Waiting);
@@ -338,6 +360,7 @@ void MachineController::beginBlock() {
             post(EventKind::Feed, b.n, 0.0, b.feed), finishBlock();
             break;
         case Op::Stop:
+            gotosSinceActivity_ = 0;
             post(EventKind::WaitContinue, b.n);
             status_.pause = PauseReason::M00;
             setState(ControllerState::Paused);
@@ -346,18 +369,25 @@ void MachineController::beginBlock() {
             post(EventKind::Goto, b.n, b.targetN());
             pc_ = static_cast<std::size_t>(b.targetIndex);
             blockStarted_ = false;
-            if (status_.singleBlock) {
+            // More gotos than the program has, with no move, dwell or m00 between: one of them
+            // ran twice, so the program cycles without moving or waiting (pigeonhole). Hold it
+            // with a warning rather than spin status lines at the servo rate for ever.
+            if (++gotosSinceActivity_ > gotoBlocks_) {
+                gotosSinceActivity_ = 0;
+                raiseAlarm(AlarmCode::MotionlessLoop);
+                holdFrom_ = ControllerState::Running;
+                status_.pause = PauseReason::Hold;
+                setState(ControllerState::Paused);
+                post(EventKind::Paused, b.n);
+            } else if (status_.singleBlock) {
                 status_.pause = PauseReason::SingleBlock;
                 setState(ControllerState::Paused);
                 post(EventKind::SingleBlockWait, b.n);
             }
             break;
         case Op::End:
-            post(EventKind::ProgramEnd);
-            status_.programFinished = true;
-            status_.blockIndex = -1;
-            blockStarted_ = false;
-            setState(ControllerState::AutoIdle);
+            ending_ = true;  // stepEnding() finishes once the platform stands still
+            stillForS_ = 0.0;
             break;
     }
 }
@@ -374,12 +404,33 @@ void MachineController::finishBlock() {
     }
 }
 
+void MachineController::stepEnding(double dtS) {
+    const ServoSample& s = servo_.sample();
+    const bool moving = s.mode == ServoMode::Move && !s.inPosition;
+    stillForS_ = !moving && std::abs(s.velocityMmS) < kStillSpeedMmS ? stillForS_ + dtS : 0.0;
+    if (stillForS_ < kStillTimeS) return;
+    ending_ = false;
+    // A program never reports success with the platform away from where it sent it (the
+    // classic law releases the drive at 0.5 mm and may coast on): it says how far instead.
+    const double off = haveTarget_ ? s.positionMm - lastTargetMm_ : 0.0;
+    if (std::abs(off) > profile().loop.finalPositionWindowMm)
+        raiseAlarm(AlarmCode::FinalPositionOff, off);
+    else
+        post(EventKind::ProgramEnd);
+    status_.programFinished = true;
+    status_.blockIndex = -1;
+    blockStarted_ = false;
+    setState(ControllerState::AutoIdle);
+}
+
 void MachineController::stepRunning(double dtS) {
+    if (ending_) return stepEnding(dtS);
     if (approachFirst_) {
         if (!servo_.sample().inPosition) return;
         approachFirst_ = false;
     }
     for (int k = 0; k < kMaxBlocksPerStep && status_.state == ControllerState::Running; ++k) {
+        if (ending_) break;
         if (!blockStarted_) {
             beginBlock();
             continue;
@@ -452,6 +503,8 @@ void MachineController::stop() {
     blockStarted_ = false;
     approachFirst_ = false;
     startAfterHoming_ = false;
+    ending_ = false;
+    servo_.setSoftLimitsActive(true);
     setState(ControllerState::AutoIdle);
     post(EventKind::Stopped);
 }
@@ -474,7 +527,9 @@ void MachineController::abandonRun() {
     approachFirst_ = false;
     startAfterHoming_ = false;
     jogging_ = false;
+    ending_ = false;
     status_.manualCode = kDacZero;
+    servo_.setSoftLimitsActive(true);
 }
 
 void MachineController::emergencyStop() {
@@ -497,11 +552,11 @@ void MachineController::resetEmergencyStop() {
     post(EventKind::EStopReset);
 }
 
-void MachineController::raiseAlarm(AlarmCode code) {
+void MachineController::raiseAlarm(AlarmCode code, double value) {
     if (code == AlarmCode::None) return;
     if (code == AlarmCode::EmergencyStop) return emergencyStop();
     status_.lastAlarm = code;
-    post(EventKind::AlarmRaised, -1, 0.0, 0.0, code);
+    post(EventKind::AlarmRaised, -1, 0.0, 0.0, code, value);
     if (alarmSeverity(code) == AlarmSeverity::Warning) {
         if (code == AlarmCode::SoftLimit && jogging_) servo_.stop();
         return;
@@ -526,8 +581,8 @@ void MachineController::acknowledgeAlarms() {
     // After a fault of the position chain the count cannot be trusted: home again.
     const std::uint32_t positionFaults =
         alarmBit(AlarmCode::FollowingError) | alarmBit(AlarmCode::EncoderFault) |
-        alarmBit(AlarmCode::LoopOverrun) | alarmBit(AlarmCode::HomingFailed) |
-        alarmBit(AlarmCode::AmplifierFault);
+        alarmBit(AlarmCode::EncoderStalled) | alarmBit(AlarmCode::LoopOverrun) |
+        alarmBit(AlarmCode::HomingFailed) | alarmBit(AlarmCode::AmplifierFault);
     if (status_.activeAlarms & positionFaults) status_.homed = false;
     status_.activeAlarms = 0;
     servo_.clearFault();
@@ -564,8 +619,30 @@ void MachineController::checkServoFault() {
         case ServoFault::AmplifierFault:
             raiseAlarm(AlarmCode::AmplifierFault);
             break;
+        case ServoFault::SoftLimit:
+            raiseAlarm(AlarmCode::SoftLimitStop, servo_.sample().faultValue);
+            break;
+        case ServoFault::EncoderStall:
+            raiseAlarm(AlarmCode::EncoderStalled, servo_.sample().faultValue);
+            break;
+        case ServoFault::InPositionTimeout:
+            raiseAlarm(AlarmCode::InPositionTimeout, servo_.sample().faultValue);
+            break;
         default:
             break;
+    }
+}
+
+void MachineController::checkServoWarnings() {
+    const ServoSample& s = servo_.sample();
+    if (s.limitStops != lastLimitStops_) {
+        lastLimitStops_ = s.limitStops;
+        status_.manualCode = kDacZero;
+        raiseAlarm(AlarmCode::SoftLimit, s.faultValue);
+    }
+    if (s.corrections != lastCorrections_) {
+        lastCorrections_ = s.corrections;
+        if (status_.homed) raiseAlarm(AlarmCode::CounterCorrected, s.lastCorrectionMm);
     }
 }
 
@@ -585,6 +662,7 @@ void MachineController::step(double dtS) {
         status_.state != ControllerState::EStop)
         raiseAlarm(AlarmCode::LoopOverrun);
     checkServoFault();
+    checkServoWarnings();
     switch (status_.state) {
         case ControllerState::Manual:
             checkManualLimits();

@@ -107,7 +107,8 @@ class MachineController {
     void emergencyStop();
     void resetEmergencyStop();
     void acknowledgeAlarms();
-    void raiseAlarm(AlarmCode code);  ///< also used by the worker's watchdog
+    /// Also used by the worker's watchdog. value: the alarm's figure (mm, s) for its text.
+    void raiseAlarm(AlarmCode code, double value = 0.0);
     void setGains(LoopLaw law, const LoopGains& gains);
     void setLaw(LoopLaw law);
     void setCommandSeq(std::uint64_t seq) { status_.lastCommandSeq = seq; }
@@ -123,7 +124,12 @@ class MachineController {
     };
 
     void post(EventKind kind, std::int32_t n = -1, double x = 0.0, double feed = 0.0,
-              AlarmCode alarm = AlarmCode::None);
+              AlarmCode alarm = AlarmCode::None, double value = 0.0);
+    void beginHoming();
+    /// The servo's counters of warnings (manual soft-limit stops, centre-mark corrections).
+    void checkServoWarnings();
+    /// M02: waits for the platform to stand still, then ends (or warns how far it is off).
+    void stepEnding(double dtS);
     void setState(ControllerState s) { status_.state = s; }
     void beginBlock();
     void finishBlock();
@@ -152,6 +158,13 @@ class MachineController {
     ControllerState holdFrom_ = ControllerState::Running;
     double rejectWindow_ = 0.0;  ///< recent implausible counter reads (decays 10 per s)
     std::uint32_t lastRejected_ = 0;
+    std::uint32_t lastLimitStops_ = 0;
+    std::uint32_t lastCorrections_ = 0;
+    std::size_t gotoBlocks_ = 0;          ///< goto blocks in the program
+    std::size_t gotosSinceActivity_ = 0;  ///< gotos run since the last move, dwell or pause
+    bool ending_ = false;                 ///< M02 reached: waiting for the platform to be still
+    bool haveTarget_ = false;             ///< a move of this run set lastTargetMm_
+    double lastTargetMm_ = 0.0;
 };
 
 const char* controllerStateName(ControllerState s);

@@ -55,6 +55,12 @@ void forEachNumber(MachineProfile& p, F&& f) {
     f("loop.derivativeFilterS", l.derivativeFilterS, 0.0, 1.0);
     f("loop.slewCodesPerS", l.slewCodesPerS, 1.0, 1e7);
     f("loop.followingErrorLimitMm", l.followingErrorLimitMm, 0.1, 10000.0);
+    f("loop.minFollowingErrorMm", l.minFollowingErrorMm, 0.01, 10000.0);
+    f("loop.driveMarginMmS", l.driveMarginMmS, 0.0, 100000.0);
+    f("loop.encoderStallMm", l.encoderStallMm, 0.1, 1000.0);
+    f("loop.inPositionTimeoutS", l.inPositionTimeoutS, 0.1, 600.0);
+    f("loop.classicInPositionTimeoutS", l.classicInPositionTimeoutS, 0.1, 3600.0);
+    f("loop.finalPositionWindowMm", l.finalPositionWindowMm, 0.001, 100.0);
     f("loop.inPositionWindowMm", l.inPositionWindowMm, 0.001, 100.0);
     f("loop.inPositionTimeS", l.inPositionTimeS, 0.0, 10.0);
     f("loop.classicInPositionMm", l.classicInPositionMm, 0.001, 100.0);
@@ -65,6 +71,7 @@ void forEachNumber(MachineProfile& p, F&& f) {
     f("motion.rapidSpeedMmS", m.rapidSpeedMmS, 1.0, 100000.0);
     f("motion.accelerationMmS2", m.accelerationMmS2, 1.0, 1e6);
     f("motion.minAccelerationMmS2", m.minAccelerationMmS2, 1.0, 1e6);
+    f("motion.maxDecelerationMmS2", m.maxDecelerationMmS2, 1.0, 1e6);
     f("motion.jogMaxFraction", m.jogMaxFraction, 0.01, 1.0);
     f("limits.x.softMinMm", p.limits.x.softMinMm, -100000.0, 100000.0);
     f("limits.x.softMaxMm", p.limits.x.softMaxMm, -100000.0, 100000.0);

@@ -55,15 +55,34 @@ struct LoopParams {
     /// Engineered: Kp code/mm, Ki code/(mm.s), Kd code/(mm/s). Chosen by simulation, see
     /// tests/integration/rail_moves_test.cpp.
     LoopGains engineered{1.2, 0.5, 0.02};
-    double derivativeFilterS = 0.004;     ///< first-order filter on the measured velocity
-    double slewCodesPerS = 10000.0;       ///< output slew limit, DAC codes per second
-    double followingErrorLimitMm = 25.0;  ///< beyond this a move stops with an alarm
-    double inPositionWindowMm = 0.044;    ///< one count
-    double inPositionTimeS = 0.05;        ///< must stay inside the window this long
-    double classicInPositionMm = 0.5;     ///< the VB's epsilon
-    double replanErrorMm = 1.0;           ///< lag beyond which the profile is re-planned gentler
-    double switchDebounceS = 0.005;       ///< a switch bit must read the same this long to count
-    double watchdogS = 0.05;              ///< a servo period longer than this stops the machine
+    double derivativeFilterS = 0.004;  ///< first-order filter on the measured velocity
+    double slewCodesPerS = 10000.0;    ///< output slew limit, DAC codes per second
+    /// Following-error limit at the rapid speed, mm; scaled with the commanded speed down to
+    /// minFollowingErrorMm (LinuxCNC's FERROR and MIN_FERROR): a stuck encoder on a slow move
+    /// trips after millimetres, not after the 25 mm a rapid needs.
+    double followingErrorLimitMm = 25.0;
+    double minFollowingErrorMm = 2.0;  ///< chosen: 45 counts, ten times a loaded move's lag
+    /// The engineered law's drive is clamped to the speed the setpoint needs (its speed x 1.2,
+    /// plus the lead of its acceleration through the amplifier's lag) plus this margin, mm/s:
+    /// a runaway (stuck encoder) moves no faster than the program asked. Chosen: 2 DAC codes.
+    double driveMarginMmS = 30.0;
+    /// Commanded travel (mm, above 15 mm/s) with no change of the counter: the encoder or its
+    /// cable is dead. Chosen: 5 mm, 110 counts that a moving platform would have produced.
+    double encoderStallMm = 5.0;
+    /// A move whose profile has ended must settle in the window within this time, s.
+    double inPositionTimeoutS = 2.0;
+    /// The same for the classic law, whose integral creeps over the last half millimetre for
+    /// seconds at the 1996 gains (a 0.7 mm error takes 9.5 s at Ki 0.0005, 10 ms).
+    double classicInPositionTimeoutS = 20.0;
+    /// A program ends "finished" only with the platform this close to its last target, mm
+    /// (the VB's 0.5 mm epsilon); otherwise it ends with a warning that says how far.
+    double finalPositionWindowMm = 0.5;
+    double inPositionWindowMm = 0.044;  ///< one count
+    double inPositionTimeS = 0.05;      ///< must stay inside the window this long
+    double classicInPositionMm = 0.5;   ///< the VB's epsilon
+    double replanErrorMm = 1.0;         ///< lag beyond which the profile is re-planned gentler
+    double switchDebounceS = 0.005;     ///< a switch bit must read the same this long to count
+    double watchdogS = 0.05;            ///< a servo period longer than this stops the machine
 };
 
 struct MotionLimits {
@@ -71,7 +90,12 @@ struct MotionLimits {
         1700.0;  ///< chosen: 90 % of the plant's 1885 mm/s, headroom for the loop
     double accelerationMmS2 = 2500.0;  ///< chosen: 80 % of the nominal 3.1 m/s2 the current allows
     double minAccelerationMmS2 = 300.0;  ///< re-planning never goes gentler than this
-    double jogMaxFraction = 0.5;         ///< manual mode caps the speed at this fraction of rapid
+    /// The hardest braking the plant can do at its nominal mass, mm/s2: a re-plan that cannot
+    /// stop on its target at the planned rate brakes up to this, and the soft-limit guard
+    /// predicts stopping points with it. The peak current brakes 193 kg at 3.45 m/s2 plus
+    /// friction; chosen: 3000 mm/s2, 13 % below.
+    double maxDecelerationMmS2 = 3000.0;
+    double jogMaxFraction = 0.5;  ///< manual mode caps the speed at this fraction of rapid
 };
 
 struct MachineProfile {

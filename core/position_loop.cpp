@@ -89,15 +89,16 @@ LoopOutput PositionLoop::engineered(const LoopInput& in) {
     LoopOutput out;
     const double e = in.setpointMm - in.measuredMm;
     const double pdf = engineeredTerms(g, in, &out.p, &out.d, &out.ff);
-    constexpr double kLimit = 127.0;
+    const double limit =
+        in.maxSpeedMmS > 0.0 ? std::min(127.0, in.maxSpeedMmS * codesPerSpeed_) : 127.0;
     // Integrate unless the output is already pinned and the error would push it further.
     const double candidate = integral_ + g.ki * e * in.dtS;
     const double unclamped = pdf + candidate;
-    const bool pinned = (unclamped > kLimit && e > 0) || (unclamped < -kLimit && e < 0);
-    if (!pinned) integral_ = std::clamp(candidate, -kLimit, kLimit);
+    const bool pinned = (unclamped > limit && e > 0) || (unclamped < -limit && e < 0);
+    if (!pinned) integral_ = std::clamp(candidate, -limit, limit);
     out.i = integral_;
     double u = pdf + integral_;
-    double limited = std::clamp(u, -kLimit, kLimit);
+    double limited = std::clamp(u, -limit, limit);
     const double maxStep = params_.slewCodesPerS * in.dtS;
     limited = std::clamp(limited, previousCommand_ - maxStep, previousCommand_ + maxStep);
     out.saturated = limited != u;

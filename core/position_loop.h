@@ -21,6 +21,9 @@ struct LoopInput {
     double measuredVelocityMmS = 0.0;  ///< filtered estimate
     double dtS = 0.001;
     double speedFraction = 1.0;  ///< M = f/100, 1 for g00 (classic clamp)
+    /// Engineered law: the drive is clamped to this speed, mm/s (0 = the DAC's full range), so
+    /// a loop that has lost its measurement drives no faster than the move needs.
+    double maxSpeedMmS = 0.0;
 };
 
 /// What the loop did, for display and traces: contributions in DAC codes around 128.

@@ -12,7 +12,8 @@ RailServo::RailServo(const MachineProfile& profile, RailIo& io)
       counter_(profile.plant.countsPerMm, profile.plant.maxSpeedMmS()),
       switches_(std::max(1, static_cast<int>(std::lround(profile.loop.switchDebounceS /
                                                          profile.loop.samplePeriodS)))),
-      accel_(profile.motion.accelerationMmS2) {
+      accel_(profile.motion.accelerationMmS2),
+      speedPerCode_(profile.plant.maxSpeedMmS() / 127.0) {
     switches_.reset(io_.readSwitches());
     counter_.resync(io_, 0);
     sample_.switches = switches_.value();
@@ -38,24 +39,57 @@ void RailServo::setLaw(LoopLaw law) {
     profile_.loop.law = law;
 }
 
+double RailServo::moveFraction() const {
+    return std::min(1.0, speedFraction_ * (useOverride_ ? override_ : 1.0));
+}
+
 void RailServo::planFrom(double positionMm, double velocityMmS) {
-    const double speed =
-        profile_.motion.rapidSpeedMmS * std::clamp(speedFraction_ * override_, 0.001, 1.0);
-    profileMotion_ = Trapezoid::fromState(positionMm, velocityMmS, sample_.targetMm, speed, accel_);
+    // Every plan is from the given state to the move's target and never passes it (the
+    // planner brakes harder, up to the machine's limit, rather than run through).
+    const double maxDecel = profile_.motion.maxDecelerationMmS2;
+    const double fraction = moveFraction();
+    sample_.feedHeld = !(fraction > 0.0);
+    if (sample_.feedHeld) {
+        // Feed hold: brake to rest where the planned rate allows (never past the target); the
+        // move stays active and is re-planned to its target when the override rises.
+        const double v = velocityMmS;
+        double rest = positionMm + v * std::abs(v) / (2.0 * accel_);
+        const double t = sample_.targetMm;
+        if ((v > 0 && rest > t && positionMm <= t) || (v < 0 && rest < t && positionMm >= t))
+            rest = t;
+        profileMotion_ =
+            Trapezoid::fromState(positionMm, v, rest, std::max(std::abs(v), 1.0), accel_, maxDecel);
+    } else {
+        profileMotion_ =
+            Trapezoid::fromState(positionMm, velocityMmS, sample_.targetMm,
+                                 profile_.motion.rapidSpeedMmS * fraction, accel_, maxDecel);
+    }
     profileTime_ = 0.0;
 }
 
-void RailServo::moveTo(double targetMm, double speedFraction) {
+void RailServo::moveTo(double targetMm, double speedFraction, bool useOverride) {
     if (sample_.mode == ServoMode::Fault) return;
     const bool wasMoving = sample_.mode == ServoMode::Move && !sample_.inPosition;
     speedFraction_ = std::clamp(speedFraction, 0.001, 1.0);
+    useOverride_ = useOverride;
+    if (limitsActive_)
+        targetMm = std::clamp(targetMm, profile_.limits.x.softMinMm, profile_.limits.x.softMaxMm);
     sample_.targetMm = targetMm;
     sample_.moveStartMm = sample_.positionMm;
     sample_.inPosition = false;
     settledFor_ = 0.0;
+    unsettledFor_ = 0.0;
+    moveTime_ = 0.0;
     accel_ = profile_.motion.accelerationMmS2;
     if (profile_.loop.law == LoopLaw::Classic) {
         loop_.reset();  // the VB zeroed soma_erro at each posiciona
+        // The step setpoint has no plan; its in-position deadline is that of the profile the
+        // engineered law would run, plus the timeout.
+        classicDeadline_ =
+            Trapezoid::restToRest(sample_.positionMm, targetMm,
+                                  profile_.motion.rapidSpeedMmS * speedFraction_, accel_)
+                .duration() +
+            profile_.loop.classicInPositionTimeoutS;
     } else {
         // From the setpoint's own state when already moving (no jump), else from rest here.
         const MotionSample now = profileMotion_.at(profileTime_);
@@ -86,11 +120,16 @@ void RailServo::stop() {
     const double v = sample_.mode == ServoMode::Move ? now.velocityMmS : 0.0;
     const double p = sample_.mode == ServoMode::Move ? now.positionMm : sample_.setpointMm;
     sample_.targetMm = p + v * std::abs(v) / (2.0 * accel_);
-    profileMotion_ =
-        Trapezoid::fromState(p, v, sample_.targetMm, std::max(std::abs(v), 1.0), accel_);
+    if (limitsActive_)
+        sample_.targetMm =
+            std::clamp(sample_.targetMm, profile_.limits.x.softMinMm, profile_.limits.x.softMaxMm);
+    profileMotion_ = Trapezoid::fromState(p, v, sample_.targetMm, std::max(std::abs(v), 1.0),
+                                          accel_, profile_.motion.maxDecelerationMmS2);
     profileTime_ = 0.0;
     sample_.inPosition = false;
+    sample_.feedHeld = false;
     settledFor_ = 0.0;
+    unsettledFor_ = 0.0;
     sample_.mode = ServoMode::Move;
 }
 
@@ -122,6 +161,9 @@ bool RailServo::setDirect(std::uint8_t code) {
     if ((code < kDacZero && (sw & switch_bits::kLeftEnd)) ||
         (code > kDacZero && (sw & switch_bits::kRightEnd)))
         return false;
+    if (limitsActive_ && ((code < kDacZero && sample_.positionMm <= profile_.limits.x.softMinMm) ||
+                          (code > kDacZero && sample_.positionMm >= profile_.limits.x.softMaxMm)))
+        return false;
     directCode_ = code;
     sample_.mode = ServoMode::Direct;
     return true;
@@ -135,46 +177,112 @@ void RailServo::clearFault() {
 }
 
 void RailServo::setSpeedOverride(double factor) {
-    override_ = std::clamp(factor, 0.0, 1.5);
+    const double before = moveFraction();
+    override_ = std::clamp(std::isfinite(factor) ? factor : 0.0, 0.0, 1.5);
     if (sample_.mode == ServoMode::Move && !sample_.inPosition &&
-        profile_.loop.law == LoopLaw::Engineered) {
+        profile_.loop.law == LoopLaw::Engineered && moveFraction() != before) {
+        // Re-plan from the setpoint's own state: 0 brakes to rest (a feed hold, the block stays
+        // active), anything else goes on to the real target at the new speed.
         const MotionSample now = profileMotion_.at(profileTime_);
-        if (override_ == 0.0) {
-            stop();  // a zero override is a feed hold
-        } else {
-            planFrom(now.positionMm, now.velocityMmS);
-        }
+        planFrom(now.positionMm, now.velocityMmS);
     }
 }
 
-void RailServo::fault(ServoFault f) {
+void RailServo::fault(ServoFault f, double value) {
     io_.writeDrive(kDacZero);
     sample_.fault = f;
+    sample_.faultValue = value;
     sample_.mode = ServoMode::Fault;
     sample_.loop = LoopOutput{};
     loop_.reset();
+}
+
+bool RailServo::guardSoftLimits() {
+    // The stopping point predicted at the machine's braking limit must stay inside the soft
+    // limits (0.5 mm of tolerance for the velocity estimate's noise). Checked on the measured
+    // state, so it catches what no plan intended: the classic law's overshoot, a runaway, a
+    // manual drive code. The end switches stay the last resort.
+    if (!limitsActive_ || sample_.mode == ServoMode::Idle || sample_.mode == ServoMode::Fault)
+        return true;
+    constexpr double kToleranceMm = 0.5;
+    const double v = velocity_;
+    const double stopAt =
+        sample_.positionMm + v * std::abs(v) / (2.0 * profile_.motion.maxDecelerationMmS2);
+    const AxisTravel& lim = profile_.limits.x;
+    double limit = 0.0;
+    if (v > 0.0 && stopAt > lim.softMaxMm + kToleranceMm)
+        limit = lim.softMaxMm;
+    else if (v < 0.0 && stopAt < lim.softMinMm - kToleranceMm)
+        limit = lim.softMinMm;
+    else
+        return true;
+    if (sample_.mode == ServoMode::Direct) {
+        // The 1996 manual keys: stop the drive, say so, and let the operator drive back.
+        if ((directCode_ > kDacZero) == (v > 0.0) && directCode_ != kDacZero) {
+            directCode_ = kDacZero;
+            sample_.faultValue = limit;
+            ++sample_.limitStops;
+        }
+        return true;
+    }
+    fault(ServoFault::SoftLimit, limit);
+    return false;
+}
+
+bool RailServo::checkEncoder(double dtS, bool counted) {
+    // Plausibility: the drive commanded motion (above a code of dead band) for encoderStallMm
+    // of travel and the counter did not change once. A platform that moves at all makes 22.8
+    // counts a millimetre, so this is a dead encoder, its cable, or a jam.
+    if (counted || sample_.mode == ServoMode::Idle || sample_.mode == ServoMode::Fault) {
+        stallTravel_ = 0.0;
+        return true;
+    }
+    const double commanded = std::abs(static_cast<int>(lastCode_) - kDacZero) * speedPerCode_;
+    stallTravel_ += std::max(0.0, commanded - speedPerCode_) * dtS;
+    if (stallTravel_ < profile_.loop.encoderStallMm) return true;
+    fault(ServoFault::EncoderStall, stallTravel_);
+    stallTravel_ = 0.0;
+    return false;
 }
 
 void RailServo::tick(double dtS) {
     if (!(dtS > 0.0)) return;
     ServoSample& s = sample_;
     s.timeS += dtS;
+    // A late tick (the thread woke late): the profile advances by the real elapsed time, as the
+    // platform went on moving meanwhile; it is counted and shown, and it never triggers a
+    // re-plan (a late tick is not a heavier load). The watchdog handles a loop that stops.
+    const double nominal = profile_.loop.samplePeriodS;
+    const bool late = dtS > 1.5 * nominal;
+    if (late) ++s.overruns;
+    s.lastPeriodS = dtS;
+    s.worstPeriodS = std::max(s.worstPeriodS, dtS);
 
     // ---- inputs, read once -------------------------------------------------------------------
     const std::uint8_t rawSwitches = io_.readSwitches();
     const std::uint8_t sw = switches_.update(rawSwitches);
     s.switches = sw;
     const double previous = s.positionMm;
-    const bool nearCentre =
-        ((rawSwitches | sw) & switch_bits::kCentre) || std::abs(s.positionMm) < 30.0;
+    const bool onCentre = (rawSwitches | sw) & switch_bits::kCentre;
+    const bool nearCentre = onCentre || std::abs(s.positionMm) < 30.0;
     counter_.read(io_, dtS, nearCentre);
     s.positionMm = counter_.positionMm();
     s.rejectedReads = counter_.rejected();
+    // The centre mark clears the counter (the 1996 reset): a change of reference, not motion.
+    // Big ones the reader re-bases; small ones (a few lost counts, a slipping cable) show as a
+    // step the velocity cannot explain while on the mark. Either way the step is kept out of
+    // the velocity estimate, the plan follows it, and it is reported with its size.
     double jumpMm = 0.0;
-    if (counter_.rebased()) {
-        // A new reference, not motion: keep it out of the velocity estimate.
-        jumpMm = (s.positionMm - previous) - velocity_ * dtS;
-        ++s.rebases;
+    const double residual = (s.positionMm - previous) - velocity_ * dtS;
+    const double explained =
+        3.0 / profile_.plant.countsPerMm + 0.5 * profile_.motion.maxDecelerationMmS2 * dtS * dtS;
+    if (counter_.rebased() || (onCentre && std::abs(residual) > explained)) {
+        jumpMm = residual;
+        if (counter_.rebased()) ++s.rebases;
+        if (std::abs(residual) > explained) {
+            ++s.corrections;
+            s.lastCorrectionMm = residual;
+        }
     }
     // Filtered velocity and acceleration (first order, derivativeFilterS). The period hardly
     // ever changes, so its reciprocals are kept (divisions were a third of the tick).
@@ -192,8 +300,10 @@ void RailServo::tick(double dtS) {
 
     if (s.mode == ServoMode::Fault) {
         io_.writeDrive(kDacZero);
+        lastCode_ = kDacZero;
         return;
     }
+    if (!checkEncoder(dtS, counter_.lastDelta() != 0 || counter_.rebased())) return;
     // After a re-base the platform is not where the plan thought: plan the rest of the move
     // from the corrected position, at the speed the setpoint had (no jump in the command).
     if (jumpMm != 0.0 && s.mode == ServoMode::Move && profile_.loop.law == LoopLaw::Engineered &&
@@ -203,6 +313,7 @@ void RailServo::tick(double dtS) {
     }
     if (!(sw & switch_bits::kAmplifierReady) && s.mode != ServoMode::Idle)
         return fault(ServoFault::AmplifierFault);
+    if (!guardSoftLimits()) return;
 
     // ---- setpoint ----------------------------------------------------------------------------
     double spVelocity = 0.0, spAcceleration = 0.0;
@@ -211,6 +322,7 @@ void RailServo::tick(double dtS) {
             s.setpointMm = s.positionMm;
             s.errorMm = 0.0;
             io_.writeDrive(kDacZero);
+            lastCode_ = kDacZero;
             return;
         case ServoMode::Direct: {
             s.setpointMm = s.positionMm;
@@ -222,12 +334,14 @@ void RailServo::tick(double dtS) {
             s.loop.code = directCode_;
             s.loop.command = directCode_ - 128.0;
             io_.writeDrive(directCode_);
+            lastCode_ = directCode_;
             return;
         }
         case ServoMode::Hold:
             spVelocity = 0.0;
             break;
         case ServoMode::Move:
+            moveTime_ += dtS;
             if (profile_.loop.law == LoopLaw::Classic) {
                 s.setpointMm = s.targetMm;  // the VB's step setpoint
             } else {
@@ -241,6 +355,12 @@ void RailServo::tick(double dtS) {
         case ServoMode::Fault:
             break;
     }
+    if (limitsActive_) {
+        // Every commanded setpoint stays inside the soft limits, whatever produced it.
+        const AxisTravel& lim = profile_.limits.x;
+        const double clamped = std::clamp(s.setpointMm, lim.softMinMm, lim.softMaxMm);
+        if (clamped != s.setpointMm) s.setpointMm = clamped, spVelocity = spAcceleration = 0.0;
+    }
     s.setpointVelocityMmS = spVelocity;
     s.errorMm = s.setpointMm - s.positionMm;
 
@@ -249,18 +369,22 @@ void RailServo::tick(double dtS) {
     const double heading = s.mode == ServoMode::Move ? s.targetMm - s.positionMm : s.errorMm;
     if (leftEnd && (heading < 0 || velocity_ < -1.0)) return fault(ServoFault::LeftEndSwitch);
     if (rightEnd && (heading > 0 || velocity_ > 1.0)) return fault(ServoFault::RightEndSwitch);
-    if (profile_.loop.law == LoopLaw::Engineered &&
-        std::abs(s.errorMm) > profile_.loop.followingErrorLimitMm)
-        return fault(ServoFault::FollowingError);
+    // The following-error limit scales with the commanded speed (LinuxCNC's FERROR and
+    // MIN_FERROR): 25 mm at the rapid speed, 2 mm at rest.
+    const double ferror = std::max(
+        profile_.loop.minFollowingErrorMm,
+        profile_.loop.followingErrorLimitMm * std::abs(spVelocity) / profile_.motion.rapidSpeedMmS);
+    if (profile_.loop.law == LoopLaw::Engineered && std::abs(s.errorMm) > ferror)
+        return fault(ServoFault::FollowingError, s.errorMm);
 
     // The plant cannot follow (a heavier load than planned): re-plan from the measured state
     // with a gentler acceleration instead of letting the integrator drive past the target.
     // Only when the platform does move the planned way, slower: a frozen count (stuck
-    // encoder) must grow into a following error, not be planned away.
+    // encoder) must grow into a following error, not be planned away. Never on a late tick.
     const bool movingAlong =
         velocity_ * spVelocity > 0.0 && std::abs(velocity_) >= 0.25 * std::abs(spVelocity);
-    if (s.mode == ServoMode::Move && profile_.loop.law == LoopLaw::Engineered &&
-        profileTime_ < profileMotion_.duration() &&
+    if (s.mode == ServoMode::Move && profile_.loop.law == LoopLaw::Engineered && !late &&
+        !s.feedHeld && profileTime_ < profileMotion_.duration() &&
         std::abs(s.errorMm) > profile_.loop.replanErrorMm &&
         accel_ > profile_.motion.minAccelerationMmS2 && movingAlong) {
         accel_ = std::max(profile_.motion.minAccelerationMmS2, accel_ * 0.7);
@@ -281,9 +405,15 @@ void RailServo::tick(double dtS) {
     in.measuredMm = s.positionMm;
     in.measuredVelocityMmS = velocity_;
     in.dtS = dtS;
-    in.speedFraction = std::clamp(speedFraction_ * override_, 0.0, 1.0);
+    const double fraction = s.mode == ServoMode::Move ? moveFraction() : 0.0;
+    in.speedFraction = s.mode == ServoMode::Move ? std::clamp(fraction, 0.0, 1.0) : 1.0;
+    // The drive never commands more speed than the setpoint needs now (its speed, 20 % more,
+    // the lead its acceleration needs through the amplifier's lag) plus a margin.
+    in.maxSpeedMmS = std::abs(spVelocity) * 1.2 + accel_ * profile_.plant.speedLoopTauS +
+                     profile_.loop.driveMarginMmS;
     s.loop = loop_.update(in);
     io_.writeDrive(s.loop.code);
+    lastCode_ = s.loop.code;
 
     // ---- in position -------------------------------------------------------------------------
     if (s.mode == ServoMode::Move) {
@@ -291,14 +421,19 @@ void RailServo::tick(double dtS) {
             if (std::abs(s.errorMm) <= profile_.loop.classicInPositionMm) {
                 s.inPosition = true;
                 release();  // as the VB did: motor(128) once in position
+            } else if (moveTime_ > classicDeadline_ && fraction > 0.0) {
+                return fault(ServoFault::InPositionTimeout, s.errorMm);
             }
-        } else if (profileTime_ >= profileMotion_.duration()) {
+        } else if (!s.feedHeld && profileTime_ >= profileMotion_.duration()) {
             settledFor_ = std::abs(s.errorMm) <= profile_.loop.inPositionWindowMm + 1e-9
                               ? settledFor_ + dtS
                               : 0.0;
+            unsettledFor_ += dtS;
             if (settledFor_ >= profile_.loop.inPositionTimeS) {
                 s.inPosition = true;
                 s.mode = ServoMode::Hold;
+            } else if (unsettledFor_ > profile_.loop.inPositionTimeoutS) {
+                return fault(ServoFault::InPositionTimeout, s.errorMm);
             }
         }
     }

@@ -29,6 +29,9 @@ enum class ServoFault : std::uint8_t {
     RightEndSwitch,
     AmplifierFault,  ///< the amplifier's ready input dropped
     HardStop,        ///< not reported by the servo; reserved for the plant's own stop
+    SoftLimit,     ///< the predicted stopping point passed a soft limit: stopped before the switch
+    EncoderStall,  ///< the drive ran encoderStallMm with no change of the counter
+    InPositionTimeout,  ///< the move ended but never settled in the window
 };
 
 /// Everything one tick knew, for the controller, the screens and traces.
@@ -50,6 +53,18 @@ struct ServoSample {
     std::uint32_t replans = 0;  ///< profiles re-planned gentler because the plant lagged
     std::uint32_t rejectedReads = 0;
     std::uint32_t rebases = 0;  ///< counter re-zeroed under us (the centre mark)
+    /// Corrections of the position by the centre mark (lost counts, cable slip): how many, and
+    /// the last one, mm (counter minus our count at the crossing).
+    std::uint32_t corrections = 0;
+    double lastCorrectionMm = 0.0;
+    /// Late ticks: periods longer than 1.5x the nominal, the longest period seen, the last.
+    std::uint32_t overruns = 0;
+    double worstPeriodS = 0.0;
+    double lastPeriodS = 0.0;
+    /// Manual (direct) drive stopped by the soft-limit guard (a warning, not a fault).
+    std::uint32_t limitStops = 0;
+    double faultValue = 0.0;  ///< SoftLimit: the limit, mm; EncoderStall: mm run; timeout: error
+    bool feedHeld = false;    ///< feed override 0: braked to rest, the move stays active
 };
 
 class RailServo {
@@ -60,8 +75,9 @@ class RailServo {
     void tick(double dtS);
     const ServoSample& sample() const { return sample_; }
 
-    /// Moves to target (mm from the centre) at speedFraction of the rapid speed (0..1].
-    void moveTo(double targetMm, double speedFraction);
+    /// Moves to target (mm from the centre, clamped to the soft limits) at speedFraction of
+    /// the rapid speed (0..1], times the feed override unless useOverride is false (homing).
+    void moveTo(double targetMm, double speedFraction, bool useOverride = true);
     /// Controlled stop: brakes to rest along a profile, then holds.
     void stop();
     /// E-stop: drive to 0 V at once and stay idle.
@@ -72,8 +88,11 @@ class RailServo {
     bool setDirect(std::uint8_t code);
     void hold();
     void clearFault();
-    /// Speed override (0..1.5] applied to the move in progress and the next ones.
+    /// Speed override [0..1.5] applied to the move in progress and the next ones. 0 is a feed
+    /// hold: the move brakes to rest and stays active, and goes on when the override rises.
     void setSpeedOverride(double factor);
+    /// Soft limits are enforced unless the position is not known yet (homing's search).
+    void setSoftLimitsActive(bool on) { limitsActive_ = on; }
     double speedOverride() const { return override_; }
     void setGains(LoopLaw law, const LoopGains& gains) { loop_.setGains(law, gains); }
     void setLaw(LoopLaw law);
@@ -85,8 +104,14 @@ class RailServo {
     const MachineProfile& profile() const { return profile_; }
 
   private:
-    void fault(ServoFault f);
+    void fault(ServoFault f, double value = 0.0);
     void planFrom(double positionMm, double velocityMmS);
+    /// Effective fraction of the rapid speed for the current move (0 = feed hold).
+    double moveFraction() const;
+    /// The soft-limit guard: false (and stopped) when the stopping point passes a limit.
+    bool guardSoftLimits();
+    /// The encoder plausibility check: false (faulted) when the drive ran without counts.
+    bool checkEncoder(double dtS, bool counted);
 
     MachineProfile profile_;
     RailIo& io_;
@@ -98,11 +123,19 @@ class RailServo {
     double profileTime_ = 0.0;
     double speedFraction_ = 1.0;  ///< of the rapid speed, as programmed
     double override_ = 1.0;
-    double accel_ = 0.0;       ///< current planning acceleration, mm/s2 (lowered by re-plans)
-    double settledFor_ = 0.0;  ///< s inside the in-position window
+    double accel_ = 0.0;            ///< current planning acceleration, mm/s2 (lowered by re-plans)
+    double settledFor_ = 0.0;       ///< s inside the in-position window
+    double unsettledFor_ = 0.0;     ///< s since the profile ended without settling
+    double moveTime_ = 0.0;         ///< s since moveTo (classic: its in-position deadline)
+    double classicDeadline_ = 0.0;  ///< s: a classic move must be in position by then
+    double stallTravel_ = 0.0;      ///< mm the drive commanded since the counter last changed
+    double speedPerCode_ = 0.0;     ///< mm/s per DAC code (1885 / 127)
+    bool useOverride_ = true;
+    bool limitsActive_ = true;
     double velocity_ = 0.0, acceleration_ = 0.0;
     double cachedDt_ = 0.0, inverseDt_ = 0.0, alpha_ = 0.0;
     std::uint8_t directCode_ = kDacZero;
+    std::uint8_t lastCode_ = kDacZero;  ///< the code written last tick (held until this one)
 };
 
 }  // namespace trilho

@@ -27,7 +27,8 @@ Trapezoid Trapezoid::restToRest(double startMm, double targetMm, double speedMmS
     return fromState(startMm, 0.0, targetMm, speedMmS, accelMmS2);
 }
 
-Trapezoid Trapezoid::fromState(double p0, double v0, double target, double speed, double accel) {
+Trapezoid Trapezoid::fromState(double p0, double v0, double target, double speed, double accel,
+                               double maxDecel) {
     Trapezoid t;
     t.target_ = target;
     t.speed_ = speed;
@@ -35,24 +36,38 @@ Trapezoid Trapezoid::fromState(double p0, double v0, double target, double speed
     t.segments_[0].p0 = p0;
     t.segments_[0].v0 = v0;
     if (!(speed > 0.0) || !(accel > 0.0)) return t;
+    if (!(maxDecel >= accel)) maxDecel = accel;
+    t.requiredDecel_ = accel;
 
     double p = p0, v = v0;
     double d = target - p;
-    // Moving away from the target, or too fast to stop before it: brake to rest first.
-    if ((d != 0.0 && v * d < 0.0) || (v != 0.0 && v * v / (2.0 * accel) > std::abs(d))) {
-        const double brake = std::abs(v) / accel;
-        t.append(v > 0 ? -accel : accel, brake);
+    if (v != 0.0 && (d == 0.0 || v * d < 0.0)) {
+        // Moving away from the target (or sitting on it with speed): every millimetre more is
+        // a millimetre to come back, so brake at the machine's limit, then plan from rest.
+        const double brake = std::abs(v) / maxDecel;
+        t.append(v > 0 ? -maxDecel : maxDecel, brake);
+        t.requiredDecel_ = maxDecel;
         p += v * brake / 2.0;
         v = 0.0;
         d = target - p;
-        t.segments_[0].p0 = p0;  // append() of the first segment keeps p0, v0
     }
     if (d == 0.0) return t;
     const double s = d > 0 ? 1.0 : -1.0;
     const double dist = std::abs(d);
     double u = v * s;  // speed towards the target, >= 0 here
+    if (u * u > 2.0 * accel * dist) {
+        // Too fast to stop at the planned rate (a late tick, a re-plan from a lagging state, an
+        // override change near the end): brake exactly as hard as stopping on the target needs.
+        // The setpoint never passes the target; past the machine's limit the plan says so.
+        const double decel = u * u / (2.0 * dist);
+        t.append(-s * decel, 2.0 * dist / u);
+        t.requiredDecel_ = std::max(t.requiredDecel_, decel);
+        t.feasible_ = decel <= maxDecel * (1.0 + 1e-12);
+        return t;
+    }
     if (u > speed) {
-        // Faster than the programmed speed (an override lowered it): brake to it first.
+        // Faster than the programmed speed (an override lowered it): brake to it first. The
+        // test above guarantees dDown + speed^2 / 2a <= dist, so the cruise is never negative.
         const double tDown = (u - speed) / accel;
         const double dDown = (u * u - speed * speed) / (2.0 * accel);
         t.append(-s * accel, tDown);

@@ -21,10 +21,13 @@ class Trapezoid {
 
     /// From rest at start to rest at target (option 2). speed mm/s > 0, accel mm/s2 > 0.
     static Trapezoid restToRest(double startMm, double targetMm, double speedMmS, double accelMmS2);
-    /// From (position, velocity) to rest at target. If the target cannot be reached without
-    /// passing it, brakes to a stop first and comes back.
+    /// From (position, velocity) to rest at target, never passing the target (issue 8): when
+    /// the planned acceleration cannot stop in time, the plan brakes harder, exactly as hard as
+    /// stopping on the target needs; feasible() says whether that stayed within maxDecelMmS2
+    /// (the machine's real limit; 0 = accelMmS2). Moving away from the target, it brakes at
+    /// maxDecelMmS2 and comes back.
     static Trapezoid fromState(double positionMm, double velocityMmS, double targetMm,
-                               double speedMmS, double accelMmS2);
+                               double speedMmS, double accelMmS2, double maxDecelMmS2 = 0.0);
 
     MotionSample at(double tS) const;
     double duration() const { return duration_; }
@@ -35,6 +38,10 @@ class Trapezoid {
     /// Largest |velocity| reached.
     double peakSpeed() const;
     bool empty() const { return count_ == 0; }
+    /// The hardest braking the plan uses, mm/s2 (>= accelLimit() only when it had to).
+    double requiredDecel() const { return requiredDecel_; }
+    /// The braking stayed within the machine's limit given to fromState().
+    bool feasible() const { return feasible_; }
 
   private:
     struct Segment {
@@ -48,6 +55,8 @@ class Trapezoid {
     double target_ = 0.0;
     double speed_ = 0.0;
     double accel_ = 0.0;
+    double requiredDecel_ = 0.0;
+    bool feasible_ = true;
 };
 
 }  // namespace trilho

@@ -46,7 +46,7 @@ struct Report {
         if (e.kind == EventKind::AlarmRaised) {
             QJsonObject a;
             a[QStringLiteral("code")] = static_cast<int>(e.alarm);
-            a[QStringLiteral("text")] = alarmText(e.alarm);
+            a[QStringLiteral("text")] = alarmText(e.alarm, e.value);
             alarms.append(a);
         }
     }

@@ -22,6 +22,11 @@ struct FaultInjection {
     double stuckEncoderAtS = -1.0;
     /// Time (s) at which the amplifier trips: no force, ready bit low. < 0 = never.
     double amplifierFaultAtS = -1.0;
+    /// Late servo ticks (a busy, non-real-time PC): each period is lengthened, with probability
+    /// tickJitterRate, by a uniform 0..tickJitterMaxS. Applied by SimSession, which picks the
+    /// periods; 0 = never.
+    double tickJitterMaxS = 0.0;
+    double tickJitterRate = 0.01;
 };
 
 }  // namespace trilho

@@ -410,7 +410,7 @@ TEST(Controller, CompileErrorsAreRefusedAndNothingMoves) {
     EXPECT_NEAR(r.session.rail().state().positionMm, 0.0, 1.5 * kCount);
 }
 
-TEST(Controller, StuckEncoderDuringAProgramIsAFollowingErrorAlarm) {
+TEST(Controller, StuckEncoderDuringAProgramIsAnEncoderAlarm) {
     RailRun r;
     ASSERT_TRUE(r.home());
     FaultInjection f;
@@ -418,7 +418,7 @@ TEST(Controller, StuckEncoderDuringAProgramIsAFollowingErrorAlarm) {
     r.session.rail().setFaults(f);
     ASSERT_TRUE(r.runProgram(compileText("G0 X1000\nM2\n"), 10));
     EXPECT_EQ(r.c().status().state, ControllerState::Alarm);
-    EXPECT_EQ(r.c().status().lastAlarm, AlarmCode::FollowingError);
+    EXPECT_EQ(r.c().status().lastAlarm, AlarmCode::EncoderStalled);
 }
 
 }  // namespace

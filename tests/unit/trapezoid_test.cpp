@@ -31,10 +31,12 @@ TEST(Trapezoid, TriangularWhenTheSpeedCannotBeReachedByHalfway) {
     EXPECT_NEAR(t.at(t.duration() / 2).positionMm, -50, 1e-9);
 }
 
-TEST(Trapezoid, FromAMovingStateTooFastToStopBrakesAndComesBack) {
-    Trapezoid t = Trapezoid::fromState(0, 1000, 100, 1500, 1000);  // needs 500 mm to stop
-    EXPECT_NEAR(t.at(1.0).velocityMmS, 0, 1e-9);
-    EXPECT_NEAR(t.at(1.0).positionMm, 500, 1e-9);
+TEST(Trapezoid, FromAMovingStateTooFastToStopNeverPassesTheTarget) {
+    // Needs 500 mm to stop at 1000 mm/s2; the 1.x planner ran to 500 and came back (issue 8).
+    Trapezoid t = Trapezoid::fromState(0, 1000, 100, 1500, 1000);
+    EXPECT_FALSE(t.feasible());  // no machine limit given: 1000 mm/s2 is the limit
+    EXPECT_NEAR(t.requiredDecel(), 5000, 1e-9);
+    EXPECT_LE(t.at(0.1).positionMm, 100);
     EXPECT_EQ(t.at(t.duration()).positionMm, 100);
 }
 
@@ -63,15 +65,85 @@ TEST(TrapezoidProperty, RandomProfilesRespectLimitsEndExactlyAndAreContinuous) {
         ASSERT_EQ(prev.positionMm, p0);
         ASSERT_EQ(prev.velocityMmS, v0);
         const double h = t.duration() / steps;
+        // A moving start that cannot stop at a brakes harder (never past the target).
+        const double decel = t.feasible() ? a : t.requiredDecel();
         for (int k = 1; k <= steps; ++k) {
             MotionSample s = t.at(k * h);
-            ASSERT_LE(std::abs(s.accelerationMmS2), a * (1 + 1e-9));
+            ASSERT_LE(std::abs(s.accelerationMmS2), decel * (1 + 1e-9));
             ASSERT_LE(std::abs(s.velocityMmS), v * (1 + 1e-9));
             // Continuity: the change over a step is bounded by the limits.
-            ASSERT_LE(std::abs(s.velocityMmS - prev.velocityMmS), a * h * (1 + 1e-6) + 1e-9)
+            ASSERT_LE(std::abs(s.velocityMmS - prev.velocityMmS), decel * h * (1 + 1e-6) + 1e-9)
                 << i << " " << k;
             ASSERT_LE(std::abs(s.positionMm - prev.positionMm), v * h * (1 + 1e-6) + 1e-9)
                 << i << " " << k;
+            prev = s;
+        }
+    }
+}
+
+TEST(Trapezoid, TooFastToStopAtTheGentleRateBrakesHarderAndStopsOnTheTarget) {
+    // 1000 mm/s with 100 mm to go needs 5000 mm/s2: more than the 1000 planned, within the
+    // 6000 the machine can brake at. The plan must stop on the target, never pass it.
+    Trapezoid t = Trapezoid::fromState(0, 1000, 100, 1500, 1000, 6000);
+    EXPECT_NEAR(t.duration(), 0.2, 1e-12);
+    EXPECT_NEAR(t.at(0.1).accelerationMmS2, -5000, 1e-9);
+    EXPECT_EQ(t.at(t.duration()).positionMm, 100);
+    EXPECT_NEAR(t.requiredDecel(), 5000, 1e-9);
+    EXPECT_TRUE(t.feasible());
+    for (double s = 0; s <= t.duration(); s += 1e-4)
+        ASSERT_LE(t.at(s).positionMm, 100 + 1e-9);
+}
+
+TEST(Trapezoid, BeyondTheMachineLimitStillStopsOnTheTargetAndSaysSo) {
+    Trapezoid t = Trapezoid::fromState(0, 1000, 10, 1500, 1000, 6000);  // needs 50000 mm/s2
+    EXPECT_FALSE(t.feasible());
+    EXPECT_EQ(t.at(t.duration()).positionMm, 10);
+    for (double s = 0; s <= t.duration(); s += 1e-5)
+        ASSERT_LE(t.at(s).positionMm, 10 + 1e-9);
+}
+
+TEST(Trapezoid, MovingAwayBrakesAtTheMachineLimitThenComesBack) {
+    Trapezoid t = Trapezoid::fromState(0, -600, 100, 1500, 1000, 3000);
+    EXPECT_NEAR(t.at(0.2).velocityMmS, 0, 1e-9);  // 600 / 3000
+    EXPECT_NEAR(t.at(0.2).positionMm, -60, 1e-9);
+    EXPECT_EQ(t.at(t.duration()).positionMm, 100);
+}
+
+// Issue 8: no plan ever passes its target, from any state, whatever the limits.
+TEST(TrapezoidProperty, NoPlanFromAnyStatePassesItsTarget) {
+    std::mt19937_64 rng(20261123);
+    std::uniform_real_distribution<double> pos(-1300, 1300), speed(1, 2000), accel(10, 5000),
+        unit(-1, 1), ratio(1, 4);
+    for (int i = 0; i < 20000; ++i) {
+        const double v = speed(rng), a = accel(rng), maxDecel = a * ratio(rng);
+        const double p0 = pos(rng);
+        // Targets far and near, states slow and faster than the speed limit.
+        const double target = i % 3 == 0 ? p0 + unit(rng) * 5.0 : pos(rng);
+        const double v0 = unit(rng) * v * (i % 4 == 0 ? 2.5 : 1.0);
+        Trapezoid t = Trapezoid::fromState(p0, v0, target, v, a, maxDecel);
+        const double d = target - p0;
+        const double side = d > 0 ? 1.0 : -1.0;  // the side of the target the plan starts on
+        const double u = v0 * side;              // speed towards the target
+        const double needed = u > 0 ? u * u / (2 * std::abs(d)) : 0.0;
+        const double decelBound = std::max(maxDecel, needed) * (1 + 1e-9);
+        ASSERT_EQ(t.at(t.duration()).positionMm, target);
+        ASSERT_EQ(t.feasible(), needed <= maxDecel * (1 + 1e-12)) << i;
+        const int steps = 2000;
+        const double h = t.duration() / steps;
+        MotionSample prev = t.at(0);
+        for (int k = 1; k <= steps; ++k) {
+            const MotionSample s = t.at(k * h);
+            // Never on the far side of the target.
+            ASSERT_GE((target - s.positionMm) * side, -1e-9 * (1 + std::abs(target)))
+                << i << " " << k << " p0 " << p0 << " v0 " << v0 << " target " << target;
+            ASSERT_LE(std::abs(s.accelerationMmS2), decelBound) << i;
+            // Accelerating (speed rising) only at the planned rate.
+            if (std::abs(s.velocityMmS) > std::abs(prev.velocityMmS) + 1e-9) {
+                ASSERT_LE(std::abs(s.velocityMmS) - std::abs(prev.velocityMmS),
+                          a * h * (1 + 1e-6) + 1e-9)
+                    << i;
+            }
+            ASSERT_LE(std::abs(s.velocityMmS), std::max(v, std::abs(v0)) * (1 + 1e-9)) << i;
             prev = s;
         }
     }
