@@ -388,6 +388,7 @@ void MachineController::beginBlock() {
         case Op::End:
             ending_ = true;  // stepEnding() finishes once the platform stands still
             stillForS_ = 0.0;
+            stillRefMm_ = servo_.sample().positionMm;
             break;
     }
 }
@@ -406,9 +407,21 @@ void MachineController::finishBlock() {
 
 void MachineController::stepEnding(double dtS) {
     const ServoSample& s = servo_.sample();
-    const bool moving = s.mode == ServoMode::Move && !s.inPosition;
-    stillForS_ = !moving && std::abs(s.velocityMmS) < kStillSpeedMmS ? stillForS_ + dtS : 0.0;
-    if (stillForS_ < kStillTimeS) return;
+    // Still: holding in position, or (the classic law released the drive) the count moved
+    // less than two counts in kStillTimeS. The velocity estimate is no judge at rest: one
+    // count flipping reads as several mm/s.
+    if (s.mode == ServoMode::Move && !s.inPosition) {
+        stillForS_ = 0.0;
+        stillRefMm_ = s.positionMm;
+        return;
+    }
+    if (std::abs(s.positionMm - stillRefMm_) > 2.0 / profile().plant.countsPerMm) {
+        stillRefMm_ = s.positionMm;
+        stillForS_ = 0.0;
+    }
+    stillForS_ += dtS;
+    const bool holding = s.mode == ServoMode::Hold && s.inPosition;
+    if (!holding && stillForS_ < kStillTimeS) return;
     ending_ = false;
     // A program never reports success with the platform away from where it sent it (the
     // classic law releases the drive at 0.5 mm and may coast on): it says how far instead.

@@ -165,6 +165,7 @@ class MachineController {
     bool ending_ = false;                 ///< M02 reached: waiting for the platform to be still
     bool haveTarget_ = false;             ///< a move of this run set lastTargetMm_
     double lastTargetMm_ = 0.0;
+    double stillRefMm_ = 0.0;  ///< position where the platform was last seen still
 };
 
 const char* controllerStateName(ControllerState s);

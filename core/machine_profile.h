@@ -72,8 +72,8 @@ struct LoopParams {
     /// A move whose profile has ended must settle in the window within this time, s.
     double inPositionTimeoutS = 2.0;
     /// The same for the classic law, whose integral creeps over the last half millimetre for
-    /// seconds at the 1996 gains (a 0.7 mm error takes 9.5 s at Ki 0.0005, 10 ms).
-    double classicInPositionTimeoutS = 20.0;
+    /// seconds at the 1996 gains (a 0.7 mm error takes 10 s and more at Ki 0.0005, 10 ms).
+    double classicInPositionTimeoutS = 60.0;
     /// A program ends "finished" only with the platform this close to its last target, mm
     /// (the VB's 0.5 mm epsilon); otherwise it ends with a warning that says how far.
     double finalPositionWindowMm = 0.5;

@@ -13,7 +13,8 @@ RailServo::RailServo(const MachineProfile& profile, RailIo& io)
       switches_(std::max(1, static_cast<int>(std::lround(profile.loop.switchDebounceS /
                                                          profile.loop.samplePeriodS)))),
       accel_(profile.motion.accelerationMmS2),
-      speedPerCode_(profile.plant.maxSpeedMmS() / 127.0) {
+      speedPerCode_(profile.plant.maxSpeedMmS() / 127.0),
+      plantAccelBound_(1.5 * profile.motion.maxDecelerationMmS2) {
     switches_.reset(io_.readSwitches());
     counter_.resync(io_, 0);
     sample_.switches = switches_.value();
@@ -77,7 +78,7 @@ void RailServo::moveTo(double targetMm, double speedFraction, bool useOverride) 
     sample_.targetMm = targetMm;
     sample_.moveStartMm = sample_.positionMm;
     sample_.inPosition = false;
-    settledFor_ = 0.0;
+    settledFor_ = settledErrorSum_ = 0.0;
     unsettledFor_ = 0.0;
     moveTime_ = 0.0;
     accel_ = profile_.motion.accelerationMmS2;
@@ -128,7 +129,7 @@ void RailServo::stop() {
     profileTime_ = 0.0;
     sample_.inPosition = false;
     sample_.feedHeld = false;
-    settledFor_ = 0.0;
+    settledFor_ = settledErrorSum_ = 0.0;
     unsettledFor_ = 0.0;
     sample_.mode = ServoMode::Move;
 }
@@ -230,15 +231,24 @@ bool RailServo::guardSoftLimits() {
 }
 
 bool RailServo::checkEncoder(double dtS, bool counted) {
-    // Plausibility: the drive commanded motion (above a code of dead band) for encoderStallMm
-    // of travel and the counter did not change once. A platform that moves at all makes 22.8
-    // counts a millimetre, so this is a dead encoder, its cable, or a jam.
+    // Plausibility: the drive commanded motion for encoderStallMm of travel and the counter did
+    // not change once. A platform that moves at all makes 22.8 counts a millimetre, so this is
+    // a dead encoder, its cable, or a jam. The travel is that of a model of the amplifier (its
+    // speed loop's lag and current limit) driven by the code held over the period, less a code
+    // of dead band: a reversal passes through zero speed and owes no counts meanwhile.
+    const double commanded =
+        (static_cast<int>(lastCode_) - static_cast<int>(kDacZero)) * speedPerCode_;
+    const double before = modelVelocity_;
+    const double step =
+        std::clamp((commanded - before) * std::min(1.0, dtS / profile_.plant.speedLoopTauS),
+                   -plantAccelBound_ * dtS, plantAccelBound_ * dtS);
+    modelVelocity_ += step;
     if (counted || sample_.mode == ServoMode::Idle || sample_.mode == ServoMode::Fault) {
         stallTravel_ = 0.0;
         return true;
     }
-    const double commanded = std::abs(static_cast<int>(lastCode_) - kDacZero) * speedPerCode_;
-    stallTravel_ += std::max(0.0, commanded - speedPerCode_) * dtS;
+    const double speed = 0.5 * std::abs(before + modelVelocity_);
+    stallTravel_ += std::max(0.0, speed - speedPerCode_) * dtS;
     if (stallTravel_ < profile_.loop.encoderStallMm) return true;
     fault(ServoFault::EncoderStall, stallTravel_);
     stallTravel_ = 0.0;
@@ -274,9 +284,17 @@ void RailServo::tick(double dtS) {
     // the velocity estimate, the plan follows it, and it is reported with its size.
     double jumpMm = 0.0;
     const double residual = (s.positionMm - previous) - velocity_ * dtS;
-    const double explained =
-        3.0 / profile_.plant.countsPerMm + 0.5 * profile_.motion.maxDecelerationMmS2 * dtS * dtS;
-    if (counter_.rebased() || (onCentre && std::abs(residual) > explained)) {
+    // What the velocity estimate cannot account for: 3 counts of quantization, plus what the
+    // fastest acceleration does over the period and over the estimate's own lag (the plant
+    // accelerates up to its current limit, above the planner's braking figure: 1.5 x).
+
+    const double explained = 3.0 / profile_.plant.countsPerMm +
+                             (0.5 * dtS + profile_.loop.derivativeFilterS) * plantAccelBound_ * dtS;
+    // Small steps are judged only on regular ticks: a late one (and the filter's few ms after
+    // it) leaves the velocity estimate too far behind an accelerating platform to tell.
+    sinceLateS_ = late ? 0.0 : sinceLateS_ + dtS;
+    const bool judged = sinceLateS_ > 2.0 * profile_.loop.derivativeFilterS;
+    if (counter_.rebased() || (judged && onCentre && std::abs(residual) > explained)) {
         jumpMm = residual;
         if (counter_.rebased()) ++s.rebases;
         if (std::abs(residual) > explained) {
@@ -371,9 +389,15 @@ void RailServo::tick(double dtS) {
     if (rightEnd && (heading > 0 || velocity_ > 1.0)) return fault(ServoFault::RightEndSwitch);
     // The following-error limit scales with the commanded speed (LinuxCNC's FERROR and
     // MIN_FERROR): 25 mm at the rapid speed, 2 mm at rest.
-    const double ferror = std::max(
-        profile_.loop.minFollowingErrorMm,
-        profile_.loop.followingErrorLimitMm * std::abs(spVelocity) / profile_.motion.rapidSpeedMmS);
+    // A late tick may find the count a period behind the profile (an encoder read that lagged
+    // with the thread): the distance the setpoint moved in the extra time is allowed on top,
+    // decaying at the loop's pace (0.1 s), so a late tick is never a following error.
+    lateAllowanceMm_ *= std::exp(-dtS / 0.1);
+    if (late) lateAllowanceMm_ = std::max(lateAllowanceMm_, std::abs(spVelocity) * (dtS - nominal));
+    const double ferror = std::max(profile_.loop.minFollowingErrorMm,
+                                   profile_.loop.followingErrorLimitMm * std::abs(spVelocity) /
+                                       profile_.motion.rapidSpeedMmS) +
+                          lateAllowanceMm_;
     if (profile_.loop.law == LoopLaw::Engineered && std::abs(s.errorMm) > ferror)
         return fault(ServoFault::FollowingError, s.errorMm);
 
@@ -381,8 +405,11 @@ void RailServo::tick(double dtS) {
     // with a gentler acceleration instead of letting the integrator drive past the target.
     // Only when the platform does move the planned way, slower: a frozen count (stuck
     // encoder) must grow into a following error, not be planned away. Never on a late tick.
-    const bool movingAlong =
-        velocity_ * spVelocity > 0.0 && std::abs(velocity_) >= 0.25 * std::abs(spVelocity);
+    // And only when it lags: a platform ahead of its setpoint (a drive held through a late
+    // tick) is pulled back by the loop; a plan from there would start past the target.
+    const bool movingAlong = velocity_ * spVelocity > 0.0 &&
+                             std::abs(velocity_) >= 0.25 * std::abs(spVelocity) &&
+                             s.errorMm * spVelocity > 0.0;
     if (s.mode == ServoMode::Move && profile_.loop.law == LoopLaw::Engineered && !late &&
         !s.feedHeld && profileTime_ < profileMotion_.duration() &&
         std::abs(s.errorMm) > profile_.loop.replanErrorMm &&
@@ -425,13 +452,23 @@ void RailServo::tick(double dtS) {
                 return fault(ServoFault::InPositionTimeout, s.errorMm);
             }
         } else if (!s.feedHeld && profileTime_ >= profileMotion_.duration()) {
-            settledFor_ = std::abs(s.errorMm) <= profile_.loop.inPositionWindowMm + 1e-9
-                              ? settledFor_ + dtS
-                              : 0.0;
+            // Settled: the reading's mean error over inPositionTimeS is inside the window and
+            // no reading strays a count beyond it. A platform resting on the boundary between
+            // two counts reads both in turn; its mean is where it is.
+            const double window = profile_.loop.inPositionWindowMm;
+            if (std::abs(s.errorMm) <= window + 1.0 / profile_.plant.countsPerMm + 1e-9) {
+                settledFor_ += dtS;
+                settledErrorSum_ += s.errorMm * dtS;
+            } else {
+                settledFor_ = settledErrorSum_ = 0.0;
+            }
             unsettledFor_ += dtS;
-            if (settledFor_ >= profile_.loop.inPositionTimeS) {
+            if (settledFor_ >= profile_.loop.inPositionTimeS &&
+                std::abs(settledErrorSum_ / settledFor_) <= window + 1e-9) {
                 s.inPosition = true;
                 s.mode = ServoMode::Hold;
+            } else if (settledFor_ >= 2.0 * profile_.loop.inPositionTimeS) {
+                settledFor_ = settledErrorSum_ = 0.0;  // a fresh window: the mean moves on
             } else if (unsettledFor_ > profile_.loop.inPositionTimeoutS) {
                 return fault(ServoFault::InPositionTimeout, s.errorMm);
             }

@@ -125,11 +125,17 @@ class RailServo {
     double override_ = 1.0;
     double accel_ = 0.0;            ///< current planning acceleration, mm/s2 (lowered by re-plans)
     double settledFor_ = 0.0;       ///< s inside the in-position window
+    double settledErrorSum_ = 0.0;  ///< mm.s of error summed while settling (mean = sum / time)
     double unsettledFor_ = 0.0;     ///< s since the profile ended without settling
     double moveTime_ = 0.0;         ///< s since moveTo (classic: its in-position deadline)
     double classicDeadline_ = 0.0;  ///< s: a classic move must be in position by then
     double stallTravel_ = 0.0;      ///< mm the drive commanded since the counter last changed
+    double sinceLateS_ = 1.0;       ///< s since the last late tick
+    double modelVelocity_ = 0.0;    ///< mm/s: the amplifier model of the encoder check
+    double lateAllowanceMm_ = 0.0;  ///< following error allowed after a late tick, decaying
     double speedPerCode_ = 0.0;     ///< mm/s per DAC code (1885 / 127)
+    /// The plant accelerates up to its current limit, above the planner's braking figure.
+    double plantAccelBound_ = 0.0;
     bool useOverride_ = true;
     bool limitsActive_ = true;
     double velocity_ = 0.0, acceleration_ = 0.0;

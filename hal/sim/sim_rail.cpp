@@ -23,6 +23,14 @@ void SimRail::derive() {
     perTauM_ = 1.0 / (params_.speedLoopTauS * 1000.0);
 }
 
+void SimRail::setFaults(const FaultInjection& faults) {
+    if (stuck_ && !(faults.stuckEncoderAtS >= 0.0)) {
+        stuck_ = false;
+        counterOffset_ += encoderCounts() - stuckCounts_;
+    }
+    faults_ = faults;
+}
+
 void SimRail::placeAt(double positionMm) {
     state_ = PlantState{};
     state_.positionMm = positionMm;

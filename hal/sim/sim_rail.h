@@ -39,7 +39,9 @@ class SimRail final : public RailIo {
     /// Advances the plant by dt seconds (internally in sub-steps of at most 1 ms).
     void step(double dt);
 
-    void setFaults(const FaultInjection& faults) { faults_ = faults; }
+    /// Takes effect at once. Clearing a stuck encoder reconnects it: the counter goes on from
+    /// the value it froze at (the counts of the motion meanwhile are lost, as on the machine).
+    void setFaults(const FaultInjection& faults);
     const FaultInjection& faults() const { return faults_; }
     /// Puts the platform at rest at x (mm from the centre); the counter reads as if homed.
     void placeAt(double positionMm);

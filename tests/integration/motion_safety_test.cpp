@@ -1,0 +1,510 @@
+// Issue 8, motion safety, on the simulated rail in virtual time: late ticks, run-time soft
+// limits, stuck encoders, feed hold, settling, the classic law, motionless loops. Positions are
+// the plant's true position unless said otherwise; one count = 0.044 mm.
+#include <gtest/gtest.h>
+
+#include <QCoreApplication>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "core/compiler.h"
+#include "core/source_file.h"
+#include "hal/sim/sim_session.h"
+#include "tests/support/program_run.h"
+
+namespace trilho {
+namespace {
+
+constexpr double kCount = 1.0 / 22.8;
+
+std::shared_ptr<Program> compileText(const std::string& text) {
+    CompileOptions o;
+    auto p = std::make_shared<Program>(compile(text, o));
+    EXPECT_TRUE(p->ok()) << text;
+    return p;
+}
+
+std::shared_ptr<Program> compileFile(const std::string& name) {
+    SourceFile f = readSourceFile(std::string(TRILHO_PROGRAMS_DIR) + "/" + name);
+    EXPECT_TRUE(f.ok) << f.error;
+    CompileOptions o;
+    o.dialect = name.find(".classic.") != std::string::npos ? Dialect::Classic : Dialect::Standard;
+    auto p = std::make_shared<Program>(compile(f.bytes, o));
+    EXPECT_TRUE(p->ok()) << name;
+    return p;
+}
+
+bool hasAlarm(const test::ProgramRunResult& r, AlarmCode code) {
+    return std::find(r.alarms.begin(), r.alarms.end(), code) != r.alarms.end();
+}
+
+/// A session homed at the centre, ready to run.
+struct Cell {
+    SimSession session;
+    explicit Cell(MachineProfile p = MachineProfile::rail()) : session(p, 1, 0.0) {
+        c().selectAutomatic();
+        session.runUntil([&] { return c().status().state == ControllerState::AutoIdle; }, 60);
+        EXPECT_TRUE(c().status().homed);
+    }
+    MachineController& c() { return session.controller(); }
+    double x() { return session.rail().state().positionMm; }
+};
+
+// ---- the reported defect: one late tick during ciclo_continuo.G -----------------------------
+
+class LateTick : public ::testing::TestWithParam<double> {};
+
+TEST_P(LateTick, DuringAMoveNeitherSetpointNorPlatformPassTheTarget) {
+    const double lateS = GetParam();
+    for (const bool stalePlant : {true, false}) {
+        Cell cell;
+        MachineController& c = cell.c();
+        ASSERT_TRUE(c.loadProgram(compileFile("ciclo_continuo.G")));
+        ASSERT_TRUE(c.start());
+        bool injected = false;
+        double maxSp = 0, minSp = 0, maxX = 0, minX = 0;
+        for (int k = 0; k < 20000; ++k) {
+            const ServoSample& s = c.status().servo;
+            if (!injected && s.setpointVelocityMmS > 600 && s.targetMm == 400) {
+                injected = true;
+                if (stalePlant) {
+                    // The harshest reading: the controller is told lateS passed before the
+                    // plant has moved for it (as the 1.x simulation did).
+                    c.step(lateS);
+                    cell.session.rail().step(lateS);
+                } else {
+                    cell.session.step(lateS);  // the plant ran lateS on the held drive
+                }
+            } else {
+                cell.session.step();
+            }
+            const ServoSample& t = c.status().servo;
+            maxSp = std::max(maxSp, t.setpointMm), minSp = std::min(minSp, t.setpointMm);
+            maxX = std::max(maxX, cell.x()), minX = std::min(minX, cell.x());
+            ASSERT_NE(c.status().state, ControllerState::Alarm)
+                << "alarm " << static_cast<int>(c.status().lastAlarm);
+        }
+        ASSERT_TRUE(injected);
+        EXPECT_LE(maxSp, 400.0 + 1e-9) << "stale plant " << stalePlant;
+        EXPECT_GE(minSp, -400.0 - 1e-9);
+        EXPECT_LE(maxX, 400.0 + kCount) << "stale plant " << stalePlant;
+        EXPECT_GE(minX, -400.0 - kCount);
+        EXPECT_EQ(c.status().servo.overruns, 1u);
+        EXPECT_NEAR(c.status().servo.worstPeriodS, lateS, 1e-12);
+        std::printf("late tick %.0f ms (%s): platform between %.3f and %.3f mm\n", lateS * 1e3,
+                    stalePlant ? "stale plant" : "plant ran on", minX, maxX);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(FiveTenTwentyForty, LateTick,
+                         ::testing::Values(0.005, 0.010, 0.020, 0.040));
+
+// ---- the soak: 200 seeded runs ----------------------------------------------------------------
+
+struct SoakTotals {
+    int runs = 0;
+    int overshootRuns = 0;
+    double worstSetpointPast = 0, worstLimitPast = 0, worstOvershoot = 0, worstFinal = 0;
+    std::uint32_t overruns = 0;
+    double worstPeriod = 0;
+};
+
+/// runs seeded runs; jitterS: the longest late tick (0: none); overshootBound: mm the plant
+/// may pass a block's target (see the comment at the tests below).
+void soak(int runs, std::uint64_t seed0, double jitterS, double overshootBound, double finalBound,
+          SoakTotals& totals) {
+    static const char* kExamples[] = {"exemplo_documento.G", "passo_incremental.G", "ciclo_carga.G",
+                                      "celula_torno_fresa.classic.G",
+                                      "exemplo_documento.classic.G"};
+    for (int i = 0; i < runs; ++i) {
+        const std::uint64_t seed = seed0 + static_cast<std::uint64_t>(i);
+        std::mt19937_64 rng(seed);
+        std::shared_ptr<Program> program;
+        std::string what;
+        if (i % 4 == 0) {
+            what = kExamples[(i / 4) % 5];
+            program = compileFile(what);
+        } else {
+            what = test::randomProgram(rng);
+            program = compileText(what);
+        }
+        test::ProgramRunSpec spec;
+        spec.seed = seed;
+        spec.faults.tickJitterMaxS = jitterS;
+        spec.faults.tickJitterRate = i % 2 ? 0.05 : 0.01;  // the CLI's default, and 5x it
+        spec.overrideChangesPerS = 0.5;
+        spec.holdsPerS = 0.1;
+        spec.maxSeconds = 600;
+        const auto r = test::runProgram(program, spec);
+        SCOPED_TRACE("seed " + std::to_string(seed) + ": " + what);
+        ASSERT_TRUE(r.homed);
+        ASSERT_TRUE(r.alarms.empty()) << "alarm " << static_cast<int>(r.alarms.front());
+        ASSERT_TRUE(r.finished) << (r.timedOut ? "timed out" : "not finished");
+        EXPECT_LE(r.setpointPastTargetMm, 1e-9);
+        EXPECT_LE(r.setpointPastLimitMm, 0.0);
+        EXPECT_LE(r.overshootMm, overshootBound)
+            << "block n=" << r.overshootBlockN << " at " << r.overshootAtS << " s";
+        if (r.overshootMm > kCount) ++totals.overshootRuns;
+        EXPECT_LE(r.finalErrorMm, finalBound);
+        totals.runs++;
+        totals.worstSetpointPast = std::max(totals.worstSetpointPast, r.setpointPastTargetMm);
+        totals.worstLimitPast = std::max(totals.worstLimitPast, r.setpointPastLimitMm);
+        totals.worstOvershoot = std::max(totals.worstOvershoot, r.overshootMm);
+        totals.worstFinal = std::max(totals.worstFinal, r.finalErrorMm);
+        totals.overruns += r.overruns;
+        totals.worstPeriod = std::max(totals.worstPeriod, r.worstPeriodS);
+        if (::testing::Test::HasFatalFailure()) return;
+    }
+}
+
+void report(const SoakTotals& t) {
+    std::printf(
+        "soak: %d runs, %u late ticks (worst period %.1f ms); worst: setpoint past target "
+        "%.6f mm, setpoint past a soft limit %.3f mm, overshoot %.4f mm (%.2f counts), final "
+        "error %.4f mm; %d runs passed a target by more than one count\n",
+        t.runs, t.overruns, t.worstPeriod * 1e3, t.worstSetpointPast, t.worstLimitPast,
+        t.worstOvershoot, t.worstOvershoot / kCount, t.worstFinal, t.overshootRuns);
+}
+
+// The bounds on the platform itself (the setpoint's are exact: it never passes a target or a
+// soft limit). On time, the platform ends and overshoots within 1.5 counts: one count of
+// window plus the encoder's own half count (the loop cannot see closer than its reading).
+// A late tick holds the DAC code: the amplifier keeps commanding the speed of the tick before,
+// and with its 15 ms speed loop the platform cannot stop what it was told in a short move or
+// the last 30 ms of a braking: 21 ms held at the top of a 1 mm move is about 1 mm, measured up
+// to 1.73 mm over these seeds. No planner can undo a held drive; the loop brings the platform
+// back. Late ticks come one after another too (at 5 % a tick, twice in a row every 400 ticks),
+// so holds of 40-60 ms happen: measured up to 4.9 mm over 6000 seeds. The bound kept here is a
+// ceiling two orders below the 1.x defect (hundreds of mm, into the end switch); the final
+// error allows one held code while holding position (0.15 mm).
+constexpr double kOnTimeBoundMm = 1.5 * kCount;
+constexpr double kHeldDriveOvershootMm = 10.0;
+constexpr double kHeldDriveFinalMm = 0.15;
+
+TEST(MotionSoak, TwoHundredSeededRunsWithLateTicksOverridesAndHolds) {
+    SoakTotals t;
+    soak(200, 1000, 0.020, kHeldDriveOvershootMm, kHeldDriveFinalMm, t);
+    report(t);
+    EXPECT_EQ(t.runs, 200);
+    EXPECT_GT(t.overruns, 1000u);  // the late ticks were really there
+}
+
+TEST(MotionSoak, TwoHundredSeededRunsWithOverridesAndHoldsOnTime) {
+    SoakTotals t;
+    soak(200, 5000, 0.0, kOnTimeBoundMm, kOnTimeBoundMm, t);
+    report(t);
+    EXPECT_EQ(t.runs, 200);
+    EXPECT_EQ(t.overruns, 0u);
+}
+
+// ctest -L soak: thousands of runs, outside the default run.
+TEST(MotionSoak, DISABLED_LongSoak) {
+    SoakTotals t;
+    soak(3000, 100000, 0.020, kHeldDriveOvershootMm, kHeldDriveFinalMm, t);
+    soak(3000, 200000, 0.0, kOnTimeBoundMm, kOnTimeBoundMm, t);
+    report(t);
+    EXPECT_EQ(t.runs, 6000);
+}
+
+// ---- soft limits at run time -------------------------------------------------------------------
+
+/// Runs until pred or maxS; returns the largest |x| the plant reached.
+template <typename Pred>
+double runWatching(Cell& cell, Pred pred, double maxS, std::vector<ControllerEvent>* events) {
+    double far = 0.0;
+    const double end = cell.session.elapsedS() + maxS;
+    while (cell.session.elapsedS() < end && !pred()) {
+        cell.session.step();
+        far = std::max(far, std::abs(cell.x()));
+        cell.c().drainEvents([&](const ControllerEvent& e) {
+            if (events) events->push_back(e);
+        });
+    }
+    return far;
+}
+
+bool raised(const std::vector<ControllerEvent>& events, AlarmCode code) {
+    return std::any_of(events.begin(), events.end(), [&](const ControllerEvent& e) {
+        return e.kind == EventKind::AlarmRaised && e.alarm == code;
+    });
+}
+
+TEST(SoftLimits, TheManualKeysAtFullSpeedStopBeforeTheEndSwitch) {
+    // 1996 manual mode at the 50 % cap (942 mm/s) towards the right: the 1.x check stopped the
+    // drive at the soft limit and the platform coasted 130 mm on, into the switch.
+    MachineProfile p = MachineProfile::rail();
+    Cell cell(p);
+    cell.c().selectManual();
+    for (int k = 0; k < 64; ++k)
+        cell.c().manualRight();
+    std::vector<ControllerEvent> events;
+    const double far = runWatching(
+        cell, [&] { return false; }, 6.0, &events);
+    EXPECT_LT(far, p.limits.x.softMaxMm + 1.0);
+    EXPECT_TRUE(raised(events, AlarmCode::SoftLimit));
+    EXPECT_FALSE(raised(events, AlarmCode::RightEndSwitch));
+    EXPECT_EQ(cell.c().status().state, ControllerState::Manual);
+    std::printf("manual keys at 50 %%: stopped at %.2f mm (soft limit %.0f)\n", far,
+                p.limits.x.softMaxMm);
+}
+
+TEST(SoftLimits, JoggingToTheLimitArrivesWithoutTrippingTheGuard) {
+    Cell cell;
+    cell.c().selectManual();
+    cell.c().jogStart(+1, 0.5);
+    std::vector<ControllerEvent> events;
+    const double far = runWatching(
+        cell, [&] { return false; }, 5.0, &events);
+    EXPECT_LE(far, 1270.0 + kCount);
+    EXPECT_GE(far, 1270.0 - kCount);
+    EXPECT_FALSE(raised(events, AlarmCode::SoftLimitStop));
+    EXPECT_EQ(cell.c().status().state, ControllerState::Manual);
+}
+
+TEST(SoftLimits, TheClassicLawNeverPassesASoftLimit) {
+    // The 1996 law with its own gains runs G0 X1000 into the right end switch in 1.x.
+    MachineProfile p = MachineProfile::rail();
+    p.loop.law = LoopLaw::Classic;
+    p.loop.samplePeriodS = 0.01;
+    Cell cell(p);
+    ASSERT_TRUE(cell.c().loadProgram(compileText("G0 X1000\nM2\n")));
+    ASSERT_TRUE(cell.c().start());
+    std::vector<ControllerEvent> events;
+    const double far = runWatching(
+        cell,
+        [&] {
+            const auto& st = cell.c().status();
+            return st.programFinished || st.state == ControllerState::Alarm;
+        },
+        120.0, &events);
+    runWatching(
+        cell, [] { return false; }, 2.0, &events);  // until the platform is at rest
+    std::printf("classic G0 X1000: platform reached %.2f mm, rests at %.2f mm\n", far, cell.x());
+    EXPECT_LT(far, p.limits.x.softMaxMm + 1.0);
+    EXPECT_FALSE(raised(events, AlarmCode::RightEndSwitch));
+    // It stopped on the guard, or came back and ended; or, the 1996 gains crawling over the last
+    // millimetre, it said so: it never waits for ever.
+    EXPECT_TRUE(raised(events, AlarmCode::SoftLimitStop) || cell.c().status().programFinished ||
+                raised(events, AlarmCode::InPositionTimeout));
+}
+
+// ---- a stuck encoder on any feed ---------------------------------------------------------------
+
+TEST(StuckEncoder, AtEveryFeedThePlatformRunsUnder20mmBeforeTheDriveIsCut) {
+    double worst = 0.0;
+    int worstFeed = 0;
+    for (int feed = 1; feed <= 100; ++feed) {
+        Cell cell;
+        ASSERT_TRUE(
+            cell.c().loadProgram(compileText("G1 X1000 F" + std::to_string(feed) + "\nM2\n")));
+        ASSERT_TRUE(cell.c().start());
+        FaultInjection f;
+        f.stuckEncoderAtS = cell.session.rail().state().timeS + 0.3;
+        cell.session.rail().setFaults(f);
+        double atFault = NAN, atCut = NAN;
+        const double end = cell.session.elapsedS() + 60.0;
+        while (cell.session.elapsedS() < end) {
+            cell.session.step();
+            const double t = cell.session.rail().state().timeS;
+            if (std::isnan(atFault) && t >= f.stuckEncoderAtS) atFault = cell.x();
+            if (!std::isnan(atFault) && cell.c().status().state == ControllerState::Alarm) {
+                EXPECT_EQ(cell.session.rail().driveCode(), kDacZero);
+                atCut = cell.x();
+                break;
+            }
+        }
+        ASSERT_FALSE(std::isnan(atCut)) << "feed " << feed << ": no alarm";
+        const AlarmCode a = cell.c().status().lastAlarm;
+        EXPECT_TRUE(a == AlarmCode::EncoderStalled || a == AlarmCode::FollowingError)
+            << "feed " << feed;
+        EXPECT_LT(atCut - atFault, 20.0) << "feed " << feed;
+        if (atCut - atFault > worst) worst = atCut - atFault, worstFeed = feed;
+        // The controller no longer trusts its position: Execute homes again.
+        cell.c().acknowledgeAlarms();
+        EXPECT_FALSE(cell.c().status().homed);
+    }
+    std::printf("stuck encoder: worst travel before the drive was cut %.2f mm (F%d)\n", worst,
+                worstFeed);
+}
+
+// ---- feed override 0 is a feed hold -------------------------------------------------------------
+
+TEST(FeedHold, OverrideZeroHoldsTheBlockAndResumesToItsRealTarget) {
+    Cell cell;
+    MachineController& c = cell.c();
+    ASSERT_TRUE(c.loadProgram(compileText("G1 X1000 F50\nG1 X0 F50\nM2\n")));
+    ASSERT_TRUE(c.start());
+    ASSERT_TRUE(cell.session.runUntil([&] { return cell.x() > 400; }, 10));
+    c.setFeedOverride(0.0);
+    cell.session.runUntil([] { return false; }, 2.0);
+    const double held = cell.x();
+    EXPECT_LT(held, 1000.0);
+    EXPECT_NEAR(cell.session.rail().state().velocityMmS, 0.0, 0.5);
+    EXPECT_EQ(c.status().blockIndex, 0);  // still the first block
+    EXPECT_EQ(c.status().state, ControllerState::Running);
+    EXPECT_TRUE(c.status().servo.feedHeld);
+    c.setFeedOverride(1.0);
+    double far = 0.0;
+    ASSERT_TRUE(cell.session.runUntil(
+        [&] {
+            far = std::max(far, cell.x());
+            return c.status().programFinished;
+        },
+        20));
+    EXPECT_NEAR(far, 1000.0, 1.5 * kCount);  // it went on to the real target, then back
+    EXPECT_NEAR(cell.x(), 0.0, 1.5 * kCount);
+}
+
+// ---- a move that cannot settle ---------------------------------------------------------------
+
+TEST(Settling, AMoveThatCannotSettleEndsInAPlainAlarm) {
+    MachineProfile p = MachineProfile::rail();
+    p.loop.engineered = {0.0, 0.0, 0.0};  // feed-forward only: it stops short
+    Cell cell(p);
+    ASSERT_TRUE(cell.c().loadProgram(compileText("G1 X300 F40\nM2\n")));
+    ASSERT_TRUE(cell.c().start());
+    ASSERT_TRUE(cell.session.runUntil(
+        [&] { return cell.c().status().state == ControllerState::Alarm; }, 30));
+    EXPECT_EQ(cell.c().status().lastAlarm, AlarmCode::InPositionTimeout);
+}
+
+TEST(Settling, ALightPayloadSettlesOrSaysSoNeverWaitsForEver) {
+    Cell cell;
+    cell.session.rail().setMassFactor(0.1);
+    ASSERT_TRUE(cell.c().loadProgram(compileText("G0 X500\nG0 X-500\nM2\n")));
+    ASSERT_TRUE(cell.c().start());
+    ASSERT_TRUE(cell.session.runUntil(
+        [&] {
+            const auto& st = cell.c().status();
+            return st.programFinished || st.state == ControllerState::Alarm;
+        },
+        30));
+}
+
+// ---- the classic law: it may overshoot as in 1996, never report false success -----------------
+
+TEST(ClassicLaw, AProgramEndingOffTargetSaysHowFar) {
+    MachineProfile p = MachineProfile::rail();
+    p.loop.law = LoopLaw::Classic;
+    p.loop.samplePeriodS = 0.01;
+    // A sloppier epsilon than the VB's 0.5 mm: the drive is released early and the platform
+    // coasts on, as it did at the 1996 cell with the untuned loop.
+    p.loop.classicInPositionMm = 3.0;
+    test::ProgramRunSpec spec;
+    spec.profile = p;
+    spec.maxSeconds = 300;
+    const auto r = test::runProgram(compileFile("passo_incremental.G"), spec);
+    for (AlarmCode a : r.alarms)
+        std::printf("classic passo_incremental: alarm %d\n", static_cast<int>(a));
+    ASSERT_TRUE(r.finished) << (r.timedOut ? "timed out" : "") << " after " << r.seconds << " s";
+    const bool off = r.finalErrorMm > p.loop.finalPositionWindowMm + kCount;
+    const bool ended = std::any_of(r.events.begin(), r.events.end(), [](const ControllerEvent& e) {
+        return e.kind == EventKind::ProgramEnd;
+    });
+    std::printf("classic passo_incremental: ends %.3f mm from its target\n", r.finalErrorMm);
+    ASSERT_TRUE(off);
+    {
+        EXPECT_TRUE(hasAlarm(r, AlarmCode::FinalPositionOff));
+        EXPECT_FALSE(ended);  // no "Program finished !"
+        const auto e = std::find_if(r.events.begin(), r.events.end(), [](const auto& ev) {
+            return ev.alarm == AlarmCode::FinalPositionOff;
+        });
+        EXPECT_NEAR(std::abs(e->value), r.finalErrorMm, 2 * kCount);
+    }
+}
+
+TEST(ClassicLaw, LateTicksDoNotMakeItUnstable) {
+    MachineProfile p = MachineProfile::rail();
+    p.loop.law = LoopLaw::Classic;
+    p.loop.samplePeriodS = 0.01;
+    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+        test::ProgramRunSpec spec;
+        spec.profile = p;
+        spec.seed = seed;
+        spec.faults.tickJitterMaxS = 0.020;
+        spec.faults.tickJitterRate = 0.1;
+        spec.maxSeconds = 300;
+        const auto r = test::runProgram(compileFile("exemplo_documento.classic.G"), spec);
+        EXPECT_TRUE(r.finished) << seed;
+        EXPECT_LT(r.maxPlantMm, p.limits.x.softMaxMm);
+        EXPECT_GT(r.minPlantMm, p.limits.x.softMinMm);
+        EXPECT_LE(r.setpointPastLimitMm, 0.0);
+        std::printf("classic, late ticks, seed %llu: overshoot %.3f mm, final error %.3f mm\n",
+                    static_cast<unsigned long long>(seed), r.overshootMm, r.finalErrorMm);
+    }
+}
+
+// ---- a loop with no motion
+// -----------------------------------------------------------------------
+
+TEST(MotionlessLoop, IsHeldWithAWarningAndTheEventsStayFew) {
+    test::ProgramRunSpec spec;
+    spec.maxSeconds = 10;
+    const auto r = test::runProgram(compileText("N10 M3 X10\nN20 M2\n"), spec);
+    // runProgram returns when paused too long? It times out: the program is held, not spinning.
+    EXPECT_TRUE(hasAlarm(r, AlarmCode::MotionlessLoop));
+    EXPECT_LT(r.events.size(), 20u);  // 1.x: 64 status lines a millisecond
+}
+
+TEST(MotionlessLoop, ACycleWithADwellIsNotOne) {
+    test::ProgramRunSpec spec;
+    spec.maxSeconds = 3;
+    const auto r = test::runProgram(compileText("N10 G4 X0.1\nN20 M3 X10\nN30 M2\n"), spec);
+    EXPECT_FALSE(hasAlarm(r, AlarmCode::MotionlessLoop));
+    EXPECT_TRUE(r.timedOut);
+}
+
+// ---- lost counts and cable slip are corrected at the centre mark, and said ----------------------
+
+TEST(CentreMark, LostCountsAreReportedWithTheSizeOfTheCorrection) {
+    test::ProgramRunSpec spec;
+    spec.faults.maxCountRateHz = 30000;  // above 1316 mm/s the card misses counts
+    const auto r = test::runProgram(compileText("G0 X1000\nG0 X-1000\nG0 X0\nM2\n"), spec);
+    ASSERT_TRUE(hasAlarm(r, AlarmCode::CounterCorrected));
+    const auto e = std::find_if(r.events.begin(), r.events.end(), [](const auto& ev) {
+        return ev.alarm == AlarmCode::CounterCorrected;
+    });
+    EXPECT_GT(std::abs(e->value), 1.0);  // 1.x: 4-5 mm corrected silently
+    EXPECT_TRUE(r.finished);
+    std::printf("lost counts: the centre mark corrected %.2f mm\n", e->value);
+}
+
+TEST(CentreMark, ACleanRunReportsNoCorrection) {
+    test::ProgramRunSpec spec;
+    const auto r = test::runProgram(compileText("G0 X1000\nG0 X-1000\nG0 X0\nM2\n"), spec);
+    EXPECT_FALSE(hasAlarm(r, AlarmCode::CounterCorrected));
+    EXPECT_TRUE(r.finished);
+}
+
+// ---- after an alarm, the next legal action works ---------------------------------------------
+
+TEST(AfterAnAlarm, ExecuteHomesAgainThenRuns) {
+    Cell cell;
+    MachineController& c = cell.c();
+    FaultInjection f;
+    f.stuckEncoderAtS = cell.session.rail().state().timeS + 0.2;
+    cell.session.rail().setFaults(f);
+    ASSERT_TRUE(c.loadProgram(compileText("G0 X500\nM2\n")));
+    ASSERT_TRUE(c.start());
+    ASSERT_TRUE(
+        cell.session.runUntil([&] { return c.status().state == ControllerState::Alarm; }, 5));
+    cell.session.rail().setFaults({});
+    cell.session.runUntil([] { return false; }, 2.0);  // at rest
+    c.acknowledgeAlarms();
+    EXPECT_EQ(c.status().state, ControllerState::AutoIdle);
+    EXPECT_FALSE(c.status().homed);
+    ASSERT_TRUE(c.start());  // 1.x: silently nothing
+    EXPECT_EQ(c.status().state, ControllerState::Homing);
+    ASSERT_TRUE(cell.session.runUntil([&] { return c.status().programFinished; }, 60));
+    EXPECT_NEAR(cell.x(), 500.0, 1.5 * kCount);
+}
+
+}  // namespace
+}  // namespace trilho
+
+int main(int argc, char** argv) {
+    QCoreApplication app(argc, argv);
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}
