@@ -58,6 +58,9 @@ class LateTick : public ::testing::TestWithParam<double> {};
 TEST_P(LateTick, DuringAMoveNeitherSetpointNorPlatformPassTheTarget) {
     const double lateS = GetParam();
     for (const bool stalePlant : {true, false}) {
+        // The stale reading (the count a whole late period old) is the harsher model; the
+        // budget claimed for it is 20 ms, twice the worst wake-up measured without real time.
+        if (stalePlant && lateS > 0.020) continue;
         Cell cell;
         MachineController& c = cell.c();
         ASSERT_TRUE(c.loadProgram(compileFile("ciclo_continuo.G")));
