@@ -55,52 +55,41 @@ struct Cell {
 
 class LateTick : public ::testing::TestWithParam<double> {};
 
+// A late tick on the machine: the thread wakes lateS after the last tick, the DAC held the
+// last code meanwhile, and the counter counted what the platform did. (The 1.x simulation
+// stepped the plant after the controller, so a late tick's motion reached the next tick as an
+// implausible count jump, and the re-plan that followed ran through the target: 1210 mm at
+// 5 ms, the end switch at 10 ms. The planner property test above is the cause's own test.)
 TEST_P(LateTick, DuringAMoveNeitherSetpointNorPlatformPassTheTarget) {
     const double lateS = GetParam();
-    for (const bool stalePlant : {true, false}) {
-        // The stale reading (the count a whole late period old) is the harsher model; the
-        // budget claimed for it is 20 ms, twice the worst wake-up measured without real time.
-        if (stalePlant && lateS > 0.020) continue;
-        Cell cell;
-        MachineController& c = cell.c();
-        ASSERT_TRUE(c.loadProgram(compileFile("ciclo_continuo.G")));
-        ASSERT_TRUE(c.start());
-        bool injected = false;
-        double maxSp = 0, minSp = 0, maxX = 0, minX = 0;
-        for (int k = 0; k < 20000; ++k) {
-            const ServoSample& s = c.status().servo;
-            // Away from the centre mark: a stale count that jumps there reads as the mark's
-            // reset (the 1.x simulation's artefact, not the machine's).
-            if (!injected && s.setpointVelocityMmS > 600 && s.targetMm == 400 &&
-                std::abs(s.positionMm) > 50) {
-                injected = true;
-                if (stalePlant) {
-                    // The harshest reading: the controller is told lateS passed before the
-                    // plant has moved for it (as the 1.x simulation did).
-                    c.step(lateS);
-                    cell.session.rail().step(lateS);
-                } else {
-                    cell.session.step(lateS);  // the plant ran lateS on the held drive
-                }
-            } else {
-                cell.session.step();
-            }
-            const ServoSample& t = c.status().servo;
-            maxSp = std::max(maxSp, t.setpointMm), minSp = std::min(minSp, t.setpointMm);
-            maxX = std::max(maxX, cell.x()), minX = std::min(minX, cell.x());
-            ASSERT_NE(c.status().state, ControllerState::Alarm)
-                << "alarm " << static_cast<int>(c.status().lastAlarm) << " at " << cell.x();
+    Cell cell;
+    MachineController& c = cell.c();
+    ASSERT_TRUE(c.loadProgram(compileFile("ciclo_continuo.G")));
+    ASSERT_TRUE(c.start());
+    bool injected = false;
+    double maxSp = 0, minSp = 0, maxX = 0, minX = 0;
+    for (int k = 0; k < 20000; ++k) {
+        const ServoSample& s = c.status().servo;
+        if (!injected && s.setpointVelocityMmS > 600 && s.targetMm == 400) {
+            injected = true;
+            cell.session.step(lateS);
+        } else {
+            cell.session.step();
         }
-        ASSERT_TRUE(injected);
-        EXPECT_LE(maxSp, 400.0 + 1e-9) << "stale plant " << stalePlant;
-        EXPECT_GE(minSp, -400.0 - 1e-9);
-        EXPECT_LE(maxX, 400.0 + kCount) << "stale plant " << stalePlant;
-        EXPECT_GE(minX, -400.0 - kCount);
-        EXPECT_EQ(c.status().servo.overruns, 1u);
-        EXPECT_NEAR(c.status().servo.worstPeriodS, lateS, 1e-12);
-        std::printf("late tick %.0f ms (%s): platform between %.3f and %.3f mm\n", lateS * 1e3,
-                    stalePlant ? "stale plant" : "plant ran on", minX, maxX);
+        const ServoSample& t = c.status().servo;
+        maxSp = std::max(maxSp, t.setpointMm), minSp = std::min(minSp, t.setpointMm);
+        maxX = std::max(maxX, cell.x()), minX = std::min(minX, cell.x());
+        ASSERT_NE(c.status().state, ControllerState::Alarm)
+            << "alarm " << static_cast<int>(c.status().lastAlarm) << " at " << cell.x();
     }
+    ASSERT_TRUE(injected);
+    EXPECT_LE(maxSp, 400.0 + 1e-9);
+    EXPECT_GE(minSp, -400.0 - 1e-9);
+    EXPECT_LE(maxX, 400.0 + kCount);
+    EXPECT_GE(minX, -400.0 - kCount);
+    EXPECT_EQ(c.status().servo.overruns, 1u);
+    EXPECT_NEAR(c.status().servo.worstPeriodS, lateS, 1e-12);
+    std::printf("late tick %.0f ms: platform between %.3f and %.3f mm\n", lateS * 1e3, minX, maxX);
 }
 
 INSTANTIATE_TEST_SUITE_P(FiveTenTwentyForty, LateTick,
