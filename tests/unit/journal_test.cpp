@@ -278,7 +278,11 @@ TEST(JournalRead, ALargeJournalIsStreamedAndOnlyTheLastEntriesKept) {
         ASSERT_EQ(last.size(), 1000);
         EXPECT_EQ(last.back().code, code - 1);
         EXPECT_EQ(last.front().code, code - 1000);
+#if !defined(__SANITIZE_ADDRESS__)  // ASan's quarantine keeps freed lines resident
         EXPECT_LT(grewKb, 16 * 1024) << "reading took " << grewKb << " kB more";
+#else
+        (void)grewKb;
+#endif
     }
 }
 
