@@ -151,6 +151,7 @@ bool Journal::openFile(QString* error) {
 bool Journal::open(const QString& path, QString* error) {
     close();
     path_ = path;
+    keepOpen_ = true;
     health_ = {};
     pending_ = 0;
     syncs_ = 0;
@@ -163,6 +164,7 @@ bool Journal::open(const QString& path, QString* error) {
 }
 
 void Journal::close() {
+    keepOpen_ = false;
     if (fd_ < 0) return;
     if (pending_ > 0) sync();
     ::close(fd_);
@@ -170,7 +172,8 @@ void Journal::close() {
 }
 
 bool Journal::writeLine(const QByteArray& line) {
-    if (fd_ < 0) {
+    // Closed by a rotation whose reopen failed: try again, the cause may have gone.
+    if (fd_ < 0 && (!keepOpen_ || !openFile(nullptr))) {
         ++health_.lostEntries;
         return false;
     }

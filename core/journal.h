@@ -115,6 +115,7 @@ class Journal {
     JournalPolicy policy_;
     QString path_;
     int fd_ = -1;
+    bool keepOpen_ = false;     ///< between open() and close(): a failed reopen is retried
     std::int64_t size_ = 0;     ///< bytes in the file being written
     bool needNewline_ = false;  ///< a write stopped mid-line: end it before the next entry
     std::int64_t pending_ = 0;
