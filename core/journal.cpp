@@ -151,12 +151,12 @@ bool Journal::openFile(QString* error) {
 bool Journal::open(const QString& path, QString* error) {
     close();
     path_ = path;
-    keepOpen_ = true;
     health_ = {};
     pending_ = 0;
     syncs_ = 0;
     everSynced_ = false;
     if (!openFile(error)) return false;
+    keepOpen_ = true;
     // A file left at the limit (or a large one from before rotation existed) rotates at once;
     // if that fails the history goes on in the same file (health() tells).
     if (size_ >= policy_.maxFileBytes) rotate();

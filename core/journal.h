@@ -61,7 +61,9 @@ class Journal {
     /// a file already at the size limit. Returns false with a message otherwise.
     bool open(const QString& path, QString* error = nullptr);
     void close();  ///< syncs what is pending, then closes
-    bool isOpen() const { return fd_ >= 0; }
+    /// Between a successful open() and close(), even while a failed rotation left no file
+    /// open (the next append retries it and health() tells).
+    bool isOpen() const { return keepOpen_; }
     QString path() const { return path_; }
 
     /// Immediate: written and synced before it returns (one fdatasync per entry). False when
@@ -115,7 +117,7 @@ class Journal {
     JournalPolicy policy_;
     QString path_;
     int fd_ = -1;
-    bool keepOpen_ = false;     ///< between open() and close(): a failed reopen is retried
+    bool keepOpen_ = false;     ///< see isOpen(): a failed reopen is retried
     std::int64_t size_ = 0;     ///< bytes in the file being written
     bool needNewline_ = false;  ///< a write stopped mid-line: end it before the next entry
     std::int64_t pending_ = 0;
