@@ -1,6 +1,7 @@
 // The compiler: one pass over the lines, each lexed into a scratch set of words, checked
 // against every rule, and only then committed to the modal state and the block vector
-// (the Grbl way). Goto targets are resolved at the end, when every n is known.
+// (the Grbl way). Goto targets are resolved at the end, when every n is known, through an
+// index of the numbered blocks built once (linear in the program, whatever its shape).
 #include "core/compiler.h"
 
 #include <algorithm>
@@ -89,17 +90,28 @@ void copyEscaped(char* dst, std::size_t cap, std::string_view src) {
     dst[out] = '\0';
 }
 
-/// "g00", "m03": the normalized name of a g or m word, for messages.
-std::string_view codeWord(char letter, double value, char (&buf)[16]) {
-    int v = static_cast<int>(value);
+/// The largest block number, goto target or g/m code: what an int32 holds. Numbers are checked
+/// against it before any conversion (a double above it does not convert to int).
+constexpr double kMaxCode = 2147483647.0;
+
+/// "g00", "m03", "g99999999999": the normalized name of a g or m word, for messages. g and m
+/// carry at most kMaxNumberDigits digits and no sign, so the value converts to uint64 exactly.
+std::string_view codeWord(char letter, double value, char (&buf)[32]) {
     buf[0] = letter;
-    if (v >= 0 && v < 10) {
+    if (!(value >= 0.0 && value < 1e19)) return {buf, 1};
+    auto v = static_cast<std::uint64_t>(value);
+    if (v < 10) {
         buf[1] = '0';
         buf[2] = static_cast<char>('0' + v);
         return {buf, 3};
     }
     auto r = std::to_chars(buf + 1, buf + sizeof buf, v);
     return {buf, static_cast<std::size_t>(r.ptr - buf)};
+}
+
+/// A g or m code as an int, or -1 when it is no code at all (a fraction, or beyond any code).
+int codeValue(const Word& w) {
+    return w.integral && w.value >= 0.0 && w.value <= 999.0 ? static_cast<int>(w.value) : -1;
 }
 
 std::string_view formatNumber(double v, char (&buf)[32]) {
@@ -117,22 +129,37 @@ class Compiler {
     Program run() {
         const char* p = source_.data();
         const char* end = p + source_.size();
+        // A DOS end-of-file mark (^Z, 0x1A) closing the file is not part of the program.
+        while (end > p && end[-1] == '\x1A')
+            --end;
         // Reserve for the whole file at once: one block per line at most, so the vector never
         // doubles (a doubling would briefly hold 1.5x the blocks).
-        std::size_t lines = static_cast<std::size_t>(std::count(p, end, '\n')) + 1;
-        program_.blocks.reserve(lines);
-        if (options_.machine.hasY) program_.y.reserve(lines);
+        std::size_t lines = static_cast<std::size_t>(std::count(p, end, '\n'));
+        if (lines == 0) lines = static_cast<std::size_t>(std::count(p, end, '\r'));  // CR only
+        program_.blocks.reserve(lines + 1);
+        if (options_.machine.hasY) program_.y.reserve(lines + 1);
         if (end - p >= 3 && std::memcmp(p, "\xEF\xBB\xBF", 3) == 0) p += 3;  // UTF-8 BOM
         std::uint32_t lineNo = 0;
+        const char* nl = nullptr;  // the next '\n' at or after p (end when none), found once
         while (p < end) {
-            const char* nl =
-                static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
-            const char* lineEnd = nl ? nl : end;
-            const char* contentEnd = lineEnd;
-            if (contentEnd > p && contentEnd[-1] == '\r') --contentEnd;
+            if (nl < p) {
+                nl = static_cast<const char*>(
+                    std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
+                if (!nl) nl = end;
+            }
+            // LF, CRLF and a lone CR (old Mac files) each end a line. The CR search stops at
+            // the first CR, so a CR-only file costs one pass like any other.
+            const char* contentEnd = nl;
+            const char* next = nl == end ? end : nl + 1;
+            const char* cr =
+                static_cast<const char*>(std::memchr(p, '\r', static_cast<std::size_t>(nl - p)));
+            if (cr) {
+                contentEnd = cr;
+                if (cr + 1 != nl || nl == end) next = cr + 1;  // a lone CR
+            }
             ++lineNo;
             compileLine(p, contentEnd, lineNo);
-            p = nl ? nl + 1 : end;
+            p = next;
         }
         program_.lineCount = lineNo;
         finish(lineNo);
@@ -141,8 +168,13 @@ class Compiler {
 
   private:
     // ---- diagnostics -----------------------------------------------------------------------
-    Diagnostic& report(MessageId id, std::uint32_t column, std::string_view text = {},
-                       double value = 0.0) {
+    void report(MessageId id, std::uint32_t column, std::string_view text = {},
+                double value = 0.0) {
+        lineError_ = true;
+        if (program_.diagnostics.size() >= keepLimit_) {
+            ++program_.diagnosticsOmitted;
+            return;
+        }
         Diagnostic& d = program_.diagnostics.emplace_back();
         d.id = id;
         d.line = line_;
@@ -150,8 +182,6 @@ class Compiler {
         d.n = lineN_;
         d.value = value;
         copyEscaped(d.text, Diagnostic::kTextCapacity, text);
-        lineError_ = true;
-        return d;
     }
     std::uint32_t col(const char* q) const {
         return static_cast<std::uint32_t>(q - lineBegin_ + 1);
@@ -170,7 +200,12 @@ class Compiler {
         return {q, len == 0 ? 1 : len};
     }
 
-    void acceptN(double value, std::uint32_t column) {
+    /// Takes the line's block number; false (reported) when it is beyond any block number.
+    bool acceptN(double value, std::uint32_t column) {
+        if (value > kMaxCode) {
+            report(MessageId::NTooLarge, column, wordAt(lineBegin_ + (column - 1)), kMaxCode);
+            return false;
+        }
         lineN_ = static_cast<std::int32_t>(value);
         if (lastN_ >= 0 && lineN_ <= lastN_) {
             char buf[32];
@@ -181,6 +216,7 @@ class Compiler {
         } else {
             lastN_ = lineN_;
         }
+        return true;
     }
 
     // ---- one line --------------------------------------------------------------------------
@@ -379,7 +415,7 @@ class Compiler {
             }
             if (slot->present) {
                 if (letter == 'g' || letter == 'm') {
-                    char buf[16];
+                    char buf[32];
                     report(MessageId::TrailingWords, col(p), codeWord(letter, slot->value, buf));
                 } else {
                     report(MessageId::RepeatedWord, col(p), charAt(p));
@@ -408,7 +444,10 @@ class Compiler {
             slot->value = s.value;
             slot->column = col(p);
             slot->integral = s.fracDigits == 0 && !s.hasPoint;
-            if (letter == 'n') acceptN(s.value, col(p)), nEnd = after;
+            if (letter == 'n') {
+                if (!acceptN(s.value, col(p))) return false;
+                nEnd = after;
+            }
             anyWord = true;
             p = after;
         }
@@ -432,7 +471,7 @@ class Compiler {
     bool noMoreThan(const LineWords& w, char letter, double code,
                     std::initializer_list<const Word*> extras) {
         if (const Word* extra = firstPresent(extras)) {
-            char buf[16];
+            char buf[32];
             report(MessageId::TrailingWords, extra->column, codeWord(letter, code, buf));
             return false;
         }
@@ -446,11 +485,20 @@ class Compiler {
             report(MessageId::NegativeFeed, f.column, formatNumber(f.value, buf), f.value);
             return false;
         }
-        if (f.value == 0.0 || f.value > 100.0) {
-            report(MessageId::FeedRange, f.column, formatNumber(f.value, buf), f.value);
+        // Below the slowest speed the rail runs, the feed would be logged as programmed but run
+        // faster: refused, naming the real minimum.
+        if (f.value < kMinFeedPercent || f.value > 100.0) {
+            report(MessageId::FeedRange, f.column, formatNumber(f.value, buf), kMinFeedPercent);
             return false;
         }
         return true;
+    }
+    /// Positions, increments, offsets and times beyond kMaxValueMagnitude are refused: a double
+    /// would round the typed decimals silently.
+    bool withinMagnitude(const Word& v) {
+        if (!v.present || std::fabs(v.value) <= kMaxValueMagnitude) return true;
+        report(MessageId::ValueRange, v.column, wordText(v), kMaxValueMagnitude);
+        return false;
     }
 
     void validateAndCommit(const LineWords& w) {
@@ -459,14 +507,14 @@ class Compiler {
         b.line = line_;
         double yTarget = prevY_;
         if (w.g.present && w.m.present) {
-            char buf[16];
+            char buf[32];
             report(MessageId::TrailingWords, std::max(w.g.column, w.m.column),
                    w.g.column < w.m.column ? codeWord('g', w.g.value, buf)
                                            : codeWord('m', w.m.value, buf));
             return;
         }
         if (w.g.present) {
-            int g = w.g.integral ? static_cast<int>(w.g.value) : -1;
+            const int g = codeValue(w.g);
             char buf[32];
             switch (g) {
                 case 0:
@@ -483,6 +531,7 @@ class Compiler {
                     if (!w.x.present)
                         return (void)report(MessageId::MissingXG04, w.g.column, wordText(w.g));
                     if (!noMoreThan(w, 'g', 4, {&w.y, &w.f})) return;
+                    if (!withinMagnitude(w.x)) return;
                     if (w.x.value < 0)
                         return (void)report(MessageId::NegativeDwell, w.x.column,
                                             formatNumber(w.x.value, buf), w.x.value);
@@ -499,6 +548,7 @@ class Compiler {
                     if (!w.x.present)
                         return (void)report(MessageId::MissingXG92, w.g.column, wordText(w.g));
                     if (!noMoreThan(w, 'g', 92, {&w.f})) return;
+                    if (!withinMagnitude(w.x) || !withinMagnitude(w.y)) return;
                     b.op = Op::SetZero;
                     b.x = w.x.value;
                     break;
@@ -510,7 +560,7 @@ class Compiler {
             return;
         }
         if (w.m.present) {
-            int m = w.m.integral ? static_cast<int>(w.m.value) : -1;
+            const int m = codeValue(w.m);
             char buf[32];
             switch (m) {
                 case 0:
@@ -525,7 +575,7 @@ class Compiler {
                     if (w.x.value < 0)
                         return (void)report(MessageId::NegativeGoto, w.x.column,
                                             formatNumber(w.x.value, buf), w.x.value);
-                    if (!w.x.integral || w.x.value > 2147483647.0)
+                    if (!w.x.integral || w.x.value > kMaxCode)
                         return (void)report(MessageId::GotoNotInteger, w.x.column, wordText(w.x),
                                             w.x.value);
                     b.op = Op::Goto;
@@ -569,6 +619,7 @@ class Compiler {
             b.op = Op::Linear;
             b.feed = w.f.present ? w.f.value : feed_;
         }
+        if (!withinMagnitude(w.x) || !withinMagnitude(w.y)) return false;
         // Documented meaning (gcode.md): absolute = x + zero; incremental = previous target + x.
         b.x = w.x.present ? (incremental_ ? prevX_ + w.x.value : w.x.value + zeroX_) : prevX_;
         if (w.y.present) yTarget = incremental_ ? prevY_ + w.y.value : w.y.value + zeroY_;
@@ -625,13 +676,16 @@ class Compiler {
     void finish(std::uint32_t lastLine) {
         line_ = std::max<std::uint32_t>(lastLine, 1);
         lineN_ = -1;
-        // Goto targets: n is strictly increasing in a correct program, so the blocks are sorted
-        // by n (blocks without n are skipped by the search); otherwise fall back to a scan.
         std::sort(erroneousNs_.begin(), erroneousNs_.end());
+        if (!gotos_.empty()) buildNIndex();
+        // Goto diagnostics come after the pass but belong among its lines: keep up to as many
+        // again, sort, then cut back to the first maxDiagnostics by line.
+        const std::size_t passKept = program_.diagnostics.size();
+        keepLimit_ = passKept + std::min(options_.maxDiagnostics, gotos_.size());
         for (std::size_t gi : gotos_) {
             Block& g = program_.blocks[gi];
             const std::int32_t target = g.targetN();
-            g.targetIndex = nSorted_ ? findSorted(target) : program_.indexOfN(target);
+            g.targetIndex = indexOfN(target);
             if (g.targetIndex >= 0 ||
                 std::binary_search(erroneousNs_.begin(), erroneousNs_.end(), target))
                 continue;
@@ -640,8 +694,17 @@ class Compiler {
             char buf[32];
             report(MessageId::GotoTarget, 0, formatNumber(g.targetN(), buf), g.targetN());
         }
-        std::stable_sort(program_.diagnostics.begin(), program_.diagnostics.end(),
-                         [](const Diagnostic& a, const Diagnostic& b) { return a.line < b.line; });
+        auto& diagnostics = program_.diagnostics;
+        if (diagnostics.size() > passKept)
+            std::stable_sort(
+                diagnostics.begin(), diagnostics.end(),
+                [](const Diagnostic& a, const Diagnostic& b) { return a.line < b.line; });
+        keepLimit_ = options_.maxDiagnostics;
+        if (diagnostics.size() > keepLimit_) {
+            program_.diagnosticsOmitted += diagnostics.size() - keepLimit_;
+            diagnostics.resize(keepLimit_);
+        }
+        if (options_.stats) options_.stats->gotoSteps = steps_;
         line_ = std::max<std::uint32_t>(lastLine, 1);
         lineN_ = -1;
         if (!lastLineWasM02_) report(MessageId::MissingM02, 0);
@@ -671,31 +734,38 @@ class Compiler {
     const char* lineEnd_ = nullptr;
     const char* numberEnd_ = nullptr;
 
-    /// Index of the block numbered n in blocks whose n increase (n = -1 blocks interleaved).
-    std::int32_t findSorted(std::int32_t n) const {
+    /// The numbered blocks as (n, index), sorted by n then index, built once: every goto is
+    /// then one binary search, whatever the mix of numbered and unnumbered blocks.
+    void buildNIndex() {
         const auto& blocks = program_.blocks;
-        std::size_t lo = 0, hi = blocks.size();
+        for (std::size_t i = 0; i < blocks.size(); ++i)
+            if (blocks[i].n >= 0) nIndex_.emplace_back(blocks[i].n, static_cast<std::int32_t>(i));
+        steps_ += blocks.size();
+        // Strictly increasing n (a correct program) is already sorted; otherwise the first block
+        // with a given n is the target, as Program::indexOfN finds it.
+        if (!nSorted_) std::sort(nIndex_.begin(), nIndex_.end());
+    }
+    /// Index of the first block numbered n, or -1.
+    std::int32_t indexOfN(std::int32_t n) {
+        std::size_t lo = 0, hi = nIndex_.size();
         while (lo < hi) {
-            std::size_t mid = lo + (hi - lo) / 2, probe = mid;
-            while (probe < hi && blocks[probe].n < 0)
-                ++probe;  // skip unnumbered blocks
-            if (probe == hi) {
-                hi = mid;
-                continue;
-            }
-            if (blocks[probe].n == n) return static_cast<std::int32_t>(probe);
-            if (blocks[probe].n < n)
-                lo = probe + 1;
+            ++steps_;
+            const std::size_t mid = lo + (hi - lo) / 2;
+            if (nIndex_[mid].first < n)
+                lo = mid + 1;
             else
                 hi = mid;
         }
-        return -1;
+        return lo < nIndex_.size() && nIndex_[lo].first == n ? nIndex_[lo].second : -1;
     }
 
     std::vector<std::int32_t> erroneousNs_;  ///< block numbers of lines that had errors
     std::vector<std::size_t> gotos_;         ///< indices of goto blocks
+    std::vector<std::pair<std::int32_t, std::int32_t>> nIndex_;  ///< see buildNIndex
     std::int32_t previousN_ = -1;
     bool nSorted_ = true;  ///< every n so far greater than the one before
+    std::size_t keepLimit_ = options_.maxDiagnostics;  ///< diagnostics kept (report)
+    std::size_t steps_ = 0;                            ///< CompileStats::gotoSteps
 };
 
 }  // namespace

@@ -42,6 +42,8 @@ enum class MessageId : std::uint8_t {
     FeedRange,
     SoftLimit,
     UnknownAxis,
+    NTooLarge,
+    ValueRange,
     Count_
 };
 
@@ -99,6 +101,10 @@ constexpr std::string_view diagnosticCode(MessageId id) {
             return "soft-limit";
         case MessageId::UnknownAxis:
             return "unknown-axis";
+        case MessageId::NTooLarge:
+            return "n-range";
+        case MessageId::ValueRange:
+            return "value-range";
         case MessageId::Count_:
             break;
     }

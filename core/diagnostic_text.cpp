@@ -7,45 +7,43 @@ namespace {
 
 constexpr const char* kContext = "Diagnostic";
 
-// Placeholders: %1 the block number (or the file line when the block has none),
-// %2 the offending text, %3 a value (a limit, the previous n, a digit count).
+// Placeholders: %1 where: "in block n=40" when the line has a block number, "on line 6"
+// otherwise (the diagnostic's prefix always gives the file line), %2 the offending text, %3 a
+// value (a limit, the previous n, a digit count).
 constexpr const char* kSource[kMessageCount] = {
     QT_TRANSLATE_NOOP("Diagnostic", "every line must start with n (found '%2')"),
-    QT_TRANSLATE_NOOP("Diagnostic", "wrong n sequence on line %1: must be greater than %3"),
-    QT_TRANSLATE_NOOP("Diagnostic", "sequence number alone on line %1"),
-    QT_TRANSLATE_NOOP("Diagnostic", "separating spaces required on line %1 (found '%2')"),
-    QT_TRANSLATE_NOOP("Diagnostic", "there can be no more commands after %2 on line %1"),
-    QT_TRANSLATE_NOOP("Diagnostic", "g00 requires an x word on line %1"),
-    QT_TRANSLATE_NOOP("Diagnostic", "g01 requires an x word on line %1"),
-    QT_TRANSLATE_NOOP("Diagnostic", "g04 without x word (time) on line %1"),
-    QT_TRANSLATE_NOOP("Diagnostic", "g92 requires an x word on line %1"),
-    QT_TRANSLATE_NOOP("Diagnostic", "m03 without x word (block) on line %1"),
-    QT_TRANSLATE_NOOP("Diagnostic", "invalid value after g04 on line %1: the time %2 is negative"),
-    QT_TRANSLATE_NOOP("Diagnostic", "invalid value after m03 on line %1: the block %2 is negative"),
-    QT_TRANSLATE_NOOP("Diagnostic", "negative f command impossible on line %1 (%2)"),
-    QT_TRANSLATE_NOOP("Diagnostic", "invalid g command on line %1 (%2)"),
-    QT_TRANSLATE_NOOP("Diagnostic", "invalid m command on line %1 (%2)"),
-    QT_TRANSLATE_NOOP("Diagnostic", "g01 or g00 not defined on line %1"),
-    QT_TRANSLATE_NOOP("Diagnostic", "g01 needs f defined on line %1"),
-    QT_TRANSLATE_NOOP("Diagnostic", "invalid character or g00 does not take f on line %1"),
-    QT_TRANSLATE_NOOP("Diagnostic", "invalid character on line %1: '%2'"),
-    QT_TRANSLATE_NOOP("Diagnostic", "invalid character on line %1: malformed number '%2'"),
-    QT_TRANSLATE_NOOP("Diagnostic",
-                      "invalid character on line %1: '%2' must have exactly %3 digits"),
-    QT_TRANSLATE_NOOP("Diagnostic", "invalid character on line %1: comment not closed"),
-    QT_TRANSLATE_NOOP("Diagnostic", "invalid character on line %1: word '%2' repeated"),
-    QT_TRANSLATE_NOOP("Diagnostic",
-                      "invalid character on line %1: n must be the first word ('%2')"),
-    QT_TRANSLATE_NOOP("Diagnostic",
-                      "invalid value after m03 on line %1: '%2' is not a block number"),
-    QT_TRANSLATE_NOOP("Diagnostic",
-                      "invalid character on line %1: number '%2' longer than %3 digits"),
+    QT_TRANSLATE_NOOP("Diagnostic", "wrong n sequence %1: must be greater than %3"),
+    QT_TRANSLATE_NOOP("Diagnostic", "sequence number alone %1"),
+    QT_TRANSLATE_NOOP("Diagnostic", "separating spaces required %1 (found '%2')"),
+    QT_TRANSLATE_NOOP("Diagnostic", "there can be no more commands after %2 %1"),
+    QT_TRANSLATE_NOOP("Diagnostic", "g00 requires an x word %1"),
+    QT_TRANSLATE_NOOP("Diagnostic", "g01 requires an x word %1"),
+    QT_TRANSLATE_NOOP("Diagnostic", "g04 without x word (time) %1"),
+    QT_TRANSLATE_NOOP("Diagnostic", "g92 requires an x word %1"),
+    QT_TRANSLATE_NOOP("Diagnostic", "m03 without x word (block) %1"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid value after g04 %1: the time %2 is negative"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid value after m03 %1: the block %2 is negative"),
+    QT_TRANSLATE_NOOP("Diagnostic", "negative f command impossible %1 (%2)"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid g command %1 (%2)"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid m command %1 (%2)"),
+    QT_TRANSLATE_NOOP("Diagnostic", "g01 or g00 not defined %1"),
+    QT_TRANSLATE_NOOP("Diagnostic", "g01 needs f defined %1"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid character or g00 does not take f %1"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid character %1: '%2'"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid character %1: malformed number '%2'"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid character %1: '%2' must have exactly %3 digits"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid character %1: comment not closed"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid character %1: word '%2' repeated"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid character %1: n must be the first word ('%2')"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid value after m03 %1: '%2' is not a block number"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid character %1: number '%2' longer than %3 digits"),
     QT_TRANSLATE_NOOP("Diagnostic", "program requires m02 (END) at the end"),
-    QT_TRANSLATE_NOOP("Diagnostic", "invalid GO TO on line %1: block n%2 does not exist"),
-    QT_TRANSLATE_NOOP("Diagnostic",
-                      "feed f%2 out of range on line %1: must be above 0 and at most 100 %"),
-    QT_TRANSLATE_NOOP("Diagnostic", "target %2 mm on line %1 is beyond the soft limit %3 mm"),
-    QT_TRANSLATE_NOOP("Diagnostic", "axis %2 does not exist on this machine (line %1)"),
+    QT_TRANSLATE_NOOP("Diagnostic", "invalid GO TO %1: block n=%2 does not exist"),
+    QT_TRANSLATE_NOOP("Diagnostic", "feed f%2 out of range %1: must be from %3 % to 100 %"),
+    QT_TRANSLATE_NOOP("Diagnostic", "target %2 mm %1 is beyond the soft limit %3 mm"),
+    QT_TRANSLATE_NOOP("Diagnostic", "axis %2 %1 does not exist on this machine"),
+    QT_TRANSLATE_NOOP("Diagnostic", "block number '%2' too large %1: at most %3"),
+    QT_TRANSLATE_NOOP("Diagnostic", "value '%2' too large %1: at most %3 in magnitude"),
 };
 
 QString number(double v) {
@@ -76,9 +74,16 @@ QString substitute(const QString& text, std::initializer_list<QString> args) {
     return out;
 }
 
+QString diagnosticPlace(const Diagnostic& d) {
+    if (d.n >= 0)
+        return substitute(QCoreApplication::translate("Diagnostic", "in block n=%1"),
+                          {QString::number(d.n)});
+    return substitute(QCoreApplication::translate("Diagnostic", "on line %1"),
+                      {QString::number(d.line)});
+}
+
 QString diagnosticMessage(const Diagnostic& d) {
-    const QString where =
-        QString::number(d.n >= 0 ? static_cast<qint64>(d.n) : static_cast<qint64>(d.line));
+    const QString where = diagnosticPlace(d);
     const QString text = QCoreApplication::translate(kContext, diagnosticSourceText(d.id));
     return substitute(text, {where, QString::fromUtf8(d.text), number(d.value)});
 }
@@ -88,6 +93,12 @@ QString compileSummary(std::size_t errorCount) {
         return QCoreApplication::translate("Diagnostic", "Compilation completed successfully");
     return substitute(QCoreApplication::translate("Diagnostic", "%1 compile error(s)"),
                       {QString::number(errorCount)});
+}
+
+QString omittedDiagnostics(std::size_t count) {
+    return substitute(
+        QCoreApplication::translate("Diagnostic", "... and %1 more diagnostic(s) not listed"),
+        {QString::number(count)});
 }
 
 }  // namespace trilho

@@ -7,8 +7,15 @@
 
 namespace trilho {
 
-/// The message of one diagnostic, e.g. "Erro: Seqüência n errada na linha 20".
+/// The message of one diagnostic, e.g. "Erro: Seqüência n errada no bloco n=20".
 QString diagnosticMessage(const Diagnostic& d);
+
+/// Where a diagnostic is, as its message names it: "in block n=40" when the line has a block
+/// number, "on line 6" otherwise (translated).
+QString diagnosticPlace(const Diagnostic& d);
+
+/// The closing line of a capped list: "... and 4002 more diagnostic(s) not listed".
+QString omittedDiagnostics(std::size_t count);
 
 /// "N compile error(s)" or "Compilation completed successfully", translated.
 QString compileSummary(std::size_t errorCount);

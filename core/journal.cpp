@@ -1,11 +1,25 @@
 #include "core/journal.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <QFile>
 #include <QSaveFile>
+#include <cerrno>
+#include <cstring>
+#include <deque>
 
 namespace trilho {
 
 namespace {
+
+/// A journal line is about 100 bytes; anything longer than this is not an entry (garbage, or a
+/// file that is not a journal) and is skipped without being held in memory.
+constexpr qsizetype kMaxLineBytes = 64 * 1024;
+/// Rotated files looked for beyond the policy's count (a journal kept with a larger one).
+constexpr int kMaxRotatedFiles = 1000;
+
 QString clean(QString s) {
     s.replace(QLatin1Char('\t'), QLatin1Char(' '));
     s.replace(QLatin1Char('\n'), QLatin1Char(' '));
@@ -17,49 +31,269 @@ QString csvField(const QString& s) {
     q.replace(QLatin1Char('"'), QStringLiteral("\"\""));
     return QLatin1Char('"') + q + QLatin1Char('"');
 }
+QByteArray csvRow(const JournalEntry& e) {
+    return (csvField(e.when.toUTC().toString(Qt::ISODateWithMs)) + QLatin1Char(',') +
+            csvField(e.kind) + QLatin1Char(',') + QString::number(e.code) + QLatin1Char(',') +
+            csvField(e.text) + QStringLiteral("\r\n"))
+        .toUtf8();
+}
+constexpr char kCsvHeader[] = "time_utc,kind,code,text\r\n";
+
+QByteArray encodeLine(const JournalEntry& e) {
+    return (e.when.toUTC().toString(Qt::ISODateWithMs) + QLatin1Char('\t') + clean(e.kind) +
+            QLatin1Char('\t') + QString::number(e.code) + QLatin1Char('\t') + clean(e.text) +
+            QLatin1Char('\n'))
+        .toUtf8();
+}
+
+/// Cheap shape check made on every line while streaming: four fields, the third a number.
+/// The full parse (the date) is done only for the lines kept.
+bool looksLikeEntry(QByteArrayView line) {
+    qsizetype tabs[3] = {};
+    int found = 0;
+    for (qsizetype i = 0; i < line.size(); ++i) {
+        if (line[i] != '\t') continue;
+        if (found == 3) return false;
+        tabs[found++] = i;
+    }
+    if (found != 3 || tabs[0] == 0) return false;
+    const QByteArrayView code = line.sliced(tabs[1] + 1, tabs[2] - tabs[1] - 1);
+    if (code.isEmpty()) return false;
+    for (qsizetype i = 0; i < code.size(); ++i)
+        if (!((code[i] >= '0' && code[i] <= '9') || (i == 0 && code[i] == '-'))) return false;
+    return true;
+}
+
+bool parseLine(QByteArrayView line, JournalEntry& e) {
+    if (!looksLikeEntry(line)) return false;
+    const qsizetype t0 = line.indexOf('\t');
+    const qsizetype t1 = line.indexOf('\t', t0 + 1);
+    const qsizetype t2 = line.indexOf('\t', t1 + 1);
+    e.when = QDateTime::fromString(QString::fromUtf8(line.first(t0)), Qt::ISODateWithMs);
+    if (!e.when.isValid()) return false;
+    e.kind = QString::fromUtf8(line.sliced(t0 + 1, t1 - t0 - 1));
+    bool ok = false;
+    e.code = line.sliced(t1 + 1, t2 - t1 - 1).toInt(&ok);
+    if (!ok) return false;
+    e.text = QString::fromUtf8(line.sliced(t2 + 1));
+    return true;
+}
+
+/// Calls f(line) for every complete line of the device (without its '\n'), reading 64 KB at a
+/// time. A line longer than kMaxLineBytes is skipped; so is a last line with no '\n' (torn).
+template <typename F>
+void forEachLine(QIODevice& device, F f) {
+    QByteArray line;
+    bool overlong = false;
+    char buffer[64 * 1024];
+    while (true) {
+        const qint64 got = device.read(buffer, sizeof buffer);
+        if (got <= 0) break;
+        qsizetype start = 0;
+        for (qsizetype i = 0; i < got; ++i) {
+            if (buffer[i] != '\n') continue;
+            if (!overlong) {
+                line.append(buffer + start, i - start);
+                f(QByteArrayView(line));
+            }
+            line.clear();
+            overlong = false;
+            start = i + 1;
+        }
+        if (!overlong) {
+            line.append(buffer + start, static_cast<qsizetype>(got) - start);
+            if (line.size() > kMaxLineBytes) overlong = true, line.clear();
+        }
+    }
+}
+
+QString rotatedName(const QString& path, int i) {
+    return i == 0 ? path : path + QLatin1Char('.') + QString::number(i);
+}
+
 }  // namespace
 
+Journal::~Journal() {
+    close();
+}
+
+void Journal::fail(const QString& what, int err) {
+    health_.ok = false;
+    health_.error = QStringLiteral("%1 journal '%2': %3")
+                        .arg(what, path_, QString::fromLocal8Bit(std::strerror(err)));
+}
+
+bool Journal::openFile(QString* error) {
+    fd_ = ::open(QFile::encodeName(path_).constData(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC,
+                 0644);
+    if (fd_ < 0) {
+        fail(QStringLiteral("cannot open"), errno);
+        if (error) *error = health_.error;
+        return false;
+    }
+    struct stat st {};
+    size_ = ::fstat(fd_, &st) == 0 && S_ISREG(st.st_mode) ? st.st_size : 0;
+    // A torn tail (killed, or the disk filled, mid-write): end it, so the next entry starts a
+    // line of its own instead of being glued to the torn one and lost with it.
+    needNewline_ = false;
+    if (size_ > 0) {
+        char last = '\n';
+        const int rfd = ::open(QFile::encodeName(path_).constData(), O_RDONLY | O_CLOEXEC);
+        if (rfd >= 0) {
+            if (::pread(rfd, &last, 1, size_ - 1) != 1) last = '\n';
+            ::close(rfd);
+        }
+        needNewline_ = last != '\n';
+    }
+    return true;
+}
+
 bool Journal::open(const QString& path, QString* error) {
-    file_.setFileName(path);
-    if (!file_.open(QIODevice::Append | QIODevice::WriteOnly | QIODevice::Unbuffered)) {
-        if (error)
-            *error = QStringLiteral("cannot open journal '%1': %2").arg(path, file_.errorString());
+    close();
+    path_ = path;
+    health_ = {};
+    pending_ = 0;
+    syncs_ = 0;
+    everSynced_ = false;
+    if (!openFile(error)) return false;
+    keepOpen_ = true;
+    // A file left at the limit (or a large one from before rotation existed) rotates at once;
+    // if that fails the history goes on in the same file (health() tells).
+    if (size_ >= policy_.maxFileBytes) rotate();
+    return isOpen();
+}
+
+void Journal::close() {
+    keepOpen_ = false;
+    if (fd_ < 0) return;
+    if (pending_ > 0) sync();
+    ::close(fd_);
+    fd_ = -1;
+}
+
+bool Journal::writeLine(const QByteArray& line) {
+    // Closed by a rotation whose reopen failed: try again, the cause may have gone.
+    if (fd_ < 0 && (!keepOpen_ || !openFile(nullptr))) {
+        ++health_.lostEntries;
+        return false;
+    }
+    if (size_ > 0 && size_ + line.size() + (needNewline_ ? 1 : 0) > policy_.maxFileBytes)
+        rotate();  // on failure the entry still goes to the current file
+    QByteArray bytes = needNewline_ ? QByteArray(1, '\n') + line : line;
+    const char* p = bytes.constData();
+    qsizetype left = bytes.size();
+    while (left > 0) {
+        const ssize_t n = ::write(fd_, p, static_cast<std::size_t>(left));
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            fail(QStringLiteral("cannot write"), errno);
+            // Part of the line reached the file: end it before the next entry.
+            if (p != bytes.constData()) needNewline_ = true;
+            ++health_.lostEntries;
+            return false;
+        }
+        p += n;
+        left -= n;
+        size_ += n;
+        needNewline_ = false;
+    }
+    health_.ok = true;
+    return true;
+}
+
+bool Journal::sync() {
+    if (fd_ < 0 || pending_ == 0) return fd_ >= 0;
+    ++syncs_;
+    pending_ = 0;
+    everSynced_ = true;
+    if (::fdatasync(fd_) != 0) {
+        fail(QStringLiteral("cannot sync"), errno);
         return false;
     }
     return true;
 }
 
-bool Journal::append(const JournalEntry& e) {
-    if (!file_.isOpen()) return false;
-    const QByteArray line = (e.when.toUTC().toString(Qt::ISODateWithMs) + QLatin1Char('\t') +
-                             clean(e.kind) + QLatin1Char('\t') + QString::number(e.code) +
-                             QLatin1Char('\t') + clean(e.text) + QLatin1Char('\n'))
-                                .toUtf8();
-    // Unbuffered: one write() per entry, in the kernel's hands as soon as it returns.
-    const bool ok = file_.write(line) == line.size();
-    ::fdatasync(file_.handle());
+bool Journal::append(const JournalEntry& entry) {
+    if (!writeLine(encodeLine(entry))) return false;
+    ++pending_;
+    return sync();
+}
+
+bool Journal::append(const JournalEntry& entry, std::int64_t nowMs) {
+    if (!writeLine(encodeLine(entry))) return false;
+    ++pending_;
+    if (entry.kind == QLatin1String("alarm") || !everSynced_ ||
+        nowMs - lastSyncMs_ >= policy_.syncIntervalMs) {
+        lastSyncMs_ = nowMs;
+        return sync();
+    }
+    return true;
+}
+
+bool Journal::syncIfDue(std::int64_t nowMs) {
+    if (pending_ == 0 || (everSynced_ && nowMs - lastSyncMs_ < policy_.syncIntervalMs)) return true;
+    lastSyncMs_ = nowMs;
+    return sync();
+}
+
+bool Journal::rotate() {
+    sync();
+    ::close(fd_);
+    fd_ = -1;
+    // path.K-1 is dropped; path.i becomes path.i+1; path becomes path.1.
+    bool ok = true;
+    int err = 0;
+    if (policy_.keepFiles <= 1) {
+        if (::unlink(QFile::encodeName(path_).constData()) != 0) ok = false, err = errno;
+    } else {
+        for (int i = policy_.keepFiles - 1; i >= 1; --i) {
+            const QByteArray from = QFile::encodeName(rotatedName(path_, i - 1));
+            const QByteArray to = QFile::encodeName(rotatedName(path_, i));
+            if (::rename(from.constData(), to.constData()) != 0 && errno != ENOENT)
+                ok = false, err = errno;
+        }
+    }
+    if (!ok) fail(QStringLiteral("cannot rotate"), err);
+    if (!openFile(nullptr)) return false;
     return ok;
 }
 
-QList<JournalEntry> Journal::read(const QString& path) {
+QStringList Journal::files(const QString& path) {
+    QStringList found;
+    for (int i = 1; i <= kMaxRotatedFiles && QFile::exists(rotatedName(path, i)); ++i)
+        found.prepend(rotatedName(path, i));
+    if (QFile::exists(path)) found.append(path);
+    return found;
+}
+
+QList<JournalEntry> Journal::read(QIODevice& device, qsizetype maxEntries) {
+    std::deque<QByteArray> last;
+    if (maxEntries <= 0) return {};
+    forEachLine(device, [&](QByteArrayView line) {
+        if (!looksLikeEntry(line)) return;
+        if (static_cast<qsizetype>(last.size()) == maxEntries) last.pop_front();
+        last.emplace_back(line.toByteArray());
+    });
     QList<JournalEntry> entries;
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) return entries;
-    const QByteArray all = f.readAll();
-    const QList<QByteArray> lines = all.split('\n');
-    for (qsizetype i = 0; i < lines.size(); ++i) {
-        if (i == lines.size() - 1) break;  // after the last '\n': empty or torn
-        const QList<QByteArray> fields = lines[i].split('\t');
-        if (fields.size() != 4) continue;
+    entries.reserve(static_cast<qsizetype>(last.size()));
+    for (const QByteArray& line : last) {
         JournalEntry e;
-        e.when = QDateTime::fromString(QString::fromUtf8(fields[0]), Qt::ISODateWithMs);
-        if (!e.when.isValid()) continue;
-        e.kind = QString::fromUtf8(fields[1]);
-        bool ok = false;
-        e.code = fields[2].toInt(&ok);
-        if (!ok) continue;
-        e.text = QString::fromUtf8(fields[3]);
-        entries.append(e);
+        if (parseLine(line, e)) entries.append(std::move(e));
+    }
+    return entries;
+}
+
+QList<JournalEntry> Journal::readLast(const QString& path, qsizetype maxEntries) {
+    QList<JournalEntry> entries;
+    if (maxEntries <= 0) return entries;
+    // Newest file first: older files are read only while entries are still wanted.
+    const QStringList all = files(path);
+    for (qsizetype i = all.size() - 1; i >= 0 && entries.size() < maxEntries; --i) {
+        QFile f(all[i]);
+        if (!f.open(QIODevice::ReadOnly)) continue;
+        QList<JournalEntry> older = read(f, maxEntries - entries.size());
+        older.append(std::move(entries));
+        entries = std::move(older);
     }
     return entries;
 }
@@ -70,16 +304,33 @@ bool Journal::exportCsv(const QList<JournalEntry>& entries, const QString& path,
         if (error) *error = QStringLiteral("cannot write '%1': %2").arg(path, f.errorString());
         return false;
     }
-    QByteArray out = "time_utc,kind,code,text\r\n";
-    for (const JournalEntry& e : entries) {
-        out += (csvField(e.when.toUTC().toString(Qt::ISODateWithMs)) + QLatin1Char(',') +
-                csvField(e.kind) + QLatin1Char(',') + QString::number(e.code) + QLatin1Char(',') +
-                csvField(e.text) + QStringLiteral("\r\n"))
-                   .toUtf8();
-    }
-    f.write(out);
+    f.write(kCsvHeader);
+    for (const JournalEntry& e : entries)
+        f.write(csvRow(e));
     if (!f.commit()) {
         if (error) *error = QStringLiteral("cannot write '%1': %2").arg(path, f.errorString());
+        return false;
+    }
+    return true;
+}
+
+bool Journal::exportJournalCsv(const QString& journalPath, const QString& csvPath, QString* error) {
+    QSaveFile out(csvPath);
+    if (!out.open(QIODevice::WriteOnly)) {
+        if (error) *error = QStringLiteral("cannot write '%1': %2").arg(csvPath, out.errorString());
+        return false;
+    }
+    out.write(kCsvHeader);
+    for (const QString& name : files(journalPath)) {
+        QFile in(name);
+        if (!in.open(QIODevice::ReadOnly)) continue;
+        forEachLine(in, [&](QByteArrayView line) {
+            JournalEntry e;
+            if (parseLine(line, e)) out.write(csvRow(e));
+        });
+    }
+    if (!out.commit()) {
+        if (error) *error = QStringLiteral("cannot write '%1': %2").arg(csvPath, out.errorString());
         return false;
     }
     return true;

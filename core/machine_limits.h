@@ -5,6 +5,11 @@
 
 namespace trilho {
 
+/// The slowest feed the rail really runs, percent of the maximum speed: RailServo clamps the
+/// speed fraction at 0.001, so a smaller f would be logged as programmed but run at 0.1 %. The
+/// compiler refuses anything below (feed-range) so that what is logged is what runs.
+inline constexpr double kMinFeedPercent = 0.1;
+
 struct AxisTravel {
     double softMinMm = -1270.0;  ///< mm from the rail centre; targets below are refused
     double softMaxMm = 1270.0;   ///< mm from the rail centre

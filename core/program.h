@@ -16,9 +16,11 @@ struct Program {
     std::vector<double> y;
     std::vector<Diagnostic> diagnostics;
     std::size_t lineCount = 0;  ///< lines read from the source
+    /// Errors found beyond CompileOptions::maxDiagnostics: counted, not kept.
+    std::size_t diagnosticsOmitted = 0;
 
     std::size_t errorCount() const {
-        std::size_t count = 0;
+        std::size_t count = diagnosticsOmitted;
         for (const auto& d : diagnostics)
             count += d.severity == Severity::Error ? 1 : 0;
         return count;

@@ -1,6 +1,7 @@
 #pragma once
-// Reads a whole program file, with a one-line reason when it cannot (missing, a directory,
-// unreadable, too large). Plain POSIX, so the message carries the system's own wording.
+// Reads a whole program file, with a one-line reason when it cannot (missing, a directory, not
+// a regular file, unreadable, too large). Plain POSIX, so the message carries the system's own
+// wording.
 #include <string>
 
 namespace trilho {
@@ -11,10 +12,12 @@ struct SourceFile {
     std::string error;  ///< e.g. "cannot open 'x.G': No such file or directory"
 };
 
-/// Files larger than this are refused: the biggest real program is far smaller, and the
-/// compiler keeps the whole text in memory.
-inline constexpr long long kMaxSourceBytes = 512LL * 1024 * 1024;
+/// Files larger than this are refused: the biggest real program is far smaller (a million
+/// lines is about 25 MB), and the compiler keeps the whole text and its blocks in memory.
+inline constexpr long long kMaxSourceBytes = 64LL * 1024 * 1024;
 
+/// Reads path (bytes as given to open(2), any encoding). Only regular files are read: a FIFO or
+/// a device is refused at once instead of blocking (it is opened non-blocking, then checked).
 SourceFile readSourceFile(const std::string& path);
 
 }  // namespace trilho

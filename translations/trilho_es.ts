@@ -227,124 +227,140 @@
         <translation>toda línea debe comenzar con n (se encontró &apos;%2&apos;)</translation>
     </message>
     <message>
-        <source>wrong n sequence on line %1: must be greater than %3</source>
-        <translation>secuencia n incorrecta en la línea %1: debe ser mayor que %3</translation>
+        <source>wrong n sequence %1: must be greater than %3</source>
+        <translation>secuencia n incorrecta %1: debe ser mayor que %3</translation>
     </message>
     <message>
-        <source>sequence number alone on line %1</source>
-        <translation>número de secuencia solo en la línea %1</translation>
+        <source>sequence number alone %1</source>
+        <translation>número de secuencia solo %1</translation>
     </message>
     <message>
-        <source>separating spaces required on line %1 (found &apos;%2&apos;)</source>
-        <translation>se requieren espacios de separación en la línea %1 (se encontró &apos;%2&apos;)</translation>
+        <source>separating spaces required %1 (found &apos;%2&apos;)</source>
+        <translation>se requieren espacios de separación %1 (se encontró &apos;%2&apos;)</translation>
     </message>
     <message>
-        <source>there can be no more commands after %2 on line %1</source>
-        <translation>no puede haber más comandos después de %2 en la línea %1</translation>
+        <source>there can be no more commands after %2 %1</source>
+        <translation>no puede haber más comandos después de %2 %1</translation>
     </message>
     <message>
-        <source>g00 requires an x word on line %1</source>
-        <translation>g00 requiere comando x en la línea %1</translation>
+        <source>g00 requires an x word %1</source>
+        <translation>g00 requiere comando x %1</translation>
     </message>
     <message>
-        <source>g01 requires an x word on line %1</source>
-        <translation>g01 requiere comando x en la línea %1</translation>
+        <source>g01 requires an x word %1</source>
+        <translation>g01 requiere comando x %1</translation>
     </message>
     <message>
-        <source>g04 without x word (time) on line %1</source>
-        <translation>g04 sin comando x (tiempo) en la línea %1</translation>
+        <source>g04 without x word (time) %1</source>
+        <translation>g04 sin comando x (tiempo) %1</translation>
     </message>
     <message>
-        <source>g92 requires an x word on line %1</source>
-        <translation>g92 requiere comando x en la línea %1</translation>
+        <source>g92 requires an x word %1</source>
+        <translation>g92 requiere comando x %1</translation>
     </message>
     <message>
-        <source>m03 without x word (block) on line %1</source>
-        <translation>m03 sin comando x (bloque) en la línea %1</translation>
+        <source>m03 without x word (block) %1</source>
+        <translation>m03 sin comando x (bloque) %1</translation>
     </message>
     <message>
-        <source>invalid value after g04 on line %1: the time %2 is negative</source>
-        <translation>valor inválido después de g04 en la línea %1: el tiempo %2 es negativo</translation>
+        <source>invalid value after g04 %1: the time %2 is negative</source>
+        <translation>valor inválido después de g04 %1: el tiempo %2 es negativo</translation>
     </message>
     <message>
-        <source>invalid value after m03 on line %1: the block %2 is negative</source>
-        <translation>valor inválido después de m03 en la línea %1: el bloque %2 es negativo</translation>
+        <source>invalid value after m03 %1: the block %2 is negative</source>
+        <translation>valor inválido después de m03 %1: el bloque %2 es negativo</translation>
     </message>
     <message>
-        <source>negative f command impossible on line %1 (%2)</source>
-        <translation>comando f negativo imposible en la línea %1 (%2)</translation>
+        <source>negative f command impossible %1 (%2)</source>
+        <translation>comando f negativo imposible %1 (%2)</translation>
     </message>
     <message>
-        <source>invalid g command on line %1 (%2)</source>
-        <translation>comando g inválido en la línea %1 (%2)</translation>
+        <source>invalid g command %1 (%2)</source>
+        <translation>comando g inválido %1 (%2)</translation>
     </message>
     <message>
-        <source>invalid m command on line %1 (%2)</source>
-        <translation>comando m inválido en la línea %1 (%2)</translation>
+        <source>invalid m command %1 (%2)</source>
+        <translation>comando m inválido %1 (%2)</translation>
     </message>
     <message>
-        <source>g01 or g00 not defined on line %1</source>
-        <translation>g01 o g00 no definidos en la línea %1</translation>
+        <source>g01 or g00 not defined %1</source>
+        <translation>g01 o g00 no definidos %1</translation>
     </message>
     <message>
-        <source>g01 needs f defined on line %1</source>
-        <translation>g01 necesita f definido en la línea %1</translation>
+        <source>g01 needs f defined %1</source>
+        <translation>g01 necesita f definido %1</translation>
     </message>
     <message>
-        <source>invalid character or g00 does not take f on line %1</source>
-        <translation>carácter inválido o g00 no admite f en la línea %1</translation>
+        <source>invalid character or g00 does not take f %1</source>
+        <translation>carácter inválido o g00 no admite f %1</translation>
     </message>
     <message>
-        <source>invalid character on line %1: &apos;%2&apos;</source>
-        <translation>carácter inválido en la línea %1: &apos;%2&apos;</translation>
+        <source>invalid character %1: &apos;%2&apos;</source>
+        <translation>carácter inválido %1: &apos;%2&apos;</translation>
     </message>
     <message>
-        <source>invalid character on line %1: malformed number &apos;%2&apos;</source>
-        <translation>carácter inválido en la línea %1: número mal formado &apos;%2&apos;</translation>
+        <source>invalid character %1: malformed number &apos;%2&apos;</source>
+        <translation>carácter inválido %1: número mal formado &apos;%2&apos;</translation>
     </message>
     <message>
-        <source>invalid character on line %1: &apos;%2&apos; must have exactly %3 digits</source>
-        <translation>carácter inválido en la línea %1: &apos;%2&apos; debe tener exactamente %3 dígitos</translation>
+        <source>invalid character %1: &apos;%2&apos; must have exactly %3 digits</source>
+        <translation>carácter inválido %1: &apos;%2&apos; debe tener exactamente %3 dígitos</translation>
     </message>
     <message>
-        <source>invalid character on line %1: comment not closed</source>
-        <translation>carácter inválido en la línea %1: comentario sin cerrar</translation>
+        <source>invalid character %1: comment not closed</source>
+        <translation>carácter inválido %1: comentario sin cerrar</translation>
     </message>
     <message>
-        <source>invalid character on line %1: word &apos;%2&apos; repeated</source>
-        <translation>carácter inválido en la línea %1: palabra &apos;%2&apos; repetida</translation>
+        <source>invalid character %1: word &apos;%2&apos; repeated</source>
+        <translation>carácter inválido %1: palabra &apos;%2&apos; repetida</translation>
     </message>
     <message>
-        <source>invalid character on line %1: n must be the first word (&apos;%2&apos;)</source>
-        <translation>carácter inválido en la línea %1: n debe ser la primera palabra (&apos;%2&apos;)</translation>
+        <source>invalid character %1: n must be the first word (&apos;%2&apos;)</source>
+        <translation>carácter inválido %1: n debe ser la primera palabra (&apos;%2&apos;)</translation>
     </message>
     <message>
-        <source>invalid value after m03 on line %1: &apos;%2&apos; is not a block number</source>
-        <translation>valor inválido después de m03 en la línea %1: &apos;%2&apos; no es un número de bloque</translation>
+        <source>invalid value after m03 %1: &apos;%2&apos; is not a block number</source>
+        <translation>valor inválido después de m03 %1: &apos;%2&apos; no es un número de bloque</translation>
     </message>
     <message>
-        <source>invalid character on line %1: number &apos;%2&apos; longer than %3 digits</source>
-        <translation>carácter inválido en la línea %1: número &apos;%2&apos; de más de %3 dígitos</translation>
+        <source>invalid character %1: number &apos;%2&apos; longer than %3 digits</source>
+        <translation>carácter inválido %1: número &apos;%2&apos; de más de %3 dígitos</translation>
     </message>
     <message>
         <source>program requires m02 (END) at the end</source>
         <translation>el programa requiere m02 (END) al final</translation>
     </message>
     <message>
-        <source>invalid GO TO on line %1: block n%2 does not exist</source>
-        <translation>GO TO inválido en la línea %1: el bloque n%2 no existe</translation>
+        <source>invalid GO TO %1: block n=%2 does not exist</source>
+        <translation>GO TO inválido %1: el bloque n=%2 no existe</translation>
     </message>
     <message>
-        <source>feed f%2 out of range on line %1: must be above 0 and at most 100 %</source>
-        <translation>avance f%2 fuera de rango en la línea %1: debe ser mayor que 0 y como máximo 100 %</translation>
+        <source>feed f%2 out of range %1: must be from %3 % to 100 %</source>
+        <translation>avance f%2 fuera de rango %1: debe estar entre %3 % y 100 %</translation>
     </message>
     <message>
-        <source>target %2 mm on line %1 is beyond the soft limit %3 mm</source>
-        <translation>destino %2 mm en la línea %1 más allá del límite de recorrido %3 mm</translation>
+        <source>target %2 mm %1 is beyond the soft limit %3 mm</source>
+        <translation>destino %2 mm %1 más allá del límite de recorrido %3 mm</translation>
     </message>
     <message>
-        <source>axis %2 does not exist on this machine (line %1)</source>
-        <translation>el eje %2 no existe en esta máquina (línea %1)</translation>
+        <source>axis %2 %1 does not exist on this machine</source>
+        <translation>el eje %2 %1 no existe en esta máquina</translation>
+    </message>
+    <message>
+        <source>block number &apos;%2&apos; too large %1: at most %3</source>
+        <translation>número de bloque &apos;%2&apos; demasiado grande %1: como máximo %3</translation>
+    </message>
+    <message>
+        <source>value &apos;%2&apos; too large %1: at most %3 in magnitude</source>
+        <translation>valor &apos;%2&apos; demasiado grande %1: como máximo %3 en valor absoluto</translation>
+    </message>
+    <message>
+        <source>in block n=%1</source>
+        <translation>en el bloque n=%1</translation>
+    </message>
+    <message>
+        <source>on line %1</source>
+        <translation>en la línea %1</translation>
     </message>
     <message>
         <source>Compilation completed successfully</source>
@@ -353,6 +369,10 @@
     <message>
         <source>%1 compile error(s)</source>
         <translation>%1 error(es) de compilación</translation>
+    </message>
+    <message>
+        <source>... and %1 more diagnostic(s) not listed</source>
+        <translation>... y %1 diagnóstico(s) más no listado(s)</translation>
     </message>
 </context>
 <context>

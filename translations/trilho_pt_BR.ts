@@ -227,124 +227,140 @@
         <translation>Erro: Toda linha deve iniciar com n.</translation>
     </message>
     <message>
-        <source>wrong n sequence on line %1: must be greater than %3</source>
-        <translation>Erro: Seqüência n errada na linha %1</translation>
+        <source>wrong n sequence %1: must be greater than %3</source>
+        <translation>Erro: Seqüência n errada %1</translation>
     </message>
     <message>
-        <source>sequence number alone on line %1</source>
-        <translation>Erro: Seqüência n sozinha na linha %1</translation>
+        <source>sequence number alone %1</source>
+        <translation>Erro: Seqüência n sozinha %1</translation>
     </message>
     <message>
-        <source>separating spaces required on line %1 (found &apos;%2&apos;)</source>
-        <translation>Erro: Espaços para separação requeridos na linha %1</translation>
+        <source>separating spaces required %1 (found &apos;%2&apos;)</source>
+        <translation>Erro: Espaços para separação requeridos %1</translation>
     </message>
     <message>
-        <source>there can be no more commands after %2 on line %1</source>
-        <translation>Erro: Não pode haver mais comandos após %2 na linha %1</translation>
+        <source>there can be no more commands after %2 %1</source>
+        <translation>Erro: Não pode haver mais comandos após %2 %1</translation>
     </message>
     <message>
-        <source>g00 requires an x word on line %1</source>
-        <translation>Erro: g00 requer comando x na linha %1</translation>
+        <source>g00 requires an x word %1</source>
+        <translation>Erro: g00 requer comando x %1</translation>
     </message>
     <message>
-        <source>g01 requires an x word on line %1</source>
-        <translation>Erro: g01 requer comando x na linha %1</translation>
+        <source>g01 requires an x word %1</source>
+        <translation>Erro: g01 requer comando x %1</translation>
     </message>
     <message>
-        <source>g04 without x word (time) on line %1</source>
-        <translation>Erro: g04 sem comando x (tempo) na linha %1</translation>
+        <source>g04 without x word (time) %1</source>
+        <translation>Erro: g04 sem comando x (tempo) %1</translation>
     </message>
     <message>
-        <source>g92 requires an x word on line %1</source>
-        <translation>Erro: g92 requer comando x na linha %1</translation>
+        <source>g92 requires an x word %1</source>
+        <translation>Erro: g92 requer comando x %1</translation>
     </message>
     <message>
-        <source>m03 without x word (block) on line %1</source>
-        <translation>Erro: m03 sem comando x (linha) na linha %1</translation>
+        <source>m03 without x word (block) %1</source>
+        <translation>Erro: m03 sem comando x (linha) %1</translation>
     </message>
     <message>
-        <source>invalid value after g04 on line %1: the time %2 is negative</source>
-        <translation>Erro: Caracter inválido após g04 na linha %1</translation>
+        <source>invalid value after g04 %1: the time %2 is negative</source>
+        <translation>Erro: Caracter inválido após g04 %1</translation>
     </message>
     <message>
-        <source>invalid value after m03 on line %1: the block %2 is negative</source>
-        <translation>Erro: Caracter inválido após m03 na linha %1</translation>
+        <source>invalid value after m03 %1: the block %2 is negative</source>
+        <translation>Erro: Caracter inválido após m03 %1</translation>
     </message>
     <message>
-        <source>negative f command impossible on line %1 (%2)</source>
-        <translation>Erro: Comando f negativo impossível na linha %1</translation>
+        <source>negative f command impossible %1 (%2)</source>
+        <translation>Erro: Comando f negativo impossível %1</translation>
     </message>
     <message>
-        <source>invalid g command on line %1 (%2)</source>
-        <translation>Erro: Comando g inválido na linha %1</translation>
+        <source>invalid g command %1 (%2)</source>
+        <translation>Erro: Comando g inválido %1</translation>
     </message>
     <message>
-        <source>invalid m command on line %1 (%2)</source>
-        <translation>Erro: Comando m inválido na linha %1</translation>
+        <source>invalid m command %1 (%2)</source>
+        <translation>Erro: Comando m inválido %1</translation>
     </message>
     <message>
-        <source>g01 or g00 not defined on line %1</source>
-        <translation>Erro: g01 ou g00 não definidos na linha %1</translation>
+        <source>g01 or g00 not defined %1</source>
+        <translation>Erro: g01 ou g00 não definidos %1</translation>
     </message>
     <message>
-        <source>g01 needs f defined on line %1</source>
-        <translation>Erro: g01 precisa de f definido na linha %1</translation>
+        <source>g01 needs f defined %1</source>
+        <translation>Erro: g01 precisa de f definido %1</translation>
     </message>
     <message>
-        <source>invalid character or g00 does not take f on line %1</source>
-        <translation>Erro: Caracter inválido ou g00 não requer f na linha %1</translation>
+        <source>invalid character or g00 does not take f %1</source>
+        <translation>Erro: Caracter inválido ou g00 não requer f %1</translation>
     </message>
     <message>
-        <source>invalid character on line %1: &apos;%2&apos;</source>
-        <translation>Erro: Caracter inválido na linha %1 (&apos;%2&apos;)</translation>
+        <source>invalid character %1: &apos;%2&apos;</source>
+        <translation>Erro: Caracter inválido %1 (&apos;%2&apos;)</translation>
     </message>
     <message>
-        <source>invalid character on line %1: malformed number &apos;%2&apos;</source>
-        <translation>Erro: Caracter inválido na linha %1 (número malformado &apos;%2&apos;)</translation>
+        <source>invalid character %1: malformed number &apos;%2&apos;</source>
+        <translation>Erro: Caracter inválido %1 (número malformado &apos;%2&apos;)</translation>
     </message>
     <message>
-        <source>invalid character on line %1: &apos;%2&apos; must have exactly %3 digits</source>
-        <translation>Erro: Caracter inválido na linha %1 (&apos;%2&apos; deve ter %3 dígitos)</translation>
+        <source>invalid character %1: &apos;%2&apos; must have exactly %3 digits</source>
+        <translation>Erro: Caracter inválido %1 (&apos;%2&apos; deve ter %3 dígitos)</translation>
     </message>
     <message>
-        <source>invalid character on line %1: comment not closed</source>
-        <translation>Erro: Caracter inválido na linha %1 (comentário não fechado)</translation>
+        <source>invalid character %1: comment not closed</source>
+        <translation>Erro: Caracter inválido %1 (comentário não fechado)</translation>
     </message>
     <message>
-        <source>invalid character on line %1: word &apos;%2&apos; repeated</source>
-        <translation>Erro: Caracter inválido na linha %1 (comando &apos;%2&apos; repetido)</translation>
+        <source>invalid character %1: word &apos;%2&apos; repeated</source>
+        <translation>Erro: Caracter inválido %1 (comando &apos;%2&apos; repetido)</translation>
     </message>
     <message>
-        <source>invalid character on line %1: n must be the first word (&apos;%2&apos;)</source>
-        <translation>Erro: Caracter inválido na linha %1 (n deve ser o primeiro comando: &apos;%2&apos;)</translation>
+        <source>invalid character %1: n must be the first word (&apos;%2&apos;)</source>
+        <translation>Erro: Caracter inválido %1 (n deve ser o primeiro comando: &apos;%2&apos;)</translation>
     </message>
     <message>
-        <source>invalid value after m03 on line %1: &apos;%2&apos; is not a block number</source>
-        <translation>Erro: Caracter inválido após m03 na linha %1 (&apos;%2&apos;)</translation>
+        <source>invalid value after m03 %1: &apos;%2&apos; is not a block number</source>
+        <translation>Erro: Caracter inválido após m03 %1 (&apos;%2&apos;)</translation>
     </message>
     <message>
-        <source>invalid character on line %1: number &apos;%2&apos; longer than %3 digits</source>
-        <translation>Erro: Caracter inválido na linha %1 (número &apos;%2&apos; com mais de %3 dígitos)</translation>
+        <source>invalid character %1: number &apos;%2&apos; longer than %3 digits</source>
+        <translation>Erro: Caracter inválido %1 (número &apos;%2&apos; com mais de %3 dígitos)</translation>
     </message>
     <message>
         <source>program requires m02 (END) at the end</source>
         <translation>Erro: Programa requer m02 (END) no final</translation>
     </message>
     <message>
-        <source>invalid GO TO on line %1: block n%2 does not exist</source>
-        <translation>Erro: GO TO Inválido na linha %1 (bloco n%2 não existe)</translation>
+        <source>invalid GO TO %1: block n=%2 does not exist</source>
+        <translation>Erro: GO TO Inválido %1 (bloco n=%2 não existe)</translation>
     </message>
     <message>
-        <source>feed f%2 out of range on line %1: must be above 0 and at most 100 %</source>
-        <translation>Erro: Comando f fora da faixa na linha %1 (f%2; deve ser maior que 0 e no máximo 100 %)</translation>
+        <source>feed f%2 out of range %1: must be from %3 % to 100 %</source>
+        <translation>Erro: Comando f fora da faixa %1 (f%2; deve ser de %3 % a 100 %)</translation>
     </message>
     <message>
-        <source>target %2 mm on line %1 is beyond the soft limit %3 mm</source>
-        <translation>Erro: Posição %2 mm na linha %1 além do limite de curso %3 mm</translation>
+        <source>target %2 mm %1 is beyond the soft limit %3 mm</source>
+        <translation>Erro: Posição %2 mm %1 além do limite de curso %3 mm</translation>
     </message>
     <message>
-        <source>axis %2 does not exist on this machine (line %1)</source>
-        <translation>Erro: Eixo %2 não existe nesta máquina (linha %1)</translation>
+        <source>axis %2 %1 does not exist on this machine</source>
+        <translation>Erro: Eixo %2 %1 não existe nesta máquina</translation>
+    </message>
+    <message>
+        <source>block number &apos;%2&apos; too large %1: at most %3</source>
+        <translation>Erro: Número de bloco &apos;%2&apos; grande demais %1 (no máximo %3)</translation>
+    </message>
+    <message>
+        <source>value &apos;%2&apos; too large %1: at most %3 in magnitude</source>
+        <translation>Erro: Valor &apos;%2&apos; grande demais %1 (no máximo %3 em módulo)</translation>
+    </message>
+    <message>
+        <source>in block n=%1</source>
+        <translation>no bloco n=%1</translation>
+    </message>
+    <message>
+        <source>on line %1</source>
+        <translation>na linha %1</translation>
     </message>
     <message>
         <source>Compilation completed successfully</source>
@@ -353,6 +369,10 @@
     <message>
         <source>%1 compile error(s)</source>
         <translation>Há %1 erro(s) de compilação !</translation>
+    </message>
+    <message>
+        <source>... and %1 more diagnostic(s) not listed</source>
+        <translation>... e mais %1 diagnóstico(s) não listado(s)</translation>
     </message>
 </context>
 <context>

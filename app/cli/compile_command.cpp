@@ -1,10 +1,13 @@
 // trilho-cli compile [--dialect classic|standard] [--json] [--lang en|pt_BR|es] [--machine
 // PROFILE.json] FILE
 #include <QCommandLineParser>
-#include <QJsonDocument>
+#include <cerrno>
+#include <cstring>
+#include <new>
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
+#include "app/cli/diagnostics_text.h"
 #include "app/cli/program_json.h"
 #include "core/compiler.h"
 #include "core/diagnostic_text.h"
@@ -14,18 +17,9 @@
 
 namespace trilho::cli {
 
-QString formatDiagnosticLine(const QString& file, const Diagnostic& d) {
-    QString place = file + QLatin1Char(':') + QString::number(d.line);
-    if (d.column) place += QLatin1Char(':') + QString::number(d.column);
-    const QString severity =
-        d.severity == Severity::Error ? QStringLiteral("error") : QStringLiteral("warning");
-    return QStringLiteral("%1: %2[%3]: %4\n")
-        .arg(place, severity,
-             QString::fromLatin1(d.code().data(), static_cast<qsizetype>(d.code().size())),
-             diagnosticMessage(d));
-}
+namespace {
 
-int compileCommand(const QStringList& args) {
+int compileFile(const QStringList& args) {
     QCommandLineParser parser;
     parser.setApplicationDescription(
         QStringLiteral("Check a .G program and list every diagnostic."));
@@ -56,7 +50,7 @@ int compileCommand(const QStringList& args) {
         return usageError("compile",
                           QStringLiteral("expected exactly one FILE, got %1").arg(files.size()));
     const QString file = files.front();
-    const SourceFile source = readSourceFile(file.toStdString());
+    SourceFile source = readSourceFile(localPath(file));
     if (!source.ok) return usageError("compile", QString::fromStdString(source.error));
     CompileOptions options;
     options.dialect = *dialect;
@@ -65,20 +59,35 @@ int compileCommand(const QStringList& args) {
         if (!load.profile) return usageError("compile", load.error);
         options.machine = load.profile->limits;
     }
+    options.maxDiagnostics = kMaxListedDiagnostics;
     const Program program = compile(source.bytes, options);
+    source = {};  // the text is no longer needed: free it before the output is made
 
+    // Streamed: each chunk goes to stdout as soon as it is made.
+    ChunkedOutput output(streamSink(stdout));
     if (parser.isSet(jsonOpt)) {
-        out(QString::fromUtf8(
-                QJsonDocument(programToJson(file, program)).toJson(QJsonDocument::Compact)) +
-            QLatin1Char('\n'));
+        writeProgramJson(output, file, program);
+        output.append('\n');
     } else {
-        QString text;
-        for (const Diagnostic& d : program.diagnostics)
-            text += formatDiagnosticLine(file, d);
-        text += compileSummary(program.errorCount()) + QLatin1Char('\n');
-        out(text);
+        writeDiagnosticsText(output, file, program);
     }
+    if (!output.flush() || std::fflush(stdout) != 0)
+        return usageError("compile", QStringLiteral("cannot write the output: %1")
+                                         .arg(QString::fromLocal8Bit(std::strerror(errno))));
     return program.ok() ? kOk : kCompileErrors;
+}
+
+}  // namespace
+
+int compileCommand(const QStringList& args) {
+    try {
+        return compileFile(args);
+    } catch (const std::bad_alloc&) {
+        // Whatever the program needed has been released by now; the report itself is small.
+        std::fflush(stdout);
+        return usageError("compile", QStringLiteral("out of memory (the program is too large "
+                                                    "to compile on this computer)"));
+    }
 }
 
 }  // namespace trilho::cli

@@ -1,5 +1,7 @@
 // trilho-cli <command> [options]: the headless face of trilho.
 #include <QCoreApplication>
+#include <cstdio>
+#include <new>
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
@@ -15,7 +17,8 @@ const char* kUsage =
     "run 'trilho-cli <command> --help' for the options of a command\n";
 }
 
-int main(int argc, char* argv[]) {
+static int dispatch(int argc, char* argv[]) {
+    trilho::cli::keepRawArguments(argc, argv);
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("trilho-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(TRILHO_VERSION));
@@ -41,4 +44,14 @@ int main(int argc, char* argv[]) {
     trilho::cli::err(QStringLiteral("trilho-cli: unknown command '%1'\n%2")
                          .arg(command, QString::fromLatin1(kUsage)));
     return trilho::cli::kUsage;
+}
+
+int main(int argc, char* argv[]) {
+    try {
+        return dispatch(argc, argv);
+    } catch (const std::bad_alloc&) {
+        // A command that did not report it itself: still one clear line, never an abort.
+        std::fputs("trilho-cli: out of memory\n", stderr);
+        return trilho::cli::kUsage;
+    }
 }

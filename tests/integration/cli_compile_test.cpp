@@ -45,11 +45,12 @@ TEST_F(CliCompile, ErrorsListedWithPlaceAndCodeExitOne) {
     EXPECT_EQ(r.exit, 1);
     QStringList lines = r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
     ASSERT_EQ(lines.size(), 4);
-    EXPECT_EQ(lines[0],
-              file + QStringLiteral(":1:7: error[invalid-g]: invalid g command on line 10 (g07)"));
+    EXPECT_EQ(
+        lines[0],
+        file + QStringLiteral(":1:7: error[invalid-g]: invalid g command in block n=10 (g07)"));
     EXPECT_EQ(
         lines[1],
-        file + QStringLiteral(":2:7: error[no-motion-mode]: g01 or g00 not defined on line 20"));
+        file + QStringLiteral(":2:7: error[no-motion-mode]: g01 or g00 not defined in block n=20"));
     EXPECT_EQ(
         lines[2],
         file + QStringLiteral(":2: error[missing-m02]: program requires m02 (END) at the end"));

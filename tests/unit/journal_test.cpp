@@ -1,8 +1,16 @@
-// The persistent history: append-only, survives a kill (a torn last line is skipped), CSV.
+// The persistent history: append-only, survives a kill (a torn tail is repaired), batched syncs,
+// rotation, failures reported, streamed reading, CSV.
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
+#include <QBuffer>
 #include <QFile>
+#include <QFileInfo>
 #include <QTemporaryDir>
+#include <cstdio>
+#include <vector>
 
 #include "core/journal.h"
 
@@ -70,6 +78,246 @@ TEST(Journal, UnwritablePathIsAClearError) {
     EXPECT_FALSE(j.open(QStringLiteral("/nonexistent/dir/history.log"), &error));
     EXPECT_TRUE(
         error.startsWith(QStringLiteral("cannot open journal '/nonexistent/dir/history.log'")));
+}
+
+}  // namespace
+}  // namespace trilho
+
+// ---- issue 9: the journal loses nothing but the entry being written ---------------------------
+
+namespace trilho {
+namespace {
+
+std::vector<int> codesOf(const QList<JournalEntry>& entries) {
+    std::vector<int> codes;
+    for (const JournalEntry& e : entries)
+        codes.push_back(e.code);
+    return codes;
+}
+
+JournalEntry status(int i) {
+    return {QDateTime::fromMSecsSinceEpoch(1700000000000LL + i, Qt::UTC), QStringLiteral("status"),
+            i, QStringLiteral("0010: Posicionamento para x=%1.").arg(i)};
+}
+
+TEST(JournalRepair, ATornTailIsEndedBeforeTheNextSessionWrites) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("history.log"));
+    {
+        Journal j;
+        ASSERT_TRUE(j.open(path));
+        ASSERT_TRUE(j.append(entry(1)));
+        ASSERT_TRUE(j.append(entry(2)));
+    }
+    {
+        QFile f(path);  // killed while writing entry 3
+        ASSERT_TRUE(f.open(QIODevice::Append));
+        f.write("2023-11-14T22:13:20.003Z\talarm\t3\tFim de cur");
+    }
+    {
+        Journal j;
+        ASSERT_TRUE(j.open(path));
+        ASSERT_TRUE(j.append(entry(4)));
+        ASSERT_TRUE(j.append(entry(5)));
+    }
+    // Entry 3 was cut inside its text: kept as far as it was written, never glued to 4.
+    const auto read = Journal::read(path);
+    ASSERT_EQ(codesOf(read), (std::vector<int>{1, 2, 3, 4, 5}));
+    EXPECT_EQ(read[2].text, QStringLiteral("Fim de cur"));
+    EXPECT_EQ(read[3].text, entry(4).text.replace(QLatin1Char('\t'), QLatin1Char(' ')));
+}
+
+TEST(JournalRepair, ATornTimestampIsDroppedAndTheNextEntriesKept) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("history.log"));
+    {
+        Journal j;
+        ASSERT_TRUE(j.open(path));
+        ASSERT_TRUE(j.append(entry(1)));
+        ASSERT_TRUE(j.append(entry(2)));
+    }
+    {
+        QFile f(path);
+        ASSERT_TRUE(f.open(QIODevice::Append));
+        f.write("2023-11-14T22:1");  // entry 3, cut in its time stamp
+    }
+    {
+        Journal j;
+        ASSERT_TRUE(j.open(path));
+        ASSERT_TRUE(j.append(entry(4)));
+        ASSERT_TRUE(j.append(entry(5)));
+    }
+    EXPECT_EQ(codesOf(Journal::read(path)), (std::vector<int>{1, 2, 4, 5}));
+}
+
+TEST(JournalBatch, SyncsAtMostEvery100msAndAtOnceForAlarms) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("history.log"));
+    Journal j;
+    ASSERT_TRUE(j.open(path));
+    ASSERT_TRUE(j.append(status(1), 1000));  // nothing synced before: at once
+    EXPECT_EQ(j.syncCount(), 1);
+    ASSERT_TRUE(j.append(status(2), 1010));
+    ASSERT_TRUE(j.append(status(3), 1050));
+    EXPECT_EQ(j.syncCount(), 1);
+    EXPECT_EQ(j.pendingSync(), 2);
+    // Written at once (a killed program keeps them), only the sync waits.
+    EXPECT_EQ(codesOf(Journal::read(path)), (std::vector<int>{1, 2, 3}));
+    EXPECT_TRUE(j.syncIfDue(1099));
+    EXPECT_EQ(j.syncCount(), 1);
+    EXPECT_TRUE(j.syncIfDue(1100));
+    EXPECT_EQ(j.syncCount(), 2);
+    EXPECT_EQ(j.pendingSync(), 0);
+    EXPECT_TRUE(j.syncIfDue(1300));  // nothing pending: no sync
+    EXPECT_EQ(j.syncCount(), 2);
+    ASSERT_TRUE(j.append(status(4), 1110));
+    ASSERT_TRUE(j.append(entry(5), 1120));  // an alarm: synced at once with its batch
+    EXPECT_EQ(j.syncCount(), 3);
+    EXPECT_EQ(j.pendingSync(), 0);
+    ASSERT_TRUE(j.append(status(6), 1130));
+    EXPECT_TRUE(j.sync());
+    EXPECT_EQ(j.syncCount(), 4);
+    // A hundred entries within 100 ms cost one sync.
+    for (int i = 0; i < 100; ++i)
+        ASSERT_TRUE(j.append(status(10 + i), 2000 + i % 50));
+    EXPECT_EQ(j.syncCount(), 5);
+    EXPECT_TRUE(j.syncIfDue(2100));
+    EXPECT_EQ(j.syncCount(), 6);
+}
+
+TEST(JournalRotation, RotatesAtTheSizeLimitKeepingTheLastFiles) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("history.log"));
+    JournalPolicy policy;
+    policy.maxFileBytes = 1000;
+    policy.keepFiles = 3;
+    {
+        Journal j(policy);
+        ASSERT_TRUE(j.open(path));
+        for (int i = 0; i < 200; ++i)
+            ASSERT_TRUE(j.append(status(i), 10 * i));
+        EXPECT_TRUE(j.health().ok);
+    }
+    EXPECT_TRUE(QFile::exists(path));
+    EXPECT_TRUE(QFile::exists(path + QStringLiteral(".1")));
+    EXPECT_TRUE(QFile::exists(path + QStringLiteral(".2")));
+    EXPECT_FALSE(QFile::exists(path + QStringLiteral(".3")));
+    for (const QString& f : {path, path + QStringLiteral(".1"), path + QStringLiteral(".2")})
+        EXPECT_LE(QFileInfo(f).size(), 1000) << f.toStdString();
+    EXPECT_EQ(Journal::files(path),
+              (QStringList{path + QStringLiteral(".2"), path + QStringLiteral(".1"), path}));
+    // Read back across the files, oldest first, contiguous up to the last entry.
+    const auto all = Journal::read(path);
+    ASSERT_GE(all.size(), 20);
+    for (qsizetype i = 0; i < all.size(); ++i)
+        EXPECT_EQ(all[i].code, 200 - all.size() + i);
+    const auto last = Journal::readLast(path, 7);
+    EXPECT_EQ(codesOf(last), (std::vector<int>{193, 194, 195, 196, 197, 198, 199}));
+    // Reopening an oversized file rotates it first.
+    policy.maxFileBytes = 100;
+    Journal j(policy);
+    ASSERT_TRUE(j.open(path));
+    EXPECT_EQ(QFileInfo(path).size(), 0);
+}
+
+TEST(JournalFailures, AFullDiskIsReportedToTheCaller) {
+    Journal j;
+    QString error;
+    ASSERT_TRUE(j.open(QStringLiteral("/dev/full"), &error)) << error.toStdString();
+    EXPECT_TRUE(j.health().ok);
+    EXPECT_FALSE(j.append(entry(1)));
+    EXPECT_FALSE(j.health().ok);
+    EXPECT_TRUE(j.health().error.contains(QStringLiteral("No space left on device")))
+        << j.health().error.toStdString();
+    EXPECT_EQ(j.health().lostEntries, 1);
+    EXPECT_FALSE(j.append(status(2), 0));
+    EXPECT_FALSE(j.append(status(3), 500));
+    EXPECT_EQ(j.health().lostEntries, 3);
+}
+
+TEST(JournalFailures, AReadOnlyDirectoryIsAClearError) {
+    if (geteuid() == 0) GTEST_SKIP() << "root writes everywhere";
+    QTemporaryDir dir;
+    QFile::setPermissions(dir.path(), QFileDevice::ReadOwner | QFileDevice::ExeOwner);
+    Journal j;
+    QString error;
+    EXPECT_FALSE(j.open(dir.filePath(QStringLiteral("history.log")), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("Permission denied"))) << error.toStdString();
+    EXPECT_FALSE(j.health().ok);
+    EXPECT_EQ(j.health().error, error);
+    QFile::setPermissions(dir.path(),
+                          QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
+}
+
+long peakRssKb() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss;
+}
+
+TEST(JournalRead, ALargeJournalIsStreamedAndOnlyTheLastEntriesKept) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("history.log"));
+    {
+        // 48 MB, made a chunk at a time so the test itself stays small.
+        std::FILE* f = std::fopen(QFile::encodeName(path).constData(), "w");
+        ASSERT_NE(f, nullptr);
+        std::string chunk;
+        int code = 0;
+        for (int c = 0; c < 48; ++c) {
+            chunk.clear();
+            while (chunk.size() < 1024 * 1024)
+                chunk += "2023-11-14T22:13:20.007Z\tstatus\t" + std::to_string(code++) +
+                         "\t0010: Posicionamento para x=10 com 20% da velocidade maxima.\n";
+            std::fwrite(chunk.data(), 1, chunk.size(), f);
+        }
+        std::fclose(f);
+        const long before = peakRssKb();
+        const auto last = Journal::readLast(path, 1000);
+        const long grewKb = peakRssKb() - before;
+        ASSERT_EQ(last.size(), 1000);
+        EXPECT_EQ(last.back().code, code - 1);
+        EXPECT_EQ(last.front().code, code - 1000);
+#if !defined(__SANITIZE_ADDRESS__)  // ASan's quarantine keeps freed lines resident
+        EXPECT_LT(grewKb, 16 * 1024) << "reading took " << grewKb << " kB more";
+#else
+        (void)grewKb;
+#endif
+    }
+}
+
+TEST(JournalRead, GarbageAndOverlongLinesAreSkipped) {
+    QByteArray bytes = "garbage\n\t\t\t\n2023-11-14T22:13:20.007Z\talarm\tx\ttext\n";
+    bytes += QByteArray(1 << 20, 'a') + '\n';
+    bytes += "2023-11-14T22:13:20.007Z\talarm\t8\tkept\n";
+    bytes += "2023-11-14T22:13:20.007Z\talarm\t9\ttorn";
+    QBuffer buffer(&bytes);
+    ASSERT_TRUE(buffer.open(QIODevice::ReadOnly));
+    const auto read = Journal::read(buffer, 100);
+    ASSERT_EQ(codesOf(read), std::vector<int>{8});
+    EXPECT_EQ(read[0].text, QStringLiteral("kept"));
+}
+
+TEST(JournalExport, TheWholeHistoryIsExportedAcrossRotatedFiles) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("history.log"));
+    JournalPolicy policy;
+    policy.maxFileBytes = 2000;
+    {
+        Journal j(policy);
+        ASSERT_TRUE(j.open(path));
+        for (int i = 0; i < 50; ++i)
+            ASSERT_TRUE(j.append(status(i), 0));
+    }
+    const QString csv = dir.filePath(QStringLiteral("out.csv"));
+    QString error;
+    ASSERT_TRUE(Journal::exportJournalCsv(path, csv, &error)) << error.toStdString();
+    QFile f(csv);
+    ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+    const QList<QByteArray> rows = f.readAll().split('\n');
+    ASSERT_EQ(rows.size(), 52);  // header, 50 entries, the empty piece after the last CRLF
+    EXPECT_TRUE(rows[1].contains(",\"status\",0,"));
+    EXPECT_TRUE(rows[50].contains(",\"status\",49,"));
 }
 
 }  // namespace

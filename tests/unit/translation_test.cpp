@@ -47,16 +47,52 @@ TEST(TranslationsPtBr, OriginalTexts) {
     Program p = compile("n0020 g90\nn0010 g05\n", {Dialect::Classic, {}});
     ASSERT_EQ(p.diagnostics.size(), 3u);
     EXPECT_EQ(diagnosticMessage(p.diagnostics[0]),
-              QStringLiteral("Erro: Seqüência n errada na linha 10"));
+              QStringLiteral("Erro: Seqüência n errada no bloco n=10"));
     EXPECT_EQ(diagnosticMessage(p.diagnostics[1]),
-              QStringLiteral("Erro: Comando g inválido na linha 10"));
+              QStringLiteral("Erro: Comando g inválido no bloco n=10"));
     EXPECT_EQ(diagnosticMessage(p.diagnostics[2]),
               QStringLiteral("Erro: Programa requer m02 (END) no final"));
     EXPECT_EQ(compileSummary(3), QStringLiteral("Há 3 erro(s) de compilação !"));
     EXPECT_EQ(compileSummary(0), QStringLiteral("Compilação completada com sucesso !"));
     installLanguage(QStringLiteral("en"));
     EXPECT_EQ(diagnosticMessage(p.diagnostics[1]),
-              QStringLiteral("invalid g command on line 10 (g05)"));
+              QStringLiteral("invalid g command in block n=10 (g05)"));
+}
+
+// Issue 9: "on line N" used to name the block number while the prefix gave the file line. A
+// message now says "block n=40" for the block number and "line 6" for the file line.
+TEST(DiagnosticPlace, BlockNumberAndFileLineAreNamedDistinctly) {
+    app();
+    Program p = compile("N10 G0 X1\nG0 X2\n\n\n(c)\nG7\nN40 G7\nM2\n", {Dialect::Standard, {}});
+    ASSERT_EQ(p.diagnostics.size(), 2u);
+    ASSERT_EQ(p.diagnostics[0].line, 6u);
+    ASSERT_EQ(p.diagnostics[1].line, 7u);
+    const struct {
+        const char* lang;
+        const char* line6;
+        const char* block40;
+    } expected[] = {
+        {"en", "invalid g command on line 6 (G7)", "invalid g command in block n=40 (G7)"},
+        {"pt_BR", "Erro: Comando g inválido na linha 6", "Erro: Comando g inválido no bloco n=40"},
+        {"es", "comando g inválido en la línea 6 (G7)",
+         "comando g inválido en el bloque n=40 (G7)"},
+    };
+    for (const auto& e : expected) {
+        ASSERT_TRUE(installLanguage(QString::fromLatin1(e.lang)));
+        EXPECT_EQ(diagnosticMessage(p.diagnostics[0]), QString::fromUtf8(e.line6)) << e.lang;
+        EXPECT_EQ(diagnosticMessage(p.diagnostics[1]), QString::fromUtf8(e.block40)) << e.lang;
+    }
+    installLanguage(QStringLiteral("en"));
+    Program g = compile("N20 M3 X99\nN30 M2\n", {Dialect::Standard, {}});
+    ASSERT_EQ(g.diagnostics.size(), 1u);
+    EXPECT_EQ(diagnosticMessage(g.diagnostics[0]),
+              QStringLiteral("invalid GO TO in block n=20: block n=99 does not exist"));
+    Program f = compile("G1 X1 F0.05\nM2\n", {Dialect::Standard, {}});
+    ASSERT_EQ(f.diagnostics.size(), 1u);
+    EXPECT_EQ(diagnosticMessage(f.diagnostics[0]),
+              QStringLiteral("feed f0.05 out of range on line 1: must be from 0.1 % to 100 %"));
+    EXPECT_EQ(omittedDiagnostics(4002),
+              QStringLiteral("... and 4002 more diagnostic(s) not listed"));
 }
 
 TEST(TranslationsLanguages, UnknownLanguageIsRefused) {
