@@ -219,6 +219,30 @@
         <source>Homing failed: centre switch not found</source>
         <translation>Referenciado fallido: interruptor central no encontrado</translation>
     </message>
+    <message>
+        <source>Soft limit: the platform would have passed the soft limit at x=%1 mm and was stopped before the end switch. Acknowledge, then move it back inside the limits.</source>
+        <translation>Límite de software: la plataforma habría pasado el límite de software en x=%1 mm y se detuvo antes del final de carrera. Reconozca y llévela de vuelta dentro de los límites.</translation>
+    </message>
+    <message>
+        <source>Not in position: the platform did not settle on its target (%1 mm off). Check the payload and the gains, acknowledge, then run again.</source>
+        <translation>Fuera de posición: la plataforma no se asentó en su destino (a %1 mm). Revise la carga y las ganancias, reconozca y ejecute de nuevo.</translation>
+    </message>
+    <message>
+        <source>The program ended with the platform %1 mm from its last target, outside the final-position window.</source>
+        <translation>El programa terminó con la plataforma a %1 mm de su último destino, fuera de la ventana de posición final.</translation>
+    </message>
+    <message>
+        <source>The centre mark corrected the position by %1 mm: counts were lost or the cable slipped.</source>
+        <translation>La marca central corrigió la posición en %1 mm: se perdieron cuentas o el cable patinó.</translation>
+    </message>
+    <message>
+        <source>Motionless loop: the program repeats blocks that neither move nor wait. It is held: press Stop, or Continue to run it again.</source>
+        <translation>Bucle sin movimiento: el programa repite bloques que ni mueven ni esperan. Está retenido: pulse Parar, o Continuar para ejecutarlo de nuevo.</translation>
+    </message>
+    <message>
+        <source>Encoder stalled: the drive ran %1 mm without a single count and was cut. Check the encoder and its cable, acknowledge, then home again.</source>
+        <translation>Encoder detenido: el accionamiento comandó %1 mm sin una sola cuenta y se cortó. Revise el encoder y su cable, reconozca y vuelva a referenciar.</translation>
+    </message>
 </context>
 <context>
     <name>Diagnostic</name>

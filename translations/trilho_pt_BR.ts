@@ -219,6 +219,30 @@
         <source>Homing failed: centre switch not found</source>
         <translation>Falha ao ir para o centro: chave central não encontrada</translation>
     </message>
+    <message>
+        <source>Soft limit: the platform would have passed the soft limit at x=%1 mm and was stopped before the end switch. Acknowledge, then move it back inside the limits.</source>
+        <translation>Limite de software: a plataforma passaria do limite de software em x=%1 mm e foi parada antes do fim de curso. Reconheça e leve-a de volta para dentro dos limites.</translation>
+    </message>
+    <message>
+        <source>Not in position: the platform did not settle on its target (%1 mm off). Check the payload and the gains, acknowledge, then run again.</source>
+        <translation>Fora de posição: a plataforma não se assentou no alvo (a %1 mm). Verifique a carga e os ganhos, reconheça e execute de novo.</translation>
+    </message>
+    <message>
+        <source>The program ended with the platform %1 mm from its last target, outside the final-position window.</source>
+        <translation>O programa terminou com a plataforma a %1 mm do último alvo, fora da janela de posição final.</translation>
+    </message>
+    <message>
+        <source>The centre mark corrected the position by %1 mm: counts were lost or the cable slipped.</source>
+        <translation>A marca central corrigiu a posição em %1 mm: houve perda de contagens ou o cabo escorregou.</translation>
+    </message>
+    <message>
+        <source>Motionless loop: the program repeats blocks that neither move nor wait. It is held: press Stop, or Continue to run it again.</source>
+        <translation>Laço sem movimento: o programa repete blocos que não movem nem esperam. Ele está retido: pressione Parar, ou Continua para executá-lo de novo.</translation>
+    </message>
+    <message>
+        <source>Encoder stalled: the drive ran %1 mm without a single count and was cut. Check the encoder and its cable, acknowledge, then home again.</source>
+        <translation>Encoder parado: o acionamento comandou %1 mm sem uma única contagem e foi cortado. Verifique o encoder e o cabo, reconheça e refaça o referenciamento.</translation>
+    </message>
 </context>
 <context>
     <name>Diagnostic</name>
