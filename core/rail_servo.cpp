@@ -389,11 +389,15 @@ void RailServo::tick(double dtS) {
     if (rightEnd && (heading > 0 || velocity_ > 1.0)) return fault(ServoFault::RightEndSwitch);
     // The following-error limit scales with the commanded speed (LinuxCNC's FERROR and
     // MIN_FERROR): 25 mm at the rapid speed, 2 mm at rest.
-    // A late tick may find the count a period behind the profile (an encoder read that lagged
-    // with the thread): the distance the setpoint moved in the extra time is allowed on top,
-    // decaying at the loop's pace (0.1 s), so a late tick is never a following error.
-    lateAllowanceMm_ *= std::exp(-dtS / 0.1);
-    if (late) lateAllowanceMm_ = std::max(lateAllowanceMm_, std::abs(spVelocity) * (dtS - nominal));
+    // A late tick held the drive: the platform went on at its own speed while the profile
+    // changed, and is off the setpoint by up to that speed times the extra time. That distance
+    // is allowed on top, decaying as the loop brings the platform back (0.3 s), so a late tick
+    // is never a following error.
+    lateAllowanceMm_ *= std::exp(-dtS / 0.3);
+    if (late)
+        lateAllowanceMm_ =
+            std::max(lateAllowanceMm_,
+                     std::max(std::abs(spVelocity), std::abs(velocity_)) * (dtS - nominal));
     const double ferror = std::max(profile_.loop.minFollowingErrorMm,
                                    profile_.loop.followingErrorLimitMm * std::abs(spVelocity) /
                                        profile_.motion.rapidSpeedMmS) +
@@ -462,9 +466,13 @@ void RailServo::tick(double dtS) {
             } else {
                 settledFor_ = settledErrorSum_ = 0.0;
             }
-            unsettledFor_ += dtS;
+            // A late tick disturbs the settling through no fault of the loop: it starts afresh.
+            unsettledFor_ = late ? 0.0 : unsettledFor_ + dtS;
+            // The mean may sit half a count beyond the window: the encoder's own resolution,
+            // below which Coulomb friction eats the loop's fraction-of-a-code corrections.
             if (settledFor_ >= profile_.loop.inPositionTimeS &&
-                std::abs(settledErrorSum_ / settledFor_) <= window + 1e-9) {
+                std::abs(settledErrorSum_ / settledFor_) <=
+                    window + 0.5 / profile_.plant.countsPerMm + 1e-9) {
                 s.inPosition = true;
                 s.mode = ServoMode::Hold;
             } else if (settledFor_ >= 2.0 * profile_.loop.inPositionTimeS) {
