@@ -173,9 +173,25 @@ void ServoWorker::run() {
             apply(cmd);
         if (tickHook_) tickHook_();
 
-        controller_.step(dt);
+        // A simulated plant first runs the real elapsed time on the drive the last tick held,
+        // as the machine does while the thread sleeps (late or not); then the controller reads
+        // it. (Stepping it after the controller made a late tick's motion reach the next tick
+        // as a count jump no motion could make: issue 8.)
         if (plantStep_) plantStep_(dt);
-        controller_.drainEvents([this](const ControllerEvent& e) { events_.push(e); });
+        controller_.step(dt);
+        // Events to the screens: a full ring drops status lines (counted), never an alarm,
+        // which waits in a side queue for the next tick.
+        while (alarmBacklogCount_ > 0 && events_.push(alarmBacklog_[alarmBacklogHead_])) {
+            alarmBacklogHead_ = (alarmBacklogHead_ + 1) % alarmBacklog_.size();
+            --alarmBacklogCount_;
+        }
+        controller_.drainEvents([this](const ControllerEvent& e) {
+            const bool alarm = e.kind == EventKind::AlarmRaised;
+            if (alarm && alarmBacklogCount_ > 0) return keepAlarm(e);
+            if (events_.push(e)) return;
+            if (alarm) return keepAlarm(e);
+            droppedEvents_.fetch_add(1, std::memory_order_relaxed);
+        });
         const ControllerStatus& s = controller_.status();
         if (tracing_.load(std::memory_order_relaxed)) {
             trace_.push({s.timeS, s.blockN, s.servo.setpointMm, s.servo.positionMm, s.servo.errorMm,
@@ -183,6 +199,7 @@ void ServoWorker::run() {
         }
         status_.store(s);
 
+        injectLateTick();
         const std::int64_t end = monotonicNs();
         heartbeatNs_.store(end, std::memory_order_relaxed);
         timing_.loopBody.add(end - wake);
@@ -193,6 +210,37 @@ void ServoWorker::run() {
         }
     }
     io_.writeDrive(kDacZero);
+}
+
+void ServoWorker::keepAlarm(const ControllerEvent& e) {
+    if (alarmBacklogCount_ == alarmBacklog_.size()) {
+        droppedEvents_.fetch_add(1, std::memory_order_relaxed);  // 64 alarms unread: the oldest
+        alarmBacklogHead_ = (alarmBacklogHead_ + 1) % alarmBacklog_.size();
+        --alarmBacklogCount_;
+    }
+    alarmBacklog_[(alarmBacklogHead_ + alarmBacklogCount_) % alarmBacklog_.size()] = e;
+    ++alarmBacklogCount_;
+}
+
+void ServoWorker::setLateTicks(double maxS, double rate, std::uint64_t seed) {
+    lateTickMaxNs_.store(static_cast<std::int64_t>(std::max(0.0, maxS) * 1e9));
+    lateTickRate_.store(std::clamp(rate, 0.0, 1.0));
+    lateTickSeed_.store(seed);
+}
+
+void ServoWorker::injectLateTick() {
+    // The simulation panel's late ticks: the servo thread really sleeps, so the screens, the
+    // plant and the watchdog see what a busy PC does to the loop.
+    const std::int64_t maxNs = lateTickMaxNs_.load(std::memory_order_relaxed);
+    if (maxNs <= 0) return;
+    const std::uint64_t seed = lateTickSeed_.load(std::memory_order_relaxed);
+    if (seed != lateTickSeedUsed_) lateTickRng_.seed(seed), lateTickSeedUsed_ = seed;
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    if (u(lateTickRng_) >= lateTickRate_.load(std::memory_order_relaxed)) return;
+    const timespec ts = toTimespec(
+        monotonicNs() + static_cast<std::int64_t>(u(lateTickRng_) * static_cast<double>(maxNs)));
+    while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR) {
+    }
 }
 
 void ServoWorker::watchdog() {

@@ -4,11 +4,13 @@
 // publishes a consistent snapshot (seqlock) and the controller's events, and takes commands
 // through a queue whose sequence numbers it echoes. Stop and E-stop are flags that bypass the
 // queue. A watchdog thread drives the output to 0 V and raises an alarm if the loop stalls.
+#include <array>
 #include <atomic>
 #include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <random>
 #include <thread>
 
 #include "core/event_ring.h"
@@ -106,11 +108,18 @@ class ServoWorker {
     void setTickHook(std::function<void()> hook) { tickHook_ = std::move(hook); }
     double periodS() const { return periodS_; }
     bool watchdogTripped() const { return watchdogTrips_.load() > 0; }
+    /// Status lines the screens did not read in time (an alarm is never dropped).
+    std::uint64_t droppedEvents() const { return droppedEvents_.load(); }
+    /// Late ticks on purpose (the simulation panel): after a tick, with probability rate, the
+    /// servo thread sleeps a uniform 0..maxS more. 0 = off. Thread-safe.
+    void setLateTicks(double maxS, double rate, std::uint64_t seed = 1);
 
   private:
     void run();
     void watchdog();
     void apply(const Command& c);
+    void keepAlarm(const ControllerEvent& e);
+    void injectLateTick();
 
     MachineController& controller_;
     RailIo& io_;
@@ -133,6 +142,14 @@ class ServoWorker {
     SpscRing<TraceRow, 65536> trace_;
     WorkerTiming timing_;
     std::function<void()> tickHook_;
+    std::array<ControllerEvent, 64> alarmBacklog_{};  ///< servo thread only
+    std::size_t alarmBacklogHead_ = 0, alarmBacklogCount_ = 0;
+    std::atomic<std::uint64_t> droppedEvents_{0};
+    std::atomic<std::int64_t> lateTickMaxNs_{0};
+    std::atomic<double> lateTickRate_{0.0};
+    std::atomic<std::uint64_t> lateTickSeed_{1};
+    std::uint64_t lateTickSeedUsed_ = 0;
+    std::mt19937_64 lateTickRng_{1};
 };
 
 /// Current CLOCK_MONOTONIC time, ns.

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <thread>
 
+#include "core/compiler.h"
 #include "core/servo_worker.h"
 #include "hal/sim/sim_rail.h"
 
@@ -129,6 +130,47 @@ TEST(SeqLock, ReaderNeverSeesAHalfWrittenValue) {
     stop = true;
     writer.join();
     EXPECT_GE(changes, 5000u);  // the reads really raced with the writes
+}
+
+TEST(ServoWorker, AFullEventRingDropsStatusLinesNeverAnAlarm) {
+    // Screens that do not read (a frozen GUI): 6000 status blocks fill the 4096-event ring,
+    // then an E-stop. The alarm must be there when the screens come back.
+    Rig rig;
+    std::string text = "G90\n";
+    for (int i = 0; i < 6000; ++i)
+        text += i % 2 ? "G90\n" : "G91\n";
+    text += "G90\nG4 X30\nM2\n";
+    CompileOptions o;
+    auto program = std::make_shared<Program>(compile(text, o));
+    ASSERT_TRUE(program->ok());
+    rig.worker.start(false);
+    rig.worker.send(CommandKind::SelectAutomatic);
+    ASSERT_TRUE(eventually([&] { return rig.worker.snapshot().homed; }, std::chrono::seconds(20)));
+    rig.worker.loadProgram(program);
+    rig.worker.send(CommandKind::Start);
+    ASSERT_TRUE(eventually([&] { return rig.worker.snapshot().state == ControllerState::Waiting; },
+                           std::chrono::seconds(20)));
+    rig.worker.requestEmergencyStop();
+    ASSERT_TRUE(eventually([&] { return rig.worker.snapshot().state == ControllerState::EStop; }));
+    EXPECT_GT(rig.worker.droppedEvents(), 0u);  // the ring really was full
+    bool sawAlarm = false;
+    ASSERT_TRUE(eventually([&] {
+        rig.worker.drainEvents([&](const ControllerEvent& e) {
+            sawAlarm |= e.kind == EventKind::AlarmRaised && e.alarm == AlarmCode::EmergencyStop;
+        });
+        return sawAlarm;
+    }));
+    rig.worker.stopThread();
+}
+
+TEST(ServoWorker, LateTicksOnPurposeAreCountedInTheStatus) {
+    Rig rig;
+    rig.worker.setLateTicks(0.008, 0.2, 7);
+    rig.worker.start(false);
+    ASSERT_TRUE(eventually([&] { return rig.worker.snapshot().servo.overruns >= 5; }));
+    EXPECT_GT(rig.worker.snapshot().servo.worstPeriodS, 0.0025);
+    EXPECT_EQ(rig.worker.snapshot().state, ControllerState::Manual);  // no watchdog alarm
+    rig.worker.stopThread();
 }
 
 }  // namespace
