@@ -1,6 +1,7 @@
 // trilho-cli run [--dialect ...] [--lang ...] [--virtual-time] [--mass-factor F]
 //   [--continue-after SECONDS] [--max-seconds SECONDS] [--trace FILE.csv] [--json]
-//   [--machine PROFILE.json] FILE
+//   [--machine PROFILE.json] [--tick-jitter MAX_MS] [--jitter-rate P] [--seed N]
+//   [--fault NAME[@T][=V]]... FILE
 // Compiles (errors: exit 1, nothing moves), homes, and runs the program on the simulated rail.
 #include <QCommandLineParser>
 #include <QJsonArray>
@@ -19,6 +20,7 @@
 #include "core/event_text.h"
 #include "core/servo_worker.h"
 #include "core/source_file.h"
+#include "hal/sim/fault_schedule.h"
 #include "hal/sim/sim_session.h"
 #include "translations/i18n.h"
 
@@ -35,6 +37,10 @@ struct RunOptions {
     double maxSeconds = -1.0;      ///< < 0: unbounded (real time) / 3600 s (virtual time)
     bool json = false;
     QString tracePath;
+    double tickJitterMs = 0.0;  ///< late ticks: each period lengthened by up to this
+    double jitterRate = 0.01;   ///< with this probability
+    std::uint64_t seed = 1;
+    std::vector<ScheduledFault> faults;  ///< switched on after homing, at their @T
 };
 
 /// Collects what the run said, for the text and JSON reports.
@@ -111,38 +117,66 @@ struct Supervisor {
 
 Outcome runVirtual(const MachineProfile& profile, std::shared_ptr<const Program> program,
                    const RunOptions& options, Report& report, TraceFile& trace,
-                   ControllerStatus& last) {
-    SimSession session(profile);
+                   ControllerStatus& last, double& plantMm) {
+    SimSession session(profile, options.seed);
     MachineController& c = session.controller();
+    SimRail& rail = session.rail();
+    FaultInjection faults;
+    // Late ticks and faults start with the program, after homing (homing is the reference).
     c.selectAutomatic();
     c.loadProgram(std::move(program));
     c.start(0);  // after homing
     Supervisor sup{options};
-    const double dt = profile.loop.samplePeriodS;
+    std::vector<ScheduledFault> schedule = options.faults;
+    double startedAt = -1.0;
     Outcome outcome = Outcome::Finished;
-    for (long k = 0;; ++k) {
-        session.step(dt);
+    while (true) {
+        session.step();
         c.drainEvents([&](const ControllerEvent& e) { report.add(e); });
         const ControllerStatus& s = c.status();
+        if (startedAt < 0 && s.state == ControllerState::Running) {
+            startedAt = session.elapsedS();
+            faults.tickJitterMaxS = options.tickJitterMs / 1000.0;
+            faults.tickJitterRate = options.jitterRate;
+            rail.setFaults(faults);
+        }
+        if (startedAt >= 0 &&
+            applyDueFaults(schedule, session.elapsedS() - startedAt, rail.state().timeS, faults))
+            rail.setFaults(faults);
         if (trace.active())
             trace.row({s.timeS, s.blockN, s.servo.setpointMm, s.servo.positionMm, s.servo.errorMm,
                        s.servo.velocityMmS, s.servo.loop.code});
         bool press = false;
-        if (sup.check(s, static_cast<double>(k + 1) * dt, outcome, press)) break;
+        if (sup.check(s, s.timeS, outcome, press)) break;
         if (press) c.pressContinue();
     }
+    if (outcome == Outcome::Alarm) {
+        // The drive is off; the platform coasts and brakes on. Follow it to rest (10 s at most)
+        // so the report says where it really stopped.
+        const double end = session.elapsedS() + 10.0;
+        double still = 0.0;
+        while (session.elapsedS() < end && still < 0.1) {
+            session.step();
+            c.drainEvents([&](const ControllerEvent& e) { report.add(e); });
+            still = std::abs(rail.state().velocityMmS) < 1e-6 ? still + 0.001 : 0.0;
+        }
+    }
+    plantMm = rail.state().positionMm;
     last = c.status();
     return outcome;
 }
 
 Outcome runRealTime(const MachineProfile& profile, std::shared_ptr<const Program> program,
                     const RunOptions& options, Report& report, TraceFile& trace,
-                    ControllerStatus& last) {
+                    ControllerStatus& last, double& plantMm) {
     SimRail rail(profile.plant);
     rail.placeAt(0.0);
     MachineController controller(profile, rail);
     ServoWorker worker(controller, rail, [&rail](double dt) { rail.step(dt); });
     worker.setTracing(trace.active());
+    // Late ticks for real: the servo thread sleeps longer now and then (faults need the plant's
+    // own thread and are for virtual time).
+    worker.setLateTicks(options.tickJitterMs / 1000.0, options.jitterRate, options.seed);
     worker.start();
     worker.send(CommandKind::SelectAutomatic);
     worker.loadProgram(std::move(program));
@@ -165,6 +199,7 @@ Outcome runRealTime(const MachineProfile& profile, std::shared_ptr<const Program
     worker.drainEvents([&](const ControllerEvent& e) { report.add(e); });
     worker.drainTrace([&](const TraceRow& r) { trace.row(r); });
     last = worker.snapshot();
+    plantMm = rail.state().positionMm;
     return outcome;
 }
 
@@ -203,8 +238,24 @@ int runCommand(const QStringList& args) {
     const QCommandLineOption machineOpt(QStringLiteral("machine"),
                                         QStringLiteral("Machine profile (default: the rail)."),
                                         QStringLiteral("PROFILE.json"));
+    const QCommandLineOption jitterOpt(
+        QStringLiteral("tick-jitter"),
+        QStringLiteral("Late servo ticks: lengthen periods by up to MAX_MS (0-40)."),
+        QStringLiteral("MAX_MS"));
+    const QCommandLineOption rateOpt(
+        QStringLiteral("jitter-rate"),
+        QStringLiteral("Probability that a period is late (default 0.01)."), QStringLiteral("P"));
+    const QCommandLineOption seedOpt(QStringLiteral("seed"),
+                                     QStringLiteral("Seed of the simulation's randomness."),
+                                     QStringLiteral("N"));
+    const QCommandLineOption faultOpt(
+        QStringLiteral("fault"),
+        QStringLiteral("Inject a fault T s after the program starts: stuck-encoder, "
+                       "amplifier-trip, lost-counts=HZ, cable-slip=FRACTION, switch-noise=P, "
+                       "torn-reads (repeatable; virtual time)."),
+        QStringLiteral("NAME[@T][=V]"));
     parser.addOptions({dialectOpt, langOpt, virtualOpt, massOpt, continueOpt, maxOpt, traceOpt,
-                       jsonOpt, machineOpt});
+                       jsonOpt, machineOpt, jitterOpt, rateOpt, seedOpt, faultOpt});
     parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("The program to run."));
     auto usage = [](const QString& message) { return usageError("run", message); };
     if (auto done = parseArguments(parser, args, "run")) return *done;
@@ -236,6 +287,29 @@ int runCommand(const QStringList& args) {
     if (!number(maxOpt, 0.0, 1e7, options.maxSeconds))
         return usage(QStringLiteral("--max-seconds must be a number of seconds >= 0 (got '%1')")
                          .arg(parser.value(maxOpt)));
+    if (!number(jitterOpt, 0.0, 40.0, options.tickJitterMs))
+        return usage(QStringLiteral("--tick-jitter must be milliseconds from 0 to 40 (the "
+                                    "watchdog stops the loop at 50) (got '%1')")
+                         .arg(parser.value(jitterOpt)));
+    if (!number(rateOpt, 0.0, 1.0, options.jitterRate))
+        return usage(QStringLiteral("--jitter-rate must be a probability from 0 to 1 (got '%1')")
+                         .arg(parser.value(rateOpt)));
+    if (parser.isSet(seedOpt)) {
+        bool ok = false;
+        options.seed = parser.value(seedOpt).toULongLong(&ok);
+        if (!ok)
+            return usage(QStringLiteral("--seed must be a whole number >= 0 (got '%1')")
+                             .arg(parser.value(seedOpt)));
+    }
+    for (const QString& f : parser.values(faultOpt)) {
+        const FaultParse parsed = parseFault(f.toStdString());
+        if (!parsed.fault) return usage(QString::fromStdString(parsed.error));
+        options.faults.push_back(*parsed.fault);
+    }
+    if (!options.faults.empty() && !options.virtualTime)
+        return usage(
+            QStringLiteral("--fault needs --virtual-time (the simulation panel of the "
+                           "screens injects faults in real time)"));
     if (options.virtualTime && options.maxSeconds < 0) options.maxSeconds = 3600.0;
     const QStringList files = parser.positionalArguments();
     if (files.size() != 1)
@@ -299,9 +373,10 @@ int runCommand(const QStringList& args) {
     if (!trace.open(options.tracePath, &traceError)) return usage(traceError);
 
     ControllerStatus last;
-    const Outcome outcome = options.virtualTime
-                                ? runVirtual(profile, program, options, report, trace, last)
-                                : runRealTime(profile, program, options, report, trace, last);
+    double plantMm = 0.0;
+    const Outcome outcome =
+        options.virtualTime ? runVirtual(profile, program, options, report, trace, last, plantMm)
+                            : runRealTime(profile, program, options, report, trace, last, plantMm);
     if (!trace.close())
         return usage(QStringLiteral("cannot write trace '%1'").arg(options.tracePath));
 
@@ -313,12 +388,19 @@ int runCommand(const QStringList& args) {
         o[QStringLiteral("alarms")] = report.alarms;
         o[QStringLiteral("final_position_mm")] = std::round(finalMm * 1e4) / 1e4;
         o[QStringLiteral("duration_s")] = std::round(last.timeS * 1e4) / 1e4;
+        o[QStringLiteral("plant_position_mm")] = std::round(plantMm * 1e4) / 1e4;
+        o[QStringLiteral("late_ticks")] = static_cast<double>(last.servo.overruns);
+        o[QStringLiteral("worst_period_ms")] = std::round(last.servo.worstPeriodS * 1e6) / 1e3;
         out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
     } else {
         QString text = report.history.join(QLatin1Char('\n')) + QLatin1Char('\n');
         text += QStringLiteral("final position: %1 mm (%2 s)\n")
                     .arg(finalMm, 0, 'f', 3)
                     .arg(last.timeS, 0, 'f', 3);
+        if (last.servo.overruns > 0)
+            text += QStringLiteral("late ticks: %1, the longest period %2 ms\n")
+                        .arg(last.servo.overruns)
+                        .arg(last.servo.worstPeriodS * 1e3, 0, 'f', 1);
         if (outcome == Outcome::TimeLimit)
             text += QStringLiteral("stopped by --max-seconds %1\n").arg(options.maxSeconds);
         out(text);

@@ -1,6 +1,8 @@
 // trilho-cli run: exit statuses, history, JSON and trace, in virtual time.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -146,6 +148,64 @@ TEST_F(CliRun, BadOptionsExitTwo) {
         Result r = run(QStringList{QStringLiteral("--virtual-time")} + args);
         EXPECT_EQ(r.exit, 2) << args.join(QLatin1Char(' ')).toStdString();
         EXPECT_EQ(r.err.count(QLatin1Char('\n')), 1) << r.err.toStdString();
+    }
+}
+
+// Issue 8: faults and late ticks for people.
+TEST_F(CliRun, AStuckEncoderIsAnAlarmAndThePlantIsFollowedToRest) {
+    Result r =
+        run({QStringLiteral("--virtual-time"), QStringLiteral("--json"), QStringLiteral("--fault"),
+             QStringLiteral("stuck-encoder@0.5"), program("ciclo_continuo.G")});
+    EXPECT_EQ(r.exit, 3) << r.err.toStdString();
+    const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+    ASSERT_FALSE(o.isEmpty()) << r.out.toStdString();
+    EXPECT_EQ(
+        o[QStringLiteral("alarms")].toArray().at(0).toObject()[QStringLiteral("code")].toInt(), 16);
+    // The controller's count froze; the platform went on, braked and stopped elsewhere.
+    const double counted = o[QStringLiteral("final_position_mm")].toDouble();
+    const double plant = o[QStringLiteral("plant_position_mm")].toDouble();
+    EXPECT_GT(std::abs(plant - counted), 5.0);
+}
+
+TEST_F(CliRun, LateTicksAreInjectedReproduciblyAndReported) {
+    const QStringList args{QStringLiteral("--virtual-time"), QStringLiteral("--json"),
+                           QStringLiteral("--tick-jitter"),  QStringLiteral("20"),
+                           QStringLiteral("--jitter-rate"),  QStringLiteral("0.05"),
+                           QStringLiteral("--seed"),         QStringLiteral("7"),
+                           program("passo_incremental.G")};
+    Result a = run(args), b = run(args);
+    EXPECT_EQ(a.exit, 0) << a.err.toStdString() << a.out.toStdString();
+    EXPECT_EQ(a.out, b.out);  // the same seed, the same run
+    const QJsonObject o = QJsonDocument::fromJson(a.out.toUtf8()).object();
+    EXPECT_GT(o[QStringLiteral("late_ticks")].toDouble(), 100.0);
+    EXPECT_GT(o[QStringLiteral("worst_period_ms")].toDouble(), 10.0);
+    EXPECT_LE(o[QStringLiteral("worst_period_ms")].toDouble(), 21.0);
+    Result c = run({QStringLiteral("--virtual-time"), QStringLiteral("--json"),
+                    QStringLiteral("--tick-jitter"), QStringLiteral("20"),
+                    QStringLiteral("--jitter-rate"), QStringLiteral("0.05"),
+                    QStringLiteral("--seed"), QStringLiteral("8"), program("passo_incremental.G")});
+    EXPECT_NE(a.out, c.out);
+}
+
+TEST_F(CliRun, BadFaultsAndJitterNameWhatIsWrong) {
+    struct Case {
+        QStringList args;
+        const char* says;
+    };
+    const Case cases[] = {
+        {{QStringLiteral("--fault"), QStringLiteral("melted")}, "unknown fault 'melted'"},
+        {{QStringLiteral("--fault"), QStringLiteral("lost-counts")}, "needs =HZ"},
+        {{QStringLiteral("--fault"), QStringLiteral("torn-reads=3")}, "takes no value"},
+        {{QStringLiteral("--fault"), QStringLiteral("stuck-encoder@-1")}, "@T must be seconds"},
+        {{QStringLiteral("--tick-jitter"), QStringLiteral("60")}, "--tick-jitter must be"},
+        {{QStringLiteral("--jitter-rate"), QStringLiteral("2")}, "--jitter-rate must be"},
+        {{QStringLiteral("--seed"), QStringLiteral("x")}, "--seed must be"},
+    };
+    for (const Case& c : cases) {
+        Result r = run(QStringList{QStringLiteral("--virtual-time")} + c.args +
+                       QStringList{program("exemplo_documento.G")});
+        EXPECT_EQ(r.exit, 2) << c.says;
+        EXPECT_TRUE(r.err.contains(QString::fromLatin1(c.says))) << r.err.toStdString();
     }
 }
 
