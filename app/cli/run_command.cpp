@@ -99,7 +99,7 @@ struct Supervisor {
             return outcome = Outcome::Finished, true;
         if (s.state == ControllerState::Alarm || s.state == ControllerState::EStop)
             return outcome = Outcome::Alarm, true;
-        if (options.maxSeconds >= 0 && elapsedS >= options.maxSeconds)
+        if (options.maxSeconds >= 0 && elapsedS >= options.maxSeconds - 1e-9)
             return outcome = Outcome::TimeLimit, true;
         if (s.state == ControllerState::Paused && s.pause == PauseReason::M00) {
             if (pausedSince < 0) pausedSince = elapsedS;
