@@ -95,6 +95,13 @@ class ServoWorker {
         while (events_.pop(e))
             f(e);
     }
+    /// At most `budget` events (decremented), so a reader stays responsive under a flood.
+    template <typename F>
+    void drainEventsUpTo(int& budget, F&& f) {
+        ControllerEvent e;
+        while (budget > 0 && events_.pop(e))
+            --budget, f(e);
+    }
     template <typename F>
     void drainTrace(F&& f) {
         TraceRow r;

@@ -563,6 +563,10 @@
 <context>
     <name>trilho::ui::MainWindow</name>
     <message>
+        <source>The history could not be written: %1</source>
+        <translation>No se pudo escribir el historial: %1</translation>
+    </message>
+    <message>
         <source>Didactic D.N.C. system for the automatic rail</source>
         <translation>Sistema D.N.C. didáctico para riel automático</translation>
     </message>
@@ -667,6 +671,10 @@
         <translation>Riel</translation>
     </message>
     <message>
+        <source>Simulation</source>
+        <translation>Simulación</translation>
+    </message>
+    <message>
         <source>E-STOP (Esc)</source>
         <translation>EMERGENCIA (Esc)</translation>
     </message>
@@ -729,6 +737,34 @@
     <message>
         <source>Emergency stop</source>
         <translation>Parada de emergencia</translation>
+    </message>
+    <message>
+        <source>Late ticks: %1 (longest %2 ms)</source>
+        <translation>Ciclos atrasados: %1 (mayor %2 ms)</translation>
+    </message>
+    <message>
+        <source>%1 status lines not shown</source>
+        <translation>%1 líneas de estado no mostradas</translation>
+    </message>
+    <message>
+        <source>Emergency stop: clear the cause, then Reset E-stop.</source>
+        <translation>Parada de emergencia: elimine la causa y luego Rearme la emergencia.</translation>
+    </message>
+    <message>
+        <source>Alarm: read it in Alarms, then Acknowledge. Execute then homes the rail first if its position was lost.</source>
+        <translation>Alarma: léala en Alarmas y Reconozca. Ejecutar entonces referencia el riel primero si se perdió la posición.</translation>
+    </message>
+    <message>
+        <source>Alarm: read it in Alarms, then Acknowledge.</source>
+        <translation>Alarma: léala en Alarmas y Reconozca.</translation>
+    </message>
+    <message>
+        <source>The rail&apos;s position is not known: Execute (or Automatic) homes it first.</source>
+        <translation>La posición del riel no se conoce: Ejecutar (o Automático) la referencia primero.</translation>
+    </message>
+    <message>
+        <source>Held: Resume goes on, Stop ends the program.</source>
+        <translation>Retenido: Reanudar continúa, Parar termina el programa.</translation>
     </message>
     <message>
         <source>Unsaved program</source>
@@ -833,6 +869,49 @@
     <message>
         <source>E&amp;xit</source>
         <translation>Sa&amp;lir</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::SimulationPanel</name>
+    <message>
+        <source>Faults of the simulated rail, for teaching and rehearsal. They act at once; Clear all puts the rail right (acknowledge any alarm after).</source>
+        <translation>Fallas del riel simulado, para enseñanza y ensayo. Actúan al instante; Borrar todo restablece el riel (reconozca las alarmas después).</translation>
+    </message>
+    <message>
+        <source>Stuck encoder</source>
+        <translation>Encoder trabado</translation>
+    </message>
+    <message>
+        <source>Amplifier trip</source>
+        <translation>Disparo del amplificador</translation>
+    </message>
+    <message>
+        <source>Torn counter reads</source>
+        <translation>Lecturas partidas del contador</translation>
+    </message>
+    <message>
+        <source>Lost counts above (counts/s, 0 = off):</source>
+        <translation>Pérdida de cuentas sobre (cuentas/s, 0 = no):</translation>
+    </message>
+    <message>
+        <source>Cable slip (fraction):</source>
+        <translation>Deslizamiento del cable (fracción):</translation>
+    </message>
+    <message>
+        <source>Switch noise (probability per read):</source>
+        <translation>Ruido en los interruptores (probabilidad por lectura):</translation>
+    </message>
+    <message>
+        <source>Late servo ticks, up to (ms):</source>
+        <translation>Ciclos del servo atrasados, hasta (ms):</translation>
+    </message>
+    <message>
+        <source>Late tick probability:</source>
+        <translation>Probabilidad de atraso:</translation>
+    </message>
+    <message>
+        <source>Clear all</source>
+        <translation>Borrar todo</translation>
     </message>
 </context>
 <context>

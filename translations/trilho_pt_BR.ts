@@ -563,6 +563,10 @@
 <context>
     <name>trilho::ui::MainWindow</name>
     <message>
+        <source>The history could not be written: %1</source>
+        <translation>O histórico não pôde ser gravado: %1</translation>
+    </message>
+    <message>
         <source>Didactic D.N.C. system for the automatic rail</source>
         <translation>Sistema D.N.C. didático para trilho automático</translation>
     </message>
@@ -667,6 +671,10 @@
         <translation>Trilho</translation>
     </message>
     <message>
+        <source>Simulation</source>
+        <translation>Simulação</translation>
+    </message>
+    <message>
         <source>E-STOP (Esc)</source>
         <translation>EMERGÊNCIA (Esc)</translation>
     </message>
@@ -729,6 +737,34 @@
     <message>
         <source>Emergency stop</source>
         <translation>Parada de emergência</translation>
+    </message>
+    <message>
+        <source>Late ticks: %1 (longest %2 ms)</source>
+        <translation>Ciclos atrasados: %1 (maior %2 ms)</translation>
+    </message>
+    <message>
+        <source>%1 status lines not shown</source>
+        <translation>%1 linhas de status não mostradas</translation>
+    </message>
+    <message>
+        <source>Emergency stop: clear the cause, then Reset E-stop.</source>
+        <translation>Emergência: elimine a causa e então Rearme a emergência.</translation>
+    </message>
+    <message>
+        <source>Alarm: read it in Alarms, then Acknowledge. Execute then homes the rail first if its position was lost.</source>
+        <translation>Alarme: leia-o em Alarmes e Reconheça. Executar então faz o referenciamento antes, se a posição foi perdida.</translation>
+    </message>
+    <message>
+        <source>Alarm: read it in Alarms, then Acknowledge.</source>
+        <translation>Alarme: leia-o em Alarmes e Reconheça.</translation>
+    </message>
+    <message>
+        <source>The rail&apos;s position is not known: Execute (or Automatic) homes it first.</source>
+        <translation>A posição do trilho não é conhecida: Executar (ou Automático) faz o referenciamento antes.</translation>
+    </message>
+    <message>
+        <source>Held: Resume goes on, Stop ends the program.</source>
+        <translation>Retido: Retomar continua, Parar encerra o programa.</translation>
     </message>
     <message>
         <source>Unsaved program</source>
@@ -833,6 +869,49 @@
     <message>
         <source>E&amp;xit</source>
         <translation>Sai&amp;r</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::SimulationPanel</name>
+    <message>
+        <source>Faults of the simulated rail, for teaching and rehearsal. They act at once; Clear all puts the rail right (acknowledge any alarm after).</source>
+        <translation>Falhas do trilho simulado, para ensino e treino. Agem na hora; Limpar tudo restaura o trilho (reconheça os alarmes depois).</translation>
+    </message>
+    <message>
+        <source>Stuck encoder</source>
+        <translation>Encoder travado</translation>
+    </message>
+    <message>
+        <source>Amplifier trip</source>
+        <translation>Desarme do amplificador</translation>
+    </message>
+    <message>
+        <source>Torn counter reads</source>
+        <translation>Leituras partidas do contador</translation>
+    </message>
+    <message>
+        <source>Lost counts above (counts/s, 0 = off):</source>
+        <translation>Perda de contagens acima de (contagens/s, 0 = não):</translation>
+    </message>
+    <message>
+        <source>Cable slip (fraction):</source>
+        <translation>Escorregamento do cabo (fração):</translation>
+    </message>
+    <message>
+        <source>Switch noise (probability per read):</source>
+        <translation>Ruído nas chaves (probabilidade por leitura):</translation>
+    </message>
+    <message>
+        <source>Late servo ticks, up to (ms):</source>
+        <translation>Ciclos do servo atrasados, até (ms):</translation>
+    </message>
+    <message>
+        <source>Late tick probability:</source>
+        <translation>Probabilidade de atraso:</translation>
+    </message>
+    <message>
+        <source>Clear all</source>
+        <translation>Limpar tudo</translation>
     </message>
 </context>
 <context>

@@ -147,6 +147,9 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
         v->setNotation(QDoubleValidator::StandardNotation);
         gains_[i]->setValidator(v);
         gains_[i]->setAlignment(Qt::AlignRight);
+        // Typed into only on purpose: a click, never the focus chain (Continue greying out
+        // used to hand the focus, and the next keys, to the Proportional box).
+        gains_[i]->setFocusPolicy(Qt::ClickFocus);
         c->addWidget(gainLabels_[i], i, 0);
         c->addWidget(gains_[i], i, 1);
         connect(gains_[i], &QLineEdit::editingFinished, this, [this, i] {

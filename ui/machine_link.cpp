@@ -12,8 +12,21 @@ MachineLink::MachineLink(const MachineProfile& profile, QObject* parent)
     rail_->placeAt(0.0);
     controller_ = std::make_unique<MachineController>(profile_, *rail_);
     SimRail* rail = rail_.get();
-    worker_ =
-        std::make_unique<ServoWorker>(*controller_, *rail_, [rail](double dt) { rail->step(dt); });
+    faultHandoff_.store(faults_);
+    worker_ = std::make_unique<ServoWorker>(*controller_, *rail_, [this, rail](double dt) {
+        // Faults from the Simulation panel, handed over without a lock.
+        const std::uint64_t v = faultVersion_.load(std::memory_order_acquire);
+        if (v != faultVersionSeen_) {
+            faultVersionSeen_ = v;
+            FaultInjection f = faultHandoff_.load();
+            // "Now" faults are stamped in the plant's own clock.
+            if (f.stuckEncoderAtS == 0.0) f.stuckEncoderAtS = rail->state().timeS;
+            if (f.amplifierFaultAtS == 0.0) f.amplifierFaultAtS = rail->state().timeS;
+            rail->setFaults(f);
+        }
+        rail->step(dt);
+    });
+    clock_.start();
     status_ = worker_->snapshot();
     worker_->start(true);
     timer_.setInterval(20);  // 50 Hz: smooth gauges and plots, little CPU
@@ -30,7 +43,19 @@ bool MachineLink::openJournal(const QString& path, QString* error) {
 }
 
 void MachineLink::journalNote(const QString& kind, int code, const QString& text) {
-    if (journal_.isOpen()) journal_.append({QDateTime::currentDateTimeUtc(), kind, code, text});
+    if (!journal_.isOpen()) return;
+    // Batched: written at once, synced at most every 100 ms (alarms at once).
+    if (!journal_.append({QDateTime::currentDateTimeUtc(), kind, code, text}, clock_.elapsed()) &&
+        !journalWarned_) {
+        journalWarned_ = true;
+        emit journalFailed(journal_.health().error);
+    }
+}
+
+void MachineLink::setFaults(const FaultInjection& faults) {
+    faults_ = faults;
+    faultHandoff_.store(faults);
+    faultVersion_.fetch_add(1, std::memory_order_release);
 }
 
 void MachineLink::run(std::shared_ptr<const Program> program, std::size_t fromIndex) {
@@ -39,7 +64,8 @@ void MachineLink::run(std::shared_ptr<const Program> program, std::size_t fromIn
 }
 
 void MachineLink::poll() {
-    worker_->drainEvents([this](const ControllerEvent& e) {
+    int budget = kEventsPerPoll;
+    worker_->drainEventsUpTo(budget, [this](const ControllerEvent& e) {
         const bool alarm = e.kind == EventKind::AlarmRaised;
         const bool ack = e.kind == EventKind::AlarmAcknowledged;
         journalNote(alarm ? QStringLiteral("alarm")
@@ -48,6 +74,13 @@ void MachineLink::poll() {
                     static_cast<int>(e.alarm), historyLine(e));
         emit eventArrived(e);
     });
+    if (journal_.isOpen()) {
+        if (!journal_.syncIfDue(clock_.elapsed()) && !journalWarned_) {
+            journalWarned_ = true;
+            emit journalFailed(journal_.health().error);
+        }
+        if (journal_.health().ok) journalWarned_ = false;
+    }
     const std::uint64_t version = worker_->snapshotVersion();
     if (version == version_) return;
     version_ = version;

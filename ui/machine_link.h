@@ -2,12 +2,15 @@
 // The screens' side of the machine: owns the simulated rail, the controller and the servo
 // worker; reads the worker's snapshot and events on a timer (50 Hz) and sends commands. No
 // slot here ever waits on the worker.
+#include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
+#include <atomic>
 #include <memory>
 
 #include "core/journal.h"
 #include "core/program.h"
+#include "core/seqlock.h"
 #include "core/servo_worker.h"
 #include "hal/sim/sim_rail.h"
 
@@ -58,11 +61,26 @@ class MachineLink : public QObject {
     }
     void setLaw(LoopLaw law) { worker_->send(CommandKind::SetLaw, static_cast<int>(law)); }
     /// Reads the worker now (also done by the timer); tests call it to avoid waiting a tick.
+    /// At most kEventsPerPoll events a call: the window keeps handling input whatever the
+    /// program does; the rest wait for the next frame (alarms are never dropped).
     void poll();
+    static constexpr int kEventsPerPoll = 256;
+
+    // ---- the Simulation panel: faults of the simulated rail and late servo ticks ----
+    /// Hands faults to the plant; taken at its next step (the servo thread never waits).
+    void setFaults(const FaultInjection& faults);
+    const FaultInjection& faults() const { return faults_; }
+    void setLateTicks(double maxS, double rate) { worker_->setLateTicks(maxS, rate, 1); }
+
+    /// The journal's state (a full disk, a read-only folder) and status lines not shown.
+    JournalHealth journalHealth() const { return journal_.health(); }
+    std::uint64_t droppedEvents() const { return worker_->droppedEvents(); }
 
   signals:
     void statusChanged(const trilho::ControllerStatus& status);
     void eventArrived(const trilho::ControllerEvent& event);
+    /// The history could not be written (the text says why); emitted once per failure.
+    void journalFailed(const QString& reason);
 
   private:
     MachineProfile profile_;
@@ -73,6 +91,12 @@ class MachineLink : public QObject {
     ControllerStatus status_;
     std::uint64_t version_ = 0;
     Journal journal_;
+    QElapsedTimer clock_;  ///< journal batching
+    bool journalWarned_ = false;
+    FaultInjection faults_;                 ///< GUI thread's copy
+    SeqLock<FaultInjection> faultHandoff_;  ///< to the plant, on the servo thread
+    std::atomic<std::uint64_t> faultVersion_{0};
+    std::uint64_t faultVersionSeen_ = 0;  ///< servo thread only
 };
 
 }  // namespace ui

@@ -18,6 +18,8 @@
 #include <QToolBar>
 #include <QToolButton>
 
+#include <QScrollArea>
+#include <QShortcut>
 #include "core/compiler.h"
 #include "core/diagnostic_text.h"
 #include "core/event_text.h"
@@ -31,6 +33,7 @@
 #include "ui/program_panel.h"
 #include "ui/rail_view.h"
 #include "ui/select_file_dialog.h"
+#include "ui/simulation_panel.h"
 
 namespace trilho {
 namespace ui {
@@ -43,7 +46,23 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     buildMenus();
     buildDocks();
     stateLabel_ = new QLabel(this);
+    hintLabel_ = new QLabel(this);
+    hintLabel_->setObjectName(QStringLiteral("nextStep"));
+    hintLabel_->setStyleSheet(QStringLiteral("QLabel#nextStep { color: rgb(160,0,0); }"));
+    timingLabel_ = new QLabel(this);
+    timingLabel_->setObjectName(QStringLiteral("timing"));
+    statusBar()->addWidget(hintLabel_, 1);
+    statusBar()->addPermanentWidget(timingLabel_);
     statusBar()->addPermanentWidget(stateLabel_);
+    // E-stop by key, whatever has the focus and whatever the event queue holds: the Pause key
+    // as an application shortcut (Esc stays, below), straight to the worker's flag.
+    auto* estopKey = new QShortcut(QKeySequence(Qt::Key_Pause), this);
+    estopKey->setContext(Qt::ApplicationShortcut);
+    connect(estopKey, &QShortcut::activated, &link_, &MachineLink::emergencyStop);
+    connect(&link_, &MachineLink::journalFailed, this, [this](const QString& reason) {
+        journalProblem_ = reason;
+        statusBar()->showMessage(tr("The history could not be written: %1").arg(reason), 15000);
+    });
 
     connect(&link_, &MachineLink::statusChanged, this, &MainWindow::onStatus);
     connect(&link_, &MachineLink::eventArrived, this, &MainWindow::onEvent);
@@ -185,7 +204,16 @@ void MainWindow::buildDocks() {
     jogDock_ = dock(jogPanel_, "jogDock", Qt::RightDockWidgetArea);
     plotDock_ = dock(plots_, "plotDock", Qt::BottomDockWidgetArea);
     historyDock_ = dock(history_, "historyDock", Qt::BottomDockWidgetArea);
+    simulation_ = new SimulationPanel(this);
+    auto* simulationScroll = new QScrollArea(this);  // tall form: scroll, never grow the window
+    simulationScroll->setWidget(simulation_);
+    simulationScroll->setWidgetResizable(true);
+    simulationScroll->setFrameShape(QFrame::NoFrame);
+    simulationDock_ = dock(simulationScroll, "simulationDock", Qt::BottomDockWidgetArea);
     tabifyDockWidget(plotDock_, historyDock_);
+    tabifyDockWidget(historyDock_, simulationDock_);
+    connect(simulation_, &SimulationPanel::faultsChanged, &link_, &MachineLink::setFaults);
+    connect(simulation_, &SimulationPanel::lateTicksChanged, &link_, &MachineLink::setLateTicks);
     plotDock_->raise();
     tabifyDockWidget(programDock_, jogDock_);
     programDock_->raise();
@@ -235,6 +263,7 @@ void MainWindow::retranslate() {
     jogDock_->setWindowTitle(tr("Jog and run"));
     historyDock_->setWindowTitle(tr("History"));
     railDock_->setWindowTitle(tr("Rail"));
+    simulationDock_->setWindowTitle(tr("Simulation"));
     estop_->setText(tr("E-STOP (Esc)"));
     resetEstop_->setText(tr("Reset E-stop"));
     ack_->setText(tr("Acknowledge"));
@@ -375,6 +404,35 @@ void MainWindow::onStatus(const ControllerStatus& s) {
                              .arg(s.servo.positionMm, 0, 'f', 2));
     resetEstop_->setEnabled(s.state == ControllerState::EStop);
     ack_->setEnabled(s.state == ControllerState::Alarm);
+    hintLabel_->setText(nextStepText());
+    QString timing;
+    if (s.servo.overruns > 0)
+        timing = tr("Late ticks: %1 (longest %2 ms)")
+                     .arg(s.servo.overruns)
+                     .arg(s.servo.worstPeriodS * 1e3, 0, 'f', 1);
+    if (const auto dropped = link_.droppedEvents(); dropped > 0)
+        timing += (timing.isEmpty() ? QString() : QStringLiteral("  |  ")) +
+                  tr("%1 status lines not shown").arg(dropped);
+    timingLabel_->setText(timing);
+}
+
+QString MainWindow::nextStepText() const {
+    // After an alarm the screens say what to do next, and that next action works.
+    const ControllerStatus& s = last_;
+    if (s.state == ControllerState::EStop)
+        return tr("Emergency stop: clear the cause, then Reset E-stop.");
+    if (s.state == ControllerState::Alarm)
+        return s.modeBeforeAlarm == ControllerState::AutoIdle
+                   ? tr("Alarm: read it in Alarms, then Acknowledge. Execute then homes the rail "
+                        "first if its position was lost.")
+                   : tr("Alarm: read it in Alarms, then Acknowledge.");
+    if (s.automatic && s.state == ControllerState::AutoIdle && !s.homed)
+        return tr("The rail's position is not known: Execute (or Automatic) homes it first.");
+    if (s.state == ControllerState::Paused && s.pause == PauseReason::Hold)
+        return tr("Held: Resume goes on, Stop ends the program.");
+    if (!journalProblem_.isEmpty())
+        return tr("The history could not be written: %1").arg(journalProblem_);
+    return {};
 }
 
 void MainWindow::onEvent(const ControllerEvent& e) {
@@ -402,15 +460,23 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
         link_.emergencyStop();
         return true;
     }
-    // The original's keys in manual mode: '<' left, '>' right, space stops - unless the
-    // operator is typing in a field.
+    // Space stops the rail whatever has the focus (a gain field takes only numbers), but for
+    // the program editor, where it is a space: PARA in manual, Stop in automatic.
     QWidget* focus = QApplication::focusWidget();
-    const bool typing = qobject_cast<QLineEdit*>(focus) || qobject_cast<QPlainTextEdit*>(focus);
+    const bool editor = qobject_cast<QPlainTextEdit*>(focus) != nullptr;
+    if (key->key() == Qt::Key_Space && !editor && !key->isAutoRepeat()) {
+        if (last_.automatic)
+            link_.stop();
+        else
+            link_.manualStop(), link_.jogStop();
+        return true;
+    }
+    // The original's keys in manual mode: '<' left, '>' right - unless the operator is typing.
+    const bool typing = editor || qobject_cast<QLineEdit*>(focus);
     if (typing || last_.automatic) return QMainWindow::eventFilter(watched, event);
     const QString text = key->text();
     if (text == QLatin1String("<") || text == QLatin1String(",")) return link_.manualLeft(), true;
     if (text == QLatin1String(">") || text == QLatin1String(".")) return link_.manualRight(), true;
-    if (key->key() == Qt::Key_Space) return link_.manualStop(), true;
     return QMainWindow::eventFilter(watched, event);
 }
 

@@ -27,6 +27,7 @@ class MachineLink;
 class PlotPanel;
 class ProgramPanel;
 class RailView;
+class SimulationPanel;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -48,6 +49,10 @@ class MainWindow : public QMainWindow {
     JogPanel* jog() const { return jogPanel_; }
     HistoryPanel* history() const { return history_; }
     RailView* railView() const { return rail_; }
+    SimulationPanel* simulation() const { return simulation_; }
+    /// The status bar's next step after an alarm or a lost reference (empty when none).
+    QString nextStepText() const;
+    QLabel* timingLabel() const { return timingLabel_; }
     QAction* manualAction() const { return manual_; }
     QAction* automaticAction() const { return automatic_; }
     QAction* compileAction() const { return compile_; }
@@ -80,7 +85,8 @@ class MainWindow : public QMainWindow {
     JogPanel* jogPanel_;
     HistoryPanel* history_;
     RailView* rail_;
-    QDockWidget *programDock_, *plotDock_, *jogDock_, *historyDock_, *railDock_;
+    SimulationPanel* simulation_;
+    QDockWidget *programDock_, *plotDock_, *jogDock_, *historyDock_, *railDock_, *simulationDock_;
     QMenu *fileMenu_, *commandMenu_, *optionsMenu_, *languageMenu_, *themeMenu_, *lawMenu_,
         *dialectMenu_, *viewMenu_;
     QAction *select_, *exit_, *manual_, *automatic_, *compile_, *execute_;
@@ -89,6 +95,9 @@ class MainWindow : public QMainWindow {
     QActionGroup* languages_;
     QToolButton *estop_, *resetEstop_, *ack_;
     QLabel* stateLabel_;
+    QLabel* hintLabel_;    ///< what to do next (after an alarm, before homing)
+    QLabel* timingLabel_;  ///< late servo ticks and the longest period; unread history lines
+    QString journalProblem_;
     QString selectedFile_;
     QString language_ = QStringLiteral("en");
     Dialect dialect_ = Dialect::Standard;

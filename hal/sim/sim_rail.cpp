@@ -28,6 +28,7 @@ void SimRail::setFaults(const FaultInjection& faults) {
         stuck_ = false;
         counterOffset_ += encoderCounts() - stuckCounts_;
     }
+    if (!(faults.amplifierFaultAtS >= 0.0)) state_.amplifierFaulted = false;  // reset
     faults_ = faults;
 }
 

@@ -16,6 +16,9 @@
 #include <QTextBlock>
 #include <QToolButton>
 
+#include <QCheckBox>
+#include <QLabel>
+#include <QSpinBox>
 #include "translations/i18n.h"
 #include "ui/code_editor.h"
 #include "ui/execution_panel.h"
@@ -25,6 +28,7 @@
 #include "ui/plot_panel.h"
 #include "ui/program_panel.h"
 #include "ui/select_file_dialog.h"
+#include "ui/simulation_panel.h"
 #include "ui/start_screen.h"
 #include "ui/theme.h"
 
@@ -221,6 +225,68 @@ class MainWindowTest : public QObject {
         QTRY_COMPARE(int(status().manualCode), 127);
         QTest::mouseClick(panel()->stopButton(), Qt::LeftButton);
         QTRY_COMPARE(int(status().manualCode), 128);
+    }
+
+    // Issue 8: stop keys whatever has the focus; the focus never lands in a gain by accident.
+    void spaceStopsTheRailWithTheFocusInAGainField() {
+        QTest::keyClick(window_.get(), '>');
+        QTest::keyClick(window_.get(), '>');
+        QTRY_COMPARE(int(status().manualCode), 130);
+        QLineEdit* gain = panel()->gainField(0);
+        QTest::mouseClick(gain, Qt::LeftButton);  // the operator clicks into Proportional
+        QTRY_VERIFY(gain->hasFocus());
+        QTest::keyClick(gain, Qt::Key_Space);
+        QTRY_COMPARE(int(status().manualCode), 128);
+    }
+
+    void continueDoesNotHandTheFocusToAGain() {
+        for (int i = 0; i < 3; ++i)
+            QCOMPARE(panel()->gainField(i)->focusPolicy(), Qt::ClickFocus);
+        goAutomatic();
+        QVERIFY(window_->selectProgram(
+            writeProgram("m00b.G", "N10 G0 X30\nN20 M0\nN30 G0 X0\nN40 M2\n")));
+        window_->executeAction()->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(panel()->continueButton()->isEnabled(), 10000);
+        QTest::mouseClick(panel()->continueButton(), Qt::LeftButton);
+        QTRY_VERIFY(!panel()->continueButton()->isEnabled());
+        for (int i = 0; i < 3; ++i)
+            QVERIFY(!panel()->gainField(i)->hasFocus());
+    }
+
+    void pauseKeyIsAnEmergencyStopFromAnyField() {
+        QLineEdit* gain = panel()->gainField(1);
+        QTest::mouseClick(gain, Qt::LeftButton);
+        QTest::keyClick(gain, Qt::Key_Pause);
+        QTRY_COMPARE(status().state, ControllerState::EStop);
+    }
+
+    void theSimulationPanelShowsAFaultAndTheScreensSayWhatNext() {
+        goAutomatic();
+        QVERIFY(window_->selectProgram(writeProgram("far.G", "G0 X900\nM2\n")));
+        window_->executeAction()->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(status().servo.positionMm > 100.0, 10000);
+        window_->simulation()->stuckEncoder()->setChecked(true);
+        QTRY_COMPARE_WITH_TIMEOUT(status().state, ControllerState::Alarm, 5000);
+        QCOMPARE(status().lastAlarm, AlarmCode::EncoderStalled);
+        QVERIFY(window_->nextStepText().contains(QStringLiteral("Acknowledge")));
+        QVERIFY(panel()->alarms()->currentText().contains(QStringLiteral("Encoder stalled")));
+        // The instructor puts the rail right; the operator acknowledges; Execute homes again.
+        QTest::mouseClick(window_->simulation()->clearAll(), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(link_->rail().state().velocityMmS) < 1e-6, 10000);
+        link_->acknowledge();
+        QTRY_COMPARE(status().state, ControllerState::AutoIdle);
+        QVERIFY(!status().homed);
+        QVERIFY(window_->nextStepText().contains(QStringLiteral("homes it first")));
+        window_->executeAction()->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(status().programFinished && status().homed, 30000);
+        QVERIFY(std::abs(status().servo.positionMm - 900.0) < 0.1);
+    }
+
+    void lateTicksShowInTheStatusBar() {
+        window_->simulation()->lateTickMs()->setValue(8);
+        QTRY_VERIFY_WITH_TIMEOUT(status().servo.overruns > 0, 10000);
+        QTRY_VERIFY(window_->timingLabel()->text().contains(QStringLiteral("Late ticks")));
+        window_->simulation()->lateTickMs()->setValue(0);
     }
 
     void escapeIsTheEmergencyStop() {
