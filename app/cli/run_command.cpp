@@ -4,6 +4,8 @@
 //   [--fault NAME[@T][=V]]... FILE
 // Compiles (errors: exit 1, nothing moves), homes, and runs the program on the simulated rail.
 #include <QCommandLineParser>
+#include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -15,6 +17,7 @@
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
+#include "app/cli/diagnostics_text.h"
 #include "core/compiler.h"
 #include "core/diagnostic_text.h"
 #include "core/event_text.h"
@@ -25,8 +28,6 @@
 #include "translations/i18n.h"
 
 namespace trilho::cli {
-
-QString formatDiagnosticLine(const QString& file, const Diagnostic& d);
 
 namespace {
 
@@ -43,13 +44,23 @@ struct RunOptions {
     std::vector<ScheduledFault> faults;  ///< switched on after homing, at their @T
 };
 
-/// Collects what the run said, for the text and JSON reports.
+/// What the run said. Text: each history line is printed as it happens (memory bounded by
+/// nothing the run does); JSON: the last kKeptLines lines are kept, the earlier ones counted.
 struct Report {
+    static constexpr qsizetype kKeptLines = 10000;
+    bool streamText = false;
     QStringList history;
+    qint64 omitted = 0;
     QJsonArray alarms;
     void add(const ControllerEvent& e) {
-        history << historyLine(e);
-        if (e.kind == EventKind::AlarmRaised) {
+        const QString line = historyLine(e);
+        if (streamText) {
+            out(line + QLatin1Char('\n'));
+        } else {
+            if (history.size() == kKeptLines) history.removeFirst(), ++omitted;
+            history << line;
+        }
+        if (e.kind == EventKind::AlarmRaised && alarms.size() < kKeptLines) {
             QJsonObject a;
             a[QStringLiteral("code")] = static_cast<int>(e.alarm);
             a[QStringLiteral("text")] = alarmText(e.alarm, e.value);
@@ -58,32 +69,73 @@ struct Report {
     }
 };
 
+/// The --trace file: a regular file (or a new one) is written atomically (QSaveFile: a crash or
+/// a full disk never leaves half a trace where a good one was); a device or a FIFO (/dev/null,
+/// a pipe to a plotter) is written straight, never replaced. Any failed write is kept with its
+/// reason and reported after the run's own result.
 class TraceFile {
   public:
     bool open(const QString& path, QString* error) {
         if (path.isEmpty()) return true;
-        file_ = std::make_unique<QSaveFile>(path);
-        if (!file_->open(QIODevice::WriteOnly)) {
-            *error = QStringLiteral("cannot write trace '%1': %2").arg(path, file_->errorString());
-            file_.reset();
-            return false;
+        path_ = path;
+        const QFileInfo info(path);
+        if (info.exists() && !info.isFile() && !info.isDir()) {
+            auto f = std::make_unique<QFile>(path);
+            if (!f->open(QIODevice::WriteOnly | QIODevice::Unbuffered)) {
+                *error = QStringLiteral("cannot write trace '%1': %2").arg(path, f->errorString());
+                return false;
+            }
+            file_ = std::move(f);
+        } else {
+            auto f = std::make_unique<QSaveFile>(path);
+            if (!f->open(QIODevice::WriteOnly)) {
+                *error = QStringLiteral("cannot write trace '%1': %2").arg(path, f->errorString());
+                return false;
+            }
+            file_ = std::move(f);
         }
-        file_->write("t_s,block_n,setpoint_mm,position_mm,error_mm,velocity_mm_s,drive\n");
+        write("t_s,block_n,setpoint_mm,position_mm,error_mm,velocity_mm_s,drive\n", 65);
         return true;
     }
     void row(const TraceRow& r) {
-        if (!file_) return;
+        if (!file_ || !error_.isEmpty()) return;
         char line[192];
         const int len =
             std::snprintf(line, sizeof line, "%.4f,%d,%.4f,%.4f,%.4f,%.3f,%d\n", r.timeS, r.blockN,
                           r.setpointMm, r.positionMm, r.errorMm, r.velocityMmS, r.drive);
-        file_->write(line, len);
+        write(line, len);
     }
-    bool close() { return !file_ || file_->commit(); }
+    /// Finishes the file; false (with error()) when any write, the flush or the commit failed.
+    bool close() {
+        if (!file_) return true;
+        if (auto* save = dynamic_cast<QSaveFile*>(file_.get())) {
+            if (!error_.isEmpty()) {
+                save->cancelWriting();
+                save->commit();  // discards: the old file stays as it was
+            } else if (!save->commit()) {
+                error_ = save->errorString();
+            }
+        } else {
+            auto* plain = static_cast<QFile*>(file_.get());
+            if (error_.isEmpty() && !plain->flush()) error_ = plain->errorString();
+            plain->close();
+        }
+        file_.reset();
+        return error_.isEmpty();
+    }
     bool active() const { return file_ != nullptr; }
+    QString error() const {
+        return QStringLiteral("cannot write trace '%1': %2").arg(path_, error_);
+    }
 
   private:
-    std::unique_ptr<QSaveFile> file_;
+    void write(const char* data, qint64 len) {
+        if (file_->write(data, len) != len && error_.isEmpty())
+            error_ = file_->errorString().isEmpty() ? QStringLiteral("write failed")
+                                                    : file_->errorString();
+    }
+    std::unique_ptr<QFileDevice> file_;
+    QString path_, error_;
 };
 
 enum class Outcome { Finished, Alarm, TimeLimit };
@@ -285,7 +337,8 @@ int runCommand(const QStringList& args) {
         return usage(QStringLiteral("--continue-after must be a number of seconds >= 0 (got '%1')")
                          .arg(parser.value(continueOpt)));
     if (!number(maxOpt, 0.0, 1e7, options.maxSeconds))
-        return usage(QStringLiteral("--max-seconds must be a number of seconds >= 0 (got '%1')")
+        return usage(QStringLiteral("--max-seconds must be a number of seconds from 0 to 1e7 (got "
+                                    "'%1')")
                          .arg(parser.value(maxOpt)));
     if (!number(jitterOpt, 0.0, 40.0, options.tickJitterMs))
         return usage(QStringLiteral("--tick-jitter must be milliseconds from 0 to 40 (the "
@@ -324,11 +377,12 @@ int runCommand(const QStringList& args) {
     profile.plant.massFactor *= options.massFactor;
 
     const QString file = files.front();
-    const SourceFile source = readSourceFile(file.toStdString());
+    const SourceFile source = readSourceFile(localPath(file));
     if (!source.ok) return usage(QString::fromStdString(source.error));
     CompileOptions compileOptions;
     compileOptions.dialect = *dialect;
     compileOptions.machine = profile.limits;
+    compileOptions.maxDiagnostics = kMaxListedDiagnostics;
     auto program = std::make_shared<Program>(compile(source.bytes, compileOptions));
     Report report;
     if (!program->ok()) {
@@ -347,16 +401,16 @@ int runCommand(const QStringList& args) {
             o[QStringLiteral("alarms")] = QJsonArray{
                 QJsonObject{{QStringLiteral("code"), static_cast<int>(AlarmCode::CompileErrors)},
                             {QStringLiteral("text"), alarmText(AlarmCode::CompileErrors)}}};
+            o[QStringLiteral("diagnostics_omitted")] =
+                static_cast<double>(program->diagnosticsOmitted);
             o[QStringLiteral("final_position_mm")] = 0.0;
             o[QStringLiteral("duration_s")] = 0.0;
             out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) +
                 QLatin1Char('\n'));
         } else {
-            QString text;
-            for (const auto& d : program->diagnostics)
-                text += formatDiagnosticLine(file, d);
-            text += compileSummary(program->errorCount()) + QLatin1Char('\n');
-            out(text);
+            ChunkedOutput text(streamSink(stdout));
+            writeDiagnosticsText(text, file, *program);
+            text.flush();
         }
         return kCompileErrors;
     }
@@ -371,20 +425,22 @@ int runCommand(const QStringList& args) {
     TraceFile trace;
     QString traceError;
     if (!trace.open(options.tracePath, &traceError)) return usage(traceError);
+    report.streamText = !options.json;
 
     ControllerStatus last;
     double plantMm = 0.0;
     const Outcome outcome =
         options.virtualTime ? runVirtual(profile, program, options, report, trace, last, plantMm)
                             : runRealTime(profile, program, options, report, trace, last, plantMm);
-    if (!trace.close())
-        return usage(QStringLiteral("cannot write trace '%1'").arg(options.tracePath));
+    // A trace that could not be written is said after the run's own result, which stands.
+    const bool traceOk = trace.close();
 
     const double finalMm = last.servo.positionMm;
     if (options.json) {
         QJsonObject o;
         o[QStringLiteral("ok")] = outcome == Outcome::Finished;
         o[QStringLiteral("history")] = QJsonArray::fromStringList(report.history);
+        if (report.omitted) o[QStringLiteral("history_omitted")] = double(report.omitted);
         o[QStringLiteral("alarms")] = report.alarms;
         o[QStringLiteral("final_position_mm")] = std::round(finalMm * 1e4) / 1e4;
         o[QStringLiteral("duration_s")] = std::round(last.timeS * 1e4) / 1e4;
@@ -393,10 +449,9 @@ int runCommand(const QStringList& args) {
         o[QStringLiteral("worst_period_ms")] = std::round(last.servo.worstPeriodS * 1e6) / 1e3;
         out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
     } else {
-        QString text = report.history.join(QLatin1Char('\n')) + QLatin1Char('\n');
-        text += QStringLiteral("final position: %1 mm (%2 s)\n")
-                    .arg(finalMm, 0, 'f', 3)
-                    .arg(last.timeS, 0, 'f', 3);
+        QString text = QStringLiteral("final position: %1 mm (%2 s)\n")
+                           .arg(finalMm, 0, 'f', 3)
+                           .arg(last.timeS, 0, 'f', 3);
         if (last.servo.overruns > 0)
             text += QStringLiteral("late ticks: %1, the longest period %2 ms\n")
                         .arg(last.servo.overruns)
@@ -404,6 +459,10 @@ int runCommand(const QStringList& args) {
         if (outcome == Outcome::TimeLimit)
             text += QStringLiteral("stopped by --max-seconds %1\n").arg(options.maxSeconds);
         out(text);
+    }
+    if (!traceOk) {
+        err(QStringLiteral("trilho-cli run: %1\n").arg(trace.error()));
+        if (outcome == Outcome::Finished) return kUsage;
     }
     switch (outcome) {
         case Outcome::Finished:

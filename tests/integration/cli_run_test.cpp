@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -207,6 +208,59 @@ TEST_F(CliRun, BadFaultsAndJitterNameWhatIsWrong) {
         EXPECT_EQ(r.exit, 2) << c.says;
         EXPECT_TRUE(r.err.contains(QString::fromLatin1(c.says))) << r.err.toStdString();
     }
+}
+
+// Issue 9: the trace goes straight to a device or FIFO, atomically only to a regular file, and
+// a failure to write it names the reason without hiding the run's own result.
+TEST_F(CliRun, TraceToADeviceWritesItAndNeverReplacesIt) {
+    Result r = run({QStringLiteral("--virtual-time"), QStringLiteral("--trace"),
+                    QStringLiteral("/dev/null"), program("exemplo_documento.G")});
+    EXPECT_EQ(r.exit, 0) << r.err.toStdString();
+    EXPECT_TRUE(QFileInfo(QStringLiteral("/dev/null")).isFile() == false);
+    QFile devnull(QStringLiteral("/dev/null"));
+    EXPECT_TRUE(devnull.open(QIODevice::ReadOnly));
+    EXPECT_TRUE(devnull.isSequential());  // still the character device
+}
+
+TEST_F(CliRun, ATraceOnAFullDiskNamesTheReasonAndKeepsTheResult) {
+    if (!QFileInfo::exists(QStringLiteral("/dev/full"))) GTEST_SKIP() << "no /dev/full";
+    Result ok = run({QStringLiteral("--virtual-time"), QStringLiteral("--trace"),
+                     QStringLiteral("/dev/full"), program("exemplo_documento.G")});
+    EXPECT_EQ(ok.exit, 2);  // 1.x: success
+    EXPECT_TRUE(ok.err.contains(QStringLiteral("/dev/full"))) << ok.err.toStdString();
+    EXPECT_TRUE(ok.err.contains(QStringLiteral("space"), Qt::CaseInsensitive))
+        << ok.err.toStdString();
+    EXPECT_TRUE(ok.out.contains(QStringLiteral("Program finished !")));  // the history stands
+    // An alarm's exit status is not hidden by the trace's failure.
+    Result alarm = run({QStringLiteral("--virtual-time"), QStringLiteral("--trace"),
+                        QStringLiteral("/dev/full"), QStringLiteral("--fault"),
+                        QStringLiteral("stuck-encoder@0.2"), program("ciclo_continuo.G")});
+    EXPECT_EQ(alarm.exit, 3);
+    EXPECT_TRUE(alarm.out.contains(QStringLiteral("Alarm 16")));
+    EXPECT_TRUE(alarm.err.contains(QStringLiteral("/dev/full")));
+}
+
+TEST_F(CliRun, TraceIntoAFifoReachesItsReader) {
+    const QString fifo = dir.filePath(QStringLiteral("trace.fifo"));
+    ASSERT_EQ(QProcess::execute(QStringLiteral("mkfifo"), {fifo}), 0);
+    QProcess reader;
+    reader.start(QStringLiteral("cat"), {fifo});
+    ASSERT_TRUE(reader.waitForStarted());
+    Result r = run({QStringLiteral("--virtual-time"), QStringLiteral("--trace"), fifo,
+                    program("exemplo_documento.G")});
+    EXPECT_EQ(r.exit, 0) << r.err.toStdString();
+    ASSERT_TRUE(reader.waitForFinished(10000));
+    const QByteArray got = reader.readAllStandardOutput();
+    EXPECT_TRUE(got.startsWith("t_s,block_n,"));
+    EXPECT_GT(got.count('\n'), 100);
+    EXPECT_FALSE(QFileInfo(fifo).isFile());  // still a FIFO
+}
+
+TEST_F(CliRun, TheMaxSecondsMessageNamesItsBound) {
+    Result r = run({QStringLiteral("--virtual-time"), QStringLiteral("--max-seconds"),
+                    QStringLiteral("1e8"), program("exemplo_documento.G")});
+    EXPECT_EQ(r.exit, 2);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("from 0 to 1e7"))) << r.err.toStdString();
 }
 
 TEST_F(CliRun, RealTimeRunOfAShortProgram) {
