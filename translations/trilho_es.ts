@@ -695,6 +695,10 @@
         <translation>¡Seleccione el archivo primero!</translation>
     </message>
     <message>
+        <source>Compiling %1 MB...</source>
+        <translation>Compilando %1 MB...</translation>
+    </message>
+    <message>
         <source>End</source>
         <translation>Final</translation>
     </message>

@@ -2,12 +2,14 @@
 
 #include <QEvent>
 #include <QFileDialog>
+#include <QFutureWatcher>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
 
 #include "core/journal.h"
 
@@ -33,9 +35,21 @@ HistoryPanel::HistoryPanel(QWidget* parent) : QWidget(parent) {
     connect(export_, &QPushButton::clicked, this, [this] {
         const QString f = QFileDialog::getSaveFileName(this, tr("Export history"), QString(),
                                                        QStringLiteral("CSV (*.csv)"));
-        QString error;
-        if (!f.isEmpty() && !exportCsv(f, &error))
-            QMessageBox::warning(this, tr("Export history"), error);
+        if (f.isEmpty()) return;
+        // The journal may be megabytes over several rotated files: export off the GUI thread.
+        export_->setEnabled(false);
+        auto* watcher = new QFutureWatcher<QString>(this);
+        connect(watcher, &QFutureWatcher<QString>::finished, this, [this, watcher] {
+            watcher->deleteLater();
+            export_->setEnabled(true);
+            if (!watcher->result().isEmpty())
+                QMessageBox::warning(this, tr("Export history"), watcher->result());
+            emit exported();
+        });
+        watcher->setFuture(QtConcurrent::run([journal = journal_, f] {
+            QString error;
+            return Journal::exportJournalCsv(journal, f, &error) ? QString() : error;
+        }));
     });
     retranslate();
 }
@@ -65,7 +79,7 @@ void HistoryPanel::add(const QString& when, const QString& kind, int code, const
 }
 
 bool HistoryPanel::exportCsv(const QString& path, QString* error) {
-    return Journal::exportCsv(Journal::read(journal_), path, error);
+    return Journal::exportJournalCsv(journal_, path, error);  // streamed, every rotated file
 }
 
 }  // namespace ui

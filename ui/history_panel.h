@@ -19,6 +19,7 @@ class HistoryPanel : public QWidget {
 
   signals:
     void acknowledgeRequested();
+    void exported();  ///< an export from the button finished (its warning, if any, shown)
 
   protected:
     void changeEvent(QEvent* e) override;

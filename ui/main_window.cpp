@@ -18,8 +18,11 @@
 #include <QToolBar>
 #include <QToolButton>
 
+#include <QFutureWatcher>
+#include <QProgressBar>
 #include <QScrollArea>
 #include <QShortcut>
+#include <QtConcurrent/QtConcurrentRun>
 #include "core/compiler.h"
 #include "core/diagnostic_text.h"
 #include "core/event_text.h"
@@ -53,6 +56,11 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     timingLabel_->setObjectName(QStringLiteral("timing"));
     statusBar()->addWidget(hintLabel_, 1);
     statusBar()->addPermanentWidget(timingLabel_);
+    compileProgress_ = new QProgressBar(this);
+    compileProgress_->setRange(0, 0);  // busy: the compiler runs in one pass
+    compileProgress_->setMaximumWidth(120);
+    compileProgress_->hide();
+    statusBar()->addPermanentWidget(compileProgress_);
     statusBar()->addPermanentWidget(stateLabel_);
     // E-stop by key, whatever has the focus and whatever the event queue holds: the Pause key
     // as an application shortcut (Esc stays, below), straight to the worker's flag.
@@ -219,9 +227,11 @@ void MainWindow::buildDocks() {
     programDock_->raise();
 
     connect(program_, &ProgramPanel::startFromCursorRequested, this, [this] {
-        auto p = compileEditor(true);
-        if (!p || !p->ok()) return;
-        executeSelected(p->blockAtOrAfterLine(static_cast<std::uint32_t>(program_->cursorLine())));
+        compileEditor(true, [this](std::shared_ptr<Program> p) {
+            const auto from =
+                p->blockAtOrAfterLine(static_cast<std::uint32_t>(program_->cursorLine()));
+            startCompiled(std::move(p), from);
+        });
     });
     connect(jogPanel_, &JogPanel::jogStart, this,
             [this](int dir) { link_.jogStart(dir, jogPanel_->jogFraction()); });
@@ -311,41 +321,74 @@ bool MainWindow::selectProgram(const QString& path) {
     return true;
 }
 
-std::shared_ptr<Program> MainWindow::compileEditor(bool showInAlarms) {
+void MainWindow::compileEditor(bool showInAlarms,
+                               std::function<void(std::shared_ptr<Program>)> then) {
     if (selectedFile_.isEmpty()) {
         QMessageBox::warning(this, tr("File message"), tr("Select the file first !"));
-        return nullptr;
+        return;
     }
+    if (compiling_) return;  // one at a time; the buttons are grey meanwhile
     CompileOptions options;
     options.dialect = dialect_;
     options.machine = link_.profile().limits;
+    options.maxDiagnostics = 1000;  // a file of garbage lists the first thousand, counts the rest
     // What the operator sees is what runs: the editor's text, saved or not.
-    auto program = std::make_shared<Program>(compile(program_->text().toStdString(), options));
-    QStringList messages;
-    for (const Diagnostic& d : program->diagnostics)
-        messages << diagnosticMessage(d);
-    program_->showDiagnostics(program->diagnostics, messages);
-    if (showInAlarms) {
-        panel_->clearAlarms();
-        for (qsizetype i = 0; i < messages.size(); ++i)
-            panel_->addAlarmLine(QStringLiteral("%1: %2")
-                                     .arg(program->diagnostics[static_cast<std::size_t>(i)].line)
-                                     .arg(messages[i]));
-        panel_->setAlarmSummary(compileSummary(program->errorCount()));
+    std::string text = program_->text().toStdString();
+    auto finish = [this, showInAlarms, then = std::move(then)](std::shared_ptr<Program> program) {
+        compiling_ = false;
+        compileProgress_->hide();
+        onStatus(last_);  // Compile and Execute as the state says again
+        QStringList messages;
+        for (const Diagnostic& d : program->diagnostics)
+            messages << diagnosticMessage(d);
+        program_->showDiagnostics(program->diagnostics, messages);
+        if (showInAlarms) {
+            panel_->clearAlarms();
+            for (qsizetype i = 0; i < messages.size(); ++i)
+                panel_->addAlarmLine(
+                    QStringLiteral("%1: %2")
+                        .arg(program->diagnostics[static_cast<std::size_t>(i)].line)
+                        .arg(messages[i]));
+            panel_->setAlarmSummary(compileSummary(program->errorCount()));
+        }
+        then(std::move(program));
+    };
+    // Real programs compile in a millisecond; a long file goes to a worker thread, with a busy
+    // bar, so the window (and E-stop by mouse or key) never waits for it.
+    constexpr std::size_t kInlineBytes = 256 * 1024;
+    if (text.size() < kInlineBytes) {
+        finish(std::make_shared<Program>(compile(text, options)));
+        return;
     }
-    return program;
+    compiling_ = true;
+    compile_->setEnabled(false);
+    execute_->setEnabled(false);
+    compileProgress_->show();
+    statusBar()->showMessage(tr("Compiling %1 MB...").arg(double(text.size()) / 1e6, 0, 'f', 1));
+    auto* watcher = new QFutureWatcher<std::shared_ptr<Program>>(this);
+    connect(watcher, &QFutureWatcher<std::shared_ptr<Program>>::finished, this, [watcher, finish] {
+        watcher->deleteLater();
+        finish(watcher->result());
+    });
+    watcher->setFuture(QtConcurrent::run([text = std::move(text), options] {
+        return std::make_shared<Program>(compile(text, options));
+    }));
 }
 
 void MainWindow::compileSelected() {
-    auto program = compileEditor(true);
-    if (!program) return;
-    panel_->setLineText(tr("End"));
-    panel_->setOnlineStatus(tr("Compilation finished !"));
+    compileEditor(true, [this](std::shared_ptr<Program>) {
+        panel_->setLineText(tr("End"));
+        panel_->setOnlineStatus(tr("Compilation finished !"));
+    });
 }
 
 void MainWindow::executeSelected(std::size_t fromIndex) {
-    auto program = compileEditor(true);  // Execute always recompiles first
-    if (!program) return;
+    compileEditor(true, [this, fromIndex](std::shared_ptr<Program> program) {
+        startCompiled(std::move(program), fromIndex);
+    });
+}
+
+void MainWindow::startCompiled(std::shared_ptr<Program> program, std::size_t fromIndex) {
     if (!program->ok()) {
         panel_->setOnlineStatus(tr("There are compile error(s)!"));
         return;
@@ -385,8 +428,8 @@ void MainWindow::onStatus(const ControllerStatus& s) {
     manual_->setChecked(!s.automatic);
     automatic_->setChecked(s.automatic);
     const bool idle = s.state == ControllerState::AutoIdle;
-    compile_->setEnabled(s.automatic);
-    execute_->setEnabled(s.automatic && idle);
+    compile_->setEnabled(s.automatic && !compiling_);
+    execute_->setEnabled(s.automatic && idle && !compiling_);
     jogPanel_->setManual(!s.automatic);
     rail_->setState(s.servo.positionMm, s.servo.targetMm, s.servo.switches,
                     s.servo.mode == ServoMode::Move);

@@ -4,6 +4,7 @@
 // MachineLink's snapshots and sends commands; it never waits on the servo thread.
 #include <QMainWindow>
 #include <QSettings>
+#include <functional>
 #include <memory>
 
 #include "core/dialect.h"
@@ -14,6 +15,7 @@ class QAction;
 class QActionGroup;
 class QDockWidget;
 class QLabel;
+class QProgressBar;
 class QMenu;
 class QToolButton;
 
@@ -73,7 +75,14 @@ class MainWindow : public QMainWindow {
     void onStatus(const ControllerStatus& s);
     void onEvent(const ControllerEvent& e);
     void chooseFile();
-    std::shared_ptr<Program> compileEditor(bool showInAlarms);
+    /// Compiles the editor's text (a long one on a worker thread) and calls then with it.
+    void compileEditor(bool showInAlarms, std::function<void(std::shared_ptr<Program>)> then);
+    void startCompiled(std::shared_ptr<Program> program, std::size_t fromIndex);
+
+  public:
+    bool compiling() const { return compiling_; }
+
+  private:
     void applyGain(int which, double value);
     void loadGainsFromSettings();
 
@@ -98,6 +107,8 @@ class MainWindow : public QMainWindow {
     QLabel* hintLabel_;    ///< what to do next (after an alarm, before homing)
     QLabel* timingLabel_;  ///< late servo ticks and the longest period; unread history lines
     QString journalProblem_;
+    QProgressBar* compileProgress_;
+    bool compiling_ = false;
     QString selectedFile_;
     QString language_ = QStringLiteral("en");
     Dialect dialect_ = Dialect::Standard;

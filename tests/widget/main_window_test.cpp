@@ -289,6 +289,25 @@ class MainWindowTest : public QObject {
         window_->simulation()->lateTickMs()->setValue(0);
     }
 
+    // Issue 9: a long program compiles off the GUI thread; the window answers meanwhile.
+    void aLongProgramCompilesWhileTheWindowAnswers() {
+        goAutomatic();
+        QByteArray text = "G90\n";
+        for (int i = 0; i < 60000; ++i)
+            text += i % 2 ? "G01 X12.5 F40\n" : "G00 X-12.5\n";
+        text += "M02\n";
+        QVERIFY(text.size() > 256 * 1024);
+        QVERIFY(window_->selectProgram(writeProgram("long.G", text)));
+        window_->compileAction()->trigger();
+        QVERIFY(window_->compiling());  // not done in the click: on a worker thread
+        QVERIFY(!window_->compileAction()->isEnabled());
+        QVERIFY(!window_->executeAction()->isEnabled());
+        QTRY_VERIFY_WITH_TIMEOUT(!window_->compiling(), 20000);
+        QCOMPARE(panel()->alarms()->currentText(),
+                 QStringLiteral("Compilation completed successfully"));
+        QVERIFY(window_->executeAction()->isEnabled());
+    }
+
     void escapeIsTheEmergencyStop() {
         QTest::keyClick(window_.get(), '>');
         QTRY_COMPARE(int(status().manualCode), 129);
