@@ -218,7 +218,8 @@ void MachineController::jogStart(int direction, double speedFraction) {
     if ((direction > 0 && pos >= lim.softMaxMm) || (direction < 0 && pos <= lim.softMinMm))
         return raiseAlarm(AlarmCode::SoftLimit);
     status_.manualCode = kDacZero;
-    servo_.moveTo(target, std::clamp(speedFraction, 0.001, profile().motion.jogMaxFraction));
+    // Jogs have their own speed; the feed override (0 = feed hold) is for programs.
+    servo_.moveTo(target, std::clamp(speedFraction, 0.001, profile().motion.jogMaxFraction), false);
     jogging_ = true;
 }
 
@@ -236,7 +237,8 @@ void MachineController::jogIncrement(double deltaMm, double speedFraction) {
     if (target != from + deltaMm) raiseAlarm(AlarmCode::SoftLimit);
     if (target == from) return;
     status_.manualCode = kDacZero;
-    servo_.moveTo(target, std::clamp(speedFraction, 0.001, profile().motion.jogMaxFraction));
+    // Jogs have their own speed; the feed override (0 = feed hold) is for programs.
+    servo_.moveTo(target, std::clamp(speedFraction, 0.001, profile().motion.jogMaxFraction), false);
     jogging_ = true;
 }
 

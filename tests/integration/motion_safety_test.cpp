@@ -354,6 +354,16 @@ TEST(FeedHold, OverrideZeroHoldsTheBlockAndResumesToItsRealTarget) {
     EXPECT_NEAR(cell.x(), 0.0, 1.5 * kCount);
 }
 
+TEST(FeedHold, AZeroOverrideDoesNotFreezeTheJogKeys) {
+    Cell cell;
+    cell.c().selectManual();
+    cell.c().setFeedOverride(0.0);
+    cell.c().jogIncrement(50.0, 0.3);
+    ASSERT_TRUE(cell.session.runUntil([&] { return cell.c().status().servo.inPosition; }, 5));
+    cell.session.runUntil([] { return false; }, 1.0);  // holding
+    EXPECT_NEAR(cell.x(), 50.0, 1.5 * kCount);
+}
+
 // ---- a move that cannot settle ---------------------------------------------------------------
 
 TEST(Settling, AMoveThatCannotSettleEndsInAPlainAlarm) {
