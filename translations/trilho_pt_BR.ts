@@ -563,10 +563,6 @@
 <context>
     <name>trilho::ui::MainWindow</name>
     <message>
-        <source>The history could not be written: %1</source>
-        <translation>O histórico não pôde ser gravado: %1</translation>
-    </message>
-    <message>
         <source>Didactic D.N.C. system for the automatic rail</source>
         <translation>Sistema D.N.C. didático para trilho automático</translation>
     </message>
@@ -749,6 +745,10 @@
     <message>
         <source>%1 status lines not shown</source>
         <translation>%1 linhas de status não mostradas</translation>
+    </message>
+    <message>
+        <source>The history could not be written: %1</source>
+        <translation>O histórico não pôde ser gravado: %1</translation>
     </message>
     <message>
         <source>Emergency stop: clear the cause, then Reset E-stop.</source>

@@ -67,10 +67,7 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     auto* estopKey = new QShortcut(QKeySequence(Qt::Key_Pause), this);
     estopKey->setContext(Qt::ApplicationShortcut);
     connect(estopKey, &QShortcut::activated, &link_, &MachineLink::emergencyStop);
-    connect(&link_, &MachineLink::journalFailed, this, [this](const QString& reason) {
-        journalProblem_ = reason;
-        statusBar()->showMessage(tr("The history could not be written: %1").arg(reason), 15000);
-    });
+    connect(&link_, &MachineLink::journalFailed, this, &MainWindow::reportJournalProblem);
 
     connect(&link_, &MachineLink::statusChanged, this, &MainWindow::onStatus);
     connect(&link_, &MachineLink::eventArrived, this, &MainWindow::onEvent);
@@ -457,6 +454,12 @@ void MainWindow::onStatus(const ControllerStatus& s) {
         timing += (timing.isEmpty() ? QString() : QStringLiteral("  |  ")) +
                   tr("%1 status lines not shown").arg(dropped);
     timingLabel_->setText(timing);
+}
+
+void MainWindow::reportJournalProblem(const QString& reason) {
+    journalProblem_ = reason;
+    statusBar()->showMessage(tr("The history could not be written: %1").arg(reason), 15000);
+    hintLabel_->setText(nextStepText());
 }
 
 QString MainWindow::nextStepText() const {

@@ -81,6 +81,8 @@ class MainWindow : public QMainWindow {
 
   public:
     bool compiling() const { return compiling_; }
+    /// Says in the status bar that the history cannot be kept (e.g. a read-only folder).
+    void reportJournalProblem(const QString& reason);
 
   private:
     void applyGain(int which, double value);

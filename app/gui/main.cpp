@@ -98,6 +98,7 @@ int main(int argc, char* argv[]) {
     ui::MainWindow window(link, *settings);
     window.setLanguage(lang);
     window.setTheme(theme);
+    if (!journalError.isEmpty()) window.reportJournalProblem(journalError);  // not only stderr
     if (parser.isSet(programOpt) && !window.selectProgram(parser.value(programOpt))) {
         std::fprintf(stderr, "trilho: cannot open program '%s'\n",
                      qPrintable(parser.value(programOpt)));

@@ -308,6 +308,14 @@ class MainWindowTest : public QObject {
         QVERIFY(window_->executeAction()->isEnabled());
     }
 
+    void aHistoryThatCannotBeKeptIsSaidOnScreen() {
+        QString error;
+        QVERIFY(!link_->openJournal(QStringLiteral("/dev/null/history.log"), &error));
+        QVERIFY(!error.isEmpty());
+        window_->reportJournalProblem(error);
+        QVERIFY(window_->nextStepText().contains(QStringLiteral("history could not be written")));
+    }
+
     void escapeIsTheEmergencyStop() {
         QTest::keyClick(window_.get(), '>');
         QTRY_COMPARE(int(status().manualCode), 129);
