@@ -837,10 +837,6 @@
         <translation>Guarda de forma atómica: un fallo nunca deja medio archivo</translation>
     </message>
     <message>
-        <source>cannot open &apos;%1&apos;: %2</source>
-        <translation>no se pudo abrir &apos;%1&apos;: %2</translation>
-    </message>
-    <message>
         <source>cannot save &apos;%1&apos;: %2</source>
         <translation>no se pudo guardar &apos;%1&apos;: %2</translation>
     </message>

@@ -837,10 +837,6 @@
         <translation>Salva de forma atômica: uma falha nunca deixa meio arquivo</translation>
     </message>
     <message>
-        <source>cannot open &apos;%1&apos;: %2</source>
-        <translation>não foi possível abrir &apos;%1&apos;: %2</translation>
-    </message>
-    <message>
         <source>cannot save &apos;%1&apos;: %2</source>
         <translation>não foi possível salvar &apos;%1&apos;: %2</translation>
     </message>

@@ -2,6 +2,7 @@
 
 #include <QEvent>
 #include <QFile>
+
 #include <QHBoxLayout>
 #include <QListWidget>
 #include <QMessageBox>
@@ -9,6 +10,7 @@
 #include <QSaveFile>
 #include <QSplitter>
 #include <QVBoxLayout>
+#include "core/source_file.h"
 
 #include "ui/code_editor.h"
 #include "ui/gcode_highlighter.h"
@@ -62,13 +64,14 @@ void ProgramPanel::changeEvent(QEvent* e) {
 }
 
 bool ProgramPanel::load(const QString& path, QString* error) {
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) {
-        if (error) *error = tr("cannot open '%1': %2").arg(path, f.errorString());
+    // The compiler's reader: a size limit, and a FIFO or a device is refused, never waited on.
+    const SourceFile source = readSourceFile(QFile::encodeName(path).toStdString());
+    if (!source.ok) {
+        if (error) *error = QString::fromStdString(source.error);
         return false;
     }
-    const QByteArray bytes = f.readAll();
-    editor_->setPlainText(QString::fromUtf8(bytes));
+    editor_->setPlainText(
+        QString::fromUtf8(source.bytes.data(), static_cast<qsizetype>(source.bytes.size())));
     editor_->document()->setModified(false);
     path_ = path;
     list_->clear();

@@ -8,6 +8,7 @@
 #include <QListView>
 #include <QListWidget>
 #include <QMenuBar>
+#include <QProcess>
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
@@ -314,6 +315,12 @@ class MainWindowTest : public QObject {
         QVERIFY(!error.isEmpty());
         window_->reportJournalProblem(error);
         QVERIFY(window_->nextStepText().contains(QStringLiteral("history could not be written")));
+    }
+
+    void aFifoIsRefusedNotWaitedOn() {
+        const QString fifo = dir_.filePath(QStringLiteral("prog.fifo"));
+        QCOMPARE(QProcess::execute(QStringLiteral("mkfifo"), {fifo}), 0);
+        QVERIFY(!window_->selectProgram(fifo));  // 1.x: the window blocked for ever
     }
 
     void escapeIsTheEmergencyStop() {
