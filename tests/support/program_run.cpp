@@ -116,6 +116,8 @@ ProgramRunResult runProgram(std::shared_ptr<const Program> program, const Progra
             }
         }
         if (blockSide != 0.0) {
+            r.readOvershootMm =
+                std::max(r.readOvershootMm, (s.positionMm - blockTarget) * blockSide);
             const double over = (x - blockTarget) * blockSide;
             if (over > r.overshootMm) {
                 r.overshootMm = over;

@@ -50,6 +50,8 @@ struct ProgramRunResult {
     /// Largest distance, mm, by which the plant went past a program block's target.
     double overshootMm = 0.0;
     std::int32_t overshootBlockN = -1;
+    /// The same as the encoder reads it (whole counts): what the machine itself can know.
+    double readOvershootMm = 0.0;
     double overshootAtS = 0.0;
     double finalErrorMm = 0.0;      ///< |plant - last programmed target| at the end
     double finalReadErrorMm = 0.0;  ///< the same as the encoder reads it (whole counts)
