@@ -4,9 +4,14 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QMap>
 #include <QSaveFile>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
+
+#include "core/source_file.h"
 
 namespace trilho {
 
@@ -24,7 +29,10 @@ MachineProfile MachineProfile::rail() {
 
 namespace {
 
-/// One table drives reading, writing and validation, so the three never disagree.
+/// One table drives reading, writing and validation, so the three never disagree. The ranges of
+/// the sample period, the gains of both laws, the acceleration and the rapid speed are where the
+/// simulated rail is proven to home and move at both ends (tests/integration/
+/// profile_extremes_test.cpp); the others only refuse nonsense.
 template <typename F>
 void forEachNumber(MachineProfile& p, F&& f) {
     auto& pl = p.plant;
@@ -45,13 +53,13 @@ void forEachNumber(MachineProfile& p, F&& f) {
     f("plant.centreSwitchHalfWidthMm", pl.centreSwitchHalfWidthMm, 0.1, 100.0);
     f("plant.endSwitchLengthMm", pl.endSwitchLengthMm, 0.1, 1000.0);
     auto& l = p.loop;
-    f("loop.samplePeriodS", l.samplePeriodS, 0.0001, 0.1);
-    f("loop.classic.kp", l.classic.kp, 0.0, 1000.0);
-    f("loop.classic.ki", l.classic.ki, 0.0, 1000.0);
-    f("loop.classic.kd", l.classic.kd, 0.0, 1000.0);
-    f("loop.engineered.kp", l.engineered.kp, 0.0, 1000.0);
-    f("loop.engineered.ki", l.engineered.ki, 0.0, 1000.0);
-    f("loop.engineered.kd", l.engineered.kd, 0.0, 1000.0);
+    f("loop.samplePeriodS", l.samplePeriodS, kMinSamplePeriodS, kMaxSamplePeriodS);
+    f("loop.classic.kp", l.classic.kp, 0.1, 0.5);
+    f("loop.classic.ki", l.classic.ki, 0.0001, 0.001);
+    f("loop.classic.kd", l.classic.kd, 0.0, 10.0);
+    f("loop.engineered.kp", l.engineered.kp, 0.5, 5.0);
+    f("loop.engineered.ki", l.engineered.ki, 0.0, 20.0);
+    f("loop.engineered.kd", l.engineered.kd, 0.0, 0.05);
     f("loop.derivativeFilterS", l.derivativeFilterS, 0.0, 1.0);
     f("loop.slewCodesPerS", l.slewCodesPerS, 1.0, 1e7);
     f("loop.followingErrorLimitMm", l.followingErrorLimitMm, 0.1, 10000.0);
@@ -68,8 +76,8 @@ void forEachNumber(MachineProfile& p, F&& f) {
     f("loop.switchDebounceS", l.switchDebounceS, 0.0, 1.0);
     f("loop.watchdogS", l.watchdogS, 0.001, 10.0);
     auto& m = p.motion;
-    f("motion.rapidSpeedMmS", m.rapidSpeedMmS, 1.0, 100000.0);
-    f("motion.accelerationMmS2", m.accelerationMmS2, 1.0, 1e6);
+    f("motion.rapidSpeedMmS", m.rapidSpeedMmS, 10.0, 1800.0);
+    f("motion.accelerationMmS2", m.accelerationMmS2, 100.0, 3000.0);
     f("motion.minAccelerationMmS2", m.minAccelerationMmS2, 1.0, 1e6);
     f("motion.maxDecelerationMmS2", m.maxDecelerationMmS2, 1.0, 1e6);
     f("motion.jogMaxFraction", m.jogMaxFraction, 0.01, 1.0);
@@ -99,6 +107,184 @@ void insert(QJsonObject& root, const QStringList& parts, int i, const QJsonValue
     root.insert(parts[i], child);
 }
 
+/// A value as it reads in the file, for "(got ...)": compact JSON, cut at 40 characters.
+QString jsonText(const QJsonValue& v) {
+    QByteArray text = QJsonDocument(QJsonArray{v}).toJson(QJsonDocument::Compact);
+    text = text.mid(1, text.size() - 2);  // without the array's brackets
+    QString s = QString::fromUtf8(text);
+    if (s.size() > 40) s = s.left(37) + QStringLiteral("...");
+    return s;
+}
+
+/// The keys a profile may hold besides the numbers of forEachNumber.
+enum class KeyKind : unsigned char { Number, String, Bool, Law, Section };
+
+/// Every key path a profile may hold ("loop.engineered.kp"), sections included ("loop",
+/// "loop.engineered"). "source" and "comment" are allowed in every object and are not listed.
+const QMap<QString, KeyKind>& profileKeys() {
+    static const QMap<QString, KeyKind> keys = [] {
+        QMap<QString, KeyKind> k;
+        auto add = [&](const QString& path, KeyKind kind) {
+            k.insert(path, kind);
+            for (qsizetype dot = path.indexOf(QLatin1Char('.')); dot >= 0;
+                 dot = path.indexOf(QLatin1Char('.'), dot + 1))
+                k.insert(path.left(dot), KeyKind::Section);
+        };
+        add(QStringLiteral("name"), KeyKind::String);
+        add(QStringLiteral("description"), KeyKind::String);
+        add(QStringLiteral("limits.hasY"), KeyKind::Bool);
+        add(QStringLiteral("loop.law"), KeyKind::Law);
+        MachineProfile p;
+        forEachNumber(p, [&](const char* key, double&, double, double) {
+            add(QString::fromLatin1(key), KeyKind::Number);
+        });
+        return k;
+    }();
+    return keys;
+}
+
+bool isNoteKey(const QString& key) {
+    return key == QLatin1String("source") || key == QLatin1String("comment");
+}
+
+/// Levenshtein distance, case-insensitive.
+qsizetype editDistance(const QString& a, const QString& b) {
+    const QString x = a.toLower(), y = b.toLower();
+    std::vector<qsizetype> row(static_cast<std::size_t>(y.size()) + 1);
+    for (qsizetype j = 0; j <= y.size(); ++j)
+        row[static_cast<std::size_t>(j)] = j;
+    for (qsizetype i = 1; i <= x.size(); ++i) {
+        qsizetype diagonal = row[0];
+        row[0] = i;
+        for (qsizetype j = 1; j <= y.size(); ++j) {
+            const auto uj = static_cast<std::size_t>(j);
+            const qsizetype up = row[uj];
+            row[uj] =
+                std::min({row[uj] + 1, row[uj - 1] + 1, diagonal + (x[i - 1] == y[j - 1] ? 0 : 1)});
+            diagonal = up;
+        }
+    }
+    return row.back();
+}
+
+/// The valid key at the same level nearest to a misspelt one: the same but for case, else
+/// within 2 edits (1 for keys of 3 characters or fewer), else the one it begins (4 or more
+/// characters: "rapidSpeed" for "rapidSpeedMmS"). Empty when none is near.
+QString nearestKey(const QString& key, const QStringList& valid) {
+    QString best;
+    qsizetype bestDistance = key.size() <= 3 ? 1 : 2;
+    for (const QString& v : valid) {
+        if (v.compare(key, Qt::CaseInsensitive) == 0) return v;
+        const qsizetype d = editDistance(key, v);
+        if (d <= bestDistance && (best.isEmpty() || d < bestDistance)) best = v, bestDistance = d;
+    }
+    if (!best.isEmpty() || key.size() < 4) return best;
+    for (const QString& v : valid)
+        if (v.startsWith(key, Qt::CaseInsensitive)) return v;
+    return {};
+}
+
+/// Every key of obj (at path prefix) must be known and of the right kind; numbers, the law and
+/// hasY are checked further by the reader. Returns the first error ("loop.Kp: unknown key").
+QString checkKeys(const QJsonObject& obj, const QString& prefix) {
+    const QMap<QString, KeyKind>& keys = profileKeys();
+    for (auto it = obj.begin(); it != obj.end(); ++it) {
+        const QString path = prefix.isEmpty() ? it.key() : prefix + QLatin1Char('.') + it.key();
+        const QJsonValue v = it.value();
+        if (isNoteKey(it.key())) {
+            if (!v.isString())
+                return QStringLiteral("%1: must be a string (got %2)").arg(path, jsonText(v));
+            continue;
+        }
+        const auto known = keys.constFind(path);
+        if (known == keys.constEnd()) {
+            QStringList valid{QStringLiteral("comment"), QStringLiteral("source")};
+            const QString level = prefix.isEmpty() ? QString() : prefix + QLatin1Char('.');
+            for (auto k = keys.constBegin(); k != keys.constEnd(); ++k) {
+                if (!k.key().startsWith(level)) continue;
+                const QString rest = k.key().mid(level.size());
+                if (!rest.contains(QLatin1Char('.'))) valid.append(rest);
+            }
+            const QString near = nearestKey(it.key(), valid);
+            return near.isEmpty()
+                       ? QStringLiteral("%1: unknown key").arg(path)
+                       : QStringLiteral("%1: unknown key (did you mean \"%2\"?)").arg(path, near);
+        }
+        switch (*known) {
+            case KeyKind::Section:
+                if (!v.isObject())
+                    return QStringLiteral("%1: must be an object (got %2)").arg(path, jsonText(v));
+                if (QString e = checkKeys(v.toObject(), path); !e.isEmpty()) return e;
+                break;
+            case KeyKind::String:
+                if (!v.isString())
+                    return QStringLiteral("%1: must be a string (got %2)").arg(path, jsonText(v));
+                break;
+            case KeyKind::Bool:
+                if (!v.isBool())
+                    return QStringLiteral("%1: must be true or false (got %2)")
+                        .arg(path, jsonText(v));
+                break;
+            case KeyKind::Number:
+                if (!v.isDouble() || !std::isfinite(v.toDouble()))
+                    return QStringLiteral("%1: must be a number (got %2)").arg(path, jsonText(v));
+                break;
+            case KeyKind::Law:
+                break;  // its own message below
+        }
+    }
+    return {};
+}
+
+/// The checks that involve more than one figure. Returns the first failed one.
+QString checkAcrossKeys(const MachineProfile& p) {
+    auto num = [](double v) { return QString::number(v); };
+    const AxisTravel& x = p.limits.x;
+    const AxisTravel& y = p.limits.y;
+    if (x.softMinMm >= x.softMaxMm)
+        return QStringLiteral("limits.x: softMinMm must be below softMaxMm (got %1 and %2)")
+            .arg(num(x.softMinMm), num(x.softMaxMm));
+    if (y.softMinMm >= y.softMaxMm)
+        return QStringLiteral("limits.y: softMinMm must be below softMaxMm (got %1 and %2)")
+            .arg(num(y.softMinMm), num(y.softMaxMm));
+    if (p.plant.endSwitchMm >= p.plant.hardStopMm)
+        return QStringLiteral("plant.endSwitchMm must be inside plant.hardStopMm (got %1 and %2)")
+            .arg(num(p.plant.endSwitchMm), num(p.plant.hardStopMm));
+    if (x.softMaxMm >= p.plant.endSwitchMm)
+        return QStringLiteral(
+                   "limits.x.softMaxMm: must be inside the right end switch, below "
+                   "plant.endSwitchMm %1 (got %2)")
+            .arg(num(p.plant.endSwitchMm), num(x.softMaxMm));
+    if (x.softMinMm <= -p.plant.endSwitchMm)
+        return QStringLiteral(
+                   "limits.x.softMinMm: must be inside the left end switch, above "
+                   "-plant.endSwitchMm %1 (got %2)")
+            .arg(num(-p.plant.endSwitchMm), num(x.softMinMm));
+    const MotionLimits& m = p.motion;
+    if (m.minAccelerationMmS2 > m.accelerationMmS2)
+        return QStringLiteral(
+                   "motion.minAccelerationMmS2: must not exceed motion.accelerationMmS2 %1 "
+                   "(got %2)")
+            .arg(num(m.accelerationMmS2), num(m.minAccelerationMmS2));
+    if (m.maxDecelerationMmS2 < m.accelerationMmS2)
+        return QStringLiteral(
+                   "motion.maxDecelerationMmS2: must not be below motion.accelerationMmS2 %1 "
+                   "(got %2)")
+            .arg(num(m.accelerationMmS2), num(m.maxDecelerationMmS2));
+    const LoopParams& l = p.loop;
+    if (l.law == LoopLaw::Classic && l.samplePeriodS < kClassicMinSamplePeriodS)
+        return QStringLiteral(
+                   "loop.samplePeriodS: the classic law needs at least %1 s, its gains are per "
+                   "tick (got %2)")
+            .arg(num(kClassicMinSamplePeriodS), num(l.samplePeriodS));
+    if (l.minFollowingErrorMm > l.followingErrorLimitMm)
+        return QStringLiteral(
+                   "loop.minFollowingErrorMm: must not exceed loop.followingErrorLimitMm %1 "
+                   "(got %2)")
+            .arg(num(l.followingErrorLimitMm), num(l.minFollowingErrorMm));
+    return {};
+}
+
 }  // namespace
 
 ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin) {
@@ -117,19 +303,17 @@ ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin
         return result;
     }
     const QJsonObject root = doc.object();
+    if (const QString e = checkKeys(root, QString()); !e.isEmpty()) {
+        result.error = QStringLiteral("%1: %2").arg(origin, e);
+        return result;
+    }
     MachineProfile p = MachineProfile::rail();
     if (root.contains(QStringLiteral("name")))
         p.name = root.value(QStringLiteral("name")).toString();
     if (root.contains(QStringLiteral("description")))
         p.description = root.value(QStringLiteral("description")).toString();
     const QJsonValue hasY = lookup(root, QStringLiteral("limits.hasY"));
-    if (!hasY.isUndefined()) {
-        if (!hasY.isBool()) {
-            result.error = QStringLiteral("%1: limits.hasY: must be true or false").arg(origin);
-            return result;
-        }
-        p.limits.hasY = hasY.toBool();
-    }
+    if (!hasY.isUndefined()) p.limits.hasY = hasY.toBool();  // a bool: checkKeys
     const QJsonValue law = lookup(root, QStringLiteral("loop.law"));
     if (!law.isUndefined()) {
         if (law.toString() == QLatin1String("classic"))
@@ -139,9 +323,7 @@ ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin
         else {
             result.error =
                 QStringLiteral("%1: loop.law: must be \"classic\" or \"engineered\" (got %2)")
-                    .arg(origin,
-                         QString::fromUtf8(
-                             QJsonDocument(QJsonArray{law}).toJson(QJsonDocument::Compact)));
+                    .arg(origin, jsonText(law));
             return result;
         }
     }
@@ -149,12 +331,7 @@ ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin
     forEachNumber(p, [&](const char* key, double& value, double lo, double hi) {
         if (!error.isEmpty()) return;
         const QJsonValue v = lookup(root, QString::fromLatin1(key));
-        if (v.isUndefined()) return;
-        if (!v.isDouble() || !std::isfinite(v.toDouble())) {
-            error =
-                QStringLiteral("%1: %2: must be a number").arg(origin, QString::fromLatin1(key));
-            return;
-        }
+        if (v.isUndefined()) return;  // a finite number: checkKeys
         const double d = v.toDouble();
         if (d < lo || d > hi) {
             error = QStringLiteral("%1: %2: must be between %3 and %4 (got %5)")
@@ -166,10 +343,10 @@ ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin
         }
         value = d;
     });
-    if (error.isEmpty() && p.limits.x.softMinMm >= p.limits.x.softMaxMm)
-        error = QStringLiteral("%1: limits.x: softMinMm must be below softMaxMm").arg(origin);
-    if (error.isEmpty() && p.plant.endSwitchMm >= p.plant.hardStopMm)
-        error = QStringLiteral("%1: plant.endSwitchMm must be inside plant.hardStopMm").arg(origin);
+    if (error.isEmpty()) {
+        if (const QString e = checkAcrossKeys(p); !e.isEmpty())
+            error = QStringLiteral("%1: %2").arg(origin, e);
+    }
     if (!error.isEmpty()) {
         result.error = error;
         return result;
@@ -179,13 +356,16 @@ ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin
 }
 
 ProfileLoad loadMachineProfile(const QString& path) {
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) {
+    const SourceFile file = readRegularFile(QFile::encodeName(path).toStdString(),
+                                            "machine profile '" + path.toStdString() + "'",
+                                            kMaxProfileBytes, "a machine profile");
+    if (!file.ok) {
         ProfileLoad r;
-        r.error = QStringLiteral("cannot open machine profile '%1': %2").arg(path, f.errorString());
+        r.error = QString::fromStdString(file.error);
         return r;
     }
-    return machineProfileFromJson(f.readAll(), path);
+    return machineProfileFromJson(
+        QByteArray(file.bytes.data(), static_cast<qsizetype>(file.bytes.size())), path);
 }
 
 QByteArray machineProfileToJson(const MachineProfile& profile) {
@@ -201,6 +381,15 @@ QByteArray machineProfileToJson(const MachineProfile& profile) {
         insert(root, QString::fromLatin1(key).split(QLatin1Char('.')), 0, value);
     });
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
+}
+
+std::optional<NumberRange> machineProfileRange(const QString& key) {
+    std::optional<NumberRange> range;
+    MachineProfile p;
+    forEachNumber(p, [&](const char* k, double&, double lo, double hi) {
+        if (key == QLatin1String(k)) range = NumberRange{lo, hi};
+    });
+    return range;
 }
 
 bool saveMachineProfile(const MachineProfile& profile, const QString& path, QString* error) {

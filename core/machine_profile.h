@@ -47,6 +47,15 @@ struct LoopGains {
     double kd = 0.0;
 };
 
+/// The sample periods the rail is proven to home and move at (profile_extremes_test.cpp). At
+/// 10 ms homing from the left already stops 0.1 mm short of the hard stop, and at 12.5 ms the
+/// 4 mm centre vane can be stepped over; the servo thread is not asked for more than 2 kHz.
+inline constexpr double kMinSamplePeriodS = 0.0005;
+inline constexpr double kMaxSamplePeriodS = 0.01;
+/// The classic law's gains are per tick, tuned at the VB's 10 ms: below 8 ms the 1996 gains
+/// overshoot a 1000 mm move by 460 mm (1 ms) or stop on a soft limit (2 ms).
+inline constexpr double kClassicMinSamplePeriodS = 0.008;
+
 struct LoopParams {
     LoopLaw law = LoopLaw::Engineered;
     double samplePeriodS = 0.001;  ///< 1 kHz; the original VB timer was 10 ms
@@ -112,13 +121,27 @@ struct MachineProfile {
 
 struct ProfileLoad {
     std::optional<MachineProfile> profile;
-    QString error;  ///< "rail.json: loop.samplePeriodS: must be between 0.0001 and 0.1 (got 5)"
+    QString error;  ///< "rail.json: loop.samplePeriodS: must be between 0.0005 and 0.01 (got 5)"
 };
 
-/// Reads a profile; keys not given keep the defaults of rail(). Every bad value names its key.
+/// Profiles larger than this are refused (rail.json is 2 KB).
+inline constexpr long long kMaxProfileBytes = 1024 * 1024;
+
+/// Reads a profile; keys not given keep the defaults of rail(). Every bad value names its key:
+/// unknown keys (with the nearest valid one, "did you mean"), wrong types, values out of their
+/// range and figures that contradict each other are errors. Besides the profile's own keys, any
+/// object may hold a "source" and a "comment" string (where a figure comes from); they are not
+/// kept. Only regular files of at most kMaxProfileBytes are read (a FIFO or a device is refused
+/// at once, never waited on).
 ProfileLoad loadMachineProfile(const QString& path);
 ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin);
 QByteArray machineProfileToJson(const MachineProfile& profile);
+
+struct NumberRange {
+    double lo = 0.0, hi = 0.0;
+};
+/// The range the reader allows for a number key ("loop.samplePeriodS"); nullopt for others.
+std::optional<NumberRange> machineProfileRange(const QString& key);
 /// Writes atomically (QSaveFile): a crash never leaves half a profile.
 bool saveMachineProfile(const MachineProfile& profile, const QString& path, QString* error);
 

@@ -122,6 +122,38 @@ TEST_F(CliLimits, AFifoIsRefusedWithoutBlocking) {
     EXPECT_TRUE(p.readAllStandardError().contains("not a regular file"));
 }
 
+// Issue 9, item 5: `profile /dev/zero` read until bad_alloc, and a FIFO blocked for ever.
+TEST_F(CliLimits, AProfileFromADeviceOrAFifoIsRefusedAtOnce) {
+    Result zero = trilho::test::runCli({QStringLiteral("profile"), QStringLiteral("/dev/zero")});
+    EXPECT_EQ(zero.exit, 2);
+    EXPECT_EQ(zero.err, QStringLiteral("trilho-cli profile: cannot read machine profile "
+                                       "'/dev/zero': not a regular file\n"));
+    const QString fifo = dir.filePath(QStringLiteral("pipe.json"));
+    ASSERT_EQ(::mkfifo(QFile::encodeName(fifo).constData(), 0600), 0);
+    QProcess p;
+    p.start(QStringLiteral(TRILHO_CLI), {QStringLiteral("profile"), fifo});
+    const bool finished = p.waitForFinished(20000);
+    if (!finished) p.kill(), p.waitForFinished();
+    ASSERT_TRUE(finished) << "trilho-cli blocked on a FIFO";
+    EXPECT_EQ(p.exitCode(), 2);
+    EXPECT_TRUE(p.readAllStandardError().contains("not a regular file"));
+}
+
+TEST_F(CliLimits, AProfileAboveOneMegabyteIsRefused) {
+    const QString file = dir.filePath(QStringLiteral("big.json"));
+    {
+        QFile f(file);
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+        ASSERT_TRUE(f.resize(1024 * 1024 + 1));
+    }
+    Result r = trilho::test::runCli({QStringLiteral("compile"), QStringLiteral("--machine"), file,
+                                     write(QStringLiteral("a.G"), "G0 X1\nM2\n")});
+    EXPECT_EQ(r.exit, 2);
+    EXPECT_TRUE(
+        r.err.contains(QStringLiteral("larger than 1 MB (the limit for a machine profile)")))
+        << r.err.toStdString();
+}
+
 TEST_F(CliLimits, ANonUtf8FileNameIsOpened) {
     const QByteArray name = QFile::encodeName(dir.path()) + "/programa\xFF\xE7.G";
     const int fd = ::open(name.constData(), O_WRONLY | O_CREAT | O_TRUNC, 0600);

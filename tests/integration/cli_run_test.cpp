@@ -72,17 +72,17 @@ TEST_F(CliRun, CompileErrorsExitOneWithoutMoving) {
 }
 
 TEST_F(CliRun, AnAlarmExitsThree) {
-    const QString profile =
-        write(QStringLiteral("m.json"), R"({"limits": {"x": {"softMaxMm": 1294}}})");
+    // A stuck encoder a second into a long move: the encoder stall (16) stops the rail. (This
+    // used a profile with its soft limit past the end switch, which a profile may no longer be.)
     Result r = run({QStringLiteral("--virtual-time"), QStringLiteral("--json"),
-                    QStringLiteral("--machine"), profile,
-                    write(QStringLiteral("end.G"), "G1 X1290 F30\nM2\n")});
+                    QStringLiteral("--fault"), QStringLiteral("stuck-encoder@1"),
+                    write(QStringLiteral("end.G"), "G1 X1000 F30\nM2\n")});
     EXPECT_EQ(r.exit, 3);
     const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
     EXPECT_FALSE(o[QStringLiteral("ok")].toBool(true));
     ASSERT_EQ(o[QStringLiteral("alarms")].toArray().size(), 1);
     EXPECT_EQ(o[QStringLiteral("alarms")].toArray()[0].toObject()[QStringLiteral("code")].toInt(),
-              2);
+              16);
 }
 
 TEST_F(CliRun, MaxSecondsBoundsALoopAndExitsFour) {

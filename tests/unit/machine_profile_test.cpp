@@ -1,8 +1,11 @@
 // The machine profile file: defaults, round trip, the shipped rail.json, and clear errors.
+#include <sys/stat.h>
+
 #include <gtest/gtest.h>
 
 #include <QFile>
 #include <QTemporaryDir>
+#include <string>
 
 #include "core/machine_profile.h"
 
@@ -19,6 +22,7 @@ TEST(MachineProfile, ShippedRailProfileIsTheDefault) {
 TEST(MachineProfile, RoundTripKeepsEveryValue) {
     MachineProfile p;
     p.loop.law = LoopLaw::Classic;
+    p.loop.samplePeriodS = 0.01;  // the classic law's gains are per tick of the VB's 10 ms
     p.loop.engineered.kp = 3.25;
     p.plant.massFactor = 2.5;
     p.limits.hasY = true;
@@ -27,7 +31,7 @@ TEST(MachineProfile, RoundTripKeepsEveryValue) {
     QString error;
     ASSERT_TRUE(saveMachineProfile(p, path, &error)) << error.toStdString();
     ProfileLoad load = loadMachineProfile(path);
-    ASSERT_TRUE(load.profile);
+    ASSERT_TRUE(load.profile) << load.error.toStdString();
     EXPECT_EQ(load.profile->loop.law, LoopLaw::Classic);
     EXPECT_EQ(load.profile->loop.engineered.kp, 3.25);
     EXPECT_EQ(load.profile->plant.massFactor, 2.5);
@@ -48,15 +52,131 @@ TEST(MachineProfile, BadValuesNameTheirKeyAndValue) {
             .error.toStdString();
     };
     EXPECT_EQ(err(R"({"loop": {"samplePeriodS": 5}})"),
-              "t.json: loop.samplePeriodS: must be between 0.0001 and 0.1 (got 5)");
+              "t.json: loop.samplePeriodS: must be between 0.0005 and 0.01 (got 5)");
     EXPECT_EQ(err(R"({"plant": {"movingMassKg": "heavy"}})"),
-              "t.json: plant.movingMassKg: must be a number");
+              "t.json: plant.movingMassKg: must be a number (got \"heavy\")");
     EXPECT_EQ(err(R"({"loop": {"law": "fuzzy"}})"),
-              "t.json: loop.law: must be \"classic\" or \"engineered\" (got [\"fuzzy\"])");
+              "t.json: loop.law: must be \"classic\" or \"engineered\" (got \"fuzzy\")");
     EXPECT_NE(err("{ not json"), "");
     EXPECT_NE(err("[1,2]"), "");
     EXPECT_EQ(err(R"({"limits": {"x": {"softMinMm": 10, "softMaxMm": 5}}})"),
-              "t.json: limits.x: softMinMm must be below softMaxMm");
+              "t.json: limits.x: softMinMm must be below softMaxMm (got 10 and 5)");
+}
+
+std::string loadError(const char* json) {
+    return machineProfileFromJson(QByteArray(json), QStringLiteral("rail.json"))
+        .error.toStdString();
+}
+
+// Issue 9, item 5: a misspelt key was silently ignored and its default used.
+TEST(MachineProfileStrict, UnknownKeysAreErrorsWithTheNearestValidKey) {
+    EXPECT_EQ(loadError(R"({"loop": {"engineered": {"Kp": 2}}})"),
+              "rail.json: loop.engineered.Kp: unknown key (did you mean \"kp\"?)");
+    EXPECT_EQ(loadError(R"({"loop": {"samplePeriod": 0.002}})"),
+              "rail.json: loop.samplePeriod: unknown key (did you mean \"samplePeriodS\"?)");
+    EXPECT_EQ(loadError(R"({"motion": {"rapidSpeed": 100}})"),
+              "rail.json: motion.rapidSpeed: unknown key (did you mean \"rapidSpeedMmS\"?)");
+    EXPECT_EQ(loadError(R"({"plant": {"movingMasKg": 100}})"),
+              "rail.json: plant.movingMasKg: unknown key (did you mean \"movingMassKg\"?)");
+    EXPECT_EQ(loadError(R"({"Limits": {}})"),
+              "rail.json: Limits: unknown key (did you mean \"limits\"?)");
+    EXPECT_EQ(loadError(R"({"limits": {"z": {"softMinMm": 0}}})"),
+              "rail.json: limits.z: unknown key (did you mean \"x\"?)");
+    EXPECT_EQ(loadError(R"({"servo": {"gain": 3}})"), "rail.json: servo: unknown key");
+    // Only keys valid at that level are offered: "kp" is not a key of "loop".
+    EXPECT_EQ(loadError(R"({"loop": {"kp": 2}})"), "rail.json: loop.kp: unknown key");
+}
+
+TEST(MachineProfileStrict, WrongTypesNameTheKey) {
+    EXPECT_EQ(loadError(R"({"loop": 5})"), "rail.json: loop: must be an object (got 5)");
+    EXPECT_EQ(loadError(R"({"plant": []})"), "rail.json: plant: must be an object (got [])");
+    EXPECT_EQ(loadError(R"({"limits": {"x": null}})"),
+              "rail.json: limits.x: must be an object (got null)");
+    EXPECT_EQ(loadError(R"({"name": 7})"), "rail.json: name: must be a string (got 7)");
+    EXPECT_EQ(loadError(R"({"limits": {"hasY": "yes"}})"),
+              "rail.json: limits.hasY: must be true or false (got \"yes\")");
+    EXPECT_EQ(loadError(R"({"loop": {"kd": {"source": "x"}}})"), "rail.json: loop.kd: unknown key");
+    EXPECT_EQ(loadError(R"({"loop": {"engineered": {"kd": [0.02]}}})"),
+              "rail.json: loop.engineered.kd: must be a number (got [0.02])");
+    EXPECT_EQ(loadError(R"({"source": 3})"), "rail.json: source: must be a string (got 3)");
+}
+
+TEST(MachineProfileStrict, SourceAndCommentStringsAreAllowedAnywhere) {
+    const ProfileLoad load = machineProfileFromJson(
+        R"({"source": "xy.md", "comment": "c",
+            "plant": {"source": "datasheet", "gearRatio": 5},
+            "loop": {"engineered": {"comment": "tuned 2024", "kp": 1.5}},
+            "limits": {"x": {"source": "drawing 3", "softMinMm": -100}}})",
+        QStringLiteral("t.json"));
+    ASSERT_TRUE(load.profile) << load.error.toStdString();
+    EXPECT_EQ(load.profile->plant.gearRatio, 5.0);
+    EXPECT_EQ(load.profile->loop.engineered.kp, 1.5);
+    EXPECT_EQ(load.profile->limits.x.softMinMm, -100.0);
+}
+
+TEST(MachineProfileStrict, FiguresThatContradictEachOtherAreErrors) {
+    EXPECT_EQ(loadError(R"({"limits": {"y": {"softMinMm": 300, "softMaxMm": 0}}})"),
+              "rail.json: limits.y: softMinMm must be below softMaxMm (got 300 and 0)");
+    EXPECT_EQ(loadError(R"({"limits": {"x": {"softMaxMm": 1280}}})"),
+              "rail.json: limits.x.softMaxMm: must be inside the right end switch, below "
+              "plant.endSwitchMm 1280 (got 1280)");
+    EXPECT_EQ(loadError(R"({"limits": {"x": {"softMinMm": -1290}}})"),
+              "rail.json: limits.x.softMinMm: must be inside the left end switch, above "
+              "-plant.endSwitchMm -1280 (got -1290)");
+    EXPECT_EQ(loadError(R"({"plant": {"endSwitchMm": 1300}})"),
+              "rail.json: plant.endSwitchMm must be inside plant.hardStopMm (got 1300 and 1295)");
+    EXPECT_EQ(loadError(R"({"motion": {"minAccelerationMmS2": 2600}})"),
+              "rail.json: motion.minAccelerationMmS2: must not exceed motion.accelerationMmS2 "
+              "2500 (got 2600)");
+    EXPECT_EQ(loadError(R"({"motion": {"maxDecelerationMmS2": 2000}})"),
+              "rail.json: motion.maxDecelerationMmS2: must not be below motion.accelerationMmS2 "
+              "2500 (got 2000)");
+    EXPECT_EQ(loadError(R"({"loop": {"minFollowingErrorMm": 30}})"),
+              "rail.json: loop.minFollowingErrorMm: must not exceed loop.followingErrorLimitMm "
+              "25 (got 30)");
+    EXPECT_EQ(loadError(R"({"loop": {"law": "classic", "samplePeriodS": 0.001}})"),
+              "rail.json: loop.samplePeriodS: the classic law needs at least 0.008 s, its gains "
+              "are per tick (got 0.001)");
+    EXPECT_EQ(loadError(R"({"loop": {"law": "classic", "samplePeriodS": 0.01}})"), "");
+}
+
+TEST(MachineProfileStrict, GainsAndPeriodsAreNarrowedToWhereTheRailWorks) {
+    EXPECT_EQ(loadError(R"({"loop": {"samplePeriodS": 0.05}})"),
+              "rail.json: loop.samplePeriodS: must be between 0.0005 and 0.01 (got 0.05)");
+    EXPECT_EQ(loadError(R"({"loop": {"engineered": {"kp": 0}}})"),
+              "rail.json: loop.engineered.kp: must be between 0.5 and 5 (got 0)");
+    EXPECT_EQ(loadError(R"({"loop": {"classic": {"ki": 900}}})"),
+              "rail.json: loop.classic.ki: must be between 0.0001 and 0.001 (got 900)");
+    EXPECT_EQ(loadError(R"({"motion": {"rapidSpeedMmS": 5000}})"),
+              "rail.json: motion.rapidSpeedMmS: must be between 10 and 1800 (got 5000)");
+}
+
+TEST(MachineProfileStrict, ShippedXyTableProfileLoads) {
+    const ProfileLoad load =
+        loadMachineProfile(QStringLiteral(TRILHO_RESOURCES_DIR "/machines/xy_dc_table.json"));
+    ASSERT_TRUE(load.profile) << load.error.toStdString();
+    EXPECT_TRUE(load.profile->limits.hasY);
+}
+
+TEST(MachineProfileStrict, OnlyRegularFilesOfAtMostOneMegabyteAreRead) {
+    const ProfileLoad zero = loadMachineProfile(QStringLiteral("/dev/zero"));
+    EXPECT_EQ(zero.error.toStdString(),
+              "cannot read machine profile '/dev/zero': not a regular file");
+    QTemporaryDir dir;
+    const QString big = dir.filePath(QStringLiteral("big.json"));
+    {
+        QFile f(big);
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+        ASSERT_TRUE(f.resize(kMaxProfileBytes + 1));
+    }
+    EXPECT_EQ(loadMachineProfile(big).error,
+              QStringLiteral("cannot read machine profile '%1': larger than 1 MB (the limit for a "
+                             "machine profile)")
+                  .arg(big));
+    const QString fifo = dir.filePath(QStringLiteral("pipe.json"));
+    ASSERT_EQ(::mkfifo(QFile::encodeName(fifo).constData(), 0600), 0);
+    EXPECT_EQ(loadMachineProfile(fifo).error,
+              QStringLiteral("cannot read machine profile '%1': not a regular file").arg(fifo));
 }
 
 TEST(MachineProfile, MissingFileIsAClearError) {
