@@ -42,6 +42,8 @@ constexpr const char* kHistory[static_cast<int>(EventKind::Count_)] = {
     QT_TRANSLATE_NOOP("Controller", "Emergency stop reset."),
 };
 
+constexpr const char* kWarningLine = QT_TRANSLATE_NOOP("Controller", "Warning %2: %3");
+
 constexpr const char* kOnline[static_cast<int>(EventKind::Count_)] = {
     QT_TRANSLATE_NOOP("Controller", "POSITIONING"),
     QT_TRANSLATE_NOOP("Controller", "POSITIONING"),
@@ -131,6 +133,12 @@ QString alarmText(AlarmCode code, double value) {
 }
 
 QString historyLine(const ControllerEvent& e) {
+    // A warning (the machine goes on) says so: "Warning 13: ...", not "Alarm 13".
+    if (e.kind == EventKind::AlarmRaised && alarmSeverity(e.alarm) == AlarmSeverity::Warning &&
+        e.alarm != AlarmCode::CompileErrors && e.alarm != AlarmCode::SoftLimit)
+        return substitute(
+            QCoreApplication::translate(kContext, kWarningLine),
+            {QString(), QString::number(static_cast<int>(e.alarm)), alarmText(e.alarm, e.value)});
     const QString n = e.n >= 0 ? QStringLiteral("%1").arg(e.n, 4, 10, QLatin1Char('0')) : QString();
     QString x = number(e.x);
     QString third = number(e.feed);

@@ -332,16 +332,21 @@ void MachineController::beginBlock() {
     switch (b.op) {
         case Op::Rapid:
             post(EventKind::Rapid, b.n, b.x);
+            // A move of no length is no activity: a cycle of them is a motionless loop.
+            if (std::abs(b.x - servo_.sample().targetMm) > 1e-9 || !haveTarget_)
+                gotosSinceActivity_ = 0;
             servo_.moveTo(b.x, 1.0);
-            gotosSinceActivity_ = 0, haveTarget_ = true, lastTargetMm_ = b.x;
+            haveTarget_ = true, lastTargetMm_ = b.x;
             break;
         case Op::Linear:
             post(EventKind::Linear, b.n, b.x, b.feed);
+            if (std::abs(b.x - servo_.sample().targetMm) > 1e-9 || !haveTarget_)
+                gotosSinceActivity_ = 0;
             servo_.moveTo(b.x, b.feed / 100.0);
-            gotosSinceActivity_ = 0, haveTarget_ = true, lastTargetMm_ = b.x;
+            haveTarget_ = true, lastTargetMm_ = b.x;
             break;
         case Op::Dwell:
-            gotosSinceActivity_ = 0;
+            if (b.seconds() > 0.0) gotosSinceActivity_ = 0;  // g04 x0 waits for nothing
             post(EventKind::Dwell, b.n, b.seconds());
             status_.dwellRemainingS = b.seconds();
             setState(ControllerState::Waiting);
@@ -376,11 +381,11 @@ void MachineController::beginBlock() {
             // with a warning rather than spin status lines at the servo rate for ever.
             if (++gotosSinceActivity_ > gotoBlocks_) {
                 gotosSinceActivity_ = 0;
-                raiseAlarm(AlarmCode::MotionlessLoop);
+                raiseAlarm(AlarmCode::MotionlessLoop);  // says it is held and what to do
                 holdFrom_ = ControllerState::Running;
                 status_.pause = PauseReason::Hold;
+                status_.heldByController = true;
                 setState(ControllerState::Paused);
-                post(EventKind::Paused, b.n);
             } else if (status_.singleBlock) {
                 status_.pause = PauseReason::SingleBlock;
                 setState(ControllerState::Paused);
@@ -492,6 +497,7 @@ void MachineController::hold() {
 
 void MachineController::resume() {
     if (status_.state != ControllerState::Paused) return;
+    status_.heldByController = false;
     if (status_.pause != PauseReason::Hold) return pressContinue();
     status_.pause = PauseReason::None;
     post(EventKind::Resumed, status_.blockN);
@@ -519,6 +525,7 @@ void MachineController::stop() {
     approachFirst_ = false;
     startAfterHoming_ = false;
     ending_ = false;
+    status_.heldByController = false;
     servo_.setSoftLimitsActive(true);
     setState(ControllerState::AutoIdle);
     post(EventKind::Stopped);
@@ -543,6 +550,7 @@ void MachineController::abandonRun() {
     startAfterHoming_ = false;
     jogging_ = false;
     ending_ = false;
+    status_.heldByController = false;
     status_.manualCode = kDacZero;
     servo_.setSoftLimitsActive(true);
 }

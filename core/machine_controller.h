@@ -34,7 +34,8 @@ struct ControllerStatus {
     ControllerState state = ControllerState::Manual;
     ControllerState modeBeforeAlarm = ControllerState::Manual;
     PauseReason pause = PauseReason::None;
-    bool automatic = false;  ///< Automatic selected (as opposed to Manual)
+    bool heldByController = false;  ///< a Hold the controller made (a motionless loop)
+    bool automatic = false;         ///< Automatic selected (as opposed to Manual)
     bool homed = false;
     bool singleBlock = false;
     bool programLoaded = false;

@@ -205,8 +205,16 @@ bool RailServo::guardSoftLimits() {
     // manual drive code. The end switches stay the last resort.
     if (!limitsActive_ || sample_.mode == ServoMode::Idle || sample_.mode == ServoMode::Fault)
         return true;
-    constexpr double kToleranceMm = 0.5;
     const double v = velocity_;
+    // The engineered law's plan never leaves the limits: while the platform follows it (the
+    // last error within the re-plan threshold and a late tick's allowance) the plan governs,
+    // and the velocity estimate's lag behind a braking platform cannot trip a false stop.
+    if (sample_.mode == ServoMode::Move && profile_.loop.law == LoopLaw::Engineered &&
+        std::abs(sample_.errorMm) <= profile_.loop.replanErrorMm + lateAllowanceMm_)
+        return true;
+    // 0.5 mm for the estimate's noise, plus what it lags by after a long period.
+    const double kToleranceMm =
+        0.5 + std::abs(v) * std::max(0.0, sample_.lastPeriodS - profile_.loop.samplePeriodS);
     const double stopAt =
         sample_.positionMm + v * std::abs(v) / (2.0 * profile_.motion.maxDecelerationMmS2);
     const AxisTravel& lim = profile_.limits.x;

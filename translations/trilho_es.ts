@@ -116,6 +116,10 @@
         <translation>Emergencia liberada.</translation>
     </message>
     <message>
+        <source>Warning %2: %3</source>
+        <translation>Aviso %2: %3</translation>
+    </message>
+    <message>
         <source>POSITIONING</source>
         <translation>POSICIONANDO</translation>
     </message>

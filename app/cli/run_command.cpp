@@ -3,6 +3,8 @@
 //   [--machine PROFILE.json] [--tick-jitter MAX_MS] [--jitter-rate P] [--seed N]
 //   [--fault NAME[@T][=V]]... FILE
 // Compiles (errors: exit 1, nothing moves), homes, and runs the program on the simulated rail.
+#include <fcntl.h>
+#include <unistd.h>
 #include <QCommandLineParser>
 #include <QFile>
 #include <QFileInfo>
@@ -10,8 +12,10 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QSaveFile>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <thread>
 
@@ -52,6 +56,7 @@ struct Report {
     QStringList history;
     qint64 omitted = 0;
     QJsonArray alarms;
+    bool offTarget = false;  ///< warning 13: the program ended away from its last target
     void add(const ControllerEvent& e) {
         const QString line = historyLine(e);
         if (streamText) {
@@ -60,10 +65,15 @@ struct Report {
             if (history.size() == kKeptLines) history.removeFirst(), ++omitted;
             history << line;
         }
+        if (e.kind == EventKind::AlarmRaised && e.alarm == AlarmCode::FinalPositionOff)
+            offTarget = true;
         if (e.kind == EventKind::AlarmRaised && alarms.size() < kKeptLines) {
             QJsonObject a;
             a[QStringLiteral("code")] = static_cast<int>(e.alarm);
             a[QStringLiteral("text")] = alarmText(e.alarm, e.value);
+            a[QStringLiteral("severity")] = alarmSeverity(e.alarm) == AlarmSeverity::Warning
+                                                ? QStringLiteral("warning")
+                                                : QStringLiteral("alarm");
             alarms.append(a);
         }
     }
@@ -80,8 +90,20 @@ class TraceFile {
         path_ = path;
         const QFileInfo info(path);
         if (info.exists() && !info.isFile() && !info.isDir()) {
-            auto f = std::make_unique<QFile>(path);
-            if (!f->open(QIODevice::WriteOnly | QIODevice::Unbuffered)) {
+            // Opened without blocking: a FIFO nobody reads is an error now, not a hang.
+            const int fd = ::open(QFile::encodeName(path).constData(), O_WRONLY | O_NONBLOCK);
+            if (fd < 0) {
+                const int e = errno;
+                *error = QStringLiteral("cannot write trace '%1': %2")
+                             .arg(path, e == ENXIO ? QStringLiteral("no program reads this FIFO")
+                                                   : QString::fromLocal8Bit(std::strerror(e)));
+                return false;
+            }
+            ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+            auto f = std::make_unique<QFile>();
+            if (!f->open(fd, QIODevice::WriteOnly | QIODevice::Unbuffered,
+                         QFileDevice::AutoCloseHandle)) {
+                ::close(fd);
                 *error = QStringLiteral("cannot write trace '%1': %2").arg(path, f->errorString());
                 return false;
             }
@@ -150,6 +172,9 @@ struct Supervisor {
         if (s.programFinished && s.state == ControllerState::AutoIdle)
             return outcome = Outcome::Finished, true;
         if (s.state == ControllerState::Alarm || s.state == ControllerState::EStop)
+            return outcome = Outcome::Alarm, true;
+        // Held by the controller (a motionless loop): no operator here to stop or continue it.
+        if (s.state == ControllerState::Paused && s.heldByController)
             return outcome = Outcome::Alarm, true;
         if (options.maxSeconds >= 0 && elapsedS >= options.maxSeconds - 1e-9)
             return outcome = Outcome::TimeLimit, true;
@@ -422,6 +447,18 @@ int runCommand(const QStringList& args) {
                                  .arg(file)
                                  .arg(b.line));
     }
+    if (parser.isSet(traceOpt)) {
+        if (options.tracePath.isEmpty()) return usage(QStringLiteral("--trace needs a file name"));
+        // Never write the trace over the program it runs (or the profile).
+        const QString traceCanonical = QFileInfo(options.tracePath).canonicalFilePath();
+        const QString machine = parser.value(machineOpt);
+        if (!traceCanonical.isEmpty() &&
+            (traceCanonical == QFileInfo(file).canonicalFilePath() ||
+             (!machine.isEmpty() && traceCanonical == QFileInfo(machine).canonicalFilePath())))
+            return usage(QStringLiteral("--trace '%1' is an input of this run: refusing to "
+                                        "write over it")
+                             .arg(options.tracePath));
+    }
     TraceFile trace;
     QString traceError;
     if (!trace.open(options.tracePath, &traceError)) return usage(traceError);
@@ -438,7 +475,7 @@ int runCommand(const QStringList& args) {
     const double finalMm = last.servo.positionMm;
     if (options.json) {
         QJsonObject o;
-        o[QStringLiteral("ok")] = outcome == Outcome::Finished;
+        o[QStringLiteral("ok")] = outcome == Outcome::Finished && !report.offTarget;
         o[QStringLiteral("history")] = QJsonArray::fromStringList(report.history);
         if (report.omitted) o[QStringLiteral("history_omitted")] = double(report.omitted);
         o[QStringLiteral("alarms")] = report.alarms;
@@ -464,6 +501,8 @@ int runCommand(const QStringList& args) {
         err(QStringLiteral("trilho-cli run: %1\n").arg(trace.error()));
         if (outcome == Outcome::Finished) return kUsage;
     }
+    // A program that ended away from where it sent the platform is no success (warning 13).
+    if (outcome == Outcome::Finished && report.offTarget) return kAlarm;
     switch (outcome) {
         case Outcome::Finished:
             return kOk;

@@ -256,6 +256,43 @@ TEST_F(CliRun, TraceIntoAFifoReachesItsReader) {
     EXPECT_FALSE(QFileInfo(fifo).isFile());  // still a FIFO
 }
 
+TEST_F(CliRun, TheTraceNeverOverwritesTheProgramAndAFifoWithoutReaderIsAnError) {
+    const QString prog = write(QStringLiteral("p.G"), "G0 X10\nM2\n");
+    Result r = run({QStringLiteral("--virtual-time"), QStringLiteral("--trace"), prog, prog});
+    EXPECT_EQ(r.exit, 2);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("refusing"))) << r.err.toStdString();
+    QFile f(prog);
+    ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+    EXPECT_EQ(f.readAll(), QByteArray("G0 X10\nM2\n"));  // untouched
+    const QString fifo = dir.filePath(QStringLiteral("lonely.fifo"));
+    ASSERT_EQ(QProcess::execute(QStringLiteral("mkfifo"), {fifo}), 0);
+    Result lonely = run({QStringLiteral("--virtual-time"), QStringLiteral("--trace"), fifo, prog});
+    EXPECT_EQ(lonely.exit, 2);
+    EXPECT_TRUE(lonely.err.contains(QStringLiteral("no program reads")))
+        << lonely.err.toStdString();
+}
+
+TEST_F(CliRun, EndingOffTargetIsNoSuccessAndAMotionlessLoopEndsTheRun) {
+    const QString classic = write(QStringLiteral("classic.json"),
+                                  R"({"loop": {"law": "classic", "samplePeriodS": 0.01,
+                                      "classicInPositionMm": 3}})");
+    Result r = run({QStringLiteral("--virtual-time"), QStringLiteral("--json"),
+                    QStringLiteral("--machine"), classic, program("passo_incremental.G")});
+    EXPECT_EQ(r.exit, 3) << r.out.toStdString() << r.err.toStdString();
+    const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+    EXPECT_FALSE(o[QStringLiteral("ok")].toBool());
+    const QJsonObject w = o[QStringLiteral("alarms")].toArray().last().toObject();
+    EXPECT_EQ(w[QStringLiteral("code")].toInt(), 13);
+    EXPECT_EQ(w[QStringLiteral("severity")].toString(), QStringLiteral("warning"));
+    Result loop =
+        run({QStringLiteral("--virtual-time"),
+             write(QStringLiteral("loop.G"), "N10 G0 X100\nN20 G4 X0\nN30 M3 X20\nN40 M2\n")});
+    EXPECT_EQ(loop.exit, 3);
+    EXPECT_TRUE(loop.out.contains(QStringLiteral("Warning 15: Motionless loop")))
+        << loop.out.toStdString();
+    EXPECT_LT(loop.out.size(), 4000);
+}
+
 TEST_F(CliRun, TheMaxSecondsMessageNamesItsBound) {
     Result r = run({QStringLiteral("--virtual-time"), QStringLiteral("--max-seconds"),
                     QStringLiteral("1e8"), program("exemplo_documento.G")});

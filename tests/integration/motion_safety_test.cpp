@@ -264,6 +264,22 @@ TEST(SoftLimits, JoggingToTheLimitArrivesWithoutTrippingTheGuard) {
     EXPECT_EQ(cell.c().status().state, ControllerState::Manual);
 }
 
+TEST(SoftLimits, MovesToTheLimitsWithLateTicksRaiseNoFalseStop) {
+    // Targets on the soft limits themselves, 20 ms late ticks at 5 %: the guard once tripped
+    // on its own velocity estimate lagging the braking platform.
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+        test::ProgramRunSpec spec;
+        spec.seed = seed;
+        spec.faults.tickJitterMaxS = 0.020;
+        spec.faults.tickJitterRate = 0.05;
+        const auto r =
+            test::runProgram(compileText("G0 X1270\nG0 X-1270\nG1 X1270 F30\nM2\n"), spec);
+        EXPECT_TRUE(r.finished && r.alarms.empty()) << "seed " << seed;
+        EXPECT_LT(r.maxPlantMm, 1280.0);
+        EXPECT_GT(r.minPlantMm, -1280.0);
+    }
+}
+
 TEST(SoftLimits, TheClassicLawNeverPassesASoftLimit) {
     // The 1996 law with its own gains runs G0 X1000 into the right end switch in 1.x.
     MachineProfile p = MachineProfile::rail();
