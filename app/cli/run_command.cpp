@@ -14,6 +14,7 @@
 #include <QSaveFile>
 #include <cerrno>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -243,6 +244,13 @@ Outcome runVirtual(const MachineProfile& profile, std::shared_ptr<const Program>
     return outcome;
 }
 
+/// Ctrl-C or kill during a real-time run: the servo thread gets an E-stop and the run is
+/// reported (history, alarms, where the platform stopped) instead of lost.
+volatile std::sig_atomic_t g_interrupted = 0;
+extern "C" void onInterrupt(int) {
+    g_interrupted = 1;
+}
+
 Outcome runRealTime(const MachineProfile& profile, std::shared_ptr<const Program> program,
                     const RunOptions& options, Report& report, TraceFile& trace,
                     ControllerStatus& last, double& plantMm) {
@@ -261,9 +269,17 @@ Outcome runRealTime(const MachineProfile& profile, std::shared_ptr<const Program
     Supervisor sup{options};
     Outcome outcome = Outcome::Finished;
     const std::int64_t t0 = monotonicNs();
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);  // history lines as they happen, even piped
+    std::signal(SIGINT, onInterrupt);
+    std::signal(SIGTERM, onInterrupt);
+    bool interrupted = false;
     while (true) {
         // The command line polls the snapshot; the servo thread never waits for it.
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        if (g_interrupted && !interrupted) {
+            interrupted = true;
+            worker.requestEmergencyStop();
+        }
         worker.drainEvents([&](const ControllerEvent& e) { report.add(e); });
         worker.drainTrace([&](const TraceRow& r) { trace.row(r); });
         const ControllerStatus s = worker.snapshot();

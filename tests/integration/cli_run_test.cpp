@@ -300,6 +300,26 @@ TEST_F(CliRun, TheMaxSecondsMessageNamesItsBound) {
     EXPECT_TRUE(r.err.contains(QStringLiteral("from 0 to 1e7"))) << r.err.toStdString();
 }
 
+TEST_F(CliRun, ARealTimeRunStoppedByASignalIsReportedAsAnEmergencyStop) {
+    QProcess p;
+    p.start(QStringLiteral(TRILHO_CLI), {QStringLiteral("run"), program("ciclo_continuo.G")});
+    ASSERT_TRUE(p.waitForStarted());
+    // Wait until it is running (a history line arrived), then interrupt it as Ctrl-C does.
+    QByteArray out;
+    for (int i = 0; i < 200 && !out.contains("Positioning"); ++i) {
+        p.waitForReadyRead(100);
+        out += p.readAllStandardOutput();
+    }
+    ASSERT_TRUE(out.contains("Positioning")) << out.toStdString();  // line-buffered, piped
+    p.terminate();                                                  // SIGTERM
+    ASSERT_TRUE(p.waitForFinished(10000));
+    out += p.readAllStandardOutput();
+    EXPECT_EQ(p.exitStatus(), QProcess::NormalExit);
+    EXPECT_EQ(p.exitCode(), 3);
+    EXPECT_TRUE(out.contains("Alarm 9: Emergency stop")) << out.toStdString();
+    EXPECT_TRUE(out.contains("final position:"));
+}
+
 TEST_F(CliRun, RealTimeRunOfAShortProgram) {
     Result r = run({QStringLiteral("--json"), write(QStringLiteral("m.G"), "G1 X20 F20\nM2\n")});
     EXPECT_EQ(r.exit, 0) << r.err.toStdString();
