@@ -241,6 +241,11 @@ Outcome runVirtual(const MachineProfile& profile, std::shared_ptr<const Program>
     }
     plantMm = rail.state().positionMm;
     last = c.status();
+    for (const ScheduledFault& f : schedule)
+        if (!f.applied)
+            err(QStringLiteral("trilho-cli run: a --fault due at %1 s was never injected: the "
+                               "program ended first\n")
+                    .arg(f.atS));
     return outcome;
 }
 
@@ -375,7 +380,7 @@ int runCommand(const QStringList& args) {
         return usage(QStringLiteral("--mass-factor must be a number from 0.1 to 20 (got '%1')")
                          .arg(parser.value(massOpt)));
     if (!number(continueOpt, 0.0, 1e6, options.continueAfterS))
-        return usage(QStringLiteral("--continue-after must be a number of seconds >= 0 (got '%1')")
+        return usage(QStringLiteral("--continue-after must be seconds from 0 to 1e6 (got '%1')")
                          .arg(parser.value(continueOpt)));
     if (!number(maxOpt, 0.0, 1e7, options.maxSeconds))
         return usage(QStringLiteral("--max-seconds must be a number of seconds from 0 to 1e7 (got "
@@ -392,8 +397,10 @@ int runCommand(const QStringList& args) {
         bool ok = false;
         options.seed = parser.value(seedOpt).toULongLong(&ok);
         if (!ok)
-            return usage(QStringLiteral("--seed must be a whole number >= 0 (got '%1')")
-                             .arg(parser.value(seedOpt)));
+            return usage(
+                QStringLiteral(
+                    "--seed must be a whole number from 0 to 18446744073709551615 (got '%1')")
+                    .arg(parser.value(seedOpt)));
     }
     for (const QString& f : parser.values(faultOpt)) {
         const FaultParse parsed = parseFault(f.toStdString());

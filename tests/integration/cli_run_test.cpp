@@ -293,6 +293,14 @@ TEST_F(CliRun, EndingOffTargetIsNoSuccessAndAMotionlessLoopEndsTheRun) {
     EXPECT_LT(loop.out.size(), 4000);
 }
 
+TEST_F(CliRun, AFaultDueAfterTheEndIsSaidNotSilentlyDropped) {
+    Result r = run({QStringLiteral("--virtual-time"), QStringLiteral("--fault"),
+                    QStringLiteral("stuck-encoder@100"), program("exemplo_documento.G")});
+    EXPECT_EQ(r.exit, 0);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("due at 100 s was never injected")))
+        << r.err.toStdString();
+}
+
 TEST_F(CliRun, TheMaxSecondsMessageNamesItsBound) {
     Result r = run({QStringLiteral("--virtual-time"), QStringLiteral("--max-seconds"),
                     QStringLiteral("1e8"), program("exemplo_documento.G")});
