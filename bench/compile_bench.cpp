@@ -22,8 +22,8 @@
 #include <string>
 #include <vector>
 
-#include "core/compiler.h"
-#include "core/source_file.h"
+#include "core/gcode/compiler.h"
+#include "core/gcode/source_file.h"
 
 namespace {
 

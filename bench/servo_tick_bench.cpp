@@ -4,9 +4,9 @@
 //   --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
-#include "core/position_loop.h"
-#include "core/rail_servo.h"
-#include "core/trapezoid.h"
+#include "core/control/position_loop.h"
+#include "core/control/rail_servo.h"
+#include "core/motion/trapezoid.h"
 #include "hal/sim/sim_rail.h"
 
 namespace {

@@ -3,7 +3,7 @@
 // diagnostics underlined on their lines.
 #include <QPlainTextEdit>
 
-#include "core/diagnostic.h"
+#include "core/gcode/diagnostic.h"
 
 namespace trilho {
 namespace ui {

@@ -11,7 +11,7 @@
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 
-#include "core/journal.h"
+#include "core/machine/journal.h"
 
 namespace trilho {
 namespace ui {

@@ -2,7 +2,7 @@
 
 #include <QDateTime>
 
-#include "core/event_text.h"
+#include "core/machine/event_text.h"
 
 namespace trilho {
 namespace ui {
@@ -10,7 +10,7 @@ namespace ui {
 MachineLink::MachineLink(const MachineProfile& profile, QObject* parent)
     : QObject(parent), profile_(profile), rail_(std::make_unique<SimRail>(profile.plant)) {
     rail_->placeAt(0.0);
-    controller_ = std::make_unique<MachineController>(profile_, *rail_);
+    controller_ = std::make_unique<RailController>(profile_, *rail_);
     SimRail* rail = rail_.get();
     faultHandoff_.store(faults_);
     worker_ = std::make_unique<ServoWorker>(*controller_, *rail_, [this, rail](double dt) {

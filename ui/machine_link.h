@@ -8,10 +8,10 @@
 #include <atomic>
 #include <memory>
 
-#include "core/journal.h"
-#include "core/program.h"
-#include "core/seqlock.h"
-#include "core/servo_worker.h"
+#include "core/gcode/program.h"
+#include "core/machine/journal.h"
+#include "core/runtime/seqlock.h"
+#include "core/runtime/servo_worker.h"
 #include "hal/sim/sim_rail.h"
 
 namespace trilho {
@@ -85,7 +85,7 @@ class MachineLink : public QObject {
   private:
     MachineProfile profile_;
     std::unique_ptr<SimRail> rail_;
-    std::unique_ptr<MachineController> controller_;
+    std::unique_ptr<RailController> controller_;
     std::unique_ptr<ServoWorker> worker_;
     QTimer timer_;
     ControllerStatus status_;

@@ -23,9 +23,9 @@
 #include <QScrollArea>
 #include <QShortcut>
 #include <QtConcurrent/QtConcurrentRun>
-#include "core/compiler.h"
-#include "core/diagnostic_text.h"
-#include "core/event_text.h"
+#include "core/gcode/compiler.h"
+#include "core/gcode/diagnostic_text.h"
+#include "core/machine/event_text.h"
 #include "translations/i18n.h"
 #include "ui/code_editor.h"
 #include "ui/execution_panel.h"

@@ -7,8 +7,8 @@
 #include <functional>
 #include <memory>
 
-#include "core/dialect.h"
-#include "core/machine_controller.h"
+#include "core/gcode/dialect.h"
+#include "core/machine/rail_controller.h"
 #include "ui/theme.h"
 
 class QAction;

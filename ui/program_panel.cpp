@@ -10,7 +10,7 @@
 #include <QSaveFile>
 #include <QSplitter>
 #include <QVBoxLayout>
-#include "core/source_file.h"
+#include "core/gcode/source_file.h"
 
 #include "ui/code_editor.h"
 #include "ui/gcode_highlighter.h"

@@ -3,7 +3,7 @@
 // diagnostics marked on their lines and listed (a click jumps there), atomic save.
 #include <QWidget>
 
-#include "core/program.h"
+#include "core/gcode/program.h"
 
 class QListWidget;
 class QPushButton;

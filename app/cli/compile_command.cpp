@@ -9,10 +9,10 @@
 #include "app/cli/commands.h"
 #include "app/cli/diagnostics_text.h"
 #include "app/cli/program_json.h"
-#include "core/compiler.h"
-#include "core/diagnostic_text.h"
-#include "core/machine_profile.h"
-#include "core/source_file.h"
+#include "core/gcode/compiler.h"
+#include "core/gcode/diagnostic_text.h"
+#include "core/gcode/source_file.h"
+#include "core/machine/machine_profile.h"
 #include "translations/i18n.h"
 
 namespace trilho::cli {

@@ -1,6 +1,6 @@
 #include "app/cli/diagnostics_text.h"
 
-#include "core/diagnostic_text.h"
+#include "core/gcode/diagnostic_text.h"
 
 namespace trilho::cli {
 

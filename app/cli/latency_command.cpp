@@ -8,7 +8,7 @@
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
-#include "core/servo_worker.h"
+#include "core/runtime/servo_worker.h"
 #include "hal/sim/sim_rail.h"
 
 namespace trilho::cli {
@@ -77,7 +77,7 @@ int latencyCommand(const QStringList& args) {
 
     // The worker: the controller holding position on the simulated rail.
     SimRail rail(profile.plant);
-    MachineController controller(profile, rail);
+    RailController controller(profile, rail);
     ServoWorker worker(controller, rail, [&rail](double dt) { rail.step(dt); });
     worker.start(!parser.isSet(noRtOpt));
     timespec wait{static_cast<time_t>(seconds),

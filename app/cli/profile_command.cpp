@@ -4,7 +4,7 @@
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
-#include "core/machine_profile.h"
+#include "core/machine/machine_profile.h"
 
 namespace trilho::cli {
 

@@ -3,7 +3,7 @@
 #include <charconv>
 #include <cmath>
 
-#include "core/diagnostic_text.h"
+#include "core/gcode/diagnostic_text.h"
 
 namespace trilho::cli {
 namespace {

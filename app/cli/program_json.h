@@ -9,7 +9,7 @@
 #include <QString>
 
 #include "app/cli/cli_output.h"
-#include "core/program.h"
+#include "core/gcode/program.h"
 
 namespace trilho::cli {
 

@@ -23,13 +23,13 @@
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
 #include "app/cli/diagnostics_text.h"
-#include "core/compiler.h"
-#include "core/diagnostic_text.h"
-#include "core/event_text.h"
-#include "core/servo_worker.h"
-#include "core/source_file.h"
+#include "app/session/sim_session.h"
+#include "core/gcode/compiler.h"
+#include "core/gcode/diagnostic_text.h"
+#include "core/gcode/source_file.h"
+#include "core/machine/event_text.h"
+#include "core/runtime/servo_worker.h"
 #include "hal/sim/fault_schedule.h"
-#include "hal/sim/sim_session.h"
 #include "translations/i18n.h"
 
 namespace trilho::cli {
@@ -197,7 +197,7 @@ Outcome runVirtual(const MachineProfile& profile, std::shared_ptr<const Program>
                    const RunOptions& options, Report& report, TraceFile& trace,
                    ControllerStatus& last, double& plantMm) {
     SimSession session(profile, options.seed);
-    MachineController& c = session.controller();
+    RailController& c = session.controller();
     SimRail& rail = session.rail();
     FaultInjection faults;
     // Late ticks and faults start with the program, after homing (homing is the reference).
@@ -261,7 +261,7 @@ Outcome runRealTime(const MachineProfile& profile, std::shared_ptr<const Program
                     ControllerStatus& last, double& plantMm) {
     SimRail rail(profile.plant);
     rail.placeAt(0.0);
-    MachineController controller(profile, rail);
+    RailController controller(profile, rail);
     ServoWorker worker(controller, rail, [&rail](double dt) { rail.step(dt); });
     worker.setTracing(trace.active());
     // Late ticks for real: the servo thread sleeps longer now and then (faults need the plant's

@@ -11,7 +11,7 @@
 #include <QTimer>
 #include <cstdio>
 
-#include "core/machine_profile.h"
+#include "core/machine/machine_profile.h"
 #include "translations/i18n.h"
 #include "ui/execution_panel.h"
 #include "ui/machine_link.h"

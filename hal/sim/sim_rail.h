@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <random>
 
-#include "core/machine_profile.h"
+#include "core/machine/machine_profile.h"
 #include "hal/rail_io.h"
 #include "hal/sim/fault_injection.h"
 

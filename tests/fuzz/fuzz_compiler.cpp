@@ -10,7 +10,7 @@
 
 #include "app/cli/diagnostics_text.h"
 #include "app/cli/program_json.h"
-#include "core/compiler.h"
+#include "core/gcode/compiler.h"
 #include "tests/fuzz/fuzz_support.h"
 #include "translations/i18n.h"
 

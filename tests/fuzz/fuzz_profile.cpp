@@ -2,7 +2,7 @@
 // it accepts must print and read back as the same accepted profile.
 #include <cstdint>
 
-#include "core/machine_profile.h"
+#include "core/machine/machine_profile.h"
 #include "tests/fuzz/fuzz_support.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

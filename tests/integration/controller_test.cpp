@@ -5,10 +5,10 @@
 #include <cmath>
 #include <memory>
 
-#include "core/compiler.h"
-#include "core/event_text.h"
-#include "core/source_file.h"
-#include "hal/sim/sim_session.h"
+#include "app/session/sim_session.h"
+#include "core/gcode/compiler.h"
+#include "core/gcode/source_file.h"
+#include "core/machine/event_text.h"
 #include "translations/i18n.h"
 
 namespace trilho {
@@ -38,7 +38,7 @@ struct RailRun {
     std::vector<ControllerEvent> events;
     explicit RailRun(double startMm = 0.0, MachineProfile profile = MachineProfile::rail())
         : session(profile, 1, startMm) {}
-    MachineController& c() { return session.controller(); }
+    RailController& c() { return session.controller(); }
     void step() {
         session.step();
         c().drainEvents([&](const ControllerEvent& e) { events.push_back(e); });

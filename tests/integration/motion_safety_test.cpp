@@ -8,9 +8,9 @@
 #include <cstdio>
 #include <memory>
 
-#include "core/compiler.h"
-#include "core/source_file.h"
-#include "hal/sim/sim_session.h"
+#include "app/session/sim_session.h"
+#include "core/gcode/compiler.h"
+#include "core/gcode/source_file.h"
 #include "tests/support/program_run.h"
 
 namespace trilho {
@@ -47,7 +47,7 @@ struct Cell {
         session.runUntil([&] { return c().status().state == ControllerState::AutoIdle; }, 60);
         EXPECT_TRUE(c().status().homed);
     }
-    MachineController& c() { return session.controller(); }
+    RailController& c() { return session.controller(); }
     double x() { return session.rail().state().positionMm; }
 };
 
@@ -63,7 +63,7 @@ class LateTick : public ::testing::TestWithParam<double> {};
 TEST_P(LateTick, DuringAMoveNeitherSetpointNorPlatformPassTheTarget) {
     const double lateS = GetParam();
     Cell cell;
-    MachineController& c = cell.c();
+    RailController& c = cell.c();
     ASSERT_TRUE(c.loadProgram(compileFile("ciclo_continuo.G")));
     ASSERT_TRUE(c.start());
     bool injected = false;
@@ -350,7 +350,7 @@ TEST(StuckEncoder, AtEveryFeedThePlatformRunsUnder20mmBeforeTheDriveIsCut) {
 
 TEST(FeedHold, OverrideZeroHoldsTheBlockAndResumesToItsRealTarget) {
     Cell cell;
-    MachineController& c = cell.c();
+    RailController& c = cell.c();
     ASSERT_TRUE(c.loadProgram(compileText("G1 X1000 F50\nG1 X0 F50\nM2\n")));
     ASSERT_TRUE(c.start());
     ASSERT_TRUE(cell.session.runUntil([&] { return cell.x() > 400; }, 10));
@@ -509,7 +509,7 @@ TEST(CentreMark, ACleanRunReportsNoCorrection) {
 
 TEST(AfterAnAlarm, ExecuteHomesAgainThenRuns) {
     Cell cell;
-    MachineController& c = cell.c();
+    RailController& c = cell.c();
     FaultInjection f;
     f.stuckEncoderAtS = cell.session.rail().state().timeS + 0.2;
     cell.session.rail().setFaults(f);

@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "core/compiler.h"
-#include "core/machine_profile.h"
-#include "hal/sim/sim_session.h"
+#include "app/session/sim_session.h"
+#include "core/gcode/compiler.h"
+#include "core/machine/machine_profile.h"
 
 namespace trilho {
 namespace {
@@ -52,7 +52,7 @@ std::string describe(const Outcome& o) {
 Outcome homeAndMove(const MachineProfile& p, double startMm) {
     Outcome o;
     SimSession session(p, 1, startMm);
-    MachineController& c = session.controller();
+    RailController& c = session.controller();
     auto drain = [&] {
         c.drainEvents([&](const ControllerEvent& e) {
             if (e.kind == EventKind::AlarmRaised) o.alarms.push_back(e.alarm);

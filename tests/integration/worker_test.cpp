@@ -7,8 +7,8 @@
 #include <chrono>
 #include <thread>
 
-#include "core/compiler.h"
-#include "core/servo_worker.h"
+#include "core/gcode/compiler.h"
+#include "core/runtime/servo_worker.h"
 #include "hal/sim/sim_rail.h"
 
 namespace trilho {
@@ -28,7 +28,7 @@ bool eventually(Pred pred, std::chrono::milliseconds deadline = std::chrono::mil
 struct Rig {
     MachineProfile profile = MachineProfile::rail();
     SimRail rail{profile.plant};
-    MachineController controller{profile, rail};
+    RailController controller{profile, rail};
     ServoWorker worker{controller, rail, [this](double dt) { rail.step(dt); }};
     Rig() { rail.placeAt(0.0); }
 };

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "hal/sim/sim_session.h"
+#include "app/session/sim_session.h"
 
 namespace trilho::test {
 
@@ -17,7 +17,7 @@ double sideOf(double d) {
 ProgramRunResult runProgram(std::shared_ptr<const Program> program, const ProgramRunSpec& spec) {
     ProgramRunResult r;
     SimSession session(spec.profile, spec.seed, 0.0);
-    MachineController& c = session.controller();
+    RailController& c = session.controller();
     SimRail& rail = session.rail();
     auto drain = [&] {
         c.drainEvents([&](const ControllerEvent& e) {

@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "core/controller_event.h"
-#include "core/machine_controller.h"
-#include "core/machine_profile.h"
-#include "core/program.h"
+#include "core/gcode/program.h"
+#include "core/machine/controller_event.h"
+#include "core/machine/machine_profile.h"
+#include "core/machine/rail_controller.h"
 #include "hal/sim/fault_injection.h"
 
 namespace trilho::test {

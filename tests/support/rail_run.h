@@ -4,7 +4,7 @@
 #include <functional>
 #include <vector>
 
-#include "core/rail_servo.h"
+#include "core/control/rail_servo.h"
 #include "hal/sim/sim_rail.h"
 
 namespace trilho::test {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "core/compiler.h"
+#include "core/gcode/compiler.h"
 
 namespace trilho {
 namespace {

@@ -12,7 +12,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "core/journal.h"
+#include "core/machine/journal.h"
 
 namespace trilho {
 namespace {

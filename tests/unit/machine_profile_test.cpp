@@ -7,7 +7,7 @@
 #include <QTemporaryDir>
 #include <string>
 
-#include "core/machine_profile.h"
+#include "core/machine/machine_profile.h"
 
 namespace trilho {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "core/position_loop.h"
+#include "core/control/position_loop.h"
 
 namespace trilho {
 namespace {

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "core/counter_reader.h"
-#include "core/switch_filter.h"
+#include "core/control/counter_reader.h"
+#include "core/control/switch_filter.h"
 #include "hal/sim/sim_rail.h"
 
 namespace trilho {

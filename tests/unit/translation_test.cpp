@@ -5,9 +5,9 @@
 #include <QFile>
 #include <QXmlStreamReader>
 
-#include "core/compiler.h"
-#include "core/diagnostic_text.h"
-#include "core/event_text.h"
+#include "core/gcode/compiler.h"
+#include "core/gcode/diagnostic_text.h"
+#include "core/machine/event_text.h"
 #include "translations/i18n.h"
 
 namespace trilho {

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include "core/line_profile.h"
-#include "core/trapezoid.h"
+#include "core/motion/line_profile.h"
+#include "core/motion/trapezoid.h"
 
 namespace trilho {
 namespace {

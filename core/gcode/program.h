@@ -3,9 +3,9 @@
 #include <cstddef>
 #include <vector>
 
-#include "core/block.h"
-#include "core/diagnostic.h"
-#include "core/dialect.h"
+#include "core/gcode/block.h"
+#include "core/gcode/diagnostic.h"
+#include "core/gcode/dialect.h"
 
 namespace trilho {
 

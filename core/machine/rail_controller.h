@@ -7,11 +7,11 @@
 #include <cstdint>
 #include <memory>
 
-#include "core/controller_event.h"
-#include "core/event_ring.h"
-#include "core/modal_state.h"
-#include "core/program.h"
-#include "core/rail_servo.h"
+#include "core/control/rail_servo.h"
+#include "core/gcode/modal_state.h"
+#include "core/gcode/program.h"
+#include "core/machine/controller_event.h"
+#include "core/runtime/event_ring.h"
 
 namespace trilho {
 
@@ -56,9 +56,9 @@ struct ControllerStatus {
     std::uint64_t lastCommandSeq = 0;  ///< the last command applied (echoed by the worker)
 };
 
-class MachineController {
+class RailController {
   public:
-    MachineController(const MachineProfile& profile, RailIo& io);
+    RailController(const MachineProfile& profile, RailIo& io);
 
     /// One servo period of dtS seconds.
     void step(double dtS);

@@ -1,4 +1,4 @@
-#include "core/machine_profile.h"
+#include "core/machine/machine_profile.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -11,7 +11,7 @@
 #include <numbers>
 #include <vector>
 
-#include "core/source_file.h"
+#include "core/gcode/source_file.h"
 
 namespace trilho {
 

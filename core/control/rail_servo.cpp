@@ -1,4 +1,4 @@
-#include "core/rail_servo.h"
+#include "core/control/rail_servo.h"
 
 #include <algorithm>
 #include <cmath>

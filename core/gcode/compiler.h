@@ -5,9 +5,9 @@
 #include <limits>
 #include <string_view>
 
-#include "core/dialect.h"
-#include "core/machine_limits.h"
-#include "core/program.h"
+#include "core/gcode/dialect.h"
+#include "core/gcode/program.h"
+#include "core/machine/machine_limits.h"
 
 namespace trilho {
 

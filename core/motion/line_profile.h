@@ -5,7 +5,7 @@
 // the seed's rule (the axis with the longest tf sets the time base) made exact.
 #include <Eigen/Core>
 
-#include "core/trapezoid.h"
+#include "core/motion/trapezoid.h"
 
 namespace trilho {
 

@@ -8,7 +8,7 @@
 #include <memory>
 #include <random>
 
-#include "core/machine_controller.h"
+#include "core/machine/rail_controller.h"
 #include "hal/sim/sim_rail.h"
 
 namespace trilho {
@@ -41,7 +41,7 @@ class SimSession {
     }
 
     SimRail& rail() { return rail_; }
-    MachineController& controller() { return controller_; }
+    RailController& controller() { return controller_; }
     double elapsedS() const { return elapsedS_; }
 
   private:
@@ -55,7 +55,7 @@ class SimSession {
     }
 
     SimRail rail_;
-    MachineController controller_;
+    RailController controller_;
     std::mt19937_64 jitterRng_;
     double lastPeriodS_;
     double elapsedS_ = 0.0;

@@ -1,4 +1,4 @@
-#include "core/source_file.h"
+#include "core/gcode/source_file.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>

@@ -4,7 +4,7 @@
 // and where the last move left the platform).
 #include <cstddef>
 
-#include "core/program.h"
+#include "core/gcode/program.h"
 
 namespace trilho {
 

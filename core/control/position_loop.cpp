@@ -1,4 +1,4 @@
-#include "core/position_loop.h"
+#include "core/control/position_loop.h"
 
 #include <algorithm>
 #include <cmath>

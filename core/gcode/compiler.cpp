@@ -2,14 +2,14 @@
 // against every rule, and only then committed to the modal state and the block vector
 // (the Grbl way). Goto targets are resolved at the end, when every n is known, through an
 // index of the numbered blocks built once (linear in the program, whatever its shape).
-#include "core/compiler.h"
+#include "core/gcode/compiler.h"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstring>
 
-#include "core/decimal_scan.h"
+#include "core/gcode/decimal_scan.h"
 
 namespace trilho {
 namespace {

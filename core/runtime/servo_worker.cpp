@@ -1,4 +1,4 @@
-#include "core/servo_worker.h"
+#include "core/runtime/servo_worker.h"
 
 #include <pthread.h>
 #include <sched.h>
@@ -24,7 +24,7 @@ timespec toTimespec(std::int64_t ns) {
 }
 }  // namespace
 
-ServoWorker::ServoWorker(MachineController& controller, RailIo& io, PlantStep plantStep,
+ServoWorker::ServoWorker(RailController& controller, RailIo& io, PlantStep plantStep,
                          double periodS)
     : controller_(controller),
       io_(io),
@@ -74,7 +74,7 @@ std::uint64_t ServoWorker::loadProgram(std::shared_ptr<const Program> program) {
 }
 
 void ServoWorker::apply(const Command& c) {
-    MachineController& m = controller_;
+    RailController& m = controller_;
     switch (c.kind) {
         case CommandKind::SelectManual:
             m.selectManual();

@@ -1,5 +1,5 @@
 #pragma once
-// The servo thread: a thin shell around MachineController. It wakes at absolute times (one
+// The servo thread: a thin shell around RailController. It wakes at absolute times (one
 // period apart), passes the measured dt to the controller, steps the plant when simulated,
 // publishes a consistent snapshot (seqlock) and the controller's events, and takes commands
 // through a queue whose sequence numbers it echoes. Stop and E-stop are flags that bypass the
@@ -13,10 +13,10 @@
 #include <random>
 #include <thread>
 
-#include "core/event_ring.h"
-#include "core/latency_stats.h"
-#include "core/machine_controller.h"
-#include "core/seqlock.h"
+#include "core/machine/rail_controller.h"
+#include "core/runtime/event_ring.h"
+#include "core/runtime/latency_stats.h"
+#include "core/runtime/seqlock.h"
 
 namespace trilho {
 
@@ -70,7 +70,7 @@ class ServoWorker {
 
     /// controller and io outlive the worker. plantStep (optional) advances a simulated plant
     /// by the measured dt after each controller step. periodS: default from the profile.
-    ServoWorker(MachineController& controller, RailIo& io, PlantStep plantStep = {},
+    ServoWorker(RailController& controller, RailIo& io, PlantStep plantStep = {},
                 double periodS = 0.0);
     ~ServoWorker();
 
@@ -128,7 +128,7 @@ class ServoWorker {
     void keepAlarm(const ControllerEvent& e);
     void injectLateTick();
 
-    MachineController& controller_;
+    RailController& controller_;
     RailIo& io_;
     PlantStep plantStep_;
     double periodS_;

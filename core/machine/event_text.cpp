@@ -1,9 +1,9 @@
-#include "core/event_text.h"
+#include "core/machine/event_text.h"
 
 #include <QCoreApplication>
 #include <cmath>
 
-#include "core/diagnostic_text.h"
+#include "core/gcode/diagnostic_text.h"
 
 namespace trilho {
 namespace {

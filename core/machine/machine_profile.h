@@ -5,7 +5,7 @@
 #include <QString>
 #include <optional>
 
-#include "core/machine_limits.h"
+#include "core/machine/machine_limits.h"
 
 namespace trilho {
 

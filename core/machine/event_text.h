@@ -3,7 +3,7 @@
 // pt_BR gives the 1996 program's own lines.
 #include <QString>
 
-#include "core/controller_event.h"
+#include "core/machine/controller_event.h"
 
 namespace trilho {
 

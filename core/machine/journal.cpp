@@ -1,4 +1,4 @@
-#include "core/journal.h"
+#include "core/machine/journal.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>

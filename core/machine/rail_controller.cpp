@@ -1,4 +1,4 @@
-#include "core/machine_controller.h"
+#include "core/machine/rail_controller.h"
 
 #include <algorithm>
 #include <cmath>
@@ -37,16 +37,15 @@ const char* controllerStateName(ControllerState s) {
     return "?";
 }
 
-MachineController::MachineController(const MachineProfile& profile, RailIo& io)
-    : servo_(profile, io) {
+RailController::RailController(const MachineProfile& profile, RailIo& io) : servo_(profile, io) {
     status_.law = profile.loop.law;
     status_.gains =
         profile.loop.law == LoopLaw::Classic ? profile.loop.classic : profile.loop.engineered;
     status_.servo = servo_.sample();
 }
 
-void MachineController::post(EventKind kind, std::int32_t n, double x, double feed, AlarmCode alarm,
-                             double value) {
+void RailController::post(EventKind kind, std::int32_t n, double x, double feed, AlarmCode alarm,
+                          double value) {
     ControllerEvent e;
     e.timeS = status_.timeS;
     e.kind = kind;
@@ -61,7 +60,7 @@ void MachineController::post(EventKind kind, std::int32_t n, double x, double fe
 
 // ---- modes -----------------------------------------------------------------------------------
 
-void MachineController::selectManual() {
+void RailController::selectManual() {
     if (status_.state == ControllerState::EStop || status_.state == ControllerState::Alarm) return;
     if (status_.state != ControllerState::Manual) servo_.stop();
     status_.automatic = false;
@@ -74,7 +73,7 @@ void MachineController::selectManual() {
     post(EventKind::ModeManual);
 }
 
-void MachineController::selectAutomatic() {
+void RailController::selectAutomatic() {
     if (status_.state == ControllerState::EStop || status_.state == ControllerState::Alarm) return;
     if (status_.automatic && status_.state != ControllerState::Manual) return;
     servo_.release();
@@ -85,7 +84,7 @@ void MachineController::selectAutomatic() {
     beginHoming();
 }
 
-void MachineController::beginHoming() {
+void RailController::beginHoming() {
     // machine.md: selecting Automatic sends the platform to the rail centre. The position is
     // not known until the centre mark is crossed: no soft limits during the search.
     servo_.release();
@@ -104,7 +103,7 @@ void MachineController::beginHoming() {
     post(EventKind::HomingStarted);
 }
 
-void MachineController::stepHoming(double dtS) {
+void RailController::stepHoming(double dtS) {
     homingTimeS_ += dtS;
     if (homingTimeS_ > kHomingTimeoutS) return raiseAlarm(AlarmCode::HomingFailed);
     const ServoSample& s = servo_.sample();
@@ -176,14 +175,14 @@ void MachineController::stepHoming(double dtS) {
 
 // ---- manual ----------------------------------------------------------------------------------
 
-void MachineController::manualLeft() {
+void RailController::manualLeft() {
     manualStep(-1);
 }
-void MachineController::manualRight() {
+void RailController::manualRight() {
     manualStep(+1);
 }
 
-void MachineController::manualStep(int direction) {
+void RailController::manualStep(int direction) {
     // Manual_Click of 1996: each key press moves the drive code one step from 128, capped, and
     // refused towards an end switch that is already active.
     if (status_.state != ControllerState::Manual) return;
@@ -201,7 +200,7 @@ void MachineController::manualStep(int direction) {
     servo_.setDirect(status_.manualCode);
 }
 
-void MachineController::manualStop() {
+void RailController::manualStop() {
     if (status_.state != ControllerState::Manual) return;
     status_.manualCode = kDacZero;
     if (jogging_)
@@ -210,7 +209,7 @@ void MachineController::manualStop() {
         servo_.release();
 }
 
-void MachineController::jogStart(int direction, double speedFraction) {
+void RailController::jogStart(int direction, double speedFraction) {
     if (status_.state != ControllerState::Manual || direction == 0) return;
     const auto& lim = profile().limits.x;
     const double target = direction > 0 ? lim.softMaxMm : lim.softMinMm;
@@ -223,12 +222,12 @@ void MachineController::jogStart(int direction, double speedFraction) {
     jogging_ = true;
 }
 
-void MachineController::jogStop() {
+void RailController::jogStop() {
     if (status_.state != ControllerState::Manual || !jogging_) return;
     servo_.stop();
 }
 
-void MachineController::jogIncrement(double deltaMm, double speedFraction) {
+void RailController::jogIncrement(double deltaMm, double speedFraction) {
     if (status_.state != ControllerState::Manual) return;
     const auto& lim = profile().limits.x;
     const ServoSample& s = servo_.sample();
@@ -242,7 +241,7 @@ void MachineController::jogIncrement(double deltaMm, double speedFraction) {
     jogging_ = true;
 }
 
-void MachineController::checkManualLimits() {
+void RailController::checkManualLimits() {
     const ServoSample& s = servo_.sample();
     if (s.mode == ServoMode::Direct) {
         const auto code = status_.manualCode;
@@ -266,7 +265,7 @@ void MachineController::checkManualLimits() {
 
 // ---- automatic -------------------------------------------------------------------------------
 
-bool MachineController::loadProgram(std::shared_ptr<const Program> program) {
+bool RailController::loadProgram(std::shared_ptr<const Program> program) {
     if (status_.state == ControllerState::Running || status_.state == ControllerState::Waiting ||
         status_.state == ControllerState::Paused)
         return false;
@@ -287,7 +286,7 @@ bool MachineController::loadProgram(std::shared_ptr<const Program> program) {
     return true;
 }
 
-bool MachineController::start(std::size_t fromIndex) {
+bool RailController::start(std::size_t fromIndex) {
     if (!status_.automatic || !program_ || fromIndex >= program_->blocks.size()) return false;
     if (status_.state == ControllerState::Homing) {
         pendingStart_ = fromIndex;
@@ -322,7 +321,7 @@ bool MachineController::start(std::size_t fromIndex) {
     return true;
 }
 
-void MachineController::beginBlock() {
+void RailController::beginBlock() {
     const Block& b = program_->blocks[pc_];
     blockStarted_ = true;
     status_.blockIndex = static_cast<std::int32_t>(pc_);
@@ -400,7 +399,7 @@ void MachineController::beginBlock() {
     }
 }
 
-void MachineController::finishBlock() {
+void RailController::finishBlock() {
     const Block& b = program_->blocks[pc_];
     ++pc_;
     blockStarted_ = false;
@@ -412,7 +411,7 @@ void MachineController::finishBlock() {
     }
 }
 
-void MachineController::stepEnding(double dtS) {
+void RailController::stepEnding(double dtS) {
     const ServoSample& s = servo_.sample();
     // Still: holding in position, or (the classic law released the drive) the count moved
     // less than two counts in kStillTimeS. The velocity estimate is no judge at rest: one
@@ -443,7 +442,7 @@ void MachineController::stepEnding(double dtS) {
     setState(ControllerState::AutoIdle);
 }
 
-void MachineController::stepRunning(double dtS) {
+void RailController::stepRunning(double dtS) {
     if (ending_) return stepEnding(dtS);
     if (approachFirst_) {
         if (!servo_.sample().inPosition) return;
@@ -471,7 +470,7 @@ void MachineController::stepRunning(double dtS) {
     }
 }
 
-void MachineController::pressContinue() {
+void RailController::pressContinue() {
     if (status_.state != ControllerState::Paused) return;
     if (status_.pause == PauseReason::M00) {
         post(EventKind::ContinuePressed);
@@ -485,7 +484,7 @@ void MachineController::pressContinue() {
     }
 }
 
-void MachineController::hold() {
+void RailController::hold() {
     if (status_.state != ControllerState::Running && status_.state != ControllerState::Waiting)
         return;
     holdFrom_ = status_.state;
@@ -495,7 +494,7 @@ void MachineController::hold() {
     post(EventKind::Paused, status_.blockN);
 }
 
-void MachineController::resume() {
+void RailController::resume() {
     if (status_.state != ControllerState::Paused) return;
     status_.heldByController = false;
     if (status_.pause != PauseReason::Hold) return pressContinue();
@@ -513,7 +512,7 @@ void MachineController::resume() {
                                                    : ControllerState::Running);
 }
 
-void MachineController::stop() {
+void RailController::stop() {
     const auto s = status_.state;
     if (s != ControllerState::Running && s != ControllerState::Waiting &&
         s != ControllerState::Paused && s != ControllerState::Homing)
@@ -531,18 +530,18 @@ void MachineController::stop() {
     post(EventKind::Stopped);
 }
 
-void MachineController::setSingleBlock(bool on) {
+void RailController::setSingleBlock(bool on) {
     status_.singleBlock = on;
 }
 
-void MachineController::setFeedOverride(double factor) {
+void RailController::setFeedOverride(double factor) {
     status_.feedOverride = std::clamp(factor, 0.0, 1.5);
     servo_.setSpeedOverride(status_.feedOverride);
 }
 
 // ---- always ----------------------------------------------------------------------------------
 
-void MachineController::abandonRun() {
+void RailController::abandonRun() {
     status_.pause = PauseReason::None;
     status_.blockIndex = -1;
     blockStarted_ = false;
@@ -555,7 +554,7 @@ void MachineController::abandonRun() {
     servo_.setSoftLimitsActive(true);
 }
 
-void MachineController::emergencyStop() {
+void RailController::emergencyStop() {
     servo_.emergencyStop();
     if (status_.state == ControllerState::EStop) return;
     abandonRun();
@@ -565,7 +564,7 @@ void MachineController::emergencyStop() {
     post(EventKind::AlarmRaised, -1, 0.0, 0.0, AlarmCode::EmergencyStop);
 }
 
-void MachineController::resetEmergencyStop() {
+void RailController::resetEmergencyStop() {
     if (status_.state != ControllerState::EStop) return;
     status_.activeAlarms &= ~alarmBit(AlarmCode::EmergencyStop);
     servo_.clearFault();
@@ -575,7 +574,7 @@ void MachineController::resetEmergencyStop() {
     post(EventKind::EStopReset);
 }
 
-void MachineController::raiseAlarm(AlarmCode code, double value) {
+void RailController::raiseAlarm(AlarmCode code, double value) {
     if (code == AlarmCode::None) return;
     if (code == AlarmCode::EmergencyStop) return emergencyStop();
     status_.lastAlarm = code;
@@ -594,7 +593,7 @@ void MachineController::raiseAlarm(AlarmCode code, double value) {
     setState(ControllerState::Alarm);
 }
 
-void MachineController::acknowledgeAlarms() {
+void RailController::acknowledgeAlarms() {
     if (status_.state != ControllerState::Alarm) return;
     for (unsigned c = 1; c < static_cast<unsigned>(AlarmCode::Count_); ++c) {
         const auto code = static_cast<AlarmCode>(c);
@@ -613,18 +612,18 @@ void MachineController::acknowledgeAlarms() {
     setState(status_.modeBeforeAlarm);
 }
 
-void MachineController::setGains(LoopLaw law, const LoopGains& gains) {
+void RailController::setGains(LoopLaw law, const LoopGains& gains) {
     servo_.setGains(law, gains);
     if (law == status_.law) status_.gains = gains;
 }
 
-void MachineController::setLaw(LoopLaw law) {
+void RailController::setLaw(LoopLaw law) {
     servo_.setLaw(law);
     status_.law = law;
     status_.gains = servo_.loop().gains();
 }
 
-void MachineController::checkServoFault() {
+void RailController::checkServoFault() {
     const ServoFault f = servo_.sample().fault;
     if (f == ServoFault::None || status_.state == ControllerState::Alarm ||
         status_.state == ControllerState::EStop)
@@ -656,7 +655,7 @@ void MachineController::checkServoFault() {
     }
 }
 
-void MachineController::checkServoWarnings() {
+void RailController::checkServoWarnings() {
     const ServoSample& s = servo_.sample();
     if (s.limitStops != lastLimitStops_) {
         lastLimitStops_ = s.limitStops;
@@ -669,7 +668,7 @@ void MachineController::checkServoWarnings() {
     }
 }
 
-void MachineController::step(double dtS) {
+void RailController::step(double dtS) {
     servo_.tick(dtS);
     status_.timeS += dtS;
     // Repeated implausible counter reads: the position chain is broken.

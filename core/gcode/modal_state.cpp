@@ -1,4 +1,4 @@
-#include "core/modal_state.h"
+#include "core/gcode/modal_state.h"
 
 #include <algorithm>
 

@@ -5,7 +5,7 @@
 // allocating.
 #include <cstdint>
 
-#include "core/alarm.h"
+#include "core/machine/alarm.h"
 
 namespace trilho {
 

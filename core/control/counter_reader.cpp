@@ -1,4 +1,4 @@
-#include "core/counter_reader.h"
+#include "core/control/counter_reader.h"
 
 #include <cmath>
 #include <cstdlib>

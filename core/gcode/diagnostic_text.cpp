@@ -1,4 +1,4 @@
-#include "core/diagnostic_text.h"
+#include "core/gcode/diagnostic_text.h"
 
 #include <QCoreApplication>
 

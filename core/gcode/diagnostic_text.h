@@ -3,7 +3,7 @@
 // (translations/trilho_*.ts). English is the source language; pt_BR holds the 1996 texts.
 #include <QString>
 
-#include "core/diagnostic.h"
+#include "core/gcode/diagnostic.h"
 
 namespace trilho {
 

@@ -1,4 +1,4 @@
-#include "core/trapezoid.h"
+#include "core/motion/trapezoid.h"
 
 #include <algorithm>
 #include <cmath>

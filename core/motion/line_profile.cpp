@@ -1,4 +1,4 @@
-#include "core/line_profile.h"
+#include "core/motion/line_profile.h"
 
 #include <cmath>
 #include <limits>

@@ -5,11 +5,11 @@
 // command-line tool run whole moves in virtual time.
 #include <cstdint>
 
-#include "core/counter_reader.h"
-#include "core/machine_profile.h"
-#include "core/position_loop.h"
-#include "core/switch_filter.h"
-#include "core/trapezoid.h"
+#include "core/control/counter_reader.h"
+#include "core/control/position_loop.h"
+#include "core/control/switch_filter.h"
+#include "core/machine/machine_profile.h"
+#include "core/motion/trapezoid.h"
 #include "hal/rail_io.h"
 
 namespace trilho {
