@@ -27,6 +27,48 @@ MachineProfile MachineProfile::rail() {
     return MachineProfile{};
 }
 
+MachineProfile MachineProfile::xyDcTable() {
+    MachineProfile p;
+    p.kind = MachineKind::DcTable;
+    p.name = QStringLiteral("xy-dc-table");
+    p.description = QStringLiteral("DC-motor XY table, ATmega128 and LabVIEW (seed 004)");
+    p.limits.hasY = true;
+    p.limits.x = {0.0, 300.0};  // chosen until read from the seed
+    p.limits.y = {0.0, 300.0};
+    p.motion.rapidSpeedMmS = 150.0;     // seed 004: vel_max = 150 mm/s
+    p.motion.accelerationMmS2 = 300.0;  // seed 004: 250-300 mm/s2 (acel_max 1200)
+    p.motion.minAccelerationMmS2 = 100.0;
+    p.motion.maxDecelerationMmS2 = 1200.0;  // seed 004: acel_max
+    return p;
+}
+
+MachineProfile MachineProfile::xyPlotter() {
+    MachineProfile p;
+    p.kind = MachineKind::Plotter;
+    p.name = QStringLiteral("xy-plotter");
+    p.description = QStringLiteral("Stepper XY plotter with Bresenham, Arduino UNO (seed 001)");
+    p.limits.hasY = true;
+    p.limits.x = {0.0, 200.0};  // chosen until read from the seed
+    p.limits.y = {0.0, 200.0};
+    p.motion.rapidSpeedMmS = 100.0;  // chosen: maxStepRateHz x mmPerStep
+    p.motion.accelerationMmS2 = 1000.0;
+    p.motion.minAccelerationMmS2 = 100.0;
+    p.motion.maxDecelerationMmS2 = 1000.0;
+    return p;
+}
+
+MachineProfile MachineProfile::forKind(MachineKind kind) {
+    switch (kind) {
+        case MachineKind::DcTable:
+            return xyDcTable();
+        case MachineKind::Plotter:
+            return xyPlotter();
+        case MachineKind::Rail:
+            break;
+    }
+    return rail();
+}
+
 namespace {
 
 /// One table drives reading, writing and validation, so the three never disagree. The ranges of
@@ -34,7 +76,7 @@ namespace {
 /// simulated rail is proven to home and move at both ends (tests/integration/
 /// profile_extremes_test.cpp); the others only refuse nonsense.
 template <typename F>
-void forEachNumber(MachineProfile& p, F&& f) {
+void forEachRailNumber(MachineProfile& p, F&& f) {
     auto& pl = p.plant;
     f("plant.motorNoLoadRpm", pl.motorNoLoadRpm, 100.0, 20000.0);
     f("plant.gearRatio", pl.gearRatio, 1.0, 200.0);
@@ -75,6 +117,23 @@ void forEachNumber(MachineProfile& p, F&& f) {
     f("loop.replanErrorMm", l.replanErrorMm, 0.01, 1000.0);
     f("loop.switchDebounceS", l.switchDebounceS, 0.0, 1.0);
     f("loop.watchdogS", l.watchdogS, 0.001, 10.0);
+}
+
+/// Every number a profile of p.kind holds: the shared sections (motion, limits) and the
+/// kind's own.
+template <typename F>
+void forEachNumber(MachineProfile& p, F&& f) {
+    switch (p.kind) {
+        case MachineKind::Rail:
+            forEachRailNumber(p, f);
+            break;
+        case MachineKind::DcTable:
+            forEachDcTableNumber(p.dcTable, f);
+            break;
+        case MachineKind::Plotter:
+            forEachPlotterNumber(p.plotter, f);
+            break;
+    }
     auto& m = p.motion;
     f("motion.rapidSpeedMmS", m.rapidSpeedMmS, 10.0, 1800.0);
     f("motion.accelerationMmS2", m.accelerationMmS2, 100.0, 3000.0);
@@ -117,30 +176,54 @@ QString jsonText(const QJsonValue& v) {
 }
 
 /// The keys a profile may hold besides the numbers of forEachNumber.
-enum class KeyKind : unsigned char { Number, String, Bool, Law, Section };
+enum class KeyKind : unsigned char { Number, String, Bool, Law, Kind, Section };
 
 /// Every key path a profile may hold ("loop.engineered.kp"), sections included ("loop",
 /// "loop.engineered"). "source" and "comment" are allowed in every object and are not listed.
-const QMap<QString, KeyKind>& profileKeys() {
-    static const QMap<QString, KeyKind> keys = [] {
-        QMap<QString, KeyKind> k;
-        auto add = [&](const QString& path, KeyKind kind) {
-            k.insert(path, kind);
-            for (qsizetype dot = path.indexOf(QLatin1Char('.')); dot >= 0;
-                 dot = path.indexOf(QLatin1Char('.'), dot + 1))
-                k.insert(path.left(dot), KeyKind::Section);
-        };
-        add(QStringLiteral("name"), KeyKind::String);
-        add(QStringLiteral("description"), KeyKind::String);
-        add(QStringLiteral("limits.hasY"), KeyKind::Bool);
-        add(QStringLiteral("loop.law"), KeyKind::Law);
-        MachineProfile p;
-        forEachNumber(p, [&](const char* key, double&, double, double) {
-            add(QString::fromLatin1(key), KeyKind::Number);
-        });
-        return k;
-    }();
-    return keys;
+QMap<QString, KeyKind> keysOf(MachineKind kind) {
+    QMap<QString, KeyKind> k;
+    auto add = [&](const QString& path, KeyKind keyKind) {
+        k.insert(path, keyKind);
+        for (qsizetype dot = path.indexOf(QLatin1Char('.')); dot >= 0;
+             dot = path.indexOf(QLatin1Char('.'), dot + 1))
+            k.insert(path.left(dot), KeyKind::Section);
+    };
+    add(QStringLiteral("kind"), KeyKind::Kind);
+    add(QStringLiteral("name"), KeyKind::String);
+    add(QStringLiteral("description"), KeyKind::String);
+    add(QStringLiteral("limits.hasY"), KeyKind::Bool);
+    if (kind == MachineKind::Rail) add(QStringLiteral("loop.law"), KeyKind::Law);
+    if (kind == MachineKind::DcTable) add(QStringLiteral("dcTable.law"), KeyKind::Law);
+    MachineProfile p = MachineProfile::forKind(kind);
+    forEachNumber(p, [&](const char* key, double&, double, double) {
+        add(QString::fromLatin1(key), KeyKind::Number);
+    });
+    return k;
+}
+
+const QMap<QString, KeyKind>& profileKeys(MachineKind kind) {
+    static const QMap<QString, KeyKind> rail = keysOf(MachineKind::Rail);
+    static const QMap<QString, KeyKind> table = keysOf(MachineKind::DcTable);
+    static const QMap<QString, KeyKind> plotter = keysOf(MachineKind::Plotter);
+    switch (kind) {
+        case MachineKind::DcTable:
+            return table;
+        case MachineKind::Plotter:
+            return plotter;
+        case MachineKind::Rail:
+            break;
+    }
+    return rail;
+}
+
+/// The kinds whose profiles hold path, for "plant: belongs to a rail profile, not ...".
+QString kindsHolding(const QString& path) {
+    QStringList kinds;
+    for (MachineKind k : {MachineKind::Rail, MachineKind::DcTable, MachineKind::Plotter})
+        if (profileKeys(k).contains(path))
+            kinds.append(QString::fromLatin1(machineKindName(k).data(),
+                                             static_cast<qsizetype>(machineKindName(k).size())));
+    return kinds.join(QStringLiteral(" and "));
 }
 
 bool isNoteKey(const QString& key) {
@@ -186,8 +269,8 @@ QString nearestKey(const QString& key, const QStringList& valid) {
 
 /// Every key of obj (at path prefix) must be known and of the right kind; numbers, the law and
 /// hasY are checked further by the reader. Returns the first error ("loop.Kp: unknown key").
-QString checkKeys(const QJsonObject& obj, const QString& prefix) {
-    const QMap<QString, KeyKind>& keys = profileKeys();
+QString checkKeys(const QJsonObject& obj, const QString& prefix, MachineKind kind) {
+    const QMap<QString, KeyKind>& keys = profileKeys(kind);
     for (auto it = obj.begin(); it != obj.end(); ++it) {
         const QString path = prefix.isEmpty() ? it.key() : prefix + QLatin1Char('.') + it.key();
         const QJsonValue v = it.value();
@@ -198,6 +281,11 @@ QString checkKeys(const QJsonObject& obj, const QString& prefix) {
         }
         const auto known = keys.constFind(path);
         if (known == keys.constEnd()) {
+            if (const QString owners = kindsHolding(path); !owners.isEmpty())
+                return QStringLiteral("%1: belongs to a %2 profile, not to this %3 profile")
+                    .arg(path, owners,
+                         QString::fromLatin1(machineKindName(kind).data(),
+                                             static_cast<qsizetype>(machineKindName(kind).size())));
             QStringList valid{QStringLiteral("comment"), QStringLiteral("source")};
             const QString level = prefix.isEmpty() ? QString() : prefix + QLatin1Char('.');
             for (auto k = keys.constBegin(); k != keys.constEnd(); ++k) {
@@ -214,7 +302,7 @@ QString checkKeys(const QJsonObject& obj, const QString& prefix) {
             case KeyKind::Section:
                 if (!v.isObject())
                     return QStringLiteral("%1: must be an object (got %2)").arg(path, jsonText(v));
-                if (QString e = checkKeys(v.toObject(), path); !e.isEmpty()) return e;
+                if (QString e = checkKeys(v.toObject(), path, kind); !e.isEmpty()) return e;
                 break;
             case KeyKind::String:
                 if (!v.isString())
@@ -230,7 +318,8 @@ QString checkKeys(const QJsonObject& obj, const QString& prefix) {
                     return QStringLiteral("%1: must be a number (got %2)").arg(path, jsonText(v));
                 break;
             case KeyKind::Law:
-                break;  // its own message below
+            case KeyKind::Kind:
+                break;  // their own messages in the reader
         }
     }
     return {};
@@ -247,15 +336,18 @@ QString checkAcrossKeys(const MachineProfile& p) {
     if (y.softMinMm >= y.softMaxMm)
         return QStringLiteral("limits.y: softMinMm must be below softMaxMm (got %1 and %2)")
             .arg(num(y.softMinMm), num(y.softMaxMm));
-    if (p.plant.endSwitchMm >= p.plant.hardStopMm)
+    const bool rail = p.kind == MachineKind::Rail;  // plant and loop are the rail's
+    if (!rail && !p.limits.hasY)
+        return QStringLiteral("limits.hasY: an XY machine has a y axis (got false)");
+    if (rail && p.plant.endSwitchMm >= p.plant.hardStopMm)
         return QStringLiteral("plant.endSwitchMm must be inside plant.hardStopMm (got %1 and %2)")
             .arg(num(p.plant.endSwitchMm), num(p.plant.hardStopMm));
-    if (x.softMaxMm >= p.plant.endSwitchMm)
+    if (rail && x.softMaxMm >= p.plant.endSwitchMm)
         return QStringLiteral(
                    "limits.x.softMaxMm: must be inside the right end switch, below "
                    "plant.endSwitchMm %1 (got %2)")
             .arg(num(p.plant.endSwitchMm), num(x.softMaxMm));
-    if (x.softMinMm <= -p.plant.endSwitchMm)
+    if (rail && x.softMinMm <= -p.plant.endSwitchMm)
         return QStringLiteral(
                    "limits.x.softMinMm: must be inside the left end switch, above "
                    "-plant.endSwitchMm %1 (got %2)")
@@ -272,12 +364,12 @@ QString checkAcrossKeys(const MachineProfile& p) {
                    "(got %2)")
             .arg(num(m.accelerationMmS2), num(m.maxDecelerationMmS2));
     const LoopParams& l = p.loop;
-    if (l.law == LoopLaw::Classic && l.samplePeriodS < kClassicMinSamplePeriodS)
+    if (rail && l.law == LoopLaw::Classic && l.samplePeriodS < kClassicMinSamplePeriodS)
         return QStringLiteral(
                    "loop.samplePeriodS: the classic law needs at least %1 s, its gains are per "
                    "tick (got %2)")
             .arg(num(kClassicMinSamplePeriodS), num(l.samplePeriodS));
-    if (l.minFollowingErrorMm > l.followingErrorLimitMm)
+    if (rail && l.minFollowingErrorMm > l.followingErrorLimitMm)
         return QStringLiteral(
                    "loop.minFollowingErrorMm: must not exceed loop.followingErrorLimitMm %1 "
                    "(got %2)")
@@ -303,11 +395,24 @@ ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin
         return result;
     }
     const QJsonObject root = doc.object();
-    if (const QString e = checkKeys(root, QString()); !e.isEmpty()) {
+    MachineKind kind = MachineKind::Rail;
+    if (const QJsonValue k = root.value(QStringLiteral("kind")); !k.isUndefined()) {
+        const std::optional<MachineKind> named =
+            k.isString() ? machineKindFromName(k.toString().toStdString()) : std::nullopt;
+        if (!named) {
+            result.error =
+                QStringLiteral(
+                    "%1: kind: must be \"rail\", \"xy-dc-table\" or \"xy-plotter\" (got %2)")
+                    .arg(origin, jsonText(k));
+            return result;
+        }
+        kind = *named;
+    }
+    if (const QString e = checkKeys(root, QString(), kind); !e.isEmpty()) {
         result.error = QStringLiteral("%1: %2").arg(origin, e);
         return result;
     }
-    MachineProfile p = MachineProfile::rail();
+    MachineProfile p = MachineProfile::forKind(kind);
     if (root.contains(QStringLiteral("name")))
         p.name = root.value(QStringLiteral("name")).toString();
     if (root.contains(QStringLiteral("description")))
@@ -324,6 +429,19 @@ ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin
             result.error =
                 QStringLiteral("%1: loop.law: must be \"classic\" or \"engineered\" (got %2)")
                     .arg(origin, jsonText(law));
+            return result;
+        }
+    }
+    const QJsonValue tableLaw = lookup(root, QStringLiteral("dcTable.law"));
+    if (!tableLaw.isUndefined()) {
+        if (tableLaw.toString() == QLatin1String("classic"))
+            p.dcTable.law = LoopLaw::Classic;
+        else if (tableLaw.toString() == QLatin1String("engineered"))
+            p.dcTable.law = LoopLaw::Engineered;
+        else {
+            result.error =
+                QStringLiteral("%1: dcTable.law: must be \"classic\" or \"engineered\" (got %2)")
+                    .arg(origin, jsonText(tableLaw));
             return result;
         }
     }
@@ -371,12 +489,17 @@ ProfileLoad loadMachineProfile(const QString& path) {
 QByteArray machineProfileToJson(const MachineProfile& profile) {
     MachineProfile p = profile;
     QJsonObject root;
+    auto lawName = [](LoopLaw law) {
+        return law == LoopLaw::Classic ? QStringLiteral("classic") : QStringLiteral("engineered");
+    };
+    root.insert(QStringLiteral("kind"), QString::fromLatin1(machineKindName(p.kind).data()));
     root.insert(QStringLiteral("name"), p.name);
     root.insert(QStringLiteral("description"), p.description);
     insert(root, {QStringLiteral("limits"), QStringLiteral("hasY")}, 0, p.limits.hasY);
-    insert(
-        root, {QStringLiteral("loop"), QStringLiteral("law")}, 0,
-        p.loop.law == LoopLaw::Classic ? QStringLiteral("classic") : QStringLiteral("engineered"));
+    if (p.kind == MachineKind::Rail)
+        insert(root, {QStringLiteral("loop"), QStringLiteral("law")}, 0, lawName(p.loop.law));
+    if (p.kind == MachineKind::DcTable)
+        insert(root, {QStringLiteral("dcTable"), QStringLiteral("law")}, 0, lawName(p.dcTable.law));
     forEachNumber(p, [&](const char* key, double& value, double, double) {
         insert(root, QString::fromLatin1(key).split(QLatin1Char('.')), 0, value);
     });
@@ -385,10 +508,12 @@ QByteArray machineProfileToJson(const MachineProfile& profile) {
 
 std::optional<NumberRange> machineProfileRange(const QString& key) {
     std::optional<NumberRange> range;
-    MachineProfile p;
-    forEachNumber(p, [&](const char* k, double&, double lo, double hi) {
-        if (key == QLatin1String(k)) range = NumberRange{lo, hi};
-    });
+    for (MachineKind kind : {MachineKind::Rail, MachineKind::DcTable, MachineKind::Plotter}) {
+        MachineProfile p = MachineProfile::forKind(kind);
+        forEachNumber(p, [&](const char* k, double&, double lo, double hi) {
+            if (key == QLatin1String(k)) range = NumberRange{lo, hi};
+        });
+    }
     return range;
 }
 

@@ -5,14 +5,13 @@
 #include <QString>
 #include <optional>
 
+#include "core/control/loop_law.h"
+#include "core/machine/dc_table_params.h"
+#include "core/machine/machine_kind.h"
 #include "core/machine/machine_limits.h"
+#include "core/machine/plotter_params.h"
 
 namespace trilho {
-
-enum class LoopLaw : unsigned char {
-    Classic,     ///< the 1996 difference equation (machine.md), step setpoint, DAC codes
-    Engineered,  ///< follows the profile: feed-forward, anti-windup, filtered D, slew limit
-};
 
 /// The simulated rail (hal/sim). Figures from machine.md unless marked "chosen".
 struct PlantParams {
@@ -108,15 +107,23 @@ struct MotionLimits {
 };
 
 struct MachineProfile {
+    MachineKind kind = MachineKind::Rail;
     QString name = QStringLiteral("rail");
     QString description = QStringLiteral("Robot rail of the USP manufacturing cell (1996)");
     MachineLimits limits;  ///< axes and soft limits (compiler)
     PlantParams plant;
     LoopParams loop;
     MotionLimits motion;
+    DcTableParams dcTable;  ///< kind DcTable only ("dcTable" section)
+    PlotterParams plotter;  ///< kind Plotter only ("plotter" section)
 
     /// The default profile: the rail of machine.md.
     static MachineProfile rail();
+    /// The DC XY table of xy.md B with seed 004's figures.
+    static MachineProfile xyDcTable();
+    /// The stepper XY plotter of xy.md A with seed 001's figures.
+    static MachineProfile xyPlotter();
+    static MachineProfile forKind(MachineKind kind);
 };
 
 struct ProfileLoad {
@@ -127,12 +134,14 @@ struct ProfileLoad {
 /// Profiles larger than this are refused (rail.json is 2 KB).
 inline constexpr long long kMaxProfileBytes = 1024 * 1024;
 
-/// Reads a profile; keys not given keep the defaults of rail(). Every bad value names its key:
-/// unknown keys (with the nearest valid one, "did you mean"), wrong types, values out of their
-/// range and figures that contradict each other are errors. Besides the profile's own keys, any
-/// object may hold a "source" and a "comment" string (where a figure comes from); they are not
-/// kept. Only regular files of at most kMaxProfileBytes are read (a FIFO or a device is refused
-/// at once, never waited on).
+/// Reads a profile; "kind" ("rail", the default, "xy-dc-table" or "xy-plotter") chooses the
+/// machine and its defaults (forKind); keys not given keep those defaults. The rail's sections
+/// ("plant", "loop") belong to the rail only, "dcTable" and "plotter" to their kinds. Every bad
+/// value names its key: unknown keys (with the nearest valid one, "did you mean"), wrong types,
+/// values out of their range and figures that contradict each other are errors. Besides the
+/// profile's own keys, any object may hold a "source" and a "comment" string (where a figure comes
+/// from); they are not kept. Only regular files of at most kMaxProfileBytes are read (a FIFO or a
+/// device is refused at once, never waited on).
 ProfileLoad loadMachineProfile(const QString& path);
 ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin);
 QByteArray machineProfileToJson(const MachineProfile& profile);

@@ -1,0 +1,78 @@
+#pragma once
+// The DC-motor XY table of xy.md B (seed 004): per-axis mechanics, drive and both loop laws.
+// Every figure says where it comes from: "seed 004 <section>" or "chosen".
+#include "core/control/loop_law.h"
+
+namespace trilho {
+
+/// The seed's position law per axis, u = b0 e + b1 e_prev (e in radians of the motor, u in
+/// percent PWM), run every 5 ms (seed 004, position loop).
+struct DcClassicGains {
+    double b0 = 0.0;
+    double b1 = 0.0;
+};
+
+/// The project's law per axis: u (percent PWM) = feed-forward + kp e + ki integral(e), with
+/// anti-windup; e in mm.
+struct DcEngineeredGains {
+    double kp = 0.0;   ///< %/mm
+    double ki = 0.0;   ///< %/(mm.s)
+    double kff = 0.0;  ///< %/(mm/s): velocity feed-forward
+};
+
+struct DcAxisParams {
+    double mmPerTurn = 2.0;            ///< seed 004: 2.12 mm on X, 2.00 mm on Y
+    double radPerCount = 0.314;        ///< seed 004: 0.314 rad of the motor per encoder count
+    double noLoadSpeedMmS = 400.0;     ///< chosen: plant speed at 100 % PWM
+    double timeConstantS = 0.03;       ///< chosen: motor mechanical time constant
+    double coulombPercent = 3.0;       ///< chosen: PWM percent that friction eats
+    double overCurrentPercent = 45.0;  ///< chosen: stall current trips above this duty when stalled
+    DcClassicGains classic;
+    DcEngineeredGains engineered;
+};
+
+struct DcTableParams {
+    LoopLaw law = LoopLaw::Engineered;   ///< "dcTable.law": "classic" is seed 004's law
+    double samplePeriodS = 0.005;        ///< seed 004: the loop runs every 5 ms
+    double pwmClampPercent = 50.0;       ///< seed 004: output clamped to 0..50 %
+    double pwmDutyMax = 247.0;           ///< seed 004: OCR top, duty 0..247 at 32 kHz
+    double followingErrorLimitMm = 5.0;  ///< chosen
+    double inPositionWindowMm = 0.02;    ///< chosen: about one count
+    DcAxisParams x{2.12, 0.314, 400.0, 0.03, 3.0, 45.0, {0.198, -0.179982}, {}};
+    DcAxisParams y{2.00, 0.314, 400.0, 0.03, 3.0, 45.0, {0.042, -0.035994}, {}};
+};
+
+/// Every number of the section with its key (under "dcTable.") and its allowed range.
+template <typename P, typename F>
+void forEachDcTableNumber(P& t, F&& f) {
+    f("dcTable.samplePeriodS", t.samplePeriodS, 0.001, 0.05);
+    f("dcTable.pwmClampPercent", t.pwmClampPercent, 1.0, 100.0);
+    f("dcTable.pwmDutyMax", t.pwmDutyMax, 1.0, 65535.0);
+    f("dcTable.followingErrorLimitMm", t.followingErrorLimitMm, 0.01, 1000.0);
+    f("dcTable.inPositionWindowMm", t.inPositionWindowMm, 0.0001, 10.0);
+    auto axis = [&](DcAxisParams& a, const char* mm, const char* rad, const char* v,
+                    const char* tau, const char* coul, const char* oc, const char* b0,
+                    const char* b1, const char* kp, const char* ki, const char* kff) {
+        f(mm, a.mmPerTurn, 0.01, 1000.0);
+        f(rad, a.radPerCount, 1e-6, 10.0);
+        f(v, a.noLoadSpeedMmS, 1.0, 100000.0);
+        f(tau, a.timeConstantS, 0.0001, 10.0);
+        f(coul, a.coulombPercent, 0.0, 50.0);
+        f(oc, a.overCurrentPercent, 1.0, 100.0);
+        f(b0, a.classic.b0, -100.0, 100.0);
+        f(b1, a.classic.b1, -100.0, 100.0);
+        f(kp, a.engineered.kp, 0.0, 10000.0);
+        f(ki, a.engineered.ki, 0.0, 100000.0);
+        f(kff, a.engineered.kff, 0.0, 100.0);
+    };
+    axis(t.x, "dcTable.x.mmPerTurn", "dcTable.x.radPerCount", "dcTable.x.noLoadSpeedMmS",
+         "dcTable.x.timeConstantS", "dcTable.x.coulombPercent", "dcTable.x.overCurrentPercent",
+         "dcTable.x.classic.b0", "dcTable.x.classic.b1", "dcTable.x.engineered.kp",
+         "dcTable.x.engineered.ki", "dcTable.x.engineered.kff");
+    axis(t.y, "dcTable.y.mmPerTurn", "dcTable.y.radPerCount", "dcTable.y.noLoadSpeedMmS",
+         "dcTable.y.timeConstantS", "dcTable.y.coulombPercent", "dcTable.y.overCurrentPercent",
+         "dcTable.y.classic.b0", "dcTable.y.classic.b1", "dcTable.y.engineered.kp",
+         "dcTable.y.engineered.ki", "dcTable.y.engineered.kff");
+}
+
+}  // namespace trilho
