@@ -247,6 +247,18 @@
         <source>Encoder stalled: the drive ran %1 mm without a single count and was cut. Check the encoder and its cable, acknowledge, then home again.</source>
         <translation>Encoder detenido: el accionamiento comandó %1 mm sin una sola cuenta y se cortó. Revise el encoder y su cable, reconozca y vuelva a referenciar.</translation>
     </message>
+    <message>
+        <source>Over-current: a motor drew too much current at %1 % PWM and its drive was cut. Free the axis, acknowledge, then home again.</source>
+        <translation>Sobrecorriente: un motor consumió demasiada corriente a %1 % de PWM y se cortó su accionamiento. Libere el eje, reconozca y luego vuelva a referenciar.</translation>
+    </message>
+    <message>
+        <source>Steps lost: homing found the origin %1 mm from where the counted steps put it. Lower the speed, acknowledge, then home again.</source>
+        <translation>Pasos perdidos: la referencia encontró el origen a %1 mm de donde lo ponían los pasos contados. Reduzca la velocidad, reconozca y luego vuelva a referenciar.</translation>
+    </message>
+    <message>
+        <source>Homing failed: the origin sensor was not found. Check the sensor and its cable, acknowledge, then home again.</source>
+        <translation>La referencia falló: no se encontró el sensor de origen. Revise el sensor y su cable, reconozca y luego vuelva a referenciar.</translation>
+    </message>
 </context>
 <context>
     <name>Diagnostic</name>

@@ -247,6 +247,18 @@
         <source>Encoder stalled: the drive ran %1 mm without a single count and was cut. Check the encoder and its cable, acknowledge, then home again.</source>
         <translation>Encoder parado: o acionamento comandou %1 mm sem uma única contagem e foi cortado. Verifique o encoder e o cabo, reconheça e refaça o referenciamento.</translation>
     </message>
+    <message>
+        <source>Over-current: a motor drew too much current at %1 % PWM and its drive was cut. Free the axis, acknowledge, then home again.</source>
+        <translation>Sobrecorrente: um motor consumiu corrente demais a %1 % de PWM e o seu acionamento foi cortado. Libere o eixo, reconheça e depois faça a referência de novo.</translation>
+    </message>
+    <message>
+        <source>Steps lost: homing found the origin %1 mm from where the counted steps put it. Lower the speed, acknowledge, then home again.</source>
+        <translation>Passos perdidos: a referência achou a origem a %1 mm de onde os passos contados a punham. Reduza a velocidade, reconheça e depois faça a referência de novo.</translation>
+    </message>
+    <message>
+        <source>Homing failed: the origin sensor was not found. Check the sensor and its cable, acknowledge, then home again.</source>
+        <translation>Referência falhou: o sensor de origem não foi encontrado. Verifique o sensor e o seu cabo, reconheça e depois faça a referência de novo.</translation>
+    </message>
 </context>
 <context>
     <name>Diagnostic</name>

@@ -23,6 +23,9 @@ enum class AlarmCode : std::uint8_t {
     CounterCorrected = 14,   ///< the centre mark corrected the count (lost counts, cable slip)
     MotionlessLoop = 15,     ///< a cycle of blocks that neither moves nor waits: held
     EncoderStalled = 16,     ///< the drive ran with no change of the counter: drive cut
+    OverCurrent = 17,        ///< an XY table motor's over-current input cut its drive
+    StepsLost = 18,          ///< the plotter's homing found the origin off: steps were lost
+    OriginNotFound = 19,     ///< the plotter's homing did not find the origin sensor
     Count_
 };
 

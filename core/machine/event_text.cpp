@@ -106,6 +106,15 @@ constexpr const char* kAlarm[static_cast<int>(AlarmCode::Count_)] = {
     QT_TRANSLATE_NOOP("Controller",
                       "Encoder stalled: the drive ran %1 mm without a single count and was cut. "
                       "Check the encoder and its cable, acknowledge, then home again."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Over-current: a motor drew too much current at %1 % PWM and its drive was "
+                      "cut. Free the axis, acknowledge, then home again."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Steps lost: homing found the origin %1 mm from where the counted steps "
+                      "put it. Lower the speed, acknowledge, then home again."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Homing failed: the origin sensor was not found. Check the sensor and its "
+                      "cable, acknowledge, then home again."),
 };
 
 QString number(double v) {
