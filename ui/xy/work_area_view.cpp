@@ -1,0 +1,172 @@
+#include "ui/xy/work_area_view.h"
+
+#include <QPainter>
+#include <QPainterPath>
+#include <cmath>
+
+#include "core/gcode/program.h"
+
+namespace trilho {
+namespace ui {
+
+namespace {
+constexpr double kMarginPx = 28.0;  ///< room for the axis figures
+}
+
+WorkAreaView::WorkAreaView(QWidget* parent) : QWidget(parent) {
+    setAttribute(Qt::WA_OpaquePaintEvent);
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+}
+
+void WorkAreaView::setArea(const QRectF& areaMm, const QPointF& originMm) {
+    area_ = areaMm.normalized();
+    origin_ = originMm;
+    update();
+}
+
+void WorkAreaView::setPlannedPath(std::vector<PathSegment> path) {
+    planned_ = std::move(path);
+    update();
+}
+
+void WorkAreaView::addFollowed(const QPointF& mm, bool penDown) {
+    if (!followed_.empty()) {
+        const Followed& last = followed_.back();
+        const double minStep = std::max(area_.width(), area_.height()) / 2000.0;
+        const QPointF d = mm - last.mm;
+        if (last.penDown == penDown && std::hypot(d.x(), d.y()) < minStep) return;
+    }
+    if (followed_.size() >= kMaxFollowed) {
+        // Keep every other point of the older half: the drawing stays, the memory is bounded.
+        std::vector<Followed> thinned;
+        thinned.reserve(kMaxFollowed);
+        const std::size_t half = followed_.size() / 2;
+        for (std::size_t i = 0; i < half; i += 2)
+            thinned.push_back(followed_[i]);
+        thinned.insert(thinned.end(), followed_.begin() + static_cast<std::ptrdiff_t>(half),
+                       followed_.end());
+        followed_.swap(thinned);
+    }
+    followed_.push_back({mm, penDown});
+    update();
+}
+
+void WorkAreaView::clearFollowed() {
+    followed_.clear();
+    update();
+}
+
+void WorkAreaView::setTool(const QPointF& mm, PenState pen) {
+    if (mm == tool_ && pen == pen_) return;
+    tool_ = mm;
+    pen_ = pen;
+    update();
+}
+
+std::vector<PathSegment> WorkAreaView::plan(const Program& program, QPointF startMm) {
+    std::vector<PathSegment> path;
+    QPointF at = startMm;
+    const bool hasY = program.y.size() == program.blocks.size();
+    for (std::size_t i = 0; i < program.blocks.size(); ++i) {
+        const Block& b = program.blocks[i];
+        if (b.op == Op::End) break;
+        if (!isMotion(b.op)) continue;
+        const QPointF to(b.x, hasY ? program.y[i] : at.y());
+        if (to != at) path.push_back({at, to, b.op == Op::Linear});
+        at = to;
+    }
+    return path;
+}
+
+double WorkAreaView::scale() const {
+    const double w = std::max(1.0, width() - 2 * kMarginPx);
+    const double h = std::max(1.0, height() - 2 * kMarginPx);
+    return std::min(w / std::max(1e-9, area_.width()), h / std::max(1e-9, area_.height()));
+}
+
+QPointF WorkAreaView::toPixel(const QPointF& mm) const {
+    const double s = scale();
+    // Centre the area in the widget; y up.
+    const double x0 = (width() - area_.width() * s) / 2.0;
+    const double y0 = (height() + area_.height() * s) / 2.0;
+    return {x0 + (mm.x() - area_.left()) * s, y0 - (mm.y() - area_.top()) * s};
+}
+
+void WorkAreaView::paintEvent(QPaintEvent*) {
+    QPainter p(this);
+    p.fillRect(rect(), palette().color(QPalette::Window));
+    p.setRenderHint(QPainter::Antialiasing);
+    const QRectF table(toPixel({area_.left(), area_.bottom()}),
+                       toPixel({area_.right(), area_.top()}));
+    p.fillRect(table, QColor(250, 250, 245));
+
+    // Grid every 10 mm (50 mm lines darker), with the 50 mm figures on the edges.
+    const double s = scale();
+    const double minor = s * 10 < 6 ? 50.0 : 10.0;
+    QFont small = font();
+    small.setPointSizeF(std::max(6.0, small.pointSizeF() * 0.8));
+    p.setFont(small);
+    for (double x = std::ceil(area_.left() / minor) * minor; x <= area_.right() + 1e-9;
+         x += minor) {
+        const bool major = std::fmod(std::abs(x), 50.0) < 1e-9;
+        p.setPen(QPen(major ? QColor(200, 200, 200) : QColor(232, 232, 232), 1));
+        p.drawLine(toPixel({x, area_.top()}), toPixel({x, area_.bottom()}));
+        if (major) {
+            p.setPen(palette().color(QPalette::WindowText));
+            const QPointF at = toPixel({x, area_.top()});
+            p.drawText(QRectF(at.x() - 25, at.y() + 2, 50, kMarginPx - 4),
+                       Qt::AlignHCenter | Qt::AlignTop, QString::number(x));
+        }
+    }
+    for (double y = std::ceil(area_.top() / minor) * minor; y <= area_.bottom() + 1e-9;
+         y += minor) {
+        const bool major = std::fmod(std::abs(y), 50.0) < 1e-9;
+        p.setPen(QPen(major ? QColor(200, 200, 200) : QColor(232, 232, 232), 1));
+        p.drawLine(toPixel({area_.left(), y}), toPixel({area_.right(), y}));
+        if (major) {
+            p.setPen(palette().color(QPalette::WindowText));
+            const QPointF at = toPixel({area_.left(), y});
+            p.drawText(QRectF(at.x() - kMarginPx, at.y() - 8, kMarginPx - 3, 16),
+                       Qt::AlignRight | Qt::AlignVCenter, QString::number(y));
+        }
+    }
+    p.setPen(QPen(QColor(90, 90, 90), 1.5));
+    p.setBrush(Qt::NoBrush);
+    p.drawRect(table);
+
+    // Planned path: travel dashed grey, drawing solid dark blue.
+    QPen travel(QColor(140, 140, 140), 1, Qt::DashLine);
+    QPen draw(QColor(20, 40, 140), 1.5);
+    for (const PathSegment& seg : planned_) {
+        p.setPen(seg.draw ? draw : travel);
+        p.drawLine(toPixel(seg.from), toPixel(seg.to));
+    }
+
+    // Followed path: red where the pen was down (or the table moved), light when up.
+    if (followed_.size() > 1) {
+        QPen down(QColor(210, 30, 30), 2);
+        QPen up(QColor(240, 160, 160), 1);
+        for (std::size_t i = 1; i < followed_.size(); ++i) {
+            p.setPen(followed_[i].penDown && followed_[i - 1].penDown ? down : up);
+            p.drawLine(toPixel(followed_[i - 1].mm), toPixel(followed_[i].mm));
+        }
+    }
+
+    // The origin: two short arrows and "0".
+    const QPointF o = toPixel(origin_);
+    p.setPen(QPen(QColor(0, 120, 0), 2));
+    p.drawLine(o, o + QPointF(18, 0));
+    p.drawLine(o, o - QPointF(0, 18));
+    p.drawText(QRectF(o.x() + 3, o.y() - 16, 14, 14), Qt::AlignCenter, QStringLiteral("0"));
+
+    // The tool: a cross in a circle, filled when the pen is down.
+    const QPointF t = toPixel(tool_);
+    p.setPen(QPen(QColor(0, 0, 0), 1.5));
+    p.setBrush(pen_ == PenState::Down ? QBrush(QColor(210, 30, 30)) : QBrush(Qt::NoBrush));
+    p.drawEllipse(t, 6, 6);
+    p.drawLine(t - QPointF(10, 0), t + QPointF(10, 0));
+    p.drawLine(t - QPointF(0, 10), t + QPointF(0, 10));
+}
+
+}  // namespace ui
+}  // namespace trilho

@@ -1,0 +1,68 @@
+#pragma once
+// Top-down view of an XY machine's work area, to scale (xy.md A and B): the planned path of the
+// loaded program (travel dashed, drawing solid), the path the tool actually followed, drawn
+// live, the tool (or pen) marker and the origin. Y grows upwards, as on the table.
+#include <QPointF>
+#include <QRectF>
+#include <QWidget>
+#include <vector>
+
+#include "core/machine/xy_motion.h"
+
+namespace trilho {
+struct Program;
+
+namespace ui {
+
+struct PathSegment {
+    QPointF from, to;   ///< mm
+    bool draw = false;  ///< g01 (pen down) as opposed to g00 travel
+};
+
+class WorkAreaView : public QWidget {
+    Q_OBJECT
+  public:
+    explicit WorkAreaView(QWidget* parent = nullptr);
+
+    /// The work area in mm (the profile's soft limits) and the origin sensor's corner.
+    void setArea(const QRectF& areaMm, const QPointF& originMm);
+    void setPlannedPath(std::vector<PathSegment> path);
+    /// A new sample of the tool; kept when it moved at least a hundredth of the area's size
+    /// in pixels or the pen changed, so hours of running hold a bounded list.
+    void addFollowed(const QPointF& mm, bool penDown);
+    void clearFollowed();
+    void setTool(const QPointF& mm, PenState pen);
+
+    /// The planned path of a compiled program, blocks in order from start (gotos not
+    /// followed: each block's move is drawn once).
+    static std::vector<PathSegment> plan(const Program& program, QPointF startMm);
+
+    const std::vector<PathSegment>& plannedPath() const { return planned_; }
+    std::size_t followedCount() const { return followed_.size(); }
+    /// Widget pixel of a point in mm (for tests).
+    QPointF toPixel(const QPointF& mm) const;
+
+    /// At most this many followed points are kept; the oldest half is thinned when full.
+    static constexpr std::size_t kMaxFollowed = 100000;
+
+  protected:
+    void paintEvent(QPaintEvent* e) override;
+    QSize sizeHint() const override { return {480, 480}; }
+    QSize minimumSizeHint() const override { return {200, 200}; }
+
+  private:
+    struct Followed {
+        QPointF mm;
+        bool penDown;
+    };
+    double scale() const;  ///< px per mm
+    QRectF area_{0, 0, 300, 300};
+    QPointF origin_;
+    std::vector<PathSegment> planned_;
+    std::vector<Followed> followed_;
+    QPointF tool_;
+    PenState pen_ = PenState::None;
+};
+
+}  // namespace ui
+}  // namespace trilho

@@ -1,0 +1,82 @@
+#pragma once
+// The screens' link to an XY machine: the controller and its simulated plant run on a worker
+// thread in real time (one step per sample period, measured); the GUI posts commands and takes
+// snapshots, never waiting on the worker. Tests run it without the thread (advance()), in
+// virtual time, so they are deterministic.
+#include <QObject>
+#include <QTimer>
+#include <atomic>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "core/machine/xy_controller.h"
+
+namespace trilho {
+namespace ui {
+
+/// What the link runs: a controller paired with its plant (app/session's XY sessions).
+class XyRunnable {
+  public:
+    virtual ~XyRunnable() = default;
+    /// One period: the controller ticks, then the plant runs dtS.
+    virtual void step(double dtS) = 0;
+    virtual XyController& controller() = 0;
+    virtual double periodS() const = 0;
+};
+
+/// One row of the live trace: every period's sample, for the view and the plots.
+struct XyTraceRow {
+    double tS = 0.0;
+    XySample sample;
+};
+
+class XyLink : public QObject {
+    Q_OBJECT
+  public:
+    /// threaded: run the worker thread (the screens); false: tests call advance().
+    XyLink(std::unique_ptr<XyRunnable> machine, bool threaded, QObject* parent = nullptr);
+    ~XyLink() override;
+
+    const MachineProfile& profile() const { return profile_; }
+    /// Runs cmd on the controller before the next period (thread-safe, never blocks long).
+    void post(std::function<void(XyController&)> cmd);
+    /// The last published status.
+    XyStatus status() const;
+    /// Runs seconds of virtual time now (threaded == false only), then publishes.
+    void advance(double seconds);
+
+    /// Rows and events kept between two GUI polls; older ones are dropped (and counted).
+    static constexpr std::size_t kMaxRows = 8192;
+    static constexpr std::size_t kMaxEvents = 4096;
+
+  signals:
+    /// Emitted on the GUI thread at 50 Hz (and after advance()): new rows, events, status.
+    void updated(const std::vector<XyTraceRow>& rows, const std::vector<ControllerEvent>& events,
+                 const XyStatus& status);
+
+  private:
+    void stepOnce(double dtS);  ///< worker side: commands, step, publish
+    void run();                 ///< the worker thread's loop
+    void poll();                ///< GUI side: takes what the worker published
+
+    std::unique_ptr<XyRunnable> machine_;
+    MachineProfile profile_;
+    bool threaded_;
+    mutable std::mutex mutex_;  ///< guards everything below it
+    std::vector<std::function<void(XyController&)>> commands_;
+    std::deque<XyTraceRow> rows_;
+    std::vector<ControllerEvent> events_;
+    XyStatus status_;
+    std::size_t droppedRows_ = 0;
+    double timeS_ = 0.0;  ///< worker only
+    std::atomic<bool> quit_{false};
+    std::thread worker_;
+    QTimer poll_;
+};
+
+}  // namespace ui
+}  // namespace trilho

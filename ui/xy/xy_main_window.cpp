@@ -1,0 +1,367 @@
+#include "ui/xy/xy_main_window.h"
+
+#include <QAction>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QMenuBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QShortcut>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QVBoxLayout>
+
+#include "core/gcode/compiler.h"
+#include "core/gcode/diagnostic_text.h"
+#include "core/gcode/source_file.h"
+#include "core/machine/event_text.h"
+#include "ui/xy/dc_table_panel.h"
+#include "ui/xy/plotter_panel.h"
+#include "ui/xy/work_area_view.h"
+#include "ui/xy/xy_plots.h"
+
+namespace trilho {
+namespace ui {
+
+namespace {
+QString stateText(ControllerState s) {
+    switch (s) {
+        case ControllerState::Manual:
+            return XyMainWindow::tr("MANUAL");
+        case ControllerState::AutoIdle:
+            return XyMainWindow::tr("AUTOMATIC - ready");
+        case ControllerState::Homing:
+            return XyMainWindow::tr("HOMING");
+        case ControllerState::Running:
+            return XyMainWindow::tr("RUNNING");
+        case ControllerState::Waiting:
+            return XyMainWindow::tr("DWELL");
+        case ControllerState::Paused:
+            return XyMainWindow::tr("PAUSED");
+        case ControllerState::Alarm:
+            return XyMainWindow::tr("ALARM");
+        case ControllerState::EStop:
+            return XyMainWindow::tr("E-STOP LATCHED");
+    }
+    return {};
+}
+
+bool moving(ControllerState s) {
+    return s == ControllerState::Running || s == ControllerState::Waiting ||
+           s == ControllerState::Homing;
+}
+}  // namespace
+
+XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
+    : QMainWindow(parent), link_(link), settings_(settings) {
+    const MachineProfile& profile = link_.profile();
+    view_ = new WorkAreaView(this);
+    const AxisTravel& x = profile.limits.x;
+    const AxisTravel& y = profile.limits.y;
+    const QPointF origin = profile.kind == MachineKind::Plotter
+                               ? QPointF(profile.plotter.originX, profile.plotter.originY)
+                               : QPointF(0, 0);
+    view_->setArea(
+        QRectF(x.softMinMm, y.softMinMm, x.softMaxMm - x.softMinMm, y.softMaxMm - y.softMinMm),
+        origin);
+    plots_ = new XyPlots(this);
+    history_ = new QListWidget(this);
+    history_->setObjectName(QStringLiteral("xyHistory"));
+
+    // The readout: big figures an operator reads from a step away.
+    state_ = new QLabel(this);
+    state_->setObjectName(QStringLiteral("xyState"));
+    position_ = new QLabel(this);
+    position_->setObjectName(QStringLiteral("xyPosition"));
+    QFont big = position_->font();
+    big.setPointSizeF(big.pointSizeF() * 1.8);
+    big.setBold(true);
+    position_->setFont(big);
+    QFont stateFont = state_->font();
+    stateFont.setBold(true);
+    stateFont.setPointSizeF(stateFont.pointSizeF() * 1.3);
+    state_->setFont(stateFont);
+    state_->setAutoFillBackground(true);
+    state_->setMargin(4);
+    block_ = new QLabel(this);
+    program_label_ = new QLabel(this);
+
+    auto button = [this](const char* name) {
+        auto* b = new QPushButton(this);
+        b->setObjectName(QString::fromLatin1(name));
+        return b;
+    };
+    open_ = button("xyOpen");
+    automatic_ = button("xyAutomatic");
+    start_ = button("xyStart");
+    hold_ = button("xyHold");
+    resume_ = button("xyResume");
+    stop_ = button("xyStop");
+    estop_ = button("xyEStop");
+    reset_ = button("xyReset");
+    ack_ = button("xyAck");
+    estop_->setStyleSheet(QStringLiteral(
+        "QPushButton{background:#c0161b;color:white;font-weight:bold;padding:4px 10px;}"));
+    auto* controls = new QHBoxLayout;
+    for (QPushButton* b : {open_, automatic_, start_, hold_, resume_, stop_, reset_, ack_})
+        controls->addWidget(b);
+    controls->addStretch();
+    controls->addWidget(estop_);
+
+    connect(open_, &QPushButton::clicked, this, &XyMainWindow::chooseFile);
+    connect(automatic_, &QPushButton::clicked, this,
+            [this] { link_.post([](XyController& c) { c.selectAutomatic(); }); });
+    connect(start_, &QPushButton::clicked, this, &XyMainWindow::startProgram);
+    connect(hold_, &QPushButton::clicked, this,
+            [this] { link_.post([](XyController& c) { c.hold(); }); });
+    connect(resume_, &QPushButton::clicked, this, [this] {
+        link_.post([](XyController& c) {
+            if (c.status().pause == PauseReason::M00)
+                c.pressContinue();
+            else
+                c.resume();
+        });
+    });
+    connect(stop_, &QPushButton::clicked, this,
+            [this] { link_.post([](XyController& c) { c.stop(); }); });
+    connect(estop_, &QPushButton::clicked, this,
+            [this] { link_.post([](XyController& c) { c.emergencyStop(); }); });
+    connect(reset_, &QPushButton::clicked, this,
+            [this] { link_.post([](XyController& c) { c.resetEmergencyStop(); }); });
+    connect(ack_, &QPushButton::clicked, this,
+            [this] { link_.post([](XyController& c) { c.acknowledgeAlarms(); }); });
+    // Keys: E-stop on Pause/Break, which no dialog or menu uses; the run keys F5-F8.
+    auto key = [this](const QKeySequence& k, QPushButton* b) {
+        auto* s = new QShortcut(k, this);
+        s->setContext(Qt::ApplicationShortcut);
+        connect(s, &QShortcut::activated, b, [b] {
+            if (b->isEnabled()) b->click();
+        });
+    };
+    key(QKeySequence(Qt::Key_Pause), estop_);
+    key(QKeySequence(Qt::Key_F5), start_);
+    key(QKeySequence(Qt::Key_F6), hold_);
+    key(QKeySequence(Qt::Key_F7), resume_);
+    key(QKeySequence(Qt::Key_F8), stop_);
+    key(QKeySequence(QKeySequence::Open), open_);
+
+    // The machine's own panel.
+    QWidget* machinePanel = nullptr;
+    if (profile.kind == MachineKind::DcTable) {
+        table_ = new DcTablePanel(this);
+        table_->setArea(x.softMinMm, x.softMaxMm, y.softMinMm, y.softMaxMm);
+        connect(table_, &DcTablePanel::sendRequested, this, [this](double xm, double ym) {
+            link_.post([xm, ym](XyController& c) { c.moveTo({xm, ym}, 1.0); });
+        });
+        machinePanel = table_;
+    } else {
+        plotter_ = new PlotterPanel(this);
+        const PlotterParams& pp = profile.plotter;
+        plotter_->setSpeedRange(pp.maxStepRateHz, pp.defaultSpeedStepsS);
+        connect(plotter_, &PlotterPanel::jogRequested, this, [this](int axis, double d) {
+            const double fraction =
+                plotter_->speedStepsS() / std::max(1.0, link_.profile().plotter.maxStepRateHz);
+            link_.post([axis, d, fraction](XyController& c) { c.jog(axis, d, fraction); });
+        });
+        connect(plotter_, &PlotterPanel::originRequested, this, [this, origin] {
+            const double fraction =
+                plotter_->speedStepsS() / std::max(1.0, link_.profile().plotter.maxStepRateHz);
+            link_.post([origin, fraction](XyController& c) {
+                c.moveTo({origin.x(), origin.y()}, fraction);
+            });
+        });
+        machinePanel = plotter_;
+    }
+
+    auto* readout = new QVBoxLayout;
+    readout->addWidget(state_);
+    readout->addWidget(position_);
+    readout->addWidget(block_);
+    readout->addWidget(program_label_);
+    auto* side = new QWidget(this);
+    auto* sideLayout = new QVBoxLayout(side);
+    sideLayout->addLayout(readout);
+    sideLayout->addWidget(machinePanel);
+    sideLayout->addWidget(history_, 1);
+
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    split->addWidget(view_);
+    split->addWidget(side);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 2);
+    auto* vsplit = new QSplitter(Qt::Vertical, this);
+    vsplit->addWidget(split);
+    vsplit->addWidget(plots_);
+    vsplit->setStretchFactor(0, 3);
+    vsplit->setStretchFactor(1, 2);
+
+    auto* central = new QWidget(this);
+    auto* v = new QVBoxLayout(central);
+    v->addLayout(controls);
+    v->addWidget(vsplit, 1);
+    setCentralWidget(central);
+
+    auto* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&Open program..."), this, &XyMainWindow::chooseFile);
+    file->addSeparator();
+    file->addAction(tr("E&xit"), this, &QWidget::close);
+
+    connect(&link_, &XyLink::updated, this, &XyMainWindow::onUpdate);
+    last_ = link_.status();
+    retranslate();
+    onUpdate({}, {}, last_);
+}
+
+bool XyMainWindow::selectProgram(const QString& path) {
+    const SourceFile file = readSourceFile(QFile::encodeName(path).toStdString());
+    if (!file.ok) {
+        const QString why = QString::fromStdString(file.error);
+        statusBar()->showMessage(why, 8000);
+        addHistory(why, true);
+        return false;
+    }
+    CompileOptions options;
+    options.machine = link_.profile().limits;
+    options.maxDiagnostics = 50;
+    auto program = std::make_shared<Program>(compile(file.bytes, options));
+    programName_ = QFileInfo(path).fileName();
+    if (!program->ok()) {
+        for (const Diagnostic& d : program->diagnostics)
+            addHistory(QStringLiteral("%1: %2 %3")
+                           .arg(programName_, diagnosticPlace(d), diagnosticMessage(d)),
+                       true);
+        statusBar()->showMessage(compileSummary(program->errorCount()), 8000);
+        program_.reset();
+        view_->setPlannedPath({});
+        retranslate();
+        return false;
+    }
+    program_ = program;
+    const XySample s = last_.sample;
+    view_->setPlannedPath(WorkAreaView::plan(*program, {s.x.positionMm, s.y.positionMm}));
+    view_->clearFollowed();
+    if (plotter_) {
+        int points = 0;
+        for (const Block& b : program->blocks)
+            points += isMotion(b.op) ? 1 : 0;
+        plotter_->setPointCount(points);
+    }
+    settings_.setValue(QStringLiteral("xyLastProgram"), path);
+    link_.post([program](XyController& c) { c.loadProgram(program); });
+    retranslate();
+    return true;
+}
+
+void XyMainWindow::startProgram() {
+    if (!program_) return;
+    auto program = program_;
+    view_->clearFollowed();
+    link_.post([program](XyController& c) {
+        c.loadProgram(program);
+        if (!c.status().automatic) c.selectAutomatic();
+        c.start(0);
+    });
+}
+
+void XyMainWindow::chooseFile() {
+    const QString folder = settings_.value(QStringLiteral("xyLastFolder")).toString();
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open program"), folder,
+                                                      tr("G-code programs (*.G *.g)"));
+    if (path.isEmpty()) return;
+    settings_.setValue(QStringLiteral("xyLastFolder"), QFileInfo(path).absolutePath());
+    selectProgram(path);
+}
+
+void XyMainWindow::addHistory(const QString& line, bool alarm) {
+    auto* item = new QListWidgetItem(line, history_);
+    if (alarm) item->setForeground(QColor(190, 0, 0));
+    while (history_->count() > 2000)
+        delete history_->takeItem(0);
+    history_->scrollToBottom();
+}
+
+void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
+                            const std::vector<ControllerEvent>& events, const XyStatus& status) {
+    for (const XyTraceRow& r : rows) {
+        plots_->addSample(r.tS, r.sample);
+        // The table has no pen: what it follows is drawn as drawing.
+        view_->addFollowed({r.sample.x.positionMm, r.sample.y.positionMm},
+                           r.sample.pen != PenState::Up);
+    }
+    for (const ControllerEvent& e : events) {
+        const bool alarm = e.kind == EventKind::AlarmRaised;
+        const QString line = historyLine(e);
+        if (!line.isEmpty()) addHistory(line, alarm);
+    }
+    last_ = status;
+    const XySample& s = status.sample;
+    view_->setTool({s.x.positionMm, s.y.positionMm}, s.pen);
+    position_->setText(QStringLiteral("X %1  Y %2 mm")
+                           .arg(s.x.positionMm, 8, 'f', 2)
+                           .arg(s.y.positionMm, 8, 'f', 2));
+    state_->setText(stateText(status.state));
+    QPalette pal = state_->palette();
+    const bool latched = status.state == ControllerState::EStop;
+    const bool alarmed = status.state == ControllerState::Alarm || status.activeAlarms != 0;
+    pal.setColor(QPalette::Window, latched   ? QColor(192, 22, 27)
+                                   : alarmed ? QColor(255, 200, 0)
+                                             : palette().color(QPalette::Window));
+    pal.setColor(QPalette::WindowText, latched ? Qt::white : palette().color(QPalette::WindowText));
+    state_->setPalette(pal);
+    block_->setText(status.blockN >= 0 || status.blockLine > 0
+                        ? tr("Block N%1, line %2").arg(status.blockN).arg(status.blockLine)
+                        : QString());
+    const bool idle =
+        status.state == ControllerState::Manual || status.state == ControllerState::AutoIdle;
+    start_->setEnabled(program_ != nullptr && idle);
+    hold_->setEnabled(status.state == ControllerState::Running ||
+                      status.state == ControllerState::Waiting);
+    resume_->setEnabled(status.state == ControllerState::Paused);
+    stop_->setEnabled(moving(status.state) || status.state == ControllerState::Paused);
+    reset_->setEnabled(latched);
+    ack_->setEnabled(!latched && alarmed);
+    automatic_->setEnabled(idle && !status.automatic);
+    if (table_) {
+        table_->setRunning(moving(status.state));
+        table_->setSendEnabled(status.state == ControllerState::Manual);
+    }
+    if (plotter_) plotter_->setControlsEnabled(status.state == ControllerState::Manual);
+}
+
+void XyMainWindow::closeEvent(QCloseEvent* e) {
+    // Leaving the screen stops the machine: the worker thread ends with the link.
+    link_.post([](XyController& c) { c.stop(); });
+    QMainWindow::closeEvent(e);
+}
+
+void XyMainWindow::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::LanguageChange) retranslate();
+    QMainWindow::changeEvent(e);
+}
+
+void XyMainWindow::retranslate() {
+    const MachineProfile& p = link_.profile();
+    setWindowTitle(tr("trilho - %1").arg(p.description));
+    open_->setText(tr("Open..."));
+    automatic_->setText(tr("Automatic (home)"));
+    start_->setText(tr("Cycle start (F5)"));
+    hold_->setText(tr("Hold (F6)"));
+    resume_->setText(tr("Resume (F7)"));
+    stop_->setText(tr("Stop (F8)"));
+    estop_->setText(tr("E-STOP (Pause)"));
+    reset_->setText(tr("Reset E-stop"));
+    ack_->setText(tr("Acknowledge"));
+    program_label_->setText(program_ ? tr("Program: %1").arg(programName_)
+                                     : tr("No program loaded"));
+    state_->setText(stateText(last_.state));
+}
+
+}  // namespace ui
+}  // namespace trilho

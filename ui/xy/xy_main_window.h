@@ -1,0 +1,73 @@
+#pragma once
+// The main screen of an XY machine (xy.md A and B): the work area seen from above with the
+// planned and the followed path, the machine's own panel (seed 004's front panel for the DC
+// table, seed 001's controls for the plotter), per-axis plots, the position readout, the run
+// controls and the history. The rail keeps its own replicated 1996 screen (MainWindow).
+#include <QMainWindow>
+#include <memory>
+
+#include "core/gcode/program.h"
+#include "ui/xy/xy_link.h"
+
+class QLabel;
+class QListWidget;
+class QPushButton;
+class QAction;
+class QSettings;
+
+namespace trilho {
+namespace ui {
+
+class WorkAreaView;
+class XyPlots;
+class DcTablePanel;
+class PlotterPanel;
+
+class XyMainWindow : public QMainWindow {
+    Q_OBJECT
+  public:
+    XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent = nullptr);
+
+    /// Reads and compiles a .G file for this machine; false (and the reason in the status bar
+    /// and the history) when it cannot be read or has errors.
+    bool selectProgram(const QString& path);
+    void startProgram();  ///< Automatic (homes first when needed), then runs the program
+
+    WorkAreaView* workArea() const { return view_; }
+    XyPlots* plots() const { return plots_; }
+    DcTablePanel* tablePanel() const { return table_; }
+    PlotterPanel* plotterPanel() const { return plotter_; }
+    QListWidget* history() const { return history_; }
+    QLabel* stateLabel() const { return state_; }
+    QLabel* positionLabel() const { return position_; }
+    QPushButton* startButton() const { return start_; }
+    QPushButton* estopButton() const { return estop_; }
+    const std::shared_ptr<const Program>& program() const { return program_; }
+
+  protected:
+    void changeEvent(QEvent* e) override;
+    void closeEvent(QCloseEvent* e) override;
+
+  private:
+    void onUpdate(const std::vector<XyTraceRow>& rows, const std::vector<ControllerEvent>& events,
+                  const XyStatus& status);
+    void chooseFile();
+    void retranslate();
+    void addHistory(const QString& line, bool alarm);
+
+    XyLink& link_;
+    QSettings& settings_;
+    WorkAreaView* view_;
+    XyPlots* plots_;
+    DcTablePanel* table_ = nullptr;
+    PlotterPanel* plotter_ = nullptr;
+    QListWidget* history_;
+    QLabel *state_, *position_, *block_, *program_label_;
+    QPushButton *open_, *automatic_, *start_, *hold_, *resume_, *stop_, *estop_, *reset_, *ack_;
+    std::shared_ptr<const Program> program_;
+    QString programName_;
+    XyStatus last_;
+};
+
+}  // namespace ui
+}  // namespace trilho

@@ -1,0 +1,103 @@
+#include "ui/xy/xy_plots.h"
+
+#include <qcustomplot.h>
+#include <QEvent>
+#include <QVBoxLayout>
+
+namespace trilho {
+namespace ui {
+
+namespace {
+QCustomPlot* makePlot(QWidget* parent) {
+    auto* p = new QCustomPlot(parent);
+    p->setMinimumHeight(120);
+    p->setNotAntialiasedElements(QCP::aeAll);  // cheap redraws at 25 Hz
+    QFont small = p->font();
+    small.setPointSizeF(small.pointSizeF() * 0.8);
+    p->legend->setFont(small);
+    p->legend->setBrush(QColor(255, 255, 255, 200));
+    p->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
+    p->legend->setVisible(true);
+    return p;
+}
+QCPGraph* graph(QCustomPlot* p, QColor c, Qt::PenStyle style, double width) {
+    QCPGraph* g = p->addGraph();
+    g->setPen(QPen(c, width, style));
+    return g;
+}
+}  // namespace
+
+XyPlots::XyPlots(QWidget* parent) : QWidget(parent) {
+    position_ = makePlot(this);
+    velocity_ = makePlot(this);
+    const QColor xc(0, 90, 200), yc(200, 90, 0);
+    xSet_ = graph(position_, xc, Qt::DashLine, 1);
+    xPos_ = graph(position_, xc, Qt::SolidLine, 1.5);
+    ySet_ = graph(position_, yc, Qt::DashLine, 1);
+    yPos_ = graph(position_, yc, Qt::SolidLine, 1.5);
+    xVel_ = graph(velocity_, xc, Qt::SolidLine, 1.5);
+    yVel_ = graph(velocity_, yc, Qt::SolidLine, 1.5);
+    auto* v = new QVBoxLayout(this);
+    v->setContentsMargins(0, 0, 0, 0);
+    v->addWidget(position_, 1);
+    v->addWidget(velocity_, 1);
+    retranslate();
+}
+
+void XyPlots::addSample(double tS, const XySample& s) {
+    lastT_ = tS;
+    xSet_->addData(tS, s.x.setpointMm);
+    xPos_->addData(tS, s.x.positionMm);
+    ySet_->addData(tS, s.y.setpointMm);
+    yPos_->addData(tS, s.y.positionMm);
+    xVel_->addData(tS, s.x.velocityMmS);
+    yVel_->addData(tS, s.y.velocityMmS);
+    if (tS - lastReplotT_ < 0.04 && lastReplotT_ >= 0) return;  // 25 Hz is enough to read
+    lastReplotT_ = tS;
+    const double from = tS - kWindowS;
+    for (QCustomPlot* p : {position_, velocity_}) {
+        for (int i = 0; i < p->graphCount(); ++i)
+            p->graph(i)->data()->removeBefore(from);
+        p->xAxis->setRange(std::max(0.0, from), std::max(kWindowS, tS));
+        p->rescaleAxes(true);
+        p->xAxis->setRange(std::max(0.0, from), std::max(kWindowS, tS));
+        QCPRange r = p->yAxis->range();
+        p->yAxis->setRange(r.lower - 0.05 * r.size() - 0.5, r.upper + 0.05 * r.size() + 0.5);
+        p->replot(QCustomPlot::rpQueuedReplot);
+    }
+}
+
+void XyPlots::clear() {
+    for (QCustomPlot* p : {position_, velocity_}) {
+        for (int i = 0; i < p->graphCount(); ++i)
+            p->graph(i)->data()->clear();
+        p->replot(QCustomPlot::rpQueuedReplot);
+    }
+    lastReplotT_ = -1.0;
+}
+
+int XyPlots::pointCount() const {
+    return xPos_->dataCount();
+}
+
+void XyPlots::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::LanguageChange) retranslate();
+    QWidget::changeEvent(e);
+}
+
+void XyPlots::retranslate() {
+    xSet_->setName(tr("x set point"));
+    xPos_->setName(tr("x position"));
+    ySet_->setName(tr("y set point"));
+    yPos_->setName(tr("y position"));
+    xVel_->setName(tr("x speed"));
+    yVel_->setName(tr("y speed"));
+    position_->yAxis->setLabel(tr("position (mm)"));
+    velocity_->yAxis->setLabel(tr("speed (mm/s)"));
+    velocity_->xAxis->setLabel(QStringLiteral("t (s)"));
+    position_->replot(QCustomPlot::rpQueuedReplot);
+    velocity_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+}  // namespace ui
+}  // namespace trilho

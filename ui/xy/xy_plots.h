@@ -1,0 +1,37 @@
+#pragma once
+// Per-axis position and velocity of an XY machine against time (seed 004's front panel plots,
+// and the plotter's): set point dashed, measured solid; the last 20 s.
+#include <QWidget>
+
+#include "core/machine/xy_motion.h"
+
+class QCustomPlot;
+class QCPGraph;
+
+namespace trilho {
+namespace ui {
+
+class XyPlots : public QWidget {
+    Q_OBJECT
+  public:
+    explicit XyPlots(QWidget* parent = nullptr);
+    void addSample(double tS, const XySample& s);
+    void clear();
+    /// Points held by the position plot's x graph (tests).
+    int pointCount() const;
+
+    static constexpr double kWindowS = 20.0;
+
+  protected:
+    void changeEvent(QEvent* e) override;
+
+  private:
+    void retranslate();
+    QCustomPlot *position_, *velocity_;
+    QCPGraph *xSet_, *xPos_, *ySet_, *yPos_, *xVel_, *yVel_;
+    double lastT_ = 0.0;
+    double lastReplotT_ = -1.0;
+};
+
+}  // namespace ui
+}  // namespace trilho
