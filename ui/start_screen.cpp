@@ -1,7 +1,9 @@
 #include "ui/start_screen.h"
 
+#include <QComboBox>
 #include <QEvent>
 #include <QFrame>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QVBoxLayout>
@@ -49,6 +51,16 @@ StartScreen::StartScreen(QWidget* parent) : QDialog(parent) {
     credit_->setAlignment(Qt::AlignCenter);
     credit_->setWordWrap(true);
     v->addWidget(credit_);
+    machineLabel_ = new QLabel(panel);
+    machine_ = new QComboBox(panel);
+    machine_->setObjectName(QStringLiteral("startMachine"));
+    for (int i = 0; i < 3; ++i)
+        machine_->addItem(QString(), i);
+    machineLabel_->setBuddy(machine_);
+    auto* machineRow = new QHBoxLayout;
+    machineRow->addWidget(machineLabel_);
+    machineRow->addWidget(machine_, 1);
+    v->addLayout(machineRow);
     ok_ = new QPushButton(panel);
     ok_->setDefault(true);
     ok_->setMinimumSize(81, 33);  // 1215 x 495 twips
@@ -68,6 +80,25 @@ void StartScreen::retranslate() {
     authors_->setText(QStringLiteral("Jerri Regis Biscuola\nVinícius Arouche de Toledo"));
     credit_->setText(tr("Original design, 1996. Rebuilt and finished as trilho."));
     ok_->setText(tr("OK"));
+    machineLabel_->setText(tr("&Machine:"));
+    machine_->setItemText(0, tr("Robot rail (1996)"));
+    machine_->setItemText(1, tr("DC-motor XY table"));
+    machine_->setItemText(2, tr("Stepper XY plotter"));
+}
+
+void StartScreen::setMachine(MachineKind kind) {
+    machine_->setCurrentIndex(static_cast<int>(kind));
+}
+
+MachineKind StartScreen::machine() const {
+    switch (machine_->currentIndex()) {
+        case 1:
+            return MachineKind::DcTable;
+        case 2:
+            return MachineKind::Plotter;
+        default:
+            return MachineKind::Rail;
+    }
 }
 
 void StartScreen::changeEvent(QEvent* e) {

@@ -1,7 +1,11 @@
 #pragma once
 // Tela inicial (screens.md 1): the title panel crediting the 1996 design; OK opens the main
-// screen.
+// screen of the machine chosen below it (the rail, the DC XY table or the XY plotter).
 #include <QDialog>
+
+#include "core/machine/machine_kind.h"
+
+class QComboBox;
 
 class QLabel;
 class QPushButton;
@@ -14,6 +18,9 @@ class StartScreen : public QDialog {
   public:
     explicit StartScreen(QWidget* parent = nullptr);
     QPushButton* okButton() const { return ok_; }
+    QComboBox* machineBox() const { return machine_; }
+    void setMachine(MachineKind kind);
+    MachineKind machine() const;
 
   protected:
     void changeEvent(QEvent* e) override;
@@ -21,7 +28,8 @@ class StartScreen : public QDialog {
   private:
     void retranslate();
     QPushButton* ok_;
-    QLabel *university_, *school_, *title_, *authors_, *credit_;
+    QLabel *university_, *school_, *title_, *authors_, *credit_, *machineLabel_;
+    QComboBox* machine_;
 };
 
 }  // namespace ui
