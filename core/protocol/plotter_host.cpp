@@ -1,0 +1,180 @@
+#include "core/protocol/plotter_host.h"
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace trilho {
+
+using plotter_wire::Command;
+
+namespace {
+/// Points per object: the device's 300 less a margin of 4, because a NEXT lost on the way
+/// back makes the host send that point again and the device stores it twice (a zero-length
+/// segment: the drawing is the same, but it takes a slot).
+constexpr std::size_t kObjectPoints = plotter_wire::kMaxObjectPoints - 4;
+}  // namespace
+
+PlotterHost::PlotterHost(PlotterHostConfig config) : config_(config) {}
+
+void PlotterHost::push(Command c, std::uint16_t x, std::uint16_t y, double waitS, int object,
+                       bool endsObject) {
+    queue_.push_back({plotter_wire::encode(c, x, y), plotter_wire::expectedReply(c),
+                      waitS > 0.0 ? waitS : config_.answerTimeoutS, object, endsObject});
+}
+
+void PlotterHost::request() {
+    push(Command::Request);
+}
+
+void PlotterHost::speed(std::uint16_t value) {
+    lastSpeed_ = value;
+    push(Command::Speed, value);
+}
+
+void PlotterHost::origin() {
+    // The head may be at the far corner: allow for the whole 16-bit travel on both axes.
+    push(Command::Origin, 0, 0, config_.answerTimeoutS + 2.0 * 65535.0 / config_.stepsPerS);
+}
+
+void PlotterHost::jog(Command direction) {
+    push(direction);
+}
+
+void PlotterHost::plot(const std::vector<PlotPoint>& drawing) {
+    std::size_t i = 0;
+    PlotPoint at = prev_;
+    while (i < drawing.size()) {
+        std::vector<Item> items;
+        double steps = 0.0;
+        auto add = [&](const PlotPoint& p) {
+            steps += std::max(std::abs(int(p.x) - int(at.x)), std::abs(int(p.y) - int(at.y)));
+            at = p;
+            items.push_back({plotter_wire::encode(p.draw ? Command::Line : Command::Move, p.x, p.y),
+                             plotter_wire::expectedReply(Command::Line), config_.answerTimeoutS,
+                             static_cast<int>(objects_.size()), false});
+        };
+        if (!objects_.empty()) add({false, at.x, at.y});  // the seam: start where the last ended
+        while (i < drawing.size() && items.size() < kObjectPoints)
+            add(drawing[i++]);
+        // END waits for the plotting: twice the estimated time, plus the answer timeout.
+        items.push_back({plotter_wire::encode(Command::End),
+                         plotter_wire::expectedReply(Command::End),
+                         config_.answerTimeoutS + 2.0 * steps / config_.stepsPerS,
+                         static_cast<int>(objects_.size()), true});
+        objectEnds_.push_back(at);
+        queue_.insert(queue_.end(), items.begin(), items.end());
+        objects_.push_back(std::move(items));
+        ++objectCount_;
+    }
+    prev_ = at;
+}
+
+void PlotterHost::receive(std::uint8_t byte, double nowS) {
+    if (failed_ || !inFlight_) {
+        ++stats_.unexpected;
+        return;
+    }
+    if (byte == current_.expect) {
+        inFlight_ = false;
+        timeouts_ = 0;
+        resends_ = 0;
+        if (current_.endsObject) ++objectsDone_;
+        poll(nowS);
+        return;
+    }
+    if (byte == static_cast<std::uint8_t>(plotter_wire::Reply::Resend)) {
+        ++stats_.resends;
+        if (++resends_ > config_.maxResends) {
+            fail("the plotter asked " + std::to_string(resends_ - 1) + " times to resend " +
+                 std::string(plotter_wire::commandName(static_cast<Command>(current_.packet[0]))) +
+                 ": the line is too noisy");
+            return;
+        }
+        send(nowS);
+        return;
+    }
+    ++stats_.unexpected;  // not an answer to this packet: the deadline decides
+}
+
+void PlotterHost::poll(double nowS) {
+    if (failed_) return;
+    if (inFlight_) {
+        if (nowS < deadline_) return;
+        ++stats_.timeouts;
+        if (++timeouts_ > config_.maxTimeouts) {
+            fail("no answer from the plotter to " +
+                 std::string(plotter_wire::commandName(static_cast<Command>(current_.packet[0]))) +
+                 " after " + std::to_string(timeouts_) + " tries: is it connected and on?");
+            return;
+        }
+        send(nowS);
+        return;
+    }
+    if (queue_.empty()) return;
+    current_ = queue_.front();
+    queue_.pop_front();
+    send(nowS);
+}
+
+void PlotterHost::send(double nowS) {
+    out_.insert(out_.end(), current_.packet.begin(), current_.packet.end());
+    ++stats_.packetsSent;
+    deadline_ = nowS + current_.waitS;
+    inFlight_ = true;
+}
+
+std::vector<std::uint8_t> PlotterHost::takeOutput() {
+    std::vector<std::uint8_t> out;
+    out.swap(out_);
+    return out;
+}
+
+void PlotterHost::fail(std::string why) {
+    failed_ = true;
+    error_ = std::move(why);
+    // Keep the place: the packet in flight goes back to the front of the queue.
+    if (inFlight_) queue_.push_front(current_);
+    inFlight_ = false;
+}
+
+void PlotterHost::retry() {
+    if (!failed_) return;
+    failed_ = false;
+    error_.clear();
+    timeouts_ = resends_ = 0;
+    // The unfinished object again from its start: its stored points were lost with the device.
+    const int unfinished = static_cast<int>(objectsDone_);
+    std::deque<Item> rest;
+    for (const Item& item : queue_)
+        if (item.object != unfinished) rest.push_back(item);
+    std::deque<Item> head;
+    auto front = [&](Command c, std::uint16_t x = 0, std::uint16_t y = 0, double waitS = 0.0) {
+        head.push_back({plotter_wire::encode(c, x, y), plotter_wire::expectedReply(c),
+                        waitS > 0.0 ? waitS : config_.answerTimeoutS, -1, false});
+    };
+    // A re-plugged Arduino restarts: it must answer again, find its origin (steppers have no
+    // position of their own) and be told the speed.
+    front(Command::Request);
+    front(Command::Origin, 0, 0, config_.answerTimeoutS + 2.0 * 65535.0 / config_.stepsPerS);
+    if (lastSpeed_) front(Command::Speed, *lastSpeed_);
+    if (unfinished < static_cast<int>(objects_.size())) {
+        const std::vector<Item>& items = objects_[static_cast<std::size_t>(unfinished)];
+        // Object 0 starts where ORIGEM puts the head, as the first time; later objects carry
+        // their seam MOVE to where the one before ended.
+        head.insert(head.end(), items.begin(), items.end());
+    }
+    head.insert(head.end(), rest.begin(), rest.end());
+    queue_.swap(head);
+}
+
+void PlotterHost::clear() {
+    queue_.clear();
+    inFlight_ = false;
+    failed_ = false;
+    error_.clear();
+    objects_.clear();
+    objectEnds_.clear();
+    objectsDone_ = objectCount_ = 0;
+}
+
+}  // namespace trilho

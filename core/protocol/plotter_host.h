@@ -1,0 +1,106 @@
+#pragma once
+// The PC side of the plotter's protocol (xy.md A, seed 001 3.3) as a plain state machine:
+// bytes in, bytes out, time passed in, so it is tested without a port and the same code
+// drives a real Arduino or the emulator. One packet is in flight at a time; every packet waits
+// for its one-byte answer. RESEND sends the same packet again (bounded); no answer in time
+// sends it again (bounded); then the host fails with a plain reason and keeps its place, so
+// retry() after a re-plug goes on with the object that was not finished.
+#include <cstdint>
+#include <deque>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/protocol/plotter_protocol.h"
+
+namespace trilho {
+
+/// One point of a drawing, in steps: MOVE (pen up) or LINE (pen down) to (x, y).
+struct PlotPoint {
+    bool draw = false;
+    std::uint16_t x = 0, y = 0;
+};
+
+struct PlotterHostConfig {
+    double answerTimeoutS = 2.0;  ///< issue 12: no answer in 2 s -> send again
+    int maxTimeouts = 3;          ///< then fail
+    int maxResends = 10;          ///< RESENDs for one packet before failing
+    /// The device's plotting rate, steps/s: END and ORIGEM wait for the drawing, so their
+    /// deadline is the answer timeout plus twice the time the longest axis needs at this rate.
+    double stepsPerS = 1000.0;
+};
+
+struct PlotterHostStats {
+    std::uint64_t packetsSent = 0;  ///< including repeats
+    std::uint64_t resends = 0;      ///< RESENDs answered
+    std::uint64_t timeouts = 0;     ///< answers that did not come in time
+    std::uint64_t unexpected = 0;   ///< bytes that answered nothing we asked
+};
+
+class PlotterHost {
+  public:
+    explicit PlotterHost(PlotterHostConfig config = {});
+
+    // ---- jobs (queued; sent one packet at a time) ----
+    void request();                   ///< REQUEST -> REQUEST_OK
+    void speed(std::uint16_t value);  ///< SPEED -> SPEED_OK
+    void origin();                    ///< ORIGEM -> ORIGIN_OK
+    void jog(plotter_wire::Command direction);
+    /// Sends the drawing as successive objects of at most 300 points, each plotted (DONE)
+    /// before the next is sent; each later object begins with a MOVE to the last point of the
+    /// one before, so the drawing has no seam.
+    void plot(const std::vector<PlotPoint>& drawing);
+
+    // ---- the line ----
+    void receive(std::uint8_t byte, double nowS);
+    /// Sends the next packet when none is in flight, and handles the deadlines.
+    void poll(double nowS);
+    /// The bytes to write since the last call.
+    std::vector<std::uint8_t> takeOutput();
+
+    // ---- state ----
+    bool idle() const { return !failed_ && !inFlight_ && queue_.empty(); }
+    bool failed() const { return failed_; }
+    const std::string& error() const { return error_; }
+    const PlotterHostStats& stats() const { return stats_; }
+    std::size_t objectsDone() const { return objectsDone_; }
+    std::size_t objectCount() const { return objectCount_; }
+    /// After failed(): a new REQUEST, then the object that was not finished again from its
+    /// first point (preceded by a MOVE to where the last finished object ended).
+    void retry();
+    /// Forgets every job (Stop).
+    void clear();
+
+  private:
+    struct Item {
+        plotter_wire::Packet packet;
+        std::uint8_t expect;
+        double waitS;     ///< answer deadline after sending
+        int object = -1;  ///< the object this packet belongs to (-1: none)
+        bool endsObject = false;
+    };
+    void push(plotter_wire::Command c, std::uint16_t x = 0, std::uint16_t y = 0, double waitS = 0.0,
+              int object = -1, bool endsObject = false);
+    void send(double nowS);
+    void fail(std::string why);
+
+    PlotterHostConfig config_;
+    std::deque<Item> queue_;
+    std::vector<std::uint8_t> out_;
+    bool inFlight_ = false;
+    Item current_{};
+    double deadline_ = 0.0;
+    int timeouts_ = 0;
+    int resends_ = 0;
+    bool failed_ = false;
+    std::string error_;
+    PlotterHostStats stats_;
+    std::size_t objectsDone_ = 0, objectCount_ = 0;
+    /// Each object's packets, kept until its DONE, for retry().
+    std::vector<std::vector<Item>> objects_;
+    std::vector<PlotPoint> objectEnds_;  ///< where each object ends
+    PlotPoint prev_{};                   ///< the last point queued
+    std::optional<std::uint16_t> lastSpeed_;
+};
+
+}  // namespace trilho
