@@ -207,3 +207,33 @@ TEST(PlotterHost, RetryAfterAnUnplugRedoesTheUnfinishedObjectAfterRequestOriginA
     EXPECT_EQ(fourth.command, Command::Move);
     EXPECT_EQ(fourth.x, 295);
 }
+
+#include "core/protocol/table_protocol.h"
+
+TEST(TableWire, SetPointsAreFourBytesHighFirstInMillimetres) {
+    using namespace trilho::table_wire;
+    EXPECT_EQ(encodeSetPoint(100, 50), (SetPoint{0, 100, 0, 50}));
+    EXPECT_EQ(encodeSetPoint(300, 1000), (SetPoint{1, 44, 3, 232}));
+    const SetPointMm back = decodeSetPoint(encodeSetPoint(65535, 258));
+    EXPECT_EQ(back.x, 65535);
+    EXPECT_EQ(back.y, 258);
+}
+
+TEST(TableWire, TheEncoderStreamIsReassembledAndALostByteCostsOneCount) {
+    using namespace trilho::table_wire;
+    EncoderStreamDecoder d;
+    std::vector<std::uint16_t> counts;
+    double t = 0.0;
+    for (const std::uint16_t c : std::vector<std::uint16_t>{1, 300, 1299, 1300}) {
+        const auto lo = static_cast<std::uint8_t>(c & 0xFF), hi = static_cast<std::uint8_t>(c >> 8);
+        if (c == 300) {  // the LSB is lost: the MSB alone waits, then the next pair resyncs
+            if (auto v = d.feed(hi, t + 0.001)) counts.push_back(*v);
+        } else {
+            if (auto v = d.feed(lo, t)) counts.push_back(*v);
+            if (auto v = d.feed(hi, t + 0.001)) counts.push_back(*v);
+        }
+        t += kCalibrationPeriodS;
+    }
+    EXPECT_EQ(counts, (std::vector<std::uint16_t>{1, 1299, 1300}));
+    EXPECT_EQ(d.resyncs(), 1u);
+}
