@@ -15,11 +15,12 @@ namespace trilho {
 namespace {
 
 QCoreApplication& app() {
+    // One application for the whole test binary (data_paths_test needs one too).
     static int argc = 1;
     static char name[] = "translation_test";
     static char* argv[] = {name, nullptr};
-    static QCoreApplication instance(argc, argv);
-    return instance;
+    if (!QCoreApplication::instance()) new QCoreApplication(argc, argv);
+    return *QCoreApplication::instance();
 }
 
 class Translations : public ::testing::TestWithParam<const char*> {
