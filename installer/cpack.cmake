@@ -13,5 +13,6 @@ set(CPACK_GENERATOR "TGZ;DEB")
 set(CPACK_PACKAGING_INSTALL_PREFIX "/usr")
 set(CPACK_DEBIAN_PACKAGE_SECTION "science")
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_STRIP_FILES ON)  # the release build keeps debug info; the package does not
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 include(CPack)

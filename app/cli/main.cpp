@@ -8,8 +8,9 @@
 
 namespace {
 const char* kUsage =
-    "usage: trilho-cli <command> [options]\n"
-    "commands:\n"
+    "Usage: trilho-cli <command> [options]\n"
+    "\n"
+    "Commands:\n"
     "  compile   check a .G program and list every diagnostic\n"
     "  run       compile, home and run a program on the simulated rail\n"
     "  latency   measure the servo loop's wake-up latency and body time\n"

@@ -180,9 +180,10 @@ TEST(AlarmTexts, EveryAlarmHasACauseAndANextStepInEveryLanguage) {
             const QString source = QString::fromUtf8(alarmSource(code));
             const QString text = alarmText(code, -1270.0);
             EXPECT_FALSE(text.isEmpty()) << l.lang << " alarm " << c;
-            if (QLatin1String(l.lang) != QLatin1String("en"))
+            if (QLatin1String(l.lang) != QLatin1String("en")) {
                 EXPECT_NE(QCoreApplication::translate("Controller", alarmSource(code)), source)
                     << l.lang << " alarm " << c;
+            }
             // A cause, then a next step: at least two sentences.
             EXPECT_GE(text.count(QLatin1Char('.')) + text.count(QLatin1Char('!')), 2)
                 << l.lang << " alarm " << c << ": " << text.toStdString();
@@ -191,8 +192,9 @@ TEST(AlarmTexts, EveryAlarmHasACauseAndANextStepInEveryLanguage) {
                 hasNextStep = hasNextStep || text.contains(QString::fromUtf8(step));
             EXPECT_TRUE(hasNextStep) << l.lang << " alarm " << c << ": " << text.toStdString();
             // The figure the alarm carries is shown wherever the text has a place for it.
-            if (source.contains(QLatin1String("%1")))
+            if (source.contains(QLatin1String("%1"))) {
                 EXPECT_TRUE(text.contains(QLatin1String("1270"))) << l.lang << " alarm " << c;
+            }
             EXPECT_FALSE(text.contains(QLatin1String("%1"))) << l.lang << " alarm " << c;
         }
     }
