@@ -15,7 +15,12 @@ const char* kUsage =
     "  run       compile, home and run a program on the simulated rail\n"
     "  latency   measure the servo loop's wake-up latency and body time\n"
     "  profile   check a machine profile (JSON) and print it in full\n"
-    "run 'trilho-cli <command> --help' for the options of a command\n";
+    "\n"
+    "Options:\n"
+    "  -h, --help  print this help\n"
+    "  --version   print the version of trilho-cli\n"
+    "\n"
+    "Run 'trilho-cli <command> --help' for the options of a command.\n";
 }
 
 static int dispatch(int argc, char* argv[]) {
