@@ -7,6 +7,7 @@ TRILHO_PACKAGES=(
   qt6-base-dev qt6-serialport-dev qt6-serialbus-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
   libqcustomplot-dev libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev libgl1-mesa-dev
   xvfb xauth
+  help2man desktop-file-utils file
   clang-14 libfuzzer-14-dev
 )
 missing=()

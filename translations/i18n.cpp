@@ -3,6 +3,8 @@
 #include <QCoreApplication>
 #include <QTranslator>
 
+#include "app/common/data_paths.h"
+
 namespace trilho {
 namespace {
 QTranslator*& current() {
@@ -24,7 +26,7 @@ bool installLanguage(const QString& lang) {
     }
     if (lang == QLatin1String("en")) return true;
     auto* translator = new QTranslator(QCoreApplication::instance());
-    if (!translator->load(QStringLiteral(":/i18n/trilho_%1.qm").arg(lang))) {
+    if (!translator->load(QStringLiteral("trilho_%1").arg(lang), translationsDir())) {
         delete translator;
         return false;
     }

@@ -184,44 +184,44 @@
         <translation>ALARMA</translation>
     </message>
     <message>
-        <source>Left end of travel reached !</source>
-        <translation>¡Fin de carrera izquierdo alcanzado!</translation>
+        <source>Left end of travel reached ! The end switch cut the drive. Acknowledge, then in Manual drive the platform to the right, back inside the limits.</source>
+        <translation>¡Fin de carrera izquierdo alcanzado! El final de carrera cortó el accionamiento. Reconozca y, en Manual, lleve la plataforma hacia la derecha, de vuelta dentro de los límites.</translation>
     </message>
     <message>
-        <source>Right end of travel reached !</source>
-        <translation>¡Fin de carrera derecho alcanzado!</translation>
+        <source>Right end of travel reached ! The end switch cut the drive. Acknowledge, then in Manual drive the platform to the left, back inside the limits.</source>
+        <translation>¡Fin de carrera derecho alcanzado! El final de carrera cortó el accionamiento. Reconozca y, en Manual, lleve la plataforma hacia la izquierda, de vuelta dentro de los límites.</translation>
     </message>
     <message>
-        <source>Following error: the platform did not follow the command</source>
-        <translation>Error de seguimiento: la plataforma no siguió la orden</translation>
+        <source>Following error: the platform did not follow the command (a jam, too heavy a load or a broken encoder cable) and the drive was cut. Free the rail, acknowledge, then home again with Automatic.</source>
+        <translation>Error de seguimiento: la plataforma no siguió la orden (un atasco, una carga demasiado pesada o un cable del encoder roto) y se cortó el accionamiento. Libere el riel, reconozca y vuelva a referenciar con Automático.</translation>
     </message>
     <message>
-        <source>Soft limit reached</source>
-        <translation>Límite de software alcanzado</translation>
+        <source>Soft limit reached at x=%1 mm: the platform stopped there. Move it back the other way, inside the limits.</source>
+        <translation>Límite de software alcanzado en x=%1 mm: la plataforma se detuvo allí. Llévela de vuelta en el sentido opuesto, dentro de los límites.</translation>
     </message>
     <message>
-        <source>The program has compile errors</source>
-        <translation>El programa tiene errores de compilación</translation>
+        <source>The program has compile errors: nothing moved. Correct the lines the diagnostics name, then run it again.</source>
+        <translation>El programa tiene errores de compilación: nada se movió. Corrija las líneas que señalan los diagnósticos y ejecútelo de nuevo.</translation>
     </message>
     <message>
-        <source>Encoder fault: implausible counter readings</source>
-        <translation>Falla del encoder: lecturas imposibles del contador</translation>
+        <source>Encoder fault: the counter gave implausible readings again and again, and the drive was cut. Check the encoder and its cable, acknowledge, then home again with Automatic.</source>
+        <translation>Falla del encoder: el contador dio lecturas imposibles una y otra vez y se cortó el accionamiento. Revise el encoder y su cable, reconozca y vuelva a referenciar con Automático.</translation>
     </message>
     <message>
-        <source>Amplifier fault</source>
-        <translation>Falla del amplificador</translation>
+        <source>Amplifier fault: the amplifier reported it is not ready and the drive was cut. Check its power, fuse and temperature, acknowledge, then home again with Automatic.</source>
+        <translation>Falla del amplificador: el amplificador indicó que no está listo y se cortó el accionamiento. Revise su alimentación, su fusible y su temperatura, reconozca y vuelva a referenciar con Automático.</translation>
     </message>
     <message>
-        <source>Servo loop overrun: the watchdog stopped the drive</source>
-        <translation>Retraso del lazo de control: el watchdog detuvo el accionamiento</translation>
+        <source>Control interrupted: the computer ran the position control too late, so the drive was cut for safety. Close other heavy programs, acknowledge, then home again with Automatic.</source>
+        <translation>Control interrumpido: el equipo ejecutó el control de posición con retraso, por eso se cortó el accionamiento por seguridad. Cierre otros programas pesados, reconozca y vuelva a referenciar con Automático.</translation>
     </message>
     <message>
-        <source>Emergency stop</source>
-        <translation>Parada de emergencia</translation>
+        <source>Emergency stop: the drive was cut. Clear the cause, then press Reset E-stop.</source>
+        <translation>Parada de emergencia: se cortó el accionamiento. Elimine la causa y pulse Liberar emergencia.</translation>
     </message>
     <message>
-        <source>Homing failed: centre switch not found</source>
-        <translation>Referenciado fallido: interruptor central no encontrado</translation>
+        <source>Homing failed: the centre switch was not found. Check the switch and its cable, acknowledge, then home again with Automatic.</source>
+        <translation>Referenciado fallido: no se encontró el interruptor central. Revise el interruptor y su cable, reconozca y vuelva a referenciar con Automático.</translation>
     </message>
     <message>
         <source>Soft limit: the platform would have passed the soft limit at x=%1 mm and was stopped before the end switch. Acknowledge, then move it back inside the limits.</source>
@@ -232,16 +232,16 @@
         <translation>Fuera de posición: la plataforma no se asentó en su destino (a %1 mm). Revise la carga y las ganancias, reconozca y ejecute de nuevo.</translation>
     </message>
     <message>
-        <source>The program ended with the platform %1 mm from its last target, outside the final-position window.</source>
-        <translation>El programa terminó con la plataforma a %1 mm de su último destino, fuera de la ventana de posición final.</translation>
+        <source>The program ended with the platform %1 mm from its last target, outside the final-position window. Check the payload and the gains, then run it again.</source>
+        <translation>El programa terminó con la plataforma a %1 mm de su último destino, fuera de la ventana de posición final. Revise la carga y las ganancias y ejecútelo de nuevo.</translation>
     </message>
     <message>
-        <source>The centre mark corrected the position by %1 mm: counts were lost or the cable slipped.</source>
-        <translation>La marca central corrigió la posición en %1 mm: se perdieron cuentas o el cable patinó.</translation>
+        <source>The centre mark corrected the position by %1 mm: counts were lost or the cable slipped. The position is right again; if this repeats, check the encoder and its cable.</source>
+        <translation>La marca central corrigió la posición en %1 mm: se perdieron cuentas o el cable patinó. La posición vuelve a ser correcta; si se repite, revise el encoder y su cable.</translation>
     </message>
     <message>
         <source>Motionless loop: the program repeats blocks that neither move nor wait. It is held: press Stop, or Continue to run it again.</source>
-        <translation>Bucle sin movimiento: el programa repite bloques que ni mueven ni esperan. Está retenido: pulse Parar, o Continuar para ejecutarlo de nuevo.</translation>
+        <translation>Bucle sin movimiento: el programa repite bloques que ni mueven ni esperan. Está retenido: pulse Detener, o Continuar para ejecutarlo de nuevo.</translation>
     </message>
     <message>
         <source>Encoder stalled: the drive ran %1 mm without a single count and was cut. Check the encoder and its cable, acknowledge, then home again.</source>

@@ -184,44 +184,44 @@
         <translation>ALARME</translation>
     </message>
     <message>
-        <source>Left end of travel reached !</source>
-        <translation>Fim de curso da esquerda atingido !</translation>
+        <source>Left end of travel reached ! The end switch cut the drive. Acknowledge, then in Manual drive the platform to the right, back inside the limits.</source>
+        <translation>Fim de curso da esquerda atingido ! A chave de fim de curso cortou o acionamento. Reconheça e, em Manual, leve a plataforma para a direita, de volta para dentro dos limites.</translation>
     </message>
     <message>
-        <source>Right end of travel reached !</source>
-        <translation>Fim de curso da direita atingido !</translation>
+        <source>Right end of travel reached ! The end switch cut the drive. Acknowledge, then in Manual drive the platform to the left, back inside the limits.</source>
+        <translation>Fim de curso da direita atingido ! A chave de fim de curso cortou o acionamento. Reconheça e, em Manual, leve a plataforma para a esquerda, de volta para dentro dos limites.</translation>
     </message>
     <message>
-        <source>Following error: the platform did not follow the command</source>
-        <translation>Erro de seguimento: a plataforma não seguiu o comando</translation>
+        <source>Following error: the platform did not follow the command (a jam, too heavy a load or a broken encoder cable) and the drive was cut. Free the rail, acknowledge, then home again with Automatic.</source>
+        <translation>Erro de seguimento: a plataforma não seguiu o comando (travamento, carga pesada demais ou cabo do encoder rompido) e o acionamento foi cortado. Libere o trilho, reconheça e refaça o referenciamento com Automático.</translation>
     </message>
     <message>
-        <source>Soft limit reached</source>
-        <translation>Limite de curso programado atingido</translation>
+        <source>Soft limit reached at x=%1 mm: the platform stopped there. Move it back the other way, inside the limits.</source>
+        <translation>Limite de curso programado atingido em x=%1 mm: a plataforma parou ali. Leve-a de volta no sentido oposto, para dentro dos limites.</translation>
     </message>
     <message>
-        <source>The program has compile errors</source>
-        <translation>O programa tem erros de compilação</translation>
+        <source>The program has compile errors: nothing moved. Correct the lines the diagnostics name, then run it again.</source>
+        <translation>O programa tem erros de compilação: nada se moveu. Corrija as linhas apontadas nos diagnósticos e execute de novo.</translation>
     </message>
     <message>
-        <source>Encoder fault: implausible counter readings</source>
-        <translation>Falha do encoder: leituras impossíveis do contador</translation>
+        <source>Encoder fault: the counter gave implausible readings again and again, and the drive was cut. Check the encoder and its cable, acknowledge, then home again with Automatic.</source>
+        <translation>Falha do encoder: o contador deu leituras impossíveis repetidas vezes e o acionamento foi cortado. Verifique o encoder e o cabo, reconheça e refaça o referenciamento com Automático.</translation>
     </message>
     <message>
-        <source>Amplifier fault</source>
-        <translation>Falha do amplificador</translation>
+        <source>Amplifier fault: the amplifier reported it is not ready and the drive was cut. Check its power, fuse and temperature, acknowledge, then home again with Automatic.</source>
+        <translation>Falha do amplificador: o amplificador indicou que não está pronto e o acionamento foi cortado. Verifique a alimentação, o fusível e a temperatura dele, reconheça e refaça o referenciamento com Automático.</translation>
     </message>
     <message>
-        <source>Servo loop overrun: the watchdog stopped the drive</source>
-        <translation>Atraso da malha de controle: o watchdog parou o acionamento</translation>
+        <source>Control interrupted: the computer ran the position control too late, so the drive was cut for safety. Close other heavy programs, acknowledge, then home again with Automatic.</source>
+        <translation>Controle interrompido: o computador executou o controle de posição com atraso, por isso o acionamento foi cortado por segurança. Feche outros programas pesados, reconheça e refaça o referenciamento com Automático.</translation>
     </message>
     <message>
-        <source>Emergency stop</source>
-        <translation>Parada de emergência</translation>
+        <source>Emergency stop: the drive was cut. Clear the cause, then press Reset E-stop.</source>
+        <translation>Parada de emergência: o acionamento foi cortado. Elimine a causa e pressione Liberar emergência.</translation>
     </message>
     <message>
-        <source>Homing failed: centre switch not found</source>
-        <translation>Falha ao ir para o centro: chave central não encontrada</translation>
+        <source>Homing failed: the centre switch was not found. Check the switch and its cable, acknowledge, then home again with Automatic.</source>
+        <translation>Falha ao ir para o centro: a chave central não foi encontrada. Verifique a chave e o cabo, reconheça e refaça o referenciamento com Automático.</translation>
     </message>
     <message>
         <source>Soft limit: the platform would have passed the soft limit at x=%1 mm and was stopped before the end switch. Acknowledge, then move it back inside the limits.</source>
@@ -232,12 +232,12 @@
         <translation>Fora de posição: a plataforma não se assentou no alvo (a %1 mm). Verifique a carga e os ganhos, reconheça e execute de novo.</translation>
     </message>
     <message>
-        <source>The program ended with the platform %1 mm from its last target, outside the final-position window.</source>
-        <translation>O programa terminou com a plataforma a %1 mm do último alvo, fora da janela de posição final.</translation>
+        <source>The program ended with the platform %1 mm from its last target, outside the final-position window. Check the payload and the gains, then run it again.</source>
+        <translation>O programa terminou com a plataforma a %1 mm do último alvo, fora da janela de posição final. Verifique a carga e os ganhos e execute de novo.</translation>
     </message>
     <message>
-        <source>The centre mark corrected the position by %1 mm: counts were lost or the cable slipped.</source>
-        <translation>A marca central corrigiu a posição em %1 mm: houve perda de contagens ou o cabo escorregou.</translation>
+        <source>The centre mark corrected the position by %1 mm: counts were lost or the cable slipped. The position is right again; if this repeats, check the encoder and its cable.</source>
+        <translation>A marca central corrigiu a posição em %1 mm: houve perda de contagens ou o cabo escorregou. A posição está certa de novo; se isso se repetir, verifique o encoder e o cabo.</translation>
     </message>
     <message>
         <source>Motionless loop: the program repeats blocks that neither move nor wait. It is held: press Stop, or Continue to run it again.</source>

@@ -23,6 +23,7 @@
 #include <QScrollArea>
 #include <QShortcut>
 #include <QtConcurrent/QtConcurrentRun>
+#include "app/common/data_paths.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
 #include "core/machine/event_text.h"
@@ -299,7 +300,8 @@ void MainWindow::setTheme(Theme theme) {
 }
 
 void MainWindow::chooseFile() {
-    SelectFileDialog dialog(settings_.value(QStringLiteral("lastFolder")).toString(), this);
+    SelectFileDialog dialog(settings_.value(QStringLiteral("lastFolder"), examplesDir()).toString(),
+                            this);
     if (dialog.exec() == QDialog::Accepted && !dialog.selectedFile().isEmpty())
         selectProgram(dialog.selectedFile());
     settings_.setValue(QStringLiteral("lastFolder"), dialog.currentFolder());

@@ -1,5 +1,5 @@
 // trilho-cli compile [--dialect classic|standard] [--json] [--lang en|pt_BR|es] [--machine
-// PROFILE.json] FILE
+// PROFILE] FILE
 #include <QCommandLineParser>
 #include <cerrno>
 #include <cstring>
@@ -9,6 +9,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/diagnostics_text.h"
 #include "app/cli/program_json.h"
+#include "app/common/data_paths.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/source_file.h"
@@ -32,8 +33,9 @@ int compileFile(const QStringList& args) {
                                QStringLiteral("lang"), QStringLiteral("en"));
     QCommandLineOption machineOpt(
         QStringLiteral("machine"),
-        QStringLiteral("Machine profile: axes and soft limits (default: the rail)."),
-        QStringLiteral("PROFILE.json"));
+        QStringLiteral("Machine profile: axes and soft limits; a file, or the name of a shipped "
+                       "one (rail, xy_dc_table, ...; default: rail)."),
+        QStringLiteral("PROFILE"));
     parser.addOptions({dialectOpt, jsonOpt, langOpt, machineOpt});
     parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("The program to compile."));
     if (auto done = parseArguments(parser, args, "compile")) return *done;
@@ -54,11 +56,10 @@ int compileFile(const QStringList& args) {
     if (!source.ok) return usageError("compile", QString::fromStdString(source.error));
     CompileOptions options;
     options.dialect = *dialect;
-    if (parser.isSet(machineOpt)) {
-        const ProfileLoad load = loadMachineProfile(parser.value(machineOpt));
-        if (!load.profile) return usageError("compile", load.error);
-        options.machine = load.profile->limits;
-    }
+    const ProfileLoad load = loadNamedMachineProfile(parser.value(machineOpt));
+    if (!load.profile) return usageError("compile", load.error);
+    if (!load.error.isEmpty()) err(QStringLiteral("trilho-cli compile: %1\n").arg(load.error));
+    options.machine = load.profile->limits;
     options.maxDiagnostics = kMaxListedDiagnostics;
     const Program program = compile(source.bytes, options);
     source = {};  // the text is no longer needed: free it before the output is made

@@ -8,13 +8,19 @@
 
 namespace {
 const char* kUsage =
-    "usage: trilho-cli <command> [options]\n"
-    "commands:\n"
+    "Usage: trilho-cli <command> [options]\n"
+    "\n"
+    "Commands:\n"
     "  compile   check a .G program and list every diagnostic\n"
     "  run       compile, home and run a program on the simulated rail\n"
     "  latency   measure the servo loop's wake-up latency and body time\n"
     "  profile   check a machine profile (JSON) and print it in full\n"
-    "run 'trilho-cli <command> --help' for the options of a command\n";
+    "\n"
+    "Options:\n"
+    "  -h, --help  print this help\n"
+    "  --version   print the version of trilho-cli\n"
+    "\n"
+    "Run 'trilho-cli <command> --help' for the options of a command.\n";
 }
 
 static int dispatch(int argc, char* argv[]) {

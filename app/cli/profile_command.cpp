@@ -1,9 +1,11 @@
 // trilho-cli profile [FILE]: checks a machine profile and prints it with every default filled
-// in; with no FILE prints the default profile (the rail of machine.md).
+// in; with no FILE prints the default profile (rail.json of the data folder, the rail of
+// machine.md).
 #include <QCommandLineParser>
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
+#include "app/common/data_paths.h"
 #include "core/machine/machine_profile.h"
 
 namespace trilho::cli {
@@ -12,19 +14,18 @@ int profileCommand(const QStringList& args) {
     QCommandLineParser parser;
     parser.setApplicationDescription(
         QStringLiteral("Check a machine profile and print it in full."));
-    parser.addPositionalArgument(QStringLiteral("FILE"),
-                                 QStringLiteral("Profile to check (default: the rail)."),
-                                 QStringLiteral("[FILE]"));
+    parser.addPositionalArgument(
+        QStringLiteral("FILE"),
+        QStringLiteral("Profile to check: a file, or the name of a shipped one "
+                       "(default: rail)."),
+        QStringLiteral("[FILE]"));
     if (auto done = parseArguments(parser, args, "profile")) return *done;
     const QStringList files = parser.positionalArguments();
     if (files.size() > 1) return usageError("profile", QStringLiteral("expected at most one FILE"));
-    MachineProfile profile = MachineProfile::rail();
-    if (!files.isEmpty()) {
-        ProfileLoad load = loadMachineProfile(files.front());
-        if (!load.profile) return usageError("profile", load.error);
-        profile = *load.profile;
-    }
-    out(QString::fromUtf8(machineProfileToJson(profile)));
+    const ProfileLoad load = loadNamedMachineProfile(files.isEmpty() ? QString() : files.front());
+    if (!load.profile) return usageError("profile", load.error);
+    if (!load.error.isEmpty()) err(QStringLiteral("trilho-cli profile: %1\n").arg(load.error));
+    out(QString::fromUtf8(machineProfileToJson(*load.profile)));
     return kOk;
 }
 

@@ -1,6 +1,6 @@
 // trilho-cli run [--dialect ...] [--lang ...] [--virtual-time] [--mass-factor F]
 //   [--continue-after SECONDS] [--max-seconds SECONDS] [--trace FILE.csv] [--json]
-//   [--machine PROFILE.json] [--tick-jitter MAX_MS] [--jitter-rate P] [--seed N]
+//   [--machine PROFILE] [--tick-jitter MAX_MS] [--jitter-rate P] [--seed N]
 //   [--fault NAME[@T][=V]]... FILE
 // Compiles (errors: exit 1, nothing moves), homes, and runs the program on the simulated rail.
 #include <fcntl.h>
@@ -23,6 +23,7 @@
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
 #include "app/cli/diagnostics_text.h"
+#include "app/common/data_paths.h"
 #include "app/session/sim_session.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
@@ -333,9 +334,11 @@ int runCommand(const QStringList& args) {
                                       QStringLiteral("FILE.csv"));
     const QCommandLineOption jsonOpt(QStringLiteral("json"),
                                      QStringLiteral("Print one JSON object."));
-    const QCommandLineOption machineOpt(QStringLiteral("machine"),
-                                        QStringLiteral("Machine profile (default: the rail)."),
-                                        QStringLiteral("PROFILE.json"));
+    const QCommandLineOption machineOpt(
+        QStringLiteral("machine"),
+        QStringLiteral("Machine profile: a file, or the name of a shipped one "
+                       "(rail, xy_dc_table, ...; default: rail)."),
+        QStringLiteral("PROFILE"));
     const QCommandLineOption jitterOpt(
         QStringLiteral("tick-jitter"),
         QStringLiteral("Late servo ticks: lengthen periods by up to MAX_MS (0-40)."),
@@ -416,12 +419,10 @@ int runCommand(const QStringList& args) {
     if (files.size() != 1)
         return usage(QStringLiteral("expected exactly one FILE, got %1").arg(files.size()));
 
-    MachineProfile profile = MachineProfile::rail();
-    if (parser.isSet(machineOpt)) {
-        ProfileLoad load = loadMachineProfile(parser.value(machineOpt));
-        if (!load.profile) return usage(load.error);
-        profile = *load.profile;
-    }
+    const ProfileLoad load = loadNamedMachineProfile(parser.value(machineOpt));
+    if (!load.profile) return usage(load.error);
+    if (!load.error.isEmpty()) err(QStringLiteral("trilho-cli run: %1\n").arg(load.error));
+    MachineProfile profile = *load.profile;
     profile.plant.massFactor *= options.massFactor;
 
     const QString file = files.front();
@@ -474,10 +475,10 @@ int runCommand(const QStringList& args) {
         if (options.tracePath.isEmpty()) return usage(QStringLiteral("--trace needs a file name"));
         // Never write the trace over the program it runs (or the profile).
         const QString traceCanonical = QFileInfo(options.tracePath).canonicalFilePath();
-        const QString machine = parser.value(machineOpt);
+        const QString machine = machineProfilePath(parser.value(machineOpt));
         if (!traceCanonical.isEmpty() &&
             (traceCanonical == QFileInfo(file).canonicalFilePath() ||
-             (!machine.isEmpty() && traceCanonical == QFileInfo(machine).canonicalFilePath())))
+             (traceCanonical == QFileInfo(machine).canonicalFilePath())))
             return usage(QStringLiteral("--trace '%1' is an input of this run: refusing to "
                                         "write over it")
                              .arg(options.tracePath));

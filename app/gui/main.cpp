@@ -11,6 +11,7 @@
 #include <QTimer>
 #include <cstdio>
 
+#include "app/common/data_paths.h"
 #include "core/machine/machine_profile.h"
 #include "translations/i18n.h"
 #include "ui/execution_panel.h"
@@ -88,7 +89,14 @@ int main(int argc, char* argv[]) {
             : settings->value(QStringLiteral("theme"), QStringLiteral("classic")).toString());
     ui::applyTheme(app, theme);
 
-    ui::MachineLink link(MachineProfile::rail());
+    // The rail's profile from the data folder (installed or the source tree).
+    const ProfileLoad profile = loadNamedMachineProfile(QString());
+    if (!profile.profile) {
+        std::fprintf(stderr, "trilho: %s\n", qPrintable(profile.error));
+        return 2;
+    }
+    if (!profile.error.isEmpty()) std::fprintf(stderr, "trilho: %s\n", qPrintable(profile.error));
+    ui::MachineLink link(*profile.profile);
     const QString dataDir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
     QDir().mkpath(dataDir);
     QString journalError;

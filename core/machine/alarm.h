@@ -10,7 +10,7 @@ enum class AlarmCode : std::uint8_t {
     LeftEndSwitch = 1,  ///< "Fim de curso da esquerda atingido !"
     RightEndSwitch = 2,
     FollowingError = 3,      ///< the platform did not follow (stuck encoder, jam, lost cable)
-    SoftLimit = 4,           ///< a jog or manual move reached the soft limit
+    SoftLimit = 4,           ///< a jog or manual move reached the soft limit (value: its x)
     CompileErrors = 5,       ///< Execute found compile errors: nothing moved
     EncoderFault = 6,        ///< the counter gave implausible readings repeatedly
     AmplifierFault = 7,      ///< the amplifier's ready input dropped

@@ -77,32 +77,58 @@ constexpr const char* kOnline[static_cast<int>(EventKind::Count_)] = {
 
 constexpr const char* kAlarm[static_cast<int>(AlarmCode::Count_)] = {
     "",
-    QT_TRANSLATE_NOOP("Controller", "Left end of travel reached !"),
-    QT_TRANSLATE_NOOP("Controller", "Right end of travel reached !"),
-    QT_TRANSLATE_NOOP("Controller", "Following error: the platform did not follow the command"),
-    QT_TRANSLATE_NOOP("Controller", "Soft limit reached"),
-    QT_TRANSLATE_NOOP("Controller", "The program has compile errors"),
-    QT_TRANSLATE_NOOP("Controller", "Encoder fault: implausible counter readings"),
-    QT_TRANSLATE_NOOP("Controller", "Amplifier fault"),
-    QT_TRANSLATE_NOOP("Controller", "Servo loop overrun: the watchdog stopped the drive"),
-    QT_TRANSLATE_NOOP("Controller", "Emergency stop"),
-    QT_TRANSLATE_NOOP("Controller", "Homing failed: centre switch not found"),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Left end of travel reached ! The end switch cut the drive. Acknowledge, "
+                      "then in Manual drive the platform to the right, back inside the limits."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Right end of travel reached ! The end switch cut the drive. Acknowledge, "
+                      "then in Manual drive the platform to the left, back inside the limits."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Following error: the platform did not follow the command (a jam, too heavy "
+                      "a load or a broken encoder cable) and the drive was cut. Free the rail, "
+                      "acknowledge, then home again with Automatic."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Soft limit reached at x=%1 mm: the platform stopped there. Move it back "
+                      "the other way, inside the limits."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "The program has compile errors: nothing moved. Correct the lines the "
+                      "diagnostics name, then run it again."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Encoder fault: the counter gave implausible readings again and again, and "
+                      "the drive was cut. Check the encoder and its cable, acknowledge, then home "
+                      "again with Automatic."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Amplifier fault: the amplifier reported it is not ready and the drive was "
+                      "cut. Check its power, fuse and temperature, acknowledge, then home again "
+                      "with Automatic."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Control interrupted: the computer ran the position control too late, so "
+                      "the drive was cut for safety. Close other heavy programs, acknowledge, "
+                      "then home again with Automatic."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Emergency stop: the drive was cut. Clear the cause, then press Reset "
+                      "E-stop."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Homing failed: the centre switch was not found. Check the switch and its "
+                      "cable, acknowledge, then home again with Automatic."),
     QT_TRANSLATE_NOOP("Controller",
                       "Soft limit: the platform would have passed the soft limit at x=%1 mm and "
-                      "was stopped before the end switch. Acknowledge, then move it back "
-                      "inside the limits."),
+                      "was stopped before the end switch. Acknowledge, then move it back inside "
+                      "the limits."),
     QT_TRANSLATE_NOOP("Controller",
                       "Not in position: the platform did not settle on its target (%1 mm off). "
                       "Check the payload and the gains, acknowledge, then run again."),
     QT_TRANSLATE_NOOP("Controller",
                       "The program ended with the platform %1 mm from its last target, outside "
-                      "the final-position window."),
+                      "the final-position window. Check the payload and the gains, then run it "
+                      "again."),
     QT_TRANSLATE_NOOP("Controller",
                       "The centre mark corrected the position by %1 mm: counts were lost or the "
-                      "cable slipped."),
+                      "cable slipped. The position is right again; if this repeats, check the "
+                      "encoder and its cable."),
     QT_TRANSLATE_NOOP("Controller",
-                      "Motionless loop: the program repeats blocks that neither move nor wait. "
-                      "It is held: press Stop, or Continue to run it again."),
+                      "Motionless loop: the program repeats blocks that neither move nor wait. It "
+                      "is held: press Stop, or Continue to run it again."),
     QT_TRANSLATE_NOOP("Controller",
                       "Encoder stalled: the drive ran %1 mm without a single count and was cut. "
                       "Check the encoder and its cable, acknowledge, then home again."),
@@ -110,8 +136,8 @@ constexpr const char* kAlarm[static_cast<int>(AlarmCode::Count_)] = {
                       "Over-current: a motor drew too much current at %1 % PWM and its drive was "
                       "cut. Free the axis, acknowledge, then home again."),
     QT_TRANSLATE_NOOP("Controller",
-                      "Steps lost: homing found the origin %1 mm from where the counted steps "
-                      "put it. Lower the speed, acknowledge, then home again."),
+                      "Steps lost: homing found the origin %1 mm from where the counted steps put "
+                      "it. Lower the speed, acknowledge, then home again."),
     QT_TRANSLATE_NOOP("Controller",
                       "Homing failed: the origin sensor was not found. Check the sensor and its "
                       "cable, acknowledge, then home again."),

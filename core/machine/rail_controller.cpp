@@ -215,7 +215,7 @@ void RailController::jogStart(int direction, double speedFraction) {
     const double target = direction > 0 ? lim.softMaxMm : lim.softMinMm;
     const double pos = servo_.sample().positionMm;
     if ((direction > 0 && pos >= lim.softMaxMm) || (direction < 0 && pos <= lim.softMinMm))
-        return raiseAlarm(AlarmCode::SoftLimit);
+        return raiseAlarm(AlarmCode::SoftLimit, target);  // the limit on that side
     status_.manualCode = kDacZero;
     // Jogs have their own speed; the feed override (0 = feed hold) is for programs.
     servo_.moveTo(target, std::clamp(speedFraction, 0.001, profile().motion.jogMaxFraction), false);
@@ -233,7 +233,7 @@ void RailController::jogIncrement(double deltaMm, double speedFraction) {
     const ServoSample& s = servo_.sample();
     const double from = s.mode == ServoMode::Hold ? s.setpointMm : s.positionMm;
     const double target = std::clamp(from + deltaMm, lim.softMinMm, lim.softMaxMm);
-    if (target != from + deltaMm) raiseAlarm(AlarmCode::SoftLimit);
+    if (target != from + deltaMm) raiseAlarm(AlarmCode::SoftLimit, target);
     if (target == from) return;
     status_.manualCode = kDacZero;
     // Jogs have their own speed; the feed override (0 = feed hold) is for programs.
@@ -257,7 +257,8 @@ void RailController::checkManualLimits() {
                    (code > kDacZero && s.positionMm >= profile().limits.x.softMaxMm)) {
             status_.manualCode = kDacZero;
             servo_.setDirect(kDacZero);
-            raiseAlarm(AlarmCode::SoftLimit);
+            raiseAlarm(AlarmCode::SoftLimit, code < kDacZero ? profile().limits.x.softMinMm
+                                                             : profile().limits.x.softMaxMm);
         }
     }
     if (jogging_ && s.inPosition) jogging_ = false;

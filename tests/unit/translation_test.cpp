@@ -4,6 +4,7 @@
 #include <QCoreApplication>
 #include <QFile>
 #include <QXmlStreamReader>
+#include <vector>
 
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
@@ -14,11 +15,12 @@ namespace trilho {
 namespace {
 
 QCoreApplication& app() {
+    // One application for the whole test binary (data_paths_test needs one too).
     static int argc = 1;
     static char name[] = "translation_test";
     static char* argv[] = {name, nullptr};
-    static QCoreApplication instance(argc, argv);
-    return instance;
+    if (!QCoreApplication::instance()) new QCoreApplication(argc, argv);
+    return *QCoreApplication::instance();
 }
 
 class Translations : public ::testing::TestWithParam<const char*> {
@@ -145,6 +147,66 @@ TEST(OnlineStatus, EveryEventThatSetsItHasAText) {
         EXPECT_EQ(onlineSource(kind) != nullptr, setsOnlineStatus(kind)) << k;
         EXPECT_NE(historySource(kind), nullptr) << k;
     }
+}
+
+}  // namespace
+}  // namespace trilho
+
+namespace trilho {
+namespace {
+
+// Issue 10: every alarm says what happened and what to do next, in the three languages. The
+// next step is one of the operator's actions, named as the screens name them.
+TEST(AlarmTexts, EveryAlarmHasACauseAndANextStepInEveryLanguage) {
+    app();
+    const struct {
+        const char* lang;
+        std::vector<const char*> nextSteps;
+    } languages[] = {
+        {"en",
+         {"cknowledge", "Correct the", "Move it back", "run it again", "Reset E-stop", "check the",
+          "press Stop"}},
+        {"pt_BR",
+         {"econheça", "Corrija", "Leve-a de volta", "execute de novo", "Liberar emergência",
+          "verifique", "Parar"}},
+        {"es",
+         {"econozca", "Corrija", "Llévela de vuelta", "ejecútelo de nuevo", "Liberar emergencia",
+          "revise", "Detener"}},
+    };
+    for (const auto& l : languages) {
+        ASSERT_TRUE(installLanguage(QString::fromLatin1(l.lang)));
+        for (int c = 1; c < static_cast<int>(AlarmCode::Count_); ++c) {
+            const auto code = static_cast<AlarmCode>(c);
+            const QString source = QString::fromUtf8(alarmSource(code));
+            const QString text = alarmText(code, -1270.0);
+            EXPECT_FALSE(text.isEmpty()) << l.lang << " alarm " << c;
+            if (QLatin1String(l.lang) != QLatin1String("en")) {
+                EXPECT_NE(QCoreApplication::translate("Controller", alarmSource(code)), source)
+                    << l.lang << " alarm " << c;
+            }
+            // A cause, then a next step: at least two sentences.
+            EXPECT_GE(text.count(QLatin1Char('.')) + text.count(QLatin1Char('!')), 2)
+                << l.lang << " alarm " << c << ": " << text.toStdString();
+            bool hasNextStep = false;
+            for (const char* step : l.nextSteps)
+                hasNextStep = hasNextStep || text.contains(QString::fromUtf8(step));
+            EXPECT_TRUE(hasNextStep) << l.lang << " alarm " << c << ": " << text.toStdString();
+            // The figure the alarm carries is shown wherever the text has a place for it.
+            if (source.contains(QLatin1String("%1"))) {
+                EXPECT_TRUE(text.contains(QLatin1String("1270"))) << l.lang << " alarm " << c;
+            }
+            EXPECT_FALSE(text.contains(QLatin1String("%1"))) << l.lang << " alarm " << c;
+        }
+    }
+    installLanguage(QStringLiteral("en"));
+}
+
+// "Soft limit reached" says where: the limit the platform stopped at.
+TEST(AlarmTexts, SoftLimitNamesThePosition) {
+    app();
+    installLanguage(QStringLiteral("en"));
+    EXPECT_TRUE(alarmText(AlarmCode::SoftLimit, -1270.0).contains(QLatin1String("x=-1270 mm")));
+    EXPECT_TRUE(alarmText(AlarmCode::SoftLimit, 1270.0).contains(QLatin1String("x=1270 mm")));
 }
 
 }  // namespace
