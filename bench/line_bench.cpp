@@ -193,8 +193,10 @@ int main(int argc, char** argv) {
             static_cast<int>(std::max(1LL, (minEvents + c.eventsPerPass - 1) / c.eventsPerPass));
     }
 
-    std::printf("line generators, median of %d runs, at least %lld events a run\n", runs,
-                minEvents);
+    std::printf(
+        "line generators: step events per second (M/s of thread CPU time), median of %d "
+        "runs, at least %lld events a run\n",
+        runs, minEvents);
     std::printf("%-32s %10s %12s %12s %12s %12s %9s\n", "case", "events", "Bres M/s", "Bres next",
                 "float M/s", "float next", "merit %");
     for (const Case& c : cases) {
