@@ -70,6 +70,30 @@ bool withinHalfStep(StepPoint a, StepPoint b, StepPoint p) {
     return 2 * std::llabs(cross) <= major;
 }
 
+/// resources/machines/xy_plotter.json holds the defaults of MachineProfile::xyPlotter(), each
+/// with its source, and the work area fits the protocol's 16-bit step counts.
+TEST(PlotterProfile, ShippedFileIsTheDefaults) {
+    const ProfileLoad load =
+        loadMachineProfile(QStringLiteral(TRILHO_RESOURCES_DIR "/machines/xy_plotter.json"));
+    ASSERT_TRUE(load.profile.has_value()) << load.error.toStdString();
+    const MachineProfile& p = *load.profile;
+    const MachineProfile d = MachineProfile::xyPlotter();
+    EXPECT_EQ(p.kind, MachineKind::Plotter);
+    EXPECT_DOUBLE_EQ(p.plotter.stepsPerTurn, 400.0);
+    EXPECT_DOUBLE_EQ(p.plotter.mmPerStepX, d.plotter.mmPerStepX);
+    EXPECT_DOUBLE_EQ(p.plotter.mmPerStepY, d.plotter.mmPerStepY);
+    EXPECT_DOUBLE_EQ(p.plotter.maxStepRateHz, d.plotter.maxStepRateHz);
+    EXPECT_DOUBLE_EQ(p.plotter.defaultSpeedStepsS, d.plotter.defaultSpeedStepsS);
+    EXPECT_DOUBLE_EQ(p.plotter.penSettleS, d.plotter.penSettleS);
+    EXPECT_DOUBLE_EQ(p.plotter.homingRateHz, d.plotter.homingRateHz);
+    EXPECT_DOUBLE_EQ(p.limits.x.softMaxMm, d.limits.x.softMaxMm);
+    EXPECT_DOUBLE_EQ(p.limits.y.softMaxMm, d.limits.y.softMaxMm);
+    EXPECT_LE(p.limits.x.softMaxMm / p.plotter.mmPerStepX, 65535.0);
+    EXPECT_LE(p.limits.y.softMaxMm / p.plotter.mmPerStepY, 65535.0);
+    EXPECT_GE(p.limits.x.softMinMm, 0.0);
+    EXPECT_DOUBLE_EQ(p.motion.rapidSpeedMmS, p.plotter.maxStepRateHz * p.plotter.mmPerStepX);
+}
+
 TEST(PlotterMotion, MillimetresToSteps) {
     Rig rig;
     const StepPoint s = rig.motion.toSteps({36.6, 20.2});
