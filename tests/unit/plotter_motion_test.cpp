@@ -6,6 +6,7 @@
 
 #include <QFile>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <random>
 #include <string>
@@ -311,6 +312,9 @@ TEST(PlotterMotion, OverRateLosesStepsAndHomingReportsStepsLost) {
     const int ex = counted.x - head.x, ey = counted.y - head.y;
     const double expected = (std::abs(ex) >= std::abs(ey) ? ex : ey) * 0.1;
     EXPECT_NEAR(rig.motion.faultValue(), expected, 1e-9);
+    std::printf("over rate: %llu + %llu steps lost, homing: alarm 18, %.1f mm\n",
+                static_cast<unsigned long long>(lostX), static_cast<unsigned long long>(lostY),
+                rig.motion.faultValue());
     EXPECT_TRUE(rig.motion.homed());  // zeroed on the sensors: the next program starts true
     EXPECT_EQ(rig.sim.head().x, 0);
     rig.motion.clearFault();
