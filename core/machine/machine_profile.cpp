@@ -48,9 +48,12 @@ MachineProfile MachineProfile::xyPlotter() {
     p.name = QStringLiteral("xy-plotter");
     p.description = QStringLiteral("Stepper XY plotter with Bresenham, Arduino UNO (seed 001)");
     p.limits.hasY = true;
-    p.limits.x = {0.0, 200.0};  // chosen until read from the seed
-    p.limits.y = {0.0, 200.0};
-    p.motion.rapidSpeedMmS = 100.0;  // chosen: maxStepRateHz x mmPerStep
+    // Chosen: seed 001 gives no table size (3.1.2: wood, HIWIN rails, belts); its protocol's
+    // 16-bit coordinates (3.1.3.1) allow 65535 steps, 6553 mm at 0.1 mm a step. An A4 sheet
+    // lying across (297 x 210 mm) fits; the seed's objects reach 884 steps (figure 48).
+    p.limits.x = {0.0, 300.0};
+    p.limits.y = {0.0, 210.0};
+    p.motion.rapidSpeedMmS = 100.0;  // derived: maxStepRateHz x mmPerStep, 1000 x 0.1
     p.motion.accelerationMmS2 = 1000.0;
     p.motion.minAccelerationMmS2 = 100.0;
     p.motion.maxDecelerationMmS2 = 1000.0;

@@ -1,18 +1,34 @@
 #pragma once
 // The stepper XY plotter of xy.md A (seed 001): steps, work area, step rate, origin sensor.
-// Every figure says where it comes from: "seed 001 <section>" or "chosen".
+// Every figure says where it comes from: "seed 001 <section>", "derived" (with the sum) or
+// "chosen" (the seed does not give it; why this value).
 
 namespace trilho {
 
 struct PlotterParams {
-    double stepsPerTurn = 400.0;        ///< seed 001: TPP17 in half-step, 400 steps per turn
-    double mmPerStepX = 0.1;            ///< chosen until read from the seed (belt and pulley)
-    double mmPerStepY = 0.1;            ///< chosen until read from the seed
-    double maxStepRateHz = 1000.0;      ///< chosen: above it the motor loses steps
-    double defaultSpeedStepsS = 500.0;  ///< chosen: SPEED when a program gives none
-    double penSettleS = 0.05;           ///< chosen: solenoid time to lift or drop the pen
-    double originX = 0.0;               ///< the origin sensor's corner, mm (seed 001: (0,0))
+    /// Seed 001 3.1.2 (TPP17, 1.8 degrees a step) and 4 (half-step: 400 steps per turn).
+    double stepsPerTurn = 400.0;
+    /// Chosen: seed 001 3.1.2 drives both axes with belts and pulleys but gives no pulley or
+    /// belt size; a 20-tooth, 2 mm pitch pulley moves 40 mm a turn, 40 / 400 = 0.1 mm a step.
+    double mmPerStepX = 0.1;
+    double mmPerStepY = 0.1;  ///< chosen, as mmPerStepX
+    /// Chosen: the seed gives no pull-out rate; a TPP17 in half-step on the seed's 20 V
+    /// transistor driver (3.1.4) is taken to hold 1000 steps/s (2.5 turns/s). Above it the
+    /// motor loses steps (hal/sim/sim_plotter).
+    double maxStepRateHz = 1000.0;
+    /// Derived, about: seed 001 figure 48 plots a 240 x 140-step rectangle after a MOVE of 644
+    /// steps from the origin, 1404 events, in 3.12 s at SPEED 1000, serial exchange included:
+    /// 1404 / 3.12 = 450 events/s. The unit of SPEED itself is not given.
+    double defaultSpeedStepsS = 450.0;
+    /// Chosen: seed 001 3.1.4 fits a 20 V solenoid to lift the pen but gives no timing.
+    double penSettleS = 0.05;
+    double originX =
+        0.0;  ///< seed 001 3.1.3.1 and 3.1.4: the origin (0,0) at the sensors' corner, mm
     double originY = 0.0;
+    /// Chosen: homing's event rate, steps/s; slow, so the head stops on the sensor's edge.
+    double homingRateHz = 400.0;
+    /// Chosen: homing gives up (alarm 19) after crossing the work area plus this, mm.
+    double homingOvertravelMm = 10.0;
 };
 
 /// Every number of the section with its key (under "plotter.") and its allowed range.
@@ -26,6 +42,8 @@ void forEachPlotterNumber(P& p, F&& f) {
     f("plotter.penSettleS", p.penSettleS, 0.0, 10.0);
     f("plotter.originX", p.originX, -100000.0, 100000.0);
     f("plotter.originY", p.originY, -100000.0, 100000.0);
+    f("plotter.homingRateHz", p.homingRateHz, 1.0, 1e7);
+    f("plotter.homingOvertravelMm", p.homingOvertravelMm, 0.0, 10000.0);
 }
 
 }  // namespace trilho

@@ -152,6 +152,10 @@ TEST_F(CliCompile, ExamplePrograms) {
         QStringList args{QStringLiteral("compile"), programs.filePath(name)};
         if (name.endsWith(QLatin1String(".classic.G")))
             args << QStringLiteral("--dialect") << QStringLiteral("classic");
+        // The plotter's programs (the objects of seed 001) are for its profile: X and Y.
+        if (name.startsWith(QLatin1String("plotter_")))
+            args << QStringLiteral("--machine")
+                 << programs.filePath(QStringLiteral("../machines/xy_plotter.json"));
         Result r = run(args);
         EXPECT_EQ(r.exit, 0) << name.toStdString() << "\n" << r.out.toStdString();
     }

@@ -1,0 +1,100 @@
+#pragma once
+// The simulated stepper plotter of seed 001: two open-loop steppers move the pen head one step
+// per pulse (0.1 mm by default); a solenoid lowers the pen after a settle time; two optical
+// sensors read at the corner origin; what the pen draws is recorded. A stepper driven above its
+// pull-out rate loses steps (the fault the plotter cannot see until it homes again): each pulse
+// above the rate is lost with a seeded probability. Deterministic for a seed; time advances only
+// in step().
+#include <array>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "core/machine/machine_profile.h"
+#include "core/machine/xy_motion.h"  // XyPoint
+#include "core/motion/step_event.h"
+#include "hal/plotter_io.h"
+
+namespace trilho {
+
+struct PlotterFaults {
+    /// Step rate per axis (steps/s) above which the motor loses steps: its pull-out rate.
+    /// 0 = the profile's plotter.maxStepRateHz.
+    double pullOutRateHz = 0.0;
+    /// Probability that a pulse above the pull-out rate is lost (the rotor slips a step).
+    double lossProbability = 0.5;
+    /// The origin sensors never read (a cut cable): homing must give up with alarm 19.
+    bool originSensorsDead = false;
+};
+
+/// What the pen drew while down: the head's positions, one per step period, steps from the
+/// origin.
+struct DrawnStroke {
+    std::vector<StepPoint> points;
+};
+
+class SimPlotter final : public PlotterIo {
+  public:
+    /// The machine of profile (plotter section and work area); seed drives the lost steps.
+    explicit SimPlotter(const MachineProfile& profile, std::uint64_t seed = 1);
+
+    // PlotterIo
+    void setDirection(PlotterAxis axis, bool positive) override;
+    void pulse(bool stepX, bool stepY) override;
+    void setPenDown(bool down) override;
+    bool readOrigin(PlotterAxis axis) override;
+
+    /// Advances time by dtS seconds: the pen settles, the step-rate estimate follows the pulses.
+    void step(double dtS);
+
+    void setFaults(const PlotterFaults& faults) { faults_ = faults; }
+    /// Puts the head at rest at (x, y) steps from the origin (where it was at power-on).
+    void placeAt(StepPoint p);
+
+    StepPoint head() const {
+        return {static_cast<std::int32_t>(pos_[0]), static_cast<std::int32_t>(pos_[1])};
+    }
+    XyPoint headMm() const;
+    XyPoint toMm(StepPoint p) const;
+    bool penTouching() const { return penTouching_; }
+    const std::vector<DrawnStroke>& strokes() const { return strokes_; }
+    std::uint64_t pulses(PlotterAxis axis) const { return pulses_[index(axis)]; }
+    std::uint64_t lostSteps(PlotterAxis axis) const { return lost_[index(axis)]; }
+    /// Pulses an axis received per second, filtered (time constant kRateFilterS).
+    double stepRateHz(PlotterAxis axis) const { return rateHz_[index(axis)]; }
+    double timeS() const { return timeS_; }
+
+    /// The head stops this far beyond the origin sensors (steps): the frame. Chosen: 3 mm.
+    static constexpr std::int64_t kOvertravelSteps = 30;
+    /// Time constant of the step-rate estimate, s. Chosen: the estimate counts pulses per tick,
+    /// which swing between whole numbers (0 and 1 a tick at half the tick rate); over 50 ms the
+    /// swing is about 1 % of the rate.
+    static constexpr double kRateFilterS = 0.05;
+    /// Steps are lost above the pull-out rate by more than this fraction. Chosen: above the
+    /// estimate's 1 % swing, so a motor run at its rated rate never loses a step.
+    static constexpr double kRateTolerance = 0.05;
+
+  private:
+    static std::size_t index(PlotterAxis a) { return static_cast<std::size_t>(a); }
+    /// One axis's pulse: true when the head moved.
+    bool stepAxis(std::size_t i);
+    double pullOutRateHz() const;
+
+    PlotterParams params_;
+    PlotterFaults faults_;
+    std::array<std::int64_t, 2> maxSteps_{};  ///< the far end of the frame per axis
+    std::array<std::int64_t, 2> pos_{};       ///< the head, steps from the origin (the truth)
+    std::array<bool, 2> positive_{true, true};
+    std::array<std::uint64_t, 2> pulses_{};
+    std::array<std::uint64_t, 2> lost_{};
+    std::array<std::uint32_t, 2> pulsesThisStep_{};
+    std::array<double, 2> rateHz_{};
+    bool penCommandedDown_ = false;
+    bool penTouching_ = false;
+    double penTimerS_ = 0.0;  ///< time since the solenoid last switched
+    double timeS_ = 0.0;
+    std::vector<DrawnStroke> strokes_;
+    std::mt19937_64 rng_;
+};
+
+}  // namespace trilho
