@@ -22,7 +22,10 @@ struct PlotPoint {
 };
 
 struct PlotterHostConfig {
-    double answerTimeoutS = 2.0;  ///< issue 12: no answer in 2 s -> send again
+    /// No answer in this time -> send again, s. The device resets its receiver and asks RESEND
+    /// after 2 s (seed 001); waiting half a second longer lets that RESEND come first, so a
+    /// packet is not sent twice when its first bytes were lost.
+    double answerTimeoutS = 2.5;
     int maxTimeouts = 3;          ///< then fail
     int maxResends = 10;          ///< RESENDs for one packet before failing
     /// The device's plotting rate, steps/s: END and ORIGEM wait for the drawing, so their

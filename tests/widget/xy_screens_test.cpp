@@ -1,0 +1,206 @@
+// The XY machines' screens (issue 11), offscreen, in virtual time: the link runs without its
+// thread and each test advances the machine itself, so every figure is repeatable.
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QSettings>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "core/gcode/compiler.h"
+#include "core/machine/machine_profile.h"
+#include "ui/start_screen.h"
+#include "ui/xy/dc_table_panel.h"
+#include "ui/xy/plotter_panel.h"
+#include "ui/xy/work_area_view.h"
+#include "ui/xy/xy_main_window.h"
+#include "ui/xy/xy_plots.h"
+#include "ui/xy/xy_session_runnable.h"
+
+using namespace trilho;
+using namespace trilho::ui;
+
+namespace {
+MachineProfile shipped(const char* file) {
+    ProfileLoad load =
+        loadMachineProfile(QStringLiteral(TRILHO_MACHINES_DIR "/") + QString::fromLatin1(file));
+    if (!load.profile) qFatal("%s", qPrintable(load.error));
+    return *load.profile;
+}
+
+std::unique_ptr<XyLink> virtualLink(const MachineProfile& profile) {
+    XySessionMake made = makeXySession(profile, 7);
+    if (!made.session) qFatal("%s", made.error.c_str());
+    return std::make_unique<XyLink>(std::make_unique<XySessionRunnable>(std::move(made.session)),
+                                    false);
+}
+
+/// Advances in 50 ms slices until done() or maxS of virtual time.
+template <typename F>
+bool advanceUntil(XyLink& link, F done, double maxS) {
+    for (double t = 0; t < maxS; t += 0.05) {
+        if (done()) return true;
+        link.advance(0.05);
+    }
+    return done();
+}
+}  // namespace
+
+class XyScreensTest : public QObject {
+    Q_OBJECT
+  private slots:
+    void planSplitsTravelFromDrawing() {
+        CompileOptions o;
+        o.machine = MachineProfile::xyDcTable().limits;
+        const Program p =
+            compile("g00 x10 y10\ng01 x50 y10 f50\ng01 x50 y40\ng04 x1\ng00 x0 y0\nm02\n", o);
+        QVERIFY(p.ok());
+        const auto path = WorkAreaView::plan(p, {0, 0});
+        QCOMPARE(path.size(), std::size_t(4));
+        QCOMPARE(path[0].draw, false);
+        QCOMPARE(path[1].draw, true);
+        QCOMPARE(path[1].to, QPointF(50, 10));
+        QCOMPARE(path[2].to, QPointF(50, 40));
+        QCOMPARE(path[3].draw, false);
+    }
+
+    void viewIsToScaleWithYUpAndBoundedMemory() {
+        WorkAreaView v;
+        v.resize(400, 400);
+        v.setArea(QRectF(0, 0, 300, 210), {0, 0});
+        const QPointF o = v.toPixel({0, 0});
+        const QPointF x = v.toPixel({300, 0});
+        const QPointF y = v.toPixel({0, 210});
+        QCOMPARE(o.y(), x.y());
+        QVERIFY(y.y() < o.y());  // y grows upwards
+        // To scale: 300 mm and 210 mm in the same pixels per mm.
+        QVERIFY(std::abs((x.x() - o.x()) / 300.0 - (o.y() - y.y()) / 210.0) < 1e-9);
+        for (int i = 0; i < 250000; ++i)
+            v.addFollowed({std::fmod(i * 0.37, 300.0), std::fmod(i * 0.11, 210.0)}, i % 3 != 0);
+        QVERIFY(v.followedCount() <= WorkAreaView::kMaxFollowed);
+        QVERIFY(v.followedCount() > WorkAreaView::kMaxFollowed / 2);
+    }
+
+    void dcTableRunsAProgramAndDrawsWhatItFollowed() {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        w.resize(1366, 768);
+        w.show();
+        QVERIFY(w.tablePanel() != nullptr);
+        QVERIFY(w.plotterPanel() == nullptr);
+        QVERIFY(!w.tablePanel()->serialBox()->isEnabled());  // no serial backend yet
+        QVERIFY(w.selectProgram(QStringLiteral(TRILHO_PROGRAMS_DIR "/mesa_xy_quadrado.G")));
+        QVERIFY(!w.workArea()->plannedPath().empty());
+        QVERIFY(w.startButton()->isEnabled());
+        w.startButton()->click();
+        QVERIFY(advanceUntil(
+            *link, [&] { return link->status().state == ControllerState::Running; }, 10.0));
+        QVERIFY(advanceUntil(
+            *link, [&] { return link->status().programFinished; }, 120.0));
+        const XyStatus s = link->status();
+        QCOMPARE(s.activeAlarms, 0u);
+        // The program's last move ends where the planned path ends.
+        const PathSegment& last = w.workArea()->plannedPath().back();
+        QVERIFY(std::abs(s.sample.x.positionMm - last.to.x()) < 0.05);
+        QVERIFY(std::abs(s.sample.y.positionMm - last.to.y()) < 0.05);
+        QVERIFY(w.workArea()->followedCount() > 20);
+        QVERIFY(w.plots()->pointCount() > 20);
+        QVERIFY(w.history()->count() > 3);
+        QVERIFY(w.positionLabel()->text().contains(QString::number(last.to.x(), 'f', 2)));
+    }
+
+    void dcTableFrontPanelSendMovesToTheTypedSetPoint() {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        w.show();
+        DcTablePanel* panel = w.tablePanel();
+        panel->xBox()->setValue(100.0);
+        panel->yBox()->setValue(50.0);
+        QVERIFY(panel->sendButton()->isEnabled());
+        panel->sendButton()->click();
+        link->advance(0.2);
+        QVERIFY(!panel->sendButton()->isEnabled());  // busy: one set point at a time
+        QVERIFY(advanceUntil(
+            *link,
+            [&] {
+                return link->status().state == ControllerState::Manual &&
+                       panel->sendButton()->isEnabled();
+            },
+            20.0));
+        const XyStatus s = link->status();
+        QVERIFY(std::abs(s.sample.x.positionMm - 100.0) < 0.05);
+        QVERIFY(std::abs(s.sample.y.positionMm - 50.0) < 0.05);
+    }
+
+    void plotterJogAndEStopKey() {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_plotter.json"));
+        XyMainWindow w(*link, settings);
+        w.show();
+        QVERIFY(w.plotterPanel() != nullptr);
+        PlotterPanel* panel = w.plotterPanel();
+        panel->jogStepBox()->setValue(10.0);
+        const double x0 = link->status().sample.x.positionMm;
+        panel->rightButton()->click();
+        QVERIFY(advanceUntil(
+            *link, [&] { return link->status().sample.x.positionMm > x0 + 9.99; }, 20.0));
+        link->advance(0.5);
+        QVERIFY(std::abs(link->status().sample.x.positionMm - (x0 + 10.0)) < 0.1 + 1e-9);
+        // Pause/Break is the E-stop key wherever the focus is.
+        panel->jogStepBox()->setFocus();
+        QTest::keyClick(&w, Qt::Key_Pause);
+        link->advance(0.1);
+        QCOMPARE(link->status().state, ControllerState::EStop);
+        QVERIFY(w.stateLabel()->text().contains(QStringLiteral("E-STOP")));
+        QVERIFY(w.estopButton()->isEnabled());
+    }
+
+    void plotterRunsTheSeedsSquare() {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_plotter.json"));
+        XyMainWindow w(*link, settings);
+        w.show();
+        QVERIFY(w.selectProgram(QStringLiteral(TRILHO_PROGRAMS_DIR "/plotter_quadrado.G")));
+        QVERIFY(w.plotterPanel()->pointsLabel()->text().contains(QStringLiteral("5")));
+        w.startButton()->click();
+        QVERIFY(advanceUntil(
+            *link, [&] { return link->status().programFinished; }, 300.0));
+        QCOMPARE(link->status().activeAlarms, 0u);
+        QVERIFY(w.workArea()->followedCount() > 4);
+    }
+
+    void aProgramWithErrorsIsRefusedAndNamed() {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        const QString bad = dir.filePath(QStringLiteral("bad.G"));
+        QFile f(bad);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("g00 x10 y10\ng01 x5000 y10\nm02\n");  // outside the table
+        f.close();
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        QVERIFY(!w.selectProgram(bad));
+        QVERIFY(!w.startButton()->isEnabled());
+        QVERIFY(w.history()->count() >= 1);
+        QVERIFY(w.history()->item(0)->text().contains(QStringLiteral("bad.G")));
+        QVERIFY(w.history()->item(0)->text().contains(QStringLiteral("2")));  // the line
+    }
+
+    void startScreenOffersTheThreeMachines() {
+        StartScreen s;
+        s.setMachine(MachineKind::Plotter);
+        QCOMPARE(s.machine(), MachineKind::Plotter);
+        s.setMachine(MachineKind::DcTable);
+        QCOMPARE(s.machine(), MachineKind::DcTable);
+    }
+};
+
+QTEST_MAIN(XyScreensTest)
+#include "xy_screens_test.moc"
