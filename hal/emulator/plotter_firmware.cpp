@@ -137,3 +137,14 @@ std::vector<std::uint8_t> PlotterFirmware::takeOutput() {
 }
 
 }  // namespace trilho
+
+namespace trilho {
+
+std::string PlotterFirmware::summary() const {
+    return "packets " + std::to_string(stats_.packets) + ", bad checksums " +
+           std::to_string(stats_.badChecksums) + ", RESENDs " + std::to_string(stats_.resendsSent) +
+           ", points " + std::to_string(stats_.pointsStored) + ", objects plotted " +
+           std::to_string(stats_.objectsPlotted);
+}
+
+}  // namespace trilho

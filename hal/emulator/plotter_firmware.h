@@ -11,6 +11,7 @@
 
 #include "core/machine/plotter_motion.h"
 #include "core/protocol/plotter_protocol.h"
+#include "hal/emulator/device_firmware.h"
 #include "hal/sim/sim_plotter.h"
 
 namespace trilho {
@@ -25,7 +26,7 @@ struct PlotterFirmwareStats {
     std::uint64_t objectsPlotted = 0;
 };
 
-class PlotterFirmware {
+class PlotterFirmware final : public DeviceFirmware {
   public:
     /// Bytes of one packet must follow each other within this gap, s: at 57600 bit/s six bytes
     /// take about 1 ms; a longer silence means a byte was lost and the partial packet is stale.
@@ -33,10 +34,12 @@ class PlotterFirmware {
 
     explicit PlotterFirmware(const MachineProfile& profile, std::uint64_t seed = 1);
 
-    void receive(std::uint8_t byte, double nowS);
+    void receive(std::uint8_t byte, double nowS) override;
     /// Runs dtS of plotting (or homing, or a jog); nowS is the time at its end.
-    void step(double dtS, double nowS);
-    std::vector<std::uint8_t> takeOutput();
+    void step(double dtS, double nowS) override;
+    std::vector<std::uint8_t> takeOutput() override;
+    double tickS() const override { return kTickS; }
+    std::string summary() const override;
 
     const PlotterFirmwareStats& stats() const { return stats_; }
     SimPlotter& plotter() { return plotter_; }

@@ -1,0 +1,158 @@
+// trilho-device: the XY boards' firmware, emulated, on a pseudo-terminal or a serial port, so
+// the host code (trilho, trilho-cli) can be run against them with no hardware (issue 12).
+//   trilho-device plotter|table [--pty | --port DEV] [--baud N] [--corrupt P] [--drop P]
+//                 [--corrupt-every N] [--delay-ms N] [--seed N] [--unpaced] [--machine PROFILE]
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QSerialPort>
+#include <QTimer>
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+
+#include "app/device/device_runner.h"
+#include "app/device/pty_endpoint.h"
+#include "core/machine/machine_profile.h"
+#include "hal/emulator/plotter_firmware.h"
+
+using namespace trilho;
+
+namespace {
+std::atomic<bool> g_quit{false};
+void onSignal(int) {
+    g_quit = true;
+}
+int usage(const QString& why) {
+    std::fprintf(stderr, "trilho-device: %s\n", qPrintable(why));
+    return 2;
+}
+}  // namespace
+
+int main(int argc, char* argv[]) {
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("trilho-device"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(TRILHO_VERSION));
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Emulates the stepper plotter's Arduino (seed 001) or the DC table's ATmega128 "
+        "(seed 004) on a pseudo-terminal or a serial port."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument(QStringLiteral("BOARD"), QStringLiteral("plotter or table"));
+    const QCommandLineOption ptyOpt(QStringLiteral("pty"),
+                                    QStringLiteral("Open a pseudo-terminal and print its path "
+                                                   "(the default)."));
+    const QCommandLineOption portOpt(QStringLiteral("port"),
+                                     QStringLiteral("Serve on this serial port instead."),
+                                     QStringLiteral("DEV"));
+    const QCommandLineOption baudOpt(QStringLiteral("baud"),
+                                     QStringLiteral("Bit rate (plotter 57600, table 9600)."),
+                                     QStringLiteral("N"));
+    const QCommandLineOption corruptOpt(
+        QStringLiteral("corrupt"),
+        QStringLiteral("Probability that a received byte has a bit flipped."), QStringLiteral("P"));
+    const QCommandLineOption everyOpt(QStringLiteral("corrupt-every"),
+                                      QStringLiteral("Corrupt exactly every Nth received byte."),
+                                      QStringLiteral("N"));
+    const QCommandLineOption dropOpt(QStringLiteral("drop"),
+                                     QStringLiteral("Probability that a received byte is lost."),
+                                     QStringLiteral("P"));
+    const QCommandLineOption delayOpt(QStringLiteral("delay-ms"),
+                                      QStringLiteral("Extra delay of every received byte, ms."),
+                                      QStringLiteral("N"));
+    const QCommandLineOption seedOpt(QStringLiteral("seed"),
+                                     QStringLiteral("Seed of the line faults (default 1)."),
+                                     QStringLiteral("N"));
+    const QCommandLineOption unpacedOpt(QStringLiteral("unpaced"),
+                                        QStringLiteral("Do not pace bytes at the bit rate."));
+    const QCommandLineOption machineOpt(QStringLiteral("machine"),
+                                        QStringLiteral("Machine profile of the board."),
+                                        QStringLiteral("PROFILE"));
+    parser.addOptions({ptyOpt, portOpt, baudOpt, corruptOpt, everyOpt, dropOpt, delayOpt, seedOpt,
+                       unpacedOpt, machineOpt});
+    parser.process(app);
+
+    const QStringList args = parser.positionalArguments();
+    if (args.size() != 1) return usage(QStringLiteral("give the board: plotter or table"));
+    const QString board = args.front();
+    if (board != QLatin1String("plotter") && board != QLatin1String("table"))
+        return usage(QStringLiteral("unknown board '%1' (plotter or table)").arg(board));
+    if (parser.isSet(ptyOpt) && parser.isSet(portOpt))
+        return usage(QStringLiteral("--pty and --port exclude each other"));
+
+    RunnerSettings settings;
+    settings.baud = board == QLatin1String("plotter") ? 57600 : 9600;
+    auto number = [&](const QCommandLineOption& o, double lo, double hi, double& into) {
+        if (!parser.isSet(o)) return true;
+        bool ok = false;
+        const double v = parser.value(o).toDouble(&ok);
+        if (!ok || !(v >= lo && v <= hi)) {
+            usage(QStringLiteral("--%1: must be a number from %2 to %3 (got %4)")
+                      .arg(o.names().front())
+                      .arg(lo)
+                      .arg(hi)
+                      .arg(parser.value(o)));
+            return false;
+        }
+        into = v;
+        return true;
+    };
+    double baud = settings.baud, every = 0, delayMs = 0, seed = 1;
+    if (!number(baudOpt, 50, 4000000, baud) ||
+        !number(corruptOpt, 0, 1, settings.faults.corruptP) ||
+        !number(dropOpt, 0, 1, settings.faults.dropP) || !number(everyOpt, 0, 1e9, every) ||
+        !number(delayOpt, 0, 60000, delayMs) || !number(seedOpt, 0, 9e15, seed))
+        return 2;
+    settings.baud = static_cast<int>(baud);
+    settings.faults.corruptEvery = static_cast<unsigned>(every);
+    settings.faults.delayS = delayMs / 1000.0;
+    settings.faults.seed = static_cast<std::uint64_t>(seed);
+    settings.unpaced = parser.isSet(unpacedOpt);
+
+    MachineProfile profile = board == QLatin1String("plotter") ? MachineProfile::xyPlotter()
+                                                               : MachineProfile::xyDcTable();
+    if (parser.isSet(machineOpt)) {
+        ProfileLoad load = loadMachineProfile(parser.value(machineOpt));
+        if (!load.profile) return usage(load.error);
+        profile = *load.profile;
+    }
+    std::unique_ptr<DeviceFirmware> firmware;
+    if (board == QLatin1String("plotter")) {
+        if (profile.kind != MachineKind::Plotter)
+            return usage(QStringLiteral("the plotter needs an xy-plotter profile"));
+        firmware = std::make_unique<PlotterFirmware>(profile, settings.faults.seed);
+    } else {
+        return usage(QStringLiteral("the table's firmware is not emulated yet"));
+    }
+
+    PtyEndpoint pty;
+    QSerialPort port;
+    std::unique_ptr<DeviceRunner> runner;
+    if (parser.isSet(portOpt)) {
+        port.setPortName(parser.value(portOpt));
+        if (!port.open(QIODevice::ReadWrite) || !port.setBaudRate(settings.baud))
+            return usage(QStringLiteral("cannot open serial port %1: %2")
+                             .arg(parser.value(portOpt), port.errorString()));
+        runner = std::make_unique<DeviceRunner>(std::move(firmware), &port, settings);
+        std::printf("trilho-device: %s on %s at %d bit/s\n", qPrintable(board),
+                    qPrintable(parser.value(portOpt)), settings.baud);
+    } else {
+        std::string error;
+        if (!pty.open(&error)) return usage(QString::fromStdString(error));
+        runner = std::make_unique<DeviceRunner>(std::move(firmware), pty.masterFd(), settings);
+        std::printf("trilho-device: %s on %s at %d bit/s\n", qPrintable(board),
+                    pty.slavePath().c_str(), settings.baud);
+    }
+    std::fflush(stdout);
+
+    std::signal(SIGINT, onSignal);
+    std::signal(SIGTERM, onSignal);
+    QTimer quitCheck;
+    QObject::connect(&quitCheck, &QTimer::timeout, &app, [&] {
+        if (g_quit) app.quit();
+    });
+    quitCheck.start(50);
+    const int rc = app.exec();
+    std::printf("trilho-device: %s\n", runner->summary().c_str());
+    return rc;
+}
