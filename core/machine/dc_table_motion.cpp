@@ -120,7 +120,7 @@ void DcTableMotion::clearFault() {
     readEncoders();
     // Hold where the table stands now: no jump back to where it was told to be.
     commanded_ = target_ = {measuredMm_[0], measuredMm_[1]};
-    commandedVelocity_ = {};
+    commandedVelocity_ = commandedAccel_ = {};
     for (DcAxisLoop& l : loops_)
         l.reset();
     phase_ = Phase::Idle;
@@ -138,29 +138,32 @@ void DcTableMotion::tick(double dtS) {
             const SyncSample s = plan_.at(planTimeS_);
             commanded_ = {s.position[0], s.position[1]};
             commandedVelocity_ = {s.velocity[0], s.velocity[1]};
+            commandedAccel_ = {s.acceleration[0], s.acceleration[1]};
             if (planTimeS_ >= plan_.duration()) {
-                commandedVelocity_ = {};
+                commandedVelocity_ = commandedAccel_ = {};
                 phase_ = held_ ? Phase::Idle : Phase::Settling;
                 settleS_ = settlingForS_ = 0.0;
             }
         }
         const std::array<double, 2> sp{commanded_.x, commanded_.y};
         const std::array<double, 2> vel{commandedVelocity_.x, commandedVelocity_.y};
+        const std::array<double, 2> acc{commandedAccel_.x, commandedAccel_.y};
         std::array<double, 2> u{};
         double worst = 0.0;
         bool inWindow = true;
+        const bool still = phase_ != Phase::Moving;
         for (std::size_t k = 0; k < 2; ++k) {
             const double e = sp[k] - measuredMm_[k];
             worst = std::max(worst, std::abs(e));
             // Never narrower than half a count: the measured point is the count's centre, so a
             // target is always within half a count of one count's centre.
             const double window = std::max(params_.inPositionWindowMm, 0.5 * mmPerCount_[k] + 1e-9);
-            inWindow = inWindow && std::abs(e) <= window;
-        }
-        const bool still = phase_ != Phase::Moving;
-        for (std::size_t k = 0; k < 2; ++k) {
-            loops_[k].freezeIntegral(still && inWindow);
-            u[k] = loops_[k].update(sp[k], vel[k], measuredMm_[k], dtS);
+            const bool axisIn = std::abs(e) <= window;
+            inWindow = inWindow && axisIn;
+            loops_[k].setPhase(!still   ? DcAxisLoop::Phase::Tracking
+                               : axisIn ? DcAxisLoop::Phase::InPosition
+                                        : DcAxisLoop::Phase::Settling);
+            u[k] = loops_[k].update(sp[k], vel[k], acc[k], measuredMm_[k], dtS);
         }
         if (worst > params_.followingErrorLimitMm) return raise(AlarmCode::FollowingError, worst);
         writeDrives(u);

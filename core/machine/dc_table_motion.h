@@ -68,7 +68,8 @@ class DcTableMotion final : public XyMotion {
     double settleS_ = 0.0;       ///< time both axes have been in the window
     double settlingForS_ = 0.0;  ///< time since the profile ended
     XyPoint commanded_, target_;
-    XyPoint commandedVelocity_;
+    XyPoint commandedVelocity_;  ///< mm/s
+    XyPoint commandedAccel_;     ///< mm/s2
     double speedFraction_ = 1.0;
     bool held_ = false;  ///< hold(): braking or stopped on the path, the target kept
     bool drivesOn_ = true;

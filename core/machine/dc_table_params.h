@@ -43,10 +43,11 @@ struct DcTableParams {
     /// window narrower than half a count of the axis (0.053 mm on X).
     double inPositionWindowMm = 0.05;
     // Engineered gains {kp %/mm, ki %/(mm.s), kff %/(mm/s)}, chosen by simulation on the
-    // default plant (tests/integration/xy_table_test.cpp): kff = 100 % / noLoadSpeedMmS, so the
-    // feed-forward alone runs the commanded speed; kp 14 and ki 40 keep (0,0)->(100,50),
-    // (100,100)->(70,180) and (0,0)->(300,300) within 0.2 mm of the line with overshoot and
-    // final error under one count (kp 8 / ki 20 overshot 1.3 counts; kp 6 / ki 10, 2 counts).
+    // default plant (tests/integration/xy_table_test.cpp, XyTableMoves): kff = 100 % /
+    // noLoadSpeedMmS, so the feed-forward alone runs the commanded speed; kp 14 and ki 40 keep
+    // (0,0)->(100,50), (100,100)->(70,180) and (0,0)->(300,300) within 0.04 mm of the line with
+    // overshoot and final error under a quarter count (kp 8 / ki 20 overshot 1.3 counts, kp 6
+    // / ki 10 two counts, before the acceleration and friction feed-forward of DcAxisLoop).
     DcAxisParams x{2.12, 0.314, 400.0, 0.03, 3.0, 45.0, {0.198, -0.179982}, {14.0, 40.0, 0.25}};
     DcAxisParams y{2.00, 0.314, 400.0, 0.03, 3.0, 45.0, {0.042, -0.035994}, {14.0, 40.0, 0.25}};
 };

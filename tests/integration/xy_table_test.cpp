@@ -55,7 +55,8 @@ TEST(XyTableMoves, ProfileEndsWhenTheSeedFormulaSays) {
     const MachineProfile profile = test::tableProfileForMoves();
     const XyMoveFigures f = runMove(profile, {{0, 10}, {300, 10}});
     EXPECT_EQ(f.endSampleX, 500);
-    EXPECT_EQ(f.endSampleY, 1);  // Y does not move: its setpoint is at its end at once
+    // Y only moves from the centre of its count to 10 mm, and ends in the same sample.
+    EXPECT_EQ(f.endSampleY, 500);
 }
 
 TEST(XyTableMoves, ClassicLawFigures) {
