@@ -20,7 +20,7 @@ SimDcTable::SimDcTable(const DcTableParams& params, std::uint64_t seed)
 
 void SimDcTable::writePwm(int axis, std::uint16_t duty, bool reverse) {
     const double percent = 100.0 * std::min<double>(duty, params_.pwmDutyMax) / params_.pwmDutyMax;
-    this->axis(axis).setDrive(reverse ? -percent : percent);
+    if (pwmRunning_) this->axis(axis).setDrive(reverse ? -percent : percent);
 }
 
 std::uint16_t SimDcTable::readEncoder(int axis) {
@@ -38,12 +38,18 @@ void SimDcTable::restartPwm() {
 }
 
 void SimDcTable::step(double dtS) {
+    stopTimerOnOverCurrent();
+    for (SimDcAxis& a : axes_)
+        a.step(dtS);
+    stopTimerOnOverCurrent();
+}
+
+void SimDcTable::stopTimerOnOverCurrent() {
     // Timer1 stopped by either over-current interrupt: both channels off.
     if (axes_[0].overCurrent() || axes_[1].overCurrent()) pwmRunning_ = false;
-    for (SimDcAxis& a : axes_) {
-        if (!pwmRunning_) a.setDrive(0.0);
-        a.step(dtS);
-    }
+    if (!pwmRunning_)
+        for (SimDcAxis& a : axes_)
+            a.setDrive(0.0);
 }
 
 void SimDcTable::placeAt(double xMm, double yMm) {

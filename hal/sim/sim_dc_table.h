@@ -36,6 +36,8 @@ class SimDcTable final : public DcTableIo, public XyPlant {
     bool pwmRunning() const { return pwmRunning_; }
 
   private:
+    void stopTimerOnOverCurrent();
+
     DcTableParams params_;
     std::array<SimDcAxis, 2> axes_;
     bool pwmRunning_ = true;

@@ -152,6 +152,10 @@ TEST_F(CliCompile, ExamplePrograms) {
         QStringList args{QStringLiteral("compile"), programs.filePath(name)};
         if (name.endsWith(QLatin1String(".classic.G")))
             args << QStringLiteral("--dialect") << QStringLiteral("classic");
+        // The DC XY table's programs (mesa_xy_*) are for its profile.
+        if (name.startsWith(QLatin1String("mesa_xy_")))
+            args << QStringLiteral("--machine")
+                 << QStringLiteral(TRILHO_MACHINES_DIR "/xy_dc_table.json");
         Result r = run(args);
         EXPECT_EQ(r.exit, 0) << name.toStdString() << "\n" << r.out.toStdString();
     }

@@ -15,12 +15,13 @@ namespace {
 TEST(DcAxisLoop, ClassicIsTheSeedsDifferenceEquation) {
     const DcTableParams t;
     DcAxisLoop loop(t.x, t.pwmClampPercent, LoopLaw::Classic);
-    // e = 1 mm on X = 2 pi / 2.12 rad; first period e_prev = 0.
-    const double e1 = 2.0 * std::numbers::pi / 2.12;
-    EXPECT_NEAR(loop.update(1.0, 0.0, 0.0, 0.0, 0.005), 100.0 * 0.198 * e1, 1e-9);
-    // Second period e = 0.5 mm: u = 100 (0.198 e - 0.179982 e_prev).
+    // e = 0.5 mm on X = pi / 2.12 rad; first period e_prev = 0.
+    const double e1 = std::numbers::pi / 2.12;
+    EXPECT_NEAR(loop.update(0.5, 0.0, 0.0, 0.0, 0.005), 100.0 * 0.198 * e1, 1e-9);
+    // Second period e = 0.25 mm: u = 100 (0.198 e - 0.179982 e_prev).
     const double e2 = e1 / 2.0;
-    EXPECT_NEAR(loop.update(0.5, 0.0, 0.0, 0.0, 0.005), 100.0 * (0.198 * e2 - 0.179982 * e1), 1e-9);
+    EXPECT_NEAR(loop.update(0.25, 0.0, 0.0, 0.0, 0.005), 100.0 * (0.198 * e2 - 0.179982 * e1),
+                1e-9);
     // Clamped to the seed's 50 %, the sign (direction bit) kept.
     EXPECT_EQ(loop.update(-10.0, 0.0, 0.0, 0.0, 0.005), -50.0);
 }
