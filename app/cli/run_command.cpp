@@ -24,6 +24,8 @@
 #include "app/cli/commands.h"
 #include "app/cli/diagnostics_text.h"
 #include "app/common/data_paths.h"
+#include "app/cli/run_support.h"
+#include "app/cli/xy_run.h"
 #include "app/session/sim_session.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
@@ -37,132 +39,16 @@ namespace trilho::cli {
 
 namespace {
 
-struct RunOptions {
-    bool virtualTime = false;
-    double massFactor = 1.0;
-    double continueAfterS = -1.0;  ///< < 0: never press Continue
-    double maxSeconds = -1.0;      ///< < 0: unbounded (real time) / 3600 s (virtual time)
-    bool json = false;
-    QString tracePath;
-    double tickJitterMs = 0.0;  ///< late ticks: each period lengthened by up to this
-    double jitterRate = 0.01;   ///< with this probability
-    std::uint64_t seed = 1;
-    std::vector<ScheduledFault> faults;  ///< switched on after homing, at their @T
-};
+constexpr const char* kRailTraceHeader =
+    "t_s,block_n,setpoint_mm,position_mm,error_mm,velocity_mm_s,drive\n";
 
-/// What the run said. Text: each history line is printed as it happens (memory bounded by
-/// nothing the run does); JSON: the last kKeptLines lines are kept, the earlier ones counted.
-struct Report {
-    static constexpr qsizetype kKeptLines = 10000;
-    bool streamText = false;
-    QStringList history;
-    qint64 omitted = 0;
-    QJsonArray alarms;
-    bool offTarget = false;  ///< warning 13: the program ended away from its last target
-    void add(const ControllerEvent& e) {
-        const QString line = historyLine(e);
-        if (streamText) {
-            out(line + QLatin1Char('\n'));
-        } else {
-            if (history.size() == kKeptLines) history.removeFirst(), ++omitted;
-            history << line;
-        }
-        if (e.kind == EventKind::AlarmRaised && e.alarm == AlarmCode::FinalPositionOff)
-            offTarget = true;
-        if (e.kind == EventKind::AlarmRaised && alarms.size() < kKeptLines) {
-            QJsonObject a;
-            a[QStringLiteral("code")] = static_cast<int>(e.alarm);
-            a[QStringLiteral("text")] = alarmText(e.alarm, e.value);
-            a[QStringLiteral("severity")] = alarmSeverity(e.alarm) == AlarmSeverity::Warning
-                                                ? QStringLiteral("warning")
-                                                : QStringLiteral("alarm");
-            alarms.append(a);
-        }
-    }
-};
-
-/// The --trace file: a regular file (or a new one) is written atomically (QSaveFile: a crash or
-/// a full disk never leaves half a trace where a good one was); a device or a FIFO (/dev/null,
-/// a pipe to a plotter) is written straight, never replaced. Any failed write is kept with its
-/// reason and reported after the run's own result.
-class TraceFile {
-  public:
-    bool open(const QString& path, QString* error) {
-        if (path.isEmpty()) return true;
-        path_ = path;
-        const QFileInfo info(path);
-        if (info.exists() && !info.isFile() && !info.isDir()) {
-            // Opened without blocking: a FIFO nobody reads is an error now, not a hang.
-            const int fd = ::open(QFile::encodeName(path).constData(), O_WRONLY | O_NONBLOCK);
-            if (fd < 0) {
-                const int e = errno;
-                *error = QStringLiteral("cannot write trace '%1': %2")
-                             .arg(path, e == ENXIO ? QStringLiteral("no program reads this FIFO")
-                                                   : QString::fromLocal8Bit(std::strerror(e)));
-                return false;
-            }
-            ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
-            auto f = std::make_unique<QFile>();
-            if (!f->open(fd, QIODevice::WriteOnly | QIODevice::Unbuffered,
-                         QFileDevice::AutoCloseHandle)) {
-                ::close(fd);
-                *error = QStringLiteral("cannot write trace '%1': %2").arg(path, f->errorString());
-                return false;
-            }
-            file_ = std::move(f);
-        } else {
-            auto f = std::make_unique<QSaveFile>(path);
-            if (!f->open(QIODevice::WriteOnly)) {
-                *error = QStringLiteral("cannot write trace '%1': %2").arg(path, f->errorString());
-                return false;
-            }
-            file_ = std::move(f);
-        }
-        write("t_s,block_n,setpoint_mm,position_mm,error_mm,velocity_mm_s,drive\n", 65);
-        return true;
-    }
-    void row(const TraceRow& r) {
-        if (!file_ || !error_.isEmpty()) return;
-        char line[192];
-        const int len =
-            std::snprintf(line, sizeof line, "%.4f,%d,%.4f,%.4f,%.4f,%.3f,%d\n", r.timeS, r.blockN,
-                          r.setpointMm, r.positionMm, r.errorMm, r.velocityMmS, r.drive);
-        write(line, len);
-    }
-    /// Finishes the file; false (with error()) when any write, the flush or the commit failed.
-    bool close() {
-        if (!file_) return true;
-        if (auto* save = dynamic_cast<QSaveFile*>(file_.get())) {
-            if (!error_.isEmpty()) {
-                save->cancelWriting();
-                save->commit();  // discards: the old file stays as it was
-            } else if (!save->commit()) {
-                error_ = save->errorString();
-            }
-        } else {
-            auto* plain = static_cast<QFile*>(file_.get());
-            if (error_.isEmpty() && !plain->flush()) error_ = plain->errorString();
-            plain->close();
-        }
-        file_.reset();
-        return error_.isEmpty();
-    }
-    bool active() const { return file_ != nullptr; }
-    QString error() const {
-        return QStringLiteral("cannot write trace '%1': %2").arg(path_, error_);
-    }
-
-  private:
-    void write(const char* data, qint64 len) {
-        if (file_->write(data, len) != len && error_.isEmpty())
-            error_ = file_->errorString().isEmpty() ? QStringLiteral("write failed")
-                                                    : file_->errorString();
-    }
-    std::unique_ptr<QFileDevice> file_;
-    QString path_, error_;
-};
-
-enum class Outcome { Finished, Alarm, TimeLimit };
+void railTraceRow(TraceFile& trace, const TraceRow& r) {
+    char line[192];
+    const int len =
+        std::snprintf(line, sizeof line, "%.4f,%d,%.4f,%.4f,%.4f,%.3f,%d\n", r.timeS, r.blockN,
+                      r.setpointMm, r.positionMm, r.errorMm, r.velocityMmS, r.drive);
+    trace.line(line, len);
+}
 
 /// What to do with the controller after a period; shared by both time bases.
 struct Supervisor {
@@ -223,8 +109,8 @@ Outcome runVirtual(const MachineProfile& profile, std::shared_ptr<const Program>
             applyDueFaults(schedule, session.elapsedS() - startedAt, rail.state().timeS, faults))
             rail.setFaults(faults);
         if (trace.active())
-            trace.row({s.timeS, s.blockN, s.servo.setpointMm, s.servo.positionMm, s.servo.errorMm,
-                       s.servo.velocityMmS, s.servo.loop.code});
+            railTraceRow(trace, {s.timeS, s.blockN, s.servo.setpointMm, s.servo.positionMm,
+                                 s.servo.errorMm, s.servo.velocityMmS, s.servo.loop.code});
         bool press = false;
         if (sup.check(s, s.timeS, outcome, press)) break;
         if (press) c.pressContinue();
@@ -287,7 +173,7 @@ Outcome runRealTime(const MachineProfile& profile, std::shared_ptr<const Program
             worker.requestEmergencyStop();
         }
         worker.drainEvents([&](const ControllerEvent& e) { report.add(e); });
-        worker.drainTrace([&](const TraceRow& r) { trace.row(r); });
+        worker.drainTrace([&](const TraceRow& r) { railTraceRow(trace, r); });
         const ControllerStatus s = worker.snapshot();
         if (s.lastCommandSeq < startSeq) continue;
         bool press = false;
@@ -296,7 +182,7 @@ Outcome runRealTime(const MachineProfile& profile, std::shared_ptr<const Program
     }
     worker.stopThread();
     worker.drainEvents([&](const ControllerEvent& e) { report.add(e); });
-    worker.drainTrace([&](const TraceRow& r) { trace.row(r); });
+    worker.drainTrace([&](const TraceRow& r) { railTraceRow(trace, r); });
     last = worker.snapshot();
     plantMm = rail.state().positionMm;
     return outcome;
@@ -453,6 +339,9 @@ int runCommand(const QStringList& args) {
             o[QStringLiteral("diagnostics_omitted")] =
                 static_cast<double>(program->diagnosticsOmitted);
             o[QStringLiteral("final_position_mm")] = 0.0;
+            QJsonObject axes{{QStringLiteral("x"), 0.0}};
+            if (profile.limits.hasY) axes[QStringLiteral("y")] = 0.0;
+            o[QStringLiteral("axes_mm")] = axes;
             o[QStringLiteral("duration_s")] = 0.0;
             out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) +
                 QLatin1Char('\n'));
@@ -483,10 +372,17 @@ int runCommand(const QStringList& args) {
                                         "write over it")
                              .arg(options.tracePath));
     }
+    const bool xy = profile.kind != MachineKind::Rail;
+    if (xy && !options.faults.empty())
+        return usage(
+            QStringLiteral("--fault is for the rail (the XY machines have no fault "
+                           "injection on the command line yet)"));
     TraceFile trace;
     QString traceError;
-    if (!trace.open(options.tracePath, &traceError)) return usage(traceError);
+    if (!trace.open(options.tracePath, xy ? kXyTraceHeader : kRailTraceHeader, &traceError))
+        return usage(traceError);
     report.streamText = !options.json;
+    if (xy) return runXyProgram(profile, program, options, report, trace);
 
     ControllerStatus last;
     double plantMm = 0.0;
@@ -504,6 +400,8 @@ int runCommand(const QStringList& args) {
         if (report.omitted) o[QStringLiteral("history_omitted")] = double(report.omitted);
         o[QStringLiteral("alarms")] = report.alarms;
         o[QStringLiteral("final_position_mm")] = std::round(finalMm * 1e4) / 1e4;
+        o[QStringLiteral("axes_mm")] =
+            QJsonObject{{QStringLiteral("x"), std::round(finalMm * 1e4) / 1e4}};
         o[QStringLiteral("duration_s")] = std::round(last.timeS * 1e4) / 1e4;
         o[QStringLiteral("plant_position_mm")] = std::round(plantMm * 1e4) / 1e4;
         o[QStringLiteral("late_ticks")] = static_cast<double>(last.servo.overruns);

@@ -32,14 +32,24 @@ struct DcAxisParams {
 };
 
 struct DcTableParams {
-    LoopLaw law = LoopLaw::Engineered;   ///< "dcTable.law": "classic" is seed 004's law
-    double samplePeriodS = 0.005;        ///< seed 004: the loop runs every 5 ms
-    double pwmClampPercent = 50.0;       ///< seed 004: output clamped to 0..50 %
-    double pwmDutyMax = 247.0;           ///< seed 004: OCR top, duty 0..247 at 32 kHz
+    LoopLaw law = LoopLaw::Engineered;  ///< "dcTable.law": "classic" is seed 004's law
+    double samplePeriodS =
+        0.005;  ///< seed 004 annex 7: N_total = tf/0.005; _delay_loop_2(10000) = 5 ms
+    double pwmClampPercent = 50.0;  ///< seed 004 main program: uint8_t min=0,max=50 (percent)
+    double pwmDutyMax = 247.0;      ///< seed 004 config_pwm: ICR1 = 247, OCR1x = floor(u / 0.405)
     double followingErrorLimitMm = 5.0;  ///< chosen
-    double inPositionWindowMm = 0.02;    ///< chosen: about one count
-    DcAxisParams x{2.12, 0.314, 400.0, 0.03, 3.0, 45.0, {0.198, -0.179982}, {}};
-    DcAxisParams y{2.00, 0.314, 400.0, 0.03, 3.0, 45.0, {0.042, -0.035994}, {}};
+    /// Chosen: half a count of Y (0.1 mm per count). The loop measures the centre of the count, so
+    /// in the window the table is within one count of its target; DcTableMotion never uses a
+    /// window narrower than half a count of the axis (0.053 mm on X).
+    double inPositionWindowMm = 0.05;
+    // Engineered gains {kp %/mm, ki %/(mm.s), kff %/(mm/s)}, chosen by simulation on the
+    // default plant (tests/integration/xy_table_test.cpp, XyTableMoves): kff = 100 % /
+    // noLoadSpeedMmS, so the feed-forward alone runs the commanded speed; kp 14 and ki 40 keep
+    // (0,0)->(100,50), (100,100)->(70,180) and (0,0)->(300,300) within 0.04 mm of the line with
+    // overshoot and final error under a quarter count (kp 8 / ki 20 overshot 1.3 counts, kp 6
+    // / ki 10 two counts, before the acceleration and friction feed-forward of DcAxisLoop).
+    DcAxisParams x{2.12, 0.314, 400.0, 0.03, 3.0, 45.0, {0.198, -0.179982}, {14.0, 40.0, 0.25}};
+    DcAxisParams y{2.00, 0.314, 400.0, 0.03, 3.0, 45.0, {0.042, -0.035994}, {14.0, 40.0, 0.25}};
 };
 
 /// Every number of the section with its key (under "dcTable.") and its allowed range.

@@ -33,10 +33,13 @@ MachineProfile MachineProfile::xyDcTable() {
     p.name = QStringLiteral("xy-dc-table");
     p.description = QStringLiteral("DC-motor XY table, ATmega128 and LabVIEW (seed 004)");
     p.limits.hasY = true;
-    p.limits.x = {0.0, 300.0};  // chosen until read from the seed
+    // Chosen: seed 004 gives no travel. Its set points are unsigned 16-bit millimetres
+    // (4 bytes hiX loX hiY loY), so the origin is a corner and coordinates are >= 0; its
+    // annex 7 example moves to (180, 120). 300 mm a side holds that with room.
+    p.limits.x = {0.0, 300.0};
     p.limits.y = {0.0, 300.0};
-    p.motion.rapidSpeedMmS = 150.0;     // seed 004: vel_max = 150 mm/s
-    p.motion.accelerationMmS2 = 300.0;  // seed 004: 250-300 mm/s2 (acel_max 1200)
+    p.motion.rapidSpeedMmS = 150.0;     // seed 004 annex 7: vel_max = 150 mm/s
+    p.motion.accelerationMmS2 = 300.0;  // seed 004 annex 7: acel 250 (user), 300; acel_max 1200
     p.motion.minAccelerationMmS2 = 100.0;
     p.motion.maxDecelerationMmS2 = 1200.0;  // seed 004: acel_max
     return p;

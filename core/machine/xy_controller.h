@@ -39,6 +39,7 @@ struct XyStatus {
     XyPoint target;  ///< the block's target, mm
     XySample sample;
     std::uint64_t lastCommandSeq = 0;
+    bool heldByController = false;  ///< a Hold the controller made (a motionless loop)
 };
 
 class XyController {
@@ -88,7 +89,35 @@ class XyController {
     mutable XyStatus status_;
     SpscRing<ControllerEvent, 1024> events_;
     std::shared_ptr<const Program> program_;
-    // the implementer adds the interpreter's state here
+
+    void post(EventKind kind, std::int32_t n = -1, double x = 0.0, double feed = 0.0,
+              AlarmCode alarm = AlarmCode::None, double value = 0.0);
+    void setState(ControllerState s) { status_.state = s; }
+    void beginHoming();
+    void beginBlock();
+    void finishBlock();
+    void stepRunning(double dtS);
+    void stepEnding();
+    void checkMotionFault();
+    void abandonRun();
+    /// Starts a move of the program (targets from the compiled blocks, mm).
+    void moveProgram(XyPoint target, XyMove kind, double speedFraction);
+    double yOf(std::size_t index) const;
+
+    std::size_t pc_ = 0;  ///< index of the block being executed
+    bool blockStarted_ = false;
+    bool startAfterHoming_ = false;
+    std::size_t pendingStart_ = 0;
+    bool approachFirst_ = false;  ///< go to where the program starts (or the start block) first
+    XyPoint startPoint_;
+    ControllerState holdFrom_ = ControllerState::Running;
+    bool heldByController_ = false;
+    std::size_t gotoBlocks_ = 0;
+    std::size_t gotosSinceActivity_ = 0;
+    bool ending_ = false;
+    bool haveTarget_ = false;
+    XyPoint lastTarget_;
+    ControllerState modeBeforeAlarm_ = ControllerState::Manual;
 };
 
 }  // namespace trilho

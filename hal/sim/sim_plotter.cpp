@@ -75,6 +75,22 @@ void SimPlotter::placeAt(StepPoint p) {
     pos_ = {p.x, p.y};
 }
 
+void SimPlotter::placeAt(double xMm, double yMm) {
+    placeAt(StepPoint{static_cast<std::int32_t>(std::lround(xMm / params_.mmPerStepX)),
+                      static_cast<std::int32_t>(std::lround(yMm / params_.mmPerStepY))});
+}
+
+double SimPlotter::positionMm(int axis) const {
+    const XyPoint p = headMm();
+    return axis == 0 ? p.x : p.y;
+}
+
+double SimPlotter::velocityMmS(int axis) const {
+    const std::size_t i = axis == 0 ? 0 : 1;
+    const double mmPerStep = i == 0 ? params_.mmPerStepX : params_.mmPerStepY;
+    return (positive_[i] ? 1.0 : -1.0) * rateHz_[i] * mmPerStep;
+}
+
 XyPoint SimPlotter::toMm(StepPoint p) const {
     return {p.x * params_.mmPerStepX, p.y * params_.mmPerStepY};
 }

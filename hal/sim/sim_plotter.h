@@ -14,6 +14,7 @@
 #include "core/machine/xy_motion.h"  // XyPoint
 #include "core/motion/step_event.h"
 #include "hal/plotter_io.h"
+#include "hal/sim/xy_plant.h"
 
 namespace trilho {
 
@@ -33,7 +34,7 @@ struct DrawnStroke {
     std::vector<StepPoint> points;
 };
 
-class SimPlotter final : public PlotterIo {
+class SimPlotter final : public PlotterIo, public XyPlant {
   public:
     /// The machine of profile (plotter section and work area); seed drives the lost steps.
     explicit SimPlotter(const MachineProfile& profile, std::uint64_t seed = 1);
@@ -45,7 +46,11 @@ class SimPlotter final : public PlotterIo {
     bool readOrigin(PlotterAxis axis) override;
 
     /// Advances time by dtS seconds: the pen settles, the step-rate estimate follows the pulses.
-    void step(double dtS);
+    void step(double dtS) override;
+    // XyPlant: mm from the origin; the speed is the filtered step rate with its direction.
+    void placeAt(double xMm, double yMm) override;
+    double positionMm(int axis) const override;
+    double velocityMmS(int axis) const override;
 
     void setFaults(const PlotterFaults& faults) { faults_ = faults; }
     /// Puts the head at rest at (x, y) steps from the origin (where it was at power-on).

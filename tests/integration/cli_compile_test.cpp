@@ -156,6 +156,10 @@ TEST_F(CliCompile, ExamplePrograms) {
         if (name.startsWith(QLatin1String("plotter_")))
             args << QStringLiteral("--machine")
                  << programs.filePath(QStringLiteral("../machines/xy_plotter.json"));
+        // The DC XY table's programs (mesa_xy_*) are for its profile.
+        if (name.startsWith(QLatin1String("mesa_xy_")))
+            args << QStringLiteral("--machine")
+                 << QStringLiteral(TRILHO_MACHINES_DIR "/xy_dc_table.json");
         Result r = run(args);
         EXPECT_EQ(r.exit, 0) << name.toStdString() << "\n" << r.out.toStdString();
     }

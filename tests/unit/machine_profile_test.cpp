@@ -156,6 +156,41 @@ TEST(MachineProfileStrict, ShippedXyTableProfileLoads) {
         loadMachineProfile(QStringLiteral(TRILHO_RESOURCES_DIR "/machines/xy_dc_table.json"));
     ASSERT_TRUE(load.profile) << load.error.toStdString();
     EXPECT_TRUE(load.profile->limits.hasY);
+    // Every figure of the shipped file is the built-in default (seed 004 or chosen).
+    const MachineProfile d = MachineProfile::xyDcTable();
+    const DcTableParams& t = load.profile->dcTable;
+    EXPECT_EQ(load.profile->kind, MachineKind::DcTable);
+    EXPECT_EQ(t.samplePeriodS, 0.005);
+    EXPECT_EQ(t.pwmClampPercent, 50.0);
+    EXPECT_EQ(t.pwmDutyMax, 247.0);
+    EXPECT_EQ(t.x.mmPerTurn, 2.12);
+    EXPECT_EQ(t.y.mmPerTurn, 2.0);
+    EXPECT_EQ(t.x.classic.b0, 0.198);
+    EXPECT_EQ(t.x.classic.b1, -0.179982);
+    EXPECT_EQ(t.y.classic.b0, 0.042);
+    EXPECT_EQ(t.y.classic.b1, -0.035994);
+    EXPECT_EQ(t.x.engineered.kp, d.dcTable.x.engineered.kp);
+    EXPECT_EQ(t.y.engineered.ki, d.dcTable.y.engineered.ki);
+    EXPECT_EQ(load.profile->motion.rapidSpeedMmS, 150.0);
+    EXPECT_EQ(load.profile->motion.maxDecelerationMmS2, 1200.0);
+}
+
+TEST(MachineProfileStrict, BadDcTableFieldNamesTheField) {
+    auto error = [](const char* json) {
+        return machineProfileFromJson(QByteArray(json), QStringLiteral("t.json"))
+            .error.toStdString();
+    };
+    EXPECT_NE(error(R"({"kind": "xy-dc-table", "dcTable": {"x": {"mmPerTurn": -2}}})")
+                  .find("dcTable.x.mmPerTurn"),
+              std::string::npos);
+    EXPECT_NE(error(R"({"kind": "xy-dc-table", "dcTable": {"samplePeriodS": "fast"}})")
+                  .find("dcTable.samplePeriodS"),
+              std::string::npos);
+    EXPECT_NE(error(R"({"kind": "xy-dc-table", "dcTable": {"y": {"engineered": {"kq": 1}}}})")
+                  .find("dcTable.y.engineered.kq"),
+              std::string::npos);
+    EXPECT_NE(error(R"({"kind": "xy-dc-table", "dcTable": {"law": "pid"}})").find("dcTable.law"),
+              std::string::npos);
 }
 
 TEST(MachineProfileStrict, OnlyRegularFilesOfAtMostOneMegabyteAreRead) {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "core/motion/line_profile.h"
+#include "core/motion/sync_trapezoid.h"
 #include "core/motion/trapezoid.h"
 
 namespace trilho {
@@ -149,32 +149,86 @@ TEST(TrapezoidProperty, NoPlanFromAnyStatePassesItsTarget) {
     }
 }
 
-TEST(LineProfile, AxesStartAndStopTogetherOnTheLine) {
+TEST(SyncTrapezoid, AxesStartAndStopTogetherOnTheLine) {
     Eigen::Vector2d start(0, 0), target(300, 100), speeds(150, 150), accels(300, 300);
-    LineProfile line(start, target, speeds, accels);
+    SyncTrapezoid line(start, target, speeds, accels);
     // X is the long axis: it runs at its limits, Y follows the line.
     const double length = std::sqrt(300.0 * 300 + 100 * 100);
     const double share = 300 / length;
     Trapezoid alongX = Trapezoid::restToRest(0, length, 150 / share, 300 / share);
     EXPECT_NEAR(line.duration(), alongX.duration(), 1e-12);
     for (double t = 0; t <= line.duration(); t += 0.01) {
-        LineSample s = line.at(t);
+        SyncSample s = line.at(t);
         EXPECT_NEAR(s.position[1], s.position[0] / 3.0, 1e-9);  // on the line y = x/3
         EXPECT_LE(std::abs(s.velocity[0]), 150 * (1 + 1e-9));
         EXPECT_LE(std::abs(s.acceleration[0]), 300 * (1 + 1e-9));
         EXPECT_LE(std::abs(s.velocity[1]), 150 * (1 + 1e-9));
     }
-    LineSample end = line.at(line.duration());
+    SyncSample end = line.at(line.duration());
     EXPECT_NEAR(end.position[0], 300, 1e-9);
     EXPECT_NEAR(end.position[1], 100, 1e-9);
     EXPECT_EQ(end.velocity.norm(), 0.0);
 }
 
-TEST(LineProfile, MatchesTheSeedTimeForTheSlowestAxis) {
+TEST(SyncTrapezoid, MatchesTheSeedTimeForTheSlowestAxis) {
     // xy.md B: tf = (vmax^2 + a|d|) / (a vmax) for a trapezoid; 300 mm at 150 mm/s, 300 mm/s2.
     Eigen::Vector2d start(0, 0), target(300, 0), speeds(150, 150), accels(300, 300);
-    LineProfile line(start, target, speeds, accels);
-    EXPECT_NEAR(line.duration(), LineProfile::seedAxisTime(300, 150, 300), 1e-12);
+    SyncTrapezoid line(start, target, speeds, accels);
+    EXPECT_NEAR(line.duration(), SyncTrapezoid::seedAxisTime(300, 150, 300), 1e-12);
+}
+
+TEST(SyncTrapezoid, BothAxesEndInTheSameSampleOnTheLine) {
+    // Seed 004 samples the profile every 5 ms: both axes reach their targets in one sample.
+    Eigen::Vector2d start(10, 20), target(-20, 100), speeds(150, 150), accels(300, 300);
+    SyncTrapezoid line(start, target, speeds, accels);
+    const double h = 0.005;
+    int endX = -1, endY = -1;
+    for (int k = 0; k * h <= line.duration() + h; ++k) {
+        const SyncSample s = line.at(k * h);
+        // On the line: the cross product with the direction vanishes.
+        const Eigen::Vector2d d = target - start, p = s.position - start;
+        EXPECT_NEAR(d.x() * p.y() - d.y() * p.x(), 0.0, 1e-9) << k;
+        if (endX < 0 && std::abs(s.position[0] - target.x()) < 1e-12) endX = k;
+        if (endY < 0 && std::abs(s.position[1] - target.y()) < 1e-12) endY = k;
+    }
+    EXPECT_GT(endX, 0);
+    EXPECT_EQ(endX, endY);
+    EXPECT_EQ(endX, static_cast<int>(std::ceil(line.duration() / h - 1e-9)));
+}
+
+TEST(SyncTrapezoid, SeedTimeOfTheTimeBaseAxisIsTheDuration) {
+    // Seed 004 annex 7's own example: (0,0) -> (180,120), vel_max 150, acel 250. X has the
+    // larger tf = (150^2 + 250*180) / (250*150) = 1.8 s and sets the time base.
+    Eigen::Vector2d start(0, 0), target(180, 120), speeds(150, 150), accels(250, 250);
+    EXPECT_EQ(SyncTrapezoid::seedTimeBaseAxis(start, target, speeds, accels), 0);
+    EXPECT_NEAR(SyncTrapezoid::seedAxisTime(180, 150, 250), 1.8, 1e-12);
+    // The seed's time is the X axis at its own limits; the exact plan moves X at those limits.
+    SyncTrapezoid line(start, target, speeds, accels);
+    EXPECT_NEAR(line.duration(), 1.8, 1e-12);
+    EXPECT_NEAR(line.at(0.9).velocity[0], 150.0, 1e-9);  // cruise: X at vel_max
+    EXPECT_NEAR(line.at(0.9).velocity[1], 100.0, 1e-9);  // Y follows the slope 120/180
+}
+
+TEST(SyncTrapezoid, TriangularWhenNoCruise) {
+    // 20 mm at 150 mm/s and 300 mm/s2: vmax needs 75 mm of ramps, so it never cruises.
+    Eigen::Vector2d start(0, 0), target(20, 0), speeds(150, 150), accels(300, 300);
+    SyncTrapezoid line(start, target, speeds, accels);
+    EXPECT_NEAR(line.duration(), 2.0 * std::sqrt(20.0 / 300.0), 1e-12);
+    EXPECT_LT(line.path().peakSpeed(), 150.0);
+}
+
+TEST(SyncTrapezoid, StoppedFromBrakesOnTheLine) {
+    Eigen::Vector2d start(0, 0), target(200, 100), speeds(150, 150), accels(300, 300);
+    SyncTrapezoid line(start, target, speeds, accels);
+    const SyncSample at = line.at(0.8);
+    SyncTrapezoid stop = line.stoppedFrom(0.8);
+    const SyncSample end = stop.at(stop.duration());
+    EXPECT_NEAR(end.position[1], end.position[0] / 2.0, 1e-9);
+    EXPECT_EQ(end.velocity.norm(), 0.0);
+    // Braking at the planned rate from the speed at 0.8 s along the path.
+    const double v = at.velocity.norm(), a = line.path().accelLimit();
+    EXPECT_NEAR((end.position - at.position).norm(), v * v / (2 * a), 1e-9);
+    EXPECT_LT(end.position[0], 200.0);
 }
 
 }  // namespace

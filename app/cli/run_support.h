@@ -1,0 +1,149 @@
+#pragma once
+// What `trilho-cli run` shares between the rail and the XY machines: the options, the report
+// (history lines, alarms) and the --trace file.
+#include <fcntl.h>
+#include <unistd.h>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonObject>
+#include <QSaveFile>
+#include <QStringList>
+#include <cerrno>
+#include <cstring>
+#include <memory>
+#include <vector>
+
+#include "app/cli/cli_output.h"
+#include "core/machine/controller_event.h"
+#include "core/machine/event_text.h"
+#include "hal/sim/fault_schedule.h"
+
+namespace trilho::cli {
+
+enum class Outcome { Finished, Alarm, TimeLimit };
+
+struct RunOptions {
+    bool virtualTime = false;
+    double massFactor = 1.0;
+    double continueAfterS = -1.0;  ///< < 0: never press Continue
+    double maxSeconds = -1.0;      ///< < 0: unbounded (real time) / 3600 s (virtual time)
+    bool json = false;
+    QString tracePath;
+    double tickJitterMs = 0.0;  ///< late ticks: each period lengthened by up to this
+    double jitterRate = 0.01;   ///< with this probability
+    std::uint64_t seed = 1;
+    std::vector<ScheduledFault> faults;  ///< switched on after homing, at their @T
+};
+
+/// What the run said. Text: each history line is printed as it happens (memory bounded by
+/// nothing the run does); JSON: the last kKeptLines lines are kept, the earlier ones counted.
+struct Report {
+    static constexpr qsizetype kKeptLines = 10000;
+    bool streamText = false;
+    QStringList history;
+    qint64 omitted = 0;
+    QJsonArray alarms;
+    bool offTarget = false;  ///< warning 13: the program ended away from its last target
+    void add(const ControllerEvent& e) {
+        const QString line = historyLine(e);
+        if (streamText) {
+            out(line + QLatin1Char('\n'));
+        } else {
+            if (history.size() == kKeptLines) history.removeFirst(), ++omitted;
+            history << line;
+        }
+        if (e.kind == EventKind::AlarmRaised && e.alarm == AlarmCode::FinalPositionOff)
+            offTarget = true;
+        if (e.kind == EventKind::AlarmRaised && alarms.size() < kKeptLines) {
+            QJsonObject a;
+            a[QStringLiteral("code")] = static_cast<int>(e.alarm);
+            a[QStringLiteral("text")] = alarmText(e.alarm, e.value);
+            a[QStringLiteral("severity")] = alarmSeverity(e.alarm) == AlarmSeverity::Warning
+                                                ? QStringLiteral("warning")
+                                                : QStringLiteral("alarm");
+            alarms.append(a);
+        }
+    }
+};
+
+/// The --trace file: a regular file (or a new one) is written atomically (QSaveFile: a crash or
+/// a full disk never leaves half a trace where a good one was); a device or a FIFO (/dev/null,
+/// a pipe to a plotter) is written straight, never replaced. Any failed write is kept with its
+/// reason and reported after the run's own result.
+class TraceFile {
+  public:
+    /// header: the CSV's first line, with its newline.
+    bool open(const QString& path, const char* header, QString* error) {
+        if (path.isEmpty()) return true;
+        path_ = path;
+        const QFileInfo info(path);
+        if (info.exists() && !info.isFile() && !info.isDir()) {
+            // Opened without blocking: a FIFO nobody reads is an error now, not a hang.
+            const int fd = ::open(QFile::encodeName(path).constData(), O_WRONLY | O_NONBLOCK);
+            if (fd < 0) {
+                const int e = errno;
+                *error = QStringLiteral("cannot write trace '%1': %2")
+                             .arg(path, e == ENXIO ? QStringLiteral("no program reads this FIFO")
+                                                   : QString::fromLocal8Bit(std::strerror(e)));
+                return false;
+            }
+            ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+            auto f = std::make_unique<QFile>();
+            if (!f->open(fd, QIODevice::WriteOnly | QIODevice::Unbuffered,
+                         QFileDevice::AutoCloseHandle)) {
+                ::close(fd);
+                *error = QStringLiteral("cannot write trace '%1': %2").arg(path, f->errorString());
+                return false;
+            }
+            file_ = std::move(f);
+        } else {
+            auto f = std::make_unique<QSaveFile>(path);
+            if (!f->open(QIODevice::WriteOnly)) {
+                *error = QStringLiteral("cannot write trace '%1': %2").arg(path, f->errorString());
+                return false;
+            }
+            file_ = std::move(f);
+        }
+        write(header, static_cast<qint64>(std::strlen(header)));
+        return true;
+    }
+    /// One row, already formatted with its newline.
+    void line(const char* text, int len) {
+        if (!file_ || !error_.isEmpty() || len <= 0) return;
+        write(text, len);
+    }
+    /// Finishes the file; false (with error()) when any write, the flush or the commit failed.
+    bool close() {
+        if (!file_) return true;
+        if (auto* save = dynamic_cast<QSaveFile*>(file_.get())) {
+            if (!error_.isEmpty()) {
+                save->cancelWriting();
+                save->commit();  // discards: the old file stays as it was
+            } else if (!save->commit()) {
+                error_ = save->errorString();
+            }
+        } else {
+            auto* plain = static_cast<QFile*>(file_.get());
+            if (error_.isEmpty() && !plain->flush()) error_ = plain->errorString();
+            plain->close();
+        }
+        file_.reset();
+        return error_.isEmpty();
+    }
+    bool active() const { return file_ != nullptr; }
+    QString error() const {
+        return QStringLiteral("cannot write trace '%1': %2").arg(path_, error_);
+    }
+
+  private:
+    void write(const char* data, qint64 len) {
+        if (file_->write(data, len) != len && error_.isEmpty())
+            error_ = file_->errorString().isEmpty() ? QStringLiteral("write failed")
+                                                    : file_->errorString();
+    }
+    std::unique_ptr<QFileDevice> file_;
+    QString path_, error_;
+};
+
+}  // namespace trilho::cli

@@ -1,0 +1,145 @@
+#include "app/cli/xy_run.h"
+
+#include <QJsonDocument>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <thread>
+
+#include "app/session/xy_session.h"
+
+namespace trilho::cli {
+
+namespace {
+
+volatile std::sig_atomic_t g_xyInterrupted = 0;
+extern "C" void onXyInterrupt(int) {
+    g_xyInterrupted = 1;
+}
+
+double round4(double v) {
+    return std::round(v * 1e4) / 1e4;
+}
+
+void traceRow(TraceFile& trace, const XyStatus& s) {
+    char line[256];
+    const char* pen = s.sample.pen == PenState::Down ? "1"
+                      : s.sample.pen == PenState::Up ? "0"
+                                                     : "";
+    const int len =
+        std::snprintf(line, sizeof line, "%.4f,%d,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%s\n", s.timeS,
+                      s.blockN, s.sample.x.setpointMm, s.sample.x.positionMm, s.sample.y.setpointMm,
+                      s.sample.y.positionMm, s.sample.x.drive, s.sample.y.drive, pen);
+    trace.line(line, len);
+}
+
+/// Returns true when the run is over (as the rail's Supervisor).
+bool over(const XyStatus& s, double elapsedS, const RunOptions& options, double& pausedSince,
+          Outcome& outcome, bool& pressContinue) {
+    pressContinue = false;
+    if (s.programFinished && s.state == ControllerState::AutoIdle)
+        return outcome = Outcome::Finished, true;
+    if (s.state == ControllerState::Alarm || s.state == ControllerState::EStop)
+        return outcome = Outcome::Alarm, true;
+    if (s.state == ControllerState::Paused && s.heldByController)
+        return outcome = Outcome::Alarm, true;
+    if (options.maxSeconds >= 0 && elapsedS >= options.maxSeconds - 1e-9)
+        return outcome = Outcome::TimeLimit, true;
+    if (s.state == ControllerState::Paused && s.pause == PauseReason::M00) {
+        if (pausedSince < 0) pausedSince = elapsedS;
+        if (options.continueAfterS >= 0 && elapsedS - pausedSince >= options.continueAfterS - 1e-9)
+            pressContinue = true, pausedSince = -1.0;
+    } else {
+        pausedSince = -1.0;
+    }
+    return false;
+}
+
+}  // namespace
+
+int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> program,
+                 const RunOptions& options, Report& report, TraceFile& trace) {
+    XySessionMake made = makeXySession(profile, options.seed);
+    if (!made.session) {
+        trace.close();
+        return usageError("run", QString::fromStdString(made.error));
+    }
+    XySession& session = *made.session;
+    XyController& c = session.controller();
+    c.selectAutomatic();
+    c.loadProgram(std::move(program));
+    c.start(0);
+    Outcome outcome = Outcome::Finished;
+    double pausedSince = -1.0;
+    const auto t0 = std::chrono::steady_clock::now();
+    if (!options.virtualTime) {
+        std::setvbuf(stdout, nullptr, _IOLBF, 0);
+        std::signal(SIGINT, onXyInterrupt);
+        std::signal(SIGTERM, onXyInterrupt);
+    }
+    while (true) {
+        if (!options.virtualTime) {
+            // Real time: one period per period of the clock (the plant is simulated here).
+            std::this_thread::sleep_until(
+                t0 + std::chrono::duration<double>(session.elapsedS() + session.periodS()));
+            if (g_xyInterrupted) c.emergencyStop();
+        }
+        session.step();
+        c.drainEvents([&](const ControllerEvent& e) { report.add(e); });
+        const XyStatus& s = c.status();
+        if (trace.active()) traceRow(trace, s);
+        bool press = false;
+        if (over(s, s.timeS, options, pausedSince, outcome, press)) break;
+        if (press) c.pressContinue();
+    }
+    if (outcome == Outcome::Alarm) {
+        // Drives off: follow the table to rest (2 s at most) so the report says where it is.
+        for (int i = 0; i < 400; ++i) {
+            session.step();
+            c.drainEvents([&](const ControllerEvent& e) { report.add(e); });
+        }
+    }
+    const bool traceOk = trace.close();
+    const XyStatus last = c.status();
+    const double x = last.sample.x.positionMm, y = last.sample.y.positionMm;
+    if (options.json) {
+        QJsonObject o;
+        o[QStringLiteral("ok")] = outcome == Outcome::Finished && !report.offTarget;
+        o[QStringLiteral("history")] = QJsonArray::fromStringList(report.history);
+        if (report.omitted) o[QStringLiteral("history_omitted")] = double(report.omitted);
+        o[QStringLiteral("alarms")] = report.alarms;
+        o[QStringLiteral("final_position_mm")] = round4(x);
+        o[QStringLiteral("axes_mm")] =
+            QJsonObject{{QStringLiteral("x"), round4(x)}, {QStringLiteral("y"), round4(y)}};
+        o[QStringLiteral("duration_s")] = round4(last.timeS);
+        o[QStringLiteral("plant_position_mm")] =
+            QJsonObject{{QStringLiteral("x"), round4(session.plant().positionMm(0))},
+                        {QStringLiteral("y"), round4(session.plant().positionMm(1))}};
+        out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
+    } else {
+        QString text = QStringLiteral("final position: x %1 mm, y %2 mm (%3 s)\n")
+                           .arg(x, 0, 'f', 3)
+                           .arg(y, 0, 'f', 3)
+                           .arg(last.timeS, 0, 'f', 3);
+        if (outcome == Outcome::TimeLimit)
+            text += QStringLiteral("stopped by --max-seconds %1\n").arg(options.maxSeconds);
+        out(text);
+    }
+    if (!traceOk) {
+        err(QStringLiteral("trilho-cli run: %1\n").arg(trace.error()));
+        if (outcome == Outcome::Finished) return kUsage;
+    }
+    if (outcome == Outcome::Finished && report.offTarget) return kAlarm;
+    switch (outcome) {
+        case Outcome::Finished:
+            return kOk;
+        case Outcome::Alarm:
+            return kAlarm;
+        case Outcome::TimeLimit:
+            return kTimeLimit;
+    }
+    return kOk;
+}
+
+}  // namespace trilho::cli

@@ -1,0 +1,186 @@
+#include "core/machine/dc_table_motion.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace trilho {
+
+namespace {
+/// Both axes must stay inside the in-position window this long, s. Chosen: 4 samples.
+constexpr double kInPositionTimeS = 0.02;
+/// A profile that ended must settle within this, s (else alarm 12). Chosen; the classic law
+/// (no integral, large lag) may need seconds to creep in, or never get there.
+constexpr double kSettleTimeoutS = 3.0;
+constexpr double kClassicSettleTimeoutS = 30.0;
+}  // namespace
+
+DcTableMotion::DcTableMotion(const MachineProfile& profile, DcTableIo& io)
+    : params_(profile.dcTable),
+      rapidMmS_(profile.motion.rapidSpeedMmS),
+      accelMmS2_(profile.motion.accelerationMmS2),
+      io_(io),
+      loops_{DcAxisLoop(params_.x, params_.pwmClampPercent, params_.law),
+             DcAxisLoop(params_.y, params_.pwmClampPercent, params_.law)} {
+    const std::array<const DcAxisParams*, 2> axes{&params_.x, &params_.y};
+    for (int i = 0; i < 2; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        mmPerCount_[k] = axes[k]->mmPerTurn * axes[k]->radPerCount / (2.0 * std::numbers::pi);
+        lastRaw_[k] = io_.readEncoder(i);
+        // Seed 004: the counts start at zero at power-on, the origin (16-bit, signed here).
+        counts_[k] = static_cast<std::int16_t>(lastRaw_[k]);
+        measuredMm_[k] = (static_cast<double>(counts_[k]) + 0.5) * mmPerCount_[k];
+    }
+    commanded_ = target_ = {measuredMm_[0], measuredMm_[1]};
+    writeDrives({0.0, 0.0});
+}
+
+void DcTableMotion::readEncoders() {
+    for (int i = 0; i < 2; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        const std::uint16_t raw = io_.readEncoder(i);
+        counts_[k] += static_cast<std::int16_t>(static_cast<std::uint16_t>(raw - lastRaw_[k]));
+        lastRaw_[k] = raw;
+        // The centre of the count: the truth is somewhere in it, at most half a count away.
+        measuredMm_[k] = (static_cast<double>(counts_[k]) + 0.5) * mmPerCount_[k];
+    }
+}
+
+void DcTableMotion::plan(XyPoint from, XyPoint to) {
+    const Eigen::Vector2d start(from.x, from.y), target(to.x, to.y);
+    const double v = rapidMmS_ * speedFraction_;
+    plan_ = SyncTrapezoid(start, target, Eigen::Vector2d(v, v),
+                          Eigen::Vector2d(accelMmS2_, accelMmS2_));
+    planTimeS_ = 0.0;
+    settleS_ = settlingForS_ = 0.0;
+    phase_ = Phase::Moving;
+}
+
+void DcTableMotion::beginMove(XyPoint target, XyMove, double speedFraction) {
+    if (!drivesOn_ || fault_ != AlarmCode::None) return;
+    speedFraction_ = std::clamp(speedFraction, 0.001, 1.0);
+    target_ = target;
+    held_ = false;
+    plan(commanded_, target);
+}
+
+void DcTableMotion::beginHoming() {
+    homed_ = true;  // the power-on zero is the origin (see the header)
+}
+
+void DcTableMotion::hold() {
+    if (phase_ != Phase::Moving) return;
+    held_ = true;
+    plan_ = plan_.stoppedFrom(planTimeS_);
+    planTimeS_ = 0.0;
+}
+
+void DcTableMotion::resume() {
+    if (!held_ || !drivesOn_ || fault_ != AlarmCode::None) return;
+    held_ = false;
+    plan(commanded_, target_);
+}
+
+void DcTableMotion::stop() {
+    held_ = false;
+    if (phase_ == Phase::Moving) {
+        plan_ = plan_.stoppedFrom(planTimeS_);
+        planTimeS_ = 0.0;
+    }
+    target_ = {plan_.target()[0], plan_.target()[1]};
+}
+
+void DcTableMotion::writeDrives(const std::array<double, 2>& percent) {
+    for (int i = 0; i < 2; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        drivePercent_[k] = percent[k];
+        // Seed 004: OCR1x = floor(percent / (100 / 247)).
+        const double duty = std::floor(std::abs(percent[k]) * params_.pwmDutyMax / 100.0);
+        io_.writePwm(i, static_cast<std::uint16_t>(std::clamp(duty, 0.0, params_.pwmDutyMax)),
+                     percent[k] < 0.0);
+    }
+}
+
+void DcTableMotion::cut() {
+    drivesOn_ = false;
+    phase_ = Phase::Idle;
+    held_ = false;
+    writeDrives({0.0, 0.0});
+}
+
+void DcTableMotion::raise(AlarmCode code, double value) {
+    if (fault_ == AlarmCode::None) fault_ = code, faultValue_ = value;
+    cut();
+}
+
+void DcTableMotion::clearFault() {
+    fault_ = AlarmCode::None;
+    faultValue_ = 0.0;
+    io_.restartPwm();
+    readEncoders();
+    // Hold where the table stands now: no jump back to where it was told to be.
+    commanded_ = target_ = {measuredMm_[0], measuredMm_[1]};
+    commandedVelocity_ = commandedAccel_ = {};
+    for (DcAxisLoop& l : loops_)
+        l.reset();
+    phase_ = Phase::Idle;
+    drivesOn_ = true;
+}
+
+void DcTableMotion::tick(double dtS) {
+    readEncoders();
+    for (int i = 0; i < 2; ++i)
+        if (drivesOn_ && io_.readOverCurrent(i))
+            raise(AlarmCode::OverCurrent, std::abs(drivePercent_[static_cast<std::size_t>(i)]));
+    if (drivesOn_) {
+        if (phase_ == Phase::Moving) {
+            planTimeS_ += dtS;
+            const SyncSample s = plan_.at(planTimeS_);
+            commanded_ = {s.position[0], s.position[1]};
+            commandedVelocity_ = {s.velocity[0], s.velocity[1]};
+            commandedAccel_ = {s.acceleration[0], s.acceleration[1]};
+            if (planTimeS_ >= plan_.duration()) {
+                commandedVelocity_ = commandedAccel_ = {};
+                phase_ = held_ ? Phase::Idle : Phase::Settling;
+                settleS_ = settlingForS_ = 0.0;
+            }
+        }
+        const std::array<double, 2> sp{commanded_.x, commanded_.y};
+        const std::array<double, 2> vel{commandedVelocity_.x, commandedVelocity_.y};
+        const std::array<double, 2> acc{commandedAccel_.x, commandedAccel_.y};
+        std::array<double, 2> u{};
+        double worst = 0.0;
+        bool inWindow = true;
+        const bool still = phase_ != Phase::Moving;
+        for (std::size_t k = 0; k < 2; ++k) {
+            const double e = sp[k] - measuredMm_[k];
+            worst = std::max(worst, std::abs(e));
+            // Never narrower than half a count: the measured point is the count's centre, so a
+            // target is always within half a count of one count's centre.
+            const double window = std::max(params_.inPositionWindowMm, 0.5 * mmPerCount_[k] + 1e-9);
+            const bool axisIn = std::abs(e) <= window;
+            inWindow = inWindow && axisIn;
+            loops_[k].setPhase(!still   ? DcAxisLoop::Phase::Tracking
+                               : axisIn ? DcAxisLoop::Phase::InPosition
+                                        : DcAxisLoop::Phase::Settling);
+            u[k] = loops_[k].update(sp[k], vel[k], acc[k], measuredMm_[k], dtS);
+        }
+        if (worst > params_.followingErrorLimitMm) return raise(AlarmCode::FollowingError, worst);
+        writeDrives(u);
+        if (phase_ == Phase::Settling) {
+            settlingForS_ += dtS;
+            settleS_ = inWindow ? settleS_ + dtS : 0.0;
+            if (settleS_ >= kInPositionTimeS - 1e-12) {
+                phase_ = Phase::Idle;
+            } else if (settlingForS_ > (params_.law == LoopLaw::Classic ? kClassicSettleTimeoutS
+                                                                        : kSettleTimeoutS)) {
+                return raise(AlarmCode::InPositionTimeout, worst);
+            }
+        }
+    }
+    sample_.x = {commanded_.x, measuredMm_[0], commandedVelocity_.x, drivePercent_[0]};
+    sample_.y = {commanded_.y, measuredMm_[1], commandedVelocity_.y, drivePercent_[1]};
+    sample_.pen = PenState::None;
+}
+
+}  // namespace trilho

@@ -1,0 +1,82 @@
+#pragma once
+// The DC XY table's motion (xy.md B, seed 004): each move is one SyncTrapezoid from the
+// commanded point to the target, sampled every dcTable.samplePeriodS; each axis runs its
+// DcAxisLoop on the encoder count and writes PWM and direction (hal/dc_table_io.h).
+// Faults: following error (alarm 3, the larger axis error in mm), an over-current input
+// (alarm 17, the axis' PWM percent when it fired), a move that never settles (alarm 12).
+// Hold and stop brake along the line. Homing: the seed has no origin sensor; its firmware
+// starts with both counts at zero, so the origin is where the table stood at power-on (the
+// operator puts it in the origin corner first). beginHoming() accepts that zero and does not
+// move; the counts are never cleared afterwards, so an alarm does not lose the origin.
+#include <array>
+#include <cstdint>
+
+#include "core/control/dc_axis_loop.h"
+#include "core/machine/machine_profile.h"
+#include "core/machine/xy_motion.h"
+#include "core/motion/sync_trapezoid.h"
+#include "hal/dc_table_io.h"
+
+namespace trilho {
+
+class DcTableMotion final : public XyMotion {
+  public:
+    DcTableMotion(const MachineProfile& profile, DcTableIo& io);
+
+    void beginMove(XyPoint target, XyMove kind, double speedFraction) override;
+    void beginHoming() override;
+    void tick(double dtS) override;
+    bool busy() const override { return phase_ != Phase::Idle; }
+    void hold() override;
+    void resume() override;
+    void stop() override;
+    void cut() override;
+    AlarmCode fault() const override { return fault_; }
+    double faultValue() const override { return faultValue_; }
+    void clearFault() override;
+    bool homed() const override { return homed_; }
+    XyPoint commanded() const override { return commanded_; }
+    XySample sample() const override { return sample_; }
+
+    /// Measured position, mm (the centre of the encoder count).
+    XyPoint measured() const { return {measuredMm_[0], measuredMm_[1]}; }
+    /// The move's planned profile (tests check its timing against the seed's formula).
+    const SyncTrapezoid& profile() const { return plan_; }
+    bool held() const { return held_; }
+    bool drivesOn() const { return drivesOn_; }
+
+  private:
+    enum class Phase : std::uint8_t { Idle, Moving, Settling };
+
+    void plan(XyPoint from, XyPoint to);
+    void readEncoders();
+    void raise(AlarmCode code, double value);
+    void writeDrives(const std::array<double, 2>& percent);
+
+    DcTableParams params_;
+    double rapidMmS_, accelMmS2_;
+    DcTableIo& io_;
+    std::array<DcAxisLoop, 2> loops_;
+    std::array<double, 2> mmPerCount_{};
+    std::array<std::uint16_t, 2> lastRaw_{};
+    std::array<std::int64_t, 2> counts_{};
+    std::array<double, 2> measuredMm_{};
+    std::array<double, 2> drivePercent_{};
+    Phase phase_ = Phase::Idle;
+    SyncTrapezoid plan_;
+    double planTimeS_ = 0.0;
+    double settleS_ = 0.0;       ///< time both axes have been in the window
+    double settlingForS_ = 0.0;  ///< time since the profile ended
+    XyPoint commanded_, target_;
+    XyPoint commandedVelocity_;  ///< mm/s
+    XyPoint commandedAccel_;     ///< mm/s2
+    double speedFraction_ = 1.0;
+    bool held_ = false;  ///< hold(): braking or stopped on the path, the target kept
+    bool drivesOn_ = true;
+    bool homed_ = false;
+    AlarmCode fault_ = AlarmCode::None;
+    double faultValue_ = 0.0;
+    XySample sample_;
+};
+
+}  // namespace trilho

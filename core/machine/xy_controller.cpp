@@ -1,0 +1,438 @@
+#include "core/machine/xy_controller.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace trilho {
+
+namespace {
+/// Status-only blocks run without waiting a period, at most this many a tick (as the rail).
+constexpr int kMaxBlocksPerStep = 8;
+}  // namespace
+
+XyController::XyController(const MachineProfile& profile, std::unique_ptr<XyMotion> motion)
+    : profile_(profile), motion_(std::move(motion)) {
+    status_.sample = motion_->sample();
+    status_.target = motion_->commanded();
+}
+
+const XyStatus& XyController::status() const {
+    status_.sample = motion_->sample();
+    status_.homed = motion_->homed();
+    return status_;
+}
+
+void XyController::post(EventKind kind, std::int32_t n, double x, double feed, AlarmCode alarm,
+                        double value) {
+    ControllerEvent e;
+    e.timeS = status_.timeS;
+    e.kind = kind;
+    e.n = n;
+    e.x = x;
+    e.feed = feed;
+    e.alarm = alarm;
+    e.value = value;
+    events_.push(e);
+    if (setsOnlineStatus(kind)) status_.lastStatus = e;
+}
+
+// ---- modes -----------------------------------------------------------------------------------
+
+void XyController::selectManual() {
+    if (status_.state == ControllerState::EStop || status_.state == ControllerState::Alarm) return;
+    if (motion_->busy()) motion_->stop();
+    abandonRun();
+    status_.automatic = false;
+    setState(ControllerState::Manual);
+    post(EventKind::ModeManual);
+}
+
+void XyController::selectAutomatic() {
+    if (status_.state == ControllerState::EStop || status_.state == ControllerState::Alarm) return;
+    if (status_.automatic && status_.state != ControllerState::Manual) return;
+    if (motion_->busy()) motion_->stop();
+    status_.automatic = true;
+    post(EventKind::ModeAutomatic);
+    beginHoming();
+}
+
+void XyController::beginHoming() {
+    motion_->beginHoming();
+    setState(ControllerState::Homing);
+    post(EventKind::HomingStarted);
+}
+
+// ---- manual ----------------------------------------------------------------------------------
+
+void XyController::jog(int axis, double deltaMm, double speedFraction) {
+    if (status_.state != ControllerState::Manual || motion_->busy()) return;
+    XyPoint to = motion_->commanded();
+    (axis == 0 ? to.x : to.y) += deltaMm;
+    moveTo(to, speedFraction);
+}
+
+void XyController::moveTo(XyPoint target, double speedFraction) {
+    if (status_.state != ControllerState::Manual || motion_->busy()) return;
+    const auto& lim = profile_.limits;
+    const XyPoint clamped{std::clamp(target.x, lim.x.softMinMm, lim.x.softMaxMm),
+                          std::clamp(target.y, lim.y.softMinMm, lim.y.softMaxMm)};
+    if (clamped.x != target.x || clamped.y != target.y) raiseAlarm(AlarmCode::SoftLimit);
+    status_.target = clamped;
+    motion_->beginMove(clamped, XyMove::Travel,
+                       std::clamp(speedFraction, 0.001, profile_.motion.jogMaxFraction));
+}
+
+// ---- automatic -------------------------------------------------------------------------------
+
+bool XyController::loadProgram(std::shared_ptr<const Program> program) {
+    if (status_.state == ControllerState::Running || status_.state == ControllerState::Waiting ||
+        status_.state == ControllerState::Paused)
+        return false;
+    const bool yOk = program && program->y.size() == program->blocks.size();
+    if (!program || !program->ok() || !yOk) {
+        const double errors = program ? static_cast<double>(program->errorCount()) : 0.0;
+        post(EventKind::CompileFailed, -1, errors);
+        raiseAlarm(AlarmCode::CompileErrors);
+        program_.reset();
+        status_.programLoaded = false;
+        return false;
+    }
+    program_ = std::move(program);
+    gotoBlocks_ =
+        static_cast<std::size_t>(std::count_if(program_->blocks.begin(), program_->blocks.end(),
+                                               [](const Block& b) { return b.op == Op::Goto; }));
+    status_.programLoaded = true;
+    status_.programFinished = false;
+    return true;
+}
+
+double XyController::yOf(std::size_t index) const {
+    return program_->y[index];
+}
+
+bool XyController::start(std::size_t fromIndex) {
+    if (!status_.automatic || !program_ || fromIndex >= program_->blocks.size()) return false;
+    if (status_.state == ControllerState::Homing) {
+        pendingStart_ = fromIndex;
+        startAfterHoming_ = true;
+        return true;
+    }
+    if (status_.state != ControllerState::AutoIdle) return false;
+    if (!motion_->homed()) {
+        pendingStart_ = fromIndex;
+        startAfterHoming_ = true;
+        beginHoming();
+        return true;
+    }
+    status_.modal = modalStateBefore(*program_, fromIndex);
+    pc_ = fromIndex;
+    blockStarted_ = false;
+    status_.programFinished = false;
+    status_.pause = PauseReason::None;
+    gotosSinceActivity_ = 0;
+    ending_ = false;
+    haveTarget_ = false;
+    if (fromIndex > 0) post(EventKind::StartFromBlock, program_->blocks[fromIndex].n);
+    // Execution starts at the machine origin (gcode.md: where the compiler's targets start);
+    // from a block, where the program would have left the table.
+    startPoint_ = {};
+    for (std::size_t i = fromIndex; i-- > 0;) {
+        if (isMotion(program_->blocks[i].op)) {
+            startPoint_ = {program_->blocks[i].x, yOf(i)};
+            break;
+        }
+    }
+    const XyPoint at = motion_->commanded();
+    approachFirst_ = std::hypot(at.x - startPoint_.x, at.y - startPoint_.y) > 1e-9;
+    if (approachFirst_) motion_->beginMove(startPoint_, XyMove::Travel, 1.0);
+    setState(ControllerState::Running);
+    return true;
+}
+
+void XyController::moveProgram(XyPoint target, XyMove kind, double speedFraction) {
+    const XyPoint from = motion_->commanded();
+    // A move of no length is no activity: a cycle of them is a motionless loop.
+    if (std::hypot(target.x - from.x, target.y - from.y) > 1e-9 || !haveTarget_)
+        gotosSinceActivity_ = 0;
+    status_.target = target;
+    motion_->beginMove(target, kind, std::clamp(speedFraction * status_.feedOverride, 0.001, 1.0));
+    haveTarget_ = true, lastTarget_ = target;
+}
+
+void XyController::beginBlock() {
+    const Block& b = program_->blocks[pc_];
+    blockStarted_ = true;
+    status_.blockIndex = static_cast<std::int32_t>(pc_);
+    status_.blockN = b.n;
+    status_.blockLine = b.line;
+    status_.modal.apply(b);
+    switch (b.op) {
+        case Op::Rapid:
+            post(EventKind::Rapid, b.n, b.x);
+            moveProgram({b.x, yOf(pc_)}, XyMove::Travel, 1.0);
+            break;
+        case Op::Linear:
+            post(EventKind::Linear, b.n, b.x, b.feed);
+            moveProgram({b.x, yOf(pc_)}, XyMove::Draw, b.feed / 100.0);
+            break;
+        case Op::Dwell:
+            if (b.seconds() > 0.0) gotosSinceActivity_ = 0;
+            post(EventKind::Dwell, b.n, b.seconds());
+            status_.dwellRemainingS = b.seconds();
+            setState(ControllerState::Waiting);
+            break;
+        case Op::Absolute:
+            post(EventKind::Absolute, b.n), finishBlock();
+            break;
+        case Op::Incremental:
+            post(EventKind::Incremental, b.n), finishBlock();
+            break;
+        case Op::SetZero:
+            post(EventKind::SetZero, b.n, b.zero()), finishBlock();
+            break;
+        case Op::ResetZero:
+            post(EventKind::ResetZero, b.n), finishBlock();
+            break;
+        case Op::Feed:
+            post(EventKind::Feed, b.n, 0.0, b.feed), finishBlock();
+            break;
+        case Op::Stop:
+            gotosSinceActivity_ = 0;
+            post(EventKind::WaitContinue, b.n);
+            status_.pause = PauseReason::M00;
+            setState(ControllerState::Paused);
+            break;
+        case Op::Goto:
+            post(EventKind::Goto, b.n, b.targetN());
+            pc_ = static_cast<std::size_t>(b.targetIndex);
+            blockStarted_ = false;
+            // As the rail: more gotos than the program has with no move, dwell or m00 between
+            // is a cycle that neither moves nor waits; hold it with a warning.
+            if (++gotosSinceActivity_ > gotoBlocks_) {
+                gotosSinceActivity_ = 0;
+                raiseAlarm(AlarmCode::MotionlessLoop);
+                holdFrom_ = ControllerState::Running;
+                status_.pause = PauseReason::Hold;
+                heldByController_ = status_.heldByController = true;
+                setState(ControllerState::Paused);
+            } else if (status_.singleBlock) {
+                status_.pause = PauseReason::SingleBlock;
+                setState(ControllerState::Paused);
+                post(EventKind::SingleBlockWait, b.n);
+            }
+            break;
+        case Op::End:
+            ending_ = true;
+            break;
+    }
+}
+
+void XyController::finishBlock() {
+    const Block& b = program_->blocks[pc_];
+    ++pc_;
+    blockStarted_ = false;
+    setState(ControllerState::Running);
+    if (status_.singleBlock) {
+        status_.pause = PauseReason::SingleBlock;
+        setState(ControllerState::Paused);
+        post(EventKind::SingleBlockWait, b.n);
+    }
+}
+
+void XyController::stepEnding() {
+    if (motion_->busy()) return;  // settling in position
+    ending_ = false;
+    const XySample s = motion_->sample();
+    const double off =
+        haveTarget_ ? std::hypot(s.x.positionMm - lastTarget_.x, s.y.positionMm - lastTarget_.y)
+                    : 0.0;
+    if (off > profile_.loop.finalPositionWindowMm)
+        raiseAlarm(AlarmCode::FinalPositionOff, off);
+    else
+        post(EventKind::ProgramEnd);
+    status_.programFinished = true;
+    status_.blockIndex = -1;
+    blockStarted_ = false;
+    setState(ControllerState::AutoIdle);
+}
+
+void XyController::stepRunning(double dtS) {
+    if (ending_) return stepEnding();
+    if (approachFirst_) {
+        if (motion_->busy()) return;
+        approachFirst_ = false;
+    }
+    for (int k = 0; k < kMaxBlocksPerStep && status_.state == ControllerState::Running; ++k) {
+        if (ending_) break;
+        if (!blockStarted_) {
+            beginBlock();
+            continue;
+        }
+        const Block& b = program_->blocks[pc_];
+        if (isMotion(b.op) && !motion_->busy()) {
+            finishBlock();
+            continue;
+        }
+        break;  // a move in progress
+    }
+    if (status_.state == ControllerState::Waiting) {
+        status_.dwellRemainingS -= dtS;
+        if (status_.dwellRemainingS <= 1e-12) {
+            status_.dwellRemainingS = 0.0;
+            finishBlock();
+        }
+    }
+}
+
+void XyController::pressContinue() {
+    if (status_.state != ControllerState::Paused) return;
+    if (status_.pause == PauseReason::M00) {
+        post(EventKind::ContinuePressed);
+        status_.pause = PauseReason::None;
+        finishBlock();
+    } else if (status_.pause == PauseReason::SingleBlock) {
+        status_.pause = PauseReason::None;
+        setState(ControllerState::Running);
+    } else {
+        resume();
+    }
+}
+
+void XyController::hold() {
+    if (status_.state != ControllerState::Running && status_.state != ControllerState::Waiting)
+        return;
+    holdFrom_ = status_.state;
+    motion_->hold();
+    status_.pause = PauseReason::Hold;
+    setState(ControllerState::Paused);
+    post(EventKind::Paused, status_.blockN);
+}
+
+void XyController::resume() {
+    if (status_.state != ControllerState::Paused) return;
+    heldByController_ = status_.heldByController = false;
+    if (status_.pause != PauseReason::Hold) return pressContinue();
+    status_.pause = PauseReason::None;
+    post(EventKind::Resumed, status_.blockN);
+    motion_->resume();  // on to the same target, on the same line
+    setState(holdFrom_ == ControllerState::Waiting ? ControllerState::Waiting
+                                                   : ControllerState::Running);
+}
+
+void XyController::stop() {
+    const auto s = status_.state;
+    if (s != ControllerState::Running && s != ControllerState::Waiting &&
+        s != ControllerState::Paused && s != ControllerState::Homing)
+        return;
+    motion_->stop();
+    abandonRun();
+    setState(ControllerState::AutoIdle);
+    post(EventKind::Stopped);
+}
+
+void XyController::setSingleBlock(bool on) {
+    status_.singleBlock = on;
+}
+
+void XyController::setFeedOverride(double factor) {
+    // Applies from the next move: the synchronized profile of a move is planned once.
+    status_.feedOverride = std::clamp(factor, 0.0, 1.5);
+}
+
+// ---- always ----------------------------------------------------------------------------------
+
+void XyController::abandonRun() {
+    status_.pause = PauseReason::None;
+    status_.blockIndex = -1;
+    blockStarted_ = false;
+    approachFirst_ = false;
+    startAfterHoming_ = false;
+    ending_ = false;
+    heldByController_ = status_.heldByController = false;
+}
+
+void XyController::emergencyStop() {
+    motion_->cut();
+    if (status_.state == ControllerState::EStop) return;
+    abandonRun();
+    status_.activeAlarms |= alarmBit(AlarmCode::EmergencyStop);
+    status_.lastAlarm = AlarmCode::EmergencyStop;
+    setState(ControllerState::EStop);
+    post(EventKind::AlarmRaised, -1, 0.0, 0.0, AlarmCode::EmergencyStop);
+}
+
+void XyController::resetEmergencyStop() {
+    if (status_.state != ControllerState::EStop) return;
+    status_.activeAlarms &= ~alarmBit(AlarmCode::EmergencyStop);
+    motion_->clearFault();
+    status_.automatic = false;
+    setState(ControllerState::Manual);
+    post(EventKind::EStopReset);
+}
+
+void XyController::raiseAlarm(AlarmCode code, double value) {
+    if (code == AlarmCode::None) return;
+    if (code == AlarmCode::EmergencyStop) return emergencyStop();
+    status_.lastAlarm = code;
+    post(EventKind::AlarmRaised, -1, 0.0, 0.0, code, value);
+    if (alarmSeverity(code) == AlarmSeverity::Warning) return;
+    status_.activeAlarms |= alarmBit(code);
+    if (status_.state == ControllerState::Alarm || status_.state == ControllerState::EStop) return;
+    // Anything that needs the operator stops the machine: both drives off, program abandoned.
+    motion_->cut();
+    modeBeforeAlarm_ = status_.automatic ? ControllerState::AutoIdle : ControllerState::Manual;
+    abandonRun();
+    setState(ControllerState::Alarm);
+}
+
+void XyController::acknowledgeAlarms() {
+    if (status_.state != ControllerState::Alarm) return;
+    for (unsigned c = 1; c < static_cast<unsigned>(AlarmCode::Count_); ++c) {
+        const auto code = static_cast<AlarmCode>(c);
+        if (status_.activeAlarms & alarmBit(code))
+            post(EventKind::AlarmAcknowledged, -1, 0.0, 0.0, code);
+    }
+    status_.activeAlarms = 0;
+    motion_->clearFault();
+    setState(modeBeforeAlarm_);
+}
+
+void XyController::checkMotionFault() {
+    const AlarmCode f = motion_->fault();
+    if (f == AlarmCode::None || status_.state == ControllerState::Alarm ||
+        status_.state == ControllerState::EStop)
+        return;
+    raiseAlarm(f, motion_->faultValue());
+}
+
+void XyController::step(double dtS) {
+    motion_->tick(dtS);
+    status_.timeS += dtS;
+    // A period far longer than asked means the loop stalled.
+    if (dtS > std::max(profile_.loop.watchdogS, 5.0 * profile_.dcTable.samplePeriodS) &&
+        status_.state != ControllerState::EStop)
+        raiseAlarm(AlarmCode::LoopOverrun, dtS);
+    checkMotionFault();
+    switch (status_.state) {
+        case ControllerState::Homing:
+            if (!motion_->busy() && motion_->homed()) {
+                setState(ControllerState::AutoIdle);
+                post(EventKind::HomingDone);
+                if (startAfterHoming_) {
+                    startAfterHoming_ = false;
+                    start(pendingStart_);
+                }
+            }
+            break;
+        case ControllerState::Running:
+        case ControllerState::Waiting:
+            stepRunning(dtS);
+            break;
+        default:
+            break;
+    }
+    status_.sample = motion_->sample();
+    status_.homed = motion_->homed();
+}
+
+}  // namespace trilho

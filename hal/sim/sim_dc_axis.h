@@ -1,0 +1,51 @@
+#pragma once
+// One simulated DC axis of the table (xy.md B): PWM percent -> motor speed as a first-order
+// lag (no-load speed at 100 %, mechanical time constant) less Coulomb friction (a PWM percent
+// the friction eats; the axis sticks below it), a lead screw of mmPerTurn, an encoder of
+// radPerCount, and a motor current (proportional to the PWM percent not balanced by the back
+// EMF) that trips the over-current input when it stays above overCurrentPercent: driven hard
+// while stalled or jammed. Deterministic; advanced only by step(). Needs no controller header.
+#include <cstdint>
+
+#include "core/machine/dc_table_params.h"
+
+namespace trilho {
+
+struct SimDcAxisState {
+    double positionMm = 0.0;  ///< the truth, mm from the machine origin
+    double velocityMmS = 0.0;
+    double drivePercent = 0.0;    ///< signed PWM percent applied (0 when cut)
+    double currentPercent = 0.0;  ///< filtered |PWM % - back EMF %|, the comparator's input
+    bool jammed = false;
+};
+
+class SimDcAxis {
+  public:
+    explicit SimDcAxis(const DcAxisParams& params = {}, double frictionScale = 1.0);
+
+    /// Signed PWM percent, -100..100 (the direction bit and the duty, already combined).
+    void setDrive(double percent) { state_.drivePercent = percent; }
+    /// Advances dtS seconds (sub-steps of at most 0.25 ms).
+    void step(double dtS);
+    /// The encoder count: floor of the travel over one count's millimetres, kept in 16 bits.
+    std::uint16_t encoder() const;
+    /// The current has been above overCurrentPercent for the comparator's filter time.
+    bool overCurrent() const { return overCurrent_; }
+    void clearOverCurrent() { overCurrent_ = false, state_.currentPercent = 0.0; }
+    /// A jam (a crash, a seized screw): the axis stops dead and stays there.
+    void setJammed(bool on) { state_.jammed = on; }
+    /// Puts the axis at rest at positionMm (the encoder reads it from the origin).
+    void placeAt(double positionMm);
+
+    const SimDcAxisState& state() const { return state_; }
+    /// Millimetres per encoder count: mmPerTurn x radPerCount / 2 pi.
+    double mmPerCount() const;
+
+  private:
+    DcAxisParams params_;
+    double frictionPercent_;
+    SimDcAxisState state_;
+    bool overCurrent_ = false;
+};
+
+}  // namespace trilho

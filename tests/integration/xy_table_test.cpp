@@ -1,0 +1,236 @@
+// Issue 11: the DC XY table (xy.md B, seed 004) in virtual time - synchronized moves, both
+// laws, faults, hold and resume, and a seeded soak of random programs.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <sstream>
+
+#include "app/session/xy_session.h"
+#include "core/gcode/compiler.h"
+#include "core/machine/dc_table_motion.h"
+#include "hal/sim/sim_dc_table.h"
+#include "tests/support/xy_run.h"
+
+namespace trilho {
+namespace {
+
+using test::XyMoveFigures;
+
+struct Move {
+    XyPoint from, to;
+};
+// (0,0)->(-30,80) is a displacement: the table's origin is a corner (set points are unsigned
+// mm, seed 004), so it starts at (100,100) and goes to (70,180).
+const Move kMoves[] = {{{0, 0}, {100, 50}}, {{100, 100}, {70, 180}}, {{0, 0}, {300, 300}}};
+
+XyMoveFigures runMove(const MachineProfile& profile, const Move& m) {
+    XySessionMake made = makeXySession(profile, 1, m.from);
+    EXPECT_TRUE(made.session) << made.error;
+    made.session->runUntil([] { return false; }, 0.05);  // at rest, loops holding
+    return test::measureMove(*made.session, m.to);
+}
+
+TEST(XyTableMoves, EngineeredLawKeepsTheLineAndTheCount) {
+    const MachineProfile profile = test::tableProfileForMoves(LoopLaw::Engineered);
+    for (const Move& m : kMoves) {
+        const XyMoveFigures f = runMove(profile, m);
+        std::printf("engineered (%g,%g)->(%g,%g): %s\n", m.from.x, m.from.y, m.to.x, m.to.y,
+                    test::describe(f).c_str());
+        EXPECT_TRUE(f.done);
+        EXPECT_GT(f.endSampleX, 0);
+        EXPECT_EQ(f.endSampleX, f.endSampleY);  // both profiles end in the same 5 ms sample
+        EXPECT_LE(f.pathDeviationMm, 0.5);
+        for (int k = 0; k < 2; ++k) {
+            EXPECT_LE(f.overshootCounts[k], 1.0) << k;
+            EXPECT_LE(f.finalErrorCounts[k], 1.0) << k;
+        }
+    }
+}
+
+TEST(XyTableMoves, ProfileEndsWhenTheSeedFormulaSays) {
+    // Seed 004 annex 7: 300 mm on X alone at vel_max 150, acel 300: tf = (150^2 + 300 x 300) /
+    // (300 x 150) = 2.5 s = 500 samples of 5 ms.
+    const MachineProfile profile = test::tableProfileForMoves();
+    const XyMoveFigures f = runMove(profile, {{0, 10}, {300, 10}});
+    EXPECT_EQ(f.endSampleX, 500);
+    // Y only moves from the centre of its count to 10 mm, and ends in the same sample.
+    EXPECT_EQ(f.endSampleY, 500);
+}
+
+TEST(XyTableMoves, ClassicLawFigures) {
+    // The seed's own law, exactly (no bound asserted: these are the figures it gives on this
+    // plant). Its steady-state gain is 100 (b0 + b1) = 1.8 %/rad on X and 0.6 %/rad on Y, so it
+    // lags tens of millimetres at 150 mm/s: the following-error limit is lifted to see it.
+    MachineProfile profile = test::tableProfileForMoves(LoopLaw::Classic);
+    profile.dcTable.followingErrorLimitMm = 100.0;
+    for (const Move& m : kMoves) {
+        const XyMoveFigures f = runMove(profile, m);
+        std::printf("classic (%g,%g)->(%g,%g): %s\n", m.from.x, m.from.y, m.to.x, m.to.y,
+                    test::describe(f).c_str());
+        EXPECT_EQ(f.endSampleX, f.endSampleY);  // the profile is the same for both laws
+    }
+}
+
+TEST(XyTableFaults, JammedAxisRaisesAndCutsBothDrives) {
+    const MachineProfile profile = test::tableProfileForMoves();
+    XySessionMake made = makeXySession(profile, 1, {0, 0});
+    XySession& s = *made.session;
+    auto& table = dynamic_cast<SimDcTable&>(s.plant());
+    s.controller().moveTo({200, 100}, 1.0);
+    s.runUntil([] { return false; }, 0.5);
+    table.setJammed(0, true);
+    ASSERT_TRUE(
+        s.runUntil([&] { return s.controller().status().state == ControllerState::Alarm; }, 2.0));
+    const AlarmCode a = s.controller().status().lastAlarm;
+    std::printf("jam: alarm %d after %.3f s\n", static_cast<int>(a), s.elapsedS() - 0.5);
+    EXPECT_TRUE(a == AlarmCode::OverCurrent || a == AlarmCode::FollowingError);
+    s.step();
+    EXPECT_EQ(table.axis(0).state().drivePercent, 0.0);
+    EXPECT_EQ(table.axis(1).state().drivePercent, 0.0);
+    // Acknowledged and unjammed, the table holds where it stands and moves again.
+    table.setJammed(0, false);
+    s.controller().acknowledgeAlarms();
+    EXPECT_EQ(s.controller().status().state, ControllerState::Manual);
+    s.controller().moveTo({10, 10}, 1.0);
+    EXPECT_TRUE(s.runUntil([&] { return !s.controller().motion().busy(); }, 5.0));
+    EXPECT_NEAR(table.positionMm(0), 10.0, 0.11);
+}
+
+TEST(XyTableFaults, EmergencyStopCutsAtOnce) {
+    const MachineProfile profile = test::tableProfileForMoves();
+    XySessionMake made = makeXySession(profile, 1, {0, 0});
+    XySession& s = *made.session;
+    auto& table = dynamic_cast<SimDcTable&>(s.plant());
+    s.controller().moveTo({200, 100}, 1.0);
+    s.runUntil([] { return false; }, 0.8);
+    ASSERT_GT(std::abs(table.axis(0).state().drivePercent), 1.0);
+    s.controller().emergencyStop();
+    EXPECT_EQ(table.axis(0).state().drivePercent, 0.0);  // written inside emergencyStop()
+    EXPECT_EQ(table.axis(1).state().drivePercent, 0.0);
+    EXPECT_EQ(s.controller().status().state, ControllerState::EStop);
+    s.runUntil([] { return false; }, 0.5);
+    EXPECT_EQ(table.axis(0).state().drivePercent, 0.0);
+    EXPECT_EQ(std::abs(table.velocityMmS(0)), 0.0);  // friction stopped it, nothing drives
+}
+
+std::shared_ptr<const Program> compileFor(const MachineProfile& profile, const char* text) {
+    CompileOptions o;
+    o.machine = profile.limits;
+    auto p = std::make_shared<Program>(compile(text, o));
+    EXPECT_TRUE(p->ok());
+    return p;
+}
+
+TEST(XyTableProgram, HoldStopsOnTheLineAndResumeReachesTheTarget) {
+    const MachineProfile profile = MachineProfile::xyDcTable();
+    XySessionMake made = makeXySession(profile, 1, {0, 0});
+    XySession& s = *made.session;
+    XyController& c = s.controller();
+    c.selectAutomatic();
+    c.loadProgram(compileFor(profile, "G00 X200 Y100\nM02\n"));
+    c.start(0);
+    s.runUntil([] { return false; }, 0.8);
+    ASSERT_EQ(c.status().state, ControllerState::Running);
+    c.hold();
+    ASSERT_TRUE(s.runUntil([&] { return !c.motion().busy(); }, 3.0));
+    s.runUntil([] { return false; }, 0.2);
+    const double x = s.plant().positionMm(0), y = s.plant().positionMm(1);
+    std::printf("held at (%.3f, %.3f)\n", x, y);
+    EXPECT_NEAR(y, x / 2.0, 0.5);  // on the line y = x/2
+    EXPECT_GT(x, 20.0);
+    EXPECT_LT(x, 190.0);
+    EXPECT_EQ(s.plant().velocityMmS(0), 0.0);
+    c.resume();
+    ASSERT_TRUE(s.runUntil([&] { return c.status().programFinished; }, 10.0));
+    EXPECT_EQ(c.status().state, ControllerState::AutoIdle);
+    EXPECT_NEAR(s.plant().positionMm(0), 200.0, test::mmPerCount(profile, 0));
+    EXPECT_NEAR(s.plant().positionMm(1), 100.0, test::mmPerCount(profile, 1));
+}
+
+TEST(XyTableProgram, MotionlessLoopIsHeld) {
+    const MachineProfile profile = MachineProfile::xyDcTable();
+    XySessionMake made = makeXySession(profile, 1, {0, 0});
+    XySession& s = *made.session;
+    XyController& c = s.controller();
+    c.selectAutomatic();
+    c.loadProgram(compileFor(profile, "N10 G90\nN20 M03 X10\nM02\n"));
+    c.start(0);
+    s.runUntil([&] { return c.status().state == ControllerState::Paused; }, 1.0);
+    EXPECT_EQ(c.status().state, ControllerState::Paused);
+    EXPECT_TRUE(c.status().heldByController);
+    EXPECT_EQ(c.status().lastAlarm, AlarmCode::MotionlessLoop);
+}
+
+TEST(XyTableSoak, RandomProgramsStayOnTheLine) {
+    // Fixed seed: 100 programs of 3 to 6 random g00/g01 moves over the whole table.
+    const MachineProfile profile = MachineProfile::xyDcTable();
+    std::mt19937_64 rng(20261201);
+    std::uniform_real_distribution<double> coord(0.0, 300.0), feed(10.0, 100.0);
+    std::uniform_int_distribution<int> moves(3, 6), kind(0, 1);
+    double worstDev = 0.0, worstFinal = 0.0;
+    for (int prog = 0; prog < 100; ++prog) {
+        std::ostringstream text;
+        text.setf(std::ios::fixed);
+        text.precision(1);
+        const int n = moves(rng);
+        for (int i = 0; i < n; ++i) {
+            if (kind(rng))
+                text << "G01 X" << coord(rng) << " Y" << coord(rng) << " F" << feed(rng) << "\n";
+            else
+                text << "G00 X" << coord(rng) << " Y" << coord(rng) << "\n";
+        }
+        text << "M02\n";
+        auto program = compileFor(profile, text.str().c_str());
+        XySessionMake made = makeXySession(profile, static_cast<std::uint64_t>(prog) + 1, {0, 0});
+        XySession& s = *made.session;
+        XyController& c = s.controller();
+        c.selectAutomatic();
+        c.loadProgram(program);
+        c.start(0);
+        XyPoint from{0, 0};
+        std::int32_t block = -1;
+        double dev = 0.0;
+        bool alarm = false;
+        while (!c.status().programFinished && s.elapsedS() < 120.0) {
+            s.step();
+            c.drainEvents([&](const ControllerEvent& e) {
+                if (e.kind == EventKind::AlarmRaised) alarm = true;
+            });
+            const XyStatus& st = c.status();
+            if (st.blockIndex != block) {
+                if (block >= 0 && isMotion(program->blocks[static_cast<std::size_t>(block)].op))
+                    from = {program->blocks[static_cast<std::size_t>(block)].x,
+                            program->y[static_cast<std::size_t>(block)]};
+                block = st.blockIndex;
+            }
+            if (block < 0 || !isMotion(program->blocks[static_cast<std::size_t>(block)].op))
+                continue;
+            const auto b = static_cast<std::size_t>(block);
+            const double dx = program->blocks[b].x - from.x, dy = program->y[b] - from.y;
+            const double len = std::hypot(dx, dy);
+            if (len < 1e-9) continue;
+            const double px = s.plant().positionMm(0) - from.x,
+                         py = s.plant().positionMm(1) - from.y;
+            dev = std::max(dev, std::abs(dx * py - dy * px) / len);
+        }
+        ASSERT_TRUE(c.status().programFinished) << "program " << prog << "\n" << text.str();
+        ASSERT_FALSE(alarm) << "program " << prog << "\n" << text.str();
+        const std::size_t last = program->blocks.size() - 2;  // the block before M02
+        for (int k = 0; k < 2; ++k) {
+            const double target = k == 0 ? program->blocks[last].x : program->y[last];
+            const double err =
+                std::abs(s.plant().positionMm(k) - target) / test::mmPerCount(profile, k);
+            worstFinal = std::max(worstFinal, err);
+            EXPECT_LE(err, 1.0) << "program " << prog << " axis " << k;
+        }
+        worstDev = std::max(worstDev, dev);
+        EXPECT_LE(dev, 0.5) << "program " << prog << "\n" << text.str();
+    }
+    std::printf("soak: 100 programs, worst path deviation %.3f mm, worst final error %.2f counts\n",
+                worstDev, worstFinal);
+}
+
+}  // namespace
+}  // namespace trilho

@@ -1,0 +1,82 @@
+// The DC table's per-axis loop (seed 004's law, exactly, and the engineered one) and the
+// simulated DC axis it drives.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "core/control/dc_axis_loop.h"
+#include "hal/sim/sim_dc_axis.h"
+#include "hal/sim/sim_dc_table.h"
+
+namespace trilho {
+namespace {
+
+TEST(DcAxisLoop, ClassicIsTheSeedsDifferenceEquation) {
+    const DcTableParams t;
+    DcAxisLoop loop(t.x, t.pwmClampPercent, LoopLaw::Classic);
+    // e = 0.5 mm on X = pi / 2.12 rad; first period e_prev = 0.
+    const double e1 = std::numbers::pi / 2.12;
+    EXPECT_NEAR(loop.update(0.5, 0.0, 0.0, 0.0, 0.005), 100.0 * 0.198 * e1, 1e-9);
+    // Second period e = 0.25 mm: u = 100 (0.198 e - 0.179982 e_prev).
+    const double e2 = e1 / 2.0;
+    EXPECT_NEAR(loop.update(0.25, 0.0, 0.0, 0.0, 0.005), 100.0 * (0.198 * e2 - 0.179982 * e1),
+                1e-9);
+    // Clamped to the seed's 50 %, the sign (direction bit) kept.
+    EXPECT_EQ(loop.update(-10.0, 0.0, 0.0, 0.0, 0.005), -50.0);
+}
+
+TEST(DcAxisLoop, EngineeredFeedForwardAndAntiWindup) {
+    const DcTableParams t;
+    DcAxisLoop loop(t.y, t.pwmClampPercent, LoopLaw::Engineered);
+    // On the setpoint at 100 mm/s, no acceleration: feed-forward only (kff v + friction).
+    EXPECT_NEAR(loop.update(5.0, 100.0, 0.0, 5.0, 0.005),
+                t.y.engineered.kff * 100.0 + t.y.coulombPercent, 1e-9);
+    // A large error clamps; the integral does not wind meanwhile.
+    DcAxisLoop held(t.y, t.pwmClampPercent, LoopLaw::Engineered);
+    for (int i = 0; i < 1000; ++i)
+        EXPECT_EQ(held.update(50.0, 0.0, 0.0, 0.0, 0.005), 50.0);
+    // Back on the setpoint the output is only what the integral gathered before clamping.
+    EXPECT_LT(std::abs(held.update(0.0, 0.0, 0.0, 0.0, 0.005)), 1.0);
+    // In position the drive rests.
+    held.setPhase(DcAxisLoop::Phase::InPosition);
+    EXPECT_EQ(held.update(0.01, 0.0, 0.0, 0.0, 0.005), 0.0);
+}
+
+TEST(SimDcAxis, SteadySpeedAndEncoderQuantisation) {
+    DcAxisParams p;  // 400 mm/s at 100 %, 3 % friction, 2 mm per turn, 0.314 rad per count
+    SimDcAxis axis(p);
+    axis.setDrive(40.0);
+    axis.step(1.0);  // 33 time constants
+    EXPECT_NEAR(axis.state().velocityMmS, (40.0 - 3.0) * 4.0, 1e-6);
+    // 2 x 0.314 / 2 pi = 0.09995 mm per count.
+    EXPECT_NEAR(axis.mmPerCount(), 2.0 * 0.314 / (2.0 * std::numbers::pi), 1e-12);
+    axis.placeAt(10.0);
+    EXPECT_EQ(axis.encoder(), static_cast<std::uint16_t>(std::floor(10.0 / axis.mmPerCount())));
+    axis.placeAt(-0.01);
+    EXPECT_EQ(axis.encoder(), 0xffff);  // 16 bits, wrapping below zero
+    // Below the friction it does not move.
+    axis.placeAt(0.0);
+    axis.setDrive(2.5);
+    axis.step(0.5);
+    EXPECT_EQ(axis.state().positionMm, 0.0);
+}
+
+TEST(SimDcTable, OverCurrentOfOneAxisStopsBothChannels) {
+    SimDcTable table;
+    table.writePwm(0, 100, false);
+    table.writePwm(1, 100, true);
+    table.setJammed(0, true);  // stalled at 100/247 = 40 %: under the 45 % trip
+    table.step(0.1);
+    EXPECT_FALSE(table.readOverCurrent(0));
+    table.writePwm(0, 200, false);  // 81 % into a stalled motor
+    table.step(0.1);
+    EXPECT_TRUE(table.readOverCurrent(0));
+    EXPECT_FALSE(table.pwmRunning());
+    EXPECT_EQ(table.axis(1).state().drivePercent, 0.0);
+    table.restartPwm();
+    EXPECT_FALSE(table.readOverCurrent(0));
+}
+
+}  // namespace
+}  // namespace trilho
