@@ -19,6 +19,7 @@ XyController::XyController(const MachineProfile& profile, std::unique_ptr<XyMoti
 const XyStatus& XyController::status() const {
     status_.sample = motion_->sample();
     status_.homed = motion_->homed();
+    status_.motionBusy = motion_->busy();
     return status_;
 }
 

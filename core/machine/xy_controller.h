@@ -40,6 +40,7 @@ struct XyStatus {
     XySample sample;
     std::uint64_t lastCommandSeq = 0;
     bool heldByController = false;  ///< a Hold the controller made (a motionless loop)
+    bool motionBusy = false;        ///< a move or homing is under way (also a manual one)
 };
 
 class XyController {

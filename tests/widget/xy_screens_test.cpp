@@ -104,12 +104,12 @@ class XyScreensTest : public QObject {
         QCOMPARE(s.activeAlarms, 0u);
         // The program's last move ends where the planned path ends.
         const PathSegment& last = w.workArea()->plannedPath().back();
-        QVERIFY(std::abs(s.sample.x.positionMm - last.to.x()) < 0.05);
-        QVERIFY(std::abs(s.sample.y.positionMm - last.to.y()) < 0.05);
+        QVERIFY(std::abs(s.sample.x.positionMm - last.to.x()) < 0.11);  // one count
+        QVERIFY(std::abs(s.sample.y.positionMm - last.to.y()) < 0.11);
         QVERIFY(w.workArea()->followedCount() > 20);
         QVERIFY(w.plots()->pointCount() > 20);
         QVERIFY(w.history()->count() > 3);
-        QVERIFY(w.positionLabel()->text().contains(QString::number(last.to.x(), 'f', 2)));
+        QVERIFY(w.positionLabel()->text().contains(QString::number(s.sample.x.positionMm, 'f', 2)));
     }
 
     void dcTableFrontPanelSendMovesToTheTypedSetPoint() {
@@ -133,8 +133,8 @@ class XyScreensTest : public QObject {
             },
             20.0));
         const XyStatus s = link->status();
-        QVERIFY(std::abs(s.sample.x.positionMm - 100.0) < 0.05);
-        QVERIFY(std::abs(s.sample.y.positionMm - 50.0) < 0.05);
+        QVERIFY(std::abs(s.sample.x.positionMm - 100.0) < 0.11);
+        QVERIFY(std::abs(s.sample.y.positionMm - 50.0) < 0.11);
     }
 
     void plotterJogAndEStopKey() {
@@ -153,8 +153,10 @@ class XyScreensTest : public QObject {
         link->advance(0.5);
         QVERIFY(std::abs(link->status().sample.x.positionMm - (x0 + 10.0)) < 0.1 + 1e-9);
         // Pause/Break is the E-stop key wherever the focus is.
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
         panel->jogStepBox()->setFocus();
-        QTest::keyClick(&w, Qt::Key_Pause);
+        QTest::keyClick(panel->jogStepBox(), Qt::Key_Pause);
         link->advance(0.1);
         QCOMPARE(link->status().state, ControllerState::EStop);
         QVERIFY(w.stateLabel()->text().contains(QStringLiteral("E-STOP")));

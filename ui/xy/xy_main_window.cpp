@@ -241,6 +241,7 @@ bool XyMainWindow::selectProgram(const QString& path) {
         program_.reset();
         view_->setPlannedPath({});
         retranslate();
+        onUpdate({}, {}, last_);
         return false;
     }
     program_ = program;
@@ -256,6 +257,7 @@ bool XyMainWindow::selectProgram(const QString& path) {
     settings_.setValue(QStringLiteral("xyLastProgram"), path);
     link_.post([program](XyController& c) { c.loadProgram(program); });
     retranslate();
+    onUpdate({}, {}, last_);  // the run controls follow the program just loaded
     return true;
 }
 
@@ -319,7 +321,8 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
                         ? tr("Block N%1, line %2").arg(status.blockN).arg(status.blockLine)
                         : QString());
     const bool idle =
-        status.state == ControllerState::Manual || status.state == ControllerState::AutoIdle;
+        (status.state == ControllerState::Manual || status.state == ControllerState::AutoIdle) &&
+        !status.motionBusy;
     start_->setEnabled(program_ != nullptr && idle);
     hold_->setEnabled(status.state == ControllerState::Running ||
                       status.state == ControllerState::Waiting);
@@ -329,10 +332,11 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
     ack_->setEnabled(!latched && alarmed);
     automatic_->setEnabled(idle && !status.automatic);
     if (table_) {
-        table_->setRunning(moving(status.state));
-        table_->setSendEnabled(status.state == ControllerState::Manual);
+        table_->setRunning(moving(status.state) || status.motionBusy);
+        table_->setSendEnabled(status.state == ControllerState::Manual && !status.motionBusy);
     }
-    if (plotter_) plotter_->setControlsEnabled(status.state == ControllerState::Manual);
+    if (plotter_)
+        plotter_->setControlsEnabled(status.state == ControllerState::Manual && !status.motionBusy);
 }
 
 void XyMainWindow::closeEvent(QCloseEvent* e) {
