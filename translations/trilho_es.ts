@@ -259,6 +259,26 @@
         <source>Homing failed: the origin sensor was not found. Check the sensor and its cable, acknowledge, then home again.</source>
         <translation>La referencia falló: no se encontró el sensor de origen. Revise el sensor y su cable, reconozca y luego vuelva a referenciar.</translation>
     </message>
+    <message>
+        <source>%1: Travel to x=%2 y=%4 at maximum speed.</source>
+        <translation>%1: Desplazamiento a x=%2 y=%4 a velocidad máxima.</translation>
+    </message>
+    <message>
+        <source>%1: Line to x=%2 y=%4 at %3% of maximum speed.</source>
+        <translation>%1: Línea hasta x=%2 y=%4 al %3% de la velocidad máxima.</translation>
+    </message>
+    <message>
+        <source>Homing: going to the origin.</source>
+        <translation>Referencia: yendo al origen.</translation>
+    </message>
+    <message>
+        <source>Homing done: at the origin.</source>
+        <translation>Referencia terminada: en el origen.</translation>
+    </message>
+    <message>
+        <source>%1: Return to the machine&apos;s absolute zero.</source>
+        <translation>%1: Regreso al cero absoluto de la máquina.</translation>
+    </message>
 </context>
 <context>
     <name>Diagnostic</name>
@@ -413,6 +433,49 @@
     <message>
         <source>... and %1 more diagnostic(s) not listed</source>
         <translation>... y %1 diagnóstico(s) más no listado(s)</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::DcTablePanel</name>
+    <message>
+        <source>Set point</source>
+        <translation>Punto de consigna</translation>
+    </message>
+    <message>
+        <source>X set point</source>
+        <translation>Consigna X</translation>
+    </message>
+    <message>
+        <source>Y set point</source>
+        <translation>Consigna Y</translation>
+    </message>
+    <message>
+        <source>&amp;Send</source>
+        <translation>&amp;Enviar</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Ejecutando</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Detenido</translation>
+    </message>
+    <message>
+        <source>Serial port</source>
+        <translation>Puerto serie</translation>
+    </message>
+    <message>
+        <source>The table runs on the simulated machine; the serial link to the ATmega128 board comes in a later version.</source>
+        <translation>La mesa funciona en la máquina simulada; el enlace serie con la placa ATmega128 llegará en una versión posterior.</translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation>Puerto</translation>
+    </message>
+    <message>
+        <source>Bit rate</source>
+        <translation>Velocidad (bit/s)</translation>
     </message>
 </context>
 <context>
@@ -839,6 +902,45 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::PlotterPanel</name>
+    <message>
+        <source>Plotter</source>
+        <translation>Plotter</translation>
+    </message>
+    <message>
+        <source>Origin</source>
+        <translation>Origen</translation>
+    </message>
+    <message>
+        <source>Jog up (+y)</source>
+        <translation>Mover hacia arriba (+y)</translation>
+    </message>
+    <message>
+        <source>Jog down (-y)</source>
+        <translation>Mover hacia abajo (-y)</translation>
+    </message>
+    <message>
+        <source>Jog left (-x)</source>
+        <translation>Mover a la izquierda (-x)</translation>
+    </message>
+    <message>
+        <source>Jog right (+x)</source>
+        <translation>Mover a la derecha (+x)</translation>
+    </message>
+    <message>
+        <source>Jog step</source>
+        <translation>Paso del movimiento</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Velocidad</translation>
+    </message>
+    <message>
+        <source>Object: %1 points (at most 300 per object)</source>
+        <translation>Objeto: %1 puntos (como máximo 300 por objeto)</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::ProgramPanel</name>
     <message>
         <source>Save</source>
@@ -955,6 +1057,168 @@
     <message>
         <source>OK</source>
         <translation>OK</translation>
+    </message>
+    <message>
+        <source>&amp;Machine:</source>
+        <translation>&amp;Máquina:</translation>
+    </message>
+    <message>
+        <source>Robot rail (1996)</source>
+        <translation>Riel del robot (1996)</translation>
+    </message>
+    <message>
+        <source>DC-motor XY table</source>
+        <translation>Mesa XY con motores CC</translation>
+    </message>
+    <message>
+        <source>Stepper XY plotter</source>
+        <translation>Plotter XY con motores paso a paso</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::XyMainWindow</name>
+    <message>
+        <source>MANUAL</source>
+        <translation>MANUAL</translation>
+    </message>
+    <message>
+        <source>AUTOMATIC - ready</source>
+        <translation>AUTOMÁTICO - listo</translation>
+    </message>
+    <message>
+        <source>HOMING</source>
+        <translation>REFERENCIANDO</translation>
+    </message>
+    <message>
+        <source>RUNNING</source>
+        <translation>EJECUTANDO</translation>
+    </message>
+    <message>
+        <source>DWELL</source>
+        <translation>ESPERA</translation>
+    </message>
+    <message>
+        <source>PAUSED</source>
+        <translation>PAUSADO</translation>
+    </message>
+    <message>
+        <source>ALARM</source>
+        <translation>ALARMA</translation>
+    </message>
+    <message>
+        <source>E-STOP LATCHED</source>
+        <translation>EMERGENCIA ACTIVADA</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Archivo</translation>
+    </message>
+    <message>
+        <source>&amp;Open program...</source>
+        <translation>&amp;Abrir programa...</translation>
+    </message>
+    <message>
+        <source>E&amp;xit</source>
+        <translation>Sa&amp;lir</translation>
+    </message>
+    <message>
+        <source>Open program</source>
+        <translation>Abrir programa</translation>
+    </message>
+    <message>
+        <source>G-code programs (*.G *.g)</source>
+        <translation>Programas G (*.G *.g)</translation>
+    </message>
+    <message>
+        <source>Block N%1, line %2</source>
+        <translation>Bloque N%1, línea %2</translation>
+    </message>
+    <message>
+        <source>Line %1</source>
+        <translation>Línea %1</translation>
+    </message>
+    <message>
+        <source>trilho - %1</source>
+        <translation>trilho - %1</translation>
+    </message>
+    <message>
+        <source>Open...</source>
+        <translation>Abrir...</translation>
+    </message>
+    <message>
+        <source>Automatic (home)</source>
+        <translation>Automático (referencia)</translation>
+    </message>
+    <message>
+        <source>Cycle start (F5)</source>
+        <translation>Iniciar ciclo (F5)</translation>
+    </message>
+    <message>
+        <source>Hold (F6)</source>
+        <translation>Suspender (F6)</translation>
+    </message>
+    <message>
+        <source>Resume (F7)</source>
+        <translation>Reanudar (F7)</translation>
+    </message>
+    <message>
+        <source>Stop (F8)</source>
+        <translation>Detener (F8)</translation>
+    </message>
+    <message>
+        <source>E-STOP (Pause)</source>
+        <translation>EMERGENCIA (Pause)</translation>
+    </message>
+    <message>
+        <source>Reset E-stop</source>
+        <translation>Liberar emergencia</translation>
+    </message>
+    <message>
+        <source>Acknowledge</source>
+        <translation>Reconocer</translation>
+    </message>
+    <message>
+        <source>Program: %1</source>
+        <translation>Programa: %1</translation>
+    </message>
+    <message>
+        <source>No program loaded</source>
+        <translation>Ningún programa cargado</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::XyPlots</name>
+    <message>
+        <source>x set point</source>
+        <translation>consigna x</translation>
+    </message>
+    <message>
+        <source>x position</source>
+        <translation>posición x</translation>
+    </message>
+    <message>
+        <source>y set point</source>
+        <translation>consigna y</translation>
+    </message>
+    <message>
+        <source>y position</source>
+        <translation>posición y</translation>
+    </message>
+    <message>
+        <source>x speed</source>
+        <translation>velocidad x</translation>
+    </message>
+    <message>
+        <source>y speed</source>
+        <translation>velocidad y</translation>
+    </message>
+    <message>
+        <source>position (mm)</source>
+        <translation>posición (mm)</translation>
+    </message>
+    <message>
+        <source>speed (mm/s)</source>
+        <translation>velocidad (mm/s)</translation>
     </message>
 </context>
 </TS>

@@ -259,6 +259,26 @@
         <source>Homing failed: the origin sensor was not found. Check the sensor and its cable, acknowledge, then home again.</source>
         <translation>Referência falhou: o sensor de origem não foi encontrado. Verifique o sensor e o seu cabo, reconheça e depois faça a referência de novo.</translation>
     </message>
+    <message>
+        <source>%1: Travel to x=%2 y=%4 at maximum speed.</source>
+        <translation>%1: Deslocamento para x=%2 y=%4 com velocidade máxima.</translation>
+    </message>
+    <message>
+        <source>%1: Line to x=%2 y=%4 at %3% of maximum speed.</source>
+        <translation>%1: Linha até x=%2 y=%4 com %3% da velocidade máxima.</translation>
+    </message>
+    <message>
+        <source>Homing: going to the origin.</source>
+        <translation>Referência: indo para a origem.</translation>
+    </message>
+    <message>
+        <source>Homing done: at the origin.</source>
+        <translation>Referência concluída: na origem.</translation>
+    </message>
+    <message>
+        <source>%1: Return to the machine&apos;s absolute zero.</source>
+        <translation>%1: Retorno ao zero absoluto da máquina.</translation>
+    </message>
 </context>
 <context>
     <name>Diagnostic</name>
@@ -413,6 +433,49 @@
     <message>
         <source>... and %1 more diagnostic(s) not listed</source>
         <translation>... e mais %1 diagnóstico(s) não listado(s)</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::DcTablePanel</name>
+    <message>
+        <source>Set point</source>
+        <translation>Ponto de ajuste</translation>
+    </message>
+    <message>
+        <source>X set point</source>
+        <translation>Ponto de ajuste X</translation>
+    </message>
+    <message>
+        <source>Y set point</source>
+        <translation>Ponto de ajuste Y</translation>
+    </message>
+    <message>
+        <source>&amp;Send</source>
+        <translation>&amp;Enviar</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Executando</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Parado</translation>
+    </message>
+    <message>
+        <source>Serial port</source>
+        <translation>Porta serial</translation>
+    </message>
+    <message>
+        <source>The table runs on the simulated machine; the serial link to the ATmega128 board comes in a later version.</source>
+        <translation>A mesa roda na máquina simulada; a ligação serial com a placa ATmega128 vem numa versão posterior.</translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation>Porta</translation>
+    </message>
+    <message>
+        <source>Bit rate</source>
+        <translation>Velocidade (bit/s)</translation>
     </message>
 </context>
 <context>
@@ -839,6 +902,45 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::PlotterPanel</name>
+    <message>
+        <source>Plotter</source>
+        <translation>Plotter</translation>
+    </message>
+    <message>
+        <source>Origin</source>
+        <translation>Origem</translation>
+    </message>
+    <message>
+        <source>Jog up (+y)</source>
+        <translation>Mover para cima (+y)</translation>
+    </message>
+    <message>
+        <source>Jog down (-y)</source>
+        <translation>Mover para baixo (-y)</translation>
+    </message>
+    <message>
+        <source>Jog left (-x)</source>
+        <translation>Mover para a esquerda (-x)</translation>
+    </message>
+    <message>
+        <source>Jog right (+x)</source>
+        <translation>Mover para a direita (+x)</translation>
+    </message>
+    <message>
+        <source>Jog step</source>
+        <translation>Passo do movimento</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Velocidade</translation>
+    </message>
+    <message>
+        <source>Object: %1 points (at most 300 per object)</source>
+        <translation>Objeto: %1 pontos (no máximo 300 por objeto)</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::ProgramPanel</name>
     <message>
         <source>Save</source>
@@ -955,6 +1057,168 @@
     <message>
         <source>OK</source>
         <translation>OK</translation>
+    </message>
+    <message>
+        <source>&amp;Machine:</source>
+        <translation>&amp;Máquina:</translation>
+    </message>
+    <message>
+        <source>Robot rail (1996)</source>
+        <translation>Trilho do robô (1996)</translation>
+    </message>
+    <message>
+        <source>DC-motor XY table</source>
+        <translation>Mesa XY com motores CC</translation>
+    </message>
+    <message>
+        <source>Stepper XY plotter</source>
+        <translation>Plotter XY com motores de passo</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::XyMainWindow</name>
+    <message>
+        <source>MANUAL</source>
+        <translation>MANUAL</translation>
+    </message>
+    <message>
+        <source>AUTOMATIC - ready</source>
+        <translation>AUTOMÁTICO - pronto</translation>
+    </message>
+    <message>
+        <source>HOMING</source>
+        <translation>REFERENCIANDO</translation>
+    </message>
+    <message>
+        <source>RUNNING</source>
+        <translation>EXECUTANDO</translation>
+    </message>
+    <message>
+        <source>DWELL</source>
+        <translation>ESPERA</translation>
+    </message>
+    <message>
+        <source>PAUSED</source>
+        <translation>PAUSADO</translation>
+    </message>
+    <message>
+        <source>ALARM</source>
+        <translation>ALARME</translation>
+    </message>
+    <message>
+        <source>E-STOP LATCHED</source>
+        <translation>EMERGÊNCIA ACIONADA</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Arquivo</translation>
+    </message>
+    <message>
+        <source>&amp;Open program...</source>
+        <translation>&amp;Abrir programa...</translation>
+    </message>
+    <message>
+        <source>E&amp;xit</source>
+        <translation>Sai&amp;r</translation>
+    </message>
+    <message>
+        <source>Open program</source>
+        <translation>Abrir programa</translation>
+    </message>
+    <message>
+        <source>G-code programs (*.G *.g)</source>
+        <translation>Programas G (*.G *.g)</translation>
+    </message>
+    <message>
+        <source>Block N%1, line %2</source>
+        <translation>Bloco N%1, linha %2</translation>
+    </message>
+    <message>
+        <source>Line %1</source>
+        <translation>Linha %1</translation>
+    </message>
+    <message>
+        <source>trilho - %1</source>
+        <translation>trilho - %1</translation>
+    </message>
+    <message>
+        <source>Open...</source>
+        <translation>Abrir...</translation>
+    </message>
+    <message>
+        <source>Automatic (home)</source>
+        <translation>Automático (referência)</translation>
+    </message>
+    <message>
+        <source>Cycle start (F5)</source>
+        <translation>Iniciar ciclo (F5)</translation>
+    </message>
+    <message>
+        <source>Hold (F6)</source>
+        <translation>Suspender (F6)</translation>
+    </message>
+    <message>
+        <source>Resume (F7)</source>
+        <translation>Retomar (F7)</translation>
+    </message>
+    <message>
+        <source>Stop (F8)</source>
+        <translation>Parar (F8)</translation>
+    </message>
+    <message>
+        <source>E-STOP (Pause)</source>
+        <translation>EMERGÊNCIA (Pause)</translation>
+    </message>
+    <message>
+        <source>Reset E-stop</source>
+        <translation>Liberar emergência</translation>
+    </message>
+    <message>
+        <source>Acknowledge</source>
+        <translation>Reconhecer</translation>
+    </message>
+    <message>
+        <source>Program: %1</source>
+        <translation>Programa: %1</translation>
+    </message>
+    <message>
+        <source>No program loaded</source>
+        <translation>Nenhum programa carregado</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::XyPlots</name>
+    <message>
+        <source>x set point</source>
+        <translation>ajuste x</translation>
+    </message>
+    <message>
+        <source>x position</source>
+        <translation>posição x</translation>
+    </message>
+    <message>
+        <source>y set point</source>
+        <translation>ajuste y</translation>
+    </message>
+    <message>
+        <source>y position</source>
+        <translation>posição y</translation>
+    </message>
+    <message>
+        <source>x speed</source>
+        <translation>velocidade x</translation>
+    </message>
+    <message>
+        <source>y speed</source>
+        <translation>velocidade y</translation>
+    </message>
+    <message>
+        <source>position (mm)</source>
+        <translation>posição (mm)</translation>
+    </message>
+    <message>
+        <source>speed (mm/s)</source>
+        <translation>velocidade (mm/s)</translation>
     </message>
 </context>
 </TS>

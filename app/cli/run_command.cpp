@@ -23,9 +23,9 @@
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
 #include "app/cli/diagnostics_text.h"
-#include "app/common/data_paths.h"
 #include "app/cli/run_support.h"
 #include "app/cli/xy_run.h"
+#include "app/common/data_paths.h"
 #include "app/session/sim_session.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
@@ -382,6 +382,7 @@ int runCommand(const QStringList& args) {
     if (!trace.open(options.tracePath, xy ? kXyTraceHeader : kRailTraceHeader, &traceError))
         return usage(traceError);
     report.streamText = !options.json;
+    report.xy = xy;
     if (xy) return runXyProgram(profile, program, options, report, trace);
 
     ControllerStatus last;

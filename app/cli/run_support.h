@@ -17,6 +17,7 @@
 #include "app/cli/cli_output.h"
 #include "core/machine/controller_event.h"
 #include "core/machine/event_text.h"
+#include "core/machine/xy_event_text.h"
 #include "hal/sim/fault_schedule.h"
 
 namespace trilho::cli {
@@ -45,8 +46,9 @@ struct Report {
     qint64 omitted = 0;
     QJsonArray alarms;
     bool offTarget = false;  ///< warning 13: the program ended away from its last target
+    bool xy = false;         ///< an XY machine: its moves name x and y (xyHistoryLine)
     void add(const ControllerEvent& e) {
-        const QString line = historyLine(e);
+        const QString line = xy ? xyHistoryLine(e) : historyLine(e);
         if (streamText) {
             out(line + QLatin1Char('\n'));
         } else {

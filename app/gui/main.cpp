@@ -1,7 +1,7 @@
 // trilho: the operator's screens on the simulated rail.
 //   trilho [--lang en|pt_BR|es] [--theme classic|system] [--program FILE.G] [--no-start-screen]
 //          [--settings FILE.ini] [--size WxH] [--automatic] [--run] [--screenshot FILE.png]
-//          [--screenshot-after SECONDS] [--quit-after SECONDS]
+//          [--screenshot-after SECONDS] [--quit-after SECONDS] [--machine PROFILE]
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
@@ -19,6 +19,8 @@
 #include "ui/main_window.h"
 #include "ui/start_screen.h"
 #include "ui/theme.h"
+#include "ui/xy/xy_main_window.h"
+#include "ui/xy/xy_session_runnable.h"
 
 using namespace trilho;
 
@@ -63,8 +65,13 @@ int main(int argc, char* argv[]) {
     const QCommandLineOption quitOpt(QStringLiteral("quit-after"),
                                      QStringLiteral("Quit after this many seconds."),
                                      QStringLiteral("S"));
+    const QCommandLineOption machineOpt(
+        QStringLiteral("machine"),
+        QStringLiteral("Machine profile: a file, or a shipped one by name (rail, xy_dc_table, "
+                       "xy_plotter). Remembered."),
+        QStringLiteral("PROFILE"));
     parser.addOptions({langOpt, themeOpt, programOpt, noStartOpt, settingsOpt, sizeOpt, autoOpt,
-                       runOpt, shotOpt, shotAfterOpt, quitOpt});
+                       runOpt, shotOpt, shotAfterOpt, quitOpt, machineOpt});
     parser.process(app);
 
     std::unique_ptr<QSettings> settings =
@@ -89,78 +96,160 @@ int main(int argc, char* argv[]) {
             : settings->value(QStringLiteral("theme"), QStringLiteral("classic")).toString());
     ui::applyTheme(app, theme);
 
-    // The rail's profile from the data folder (installed or the source tree).
-    const ProfileLoad profile = loadNamedMachineProfile(QString());
+    // The machine: --machine (a profile file or a shipped name), else the last one chosen, else
+    // the rail; the start screen may change it. Each machine has its own main screen.
+    QString machineName = parser.isSet(machineOpt)
+                              ? parser.value(machineOpt)
+                              : settings->value(QStringLiteral("machine")).toString();
+    ProfileLoad profile = loadNamedMachineProfile(machineName);
+    if (!profile.profile && !parser.isSet(machineOpt)) {
+        // A remembered profile that has gone: back to the rail, and say so.
+        std::fprintf(stderr, "trilho: %s\n", qPrintable(profile.error));
+        machineName.clear();
+        profile = loadNamedMachineProfile(machineName);
+    }
     if (!profile.profile) {
         std::fprintf(stderr, "trilho: %s\n", qPrintable(profile.error));
         return 2;
     }
     if (!profile.error.isEmpty()) std::fprintf(stderr, "trilho: %s\n", qPrintable(profile.error));
-    ui::MachineLink link(*profile.profile);
-    const QString dataDir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
-    QDir().mkpath(dataDir);
-    QString journalError;
-    if (!link.openJournal(dataDir + QStringLiteral("/history.log"), &journalError))
-        std::fprintf(stderr, "trilho: %s (history is not kept)\n", qPrintable(journalError));
 
-    ui::MainWindow window(link, *settings);
-    window.setLanguage(lang);
-    window.setTheme(theme);
-    if (!journalError.isEmpty()) window.reportJournalProblem(journalError);  // not only stderr
-    if (parser.isSet(programOpt) && !window.selectProgram(parser.value(programOpt))) {
-        std::fprintf(stderr, "trilho: cannot open program '%s'\n",
-                     qPrintable(parser.value(programOpt)));
-        return 2;
-    }
-    if (parser.isSet(sizeOpt)) {
-        const QStringList wh = parser.value(sizeOpt).split(QLatin1Char('x'));
-        if (wh.size() == 2) window.resize(wh[0].toInt(), wh[1].toInt());
-    }
+    // What is open: the rail's link and replicated screen, or an XY machine's.
+    std::unique_ptr<ui::MachineLink> railLink;
+    std::unique_ptr<ui::MainWindow> railWindow;
+    std::unique_ptr<ui::XyLink> xyLink;
+    std::unique_ptr<ui::XyMainWindow> xyWindow;
+    QMainWindow* window = nullptr;
+
+    auto openMachine = [&](const MachineProfile& machine) -> bool {
+        if (machine.kind == MachineKind::Rail) {
+            railLink = std::make_unique<ui::MachineLink>(machine);
+            const QString dataDir =
+                QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
+            QDir().mkpath(dataDir);
+            QString journalError;
+            if (!railLink->openJournal(dataDir + QStringLiteral("/history.log"), &journalError))
+                std::fprintf(stderr, "trilho: %s (history is not kept)\n",
+                             qPrintable(journalError));
+            railWindow = std::make_unique<ui::MainWindow>(*railLink, *settings);
+            railWindow->setLanguage(lang);
+            railWindow->setTheme(theme);
+            if (!journalError.isEmpty()) railWindow->reportJournalProblem(journalError);
+            if (parser.isSet(programOpt) && !railWindow->selectProgram(parser.value(programOpt))) {
+                std::fprintf(stderr, "trilho: cannot open program '%s'\n",
+                             qPrintable(parser.value(programOpt)));
+                return false;
+            }
+            window = railWindow.get();
+        } else {
+            XySessionMake made = makeXySession(machine, 1);
+            if (!made.session) {
+                std::fprintf(stderr, "trilho: %s\n", made.error.c_str());
+                return false;
+            }
+            xyLink = std::make_unique<ui::XyLink>(
+                std::make_unique<ui::XySessionRunnable>(std::move(made.session)), true);
+            xyWindow = std::make_unique<ui::XyMainWindow>(*xyLink, *settings);
+            if (parser.isSet(programOpt) && !xyWindow->selectProgram(parser.value(programOpt))) {
+                std::fprintf(stderr, "trilho: cannot open program '%s'\n",
+                             qPrintable(parser.value(programOpt)));
+                return false;
+            }
+            window = xyWindow.get();
+        }
+        if (parser.isSet(sizeOpt)) {
+            const QStringList wh = parser.value(sizeOpt).split(QLatin1Char('x'));
+            if (wh.size() == 2) window->resize(wh[0].toInt(), wh[1].toInt());
+        }
+        return true;
+    };
 
     auto showMain = [&] {
         if (parser.isSet(sizeOpt))
-            window.show();
+            window->show();
         else
-            window.showMaximized();  // the VB forms were maximized
-        QTimer::singleShot(0, &window, [&] {
+            window->showMaximized();  // the VB forms were maximized
+        QTimer::singleShot(0, window, [&] {
             // Launch to a usable main screen, for the closing note's figures.
             if (qEnvironmentVariableIsSet("TRILHO_REPORT_STARTUP"))
                 std::fprintf(stderr, "trilho: main screen shown %lld ms after launch\n",
                              static_cast<long long>(launch.elapsed()));
         });
+        if (xyWindow) {
+            if (parser.isSet(runOpt))
+                xyWindow->startProgram();  // Automatic homes first, then runs
+            else if (parser.isSet(autoOpt))
+                xyLink->post([](XyController& c) { c.selectAutomatic(); });
+            return;
+        }
+        ui::MachineLink& link = *railLink;
         if (parser.isSet(autoOpt) || parser.isSet(runOpt)) link.selectAutomatic();
         if (parser.isSet(runOpt)) {
-            auto* waiter = new QTimer(&window);
+            auto* waiter = new QTimer(window);
             waiter->setInterval(50);
-            QObject::connect(waiter, &QTimer::timeout, &window, [&, waiter] {
-                if (link.status().homed && link.status().state == ControllerState::AutoIdle) {
+            QObject::connect(waiter, &QTimer::timeout, window, [&, waiter] {
+                if (railLink->status().homed &&
+                    railLink->status().state == ControllerState::AutoIdle) {
                     waiter->stop();
-                    window.executeSelected(0);
+                    railWindow->executeSelected(0);
                 }
             });
             waiter->start();
         }
     };
-    ui::StartScreen start;
-    if (parser.isSet(noStartOpt) || parser.isSet(shotOpt)) {
-        showMain();
-    } else {
-        QObject::connect(&start, &QDialog::accepted, &window, showMain);
-        QObject::connect(&start, &QDialog::rejected, &app, &QApplication::quit);
-        start.showMaximized();
-    }
-    if (parser.isSet(shotOpt)) {
-        const int ms = static_cast<int>(parser.value(shotAfterOpt).toDouble() * 1000);
-        QTimer::singleShot(ms, &window, [&] {
-            const bool ok = window.grab().save(parser.value(shotOpt));
-            if (!ok)
-                std::fprintf(stderr, "trilho: cannot write %s\n",
-                             qPrintable(parser.value(shotOpt)));
-            app.exit(ok ? 0 : 1);
-        });
-    }
+    auto armExit = [&] {
+        if (parser.isSet(shotOpt)) {
+            const int ms = static_cast<int>(parser.value(shotAfterOpt).toDouble() * 1000);
+            QTimer::singleShot(ms, window, [&] {
+                const bool ok = window->grab().save(parser.value(shotOpt));
+                if (!ok)
+                    std::fprintf(stderr, "trilho: cannot write %s\n",
+                                 qPrintable(parser.value(shotOpt)));
+                app.exit(ok ? 0 : 1);
+            });
+        }
+    };
     if (parser.isSet(quitOpt))
         QTimer::singleShot(static_cast<int>(parser.value(quitOpt).toDouble() * 1000), &app,
                            &QApplication::quit);
-    return app.exec();
+
+    ui::StartScreen start;
+    if (parser.isSet(noStartOpt) || parser.isSet(shotOpt)) {
+        if (!openMachine(*profile.profile)) return 2;
+        showMain();
+        armExit();
+    } else {
+        start.setMachine(profile.profile->kind);
+        QObject::connect(&start, &QDialog::accepted, &app, [&] {
+            MachineProfile chosen = *profile.profile;
+            if (start.machine() != chosen.kind) {
+                // Another machine chosen: its shipped profile, remembered for the next time.
+                const QString shipped =
+                    start.machine() == MachineKind::DcTable   ? QStringLiteral("xy_dc_table")
+                    : start.machine() == MachineKind::Plotter ? QStringLiteral("xy_plotter")
+                                                              : QStringLiteral("rail");
+                ProfileLoad load = loadNamedMachineProfile(shipped);
+                if (load.profile) {
+                    chosen = *load.profile;
+                    machineName = shipped;
+                } else {
+                    QMessageBox::warning(nullptr, QStringLiteral("trilho"), load.error);
+                }
+            }
+            settings->setValue(QStringLiteral("machine"), machineName);
+            if (!openMachine(chosen)) {
+                app.exit(2);
+                return;
+            }
+            showMain();
+        });
+        QObject::connect(&start, &QDialog::rejected, &app, &QApplication::quit);
+        start.showMaximized();
+    }
+    if (parser.isSet(machineOpt)) settings->setValue(QStringLiteral("machine"), machineName);
+    const int rc = app.exec();
+    // The screens go before their links (the windows hold references to them).
+    railWindow.reset();
+    xyWindow.reset();
+    return rc;
 }

@@ -169,11 +169,11 @@ void XyController::beginBlock() {
     status_.modal.apply(b);
     switch (b.op) {
         case Op::Rapid:
-            post(EventKind::Rapid, b.n, b.x);
+            post(EventKind::Rapid, b.n, b.x, 0.0, AlarmCode::None, yOf(pc_));
             moveProgram({b.x, yOf(pc_)}, XyMove::Travel, 1.0);
             break;
         case Op::Linear:
-            post(EventKind::Linear, b.n, b.x, b.feed);
+            post(EventKind::Linear, b.n, b.x, b.feed, AlarmCode::None, yOf(pc_));
             moveProgram({b.x, yOf(pc_)}, XyMove::Draw, b.feed / 100.0);
             break;
         case Op::Dwell:

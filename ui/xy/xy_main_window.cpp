@@ -22,6 +22,7 @@
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/source_file.h"
 #include "core/machine/event_text.h"
+#include "core/machine/xy_event_text.h"
 #include "ui/xy/dc_table_panel.h"
 #include "ui/xy/plotter_panel.h"
 #include "ui/xy/work_area_view.h"
@@ -299,7 +300,7 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
     }
     for (const ControllerEvent& e : events) {
         const bool alarm = e.kind == EventKind::AlarmRaised;
-        const QString line = historyLine(e);
+        const QString line = xyHistoryLine(e);
         if (!line.isEmpty()) addHistory(line, alarm);
     }
     last_ = status;
@@ -317,9 +318,10 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
                                              : palette().color(QPalette::Window));
     pal.setColor(QPalette::WindowText, latched ? Qt::white : palette().color(QPalette::WindowText));
     state_->setPalette(pal);
-    block_->setText(status.blockN >= 0 || status.blockLine > 0
+    block_->setText(status.blockN >= 0
                         ? tr("Block N%1, line %2").arg(status.blockN).arg(status.blockLine)
-                        : QString());
+                    : status.blockLine > 0 ? tr("Line %1").arg(status.blockLine)
+                                           : QString());
     const bool idle =
         (status.state == ControllerState::Manual || status.state == ControllerState::AutoIdle) &&
         !status.motionBusy;
