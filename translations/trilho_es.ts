@@ -936,6 +936,10 @@
         <translation>Velocidad</translation>
     </message>
     <message>
+        <source> steps/s</source>
+        <translation> pasos/s</translation>
+    </message>
+    <message>
         <source>Object: %1 points (at most 300 per object)</source>
         <translation>Objeto: %1 puntos (como máximo 300 por objeto)</translation>
     </message>

@@ -936,6 +936,10 @@
         <translation>Velocidade</translation>
     </message>
     <message>
+        <source> steps/s</source>
+        <translation> passos/s</translation>
+    </message>
+    <message>
         <source>Object: %1 points (at most 300 per object)</source>
         <translation>Objeto: %1 pontos (no máximo 300 por objeto)</translation>
     </message>

@@ -37,7 +37,6 @@ PlotterPanel::PlotterPanel(QWidget* parent) : QGroupBox(parent) {
     step_->setValue(5.0);
     step_->setSuffix(QStringLiteral(" mm"));
     speed_ = new QSpinBox(this);
-    speed_->setSuffix(QStringLiteral(" steps/s"));
     speed_->setKeyboardTracking(false);
     stepLabel_ = new QLabel(this);
     speedLabel_ = new QLabel(this);
@@ -97,6 +96,7 @@ void PlotterPanel::retranslate() {
     right_->setToolTip(tr("Jog right (+x)"));
     stepLabel_->setText(tr("Jog step"));
     speedLabel_->setText(tr("Speed"));
+    speed_->setSuffix(tr(" steps/s"));
     points_->setText(tr("Object: %1 points (at most 300 per object)").arg(pointCount_));
 }
 
