@@ -9,6 +9,7 @@ TRILHO_PACKAGES=(
   xvfb xauth
   help2man desktop-file-utils file
   clang-14 libfuzzer-14-dev
+  socat
 )
 missing=()
 for p in "${TRILHO_PACKAGES[@]}"; do

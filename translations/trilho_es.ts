@@ -260,6 +260,10 @@
         <translation>La referencia falló: no se encontró el sensor de origen. Revise el sensor y su cable, reconozca y luego vuelva a referenciar.</translation>
     </message>
     <message>
+        <source>Link to the device lost: it did not answer, the line was too noisy, or the cable was pulled. The run is held: check the cable and the port, then press Continue to go on from the first point not acknowledged.</source>
+        <translation>Enlace con el dispositivo perdido: no respondió, la línea tenía demasiado ruido o se desconectó el cable. La ejecución está suspendida: revise el cable y el puerto, luego pulse Continuar para seguir desde el primer punto no confirmado.</translation>
+    </message>
+    <message>
         <source>%1: Travel to x=%2 y=%4 at maximum speed.</source>
         <translation>%1: Desplazamiento a x=%2 y=%4 a velocidad máxima.</translation>
     </message>

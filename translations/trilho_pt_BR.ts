@@ -260,6 +260,10 @@
         <translation>Referência falhou: o sensor de origem não foi encontrado. Verifique o sensor e o seu cabo, reconheça e depois faça a referência de novo.</translation>
     </message>
     <message>
+        <source>Link to the device lost: it did not answer, the line was too noisy, or the cable was pulled. The run is held: check the cable and the port, then press Continue to go on from the first point not acknowledged.</source>
+        <translation>Ligação com o dispositivo perdida: ele não respondeu, a linha estava ruidosa demais ou o cabo foi desconectado. A execução está suspensa: verifique o cabo e a porta, depois pressione Continuar para seguir do primeiro ponto não confirmado.</translation>
+    </message>
+    <message>
         <source>%1: Travel to x=%2 y=%4 at maximum speed.</source>
         <translation>%1: Deslocamento para x=%2 y=%4 com velocidade máxima.</translation>
     </message>

@@ -241,8 +241,17 @@ int runCommand(const QStringList& args) {
                        "amplifier-trip, lost-counts=HZ, cable-slip=FRACTION, switch-noise=P, "
                        "torn-reads (repeatable; virtual time)."),
         QStringLiteral("NAME[@T][=V]"));
+    const QCommandLineOption portOpt(
+        QStringLiteral("port"),
+        QStringLiteral("Drive the board on this serial port (an XY plotter, or trilho-device's "
+                       "pseudo-terminal) instead of the simulated machine; real time."),
+        QStringLiteral("DEV"));
+    const QCommandLineOption baudOpt(
+        QStringLiteral("baud"), QStringLiteral("Bit rate of --port (default: the board's own)."),
+        QStringLiteral("N"));
     parser.addOptions({dialectOpt, langOpt, virtualOpt, massOpt, continueOpt, maxOpt, traceOpt,
-                       jsonOpt, machineOpt, jitterOpt, rateOpt, seedOpt, faultOpt});
+                       jsonOpt, machineOpt, jitterOpt, rateOpt, seedOpt, faultOpt, portOpt,
+                       baudOpt});
     parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("The program to run."));
     auto usage = [](const QString& message) { return usageError("run", message); };
     if (auto done = parseArguments(parser, args, "run")) return *done;
@@ -300,6 +309,24 @@ int runCommand(const QStringList& args) {
         return usage(
             QStringLiteral("--fault needs --virtual-time (the simulation panel of the "
                            "screens injects faults in real time)"));
+    if (parser.isSet(portOpt)) {
+        options.port = parser.value(portOpt);
+        if (options.virtualTime)
+            return usage(QStringLiteral("--port drives a board in real time: drop --virtual-time"));
+        if (!options.faults.empty() || parser.isSet(jitterOpt))
+            return usage(
+                QStringLiteral("--fault and --tick-jitter are for the simulated machine, "
+                               "not --port"));
+    }
+    if (parser.isSet(baudOpt)) {
+        bool ok = false;
+        options.baud = parser.value(baudOpt).toInt(&ok);
+        if (!ok || options.baud < 50 || options.baud > 4000000)
+            return usage(
+                QStringLiteral("--baud must be a whole number from 50 to 4000000 (got '%1')")
+                    .arg(parser.value(baudOpt)));
+        if (!parser.isSet(portOpt)) return usage(QStringLiteral("--baud needs --port"));
+    }
     if (options.virtualTime && options.maxSeconds < 0) options.maxSeconds = 3600.0;
     const QStringList files = parser.positionalArguments();
     if (files.size() != 1)
@@ -373,6 +400,8 @@ int runCommand(const QStringList& args) {
                              .arg(options.tracePath));
     }
     const bool xy = profile.kind != MachineKind::Rail;
+    if (!xy && !options.port.isEmpty())
+        return usage(QStringLiteral("--port drives an XY board; the rail has no serial backend"));
     if (xy && !options.faults.empty())
         return usage(
             QStringLiteral("--fault is for the rail (the XY machines have no fault "

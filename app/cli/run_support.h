@@ -35,6 +35,8 @@ struct RunOptions {
     double jitterRate = 0.01;   ///< with this probability
     std::uint64_t seed = 1;
     std::vector<ScheduledFault> faults;  ///< switched on after homing, at their @T
+    QString port;  ///< a board on this serial port instead of the simulated machine
+    int baud = 0;  ///< of port; 0: the board's own rate
 };
 
 /// What the run said. Text: each history line is printed as it happens (memory bounded by

@@ -7,7 +7,11 @@
 #include <cstdio>
 #include <thread>
 
+#include <QCoreApplication>
+
+#include "app/session/xy_device_session.h"
 #include "app/session/xy_session.h"
+#include "core/machine/plotter_link_motion.h"
 
 namespace trilho::cli {
 
@@ -60,12 +64,26 @@ bool over(const XyStatus& s, double elapsedS, const RunOptions& options, double&
 
 int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> program,
                  const RunOptions& options, Report& report, TraceFile& trace) {
-    XySessionMake made = makeXySession(profile, options.seed);
-    if (!made.session) {
-        trace.close();
-        return usageError("run", QString::fromStdString(made.error));
+    XySessionMake made;
+    XyDeviceSession device;
+    if (options.port.isEmpty()) {
+        made = makeXySession(profile, options.seed);
+        if (!made.session) {
+            trace.close();
+            return usageError("run", QString::fromStdString(made.error));
+        }
+    } else {
+        SerialSettings serial;
+        serial.port = options.port;
+        serial.baud = options.baud;
+        device = makeXyDeviceSession(profile, serial);
+        if (!device.session) {
+            trace.close();
+            return usageError("run", device.error);
+        }
     }
-    XySession& session = *made.session;
+    XySession& session = device.session ? *device.session : *made.session;
+    PlotterLinkMotion* link = device.plotter;
     XyController& c = session.controller();
     c.selectAutomatic();
     c.loadProgram(std::move(program));
@@ -84,16 +102,24 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
             std::this_thread::sleep_until(
                 t0 + std::chrono::duration<double>(session.elapsedS() + session.periodS()));
             if (g_xyInterrupted) c.emergencyStop();
+            if (link) QCoreApplication::processEvents();  // the serial line's bytes
         }
         session.step();
         c.drainEvents([&](const ControllerEvent& e) { report.add(e); });
         const XyStatus& s = c.status();
         if (trace.active()) traceRow(trace, s);
         bool press = false;
+        if (link && link->fault() != AlarmCode::None) {
+            // The screens hold the run for a Continue after a re-plug; here nobody can.
+            err(QStringLiteral("trilho-cli run: %1\n")
+                    .arg(QString::fromStdString(link->linkError())));
+            outcome = Outcome::Alarm;
+            break;
+        }
         if (over(s, s.timeS, options, pausedSince, outcome, press)) break;
         if (press) c.pressContinue();
     }
-    if (outcome == Outcome::Alarm) {
+    if (outcome == Outcome::Alarm && !link) {
         // Drives off: follow the table to rest (2 s at most) so the report says where it is.
         for (int i = 0; i < 400; ++i) {
             session.step();
@@ -113,9 +139,19 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
         o[QStringLiteral("axes_mm")] =
             QJsonObject{{QStringLiteral("x"), round4(x)}, {QStringLiteral("y"), round4(y)}};
         o[QStringLiteral("duration_s")] = round4(last.timeS);
-        o[QStringLiteral("plant_position_mm")] =
-            QJsonObject{{QStringLiteral("x"), round4(session.plant().positionMm(0))},
-                        {QStringLiteral("y"), round4(session.plant().positionMm(1))}};
+        if (link) {
+            const PlotterHostStats& st = link->stats();
+            o[QStringLiteral("link")] =
+                QJsonObject{{QStringLiteral("port"), options.port},
+                            {QStringLiteral("packets_sent"), double(st.packetsSent)},
+                            {QStringLiteral("resends"), double(st.resends)},
+                            {QStringLiteral("timeouts"), double(st.timeouts)},
+                            {QStringLiteral("error"), QString::fromStdString(link->linkError())}};
+        }
+        if (session.hasPlant())
+            o[QStringLiteral("plant_position_mm")] =
+                QJsonObject{{QStringLiteral("x"), round4(session.plant().positionMm(0))},
+                            {QStringLiteral("y"), round4(session.plant().positionMm(1))}};
         out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
     } else {
         QString text = QStringLiteral("final position: x %1 mm, y %2 mm (%3 s)\n")

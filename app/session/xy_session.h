@@ -25,7 +25,7 @@ class XySession {
     /// One period of dtS: the controller ticks (on the last period), then the plant runs dtS.
     void step(double dtS) {
         controller_->step(lastPeriodS_);
-        plant_->step(dtS);
+        if (plant_) plant_->step(dtS);
         lastPeriodS_ = dtS;
         elapsedS_ += dtS;
     }
@@ -38,7 +38,9 @@ class XySession {
         return pred();
     }
 
+    /// The simulated plant (only when hasPlant(): a board on a serial line has none).
     XyPlant& plant() { return *plant_; }
+    bool hasPlant() const { return plant_ != nullptr; }
     XyController& controller() { return *controller_; }
     double elapsedS() const { return elapsedS_; }
     double periodS() const { return periodS_; }

@@ -26,6 +26,7 @@ enum class AlarmCode : std::uint8_t {
     OverCurrent = 17,        ///< an XY table motor's over-current input cut its drive
     StepsLost = 18,          ///< the plotter's homing found the origin off: steps were lost
     OriginNotFound = 19,     ///< the plotter's homing did not find the origin sensor
+    DeviceLink = 20,         ///< the serial link to an XY board failed: the run is held
     Count_
 };
 
@@ -41,6 +42,7 @@ constexpr AlarmSeverity alarmSeverity(AlarmCode code) {
         case AlarmCode::FinalPositionOff:
         case AlarmCode::CounterCorrected:
         case AlarmCode::MotionlessLoop:
+        case AlarmCode::DeviceLink:  // held, not abandoned: Continue goes on after a re-plug
             return AlarmSeverity::Warning;
         default:
             return AlarmSeverity::MustAcknowledge;

@@ -141,6 +141,10 @@ constexpr const char* kAlarm[static_cast<int>(AlarmCode::Count_)] = {
     QT_TRANSLATE_NOOP("Controller",
                       "Homing failed: the origin sensor was not found. Check the sensor and its "
                       "cable, acknowledge, then home again."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Link to the device lost: it did not answer, the line was too noisy, or "
+                      "the cable was pulled. The run is held: check the cable and the port, "
+                      "then press Continue to go on from the first point not acknowledged."),
 };
 
 QString number(double v) {

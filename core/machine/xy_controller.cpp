@@ -400,9 +400,25 @@ void XyController::acknowledgeAlarms() {
 
 void XyController::checkMotionFault() {
     const AlarmCode f = motion_->fault();
+    if (f != AlarmCode::DeviceLink) linkHeld_ = false;
     if (f == AlarmCode::None || status_.state == ControllerState::Alarm ||
         status_.state == ControllerState::EStop)
         return;
+    if (f == AlarmCode::DeviceLink) {
+        // A serial link that failed holds the run instead of abandoning it: the board keeps
+        // what it drew, and Continue after a re-plug goes on from the point not acknowledged.
+        if (linkHeld_) return;
+        linkHeld_ = true;
+        post(EventKind::AlarmRaised, -1, 0.0, 0.0, f, 0.0);
+        if (status_.state == ControllerState::Running ||
+            status_.state == ControllerState::Waiting) {
+            holdFrom_ = status_.state;
+            status_.pause = PauseReason::Hold;
+            setState(ControllerState::Paused);
+            post(EventKind::Paused, status_.blockN);
+        }
+        return;
+    }
     raiseAlarm(f, motion_->faultValue());
 }
 

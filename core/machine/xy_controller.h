@@ -113,6 +113,7 @@ class XyController {
     XyPoint startPoint_;
     ControllerState holdFrom_ = ControllerState::Running;
     bool heldByController_ = false;
+    bool linkHeld_ = false;  ///< the run is held for a failed device link (alarm 20)
     std::size_t gotoBlocks_ = 0;
     std::size_t gotosSinceActivity_ = 0;
     bool ending_ = false;
