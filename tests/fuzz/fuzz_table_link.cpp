@@ -53,7 +53,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const TableFirmwareStats& s = device.stats();
         if (calibration) {
             FUZZ_CHECK(deviceOut == 2 * s.countsSent);
-            FUZZ_CHECK(s.countsSent <= deviceS / table_wire::kCalibrationPeriodS + 1.0);
+            FUZZ_CHECK(static_cast<double>(s.countsSent) <=
+                       deviceS / table_wire::kCalibrationPeriodS + 1.0);
         } else {
             FUZZ_CHECK(deviceOut == s.reached + s.refused + s.cut);
             FUZZ_CHECK(deviceOut <= s.setPoints);
