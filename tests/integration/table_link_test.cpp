@@ -223,3 +223,45 @@ TEST(TableLink, CalibrationCountsRiseEvery32msTo1300) {
                 counts.size(), counts.back().first, counts.back().second, biggestRise,
                 link.device.calibrationCount());
 }
+
+TEST(TableFirmware, AStalePartialIsDroppedAndARepeatDuringAMoveIsAnsweredOnce) {
+    TableFirmware device(MachineProfile::xyDcTable(), 7);
+    double t = 0.0;
+    auto feed = [&](const table_wire::SetPoint& sp, std::size_t n) {
+        for (std::size_t i = 0; i < n; ++i, t += 0.00104)  // 10 bits at 9600 bit/s
+            device.receive(sp[i], t);
+    };
+    auto run = [&](double s) {
+        std::vector<std::uint8_t> out;
+        for (const double end = t + s; t < end; t += 0.001) {
+            device.step(0.001, t);
+            for (std::uint8_t b : device.takeOutput())
+                out.push_back(b);
+        }
+        return out;
+    };
+    // Three bytes of (90, 60), then silence past the 50 ms gap: the partial is stale, and the
+    // next four bytes are a whole set point of their own.
+    feed(table_wire::encodeSetPoint(90, 60), 3);
+    t += 0.06;
+    feed(table_wire::encodeSetPoint(30, 40), 4);
+    EXPECT_EQ(device.stats().staleBytes, 1u);
+    EXPECT_EQ(device.stats().setPoints, 1u);
+    EXPECT_TRUE(device.moving());
+    // The same set point again while the table moves: dropped; the one ACK answers both.
+    run(0.1);
+    feed(table_wire::encodeSetPoint(30, 40), 4);
+    EXPECT_EQ(device.stats().ignoredMoving, 1u);
+    const std::vector<std::uint8_t> out = run(5.0);
+    EXPECT_EQ(out, (std::vector<std::uint8_t>{table_wire::kAck}));
+    EXPECT_NEAR(device.table().positionMm(0), 30.0, device.table().axis(0).mmPerCount());
+    EXPECT_NEAR(device.table().positionMm(1), 40.0, device.table().axis(1).mmPerCount());
+    // Once there, the same set point is a zero-length move: ACK after the in-position check.
+    feed(table_wire::encodeSetPoint(30, 40), 4);
+    const double sent = t;
+    std::vector<std::uint8_t> again;
+    while (again.empty() && t < sent + 1.0)
+        again = run(0.001);
+    EXPECT_EQ(again, (std::vector<std::uint8_t>{table_wire::kAck}));
+    EXPECT_LT(t - sent, 0.05);
+}
