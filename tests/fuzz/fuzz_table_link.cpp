@@ -46,10 +46,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         hostCall([&] { host.receive(b, t); });
     };
     auto fromDevice = [&] {
-        for (std::uint8_t b : device.takeOutput()) {
-            ++deviceOut;
-            toHost(b);
-        }
+        // Until nothing is left: an ACK passed to the host sends the next set point, which the
+        // board may answer at once (NAK).
+        for (std::vector<std::uint8_t> out = device.takeOutput(); !out.empty();
+             out = device.takeOutput())
+            for (std::uint8_t b : out) {
+                ++deviceOut;
+                toHost(b);
+            }
         const TableFirmwareStats& s = device.stats();
         if (calibration) {
             FUZZ_CHECK(deviceOut == 2 * s.countsSent);
