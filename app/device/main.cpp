@@ -2,6 +2,7 @@
 // the host code (trilho, trilho-cli) can be run against them with no hardware (issue 12).
 //   trilho-device plotter|table [--pty | --port DEV] [--baud N] [--corrupt P] [--drop P]
 //                 [--corrupt-every N] [--delay-ms N] [--seed N] [--unpaced] [--machine PROFILE]
+//                 [--calibration] (table: seed 004's open-loop calibration program)
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QSerialPort>
@@ -14,6 +15,7 @@
 #include "app/device/pty_endpoint.h"
 #include "core/machine/machine_profile.h"
 #include "hal/emulator/plotter_firmware.h"
+#include "hal/emulator/table_firmware.h"
 
 using namespace trilho;
 
@@ -68,8 +70,12 @@ int main(int argc, char* argv[]) {
     const QCommandLineOption machineOpt(QStringLiteral("machine"),
                                         QStringLiteral("Machine profile of the board."),
                                         QStringLiteral("PROFILE"));
+    const QCommandLineOption calibrationOpt(
+        QStringLiteral("calibration"),
+        QStringLiteral("table: run the open-loop calibration program (x at a fixed PWM, the "
+                       "encoder count sent LSB then MSB every 32 ms until 1300 pulses)."));
     parser.addOptions({ptyOpt, portOpt, baudOpt, corruptOpt, everyOpt, dropOpt, delayOpt, seedOpt,
-                       unpacedOpt, machineOpt});
+                       unpacedOpt, machineOpt, calibrationOpt});
     parser.process(app);
 
     const QStringList args = parser.positionalArguments();
@@ -77,6 +83,8 @@ int main(int argc, char* argv[]) {
     const QString board = args.front();
     if (board != QLatin1String("plotter") && board != QLatin1String("table"))
         return usage(QStringLiteral("unknown board '%1' (plotter or table)").arg(board));
+    if (parser.isSet(calibrationOpt) && board != QLatin1String("table"))
+        return usage(QStringLiteral("--calibration is the table's program"));
     if (parser.isSet(ptyOpt) && parser.isSet(portOpt))
         return usage(QStringLiteral("--pty and --port exclude each other"));
 
@@ -122,7 +130,12 @@ int main(int argc, char* argv[]) {
             return usage(QStringLiteral("the plotter needs an xy-plotter profile"));
         firmware = std::make_unique<PlotterFirmware>(profile, settings.faults.seed);
     } else {
-        return usage(QStringLiteral("the table's firmware is not emulated yet"));
+        if (profile.kind != MachineKind::DcTable)
+            return usage(QStringLiteral("the table needs an xy-dc-table profile"));
+        firmware = std::make_unique<TableFirmware>(profile, settings.faults.seed,
+                                                   parser.isSet(calibrationOpt)
+                                                       ? TableFirmware::Mode::Calibration
+                                                       : TableFirmware::Mode::SetPoints);
     }
 
     PtyEndpoint pty;

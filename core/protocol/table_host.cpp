@@ -1,0 +1,127 @@
+#include "core/protocol/table_host.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+namespace trilho {
+
+TableHost::TableHost(TableHostConfig config) : config_(config) {}
+
+std::string TableHost::name(const table_wire::SetPointMm& sp) {
+    return "set point (" + std::to_string(sp.x) + ", " + std::to_string(sp.y) + ") mm";
+}
+
+bool TableHost::moveTo(double xMm, double yMm, std::string* why) {
+    auto whole = [](double mm) -> std::optional<std::uint16_t> {
+        if (!std::isfinite(mm)) return std::nullopt;
+        const double r = std::round(mm);  // halves away from zero
+        if (r < 0.0 || r > 65535.0) return std::nullopt;
+        return static_cast<std::uint16_t>(r);
+    };
+    const auto x = whole(xMm), y = whole(yMm);
+    if (!x || !y) {
+        if (why)
+            *why = "set point (" + std::to_string(xMm) + ", " + std::to_string(yMm) +
+                   ") mm cannot be sent: the table takes whole millimetres from 0 to 65535";
+        return false;
+    }
+    queue_.push_back({*x, *y});
+    return true;
+}
+
+double TableHost::waitFor(const table_wire::SetPointMm& from,
+                          const table_wire::SetPointMm& to) const {
+    // Each axis runs at vmax at most (the synchronized trapezoid), so the longer travel sets
+    // the move's time.
+    const double travelMm =
+        std::max(std::abs(int(to.x) - int(from.x)), std::abs(int(to.y) - int(from.y)));
+    return config_.answerTimeoutS + 2.0 * travelMm / std::max(1e-3, config_.vmaxMmS);
+}
+
+void TableHost::receive(std::uint8_t byte, double nowS) {
+    if (failed_ || !inFlight_) {
+        ++stats_.unexpected;
+        return;
+    }
+    switch (byte) {
+        case table_wire::kAck:
+            inFlight_ = false;
+            timeouts_ = 0;
+            reached_ = current_;
+            ++stats_.acknowledged;
+            poll(nowS);
+            return;
+        case table_wire::kNak:
+            fail("the table refused " + name(current_) + ": outside the table");
+            return;
+        case table_wire::kCan:
+            // The table stopped where the cut found it: where it stands is no longer known.
+            reached_.reset();
+            fail("the table cut its drives on the way to " + name(current_) +
+                 ": over-current (a jam or a collision?)");
+            return;
+        default:
+            ++stats_.unexpected;  // not an answer: the deadline decides
+            return;
+    }
+}
+
+void TableHost::poll(double nowS) {
+    if (failed_) return;
+    if (inFlight_) {
+        if (nowS < deadline_) return;
+        ++stats_.timeouts;
+        if (++timeouts_ > config_.maxTimeouts) {
+            fail("no answer from the table to " + name(current_) + " after " +
+                 std::to_string(timeouts_) + " tries: is it connected and on?");
+            return;
+        }
+        send(nowS);
+        return;
+    }
+    if (queue_.empty()) return;
+    current_ = queue_.front();
+    queue_.pop_front();
+    send(nowS);
+}
+
+void TableHost::send(double nowS) {
+    const table_wire::SetPoint bytes = table_wire::encodeSetPoint(current_.x, current_.y);
+    out_.insert(out_.end(), bytes.begin(), bytes.end());
+    ++stats_.sent;
+    // Unknown position (before the first ACK, after a CAN): from the origin, the power-on place.
+    deadline_ = nowS + waitFor(reached_.value_or(table_wire::SetPointMm{0, 0}), current_);
+    inFlight_ = true;
+}
+
+std::vector<std::uint8_t> TableHost::takeOutput() {
+    std::vector<std::uint8_t> out;
+    out.swap(out_);
+    return out;
+}
+
+void TableHost::fail(std::string why) {
+    failed_ = true;
+    error_ = std::move(why);
+    // Keep the place: the set point in flight goes back to the front of the queue.
+    if (inFlight_) queue_.push_front(current_);
+    inFlight_ = false;
+}
+
+void TableHost::retry() {
+    if (!failed_) return;
+    failed_ = false;
+    error_.clear();
+    timeouts_ = 0;
+}
+
+void TableHost::clear() {
+    queue_.clear();
+    inFlight_ = false;
+    failed_ = false;
+    error_.clear();
+    timeouts_ = 0;
+}
+
+}  // namespace trilho

@@ -1,0 +1,85 @@
+#pragma once
+// The PC side of the DC table's protocol (xy.md B, seed 004, and the one-byte answer of
+// docs/protocols.md B) as a plain state machine: bytes in, bytes out, time passed in, so it is
+// tested without a port and the same code drives a real ATmega128 or the emulator. Set points
+// are queued and sent one at a time; each waits for its answer: ACK -> the next; NAK or CAN ->
+// the host fails with a plain reason and keeps its place; no answer in time -> the same set
+// point again (idempotent: a table already there answers ACK at once), bounded, then failure.
+#include <cstdint>
+#include <deque>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/protocol/table_protocol.h"
+
+namespace trilho {
+
+struct TableHostConfig {
+    /// The answer deadline is this, s, plus twice the move's time at vmaxMmS: the trapezoid's
+    /// ramps and the settling (20 ms in the window) fit in it (seed 004: vel_max 150 mm/s,
+    /// acceleration 250-300 mm/s2, so the ramps add at most vmax/a = 0.6 s).
+    double answerTimeoutS = 2.0;
+    double vmaxMmS = 150.0;  ///< the profile's rapid speed, mm/s (each axis)
+    int maxTimeouts = 3;     ///< repeats after a timeout; then fail
+};
+
+struct TableHostStats {
+    std::uint64_t sent = 0;          ///< set points sent, repeats included
+    std::uint64_t acknowledged = 0;  ///< ACKs
+    std::uint64_t timeouts = 0;      ///< answers that did not come in time
+    std::uint64_t unexpected = 0;    ///< bytes that answered nothing asked (ignored)
+};
+
+class TableHost {
+  public:
+    explicit TableHost(TableHostConfig config = {});
+
+    /// Queues a set point in mm, rounded to the nearest whole mm (halves away from zero: the
+    /// wire carries whole millimetres). False, with a reason, when the rounded value is outside
+    /// 0..65535 mm or not a number: nothing is queued.
+    bool moveTo(double xMm, double yMm, std::string* why = nullptr);
+
+    // ---- the line ----
+    void receive(std::uint8_t byte, double nowS);
+    /// Sends the next set point when none is in flight, and handles the deadline.
+    void poll(double nowS);
+    /// The bytes to write since the last call.
+    std::vector<std::uint8_t> takeOutput();
+
+    // ---- state ----
+    bool idle() const { return !failed_ && !inFlight_ && queue_.empty(); }
+    bool inFlight() const { return inFlight_; }
+    bool failed() const { return failed_; }
+    const std::string& error() const { return error_; }
+    const TableHostStats& stats() const { return stats_; }
+    std::size_t queued() const { return queue_.size(); }
+    /// The last set point the table acknowledged (nullopt before the first ACK).
+    std::optional<table_wire::SetPointMm> reached() const { return reached_; }
+    /// After failed(): the set point that was not finished is sent again, then the rest.
+    void retry();
+    /// Forgets every set point (Stop).
+    void clear();
+
+  private:
+    void send(double nowS);
+    void fail(std::string why);
+    double waitFor(const table_wire::SetPointMm& from, const table_wire::SetPointMm& to) const;
+    static std::string name(const table_wire::SetPointMm& sp);
+
+    TableHostConfig config_;
+    std::deque<table_wire::SetPointMm> queue_;
+    std::vector<std::uint8_t> out_;
+    bool inFlight_ = false;
+    table_wire::SetPointMm current_{};
+    double deadline_ = 0.0;
+    int timeouts_ = 0;
+    bool failed_ = false;
+    std::string error_;
+    TableHostStats stats_;
+    /// Where the table stands for the deadline: the last ACK; before it, the origin, where
+    /// seed 004's table stands at power-on (its counts start at zero there).
+    std::optional<table_wire::SetPointMm> reached_;
+};
+
+}  // namespace trilho

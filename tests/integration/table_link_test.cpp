@@ -1,0 +1,267 @@
+// The DC table's host against the emulated ATmega128 firmware (seed 004) over a virtual
+// 9600 bit/s line, in virtual time (issue 12): a square of set points reaches each corner,
+// with ACK; dropped bytes cost timeouts and repeats, not the positions; a set point outside
+// the table is refused (NAK); a jam cuts the drives (CAN); the open-loop calibration stream
+// decodes to counts rising every 32 ms to 1300.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/protocol/table_host.h"
+#include "hal/emulator/table_firmware.h"
+#include "tests/support/virtual_serial_line.h"
+
+using namespace trilho;
+
+namespace {
+
+constexpr double kDtS = 0.001;  ///< virtual time per step, s
+
+struct Reached {
+    table_wire::SetPointMm target;
+    double xMm, yMm;  ///< the plant's true position when the host took the ACK
+};
+
+/// Host and firmware joined by two virtual wires; bytes towards each side pass LineFaults.
+struct Link {
+    MachineProfile profile = MachineProfile::xyDcTable();
+    TableFirmware device;
+    TableHost host;
+    test::VirtualWire down{9600}, up{9600};
+    LineFaults downFaults, upFaults;
+    double t = 0.0;
+    std::vector<Reached> reached;
+
+    explicit Link(const LineFaultSettings& faults = {},
+                  TableFirmware::Mode mode = TableFirmware::Mode::SetPoints)
+        : device(profile, 7, mode),
+          host(config(profile)),
+          downFaults(faults),
+          upFaults(upstream(faults)) {}
+
+    static TableHostConfig config(const MachineProfile& p) {
+        TableHostConfig c;
+        c.vmaxMmS = p.motion.rapidSpeedMmS;
+        return c;
+    }
+    static LineFaultSettings upstream(LineFaultSettings f) {
+        f.seed += 1000;  // the other direction loses other bytes
+        return f;
+    }
+
+    /// One step; upBytes sees every byte that reaches the host, with its arrival time.
+    template <typename F>
+    void step(F&& upBytes) {
+        host.poll(t);
+        down.send(host.takeOutput(), t);
+        down.deliver(t, [&](std::uint8_t b, double at) {
+            if (auto passed = downFaults.pass(b)) device.receive(*passed, at);
+        });
+        device.step(kDtS, t);
+        up.send(device.takeOutput(), t);
+        up.deliver(t, [&](std::uint8_t b, double at) {
+            if (auto passed = upFaults.pass(b)) {
+                upBytes(*passed, at);
+                const std::uint64_t acks = host.stats().acknowledged;
+                host.receive(*passed, at);
+                if (host.stats().acknowledged > acks)
+                    reached.push_back({*host.reached(), device.table().positionMm(0),
+                                       device.table().positionMm(1)});
+            }
+        });
+        t += kDtS;
+    }
+    void step() {
+        step([](std::uint8_t, double) {});
+    }
+    /// Runs until the host is idle or failed, or maxS of virtual time more.
+    bool run(double maxS) {
+        const double end = t + maxS;
+        while (t < end && !host.idle() && !host.failed())
+            step();
+        return host.idle();
+    }
+    double mmPerCount(int axis) { return device.table().axis(axis).mmPerCount(); }
+};
+
+const std::vector<table_wire::SetPointMm> kSquare{
+    {50, 50}, {250, 50}, {250, 250}, {50, 250}, {50, 50}};
+
+/// Every reached point within one encoder count of its set point, on both axes.
+void expectWithinACount(Link& link) {
+    for (const Reached& r : link.reached) {
+        EXPECT_NEAR(r.xMm, r.target.x, link.mmPerCount(0)) << r.target.x << "," << r.target.y;
+        EXPECT_NEAR(r.yMm, r.target.y, link.mmPerCount(1)) << r.target.x << "," << r.target.y;
+    }
+}
+
+}  // namespace
+
+TEST(TableLink, ASquareReachesEachCornerWithAnAck) {
+    Link link;
+    for (const auto& c : kSquare)
+        ASSERT_TRUE(link.host.moveTo(c.x, c.y));
+    ASSERT_TRUE(link.run(60.0)) << link.host.error();
+    ASSERT_EQ(link.reached.size(), kSquare.size());
+    for (std::size_t i = 0; i < kSquare.size(); ++i) {
+        EXPECT_EQ(link.reached[i].target.x, kSquare[i].x);
+        EXPECT_EQ(link.reached[i].target.y, kSquare[i].y);
+    }
+    expectWithinACount(link);
+    EXPECT_EQ(link.device.stats().reached, kSquare.size());
+    EXPECT_EQ(link.host.stats().sent, kSquare.size());
+    EXPECT_EQ(link.host.stats().timeouts, 0u);
+    EXPECT_EQ(link.host.stats().unexpected, 0u);
+    std::printf("square of %zu set points at 9600 bit/s: %.3f s of virtual time\n", kSquare.size(),
+                link.t);
+}
+
+TEST(TableLink, DroppedBytesCostRepeatsNotThePositions) {
+    // A longer path (a zigzag of 16 set points), so that 2 % of bytes lost hits several.
+    std::vector<table_wire::SetPointMm> path;
+    for (int i = 0; i < 16; ++i)
+        path.push_back({static_cast<std::uint16_t>(20 + 15 * i),
+                        static_cast<std::uint16_t>(i % 2 == 0 ? 40 : 120)});
+    std::uint64_t timeouts = 0;
+    for (std::uint64_t seed : {1u, 2u, 3u, 4u, 5u, 6u}) {
+        LineFaultSettings f;
+        f.dropP = 0.02;
+        f.seed = seed;
+        Link link(f);
+        for (const auto& p : path)
+            ASSERT_TRUE(link.host.moveTo(p.x, p.y));
+        ASSERT_TRUE(link.run(600.0)) << link.host.error();
+        // Each set point acknowledged once, in order (a repeat of a reached one answers ACK).
+        ASSERT_EQ(link.reached.size(), path.size()) << "seed " << seed;
+        for (std::size_t i = 0; i < path.size(); ++i)
+            EXPECT_EQ(link.reached[i].target.x, path[i].x) << "seed " << seed;
+        expectWithinACount(link);
+        EXPECT_NEAR(link.device.table().positionMm(0), path.back().x, link.mmPerCount(0));
+        EXPECT_NEAR(link.device.table().positionMm(1), path.back().y, link.mmPerCount(1));
+        EXPECT_EQ(link.host.stats().sent, path.size() + link.host.stats().timeouts);
+        timeouts += link.host.stats().timeouts;
+        std::printf(
+            "2 %% of bytes dropped (seed %llu): %llu down, %llu up; %llu timeouts, %llu stale "
+            "partials, %.1f s\n",
+            static_cast<unsigned long long>(seed),
+            static_cast<unsigned long long>(link.downFaults.dropped()),
+            static_cast<unsigned long long>(link.upFaults.dropped()),
+            static_cast<unsigned long long>(link.host.stats().timeouts),
+            static_cast<unsigned long long>(link.device.stats().staleBytes), link.t);
+    }
+    EXPECT_GT(timeouts, 0u);
+}
+
+TEST(TableLink, ASetPointOutsideTheTableIsRefusedAndNothingMoves) {
+    Link link;
+    ASSERT_TRUE(link.host.moveTo(100, 100));
+    ASSERT_TRUE(link.host.moveTo(400, 100));  // the profile's table is 300 x 300 mm
+    ASSERT_TRUE(link.host.moveTo(10, 10));
+    link.run(30.0);
+    ASSERT_TRUE(link.host.failed());
+    EXPECT_EQ(link.host.error(), "the table refused set point (400, 100) mm: outside the table");
+    EXPECT_EQ(link.device.stats().refused, 1u);
+    const double x = link.device.table().positionMm(0);
+    for (int i = 0; i < 500; ++i)
+        link.step();
+    EXPECT_EQ(link.device.table().positionMm(0), x);  // still at (100, 100): it did not move
+    EXPECT_NEAR(x, 100.0, link.mmPerCount(0));
+    EXPECT_EQ(link.host.queued(), 2u);
+}
+
+TEST(TableLink, AJamCutsTheDrivesThenTheTableRunsAgain) {
+    Link link;
+    ASSERT_TRUE(link.host.moveTo(200, 100));
+    while (link.t < 0.5)
+        link.step();
+    link.device.table().setJammed(0, true);
+    link.run(10.0);
+    ASSERT_TRUE(link.host.failed());
+    EXPECT_EQ(link.host.error(),
+              "the table cut its drives on the way to set point (200, 100) mm: over-current (a "
+              "jam or a collision?)");
+    EXPECT_EQ(link.device.stats().cut, 1u);
+    std::printf("jam at 0.5 s: CAN at %.3f s (alarm %d behind it)\n", link.t,
+                static_cast<int>(link.device.stats().lastCut));
+    EXPECT_FALSE(link.device.moving());
+    // The firmware cleared the fault and holds: unjammed, the same set point runs.
+    link.device.table().setJammed(0, false);
+    link.host.retry();
+    ASSERT_TRUE(link.run(30.0)) << link.host.error();
+    ASSERT_EQ(link.reached.size(), 1u);
+    expectWithinACount(link);
+}
+
+TEST(TableLink, CalibrationCountsRiseEvery32msTo1300) {
+    Link link({}, TableFirmware::Mode::Calibration);
+    table_wire::EncoderStreamDecoder decoder;
+    std::vector<std::pair<std::uint16_t, double>> counts;  // count, arrival of its MSB
+    while (link.t < 4.0)
+        link.step([&](std::uint8_t b, double at) {
+            if (auto c = decoder.feed(b, at)) counts.emplace_back(*c, at);
+        });
+    ASSERT_GT(counts.size(), 10u);
+    EXPECT_TRUE(link.device.calibrationDone());
+    EXPECT_GE(link.device.calibrationCount(), 1300);
+    EXPECT_EQ(decoder.resyncs(), 0u);
+    EXPECT_EQ(counts.size(), link.device.stats().countsSent);
+    std::uint16_t biggestRise = 0;
+    for (std::size_t i = 1; i < counts.size(); ++i) {
+        EXPECT_GT(counts[i].first, counts[i - 1].first) << i;
+        // One count every 32 ms (the host steps 1 ms, so an arrival is within a step of it).
+        EXPECT_NEAR(counts[i].second - counts[i - 1].second, 0.032, 0.0011) << i;
+        biggestRise = std::max<std::uint16_t>(biggestRise, counts[i].first - counts[i - 1].first);
+    }
+    // Seed 004: while (pulsos < 1300) { send; 32 ms }: the last count sent is under 1300, by
+    // less than one period's rise; then the motor stops and nothing more is sent.
+    EXPECT_LT(counts.back().first, 1300);
+    EXPECT_GE(counts.back().first + biggestRise, 1300);
+    EXPECT_EQ(link.device.table().axis(0).state().drivePercent, 0.0);
+    EXPECT_EQ(link.device.table().positionMm(1), 0.0);  // y never moved
+    std::printf("calibration: %zu counts, last %u at %.3f s, rise up to %u a period; %u pulses\n",
+                counts.size(), counts.back().first, counts.back().second, biggestRise,
+                link.device.calibrationCount());
+}
+
+TEST(TableFirmware, AStalePartialIsDroppedAndARepeatDuringAMoveIsAnsweredOnce) {
+    TableFirmware device(MachineProfile::xyDcTable(), 7);
+    double t = 0.0;
+    auto feed = [&](const table_wire::SetPoint& sp, std::size_t n) {
+        for (std::size_t i = 0; i < n; ++i, t += 0.00104)  // 10 bits at 9600 bit/s
+            device.receive(sp[i], t);
+    };
+    auto run = [&](double s) {
+        std::vector<std::uint8_t> out;
+        for (const double end = t + s; t < end; t += 0.001) {
+            device.step(0.001, t);
+            for (std::uint8_t b : device.takeOutput())
+                out.push_back(b);
+        }
+        return out;
+    };
+    // Three bytes of (90, 60), then silence past the 50 ms gap: the partial is stale, and the
+    // next four bytes are a whole set point of their own.
+    feed(table_wire::encodeSetPoint(90, 60), 3);
+    t += 0.06;
+    feed(table_wire::encodeSetPoint(30, 40), 4);
+    EXPECT_EQ(device.stats().staleBytes, 1u);
+    EXPECT_EQ(device.stats().setPoints, 1u);
+    EXPECT_TRUE(device.moving());
+    // The same set point again while the table moves: dropped; the one ACK answers both.
+    run(0.1);
+    feed(table_wire::encodeSetPoint(30, 40), 4);
+    EXPECT_EQ(device.stats().ignoredMoving, 1u);
+    const std::vector<std::uint8_t> out = run(5.0);
+    EXPECT_EQ(out, (std::vector<std::uint8_t>{table_wire::kAck}));
+    EXPECT_NEAR(device.table().positionMm(0), 30.0, device.table().axis(0).mmPerCount());
+    EXPECT_NEAR(device.table().positionMm(1), 40.0, device.table().axis(1).mmPerCount());
+    // Once there, the same set point is a zero-length move: ACK after the in-position check.
+    feed(table_wire::encodeSetPoint(30, 40), 4);
+    const double sent = t;
+    std::vector<std::uint8_t> again;
+    while (again.empty() && t < sent + 1.0)
+        again = run(0.001);
+    EXPECT_EQ(again, (std::vector<std::uint8_t>{table_wire::kAck}));
+    EXPECT_LT(t - sent, 0.05);
+}

@@ -1,0 +1,111 @@
+// The DC table's host through a real pseudo-terminal (issue 12): `trilho-device table` runs as
+// a process, the test opens the terminal it prints with SerialLine (Qt SerialPort) at 9600
+// bit/s and drives TableHost in real time until the table answers ACK. Waits are on
+// conditions with deadlines (QTRY-style), never bare sleeps.
+#include <gtest/gtest.h>
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTest>
+#include <functional>
+
+#include "core/protocol/table_host.h"
+#include "hal/serial/serial_line.h"
+
+using namespace trilho;
+
+namespace {
+
+/// Processes events (and calls `each`) until cond() holds or timeoutS passes.
+bool waitFor(const std::function<bool()>& cond, double timeoutS,
+             const std::function<void()>& each = {}) {
+    QElapsedTimer clock;
+    clock.start();
+    while (!cond()) {
+        if (static_cast<double>(clock.elapsed()) > timeoutS * 1000.0) return false;
+        if (each) each();
+        QTest::qWait(2);
+    }
+    return true;
+}
+
+struct Device {
+    QProcess process;
+    QString path;
+    QString out;
+
+    bool start(const QStringList& args) {
+        process.setProgram(QStringLiteral(TRILHO_DEVICE));
+        process.setArguments(args);
+        process.start();
+        if (!process.waitForStarted(5000)) return false;
+        static const QRegularExpression re(QStringLiteral("table on (\\S+) at 9600 bit/s"));
+        return waitFor(
+            [&] {
+                out += QString::fromUtf8(process.readAllStandardOutput());
+                const auto m = re.match(out);
+                if (m.hasMatch()) path = m.captured(1);
+                return !path.isEmpty();
+            },
+            10.0);
+    }
+    ~Device() {
+        if (process.state() != QProcess::NotRunning) {
+            process.terminate();  // SIGTERM: trilho-device prints its summary and ends
+            if (!process.waitForFinished(5000)) process.kill();
+        }
+    }
+};
+
+}  // namespace
+
+TEST(TablePty, TheHostDrivesTrilhoDeviceTableUntilAck) {
+    Device device;
+    ASSERT_TRUE(device.start({QStringLiteral("table")})) << device.out.toStdString();
+    EXPECT_TRUE(device.path.startsWith(QStringLiteral("/dev/pts/"))) << device.path.toStdString();
+
+    SerialLine line;
+    QString error;
+    ASSERT_TRUE(line.open({device.path, 9600, false}, &error)) << error.toStdString();
+    QElapsedTimer clock;
+    clock.start();
+    auto now = [&] { return static_cast<double>(clock.nsecsElapsed()) * 1e-9; };
+    TableHost host;
+    QObject::connect(&line, &SerialLine::received, [&](const QByteArray& bytes) {
+        for (char b : bytes)
+            host.receive(static_cast<std::uint8_t>(b), now());
+    });
+    ASSERT_TRUE(host.moveTo(30, 20));
+    ASSERT_TRUE(host.moveTo(10, 40));
+    const bool done = waitFor([&] { return host.idle() || host.failed(); }, 15.0,
+                              [&] {
+                                  host.poll(now());
+                                  line.write(host.takeOutput());
+                              });
+    ASSERT_TRUE(done) << "no ACK within 15 s";
+    ASSERT_TRUE(host.idle()) << host.error();
+    EXPECT_EQ(host.stats().acknowledged, 2u);
+    EXPECT_EQ(host.stats().timeouts, 0u);
+    EXPECT_EQ(host.stats().unexpected, 0u);
+    ASSERT_TRUE(host.reached());
+    EXPECT_EQ(host.reached()->x, 10);
+    EXPECT_EQ(host.reached()->y, 40);
+    EXPECT_EQ(line.bytesWritten(), 8u);
+    EXPECT_EQ(line.bytesRead(), 2u);
+    std::printf("through %s: two set points acknowledged in %.3f s\n", qPrintable(device.path),
+                now());
+    line.close();
+    device.process.terminate();
+    ASSERT_TRUE(device.process.waitForFinished(5000));
+    const QString summary = QString::fromUtf8(device.process.readAllStandardOutput());
+    EXPECT_TRUE(summary.contains(QStringLiteral("set points 2, ACK 2, NAK 0, CAN 0")))
+        << summary.toStdString();
+}
+
+int main(int argc, char** argv) {
+    QCoreApplication app(argc, argv);
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}
