@@ -251,7 +251,9 @@ void ExecutionPanel::setAutomaticMode(bool automatic) {
     }
     left_->setEnabled(!automatic);
     right_->setEnabled(!automatic);
-    stop_->setEnabled(!automatic);
+    // PARA stays live in automatic (ciclo_continuo.G tells the operator to stop it with PARA):
+    // there it is a controlled stop of the program.
+    stop_->setEnabled(true);
 }
 
 void ExecutionPanel::setProgramName(const QString& name) {

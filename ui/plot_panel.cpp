@@ -4,6 +4,7 @@
 #include <QEvent>
 #include <QFileDialog>
 #include <QHBoxLayout>
+#include <QPainter>
 #include <QPushButton>
 #include <QSaveFile>
 #include <QSpinBox>
@@ -17,7 +18,7 @@ QCustomPlot* makePlot(QWidget* parent) {
     auto* p = new QCustomPlot(parent);
     p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     p->axisRect()->setRangeZoom(Qt::Horizontal | Qt::Vertical);
-    p->setMinimumHeight(60);
+    p->setMinimumHeight(150);
     p->setNotAntialiasedElements(QCP::aeAll);  // cheap redraws at 25 Hz
     QFont small = p->font();
     small.setPointSizeF(small.pointSizeF() * 0.8);
@@ -62,8 +63,12 @@ PlotPanel::PlotPanel(QWidget* parent) : QWidget(parent) {
     buttons->addWidget(csv_);
     auto* v = new QVBoxLayout(this);
     v->addLayout(buttons);
-    v->addWidget(position_, 1);
-    v->addWidget(error_, 1);
+    // Side by side: on a 768-line screen the dock is about 200 px high, and two plots stacked
+    // there were 60 px each, their tick labels overprinted.
+    auto* plots = new QHBoxLayout;
+    plots->addWidget(position_, 1);
+    plots->addWidget(error_, 1);
+    v->addLayout(plots, 1);
     connect(pause_, &QPushButton::toggled, this, &PlotPanel::setPaused);
     connect(png_, &QPushButton::clicked, this, [this] {
         const QString f = QFileDialog::getSaveFileName(this, tr("Export PNG"), QString(),
@@ -148,7 +153,17 @@ void PlotPanel::replot() {
 }
 
 bool PlotPanel::exportPng(const QString& path) {
-    return position_->savePng(path, 0, 0, 1.0, -1, 96);
+    // Both plots, as on screen (side by side): the position alone hid the error and the drive.
+    const QPixmap left = position_->toPixmap();
+    const QPixmap right = error_->toPixmap();
+    QImage image(left.width() + right.width(), std::max(left.height(), right.height()),
+                 QImage::Format_RGB32);
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    painter.drawPixmap(0, 0, left);
+    painter.drawPixmap(left.width(), 0, right);
+    painter.end();
+    return image.save(path, "PNG");
 }
 
 bool PlotPanel::exportCsv(const QString& path, QString* error) {

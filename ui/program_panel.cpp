@@ -3,7 +3,7 @@
 #include <QEvent>
 #include <QFile>
 
-#include <QHBoxLayout>
+#include <QGridLayout>
 #include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
@@ -24,10 +24,12 @@ ProgramPanel::ProgramPanel(QWidget* parent) : QWidget(parent) {
     list_ = new QListWidget(this);
     save_ = new QPushButton(this);
     startHere_ = new QPushButton(this);
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(save_);
-    buttons->addWidget(startHere_);
-    buttons->addStretch();
+    // Two rows: "Iniciar a partir do bloco selecionado" beside Save widened the dock past a
+    // 1024-wide screen.
+    auto* buttons = new QGridLayout;
+    buttons->addWidget(save_, 0, 0);
+    buttons->addWidget(startHere_, 1, 0, 1, 2);
+    buttons->setColumnStretch(1, 1);
     auto* split = new QSplitter(Qt::Vertical, this);
     split->addWidget(editor_);
     split->addWidget(list_);
