@@ -442,6 +442,14 @@
         <translation>corrección %1 %</translation>
     </message>
     <message>
+        <source>classic law</source>
+        <translation>ley clásica</translation>
+    </message>
+    <message>
+        <source>engineered law</source>
+        <translation>ley moderna</translation>
+    </message>
+    <message>
         <source>Cycle %1:%2</source>
         <translation>Ciclo %1:%2</translation>
     </message>
@@ -793,6 +801,10 @@
         <translation>Liberar emergencia</translation>
     </message>
     <message>
+        <source>Safety</source>
+        <translation>Seguridad</translation>
+    </message>
+    <message>
         <source>Acknowledge</source>
         <translation>Reconocer</translation>
     </message>
@@ -954,6 +966,14 @@
     <message>
         <source>position (mm)</source>
         <translation>posición (mm)</translation>
+    </message>
+    <message>
+        <source>error (mm)</source>
+        <translation>error (mm)</translation>
+    </message>
+    <message>
+        <source>DAC</source>
+        <translation>DAC</translation>
     </message>
     <message>
         <source>following error (mm)</source>

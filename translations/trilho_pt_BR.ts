@@ -442,6 +442,14 @@
         <translation>correção %1 %</translation>
     </message>
     <message>
+        <source>classic law</source>
+        <translation>lei clássica</translation>
+    </message>
+    <message>
+        <source>engineered law</source>
+        <translation>lei moderna</translation>
+    </message>
+    <message>
         <source>Cycle %1:%2</source>
         <translation>Ciclo %1:%2</translation>
     </message>
@@ -793,6 +801,10 @@
         <translation>Liberar emergência</translation>
     </message>
     <message>
+        <source>Safety</source>
+        <translation>Segurança</translation>
+    </message>
+    <message>
         <source>Acknowledge</source>
         <translation>Reconhecer</translation>
     </message>
@@ -954,6 +966,14 @@
     <message>
         <source>position (mm)</source>
         <translation>posição (mm)</translation>
+    </message>
+    <message>
+        <source>error (mm)</source>
+        <translation>erro (mm)</translation>
+    </message>
+    <message>
+        <source>DAC</source>
+        <translation>DAC</translation>
     </message>
     <message>
         <source>following error (mm)</source>

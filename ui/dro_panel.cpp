@@ -4,7 +4,9 @@
 #include <QFontDatabase>
 #include <QGridLayout>
 #include <QLabel>
+#include <QPainter>
 #include <QProgressBar>
+#include <QStyleOption>
 #include <cmath>
 
 namespace trilho {
@@ -25,10 +27,12 @@ bool executing(const ControllerStatus& s) {
 DroPanel::DroPanel(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("dro"));
     setAutoFillBackground(true);
-    QPalette p = palette();
-    p.setColor(QPalette::Window, QColor(16, 24, 16));  // a readout: light digits on black
-    p.setColor(QPalette::WindowText, QColor(120, 255, 120));
-    setPalette(p);
+    // A readout: light digits on black, in either theme (a style sheet, as the application's
+    // own sheet and palette would otherwise win over a palette set here).
+    setStyleSheet(
+        QStringLiteral("QWidget#dro { background: rgb(16,24,16); }"
+                       "QWidget#dro QLabel { color: rgb(120,255,120); }"
+                       "QWidget#dro QLabel#droMachine { color: rgb(170,255,170); }"));
     QFont big = QFontDatabase::systemFont(QFontDatabase::FixedFont);
     big.setPointSize(26);
     big.setBold(true);
@@ -44,6 +48,7 @@ DroPanel::DroPanel(QWidget* parent) : QWidget(parent) {
     cycle_ = new QLabel(this);
     dwell_ = new QLabel(this);
     machine_->setObjectName(QStringLiteral("droMachine"));
+    modal_->setWordWrap(true);  // one line at 1366, two on a 1024-wide screen, never clipped
     machine_->setFont(big);
     for (QLabel* l : {work_, toGo_})
         l->setFont(medium);
@@ -74,6 +79,13 @@ DroPanel::DroPanel(QWidget* parent) : QWidget(parent) {
     g->setColumnStretch(1, 1);
     g->setColumnStretch(3, 1);
     retranslate();
+}
+
+void DroPanel::paintEvent(QPaintEvent*) {
+    QStyleOption option;
+    option.initFrom(this);
+    QPainter painter(this);
+    style()->drawPrimitive(QStyle::PE_Widget, &option, &painter, this);
 }
 
 void DroPanel::setProgramBlocks(int blocks) {
@@ -115,6 +127,8 @@ void DroPanel::showStatus(const ControllerStatus& s) {
     modal << tr("zero %1 mm").arg(millimetres(s.modal.zeroMm));
     modal << tr("F %1 %").arg(s.modal.feed, 0, 'f', 0);
     modal << tr("override %1 %").arg(std::lround(s.feedOverride * 100.0));
+    // Which law drives the rail is said on the main screen, not only in Options.
+    modal << (s.law == LoopLaw::Classic ? tr("classic law") : tr("engineered law"));
     modal_->setText(modal.join(QStringLiteral("   ")));
 
     const int seconds = static_cast<int>(cycleS_);

@@ -31,6 +31,7 @@ class DroPanel : public QWidget {
 
   protected:
     void changeEvent(QEvent* e) override;
+    void paintEvent(QPaintEvent* e) override;  ///< lets the style sheet paint the background
 
   private:
     void retranslate();

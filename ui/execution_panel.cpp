@@ -24,6 +24,13 @@ QGroupBox* frame(QWidget* parent) {
     g->setObjectName(QStringLiteral("vbFrame"));
     return g;
 }
+/// Tight frame layouts: the whole form fits above the plots on a 768-line screen.
+template <typename Layout>
+Layout* tight(Layout* l) {
+    l->setContentsMargins(8, 2, 8, 4);
+    l->setVerticalSpacing(3);
+    return l;
+}
 QString mm(double v, int decimals = 2) {
     return QString::number(v, 'f', decimals);
 }
@@ -40,9 +47,9 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("executionPanel"));
     setAutoFillBackground(true);
     auto* grid = new QGridLayout(this);
-    grid->setContentsMargins(24, 6, 24, 8);
+    grid->setContentsMargins(24, 4, 24, 4);
     grid->setHorizontalSpacing(36);
-    grid->setVerticalSpacing(4);
+    grid->setVerticalSpacing(2);
 
     // Alarmes and Status, the two drop-down lists across the top (360,120 / 1560,120,7695,300).
     alarmsLabel_ = new QLabel(this);
@@ -66,7 +73,7 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
 
     // Modo Automático (600,1200,3975,2175).
     autoFrame_ = frame(this);
-    auto* a = new QGridLayout(autoFrame_);
+    auto* a = tight(new QGridLayout(autoFrame_));
     programLabel_ = new QLabel(autoFrame_);
     lineLabel_ = new QLabel(autoFrame_);
     program_ = readOnly();
@@ -89,7 +96,7 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
 
     // Modo Manual (600,3840,3975,2055): Esquerda "<", Direita ">", PÁRA.
     manualFrame_ = frame(this);
-    auto* m = new QGridLayout(manualFrame_);
+    auto* m = tight(new QGridLayout(manualFrame_));
     leftLabel_ = new QLabel(manualFrame_);
     rightLabel_ = new QLabel(manualFrame_);
     left_ = new QPushButton(QStringLiteral("<"), manualFrame_);
@@ -113,7 +120,7 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
 
     // Dados Atuais (5520,960,3255,1575).
     dataFrame_ = frame(this);
-    auto* d = new QGridLayout(dataFrame_);
+    auto* d = tight(new QGridLayout(dataFrame_));
     positionLabel_ = new QLabel(dataFrame_);
     speedLabel_ = new QLabel(dataFrame_);
     accelerationLabel_ = new QLabel(dataFrame_);
@@ -138,7 +145,7 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
 
     // Controlador (5520,2640): Proporcional, Derivativa, Integrativa - validated, live.
     controllerFrame_ = frame(this);
-    auto* c = new QGridLayout(controllerFrame_);
+    auto* c = tight(new QGridLayout(controllerFrame_));
     for (int i = 0; i < 3; ++i) {
         gainLabels_[i] = new QLabel(controllerFrame_);
         gains_[i] = new QLineEdit(controllerFrame_);
@@ -165,7 +172,7 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
 
     // Malha (5520,4320): Setpoint, Valor real (green needle), Erro (red needle).
     loopFrame_ = frame(this);
-    auto* l = new QGridLayout(loopFrame_);
+    auto* l = tight(new QGridLayout(loopFrame_));
     setpointLabel_ = new QLabel(loopFrame_);
     setpoint_ = readOnly();
     setpoint_->setAlignment(Qt::AlignRight);

@@ -16,6 +16,7 @@
 #include <QPlainTextEdit>
 #include <QStatusBar>
 #include <QStyle>
+#include <QTimer>
 #include <QToolBar>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -129,7 +130,10 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     onStatus(link_.status());
     defaultLayout_ = saveState();
     restoreGeometry(settings_.value(QStringLiteral("geometry")).toByteArray());
-    restoreState(settings_.value(QStringLiteral("windowState")).toByteArray());
+    // Dock sizes come back with the saved state; the first time, the default sizes apply once
+    // the window has its size (the plots at least 150 px high at 1366x768).
+    if (!restoreState(settings_.value(QStringLiteral("windowState")).toByteArray()))
+        QTimer::singleShot(0, this, &MainWindow::applyDefaultDockSizes);
     const QString lastProgram = settings_.value(QStringLiteral("lastProgram")).toString();
     if (!lastProgram.isEmpty() && QFileInfo::exists(lastProgram)) selectProgram(lastProgram);
 }
@@ -216,9 +220,11 @@ void MainWindow::buildMenus() {
     });
 
     // E-stop always visible (key: Esc), with reset and acknowledge beside it.
-    QToolBar* bar = addToolBar(QStringLiteral("safety"));
+    QToolBar* bar = addToolBar(QString());
+    safetyBar_ = bar;
     bar->setObjectName(QStringLiteral("safetyBar"));
     bar->setMovable(false);
+    bar->toggleViewAction()->setEnabled(false);  // the E-stop can never be hidden
     estop_ = new QToolButton(bar);
     estop_->setObjectName(QStringLiteral("estop"));
     estop_->setStyleSheet(
@@ -337,6 +343,7 @@ void MainWindow::retranslate() {
     estopBanner_->setText(
         tr("EMERGENCY STOP LATCHED: the drive is off. Clear the cause, then Reset E-stop."));
     resetEstop_->setText(tr("Reset E-stop"));
+    safetyBar_->setWindowTitle(tr("Safety"));
     ack_->setText(tr("Acknowledge"));
     for (QAction* a : languages_->actions())
         a->setChecked(a->data().toString() == language_);
@@ -510,7 +517,13 @@ void MainWindow::resetLayout() {
     }
     plotDock_->raise();
     programDock_->raise();
-    resizeDocks({plotDock_}, {qMax(170, height() / 4)}, Qt::Vertical);
+    applyDefaultDockSizes();
+}
+
+void MainWindow::applyDefaultDockSizes() {
+    // The plots get what two 150-px plots need under their buttons; the form gets the rest.
+    resizeDocks({plotDock_}, {230}, Qt::Vertical);
+    resizeDocks({programDock_}, {std::max(240, width() * 3 / 10)}, Qt::Horizontal);
 }
 
 void MainWindow::startCompiled(std::shared_ptr<Program> program, std::size_t fromIndex) {

@@ -17,6 +17,7 @@ class QDockWidget;
 class QLabel;
 class QProgressBar;
 class QMenu;
+class QToolBar;
 class QToolButton;
 
 namespace trilho {
@@ -51,6 +52,7 @@ class MainWindow : public QMainWindow {
     void setConfirmer(Confirmer confirmer) { confirmer_ = std::move(confirmer); }
     /// The layout as first built (Windows > Reset layout).
     void resetLayout();
+    void applyDefaultDockSizes();
     void setTheme(Theme theme);
     QString language() const { return language_; }
 
@@ -134,6 +136,7 @@ class MainWindow : public QMainWindow {
         *classicDialect_;
     QActionGroup* languages_;
     QToolButton *estop_, *resetEstop_, *ack_;
+    QToolBar* safetyBar_;
     QLabel* stateLabel_;
     QLabel* hintLabel_;    ///< what to do next (after an alarm, before homing)
     QLabel* timingLabel_;  ///< late servo ticks and the longest period; unread history lines

@@ -91,8 +91,9 @@ void PlotPanel::retranslate() {
     setpointGraph_->setName(tr("setpoint"));
     positionGraph_->setName(tr("position"));
     position_->yAxis->setLabel(tr("position (mm)"));
-    error_->yAxis->setLabel(tr("following error (mm)"));
-    error_->yAxis2->setLabel(tr("drive (DAC code)"));
+    // Short axis titles: a 150-px plot clipped "following error (mm)"; the legend names them.
+    error_->yAxis->setLabel(tr("error (mm)"));
+    error_->yAxis2->setLabel(tr("DAC"));
     errorGraph_->setName(tr("following error (mm)"));
     driveGraph_->setName(tr("drive (DAC code)"));
     replot();

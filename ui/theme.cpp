@@ -56,6 +56,8 @@ void applyTheme(QApplication& app, Theme theme) {
         "QGroupBox#vbFrame { background-color: rgb(192,192,192); border: 2px groove white; "
         "margin-top: 1.2em; }"
         "QGroupBox#vbFrame::title { subcontrol-origin: margin; left: 8px; padding: 0 3px; }"
+        // The form's captions were bold, italic, underlined labels inside the silver boxes.
+        "QGroupBox#vbFrame { font-weight: bold; font-style: italic; text-decoration: underline; }"
         "QLabel#vbCaption { color: black; }"
         "QWidget#executionPanel > QLabel { color: black; font-weight: bold; }"));
 }

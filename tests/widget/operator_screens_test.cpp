@@ -6,14 +6,19 @@
 #include <QAbstractScrollArea>
 #include <QAction>
 #include <QComboBox>
+#include <QDir>
 #include <QDockWidget>
 #include <QFile>
+#include <QFileInfo>
+#include <QGroupBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QListView>
 #include <QMenu>
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSlider>
@@ -24,7 +29,9 @@
 #include <QTest>
 #include <QTimer>
 #include <QToolButton>
+#include <QTreeView>
 
+#include "core/machine/event_text.h"
 #include "translations/i18n.h"
 #include "ui/code_editor.h"
 #include "ui/dro_panel.h"
@@ -36,6 +43,7 @@
 #include "ui/plot_panel.h"
 #include "ui/program_panel.h"
 #include "ui/run_controls.h"
+#include "ui/select_file_dialog.h"
 #include "ui/theme.h"
 
 using namespace trilho;
@@ -396,6 +404,144 @@ class OperatorScreensTest : public QObject {
         link_->poll();
         QVERIFY(status().state != ControllerState::EStop);
         QVERIFY(questions_.isEmpty());
+    }
+
+    // ---- (8) no stale or untranslated text ----
+    void onlineStatusAndAlarmsLineFollowResetAndLanguage() {
+        QTest::keyClick(window_.get(), Qt::Key_F1);
+        QTRY_COMPARE(status().state, ControllerState::EStop);
+        QTRY_VERIFY(!panel()->alarms()->currentText().isEmpty());
+        const QString tripped = panel()->onlineStatusField()->text();
+        QVERIFY(!tripped.isEmpty());
+        link_->resetEmergencyStop();
+        QTRY_COMPARE(status().state, ControllerState::Manual);
+        QTRY_COMPARE(panel()->onlineStatusField()->text(), QStringLiteral("Manual"));
+        QVERIFY(panel()->alarms()->currentText().isEmpty());
+        QVERIFY(panel()->alarms()->count() > 0);  // the list keeps the alarm for reading
+        // An event's text follows a language switch.
+        goAutomatic();
+        QTRY_VERIFY(!panel()->onlineStatusField()->text().isEmpty());
+        const QString english = panel()->onlineStatusField()->text();
+        window_->setLanguage(QStringLiteral("pt_BR"));
+        QTRY_COMPARE(panel()->onlineStatusField()->text(), onlineStatus(status().lastStatus));
+        QVERIFY(panel()->onlineStatusField()->text() != english);
+        window_->setLanguage(QStringLiteral("en"));
+    }
+
+    void historyKindIsTranslated() {
+        window_->setLanguage(QStringLiteral("pt_BR"));
+        goAutomatic();
+        QTableWidget* table = window_->history()->table();
+        QTRY_VERIFY(table->rowCount() > 0);
+        QCOMPARE(table->item(0, 1)->text(), QStringLiteral("estado"));
+        window_->setLanguage(QStringLiteral("es"));
+        QTRY_COMPARE(table->item(0, 1)->text(), QStringLiteral("estado"));
+        QTest::keyClick(window_.get(), Qt::Key_F1);
+        QTRY_VERIFY([&] {
+            for (int r = 0; r < table->rowCount(); ++r)
+                if (table->item(r, 1)->text() == QLatin1String("alarma")) return true;
+            return false;
+        }());
+        window_->setLanguage(QStringLiteral("en"));
+    }
+
+    void qtsOwnButtonsAreTranslated() {
+        const std::pair<const char*, const char*> expected[] = {{"pt_BR", "&Sim"}, {"es", "&Sí"}};
+        for (const auto& [lang, yes] : expected) {
+            window_->setLanguage(QString::fromLatin1(lang));
+            QMessageBox box(QMessageBox::Question, QStringLiteral("t"), QStringLiteral("x"),
+                            QMessageBox::Yes | QMessageBox::No);
+            QCOMPARE(box.button(QMessageBox::Yes)->text(), QString::fromUtf8(yes));
+        }
+        window_->setLanguage(QStringLiteral("en"));
+    }
+
+    void noEnglishLeftOnTheMainScreen() {
+        // Every caption of the main screen, its menus and docks, in English first.
+        auto captions = [this] {
+            QMap<QObject*, QString> out;
+            for (QLabel* l : window_->findChildren<QLabel*>())
+                out[l] = l->text();
+            for (QAbstractButton* b : window_->findChildren<QAbstractButton*>())
+                out[b] = b->text();
+            for (QGroupBox* g : window_->findChildren<QGroupBox*>())
+                out[g] = g->title();
+            for (QDockWidget* d : window_->findChildren<QDockWidget*>())
+                out[d] = d->windowTitle();
+            for (QAction* a : window_->findChildren<QAction*>())
+                out[a] = a->text();
+            return out;
+        };
+        const QMap<QObject*, QString> english = captions();
+        // Same in every language: units, G-code words, numbers, names, the 1996 "Status".
+        static const QRegularExpression same(
+            QStringLiteral("^(|[-+0-9.,: %/x=<>()|]*|mm.*|G9[0-9].*|DAC|Status :|Setpoint "
+                           ":|Integral :|Error :|&?Manual( .*)?|English|Português "
+                           "\\(Brasil\\)|Español|F[0-9]+|setpoint)$"));
+        QStringList left;
+        for (const char* lang : {"pt_BR", "es"}) {
+            window_->setLanguage(QString::fromLatin1(lang));
+            QCoreApplication::processEvents();
+            const QMap<QObject*, QString> now = captions();
+            for (auto it = english.begin(); it != english.end(); ++it) {
+                const QString text = now.value(it.key());
+                static const QRegularExpression word(QStringLiteral("[A-Za-z]{2}"));
+                if (text != it.value() || same.match(text).hasMatch() || !text.contains(word))
+                    continue;
+                left << QStringLiteral("'%1' in %2").arg(text, QString::fromLatin1(lang));
+            }
+        }
+        window_->setLanguage(QStringLiteral("en"));
+        QVERIFY2(left.isEmpty(), qPrintable(left.join(QStringLiteral(", "))));
+    }
+
+    // ---- (9) the Select dialog: Enter, keys, a path field ----
+    void selectDialogOpensWithEnterAndNavigatesByKeys() {
+        SelectFileDialog dialog(QStringLiteral(TRILHO_PROGRAMS_DIR));
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        QVERIFY(!dialog.exitButton()->isDefault());
+        QVERIFY(!dialog.exitButton()->autoDefault());
+        QCOMPARE(dialog.fileList()->textElideMode(), Qt::ElideNone);
+        QCOMPARE(QDir(dialog.pathField()->text()), QDir(QStringLiteral(TRILHO_PROGRAMS_DIR)));
+        QListView* list = dialog.fileList();
+        QModelIndex found;
+        QTRY_VERIFY_WITH_TIMEOUT(
+            [&] {
+                for (int r = 0; r < list->model()->rowCount(list->rootIndex()); ++r) {
+                    const QModelIndex i = list->model()->index(r, 0, list->rootIndex());
+                    if (i.data().toString() == QLatin1String("ciclo_carga.G")) found = i;
+                }
+                return found.isValid();
+            }(),
+            10000);
+        // Up in the folder tree goes to the parent folder, as a click would.
+        QTreeView* tree = dialog.folderTree();
+        tree->setFocus();
+        QTest::keyClick(tree, Qt::Key_Left);  // collapse, then
+        QTest::keyClick(tree, Qt::Key_Left);  // to the parent
+        QTRY_COMPARE(QDir(dialog.currentFolder()), QDir(QStringLiteral(TRILHO_PROGRAMS_DIR "/..")));
+        // A folder typed in the path field, then Enter on a file, opens it.
+        dialog.pathField()->setFocus();
+        dialog.pathField()->setText(QStringLiteral(TRILHO_PROGRAMS_DIR));
+        QTest::keyClick(dialog.pathField(), Qt::Key_Return);
+        QTRY_COMPARE(QDir(dialog.currentFolder()), QDir(QStringLiteral(TRILHO_PROGRAMS_DIR)));
+        QVERIFY(dialog.isVisible());
+        QTRY_VERIFY_WITH_TIMEOUT(
+            [&] {
+                found = {};
+                for (int r = 0; r < list->model()->rowCount(list->rootIndex()); ++r) {
+                    const QModelIndex i = list->model()->index(r, 0, list->rootIndex());
+                    if (i.data().toString() == QLatin1String("ciclo_carga.G")) found = i;
+                }
+                return found.isValid();
+            }(),
+            10000);
+        list->setFocus();
+        list->setCurrentIndex(found);
+        QTest::keyClick(list, Qt::Key_Return);
+        QCOMPARE(dialog.result(), int(QDialog::Accepted));
+        QCOMPARE(QFileInfo(dialog.selectedFile()).fileName(), QStringLiteral("ciclo_carga.G"));
     }
 
     // ---- (7) legible at 1366x768, 1024x768 and 1280x720 ----
