@@ -552,6 +552,10 @@
         <source>Error :</source>
         <translation>Error :</translation>
     </message>
+    <message>
+        <source>line %1</source>
+        <translation>línea %1</translation>
+    </message>
 </context>
 <context>
     <name>trilho::ui::HistoryPanel</name>
@@ -761,10 +765,6 @@
         <translation>&amp;Teclas</translation>
     </message>
     <message>
-        <source>Program</source>
-        <translation>Programa</translation>
-    </message>
-    <message>
         <source>Plots</source>
         <translation>Gráficos</translation>
     </message>
@@ -847,6 +847,10 @@
     <message>
         <source> (first programmed move to x = %1 mm)</source>
         <translation> (primer movimiento programado a x = %1 mm)</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Programa</translation>
     </message>
     <message>
         <source>There are compile error(s)!</source>
@@ -997,6 +1001,10 @@
     <message>
         <source>Saves atomically: a crash never leaves half a file</source>
         <translation>Guarda de forma atómica: un fallo nunca deja medio archivo</translation>
+    </message>
+    <message>
+        <source>No program is selected: there is no file to save to.</source>
+        <translation>Ningún programa seleccionado: no hay archivo donde guardar.</translation>
     </message>
     <message>
         <source>cannot save &apos;%1&apos;: %2</source>

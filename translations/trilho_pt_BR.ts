@@ -552,6 +552,10 @@
         <source>Error :</source>
         <translation>Erro :</translation>
     </message>
+    <message>
+        <source>line %1</source>
+        <translation>linha %1</translation>
+    </message>
 </context>
 <context>
     <name>trilho::ui::HistoryPanel</name>
@@ -761,10 +765,6 @@
         <translation>&amp;Teclas</translation>
     </message>
     <message>
-        <source>Program</source>
-        <translation>Programa</translation>
-    </message>
-    <message>
         <source>Plots</source>
         <translation>Gráficos</translation>
     </message>
@@ -847,6 +847,10 @@
     <message>
         <source> (first programmed move to x = %1 mm)</source>
         <translation> (primeiro movimento programado para x = %1 mm)</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Programa</translation>
     </message>
     <message>
         <source>There are compile error(s)!</source>
@@ -997,6 +1001,10 @@
     <message>
         <source>Saves atomically: a crash never leaves half a file</source>
         <translation>Salva de forma atômica: uma falha nunca deixa meio arquivo</translation>
+    </message>
+    <message>
+        <source>No program is selected: there is no file to save to.</source>
+        <translation>Nenhum programa selecionado: não há arquivo onde salvar.</translation>
     </message>
     <message>
         <source>cannot save &apos;%1&apos;: %2</source>

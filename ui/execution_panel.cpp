@@ -32,7 +32,12 @@ Layout* tight(Layout* l) {
     return l;
 }
 QString mm(double v, int decimals = 2) {
-    return QString::number(v, 'f', decimals);
+    const QString text = QString::number(v, 'f', decimals);
+    // Never "-0" or "-0.0": a value that rounds to zero is shown without a sign.
+    return text.toDouble() == 0.0 ? QString::number(0.0, 'f', decimals) : text;
+}
+double deadBand(double v, double band) {
+    return std::abs(v) < band ? 0.0 : v;
 }
 }  // namespace
 
@@ -313,8 +318,15 @@ void ExecutionPanel::markGainInvalid(int which, bool invalid) {
 void ExecutionPanel::showStatus(const ControllerStatus& s) {
     if (s.automatic != automatic_) setAutomaticMode(s.automatic);
     position_->setText(mm(s.servo.positionMm));
-    speed_->setText(mm(s.servo.velocityMmS, 1));
-    acceleration_->setText(mm(s.servo.accelerationMmS2, 0));
+    // What is displayed is filtered and quantised (the control uses the raw estimates): at rest
+    // the counter's quantisation made both fields flicker around "-0".
+    constexpr double kSmoothing = 0.3;  // per 50 Hz frame: about 60 ms
+    shownSpeed_ += kSmoothing * (s.servo.velocityMmS - shownSpeed_);
+    shownAcceleration_ += kSmoothing * (s.servo.accelerationMmS2 - shownAcceleration_);
+    const bool still = std::abs(s.servo.velocityMmS) < 0.5 && s.servo.mode != ServoMode::Move;
+    if (still) shownSpeed_ = 0.0, shownAcceleration_ = 0.0;
+    speed_->setText(mm(deadBand(shownSpeed_, 0.5), 1));
+    acceleration_->setText(mm(deadBand(shownAcceleration_, 20.0), 0));
     continue_->setEnabled(s.state == ControllerState::Paused && s.pause == PauseReason::M00);
     const bool moving = s.servo.mode == ServoMode::Move;
     if (moving || s.state == ControllerState::Running) {
@@ -330,10 +342,14 @@ void ExecutionPanel::showStatus(const ControllerStatus& s) {
     }
     real_->setValue(s.servo.positionMm);
     error_->setValue(std::abs(gaugeTarget_ - s.servo.positionMm));
-    if (s.blockN >= 0 &&
-        (s.state == ControllerState::Running || s.state == ControllerState::Waiting ||
-         s.state == ControllerState::Paused))
+    const bool executing = s.state == ControllerState::Running ||
+                           s.state == ControllerState::Waiting ||
+                           s.state == ControllerState::Paused;
+    // The block's N as the VB showed it; a block without N shows its source line instead.
+    if (executing && s.blockN >= 0)
         line_->setText(QStringLiteral("%1").arg(s.blockN, 4, 10, QLatin1Char('0')));
+    else if (executing && s.blockLine > 0)
+        line_->setText(tr("line %1").arg(s.blockLine));
 }
 
 }  // namespace ui

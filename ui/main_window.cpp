@@ -281,6 +281,8 @@ void MainWindow::buildDocks() {
     tabifyDockWidget(programDock_, jogDock_);
     programDock_->raise();
 
+    // The unsaved marker: "name *" in the Program field and the dock's title.
+    connect(program_, &ProgramPanel::dirtyChanged, this, [this] { showProgramName(); });
     connect(program_, &ProgramPanel::startFromCursorRequested, this, [this] {
         compileEditor(true, [this](std::shared_ptr<Program> p) {
             const auto from =
@@ -332,7 +334,7 @@ void MainWindow::retranslate() {
     resetLayout_->setText(tr("&Reset layout"));
     helpMenu_->setTitle(tr("&Help"));
     keys_->setText(tr("&Keys"));
-    programDock_->setWindowTitle(tr("Program"));
+    showProgramName();
     plotDock_->setWindowTitle(tr("Plots"));
     jogDock_->setWindowTitle(tr("Jog"));
     historyDock_->setWindowTitle(tr("History"));
@@ -384,7 +386,7 @@ bool MainWindow::selectProgram(const QString& path) {
         return false;
     }
     selectedFile_ = path;
-    panel_->setProgramName(QFileInfo(path).fileName());
+    showProgramName();
     settings_.setValue(QStringLiteral("lastProgram"), path);
     settings_.setValue(QStringLiteral("lastFolder"), QFileInfo(path).absolutePath());
     return true;
@@ -506,6 +508,13 @@ void MainWindow::stopKey() {
         link_.manualStop();
         link_.jogStop();
     }
+}
+
+void MainWindow::showProgramName() {
+    const QString mark = program_->dirty() ? QStringLiteral(" *") : QString();
+    if (!selectedFile_.isEmpty())
+        panel_->setProgramName(QFileInfo(selectedFile_).fileName() + mark);
+    programDock_->setWindowTitle(tr("Program") + mark);
 }
 
 void MainWindow::resetLayout() {
@@ -709,10 +718,13 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
 
 void MainWindow::closeEvent(QCloseEvent* e) {
     if (program_->dirty()) {
-        const auto answer =
-            QMessageBox::question(this, tr("Unsaved program"),
-                                  tr("The program has unsaved changes. Save them before leaving?"),
-                                  QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+        // Without a file there is nothing to save to: only discard or stay.
+        const auto buttons = program_->path().isEmpty()
+                                 ? QMessageBox::Discard | QMessageBox::Cancel
+                                 : QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel;
+        const auto answer = QMessageBox::question(
+            this, tr("Unsaved program"),
+            tr("The program has unsaved changes. Save them before leaving?"), buttons);
         if (answer == QMessageBox::Cancel) return e->ignore();
         QString error;
         if (answer == QMessageBox::Save && !program_->save(&error)) {

@@ -103,6 +103,7 @@ class MainWindow : public QMainWindow {
     /// The online status box's text, as a function so it follows the language and the state.
     void setOnline(std::function<QString()> text);
     void refreshOnline();
+    void showProgramName();  ///< the file's name, with " *" while the editor has unsaved changes
 
   public:
     bool compiling() const { return compiling_; }

@@ -82,7 +82,10 @@ bool ProgramPanel::load(const QString& path, QString* error) {
 }
 
 bool ProgramPanel::save(QString* error) {
-    if (path_.isEmpty()) return false;
+    if (path_.isEmpty()) {
+        if (error) *error = tr("No program is selected: there is no file to save to.");
+        return false;
+    }
     QSaveFile f(path_);
     if (!f.open(QIODevice::WriteOnly) || f.write(editor_->toPlainText().toUtf8()) < 0 ||
         !f.commit()) {

@@ -11,11 +11,13 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QGroupBox>
+#include <QImage>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListView>
 #include <QMenu>
 #include <QMessageBox>
+#include <QPlainTextEdit>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QRegularExpression>
@@ -37,6 +39,7 @@
 #include "ui/dro_panel.h"
 #include "ui/execution_panel.h"
 #include "ui/history_panel.h"
+#include "ui/jog_panel.h"
 #include "ui/keys_dialog.h"
 #include "ui/machine_link.h"
 #include "ui/main_window.h"
@@ -542,6 +545,54 @@ class OperatorScreensTest : public QObject {
         QTest::keyClick(list, Qt::Key_Return);
         QCOMPARE(dialog.result(), int(QDialog::Accepted));
         QCOMPARE(QFileInfo(dialog.selectedFile()).fileName(), QStringLiteral("ciclo_carga.G"));
+    }
+
+    // ---- (10) small defects ----
+    void aProgramWithoutNShowsItsLineAndCleanHistory() {
+        goAutomatic();
+        QVERIFY(window_->selectProgram(writeProgram("non.G", "G0 X50\nG4 X2\nM2\n")));
+        window_->executeAction()->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(status().dwellRemainingS > 0.5, 10000);
+        QTRY_COMPARE(panel()->lineField()->text(), QStringLiteral("line 2"));
+        for (int i = 0; i < panel()->statusList()->count(); ++i)
+            QVERIFY2(!panel()->statusList()->itemText(i).startsWith(QLatin1String(":")),
+                     qPrintable(panel()->statusList()->itemText(i)));
+    }
+
+    void speedAndAccelerationReadZeroAtRest() {
+        for (int i = 0; i < 20; ++i) {  // twenty frames at rest, each must read plain zero
+            link_->poll();
+            QCoreApplication::processEvents();
+            QCOMPARE(panel()->speedField()->text(), QStringLiteral("0.0"));
+            QCOMPARE(panel()->accelerationField()->text(), QStringLiteral("0"));
+        }
+    }
+
+    void unsavedChangesAreMarkedAndSavingWithoutAFileSaysWhy() {
+        QString error;
+        QVERIFY(!window_->programPanel()->save(&error));
+        QVERIFY(!error.isEmpty());
+        QVERIFY(window_->selectProgram(writeProgram("u.G", "G0 X1\nM2\n")));
+        QCOMPARE(panel()->programField()->text(), QStringLiteral("u.G"));
+        window_->programPanel()->editor()->appendPlainText(QStringLiteral("( edited )"));
+        QTRY_COMPARE(panel()->programField()->text(), QStringLiteral("u.G *"));
+        QVERIFY(window_->programPanel()->save(&error));
+        QTRY_COMPARE(panel()->programField()->text(), QStringLiteral("u.G"));
+    }
+
+    void jogSpeedIsInMillimetresPerSecond() {
+        const double rapid = link_->profile().motion.rapidSpeedMmS;
+        const auto expected = std::lround(window_->jog()->jogFraction() * rapid);
+        QCOMPARE(window_->jog()->speedLabel()->text(),
+                 QStringLiteral("Jog speed %1 mm/s").arg(expected));
+    }
+
+    void exportPngHoldsBothPlots() {
+        QTRY_VERIFY(window_->plots()->sampleCount() > 5);
+        const QString path = dir_.filePath(QStringLiteral("plots.png"));
+        QVERIFY(window_->plots()->exportPng(path));
+        const QImage image(path);
+        QVERIFY(image.width() >= 2 * window_->plots()->positionPlot()->width() - 2);
     }
 
     // ---- (7) legible at 1366x768, 1024x768 and 1280x720 ----
