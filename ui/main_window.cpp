@@ -132,8 +132,8 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     restoreGeometry(settings_.value(QStringLiteral("geometry")).toByteArray());
     // Dock sizes come back with the saved state; the first time, the default sizes apply once
     // the window has its size (the plots at least 150 px high at 1366x768).
-    if (!restoreState(settings_.value(QStringLiteral("windowState")).toByteArray()))
-        QTimer::singleShot(0, this, &MainWindow::applyDefaultDockSizes);
+    defaultSizesPending_ =
+        !restoreState(settings_.value(QStringLiteral("windowState")).toByteArray());
     const QString lastProgram = settings_.value(QStringLiteral("lastProgram")).toString();
     if (!lastProgram.isEmpty() && QFileInfo::exists(lastProgram)) selectProgram(lastProgram);
 }
@@ -263,7 +263,9 @@ void MainWindow::buildDocks() {
     rail_ = new RailView(link_.profile(), this);
     history_->setJournalPath(link_.journalPath());
     programDock_ = dock(program_, "programDock", Qt::RightDockWidgetArea);
-    railDock_ = dock(rail_, "railDock", Qt::RightDockWidgetArea);
+    // The rail beside the plots, at the bottom: in the right column it held the window's middle
+    // (and so the Plots dock) at its full height on a 768-line screen.
+    railDock_ = dock(rail_, "railDock", Qt::BottomDockWidgetArea);
     jogDock_ = dock(jogPanel_, "jogDock", Qt::RightDockWidgetArea);
     plotDock_ = dock(plots_, "plotDock", Qt::BottomDockWidgetArea);
     historyDock_ = dock(history_, "historyDock", Qt::BottomDockWidgetArea);
@@ -273,6 +275,7 @@ void MainWindow::buildDocks() {
     simulationScroll->setWidgetResizable(true);
     simulationScroll->setFrameShape(QFrame::NoFrame);
     simulationDock_ = dock(simulationScroll, "simulationDock", Qt::BottomDockWidgetArea);
+    splitDockWidget(plotDock_, railDock_, Qt::Horizontal);  // before the tabs, or it is a tab
     tabifyDockWidget(plotDock_, historyDock_);
     tabifyDockWidget(historyDock_, simulationDock_);
     connect(simulation_, &SimulationPanel::faultsChanged, &link_, &MachineLink::setFaults);
@@ -529,9 +532,20 @@ void MainWindow::resetLayout() {
     applyDefaultDockSizes();
 }
 
+void MainWindow::showEvent(QShowEvent* e) {
+    QMainWindow::showEvent(e);
+    // Default dock sizes need the window's own size: applied once it is shown and laid out.
+    if (defaultSizesPending_) {
+        defaultSizesPending_ = false;
+        QTimer::singleShot(0, this, &MainWindow::applyDefaultDockSizes);
+    }
+}
+
 void MainWindow::applyDefaultDockSizes() {
     // The plots get what two 150-px plots need under their buttons; the form gets the rest.
+    layout()->activate();  // the docks' current sizes first, or the request is dropped
     resizeDocks({plotDock_}, {230}, Qt::Vertical);
+    resizeDocks({railDock_}, {std::max(300, width() / 4)}, Qt::Horizontal);
     resizeDocks({programDock_}, {std::max(240, width() * 3 / 10)}, Qt::Horizontal);
 }
 

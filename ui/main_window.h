@@ -78,10 +78,12 @@ class MainWindow : public QMainWindow {
     QAction* executeAction() const { return execute_; }
     QAction* selectAction() const { return select_; }
     QAction* classicDialectAction() const { return classicDialect_; }
+    QAction* classicLawAction() const { return classicLaw_; }
     QToolButton* emergencyButton() const { return estop_; }
 
   protected:
     void closeEvent(QCloseEvent* e) override;
+    void showEvent(QShowEvent* e) override;
     void changeEvent(QEvent* e) override;
     bool eventFilter(QObject* watched, QEvent* event) override;
 
@@ -127,6 +129,7 @@ class MainWindow : public QMainWindow {
     DroPanel* dro_;
     QLabel* estopBanner_;
     QByteArray defaultLayout_;
+    bool defaultSizesPending_ = false;  ///< no saved layout: default dock sizes at first show
     Confirmer confirmer_;
     std::function<QString()> online_;
     QDockWidget *programDock_, *plotDock_, *jogDock_, *historyDock_, *railDock_, *simulationDock_;

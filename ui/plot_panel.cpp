@@ -9,6 +9,7 @@
 #include <QSaveFile>
 #include <QSpinBox>
 #include <QVBoxLayout>
+#include <cmath>
 
 namespace trilho {
 namespace ui {
@@ -125,7 +126,11 @@ void PlotPanel::addSample(const ControllerStatus& s) {
     const double keepFrom = t - 600.0;
     for (QCPGraph* g : {setpointGraph_, positionGraph_, errorGraph_, driveGraph_})
         g->data()->removeBefore(keepFrom);
-    if (!paused_) replot();
+    // Moving, the plots scroll at the sample rate (25 Hz); at rest, flat lines scroll at 5 Hz:
+    // two plots side by side are more pixels, and an idle screen must stay cheap.
+    const bool active = s.servo.mode == ServoMode::Move || std::abs(s.servo.velocityMmS) > 0.5 ||
+                        std::abs(s.servo.errorMm) > 0.05;
+    if (!paused_ && (active || ++restFrames_ % 5 == 0)) replot();
 }
 
 void PlotPanel::replot() {

@@ -35,6 +35,10 @@ ProgramPanel::ProgramPanel(QWidget* parent) : QWidget(parent) {
     split->addWidget(list_);
     split->setStretchFactor(0, 4);
     split->setStretchFactor(1, 1);
+    // Small minimums: the right docks must not hold the window's middle (and so the Plots
+    // dock) at their natural height on a 768-line screen.
+    editor_->setMinimumHeight(editor_->fontMetrics().lineSpacing() * 3 + 8);
+    list_->setMinimumHeight(list_->fontMetrics().lineSpacing() * 2 + 6);
     auto* v = new QVBoxLayout(this);
     v->addLayout(buttons);
     v->addWidget(split);

@@ -10,10 +10,10 @@ namespace ui {
 
 RailView::RailView(const MachineProfile& profile, QWidget* parent)
     : QWidget(parent), profile_(profile) {
-    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
     // Room for the position caption above and the switch captions below the rail (80 px cut
-    // the captions off).
-    setFixedHeight(std::max(96, 2 * fontMetrics().height() + 64));
+    // the captions off). Not a fixed height: beside the plots it must let their dock grow.
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
+    setMinimumHeight(std::max(96, 2 * fontMetrics().height() + 64));
 }
 
 void RailView::setState(double positionMm, double targetMm, std::uint8_t switches, bool moving) {
@@ -37,7 +37,9 @@ void RailView::paintEvent(QPaintEvent*) {
     QPainter p(this);
     p.setRenderHint(QPainter::Antialiasing);
     p.fillRect(rect(), palette().base());
-    const double y = height() * 0.55;
+    // The drawing keeps its minimum height, centred in whatever height the dock gives.
+    p.translate(0, (height() - minimumHeight()) / 2);
+    const double y = minimumHeight() * 0.55;
     const auto& pl = profile_.plant;
     // Soft limits as a lighter band.
     p.fillRect(QRectF(QPointF(toX(profile_.limits.x.softMinMm), y - 6),

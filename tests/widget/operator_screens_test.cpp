@@ -595,6 +595,32 @@ class OperatorScreensTest : public QObject {
         QVERIFY(image.width() >= 2 * window_->plots()->positionPlot()->width() - 2);
     }
 
+    void theActiveLawIsSaidOnTheMainScreenWithTheFormsGains() {
+        QTRY_VERIFY(
+            window_->dro()->modalState()->text().contains(QStringLiteral("engineered law")));
+        window_->classicLawAction()->trigger();
+        QTRY_VERIFY(window_->dro()->modalState()->text().contains(QStringLiteral("classic law")));
+        // The 1996 form's gains: Proporcional 0.2, Derivativa 1, Integrativa 0.0005.
+        QTRY_COMPARE(panel()->gainField(0)->text(), QStringLiteral("0.2"));
+        QCOMPARE(panel()->gainField(1)->text(), QStringLiteral("1"));
+        QCOMPARE(panel()->gainField(2)->text(), QStringLiteral("0.0005"));
+    }
+
+    void thePlotsDockCanBeEnlarged() {
+        auto* plots = window_->findChild<QDockWidget*>(QStringLiteral("plotDock"));
+        settle();
+        window_->resizeDocks({plots}, {230}, Qt::Vertical);
+        settle();
+        const int before = plots->height();
+        QVERIFY2(before <= 240, qPrintable(QString::number(before)));
+        window_->resizeDocks({plots}, {300}, Qt::Vertical);  // the form's scroll area gives way
+        settle();
+        QVERIFY2(plots->height() >= 260,
+                 qPrintable(QStringLiteral("%1 -> %2").arg(before).arg(plots->height())));
+        QVERIFY(window_->height() <= 768);
+        QVERIFY(window_->runControls()->isVisible());
+    }
+
     // ---- (7) legible at 1366x768, 1024x768 and 1280x720 ----
     void layoutIsUsable_data() {
         QTest::addColumn<int>("w");
