@@ -545,7 +545,7 @@ void MainWindow::applyDefaultDockSizes() {
     // The plots get what two 150-px plots need under their buttons; the form gets the rest.
     layout()->activate();  // the docks' current sizes first, or the request is dropped
     resizeDocks({plotDock_}, {230}, Qt::Vertical);
-    resizeDocks({railDock_}, {std::max(300, width() / 4)}, Qt::Horizontal);
+    resizeDocks({plotDock_, railDock_}, {width() * 7 / 10, width() * 3 / 10}, Qt::Horizontal);
     resizeDocks({programDock_}, {std::max(240, width() * 3 / 10)}, Qt::Horizontal);
 }
 
