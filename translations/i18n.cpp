@@ -1,6 +1,7 @@
 #include "translations/i18n.h"
 
 #include <QCoreApplication>
+#include <QLibraryInfo>
 #include <QTranslator>
 
 #include "app/common/data_paths.h"
@@ -8,6 +9,11 @@
 namespace trilho {
 namespace {
 QTranslator*& current() {
+    static QTranslator* translator = nullptr;
+    return translator;
+}
+/// Qt's own texts (the Yes/No/Cancel buttons, the file dialogs) in the same language.
+QTranslator*& currentQt() {
     static QTranslator* translator = nullptr;
     return translator;
 }
@@ -24,7 +30,21 @@ bool installLanguage(const QString& lang) {
         delete current();
         current() = nullptr;
     }
+    if (currentQt()) {
+        QCoreApplication::removeTranslator(currentQt());
+        delete currentQt();
+        currentQt() = nullptr;
+    }
     if (lang == QLatin1String("en")) return true;
+    // Optional: without the qt6-translations-l10n package Qt's buttons stay English.
+    auto* qt = new QTranslator(QCoreApplication::instance());
+    if (qt->load(QStringLiteral("qtbase_%1").arg(lang),
+                 QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
+        QCoreApplication::installTranslator(qt);
+        currentQt() = qt;
+    } else {
+        delete qt;
+    }
     auto* translator = new QTranslator(QCoreApplication::instance());
     if (!translator->load(QStringLiteral("trilho_%1").arg(lang), translationsDir())) {
         delete translator;

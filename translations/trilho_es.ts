@@ -483,6 +483,53 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::DroPanel</name>
+    <message>
+        <source>Machine X</source>
+        <translation>X máquina</translation>
+    </message>
+    <message>
+        <source>To go</source>
+        <translation>Falta</translation>
+    </message>
+    <message>
+        <source>Program X</source>
+        <translation>X programa</translation>
+    </message>
+    <message>
+        <source>zero %1 mm</source>
+        <translation>cero %1 mm</translation>
+    </message>
+    <message>
+        <source>F %1 %</source>
+        <translation>F %1 %</translation>
+    </message>
+    <message>
+        <source>override %1 %</source>
+        <translation>corrección %1 %</translation>
+    </message>
+    <message>
+        <source>classic law</source>
+        <translation>ley clásica</translation>
+    </message>
+    <message>
+        <source>engineered law</source>
+        <translation>ley moderna</translation>
+    </message>
+    <message>
+        <source>Cycle %1:%2</source>
+        <translation>Ciclo %1:%2</translation>
+    </message>
+    <message>
+        <source>Dwell %1 s</source>
+        <translation>Espera %1 s</translation>
+    </message>
+    <message>
+        <source>Block %1 / %2</source>
+        <translation>Bloque %1 / %2</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::ExecutionPanel</name>
     <message>
         <source>Alarms :</source>
@@ -572,12 +619,28 @@
         <source>Error :</source>
         <translation>Error :</translation>
     </message>
+    <message>
+        <source>line %1</source>
+        <translation>línea %1</translation>
+    </message>
 </context>
 <context>
     <name>trilho::ui::HistoryPanel</name>
     <message>
         <source>Export history</source>
         <translation>Exportar historial</translation>
+    </message>
+    <message>
+        <source>alarm</source>
+        <translation>alarma</translation>
+    </message>
+    <message>
+        <source>acknowledged</source>
+        <translation>reconocido</translation>
+    </message>
+    <message>
+        <source>status</source>
+        <translation>estado</translation>
     </message>
     <message>
         <source>Time</source>
@@ -607,14 +670,6 @@
 <context>
     <name>trilho::ui::JogPanel</name>
     <message>
-        <source>Feed override %1 %</source>
-        <translation>Corrección de avance %1 %</translation>
-    </message>
-    <message>
-        <source>Jog speed %1 %</source>
-        <translation>Velocidad de jog %1 %</translation>
-    </message>
-    <message>
         <source>◀ hold to jog</source>
         <translation>◀ mantenga para mover</translation>
     </message>
@@ -623,28 +678,63 @@
         <translation>mantenga para mover ▶</translation>
     </message>
     <message>
+        <source>Jog speed %1 mm/s</source>
+        <translation>Velocidad manual %1 mm/s</translation>
+    </message>
+    <message>
         <source>Step</source>
         <translation>Paso</translation>
     </message>
+</context>
+<context>
+    <name>trilho::ui::KeysDialog</name>
     <message>
-        <source>Single block</source>
-        <translation>Bloque a bloque</translation>
+        <source>EMERGENCY STOP, in every window, menu and dialog</source>
+        <translation>PARADA DE EMERGENCIA, en cualquier ventana, menú o diálogo</translation>
     </message>
     <message>
-        <source>Hold</source>
-        <translation>Pausar</translation>
+        <source>Stop (a controlled stop) when no menu, list or dialog is open; otherwise it only closes it</source>
+        <translation>Detener (parada controlada) cuando no hay menú, lista ni diálogo abierto; si lo hay, solo lo cierra</translation>
     </message>
     <message>
-        <source>Resume</source>
-        <translation>Reanudar</translation>
+        <source>STOP: the manual PARA, or Stop in automatic (not in the editor)</source>
+        <translation>PARA: el PARA manual, o Detener en automático (no en el editor)</translation>
     </message>
     <message>
-        <source>Stop</source>
-        <translation>Detener</translation>
+        <source>Manual mode: left</source>
+        <translation>Modo manual: izquierda</translation>
+    </message>
+    <message>
+        <source>Manual mode: right</source>
+        <translation>Modo manual: derecha</translation>
+    </message>
+    <message>
+        <source>Keys</source>
+        <translation>Teclas</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>Tecla</translation>
+    </message>
+    <message>
+        <source>Action</source>
+        <translation>Acción</translation>
     </message>
 </context>
 <context>
     <name>trilho::ui::MainWindow</name>
+    <message>
+        <source>line %1</source>
+        <translation>línea %1</translation>
+    </message>
+    <message>
+        <source>Start from the selected block</source>
+        <translation>Ejecutar desde el bloque seleccionado</translation>
+    </message>
+    <message>
+        <source>Start %1 from block %2? The rail moves at once, at rapid speed, %3.</source>
+        <translation>¿Iniciar %1 desde el bloque %2? El carril se mueve en seguida, a velocidad rápida, %3.</translation>
+    </message>
     <message>
         <source>Didactic D.N.C. system for the automatic rail</source>
         <translation>Sistema D.N.C. didáctico para riel automático</translation>
@@ -730,16 +820,24 @@
         <translation>&amp;Ventanas</translation>
     </message>
     <message>
-        <source>Program</source>
-        <translation>Programa</translation>
+        <source>&amp;Reset layout</source>
+        <translation>&amp;Restablecer disposición</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>A&amp;yuda</translation>
+    </message>
+    <message>
+        <source>&amp;Keys</source>
+        <translation>&amp;Teclas</translation>
     </message>
     <message>
         <source>Plots</source>
         <translation>Gráficos</translation>
     </message>
     <message>
-        <source>Jog and run</source>
-        <translation>Movimiento y ejecución</translation>
+        <source>Jog</source>
+        <translation>Avance manual</translation>
     </message>
     <message>
         <source>History</source>
@@ -754,12 +852,24 @@
         <translation>Simulación</translation>
     </message>
     <message>
-        <source>E-STOP (Esc)</source>
-        <translation>EMERGENCIA (Esc)</translation>
+        <source>E-STOP LATCHED</source>
+        <translation>EMERGENCIA ACTIVADA</translation>
+    </message>
+    <message>
+        <source>E-STOP (Pause, F1)</source>
+        <translation>EMERGENCIA (Pausa, F1)</translation>
+    </message>
+    <message>
+        <source>EMERGENCY STOP LATCHED: the drive is off. Clear the cause, then Reset E-stop.</source>
+        <translation>PARADA DE EMERGENCIA ENCLAVADA: el accionamiento está apagado. Elimine la causa y luego Liberar emergencia.</translation>
     </message>
     <message>
         <source>Reset E-stop</source>
         <translation>Liberar emergencia</translation>
+    </message>
+    <message>
+        <source>Safety</source>
+        <translation>Seguridad</translation>
     </message>
     <message>
         <source>Acknowledge</source>
@@ -786,8 +896,40 @@
         <translation>¡Compilación terminada!</translation>
     </message>
     <message>
+        <source>Cycle start</source>
+        <translation>Inicio de ciclo</translation>
+    </message>
+    <message>
+        <source>Execute %1? The rail moves %2, then runs the program.%3</source>
+        <translation>¿Ejecutar %1? El carril se mueve %2 y luego ejecuta el programa.%3</translation>
+    </message>
+    <message>
+        <source> Its position is not known: it homes first (to the end switches and back).</source>
+        <translation> Su posición no se conoce: primero busca la referencia (hasta los finales de carrera y vuelta).</translation>
+    </message>
+    <message>
+        <source>from x = %1 mm to x = %2 mm</source>
+        <translation>de x = %1 mm a x = %2 mm</translation>
+    </message>
+    <message>
+        <source> (first programmed move to x = %1 mm)</source>
+        <translation> (primer movimiento programado a x = %1 mm)</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Programa</translation>
+    </message>
+    <message>
         <source>There are compile error(s)!</source>
         <translation>¡Hay error(es) de compilación!</translation>
+    </message>
+    <message>
+        <source>Late ticks: %1 (longest %2 ms)</source>
+        <translation>Ciclos atrasados: %1 (mayor %2 ms)</translation>
+    </message>
+    <message>
+        <source>%1 status lines not shown</source>
+        <translation>%1 líneas de estado no mostradas</translation>
     </message>
     <message>
         <source>Manual</source>
@@ -820,14 +962,6 @@
     <message>
         <source>Emergency stop</source>
         <translation>Parada de emergencia</translation>
-    </message>
-    <message>
-        <source>Late ticks: %1 (longest %2 ms)</source>
-        <translation>Ciclos atrasados: %1 (mayor %2 ms)</translation>
-    </message>
-    <message>
-        <source>%1 status lines not shown</source>
-        <translation>%1 líneas de estado no mostradas</translation>
     </message>
     <message>
         <source>The history could not be written: %1</source>
@@ -865,6 +999,14 @@
         <source>Save</source>
         <translation>Guardar</translation>
     </message>
+    <message>
+        <source>Exit</source>
+        <translation>Salir</translation>
+    </message>
+    <message>
+        <source>The rail is moving (x = %1 mm, towards x = %2 mm). Exit stops it with an emergency stop. Exit now?</source>
+        <translation>El carril se está moviendo (x = %1 mm, hacia x = %2 mm). Salir lo detiene con una parada de emergencia. ¿Salir ahora?</translation>
+    </message>
 </context>
 <context>
     <name>trilho::ui::PlotPanel</name>
@@ -895,6 +1037,14 @@
     <message>
         <source>position (mm)</source>
         <translation>posición (mm)</translation>
+    </message>
+    <message>
+        <source>error (mm)</source>
+        <translation>error (mm)</translation>
+    </message>
+    <message>
+        <source>DAC</source>
+        <translation>DAC</translation>
     </message>
     <message>
         <source>following error (mm)</source>
@@ -963,6 +1113,10 @@
         <translation>Guarda de forma atómica: un fallo nunca deja medio archivo</translation>
     </message>
     <message>
+        <source>No program is selected: there is no file to save to.</source>
+        <translation>Ningún programa seleccionado: no hay archivo donde guardar.</translation>
+    </message>
+    <message>
         <source>cannot save &apos;%1&apos;: %2</source>
         <translation>no se pudo guardar &apos;%1&apos;: %2</translation>
     </message>
@@ -983,10 +1137,53 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::RunControls</name>
+    <message>
+        <source>Cycle start</source>
+        <translation>Inicio de ciclo</translation>
+    </message>
+    <message>
+        <source>Feed hold</source>
+        <translation>Suspender avance</translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation>Continuar</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Detener</translation>
+    </message>
+    <message>
+        <source>Single block</source>
+        <translation>Bloque a bloque</translation>
+    </message>
+    <message>
+        <source>Feed override -10 %</source>
+        <translation>Corrección de avance -10 %</translation>
+    </message>
+    <message>
+        <source>Feed override +10 %</source>
+        <translation>Corrección de avance +10 %</translation>
+    </message>
+    <message>
+        <source>Feed override 100 %</source>
+        <translation>Corrección de avance 100 %</translation>
+    </message>
+    <message>
+        <source>Feed override %1 %</source>
+        <translation>Corrección de avance %1 %</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::SelectFileDialog</name>
     <message>
         <source>Select</source>
         <translation>Seleccionar</translation>
+    </message>
+    <message>
+        <source>Path</source>
+        <translation>Ruta</translation>
     </message>
     <message>
         <source>Files</source>

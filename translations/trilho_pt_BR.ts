@@ -483,6 +483,53 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::DroPanel</name>
+    <message>
+        <source>Machine X</source>
+        <translation>X máquina</translation>
+    </message>
+    <message>
+        <source>To go</source>
+        <translation>Falta</translation>
+    </message>
+    <message>
+        <source>Program X</source>
+        <translation>X programa</translation>
+    </message>
+    <message>
+        <source>zero %1 mm</source>
+        <translation>zero %1 mm</translation>
+    </message>
+    <message>
+        <source>F %1 %</source>
+        <translation>F %1 %</translation>
+    </message>
+    <message>
+        <source>override %1 %</source>
+        <translation>correção %1 %</translation>
+    </message>
+    <message>
+        <source>classic law</source>
+        <translation>lei clássica</translation>
+    </message>
+    <message>
+        <source>engineered law</source>
+        <translation>lei moderna</translation>
+    </message>
+    <message>
+        <source>Cycle %1:%2</source>
+        <translation>Ciclo %1:%2</translation>
+    </message>
+    <message>
+        <source>Dwell %1 s</source>
+        <translation>Espera %1 s</translation>
+    </message>
+    <message>
+        <source>Block %1 / %2</source>
+        <translation>Bloco %1 / %2</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::ExecutionPanel</name>
     <message>
         <source>Alarms :</source>
@@ -572,12 +619,28 @@
         <source>Error :</source>
         <translation>Erro :</translation>
     </message>
+    <message>
+        <source>line %1</source>
+        <translation>linha %1</translation>
+    </message>
 </context>
 <context>
     <name>trilho::ui::HistoryPanel</name>
     <message>
         <source>Export history</source>
         <translation>Exportar histórico</translation>
+    </message>
+    <message>
+        <source>alarm</source>
+        <translation>alarme</translation>
+    </message>
+    <message>
+        <source>acknowledged</source>
+        <translation>reconhecido</translation>
+    </message>
+    <message>
+        <source>status</source>
+        <translation>estado</translation>
     </message>
     <message>
         <source>Time</source>
@@ -607,14 +670,6 @@
 <context>
     <name>trilho::ui::JogPanel</name>
     <message>
-        <source>Feed override %1 %</source>
-        <translation>Correção de avanço %1 %</translation>
-    </message>
-    <message>
-        <source>Jog speed %1 %</source>
-        <translation>Velocidade de jog %1 %</translation>
-    </message>
-    <message>
         <source>◀ hold to jog</source>
         <translation>◀ segure para mover</translation>
     </message>
@@ -623,28 +678,63 @@
         <translation>segure para mover ▶</translation>
     </message>
     <message>
+        <source>Jog speed %1 mm/s</source>
+        <translation>Velocidade manual %1 mm/s</translation>
+    </message>
+    <message>
         <source>Step</source>
         <translation>Passo</translation>
     </message>
+</context>
+<context>
+    <name>trilho::ui::KeysDialog</name>
     <message>
-        <source>Single block</source>
-        <translation>Bloco a bloco</translation>
+        <source>EMERGENCY STOP, in every window, menu and dialog</source>
+        <translation>PARADA DE EMERGÊNCIA, em qualquer janela, menu ou diálogo</translation>
     </message>
     <message>
-        <source>Hold</source>
-        <translation>Pausar</translation>
+        <source>Stop (a controlled stop) when no menu, list or dialog is open; otherwise it only closes it</source>
+        <translation>Parar (parada controlada) quando nenhum menu, lista ou diálogo está aberto; senão só o fecha</translation>
     </message>
     <message>
-        <source>Resume</source>
-        <translation>Retomar</translation>
+        <source>STOP: the manual PARA, or Stop in automatic (not in the editor)</source>
+        <translation>PÁRA: o PÁRA manual, ou Parar em automático (não no editor)</translation>
     </message>
     <message>
-        <source>Stop</source>
-        <translation>Parar</translation>
+        <source>Manual mode: left</source>
+        <translation>Modo manual: esquerda</translation>
+    </message>
+    <message>
+        <source>Manual mode: right</source>
+        <translation>Modo manual: direita</translation>
+    </message>
+    <message>
+        <source>Keys</source>
+        <translation>Teclas</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>Tecla</translation>
+    </message>
+    <message>
+        <source>Action</source>
+        <translation>Ação</translation>
     </message>
 </context>
 <context>
     <name>trilho::ui::MainWindow</name>
+    <message>
+        <source>line %1</source>
+        <translation>linha %1</translation>
+    </message>
+    <message>
+        <source>Start from the selected block</source>
+        <translation>Executar a partir do bloco selecionado</translation>
+    </message>
+    <message>
+        <source>Start %1 from block %2? The rail moves at once, at rapid speed, %3.</source>
+        <translation>Iniciar %1 a partir do bloco %2? O trilho move-se já, em velocidade máxima, %3.</translation>
+    </message>
     <message>
         <source>Didactic D.N.C. system for the automatic rail</source>
         <translation>Sistema D.N.C. didático para trilho automático</translation>
@@ -730,16 +820,24 @@
         <translation>&amp;Janelas</translation>
     </message>
     <message>
-        <source>Program</source>
-        <translation>Programa</translation>
+        <source>&amp;Reset layout</source>
+        <translation>&amp;Restaurar disposição</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>Aj&amp;uda</translation>
+    </message>
+    <message>
+        <source>&amp;Keys</source>
+        <translation>&amp;Teclas</translation>
     </message>
     <message>
         <source>Plots</source>
         <translation>Gráficos</translation>
     </message>
     <message>
-        <source>Jog and run</source>
-        <translation>Movimento e execução</translation>
+        <source>Jog</source>
+        <translation>Avanço manual</translation>
     </message>
     <message>
         <source>History</source>
@@ -754,12 +852,24 @@
         <translation>Simulação</translation>
     </message>
     <message>
-        <source>E-STOP (Esc)</source>
-        <translation>EMERGÊNCIA (Esc)</translation>
+        <source>E-STOP LATCHED</source>
+        <translation>EMERGÊNCIA ACIONADA</translation>
+    </message>
+    <message>
+        <source>E-STOP (Pause, F1)</source>
+        <translation>EMERGÊNCIA (Pause, F1)</translation>
+    </message>
+    <message>
+        <source>EMERGENCY STOP LATCHED: the drive is off. Clear the cause, then Reset E-stop.</source>
+        <translation>PARADA DE EMERGÊNCIA TRAVADA: o acionamento está desligado. Elimine a causa e depois Liberar emergência.</translation>
     </message>
     <message>
         <source>Reset E-stop</source>
         <translation>Liberar emergência</translation>
+    </message>
+    <message>
+        <source>Safety</source>
+        <translation>Segurança</translation>
     </message>
     <message>
         <source>Acknowledge</source>
@@ -786,8 +896,40 @@
         <translation>Compilação terminada !</translation>
     </message>
     <message>
+        <source>Cycle start</source>
+        <translation>Início de ciclo</translation>
+    </message>
+    <message>
+        <source>Execute %1? The rail moves %2, then runs the program.%3</source>
+        <translation>Executar %1? O trilho move-se %2 e depois executa o programa.%3</translation>
+    </message>
+    <message>
+        <source> Its position is not known: it homes first (to the end switches and back).</source>
+        <translation> A posição não é conhecida: primeiro faz a referência (até os fins de curso e volta).</translation>
+    </message>
+    <message>
+        <source>from x = %1 mm to x = %2 mm</source>
+        <translation>de x = %1 mm para x = %2 mm</translation>
+    </message>
+    <message>
+        <source> (first programmed move to x = %1 mm)</source>
+        <translation> (primeiro movimento programado para x = %1 mm)</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Programa</translation>
+    </message>
+    <message>
         <source>There are compile error(s)!</source>
         <translation>Há erro(s) de compilação!</translation>
+    </message>
+    <message>
+        <source>Late ticks: %1 (longest %2 ms)</source>
+        <translation>Ciclos atrasados: %1 (maior %2 ms)</translation>
+    </message>
+    <message>
+        <source>%1 status lines not shown</source>
+        <translation>%1 linhas de status não mostradas</translation>
     </message>
     <message>
         <source>Manual</source>
@@ -820,14 +962,6 @@
     <message>
         <source>Emergency stop</source>
         <translation>Parada de emergência</translation>
-    </message>
-    <message>
-        <source>Late ticks: %1 (longest %2 ms)</source>
-        <translation>Ciclos atrasados: %1 (maior %2 ms)</translation>
-    </message>
-    <message>
-        <source>%1 status lines not shown</source>
-        <translation>%1 linhas de status não mostradas</translation>
     </message>
     <message>
         <source>The history could not be written: %1</source>
@@ -865,6 +999,14 @@
         <source>Save</source>
         <translation>Salvar</translation>
     </message>
+    <message>
+        <source>Exit</source>
+        <translation>Sair</translation>
+    </message>
+    <message>
+        <source>The rail is moving (x = %1 mm, towards x = %2 mm). Exit stops it with an emergency stop. Exit now?</source>
+        <translation>O trilho está em movimento (x = %1 mm, rumo a x = %2 mm). Sair o pára com uma parada de emergência. Sair agora?</translation>
+    </message>
 </context>
 <context>
     <name>trilho::ui::PlotPanel</name>
@@ -895,6 +1037,14 @@
     <message>
         <source>position (mm)</source>
         <translation>posição (mm)</translation>
+    </message>
+    <message>
+        <source>error (mm)</source>
+        <translation>erro (mm)</translation>
+    </message>
+    <message>
+        <source>DAC</source>
+        <translation>DAC</translation>
     </message>
     <message>
         <source>following error (mm)</source>
@@ -963,6 +1113,10 @@
         <translation>Salva de forma atômica: uma falha nunca deixa meio arquivo</translation>
     </message>
     <message>
+        <source>No program is selected: there is no file to save to.</source>
+        <translation>Nenhum programa selecionado: não há arquivo onde salvar.</translation>
+    </message>
+    <message>
         <source>cannot save &apos;%1&apos;: %2</source>
         <translation>não foi possível salvar &apos;%1&apos;: %2</translation>
     </message>
@@ -983,10 +1137,53 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::RunControls</name>
+    <message>
+        <source>Cycle start</source>
+        <translation>Início de ciclo</translation>
+    </message>
+    <message>
+        <source>Feed hold</source>
+        <translation>Suspender avanço</translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation>Continua</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Parar</translation>
+    </message>
+    <message>
+        <source>Single block</source>
+        <translation>Bloco a bloco</translation>
+    </message>
+    <message>
+        <source>Feed override -10 %</source>
+        <translation>Correção de avanço -10 %</translation>
+    </message>
+    <message>
+        <source>Feed override +10 %</source>
+        <translation>Correção de avanço +10 %</translation>
+    </message>
+    <message>
+        <source>Feed override 100 %</source>
+        <translation>Correção de avanço 100 %</translation>
+    </message>
+    <message>
+        <source>Feed override %1 %</source>
+        <translation>Correção de avanço %1 %</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::SelectFileDialog</name>
     <message>
         <source>Select</source>
         <translation>Selecionar</translation>
+    </message>
+    <message>
+        <source>Path</source>
+        <translation>Caminho</translation>
     </message>
     <message>
         <source>Files</source>

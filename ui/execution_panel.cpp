@@ -24,8 +24,20 @@ QGroupBox* frame(QWidget* parent) {
     g->setObjectName(QStringLiteral("vbFrame"));
     return g;
 }
+/// Tight frame layouts: the whole form fits above the plots on a 768-line screen.
+template <typename Layout>
+Layout* tight(Layout* l) {
+    l->setContentsMargins(8, 2, 8, 4);
+    l->setVerticalSpacing(3);
+    return l;
+}
 QString mm(double v, int decimals = 2) {
-    return QString::number(v, 'f', decimals);
+    const QString text = QString::number(v, 'f', decimals);
+    // Never "-0" or "-0.0": a value that rounds to zero is shown without a sign.
+    return text.toDouble() == 0.0 ? QString::number(0.0, 'f', decimals) : text;
+}
+double deadBand(double v, double band) {
+    return std::abs(v) < band ? 0.0 : v;
 }
 }  // namespace
 
@@ -40,9 +52,9 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("executionPanel"));
     setAutoFillBackground(true);
     auto* grid = new QGridLayout(this);
-    grid->setContentsMargins(24, 6, 24, 8);
+    grid->setContentsMargins(24, 4, 24, 4);
     grid->setHorizontalSpacing(36);
-    grid->setVerticalSpacing(4);
+    grid->setVerticalSpacing(2);
 
     // Alarmes and Status, the two drop-down lists across the top (360,120 / 1560,120,7695,300).
     alarmsLabel_ = new QLabel(this);
@@ -66,7 +78,7 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
 
     // Modo Automático (600,1200,3975,2175).
     autoFrame_ = frame(this);
-    auto* a = new QGridLayout(autoFrame_);
+    auto* a = tight(new QGridLayout(autoFrame_));
     programLabel_ = new QLabel(autoFrame_);
     lineLabel_ = new QLabel(autoFrame_);
     program_ = readOnly();
@@ -89,7 +101,7 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
 
     // Modo Manual (600,3840,3975,2055): Esquerda "<", Direita ">", PÁRA.
     manualFrame_ = frame(this);
-    auto* m = new QGridLayout(manualFrame_);
+    auto* m = tight(new QGridLayout(manualFrame_));
     leftLabel_ = new QLabel(manualFrame_);
     rightLabel_ = new QLabel(manualFrame_);
     left_ = new QPushButton(QStringLiteral("<"), manualFrame_);
@@ -113,7 +125,7 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
 
     // Dados Atuais (5520,960,3255,1575).
     dataFrame_ = frame(this);
-    auto* d = new QGridLayout(dataFrame_);
+    auto* d = tight(new QGridLayout(dataFrame_));
     positionLabel_ = new QLabel(dataFrame_);
     speedLabel_ = new QLabel(dataFrame_);
     accelerationLabel_ = new QLabel(dataFrame_);
@@ -138,7 +150,7 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
 
     // Controlador (5520,2640): Proporcional, Derivativa, Integrativa - validated, live.
     controllerFrame_ = frame(this);
-    auto* c = new QGridLayout(controllerFrame_);
+    auto* c = tight(new QGridLayout(controllerFrame_));
     for (int i = 0; i < 3; ++i) {
         gainLabels_[i] = new QLabel(controllerFrame_);
         gains_[i] = new QLineEdit(controllerFrame_);
@@ -165,7 +177,7 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
 
     // Malha (5520,4320): Setpoint, Valor real (green needle), Erro (red needle).
     loopFrame_ = frame(this);
-    auto* l = new QGridLayout(loopFrame_);
+    auto* l = tight(new QGridLayout(loopFrame_));
     setpointLabel_ = new QLabel(loopFrame_);
     setpoint_ = readOnly();
     setpoint_->setAlignment(Qt::AlignRight);
@@ -251,7 +263,9 @@ void ExecutionPanel::setAutomaticMode(bool automatic) {
     }
     left_->setEnabled(!automatic);
     right_->setEnabled(!automatic);
-    stop_->setEnabled(!automatic);
+    // PARA stays live in automatic (ciclo_continuo.G tells the operator to stop it with PARA):
+    // there it is a controlled stop of the program.
+    stop_->setEnabled(true);
 }
 
 void ExecutionPanel::setProgramName(const QString& name) {
@@ -304,8 +318,15 @@ void ExecutionPanel::markGainInvalid(int which, bool invalid) {
 void ExecutionPanel::showStatus(const ControllerStatus& s) {
     if (s.automatic != automatic_) setAutomaticMode(s.automatic);
     position_->setText(mm(s.servo.positionMm));
-    speed_->setText(mm(s.servo.velocityMmS, 1));
-    acceleration_->setText(mm(s.servo.accelerationMmS2, 0));
+    // What is displayed is filtered and quantised (the control uses the raw estimates): at rest
+    // the counter's quantisation made both fields flicker around "-0".
+    constexpr double kSmoothing = 0.3;  // per 50 Hz frame: about 60 ms
+    shownSpeed_ += kSmoothing * (s.servo.velocityMmS - shownSpeed_);
+    shownAcceleration_ += kSmoothing * (s.servo.accelerationMmS2 - shownAcceleration_);
+    const bool still = std::abs(s.servo.velocityMmS) < 0.5 && s.servo.mode != ServoMode::Move;
+    if (still) shownSpeed_ = 0.0, shownAcceleration_ = 0.0;
+    speed_->setText(mm(deadBand(shownSpeed_, 0.5), 1));
+    acceleration_->setText(mm(deadBand(shownAcceleration_, 20.0), 0));
     continue_->setEnabled(s.state == ControllerState::Paused && s.pause == PauseReason::M00);
     const bool moving = s.servo.mode == ServoMode::Move;
     if (moving || s.state == ControllerState::Running) {
@@ -321,10 +342,14 @@ void ExecutionPanel::showStatus(const ControllerStatus& s) {
     }
     real_->setValue(s.servo.positionMm);
     error_->setValue(std::abs(gaugeTarget_ - s.servo.positionMm));
-    if (s.blockN >= 0 &&
-        (s.state == ControllerState::Running || s.state == ControllerState::Waiting ||
-         s.state == ControllerState::Paused))
+    const bool executing = s.state == ControllerState::Running ||
+                           s.state == ControllerState::Waiting ||
+                           s.state == ControllerState::Paused;
+    // The block's N as the VB showed it; a block without N shows its source line instead.
+    if (executing && s.blockN >= 0)
         line_->setText(QStringLiteral("%1").arg(s.blockN, 4, 10, QLatin1Char('0')));
+    else if (executing && s.blockLine > 0)
+        line_->setText(tr("line %1").arg(s.blockLine));
 }
 
 }  // namespace ui

@@ -88,6 +88,7 @@ class ExecutionPanel : public QWidget {
     QLineEdit* setpoint_;
     GaugeWidget *real_, *error_;
     double gaugeStart_ = 0.0, gaugeTarget_ = 0.0;
+    double shownSpeed_ = 0.0, shownAcceleration_ = 0.0;  ///< display filter state
     bool automatic_ = false;
 };
 

@@ -20,6 +20,8 @@ HistoryPanel::HistoryPanel(QWidget* parent) : QWidget(parent) {
     table_ = new QTableWidget(0, 4, this);
     table_->horizontalHeader()->setStretchLastSection(true);
     table_->verticalHeader()->hide();
+    table_->setWordWrap(false);  // one line a row: a long text is read in its tooltip
+    table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 6);
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table_->setSelectionBehavior(QAbstractItemView::SelectRows);
     ack_ = new QPushButton(this);
@@ -54,8 +56,18 @@ HistoryPanel::HistoryPanel(QWidget* parent) : QWidget(parent) {
     retranslate();
 }
 
+QString HistoryPanel::kindText(const QString& kind) {
+    if (kind == QLatin1String("alarm")) return tr("alarm");
+    if (kind == QLatin1String("ack")) return tr("acknowledged");
+    if (kind == QLatin1String("status")) return tr("status");
+    return kind;
+}
+
 void HistoryPanel::retranslate() {
     table_->setHorizontalHeaderLabels({tr("Time"), tr("Kind"), tr("Code"), tr("Text")});
+    for (int r = 0; r < table_->rowCount(); ++r)
+        if (QTableWidgetItem* k = table_->item(r, 1))
+            k->setText(kindText(k->data(Qt::UserRole).toString()));
     ack_->setText(tr("Acknowledge alarms"));
     export_->setText(tr("Export CSV"));
 }
@@ -69,9 +81,12 @@ void HistoryPanel::add(const QString& when, const QString& kind, int code, const
     const int row = table_->rowCount();
     table_->insertRow(row);
     table_->setItem(row, 0, new QTableWidgetItem(when));
-    table_->setItem(row, 1, new QTableWidgetItem(kind));
+    auto* k = new QTableWidgetItem(kindText(kind));
+    k->setData(Qt::UserRole, kind);  // the journal's word; the cell shows it translated
+    table_->setItem(row, 1, k);
     table_->setItem(row, 2, new QTableWidgetItem(code ? QString::number(code) : QString()));
     auto* t = new QTableWidgetItem(text);
+    t->setToolTip(text);
     if (kind == QLatin1String("alarm")) t->setForeground(Qt::darkRed);
     table_->setItem(row, 3, t);
     if (table_->rowCount() > 10000) table_->removeRow(0);  // the journal keeps everything

@@ -16,6 +16,8 @@ class HistoryPanel : public QWidget {
     QTableWidget* table() const { return table_; }
     void setJournalPath(const QString& path) { journal_ = path; }
     bool exportCsv(const QString& path, QString* error = nullptr);
+    /// The Kind column's text for the journal's word (alarm, ack, status) in the UI language.
+    static QString kindText(const QString& kind);
 
   signals:
     void acknowledgeRequested();

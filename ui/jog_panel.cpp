@@ -1,12 +1,12 @@
 #include "ui/jog_panel.h"
 
-#include <QCheckBox>
 #include <QComboBox>
 #include <QEvent>
 #include <QGridLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QSlider>
+#include <cmath>
 
 namespace trilho {
 namespace ui {
@@ -25,36 +25,21 @@ JogPanel::JogPanel(QWidget* parent) : QWidget(parent) {
     speed_ = new QSlider(Qt::Horizontal, this);
     speed_->setRange(1, 100);
     speed_->setValue(40);
-    override_ = new QSlider(Qt::Horizontal, this);
-    override_->setRange(0, 150);
-    override_->setValue(100);
-    single_ = new QCheckBox(this);
-    hold_ = new QPushButton(this);
-    resume_ = new QPushButton(this);
-    stop_ = new QPushButton(this);
     speedLabel_ = new QLabel(this);
-    overrideLabel_ = new QLabel(this);
     incrementLabel_ = new QLabel(this);
     auto* g = new QGridLayout(this);
+    // Labels above their controls: the dock stays narrow enough for a 1024-wide screen.
     g->addWidget(holdLeft_, 0, 0);
     g->addWidget(holdRight_, 0, 1);
-    g->addWidget(speedLabel_, 1, 0);
-    g->addWidget(speed_, 1, 1);
-    g->addWidget(incrementLabel_, 2, 0);
+    g->addWidget(speedLabel_, 1, 0, 1, 2);
+    g->addWidget(speed_, 2, 0, 1, 2);
+    g->addWidget(incrementLabel_, 3, 0, 1, 2);
     auto* steps = new QHBoxLayout;
     steps->addWidget(stepMinus_);
     steps->addWidget(increment_);
     steps->addWidget(stepPlus_);
-    g->addLayout(steps, 2, 1);
-    g->addWidget(overrideLabel_, 3, 0);
-    g->addWidget(override_, 3, 1);
-    g->addWidget(single_, 4, 0, 1, 2);
-    auto* run = new QHBoxLayout;
-    run->addWidget(hold_);
-    run->addWidget(resume_);
-    run->addWidget(stop_);
-    g->addLayout(run, 5, 0, 1, 2);
-    g->setRowStretch(6, 1);
+    g->addLayout(steps, 4, 0, 1, 2);
+    g->setRowStretch(5, 1);
 
     connect(holdLeft_, &QPushButton::pressed, this, [this] { emit jogStart(-1); });
     connect(holdRight_, &QPushButton::pressed, this, [this] { emit jogStart(+1); });
@@ -62,21 +47,18 @@ JogPanel::JogPanel(QWidget* parent) : QWidget(parent) {
     connect(holdRight_, &QPushButton::released, this, &JogPanel::jogStop);
     connect(stepMinus_, &QPushButton::clicked, this, [this] { emit jogStep(-incrementMm()); });
     connect(stepPlus_, &QPushButton::clicked, this, [this] { emit jogStep(incrementMm()); });
-    connect(override_, &QSlider::valueChanged, this, [this](int v) {
-        overrideLabel_->setText(tr("Feed override %1 %").arg(v));
-        emit feedOverrideChanged(v / 100.0);
-    });
-    connect(speed_, &QSlider::valueChanged, this,
-            [this](int v) { speedLabel_->setText(tr("Jog speed %1 %").arg(v)); });
-    connect(single_, &QCheckBox::toggled, this, &JogPanel::singleBlockToggled);
-    connect(hold_, &QPushButton::clicked, this, &JogPanel::holdRequested);
-    connect(resume_, &QPushButton::clicked, this, &JogPanel::resumeRequested);
-    connect(stop_, &QPushButton::clicked, this, &JogPanel::stopRequested);
+    connect(speed_, &QSlider::valueChanged, this, &JogPanel::retranslate);
     retranslate();
 }
 
 double JogPanel::jogFraction() const {
-    return speed_->value() / 100.0 * 0.5;
+    return speed_->value() / 100.0 * maxFraction_;
+}
+
+void JogPanel::setSpeeds(double rapidMmS, double maxFraction) {
+    rapidMmS_ = rapidMmS;
+    maxFraction_ = maxFraction;
+    retranslate();
 }
 double JogPanel::incrementMm() const {
     return increment_->currentData().toDouble();
@@ -85,20 +67,14 @@ double JogPanel::incrementMm() const {
 void JogPanel::setManual(bool manual) {
     for (QWidget* w : std::initializer_list<QWidget*>{holdLeft_, holdRight_, stepMinus_, stepPlus_})
         w->setEnabled(manual);
-    for (QWidget* w : std::initializer_list<QWidget*>{hold_, resume_, stop_})
-        w->setEnabled(!manual);
 }
 
 void JogPanel::retranslate() {
     holdLeft_->setText(tr("◀ hold to jog"));
     holdRight_->setText(tr("hold to jog ▶"));
-    speedLabel_->setText(tr("Jog speed %1 %").arg(speed_->value()));
-    overrideLabel_->setText(tr("Feed override %1 %").arg(override_->value()));
+    // The operator thinks in mm/s, as the Speed field shows; the slider is a share of the cap.
+    speedLabel_->setText(tr("Jog speed %1 mm/s").arg(std::lround(jogFraction() * rapidMmS_)));
     incrementLabel_->setText(tr("Step"));
-    single_->setText(tr("Single block"));
-    hold_->setText(tr("Hold"));
-    resume_->setText(tr("Resume"));
-    stop_->setText(tr("Stop"));
 }
 
 void JogPanel::changeEvent(QEvent* e) {

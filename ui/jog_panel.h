@@ -1,9 +1,8 @@
 #pragma once
-// Jog and run controls of today, beside the 1996 arrangement: hold-to-jog, jog speed,
-// incremental steps, feed override, single block, hold/resume/stop.
+// Jogging of today, beside the 1996 arrangement: hold-to-jog, jog speed (in mm/s) and
+// incremental steps. The run controls live on the main screen (run_controls).
 #include <QWidget>
 
-class QCheckBox;
 class QComboBox;
 class QLabel;
 class QPushButton;
@@ -19,31 +18,27 @@ class JogPanel : public QWidget {
     double jogFraction() const;  ///< of the rapid speed, within the manual cap
     double incrementMm() const;
     void setManual(bool manual);
+    /// The rapid speed and the manual cap (fraction of it), to say the jog speed in mm/s.
+    void setSpeeds(double rapidMmS, double maxFraction);
     QPushButton* holdLeft() const { return holdLeft_; }
     QPushButton* holdRight() const { return holdRight_; }
-    QSlider* overrideSlider() const { return override_; }
-    QCheckBox* singleBlock() const { return single_; }
+    QLabel* speedLabel() const { return speedLabel_; }
 
   signals:
     void jogStart(int direction);
     void jogStop();
     void jogStep(double mm);
-    void feedOverrideChanged(double factor);
-    void singleBlockToggled(bool on);
-    void holdRequested();
-    void resumeRequested();
-    void stopRequested();
 
   protected:
     void changeEvent(QEvent* e) override;
 
   private:
     void retranslate();
-    QPushButton *holdLeft_, *holdRight_, *stepMinus_, *stepPlus_, *hold_, *resume_, *stop_;
-    QSlider *speed_, *override_;
+    QPushButton *holdLeft_, *holdRight_, *stepMinus_, *stepPlus_;
+    QSlider* speed_;
     QComboBox* increment_;
-    QCheckBox* single_;
-    QLabel *speedLabel_, *overrideLabel_, *incrementLabel_;
+    QLabel *speedLabel_, *incrementLabel_;
+    double rapidMmS_ = 0.0, maxFraction_ = 0.5;
 };
 
 }  // namespace ui

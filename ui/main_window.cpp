@@ -15,8 +15,11 @@
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QStatusBar>
+#include <QStyle>
+#include <QTimer>
 #include <QToolBar>
 #include <QToolButton>
+#include <QVBoxLayout>
 
 #include <QFutureWatcher>
 #include <QProgressBar>
@@ -26,16 +29,20 @@
 #include "app/common/data_paths.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
+#include "core/gcode/modal_state.h"
 #include "core/machine/event_text.h"
 #include "translations/i18n.h"
 #include "ui/code_editor.h"
+#include "ui/dro_panel.h"
 #include "ui/execution_panel.h"
 #include "ui/history_panel.h"
 #include "ui/jog_panel.h"
+#include "ui/keys_dialog.h"
 #include "ui/machine_link.h"
 #include "ui/plot_panel.h"
 #include "ui/program_panel.h"
 #include "ui/rail_view.h"
+#include "ui/run_controls.h"
 #include "ui/select_file_dialog.h"
 #include "ui/simulation_panel.h"
 
@@ -45,8 +52,38 @@ namespace ui {
 MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     : QMainWindow(parent), link_(link), settings_(settings) {
     setObjectName(QStringLiteral("mainWindow"));
-    panel_ = new ExecutionPanel(this);
-    setCentralWidget(panel_);
+    // The centre: a latched E-stop banner, the readout and the run controls always in view,
+    // then the 1996 form. The form scrolls rather than hold the window (and the Plots dock)
+    // to its full height on a 768-line screen.
+    auto* centre = new QWidget(this);
+    centre->setObjectName(QStringLiteral("centre"));
+    estopBanner_ = new QLabel(centre);
+    estopBanner_->setObjectName(QStringLiteral("estopBanner"));
+    estopBanner_->setAlignment(Qt::AlignCenter);
+    estopBanner_->setStyleSheet(
+        QStringLiteral("QLabel#estopBanner { background: rgb(200,0,0); color: white; "
+                       "font-weight: bold; font-size: 14pt; padding: 4px; }"));
+    estopBanner_->hide();
+    dro_ = new DroPanel(centre);
+    runControls_ = new RunControls(centre);
+    panel_ = new ExecutionPanel;
+    auto* formScroll = new QScrollArea(centre);
+    formScroll->setObjectName(QStringLiteral("formScroll"));
+    formScroll->setWidget(panel_);
+    formScroll->setWidgetResizable(true);
+    formScroll->setFrameShape(QFrame::NoFrame);
+    formScroll->setMinimumHeight(120);
+    auto* top = new QHBoxLayout;
+    top->setSpacing(4);
+    top->addWidget(dro_, 3);
+    top->addWidget(runControls_, 2);
+    auto* v = new QVBoxLayout(centre);
+    v->setContentsMargins(0, 0, 0, 0);
+    v->setSpacing(2);
+    v->addWidget(estopBanner_);
+    v->addLayout(top);
+    v->addWidget(formScroll, 1);
+    setCentralWidget(centre);
     buildMenus();
     buildDocks();
     stateLabel_ = new QLabel(this);
@@ -63,11 +100,6 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     compileProgress_->hide();
     statusBar()->addPermanentWidget(compileProgress_);
     statusBar()->addPermanentWidget(stateLabel_);
-    // E-stop by key, whatever has the focus and whatever the event queue holds: the Pause key
-    // as an application shortcut (Esc stays, below), straight to the worker's flag.
-    auto* estopKey = new QShortcut(QKeySequence(Qt::Key_Pause), this);
-    estopKey->setContext(Qt::ApplicationShortcut);
-    connect(estopKey, &QShortcut::activated, &link_, &MachineLink::emergencyStop);
     connect(&link_, &MachineLink::journalFailed, this, &MainWindow::reportJournalProblem);
 
     connect(&link_, &MachineLink::statusChanged, this, &MainWindow::onStatus);
@@ -75,7 +107,14 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     connect(panel_, &ExecutionPanel::continuePressed, &link_, &MachineLink::pressContinue);
     connect(panel_, &ExecutionPanel::leftPressed, &link_, &MachineLink::manualLeft);
     connect(panel_, &ExecutionPanel::rightPressed, &link_, &MachineLink::manualRight);
-    connect(panel_, &ExecutionPanel::stopPressed, &link_, &MachineLink::manualStop);
+    // PARA stops in both modes: ciclo_continuo.G tells the operator to end it with PARA.
+    connect(panel_, &ExecutionPanel::stopPressed, this, &MainWindow::stopKey);
+    connect(runControls_, &RunControls::cycleStartRequested, this, &MainWindow::requestCycleStart);
+    connect(runControls_, &RunControls::holdRequested, &link_, &MachineLink::hold);
+    connect(runControls_, &RunControls::continueRequested, &link_, &MachineLink::resume);
+    connect(runControls_, &RunControls::stopRequested, this, &MainWindow::stopKey);
+    connect(runControls_, &RunControls::singleBlockToggled, &link_, &MachineLink::setSingleBlock);
+    connect(runControls_, &RunControls::feedOverrideChanged, &link_, &MachineLink::setFeedOverride);
     connect(panel_, &ExecutionPanel::gainEdited, this, &MainWindow::applyGain);
     qApp->installEventFilter(this);
 
@@ -90,8 +129,12 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     loadGainsFromSettings();
     retranslate();
     onStatus(link_.status());
+    defaultLayout_ = saveState();
     restoreGeometry(settings_.value(QStringLiteral("geometry")).toByteArray());
-    restoreState(settings_.value(QStringLiteral("windowState")).toByteArray());
+    // Dock sizes come back with the saved state; the first time, the default sizes apply once
+    // the window has its size (the plots at least 150 px high at 1366x768).
+    defaultSizesPending_ =
+        !restoreState(settings_.value(QStringLiteral("windowState")).toByteArray());
     const QString lastProgram = settings_.value(QStringLiteral("lastProgram")).toString();
     if (!lastProgram.isEmpty() && QFileInfo::exists(lastProgram)) selectProgram(lastProgram);
 }
@@ -119,7 +162,7 @@ void MainWindow::buildMenus() {
     manual_->setChecked(true);
     commandMenu_->addSeparator();
     compile_ = commandMenu_->addAction(QString(), this, &MainWindow::compileSelected);
-    execute_ = commandMenu_->addAction(QString(), this, [this] { executeSelected(0); });
+    execute_ = commandMenu_->addAction(QString(), this, &MainWindow::requestCycleStart);
     compile_->setEnabled(false);  // until Automatic, as the original
     execute_->setEnabled(false);
 
@@ -169,17 +212,30 @@ void MainWindow::buildMenus() {
     for (QAction* a : {standardDialect_, classicDialect_})
         a->setCheckable(true), dialects->addAction(a);
     viewMenu_ = menuBar()->addMenu(QString());
+    resetLayout_ = viewMenu_->addAction(QString(), this, &MainWindow::resetLayout);
+    viewMenu_->addSeparator();
+    helpMenu_ = menuBar()->addMenu(QString());
+    keys_ = helpMenu_->addAction(QString(), this, [this] {
+        KeysDialog dialog(runControls_->keyedActions(), this);
+        dialog.exec();
+    });
 
     // E-stop always visible (key: Esc), with reset and acknowledge beside it.
-    QToolBar* bar = addToolBar(QStringLiteral("safety"));
+    QToolBar* bar = addToolBar(QString());
+    safetyBar_ = bar;
     bar->setObjectName(QStringLiteral("safetyBar"));
     bar->setMovable(false);
+    bar->toggleViewAction()->setEnabled(false);  // the E-stop can never be hidden
     estop_ = new QToolButton(bar);
     estop_->setObjectName(QStringLiteral("estop"));
     estop_->setStyleSheet(
-        QStringLiteral("QToolButton#estop { background: rgb(200,0,0); color: white; font-weight: "
-                       "bold; padding: 6px 14px;"
-                       " border: 2px solid rgb(120,0,0); border-radius: 4px; }"));
+        // Styled :enabled only, so a disabled look stays the palette's grey (never used: the
+        // E-stop is always live). Latched, it turns dark with a yellow border and caption.
+        QStringLiteral("QToolButton#estop:enabled { background: rgb(200,0,0); color: white; "
+                       "font-weight: bold; padding: 6px 14px;"
+                       " border: 2px solid rgb(120,0,0); border-radius: 4px; }"
+                       "QToolButton#estop[latched=\"true\"] { background: rgb(90,0,0); "
+                       "color: yellow; border: 3px solid yellow; }"));
     resetEstop_ = new QToolButton(bar);
     ack_ = new QToolButton(bar);
     bar->addWidget(estop_);
@@ -202,11 +258,15 @@ void MainWindow::buildDocks() {
     program_ = new ProgramPanel(this);
     plots_ = new PlotPanel(this);
     jogPanel_ = new JogPanel(this);
+    jogPanel_->setSpeeds(link_.profile().motion.rapidSpeedMmS,
+                         link_.profile().motion.jogMaxFraction);
     history_ = new HistoryPanel(this);
     rail_ = new RailView(link_.profile(), this);
     history_->setJournalPath(link_.journalPath());
     programDock_ = dock(program_, "programDock", Qt::RightDockWidgetArea);
-    railDock_ = dock(rail_, "railDock", Qt::RightDockWidgetArea);
+    // The rail beside the plots, at the bottom: in the right column it held the window's middle
+    // (and so the Plots dock) at its full height on a 768-line screen.
+    railDock_ = dock(rail_, "railDock", Qt::BottomDockWidgetArea);
     jogDock_ = dock(jogPanel_, "jogDock", Qt::RightDockWidgetArea);
     plotDock_ = dock(plots_, "plotDock", Qt::BottomDockWidgetArea);
     historyDock_ = dock(history_, "historyDock", Qt::BottomDockWidgetArea);
@@ -216,6 +276,7 @@ void MainWindow::buildDocks() {
     simulationScroll->setWidgetResizable(true);
     simulationScroll->setFrameShape(QFrame::NoFrame);
     simulationDock_ = dock(simulationScroll, "simulationDock", Qt::BottomDockWidgetArea);
+    splitDockWidget(plotDock_, railDock_, Qt::Horizontal);  // before the tabs, or it is a tab
     tabifyDockWidget(plotDock_, historyDock_);
     tabifyDockWidget(historyDock_, simulationDock_);
     connect(simulation_, &SimulationPanel::faultsChanged, &link_, &MachineLink::setFaults);
@@ -224,10 +285,23 @@ void MainWindow::buildDocks() {
     tabifyDockWidget(programDock_, jogDock_);
     programDock_->raise();
 
+    // The unsaved marker: "name *" in the Program field and the dock's title.
+    connect(program_, &ProgramPanel::dirtyChanged, this, [this] { showProgramName(); });
     connect(program_, &ProgramPanel::startFromCursorRequested, this, [this] {
         compileEditor(true, [this](std::shared_ptr<Program> p) {
             const auto from =
                 p->blockAtOrAfterLine(static_cast<std::uint32_t>(program_->cursorLine()));
+            if (!p->ok()) return startCompiled(std::move(p), from);
+            if (from >= p->blocks.size()) return;
+            // It runs a rapid approach at once: say from where to where before it does.
+            const Block& b = p->blocks[from];
+            const QString block =
+                b.n >= 0 ? QStringLiteral("N%1").arg(b.n) : tr("line %1").arg(b.line);
+            if (!confirm(
+                    tr("Start from the selected block"),
+                    tr("Start %1 from block %2? The rail moves at once, at rapid speed, %3.")
+                        .arg(QFileInfo(selectedFile_).fileName(), block, approachText(*p, from))))
+                return;
             startCompiled(std::move(p), from);
         });
     });
@@ -236,11 +310,6 @@ void MainWindow::buildDocks() {
     connect(jogPanel_, &JogPanel::jogStop, &link_, &MachineLink::jogStop);
     connect(jogPanel_, &JogPanel::jogStep, this,
             [this](double mm) { link_.jogIncrement(mm, jogPanel_->jogFraction()); });
-    connect(jogPanel_, &JogPanel::feedOverrideChanged, &link_, &MachineLink::setFeedOverride);
-    connect(jogPanel_, &JogPanel::singleBlockToggled, &link_, &MachineLink::setSingleBlock);
-    connect(jogPanel_, &JogPanel::holdRequested, &link_, &MachineLink::hold);
-    connect(jogPanel_, &JogPanel::resumeRequested, &link_, &MachineLink::resume);
-    connect(jogPanel_, &JogPanel::stopRequested, &link_, &MachineLink::stop);
     connect(history_, &HistoryPanel::acknowledgeRequested, &link_, &MachineLink::acknowledge);
 }
 
@@ -266,17 +335,25 @@ void MainWindow::retranslate() {
     standardDialect_->setText(tr("Standard"));
     classicDialect_->setText(tr("Classic (1996)"));
     viewMenu_->setTitle(tr("&Windows"));
-    programDock_->setWindowTitle(tr("Program"));
+    resetLayout_->setText(tr("&Reset layout"));
+    helpMenu_->setTitle(tr("&Help"));
+    keys_->setText(tr("&Keys"));
+    showProgramName();
     plotDock_->setWindowTitle(tr("Plots"));
-    jogDock_->setWindowTitle(tr("Jog and run"));
+    jogDock_->setWindowTitle(tr("Jog"));
     historyDock_->setWindowTitle(tr("History"));
     railDock_->setWindowTitle(tr("Rail"));
     simulationDock_->setWindowTitle(tr("Simulation"));
-    estop_->setText(tr("E-STOP (Esc)"));
+    estop_->setText(last_.state == ControllerState::EStop ? tr("E-STOP LATCHED")
+                                                          : tr("E-STOP (Pause, F1)"));
+    estopBanner_->setText(
+        tr("EMERGENCY STOP LATCHED: the drive is off. Clear the cause, then Reset E-stop."));
     resetEstop_->setText(tr("Reset E-stop"));
+    safetyBar_->setWindowTitle(tr("Safety"));
     ack_->setText(tr("Acknowledge"));
     for (QAction* a : languages_->actions())
         a->setChecked(a->data().toString() == language_);
+    refreshOnline();
     onStatus(last_);
 }
 
@@ -314,7 +391,7 @@ bool MainWindow::selectProgram(const QString& path) {
         return false;
     }
     selectedFile_ = path;
-    panel_->setProgramName(QFileInfo(path).fileName());
+    showProgramName();
     settings_.setValue(QStringLiteral("lastProgram"), path);
     settings_.setValue(QStringLiteral("lastFolder"), QFileInfo(path).absolutePath());
     return true;
@@ -377,7 +454,7 @@ void MainWindow::compileEditor(bool showInAlarms,
 void MainWindow::compileSelected() {
     compileEditor(true, [this](std::shared_ptr<Program>) {
         panel_->setLineText(tr("End"));
-        panel_->setOnlineStatus(tr("Compilation finished !"));
+        setOnline([] { return tr("Compilation finished !"); });
     });
 }
 
@@ -387,11 +464,99 @@ void MainWindow::executeSelected(std::size_t fromIndex) {
     });
 }
 
-void MainWindow::startCompiled(std::shared_ptr<Program> program, std::size_t fromIndex) {
-    if (!program->ok()) {
-        panel_->setOnlineStatus(tr("There are compile error(s)!"));
+void MainWindow::requestCycleStart() {
+    if (selectedFile_.isEmpty()) {
+        QMessageBox::warning(this, tr("File message"), tr("Select the file first !"));
         return;
     }
+    compileEditor(true, [this](std::shared_ptr<Program> program) {
+        if (program->ok() &&
+            !confirm(tr("Cycle start"),
+                     tr("Execute %1? The rail moves %2, then runs the program.%3")
+                         .arg(QFileInfo(selectedFile_).fileName(), approachText(*program, 0),
+                              last_.homed ? QString()
+                                          : tr(" Its position is not known: it homes first "
+                                               "(to the end switches and back).")))) {
+            return;
+        }
+        startCompiled(std::move(program), 0);
+    });
+}
+
+QString MainWindow::approachText(const Program& program, std::size_t fromIndex) const {
+    // Where the controller first drives (rail_controller: the centre for a full run, the
+    // position before the block for a start from a block), then the program's first target.
+    const ModalState modal = modalStateBefore(program, fromIndex);
+    const double startAt = modal.hasPosition ? modal.positionMm : 0.0;
+    QString text = tr("from x = %1 mm to x = %2 mm")
+                       .arg(last_.servo.positionMm, 0, 'f', 2)
+                       .arg(startAt, 0, 'f', 2);
+    for (std::size_t i = fromIndex; i < program.blocks.size(); ++i)
+        if (isMotion(program.blocks[i].op))
+            return text +
+                   tr(" (first programmed move to x = %1 mm)").arg(program.blocks[i].x, 0, 'f', 2);
+    return text;
+}
+
+bool MainWindow::confirm(const QString& title, const QString& text) {
+    if (confirmer_) return confirmer_(title, text);
+    QMessageBox box(QMessageBox::Question, title, text, QMessageBox::Yes | QMessageBox::No, this);
+    box.setObjectName(QStringLiteral("confirmation"));
+    box.setDefaultButton(QMessageBox::No);  // a stray Enter never starts the rail
+    return box.exec() == QMessageBox::Yes;
+}
+
+void MainWindow::stopKey() {
+    if (last_.automatic) {
+        link_.stop();
+    } else {
+        link_.manualStop();
+        link_.jogStop();
+    }
+}
+
+void MainWindow::showProgramName() {
+    const QString mark = program_->dirty() ? QStringLiteral(" *") : QString();
+    if (!selectedFile_.isEmpty())
+        panel_->setProgramName(QFileInfo(selectedFile_).fileName() + mark);
+    programDock_->setWindowTitle(tr("Program") + mark);
+}
+
+void MainWindow::resetLayout() {
+    restoreState(defaultLayout_);
+    for (QDockWidget* d :
+         {programDock_, plotDock_, jogDock_, historyDock_, railDock_, simulationDock_}) {
+        d->setFloating(false);
+        d->show();
+    }
+    plotDock_->raise();
+    programDock_->raise();
+    applyDefaultDockSizes();
+}
+
+void MainWindow::showEvent(QShowEvent* e) {
+    QMainWindow::showEvent(e);
+    // Default dock sizes need the window's own size: applied once it is shown and laid out.
+    if (defaultSizesPending_) {
+        defaultSizesPending_ = false;
+        QTimer::singleShot(0, this, &MainWindow::applyDefaultDockSizes);
+    }
+}
+
+void MainWindow::applyDefaultDockSizes() {
+    // The plots get what two 150-px plots need under their buttons; the form gets the rest.
+    layout()->activate();  // the docks' current sizes first, or the request is dropped
+    resizeDocks({plotDock_}, {230}, Qt::Vertical);
+    resizeDocks({plotDock_, railDock_}, {width() * 7 / 10, width() * 3 / 10}, Qt::Horizontal);
+    resizeDocks({programDock_}, {std::max(240, width() * 3 / 10)}, Qt::Horizontal);
+}
+
+void MainWindow::startCompiled(std::shared_ptr<Program> program, std::size_t fromIndex) {
+    if (!program->ok()) {
+        setOnline([] { return tr("There are compile error(s)!"); });
+        return;
+    }
+    dro_->setProgramBlocks(static_cast<int>(program->blocks.size()));
     link_.run(program, fromIndex);
 }
 
@@ -429,6 +594,16 @@ void MainWindow::onStatus(const ControllerStatus& s) {
     const bool idle = s.state == ControllerState::AutoIdle;
     compile_->setEnabled(s.automatic && !compiling_);
     execute_->setEnabled(s.automatic && idle && !compiling_);
+    runControls_->showStatus(s, !selectedFile_.isEmpty(), compiling_);
+    dro_->showStatus(s);
+    const bool latched = s.state == ControllerState::EStop;
+    estopBanner_->setVisible(latched);
+    estop_->setText(latched ? tr("E-STOP LATCHED") : tr("E-STOP (Pause, F1)"));
+    if (estop_->property("latched").toBool() != latched) {
+        estop_->setProperty("latched", latched);
+        estop_->style()->unpolish(estop_);  // a dynamic property needs a re-polish to show
+        estop_->style()->polish(estop_);
+    }
     jogPanel_->setManual(!s.automatic);
     rail_->setState(s.servo.positionMm, s.servo.targetMm, s.servo.switches,
                     s.servo.mode == ServoMode::Move);
@@ -437,16 +612,13 @@ void MainWindow::onStatus(const ControllerStatus& s) {
                            s.state == ControllerState::Paused;
     program_->setExecutingLine(executing ? static_cast<int>(s.blockLine) : 0);
     if (++plotDivider_ % 2 == 0) plots_->addSample(s);  // 25 Hz is plenty for the eye
-    static const char* const kStates[] = {QT_TR_NOOP("Manual"),  QT_TR_NOOP("Automatic, ready"),
-                                          QT_TR_NOOP("Homing"),  QT_TR_NOOP("Running"),
-                                          QT_TR_NOOP("Waiting"), QT_TR_NOOP("Paused"),
-                                          QT_TR_NOOP("Alarm"),   QT_TR_NOOP("Emergency stop")};
     stateLabel_->setText(QStringLiteral("%1  |  x = %2 mm")
-                             .arg(tr(kStates[static_cast<int>(s.state)]))
+                             .arg(stateText(s.state))
                              .arg(s.servo.positionMm, 0, 'f', 2));
     resetEstop_->setEnabled(s.state == ControllerState::EStop);
     ack_->setEnabled(s.state == ControllerState::Alarm);
     hintLabel_->setText(nextStepText());
+    refreshOnline();
     QString timing;
     if (s.servo.overruns > 0)
         timing = tr("Late ticks: %1 (longest %2 ms)")
@@ -456,6 +628,25 @@ void MainWindow::onStatus(const ControllerStatus& s) {
         timing += (timing.isEmpty() ? QString() : QStringLiteral("  |  ")) +
                   tr("%1 status lines not shown").arg(dropped);
     timingLabel_->setText(timing);
+}
+
+QString MainWindow::stateText(ControllerState state) {
+    static const char* const kStates[] = {QT_TR_NOOP("Manual"),  QT_TR_NOOP("Automatic, ready"),
+                                          QT_TR_NOOP("Homing"),  QT_TR_NOOP("Running"),
+                                          QT_TR_NOOP("Waiting"), QT_TR_NOOP("Paused"),
+                                          QT_TR_NOOP("Alarm"),   QT_TR_NOOP("Emergency stop")};
+    return tr(kStates[static_cast<int>(state)]);
+}
+
+void MainWindow::setOnline(std::function<QString()> text) {
+    online_ = std::move(text);
+    refreshOnline();
+}
+
+void MainWindow::refreshOnline() {
+    // Recomputed, never stored as text: a language switch or a state change shows at once.
+    const QString text = online_ ? online_() : QString();
+    if (panel_->onlineStatusField()->text() != text) panel_->setOnlineStatus(text);
 }
 
 void MainWindow::reportJournalProblem(const QString& reason) {
@@ -486,7 +677,13 @@ QString MainWindow::nextStepText() const {
 void MainWindow::onEvent(const ControllerEvent& e) {
     const QString line = historyLine(e);
     const QString online = onlineStatus(e);
-    if (!online.isEmpty()) panel_->setOnlineStatus(online);
+    if (!online.isEmpty()) setOnline([e] { return onlineStatus(e); });
+    if (e.kind == EventKind::AlarmAcknowledged || e.kind == EventKind::EStopReset) {
+        // The alarm is over: the box says the state from now on, the Alarms line empties (the
+        // list keeps the alarm for reading).
+        setOnline([this] { return stateText(last_.state); });
+        panel_->setAlarmSummary(QString());
+    }
     panel_->addStatusLine(line);
     const bool alarm = e.kind == EventKind::AlarmRaised;
     if (alarm || e.kind == EventKind::CompileFailed) panel_->addAlarmLine(line);
@@ -501,11 +698,21 @@ void MainWindow::onEvent(const ControllerEvent& e) {
 }
 
 bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
-    if (event->type() != QEvent::KeyPress || !isActiveWindow())
-        return QMainWindow::eventFilter(watched, event);
+    if (event->type() != QEvent::KeyPress) return QMainWindow::eventFilter(watched, event);
     auto* key = static_cast<QKeyEvent*>(event);
-    if (key->key() == Qt::Key_Escape) {  // E-stop, wherever the focus is
+    // E-stop keys (Pause/Break and F1): no menu, list or dialog uses them, so they trip
+    // wherever the focus is, in any of the program's windows, popups included.
+    if (key->key() == Qt::Key_Pause || key->key() == Qt::Key_F1) {
         link_.emergencyStop();
+        return true;
+    }
+    // Esc closes the menu, drop-down or dialog that is open; only on the bare main screen is
+    // it a controlled stop (never the E-stop: a nuisance trip costs a reset and a homing).
+    const bool popupOpen = QApplication::activePopupWidget() != nullptr ||
+                           QApplication::activeModalWidget() != nullptr;
+    if (!isActiveWindow() || popupOpen) return QMainWindow::eventFilter(watched, event);
+    if (key->key() == Qt::Key_Escape) {
+        stopKey();
         return true;
     }
     // Space stops the rail whatever has the focus (a gain field takes only numbers), but for
@@ -513,10 +720,7 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
     QWidget* focus = QApplication::focusWidget();
     const bool editor = qobject_cast<QPlainTextEdit*>(focus) != nullptr;
     if (key->key() == Qt::Key_Space && !editor && !key->isAutoRepeat()) {
-        if (last_.automatic)
-            link_.stop();
-        else
-            link_.manualStop(), link_.jogStop();
+        stopKey();
         return true;
     }
     // The original's keys in manual mode: '<' left, '>' right - unless the operator is typing.
@@ -530,10 +734,13 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
 
 void MainWindow::closeEvent(QCloseEvent* e) {
     if (program_->dirty()) {
-        const auto answer =
-            QMessageBox::question(this, tr("Unsaved program"),
-                                  tr("The program has unsaved changes. Save them before leaving?"),
-                                  QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+        // Without a file there is nothing to save to: only discard or stay.
+        const auto buttons = program_->path().isEmpty()
+                                 ? QMessageBox::Discard | QMessageBox::Cancel
+                                 : QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel;
+        const auto answer = QMessageBox::question(
+            this, tr("Unsaved program"),
+            tr("The program has unsaved changes. Save them before leaving?"), buttons);
         if (answer == QMessageBox::Cancel) return e->ignore();
         QString error;
         if (answer == QMessageBox::Save && !program_->save(&error)) {
@@ -541,7 +748,21 @@ void MainWindow::closeEvent(QCloseEvent* e) {
             return e->ignore();
         }
     }
-    link_.emergencyStop();
+    // Exit while the rail moves asks first, naming the move; the answer Yes drops the drive at
+    // once (a real emergency stop). At rest nothing is tripped: a normal exit journals no
+    // false "Alarm 9".
+    const ControllerStatus& s = last_;
+    const bool moving = s.servo.mode == ServoMode::Move || s.manualCode != 128 ||
+                        s.state == ControllerState::Running || s.state == ControllerState::Homing ||
+                        std::abs(s.servo.velocityMmS) > 1.0;
+    if (moving) {
+        if (!confirm(tr("Exit"), tr("The rail is moving (x = %1 mm, towards x = %2 mm). Exit "
+                                    "stops it with an emergency stop. Exit now?")
+                                     .arg(s.servo.positionMm, 0, 'f', 2)
+                                     .arg(s.servo.targetMm, 0, 'f', 2)))
+            return e->ignore();
+        link_.emergencyStop();
+    }
     settings_.setValue(QStringLiteral("geometry"), saveGeometry());
     settings_.setValue(QStringLiteral("windowState"), saveState());
     e->accept();

@@ -17,13 +17,16 @@ class QDockWidget;
 class QLabel;
 class QProgressBar;
 class QMenu;
+class QToolBar;
 class QToolButton;
 
 namespace trilho {
 namespace ui {
 
+class DroPanel;
 class ExecutionPanel;
 class HistoryPanel;
+class RunControls;
 class JogPanel;
 class MachineLink;
 class PlotPanel;
@@ -41,7 +44,15 @@ class MainWindow : public QMainWindow {
     bool selectProgram(const QString& path);
     void compileSelected();                           ///< Comando > Compilar arquivo
     void executeSelected(std::size_t fromIndex = 0);  ///< Comando > Executar arquivo
+    /// Cycle start as the operator asks it: confirms, naming what moves where, then executes.
+    void requestCycleStart();
     void setLanguage(const QString& lang);
+    /// Asks the operator yes or no; tests replace it to answer (and read) the question.
+    using Confirmer = std::function<bool(const QString& title, const QString& text)>;
+    void setConfirmer(Confirmer confirmer) { confirmer_ = std::move(confirmer); }
+    /// The layout as first built (Windows > Reset layout).
+    void resetLayout();
+    void applyDefaultDockSizes();
     void setTheme(Theme theme);
     QString language() const { return language_; }
 
@@ -52,6 +63,12 @@ class MainWindow : public QMainWindow {
     HistoryPanel* history() const { return history_; }
     RailView* railView() const { return rail_; }
     SimulationPanel* simulation() const { return simulation_; }
+    RunControls* runControls() const { return runControls_; }
+    DroPanel* dro() const { return dro_; }
+    QLabel* estopBanner() const { return estopBanner_; }
+    QAction* keysAction() const { return keys_; }
+    QAction* resetLayoutAction() const { return resetLayout_; }
+    QMenu* fileMenu() const { return fileMenu_; }
     /// The status bar's next step after an alarm or a lost reference (empty when none).
     QString nextStepText() const;
     QLabel* timingLabel() const { return timingLabel_; }
@@ -61,10 +78,12 @@ class MainWindow : public QMainWindow {
     QAction* executeAction() const { return execute_; }
     QAction* selectAction() const { return select_; }
     QAction* classicDialectAction() const { return classicDialect_; }
+    QAction* classicLawAction() const { return classicLaw_; }
     QToolButton* emergencyButton() const { return estop_; }
 
   protected:
     void closeEvent(QCloseEvent* e) override;
+    void showEvent(QShowEvent* e) override;
     void changeEvent(QEvent* e) override;
     bool eventFilter(QObject* watched, QEvent* event) override;
 
@@ -78,6 +97,15 @@ class MainWindow : public QMainWindow {
     /// Compiles the editor's text (a long one on a worker thread) and calls then with it.
     void compileEditor(bool showInAlarms, std::function<void(std::shared_ptr<Program>)> then);
     void startCompiled(std::shared_ptr<Program> program, std::size_t fromIndex);
+    bool confirm(const QString& title, const QString& text);
+    /// "from x = 12.00 mm to x = 0.00 mm": where a run from block fromIndex first drives.
+    QString approachText(const Program& program, std::size_t fromIndex) const;
+    void stopKey();  ///< Esc, Space, PARA and Stop: a controlled stop in either mode
+    static QString stateText(ControllerState state);
+    /// The online status box's text, as a function so it follows the language and the state.
+    void setOnline(std::function<QString()> text);
+    void refreshOnline();
+    void showProgramName();  ///< the file's name, with " *" while the editor has unsaved changes
 
   public:
     bool compiling() const { return compiling_; }
@@ -97,14 +125,22 @@ class MainWindow : public QMainWindow {
     HistoryPanel* history_;
     RailView* rail_;
     SimulationPanel* simulation_;
+    RunControls* runControls_;
+    DroPanel* dro_;
+    QLabel* estopBanner_;
+    QByteArray defaultLayout_;
+    bool defaultSizesPending_ = false;  ///< no saved layout: default dock sizes at first show
+    Confirmer confirmer_;
+    std::function<QString()> online_;
     QDockWidget *programDock_, *plotDock_, *jogDock_, *historyDock_, *railDock_, *simulationDock_;
     QMenu *fileMenu_, *commandMenu_, *optionsMenu_, *languageMenu_, *themeMenu_, *lawMenu_,
-        *dialectMenu_, *viewMenu_;
-    QAction *select_, *exit_, *manual_, *automatic_, *compile_, *execute_;
+        *dialectMenu_, *viewMenu_, *helpMenu_;
+    QAction *select_, *exit_, *manual_, *automatic_, *compile_, *execute_, *keys_, *resetLayout_;
     QAction *classicTheme_, *systemTheme_, *classicLaw_, *engineeredLaw_, *standardDialect_,
         *classicDialect_;
     QActionGroup* languages_;
     QToolButton *estop_, *resetEstop_, *ack_;
+    QToolBar* safetyBar_;
     QLabel* stateLabel_;
     QLabel* hintLabel_;    ///< what to do next (after an alarm, before homing)
     QLabel* timingLabel_;  ///< late servo ticks and the longest period; unread history lines

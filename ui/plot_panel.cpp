@@ -4,10 +4,12 @@
 #include <QEvent>
 #include <QFileDialog>
 #include <QHBoxLayout>
+#include <QPainter>
 #include <QPushButton>
 #include <QSaveFile>
 #include <QSpinBox>
 #include <QVBoxLayout>
+#include <cmath>
 
 namespace trilho {
 namespace ui {
@@ -17,7 +19,7 @@ QCustomPlot* makePlot(QWidget* parent) {
     auto* p = new QCustomPlot(parent);
     p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     p->axisRect()->setRangeZoom(Qt::Horizontal | Qt::Vertical);
-    p->setMinimumHeight(60);
+    p->setMinimumHeight(150);
     p->setNotAntialiasedElements(QCP::aeAll);  // cheap redraws at 25 Hz
     QFont small = p->font();
     small.setPointSizeF(small.pointSizeF() * 0.8);
@@ -62,8 +64,12 @@ PlotPanel::PlotPanel(QWidget* parent) : QWidget(parent) {
     buttons->addWidget(csv_);
     auto* v = new QVBoxLayout(this);
     v->addLayout(buttons);
-    v->addWidget(position_, 1);
-    v->addWidget(error_, 1);
+    // Side by side: on a 768-line screen the dock is about 200 px high, and two plots stacked
+    // there were 60 px each, their tick labels overprinted.
+    auto* plots = new QHBoxLayout;
+    plots->addWidget(position_, 1);
+    plots->addWidget(error_, 1);
+    v->addLayout(plots, 1);
     connect(pause_, &QPushButton::toggled, this, &PlotPanel::setPaused);
     connect(png_, &QPushButton::clicked, this, [this] {
         const QString f = QFileDialog::getSaveFileName(this, tr("Export PNG"), QString(),
@@ -86,8 +92,9 @@ void PlotPanel::retranslate() {
     setpointGraph_->setName(tr("setpoint"));
     positionGraph_->setName(tr("position"));
     position_->yAxis->setLabel(tr("position (mm)"));
-    error_->yAxis->setLabel(tr("following error (mm)"));
-    error_->yAxis2->setLabel(tr("drive (DAC code)"));
+    // Short axis titles: a 150-px plot clipped "following error (mm)"; the legend names them.
+    error_->yAxis->setLabel(tr("error (mm)"));
+    error_->yAxis2->setLabel(tr("DAC"));
     errorGraph_->setName(tr("following error (mm)"));
     driveGraph_->setName(tr("drive (DAC code)"));
     replot();
@@ -119,7 +126,11 @@ void PlotPanel::addSample(const ControllerStatus& s) {
     const double keepFrom = t - 600.0;
     for (QCPGraph* g : {setpointGraph_, positionGraph_, errorGraph_, driveGraph_})
         g->data()->removeBefore(keepFrom);
-    if (!paused_) replot();
+    // Moving, the plots scroll at the sample rate (25 Hz); at rest, flat lines scroll at 5 Hz:
+    // two plots side by side are more pixels, and an idle screen must stay cheap.
+    const bool active = s.servo.mode == ServoMode::Move || std::abs(s.servo.velocityMmS) > 0.5 ||
+                        std::abs(s.servo.errorMm) > 0.05;
+    if (!paused_ && (active || ++restFrames_ % 5 == 0)) replot();
 }
 
 void PlotPanel::replot() {
@@ -148,7 +159,17 @@ void PlotPanel::replot() {
 }
 
 bool PlotPanel::exportPng(const QString& path) {
-    return position_->savePng(path, 0, 0, 1.0, -1, 96);
+    // Both plots, as on screen (side by side): the position alone hid the error and the drive.
+    const QPixmap left = position_->toPixmap();
+    const QPixmap right = error_->toPixmap();
+    QImage image(left.width() + right.width(), std::max(left.height(), right.height()),
+                 QImage::Format_RGB32);
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    painter.drawPixmap(0, 0, left);
+    painter.drawPixmap(left.width(), 0, right);
+    painter.end();
+    return image.save(path, "PNG");
 }
 
 bool PlotPanel::exportCsv(const QString& path, QString* error) {

@@ -37,6 +37,7 @@ class PlotPanel : public QWidget {
     QSpinBox* window_;
     bool paused_ = false;
     double lastT_ = -1.0;
+    unsigned restFrames_ = 0;  ///< samples at rest, for the slower replot
 };
 
 }  // namespace ui

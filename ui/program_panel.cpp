@@ -3,7 +3,7 @@
 #include <QEvent>
 #include <QFile>
 
-#include <QHBoxLayout>
+#include <QGridLayout>
 #include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
@@ -24,15 +24,21 @@ ProgramPanel::ProgramPanel(QWidget* parent) : QWidget(parent) {
     list_ = new QListWidget(this);
     save_ = new QPushButton(this);
     startHere_ = new QPushButton(this);
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(save_);
-    buttons->addWidget(startHere_);
-    buttons->addStretch();
+    // Two rows: "Iniciar a partir do bloco selecionado" beside Save widened the dock past a
+    // 1024-wide screen.
+    auto* buttons = new QGridLayout;
+    buttons->addWidget(save_, 0, 0);
+    buttons->addWidget(startHere_, 1, 0, 1, 2);
+    buttons->setColumnStretch(1, 1);
     auto* split = new QSplitter(Qt::Vertical, this);
     split->addWidget(editor_);
     split->addWidget(list_);
     split->setStretchFactor(0, 4);
     split->setStretchFactor(1, 1);
+    // Small minimums: the right docks must not hold the window's middle (and so the Plots
+    // dock) at their natural height on a 768-line screen.
+    editor_->setMinimumHeight(editor_->fontMetrics().lineSpacing() * 3 + 8);
+    list_->setMinimumHeight(list_->fontMetrics().lineSpacing() * 2 + 6);
     auto* v = new QVBoxLayout(this);
     v->addLayout(buttons);
     v->addWidget(split);
@@ -80,7 +86,10 @@ bool ProgramPanel::load(const QString& path, QString* error) {
 }
 
 bool ProgramPanel::save(QString* error) {
-    if (path_.isEmpty()) return false;
+    if (path_.isEmpty()) {
+        if (error) *error = tr("No program is selected: there is no file to save to.");
+        return false;
+    }
     QSaveFile f(path_);
     if (!f.open(QIODevice::WriteOnly) || f.write(editor_->toPlainText().toUtf8()) < 0 ||
         !f.commit()) {

@@ -10,8 +10,10 @@ namespace ui {
 
 RailView::RailView(const MachineProfile& profile, QWidget* parent)
     : QWidget(parent), profile_(profile) {
-    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
-    setFixedHeight(80);
+    // Room for the position caption above and the switch captions below the rail (80 px cut
+    // the captions off). Not a fixed height: beside the plots it must let their dock grow.
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
+    setMinimumHeight(std::max(96, 2 * fontMetrics().height() + 64));
 }
 
 void RailView::setState(double positionMm, double targetMm, std::uint8_t switches, bool moving) {
@@ -35,7 +37,9 @@ void RailView::paintEvent(QPaintEvent*) {
     QPainter p(this);
     p.setRenderHint(QPainter::Antialiasing);
     p.fillRect(rect(), palette().base());
-    const double y = height() * 0.55;
+    // The drawing keeps its minimum height, centred in whatever height the dock gives.
+    p.translate(0, (height() - minimumHeight()) / 2);
+    const double y = minimumHeight() * 0.55;
     const auto& pl = profile_.plant;
     // Soft limits as a lighter band.
     p.fillRect(QRectF(QPointF(toX(profile_.limits.x.softMinMm), y - 6),
@@ -55,7 +59,8 @@ void RailView::paintEvent(QPaintEvent*) {
         // Keep the caption inside the widget at both ends of the rail.
         const double w = p.fontMetrics().horizontalAdvance(label) + 4;
         const double left = std::clamp(box.center().x() - w / 2, 0.0, width() - w);
-        p.drawText(QRectF(left, box.bottom() + 1, w, 16), Qt::AlignCenter, label);
+        p.drawText(QRectF(left, box.bottom() + 1, w, p.fontMetrics().height() + 2), Qt::AlignCenter,
+                   label);
     };
     drawSwitch(-pl.endSwitchMm, switches_ & switch_bits::kLeftEnd, tr("left end"));
     drawSwitch(0.0, switches_ & switch_bits::kCentre, tr("centre"));

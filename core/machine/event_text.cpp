@@ -185,7 +185,10 @@ QString historyLine(const ControllerEvent& e) {
         x = QString::number(static_cast<int>(e.alarm));
         third = alarmText(e.alarm, e.value);
     }
-    return substitute(QCoreApplication::translate(kContext, historySource(e.kind)), {n, x, third});
+    QString line = QCoreApplication::translate(kContext, historySource(e.kind));
+    // A block without N (programs need not number them) has no "0010: " prefix, not ": ".
+    if (n.isEmpty() && line.startsWith(QLatin1String("%1: "))) line.remove(0, 4);
+    return substitute(line, {n, x, third});
 }
 
 QString onlineStatus(const ControllerEvent& e) {

@@ -1,0 +1,691 @@
+// Issue 10: screens a shift can work with - safe keys, visible run controls, a real DRO, a
+// latched E-stop that shows, confirmations, legible layouts, no stale or untranslated text.
+// Offscreen, on the simulated rail in real time; every wait is on a condition (QTRY_*).
+#include <qcustomplot.h>
+#include <QAbstractButton>
+#include <QAbstractScrollArea>
+#include <QAction>
+#include <QComboBox>
+#include <QDir>
+#include <QDockWidget>
+#include <QFile>
+#include <QFileInfo>
+#include <QGroupBox>
+#include <QImage>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListView>
+#include <QMenu>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QStatusBar>
+#include <QTabBar>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include <QToolButton>
+#include <QTreeView>
+
+#include "core/machine/event_text.h"
+#include "translations/i18n.h"
+#include "ui/code_editor.h"
+#include "ui/dro_panel.h"
+#include "ui/execution_panel.h"
+#include "ui/history_panel.h"
+#include "ui/jog_panel.h"
+#include "ui/keys_dialog.h"
+#include "ui/machine_link.h"
+#include "ui/main_window.h"
+#include "ui/plot_panel.h"
+#include "ui/program_panel.h"
+#include "ui/run_controls.h"
+#include "ui/select_file_dialog.h"
+#include "ui/theme.h"
+
+using namespace trilho;
+using namespace trilho::ui;
+
+class OperatorScreensTest : public QObject {
+    Q_OBJECT
+
+  private:
+    QTemporaryDir dir_;
+    std::unique_ptr<QSettings> settings_;
+    std::unique_ptr<MachineLink> link_;
+    std::unique_ptr<MainWindow> window_;
+    QStringList questions_;  ///< every confirmation asked, title then text
+    bool answer_ = true;
+
+    ExecutionPanel* panel() { return window_->panel(); }
+    RunControls* run() { return window_->runControls(); }
+    const ControllerStatus& status() { return link_->status(); }
+    QString writeProgram(const char* name, const QByteArray& text) {
+        const QString path = dir_.filePath(QLatin1String(name));
+        QFile f(path);
+        f.open(QIODevice::WriteOnly);
+        f.write(text);
+        return path;
+    }
+    void goAutomatic() {
+        window_->automaticAction()->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(
+            status().automatic && status().homed && status().state == ControllerState::AutoIdle,
+            30000);
+    }
+    void startLongMove() {
+        goAutomatic();
+        QVERIFY(window_->selectProgram(writeProgram("far.G", "N10 G0 X900\nN20 M2\n")));
+        window_->executeAction()->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(status().state == ControllerState::Running &&
+                                     std::abs(status().servo.velocityMmS) > 10.0,
+                                 10000);
+    }
+    /// A dock behind another's tab (Qt parks it off the window; its tab is what shows).
+    bool behindATab(QDockWidget* dock) {
+        for (QTabBar* bar : window_->findChildren<QTabBar*>(Qt::FindDirectChildrenOnly))
+            for (int i = 0; i < bar->count(); ++i)
+                if (bar->tabText(i) == dock->windowTitle()) return i != bar->currentIndex();
+        return false;
+    }
+    /// Visible widgets of the main window outside scroll areas and tabs behind others.
+    QList<QWidget*> framedWidgets() {
+        QList<QWidget*> out;
+        for (QWidget* w : window_->findChildren<QWidget*>()) {
+            if (!w->isVisible() || w->isWindow()) continue;
+            bool hidden = false;
+            for (QWidget* p = w; p && p != window_.get(); p = p->parentWidget()) {
+                if (p != w && qobject_cast<QAbstractScrollArea*>(p)) hidden = true;
+                if (auto* dock = qobject_cast<QDockWidget*>(p); dock && behindATab(dock))
+                    hidden = true;
+            }
+            if (!hidden) out << w;
+        }
+        return out;
+    }
+    /// Lets the posted resize and layout requests run (layouts settle in a few passes).
+    static void settle() {
+        for (int i = 0; i < 5; ++i) {
+            QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+            QCoreApplication::processEvents();
+        }
+    }
+    QRect inWindow(QWidget* w) { return QRect(w->mapTo(window_.get(), QPoint(0, 0)), w->size()); }
+
+  private slots:
+    void init() {
+        installLanguage(QStringLiteral("en"));
+        applyTheme(*qApp, Theme::Classic);
+        settings_ = std::make_unique<QSettings>(dir_.filePath(QStringLiteral("s.ini")),
+                                                QSettings::IniFormat);
+        settings_->clear();
+        link_ = std::make_unique<MachineLink>(MachineProfile::rail());
+        window_ = std::make_unique<MainWindow>(*link_, *settings_);
+        questions_.clear();
+        answer_ = true;
+        window_->setConfirmer([this](const QString& title, const QString& text) {
+            questions_ << title << text;
+            return answer_;
+        });
+        window_->resize(1366, 768);
+        window_->show();
+        QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+        window_->activateWindow();
+        QTRY_VERIFY(window_->isActiveWindow());
+    }
+    void cleanup() {
+        window_->setConfirmer([](const QString&, const QString&) { return true; });
+        window_.reset();
+        link_.reset();
+    }
+
+    // ---- (1) Esc never trips the E-stop; Pause and F1 always do ----
+    void escapeClosesAMenuWithoutTripping() {
+        QMenu* menu = window_->fileMenu();
+        menu->popup(window_->mapToGlobal(QPoint(10, 30)));
+        QTRY_VERIFY(menu->isVisible());
+        QTest::keyClick(menu, Qt::Key_Escape);
+        QTRY_VERIFY(!menu->isVisible());
+        link_->poll();
+        QVERIFY(status().state != ControllerState::EStop);
+        QCOMPARE(status().state, ControllerState::Manual);
+    }
+
+    void escapeClosesTheAlarmsDropDownWithoutTripping() {
+        panel()->addAlarmLine(QStringLiteral("a line"));
+        QComboBox* alarms = panel()->alarms();
+        alarms->showPopup();
+        QTRY_VERIFY(QApplication::activePopupWidget() != nullptr);
+        QTest::keyClick(QApplication::activePopupWidget(), Qt::Key_Escape);
+        QTRY_VERIFY(QApplication::activePopupWidget() == nullptr);
+        link_->poll();
+        QCOMPARE(status().state, ControllerState::Manual);
+    }
+
+    void escapeIsAControlledStopWithTheFocusInAnyField() {
+        QTest::keyClick(window_.get(), '>');
+        QTRY_COMPARE(int(status().manualCode), 129);
+        QLineEdit* gain = panel()->gainField(0);
+        QTest::mouseClick(gain, Qt::LeftButton);
+        QTRY_VERIFY(gain->hasFocus());
+        QTest::keyClick(gain, Qt::Key_Escape);
+        QTRY_COMPARE(int(status().manualCode), 128);
+        QCOMPARE(status().state, ControllerState::Manual);  // stopped, not tripped
+        // In automatic, from the program editor: Esc stops the program.
+        startLongMove();
+        CodeEditor* editor = window_->programPanel()->editor();
+        editor->setFocus();
+        QTest::keyClick(editor, Qt::Key_Escape);
+        QTRY_COMPARE_WITH_TIMEOUT(status().state, ControllerState::AutoIdle, 10000);
+        QVERIFY(std::abs(status().servo.positionMm) < 890.0);
+    }
+
+    void emergencyKeysTripWithAMenuOpenAndFromTheEditor() {
+        QMenu* menu = window_->fileMenu();
+        menu->popup(window_->mapToGlobal(QPoint(10, 30)));
+        QTRY_VERIFY(menu->isVisible());
+        QTest::keyClick(menu, Qt::Key_Pause);
+        QTRY_COMPARE(status().state, ControllerState::EStop);
+        menu->hide();
+        link_->resetEmergencyStop();
+        QTRY_COMPARE(status().state, ControllerState::Manual);
+        CodeEditor* editor = window_->programPanel()->editor();
+        editor->setFocus();
+        QTest::keyClick(editor, Qt::Key_F1);
+        QTRY_COMPARE(status().state, ControllerState::EStop);
+        // and in a dialog that is open (the Keys page)
+        link_->resetEmergencyStop();
+        QTRY_COMPARE(status().state, ControllerState::Manual);
+        KeysDialog keys(run()->keyedActions(), window_.get());
+        keys.show();
+        QTest::keyClick(keys.table(), Qt::Key_F1);
+        QTRY_COMPARE(status().state, ControllerState::EStop);
+    }
+
+    // ---- (3) run controls on the main screen, with keys, in both modes ----
+    void runKeysWorkWithTheFocusInTheEditor() {
+        goAutomatic();
+        QVERIFY(
+            window_->selectProgram(writeProgram("two.G", "N10 G1 X400 F20\nN20 G0 X0\nN30 M2\n")));
+        CodeEditor* editor = window_->programPanel()->editor();
+        editor->setFocus();
+        QTRY_VERIFY(run()->cycleStartAction()->isEnabled());
+        QTest::keyClick(editor, Qt::Key_F5);  // cycle start
+        QTRY_VERIFY_WITH_TIMEOUT(status().state == ControllerState::Running, 5000);
+        QCOMPARE(questions_.value(0), QStringLiteral("Cycle start"));
+        QTRY_VERIFY(run()->holdAction()->isEnabled());
+        QTest::keyClick(editor, Qt::Key_F6);  // feed hold
+        QTRY_VERIFY_WITH_TIMEOUT(
+            status().state == ControllerState::Paused && status().pause == PauseReason::Hold, 5000);
+        QTRY_VERIFY(run()->continueAction()->isEnabled());
+        QTest::keyClick(editor, Qt::Key_F7);  // continue
+        QTRY_VERIFY_WITH_TIMEOUT(status().state == ControllerState::Running, 5000);
+        QTest::keyClick(editor, Qt::Key_Minus, Qt::ControlModifier);
+        QTRY_COMPARE(status().feedOverride, 0.9);
+        QTest::keyClick(editor, Qt::Key_0, Qt::ControlModifier);
+        QTRY_COMPARE(status().feedOverride, 1.0);
+        QTest::keyClick(editor, Qt::Key_F8);  // stop
+        QTRY_COMPARE_WITH_TIMEOUT(status().state, ControllerState::AutoIdle, 10000);
+        QTest::keyClick(editor, Qt::Key_F9);  // single block
+        QTRY_VERIFY(status().singleBlock);
+        QVERIFY(run()->singleBlockAction()->isChecked());
+        QVERIFY(editor->toPlainText().startsWith(QLatin1String("N10 G1")));  // nothing typed
+    }
+
+    void paraStopsAProgramInAutomatic() {
+        startLongMove();
+        QVERIFY(panel()->stopButton()->isEnabled());
+        QTest::mouseClick(panel()->stopButton(), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(status().state, ControllerState::AutoIdle, 10000);
+        QVERIFY(std::abs(status().servo.positionMm) < 890.0);
+    }
+
+    void runControlsAreVisibleInBothModesAndListedUnderKeys() {
+        for (int mode = 0; mode < 2; ++mode) {
+            if (mode == 1) goAutomatic();
+            for (QAction* a :
+                 {run()->cycleStartAction(), run()->holdAction(), run()->continueAction(),
+                  run()->stopAction(), run()->singleBlockAction()}) {
+                QToolButton* b = run()->buttonFor(a);
+                QVERIFY2(b && b->isVisible(), qPrintable(a->objectName()));
+                QVERIFY(window_->rect().contains(inWindow(b)));
+                QVERIFY(!a->shortcut().isEmpty());
+            }
+            QVERIFY(run()->overrideSlider()->isVisible());
+            QVERIFY(run()->stopAction()->isEnabled());
+        }
+        KeysDialog keys(run()->keyedActions(), window_.get());
+        QStringList listed;
+        for (int r = 0; r < keys.table()->rowCount(); ++r)
+            listed << keys.table()->item(r, 0)->text();
+        for (QAction* a : run()->keyedActions())
+            QVERIFY2(listed.contains(a->shortcut().toString(QKeySequence::NativeText)),
+                     qPrintable(a->objectName()));
+        QVERIFY(listed.join(QLatin1Char(' ')).contains(QStringLiteral("F1")));
+        QVERIFY(listed.join(QLatin1Char(' ')).contains(QStringLiteral("Esc")));
+        QVERIFY(window_->keysAction() != nullptr);
+    }
+
+    // ---- (2) disabled controls look dead, in both themes ----
+    void disabledControlsLookDeadInBothThemes() {
+        for (Theme theme : {Theme::Classic, Theme::System}) {
+            window_->setTheme(theme);
+            QCoreApplication::processEvents();
+            int checked = 0;
+            for (QAbstractButton* b : window_->findChildren<QAbstractButton*>()) {
+                const QPalette p = b->palette();
+                QVERIFY2(p.color(QPalette::Disabled, QPalette::ButtonText) !=
+                             p.color(QPalette::Active, QPalette::ButtonText),
+                         qPrintable(QStringLiteral("%1 '%2' in %3")
+                                        .arg(QString::fromLatin1(b->metaObject()->className()),
+                                             b->text(), themeName(theme))));
+                ++checked;
+            }
+            QVERIFY(checked > 20);
+            QVERIFY(!panel()->continueButton()->isEnabled());
+        }
+        window_->setTheme(Theme::Classic);
+    }
+
+    // ---- (4) the DRO ----
+    void droShowsWorkAndMachineCoordinatesDwellAndProgress() {
+        goAutomatic();
+        QVERIFY(window_->selectProgram(
+            writeProgram("dro.G", "N10 G0 X100\nN20 G92 X100\nN30 G0 X50\nN40 G4 X3\nN50 M2\n")));
+        window_->executeAction()->trigger();
+        DroPanel* dro = window_->dro();
+        QTRY_VERIFY_WITH_TIMEOUT(status().dwellRemainingS > 0.5, 15000);
+        QTRY_VERIFY(dro->dwell()->text().startsWith(QStringLiteral("Dwell ")));
+        const double machine = dro->machinePosition()->text().toDouble();
+        QVERIFY2(std::abs(machine - 150.0) < 0.1, qPrintable(dro->machinePosition()->text()));
+        QVERIFY(dro->workPosition()->isVisible());
+        QVERIFY(std::abs(dro->workPosition()->text().toDouble() - (machine - 100.0)) < 0.011);
+        QVERIFY(std::abs(dro->distanceToGo()->text().toDouble()) < 0.1);
+        QVERIFY(dro->modalState()->text().contains(QStringLiteral("G90")));
+        QVERIFY(dro->modalState()->text().contains(QStringLiteral("zero 100.00 mm")));
+        QVERIFY(dro->modalState()->text().contains(QStringLiteral("override 100 %")));
+        QCOMPARE(dro->blockProgress()->format(), QStringLiteral("Block 4 / 5"));
+        QVERIFY(dro->cycleTime()->text().startsWith(QStringLiteral("Cycle 00:0")));
+        QVERIFY(dro->machinePosition()->font().pointSize() >= 20);
+        QTRY_VERIFY_WITH_TIMEOUT(status().programFinished, 10000);
+        QTRY_VERIFY(!dro->workPosition()->isVisible());
+    }
+
+    // ---- (5) a latched E-stop is unmistakable ----
+    void aLatchedEmergencyStopIsUnmistakable() {
+        QVERIFY(!window_->estopBanner()->isVisible());
+        QTest::mouseClick(window_->emergencyButton(), Qt::LeftButton);
+        QTRY_VERIFY(window_->estopBanner()->isVisible());
+        QVERIFY(window_->estopBanner()->text().contains(QStringLiteral("LATCHED")));
+        QCOMPARE(window_->emergencyButton()->text(), QStringLiteral("E-STOP LATCHED"));
+        link_->resetEmergencyStop();
+        QTRY_VERIFY(!window_->estopBanner()->isVisible());
+        QVERIFY(!window_->emergencyButton()->text().contains(QStringLiteral("LATCHED")));
+    }
+
+    // ---- (6) confirmations name what moves and where ----
+    void executeAsksAndNoMeansNothingMoves() {
+        goAutomatic();
+        QVERIFY(window_->selectProgram(writeProgram("c.G", "N10 G0 X300\nN20 M2\n")));
+        answer_ = false;
+        window_->executeAction()->trigger();
+        QCOMPARE(questions_.size(), 2);
+        QVERIFY(questions_[1].contains(QStringLiteral("c.G")));
+        QVERIFY(questions_[1].contains(QStringLiteral("to x = 0.00 mm")));
+        QVERIFY(questions_[1].contains(QStringLiteral("x = 300.00 mm")));
+        QTest::qWait(200);  // proving that nothing happens takes time
+        QCOMPARE(status().state, ControllerState::AutoIdle);
+        answer_ = true;
+        window_->executeAction()->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(status().programFinished, 15000);
+    }
+
+    void theRealQuestionIsAskedWithNoAsDefault() {
+        goAutomatic();
+        QVERIFY(window_->selectProgram(writeProgram("d.G", "N10 G0 X300\nN20 M2\n")));
+        window_->setConfirmer(nullptr);  // the real dialog, answered as an operator would
+        QString text;
+        bool defaultNo = false;
+        QTimer answer;
+        answer.setInterval(20);
+        connect(&answer, &QTimer::timeout, this, [&] {
+            auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+            if (!box || box->objectName() != QLatin1String("confirmation")) return;
+            answer.stop();
+            text = box->text();
+            defaultNo = box->defaultButton() == box->button(QMessageBox::No);
+            QTest::keyClick(box, Qt::Key_Return);  // Enter takes the default: No
+        });
+        answer.start();
+        window_->executeAction()->trigger();
+        QVERIFY(text.contains(QStringLiteral("d.G")));
+        QVERIFY(defaultNo);
+        QTest::qWait(200);
+        QCOMPARE(status().state, ControllerState::AutoIdle);
+    }
+
+    void startFromTheSelectedBlockNamesTheApproach() {
+        goAutomatic();
+        QVERIFY(window_->selectProgram(
+            writeProgram("s.G", "N10 G0 X200\nN20 G0 X-100\nN30 G0 X50\nN40 M2\n")));
+        window_->programPanel()->editor()->goToLine(3, 1);
+        answer_ = false;
+        const auto buttons = window_->programPanel()->findChildren<QPushButton*>();
+        QPushButton* startHere = nullptr;
+        for (QPushButton* b : buttons)
+            if (b->text().startsWith(QStringLiteral("Start from"))) startHere = b;
+        QVERIFY(startHere);
+        QTest::mouseClick(startHere, Qt::LeftButton);
+        QCOMPARE(questions_.size(), 2);
+        QVERIFY(questions_[1].contains(QStringLiteral("N30")));
+        QVERIFY(questions_[1].contains(QStringLiteral("to x = -100.00 mm")));
+        QTest::qWait(200);
+        QCOMPARE(status().state, ControllerState::AutoIdle);
+    }
+
+    void exitWhileMovingAsksAndNoKeepsTheWindow() {
+        startLongMove();
+        answer_ = false;
+        QVERIFY(!window_->close());
+        QVERIFY(window_->isVisible());
+        QVERIFY(questions_.last().contains(QStringLiteral("towards x = 900.00 mm")));
+        QVERIFY(status().state == ControllerState::Running);
+        answer_ = true;
+        QVERIFY(window_->close());
+        QTRY_COMPARE(status().state, ControllerState::EStop);
+    }
+
+    void exitAtRestTripsNothing() {
+        QVERIFY(window_->close());
+        QTest::qWait(100);  // the worker's next ticks; an E-stop would show up in them
+        link_->poll();
+        QVERIFY(status().state != ControllerState::EStop);
+        QVERIFY(questions_.isEmpty());
+    }
+
+    // ---- (8) no stale or untranslated text ----
+    void onlineStatusAndAlarmsLineFollowResetAndLanguage() {
+        QTest::keyClick(window_.get(), Qt::Key_F1);
+        QTRY_COMPARE(status().state, ControllerState::EStop);
+        QTRY_VERIFY(!panel()->alarms()->currentText().isEmpty());
+        const QString tripped = panel()->onlineStatusField()->text();
+        QVERIFY(!tripped.isEmpty());
+        link_->resetEmergencyStop();
+        QTRY_COMPARE(status().state, ControllerState::Manual);
+        QTRY_COMPARE(panel()->onlineStatusField()->text(), QStringLiteral("Manual"));
+        QVERIFY(panel()->alarms()->currentText().isEmpty());
+        QVERIFY(panel()->alarms()->count() > 0);  // the list keeps the alarm for reading
+        // An event's text follows a language switch.
+        goAutomatic();
+        QTRY_VERIFY(!panel()->onlineStatusField()->text().isEmpty());
+        const QString english = panel()->onlineStatusField()->text();
+        window_->setLanguage(QStringLiteral("pt_BR"));
+        QTRY_COMPARE(panel()->onlineStatusField()->text(), onlineStatus(status().lastStatus));
+        QVERIFY(panel()->onlineStatusField()->text() != english);
+        window_->setLanguage(QStringLiteral("en"));
+    }
+
+    void historyKindIsTranslated() {
+        window_->setLanguage(QStringLiteral("pt_BR"));
+        goAutomatic();
+        QTableWidget* table = window_->history()->table();
+        QTRY_VERIFY(table->rowCount() > 0);
+        QCOMPARE(table->item(0, 1)->text(), QStringLiteral("estado"));
+        window_->setLanguage(QStringLiteral("es"));
+        QTRY_COMPARE(table->item(0, 1)->text(), QStringLiteral("estado"));
+        QTest::keyClick(window_.get(), Qt::Key_F1);
+        QTRY_VERIFY([&] {
+            for (int r = 0; r < table->rowCount(); ++r)
+                if (table->item(r, 1)->text() == QLatin1String("alarma")) return true;
+            return false;
+        }());
+        window_->setLanguage(QStringLiteral("en"));
+    }
+
+    void qtsOwnButtonsAreTranslated() {
+        const std::pair<const char*, const char*> expected[] = {{"pt_BR", "&Sim"}, {"es", "&Sí"}};
+        for (const auto& [lang, yes] : expected) {
+            window_->setLanguage(QString::fromLatin1(lang));
+            QMessageBox box(QMessageBox::Question, QStringLiteral("t"), QStringLiteral("x"),
+                            QMessageBox::Yes | QMessageBox::No);
+            QCOMPARE(box.button(QMessageBox::Yes)->text(), QString::fromUtf8(yes));
+        }
+        window_->setLanguage(QStringLiteral("en"));
+    }
+
+    void noEnglishLeftOnTheMainScreen() {
+        // Every caption of the main screen, its menus and docks, in English first.
+        auto captions = [this] {
+            QMap<QObject*, QString> out;
+            for (QLabel* l : window_->findChildren<QLabel*>())
+                out[l] = l->text();
+            for (QAbstractButton* b : window_->findChildren<QAbstractButton*>())
+                out[b] = b->text();
+            for (QGroupBox* g : window_->findChildren<QGroupBox*>())
+                out[g] = g->title();
+            for (QDockWidget* d : window_->findChildren<QDockWidget*>())
+                out[d] = d->windowTitle();
+            for (QAction* a : window_->findChildren<QAction*>())
+                out[a] = a->text();
+            return out;
+        };
+        const QMap<QObject*, QString> english = captions();
+        // Same in every language: units, G-code words, numbers, names, the 1996 "Status".
+        static const QRegularExpression same(
+            QStringLiteral("^(|[-+0-9.,: %/x=<>()|]*|mm.*|G9[0-9].*|DAC|Status :|Setpoint "
+                           ":|Integral :|Error :|&?Manual( .*)?|English|Português "
+                           "\\(Brasil\\)|Español|F[0-9]+|setpoint)$"));
+        QStringList left;
+        for (const char* lang : {"pt_BR", "es"}) {
+            window_->setLanguage(QString::fromLatin1(lang));
+            QCoreApplication::processEvents();
+            const QMap<QObject*, QString> now = captions();
+            for (auto it = english.begin(); it != english.end(); ++it) {
+                const QString text = now.value(it.key());
+                static const QRegularExpression word(QStringLiteral("[A-Za-z]{2}"));
+                if (text != it.value() || same.match(text).hasMatch() || !text.contains(word))
+                    continue;
+                left << QStringLiteral("'%1' in %2").arg(text, QString::fromLatin1(lang));
+            }
+        }
+        window_->setLanguage(QStringLiteral("en"));
+        QVERIFY2(left.isEmpty(), qPrintable(left.join(QStringLiteral(", "))));
+    }
+
+    // ---- (9) the Select dialog: Enter, keys, a path field ----
+    void selectDialogOpensWithEnterAndNavigatesByKeys() {
+        SelectFileDialog dialog(QStringLiteral(TRILHO_PROGRAMS_DIR));
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        QVERIFY(!dialog.exitButton()->isDefault());
+        QVERIFY(!dialog.exitButton()->autoDefault());
+        QCOMPARE(dialog.fileList()->textElideMode(), Qt::ElideNone);
+        QCOMPARE(QDir(dialog.pathField()->text()), QDir(QStringLiteral(TRILHO_PROGRAMS_DIR)));
+        QListView* list = dialog.fileList();
+        QModelIndex found;
+        QTRY_VERIFY_WITH_TIMEOUT(
+            [&] {
+                for (int r = 0; r < list->model()->rowCount(list->rootIndex()); ++r) {
+                    const QModelIndex i = list->model()->index(r, 0, list->rootIndex());
+                    if (i.data().toString() == QLatin1String("ciclo_carga.G")) found = i;
+                }
+                return found.isValid();
+            }(),
+            10000);
+        // Up in the folder tree goes to the parent folder, as a click would.
+        QTreeView* tree = dialog.folderTree();
+        tree->setFocus();
+        QTest::keyClick(tree, Qt::Key_Left);  // collapse, then
+        QTest::keyClick(tree, Qt::Key_Left);  // to the parent
+        QTRY_COMPARE(QDir(dialog.currentFolder()), QDir(QStringLiteral(TRILHO_PROGRAMS_DIR "/..")));
+        // A folder typed in the path field, then Enter on a file, opens it.
+        dialog.pathField()->setFocus();
+        dialog.pathField()->setText(QStringLiteral(TRILHO_PROGRAMS_DIR));
+        QTest::keyClick(dialog.pathField(), Qt::Key_Return);
+        QTRY_COMPARE(QDir(dialog.currentFolder()), QDir(QStringLiteral(TRILHO_PROGRAMS_DIR)));
+        QVERIFY(dialog.isVisible());
+        QTRY_VERIFY_WITH_TIMEOUT(
+            [&] {
+                found = {};
+                for (int r = 0; r < list->model()->rowCount(list->rootIndex()); ++r) {
+                    const QModelIndex i = list->model()->index(r, 0, list->rootIndex());
+                    if (i.data().toString() == QLatin1String("ciclo_carga.G")) found = i;
+                }
+                return found.isValid();
+            }(),
+            10000);
+        list->setFocus();
+        list->setCurrentIndex(found);
+        QTest::keyClick(list, Qt::Key_Return);
+        QCOMPARE(dialog.result(), int(QDialog::Accepted));
+        QCOMPARE(QFileInfo(dialog.selectedFile()).fileName(), QStringLiteral("ciclo_carga.G"));
+    }
+
+    // ---- (10) small defects ----
+    void aProgramWithoutNShowsItsLineAndCleanHistory() {
+        goAutomatic();
+        QVERIFY(window_->selectProgram(writeProgram("non.G", "G0 X50\nG4 X2\nM2\n")));
+        window_->executeAction()->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(status().dwellRemainingS > 0.5, 10000);
+        QTRY_COMPARE(panel()->lineField()->text(), QStringLiteral("line 2"));
+        for (int i = 0; i < panel()->statusList()->count(); ++i)
+            QVERIFY2(!panel()->statusList()->itemText(i).startsWith(QLatin1String(":")),
+                     qPrintable(panel()->statusList()->itemText(i)));
+    }
+
+    void speedAndAccelerationReadZeroAtRest() {
+        for (int i = 0; i < 20; ++i) {  // twenty frames at rest, each must read plain zero
+            link_->poll();
+            QCoreApplication::processEvents();
+            QCOMPARE(panel()->speedField()->text(), QStringLiteral("0.0"));
+            QCOMPARE(panel()->accelerationField()->text(), QStringLiteral("0"));
+        }
+    }
+
+    void unsavedChangesAreMarkedAndSavingWithoutAFileSaysWhy() {
+        QString error;
+        QVERIFY(!window_->programPanel()->save(&error));
+        QVERIFY(!error.isEmpty());
+        QVERIFY(window_->selectProgram(writeProgram("u.G", "G0 X1\nM2\n")));
+        QCOMPARE(panel()->programField()->text(), QStringLiteral("u.G"));
+        window_->programPanel()->editor()->appendPlainText(QStringLiteral("( edited )"));
+        QTRY_COMPARE(panel()->programField()->text(), QStringLiteral("u.G *"));
+        QVERIFY(window_->programPanel()->save(&error));
+        QTRY_COMPARE(panel()->programField()->text(), QStringLiteral("u.G"));
+    }
+
+    void jogSpeedIsInMillimetresPerSecond() {
+        const double rapid = link_->profile().motion.rapidSpeedMmS;
+        const auto expected = std::lround(window_->jog()->jogFraction() * rapid);
+        QCOMPARE(window_->jog()->speedLabel()->text(),
+                 QStringLiteral("Jog speed %1 mm/s").arg(expected));
+    }
+
+    void exportPngHoldsBothPlots() {
+        QTRY_VERIFY(window_->plots()->sampleCount() > 5);
+        const QString path = dir_.filePath(QStringLiteral("plots.png"));
+        QVERIFY(window_->plots()->exportPng(path));
+        const QImage image(path);
+        QVERIFY(image.width() >= 2 * window_->plots()->positionPlot()->width() - 2);
+    }
+
+    void theActiveLawIsSaidOnTheMainScreenWithTheFormsGains() {
+        QTRY_VERIFY(
+            window_->dro()->modalState()->text().contains(QStringLiteral("engineered law")));
+        window_->classicLawAction()->trigger();
+        QTRY_VERIFY(window_->dro()->modalState()->text().contains(QStringLiteral("classic law")));
+        // The 1996 form's gains: Proporcional 0.2, Derivativa 1, Integrativa 0.0005.
+        QTRY_COMPARE(panel()->gainField(0)->text(), QStringLiteral("0.2"));
+        QCOMPARE(panel()->gainField(1)->text(), QStringLiteral("1"));
+        QCOMPARE(panel()->gainField(2)->text(), QStringLiteral("0.0005"));
+    }
+
+    void thePlotsDockCanBeEnlarged() {
+        auto* plots = window_->findChild<QDockWidget*>(QStringLiteral("plotDock"));
+        settle();
+        window_->resizeDocks({plots}, {230}, Qt::Vertical);
+        settle();
+        const int before = plots->height();
+        QVERIFY2(before <= 240, qPrintable(QString::number(before)));
+        window_->resizeDocks({plots}, {300}, Qt::Vertical);  // the form's scroll area gives way
+        settle();
+        QVERIFY2(plots->height() >= 260,
+                 qPrintable(QStringLiteral("%1 -> %2").arg(before).arg(plots->height())));
+        QVERIFY(window_->height() <= 768);
+        QVERIFY(window_->runControls()->isVisible());
+    }
+
+    // ---- (7) legible at 1366x768, 1024x768 and 1280x720 ----
+    void layoutIsUsable_data() {
+        QTest::addColumn<int>("w");
+        QTest::addColumn<int>("h");
+        QTest::newRow("1366x768") << 1366 << 768;
+        QTest::newRow("1024x768") << 1024 << 768;
+        QTest::newRow("1280x720") << 1280 << 720;
+    }
+    void layoutIsUsable() {
+        QFETCH(int, w);
+        QFETCH(int, h);
+        for (const char* lang : {"en", "pt_BR", "es"}) {
+            window_->setLanguage(QString::fromLatin1(lang));
+            settle();
+            window_->resize(w, h);
+            settle();
+            QVERIFY2(
+                window_->width() <= w && window_->height() <= h,
+                qPrintable(QStringLiteral("%1x%2").arg(window_->width()).arg(window_->height())));
+            const QRect all = window_->rect();
+            QVERIFY(window_->statusBar()->isVisible());
+            QVERIFY(all.contains(inWindow(window_->statusBar())));
+            for (QAction* a : run()->keyedActions())
+                if (QToolButton* b = run()->buttonFor(a)) {
+                    QVERIFY(b->isVisible());
+                    QVERIFY(all.contains(inWindow(b)));
+                    QVERIFY2(b->width() >= b->minimumSizeHint().width(), qPrintable(b->text()));
+                }
+            for (QWidget* x : framedWidgets()) {
+                QVERIFY2(all.contains(inWindow(x)),
+                         qPrintable(QStringLiteral("%1 %2 off the window")
+                                        .arg(QString::fromLatin1(x->metaObject()->className()),
+                                             x->objectName())));
+                if (auto* label = qobject_cast<QLabel*>(x);
+                    label && !label->wordWrap() && !label->text().isEmpty())
+                    QVERIFY2(label->width() >= label->minimumSizeHint().width(),
+                             qPrintable(QStringLiteral("'%1' clipped (%2 < %3) in %4")
+                                            .arg(label->text())
+                                            .arg(label->width())
+                                            .arg(label->minimumSizeHint().width())
+                                            .arg(QString::fromLatin1(lang))));
+            }
+            QVERIFY(window_->dro()->machinePosition()->isVisible());
+            if (w == 1366) {
+                for (QCustomPlot* plot : window_->plots()->findChildren<QCustomPlot*>())
+                    QVERIFY2(plot->height() >= 150,
+                             qPrintable(QStringLiteral("%1 in a dock of %2 (%3)")
+                                            .arg(plot->height())
+                                            .arg(window_->plots()->parentWidget()->height())
+                                            .arg(window_->plots()->height())));
+            }
+        }
+        window_->setLanguage(QStringLiteral("en"));
+    }
+
+    void resetLayoutBringsBackClosedDocks() {
+        auto* plots = window_->findChild<QDockWidget*>(QStringLiteral("plotDock"));
+        QVERIFY(plots);
+        plots->close();
+        QTRY_VERIFY(!plots->isVisible());
+        window_->resetLayoutAction()->trigger();
+        QTRY_VERIFY(plots->isVisible());
+        QVERIFY(!plots->isFloating());
+    }
+};
+
+QTEST_MAIN(OperatorScreensTest)
+#include "operator_screens_test.moc"
