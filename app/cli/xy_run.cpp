@@ -11,7 +11,7 @@
 
 #include "app/session/xy_device_session.h"
 #include "app/session/xy_session.h"
-#include "core/machine/plotter_link_motion.h"
+#include "core/machine/serial_link_motion.h"
 
 namespace trilho::cli {
 
@@ -83,7 +83,7 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
         }
     }
     XySession& session = device.session ? *device.session : *made.session;
-    PlotterLinkMotion* link = device.plotter;
+    SerialLinkMotion* link = device.link;
     XyController& c = session.controller();
     c.selectAutomatic();
     c.loadProgram(std::move(program));
@@ -140,12 +140,11 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
             QJsonObject{{QStringLiteral("x"), round4(x)}, {QStringLiteral("y"), round4(y)}};
         o[QStringLiteral("duration_s")] = round4(last.timeS);
         if (link) {
-            const PlotterHostStats& st = link->stats();
             o[QStringLiteral("link")] =
                 QJsonObject{{QStringLiteral("port"), options.port},
-                            {QStringLiteral("packets_sent"), double(st.packetsSent)},
-                            {QStringLiteral("resends"), double(st.resends)},
-                            {QStringLiteral("timeouts"), double(st.timeouts)},
+                            {QStringLiteral("packets_sent"), double(link->packetsSent())},
+                            {QStringLiteral("resends"), double(link->resends())},
+                            {QStringLiteral("timeouts"), double(link->timeouts())},
                             {QStringLiteral("error"), QString::fromStdString(link->linkError())}};
         }
         if (session.hasPlant())

@@ -11,17 +11,17 @@
 
 namespace trilho {
 
-class PlotterLinkMotion;
+class SerialLinkMotion;
 
 struct XyDeviceSession {
     std::unique_ptr<XySession> session;
     std::unique_ptr<SerialLine> line;
-    PlotterLinkMotion* plotter = nullptr;  ///< the motion inside the controller (the plotter)
-    QString error;                         ///< why there is none
+    SerialLinkMotion* link = nullptr;  ///< the motion inside the controller (its link's state)
+    QString error;                     ///< why there is none
 };
 
-/// Opens the port at settings.baud (0: the board's own rate, 57600 for the plotter) and builds
-/// the controller over it.
+/// Opens the port at settings.baud (0: the board's own rate: 57600 for the plotter, 9600 for
+/// the DC table) and builds the controller over it.
 XyDeviceSession makeXyDeviceSession(const MachineProfile& profile, SerialSettings settings);
 
 }  // namespace trilho

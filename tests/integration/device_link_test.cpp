@@ -29,9 +29,9 @@ const QString kText = QStringLiteral(TRILHO_PROGRAMS_DIR "/plotter_texto.G");
 struct Device {
     QProcess process;
     QString path;
-    explicit Device(const QStringList& extra = {}) {
-        process.start(QStringLiteral(TRILHO_DEVICE),
-                      QStringList{QStringLiteral("plotter")} + extra);
+    explicit Device(const QStringList& extra = {},
+                    const QString& board = QStringLiteral("plotter")) {
+        process.start(QStringLiteral(TRILHO_DEVICE), QStringList{board} + extra);
         const QRegularExpression re(QStringLiteral(" on (\\S+) at "));
         QString said;
         QElapsedTimer t;
@@ -63,13 +63,14 @@ struct LinkRun {
     qint64 ms = 0;
 };
 
-LinkRun runOn(const QString& port, const QString& program, int timeoutMs = 180000) {
+LinkRun runOn(const QString& port, const QString& program, int timeoutMs = 180000,
+              const QString& machine = QStringLiteral("xy_plotter")) {
     QProcess p;
     QElapsedTimer t;
     t.start();
     p.start(QStringLiteral(TRILHO_CLI),
-            {QStringLiteral("run"), QStringLiteral("--machine"), QStringLiteral("xy_plotter"),
-             QStringLiteral("--port"), port, QStringLiteral("--json"), program});
+            {QStringLiteral("run"), QStringLiteral("--machine"), machine, QStringLiteral("--port"),
+             port, QStringLiteral("--json"), program});
     EXPECT_TRUE(p.waitForFinished(timeoutMs));
     LinkRun r;
     r.exit = p.exitCode();
@@ -100,6 +101,20 @@ TEST(DeviceLink, TheSeedsSquareOverAPseudoTerminal) {
     const QString said = d.stop();
     // ORIGEM, then five moves: each a one-point object plotted before the next.
     EXPECT_TRUE(said.contains(QStringLiteral("objects plotted 5"))) << said.toStdString();
+}
+
+TEST(DeviceLink, TheDcTableOverAPseudoTerminal) {
+    Device d(QStringList{}, QStringLiteral("table"));
+    ASSERT_FALSE(d.path.isEmpty());
+    const LinkRun r = runOn(d.path, QStringLiteral(TRILHO_PROGRAMS_DIR "/mesa_xy_quadrado.G"),
+                            180000, QStringLiteral("xy_dc_table"));
+    ASSERT_EQ(r.exit, 0) << r.err.toStdString();
+    EXPECT_TRUE(r.json[QStringLiteral("ok")].toBool());
+    EXPECT_DOUBLE_EQ(axis(r, "x"), 0.0);  // the program ends at the origin
+    EXPECT_DOUBLE_EQ(axis(r, "y"), 0.0);
+    const QString said = d.stop();
+    // Homing's (0, 0) and the program's nine moves: each set point acknowledged.
+    EXPECT_TRUE(said.contains(QStringLiteral("set points 10, ACK 10"))) << said.toStdString();
 }
 
 TEST(DeviceLink, EveryTenthByteCorruptedEndsTheSameWithResendsCounted) {

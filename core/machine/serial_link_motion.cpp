@@ -1,0 +1,61 @@
+#include "core/machine/serial_link_motion.h"
+
+namespace trilho {
+
+void SerialLinkMotion::onBytes(const std::uint8_t* data, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i)
+        hostReceive(data[i], nowS_);
+}
+
+void SerialLinkMotion::asked(XyPoint target, bool homing, PenState pen) {
+    commanded_ = target;
+    pending_ = target;
+    asked_ = true;
+    homing_ = homing;
+    pen_ = pen;
+}
+
+void SerialLinkMotion::tick(double dtS) {
+    nowS_ += dtS;
+    if (!lost_.empty()) return;  // nothing to send on a dead line
+    hostPoll(nowS_);
+    const std::vector<std::uint8_t> out = hostTakeOutput();
+    if (!out.empty()) send_(out);
+    // The last answer may have come through onBytes() since the last tick: what is finished
+    // is what was asked and has no packet left.
+    if (asked_ && hostIdle()) {
+        asked_ = false;
+        confirmed_ = pending_;
+        if (homing_) homing_ = false, homed_ = true;
+    }
+}
+
+void SerialLinkMotion::resume() {
+    if (hostFailed() || !lost_.empty()) {
+        lost_.clear();
+        hostRetry();
+    }
+}
+
+void SerialLinkMotion::stop() {
+    hostClear();
+    asked_ = false;
+    homing_ = false;
+    commanded_ = confirmed_;
+}
+
+AlarmCode SerialLinkMotion::fault() const {
+    return hostFailed() || !lost_.empty() ? AlarmCode::DeviceLink : AlarmCode::None;
+}
+
+XySample SerialLinkMotion::sample() const {
+    XySample s;
+    s.x.setpointMm = commanded_.x;
+    s.y.setpointMm = commanded_.y;
+    s.x.positionMm = confirmed_.x;
+    s.y.positionMm = confirmed_.y;
+    s.pen = pen_;
+    return s;
+}
+
+}  // namespace trilho

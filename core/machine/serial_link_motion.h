@@ -1,0 +1,77 @@
+#pragma once
+// What the two XY boards on a serial line have in common as an XyMotion (issue 12): bytes in
+// through onBytes(), bytes out through the send callback, time only through tick(dtS); a move
+// is done when the board's host state machine has nothing left to say; the position shown is
+// the last point the board confirmed. When the link fails (no answer after the retries, or the
+// cable pulled) fault() is DeviceLink and the move stays unfinished, so the controller holds
+// the run, and resume() retries from the point not acknowledged. The protocol itself is the
+// derived class's host (PlotterHost, TableHost).
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/machine/xy_motion.h"
+
+namespace trilho {
+
+class SerialLinkMotion : public XyMotion {
+  public:
+    using Send = std::function<void(const std::vector<std::uint8_t>&)>;
+    explicit SerialLinkMotion(Send send) : send_(std::move(send)) {}
+
+    /// Bytes from the board, as they came (timed on the motion's own clock).
+    void onBytes(const std::uint8_t* data, std::size_t n);
+    /// The transport lost the line (unplugged): fails at once with its reason.
+    void linkLost(const std::string& reason) { lost_ = reason; }
+
+    void tick(double dtS) override;
+    bool busy() const override { return !hostIdle(); }
+    /// The boards finish what they hold (their protocols have no stop); hold waits for it.
+    void hold() override {}
+    void resume() override;
+    void stop() override;
+    void cut() override { stop(); }
+    AlarmCode fault() const override;
+    double faultValue() const override { return 0.0; }
+    /// The link's fault clears by resume() (a retry) or stop(), not by an acknowledge.
+    void clearFault() override {}
+    bool homed() const override { return homed_; }
+    XyPoint commanded() const override { return commanded_; }
+    XySample sample() const override;
+
+    /// Why the link failed; empty while it works.
+    std::string linkError() const { return !lost_.empty() ? lost_ : hostError(); }
+    bool linkUp() const { return fault() == AlarmCode::None; }
+    /// Packets sent (repeats included), RESENDs answered (0 for the table), timeouts.
+    virtual std::uint64_t packetsSent() const = 0;
+    virtual std::uint64_t resends() const = 0;
+    virtual std::uint64_t timeouts() const = 0;
+
+  protected:
+    /// A move (or homing) was handed to the host: it is done when the host is idle again.
+    void asked(XyPoint target, bool homing, PenState pen);
+    double nowS() const { return nowS_; }
+
+    virtual void hostReceive(std::uint8_t byte, double nowS) = 0;
+    virtual void hostPoll(double nowS) = 0;
+    virtual std::vector<std::uint8_t> hostTakeOutput() = 0;
+    virtual bool hostIdle() const = 0;
+    virtual bool hostFailed() const = 0;
+    virtual std::string hostError() const = 0;
+    virtual void hostRetry() = 0;
+    virtual void hostClear() = 0;
+
+  private:
+    Send send_;
+    double nowS_ = 0.0;
+    bool asked_ = false;  ///< a move or homing was queued and has not been seen finished
+    bool homing_ = false;
+    bool homed_ = false;
+    std::string lost_;
+    XyPoint commanded_{};
+    XyPoint pending_{};
+    XyPoint confirmed_{};  ///< the last point the board confirmed
+    PenState pen_ = PenState::None;
+};
+
+}  // namespace trilho
