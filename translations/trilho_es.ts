@@ -1327,6 +1327,14 @@
         <translation>Sa&amp;lir</translation>
     </message>
     <message>
+        <source>&amp;Options</source>
+        <translation>&amp;Opciones</translation>
+    </message>
+    <message>
+        <source>&amp;Connection...</source>
+        <translation>&amp;Conexión...</translation>
+    </message>
+    <message>
         <source>Open program</source>
         <translation>Abrir programa</translation>
     </message>
@@ -1341,6 +1349,46 @@
     <message>
         <source>Line %1</source>
         <translation>Línea %1</translation>
+    </message>
+    <message>
+        <source>Simulated machine</source>
+        <translation>Máquina simulada</translation>
+    </message>
+    <message>
+        <source>%1 at %2 bit/s: %3 - packets %4, RESENDs %5, timeouts %6</source>
+        <translation>%1 a %2 bit/s: %3 - paquetes %4, RESENDs %5, tiempos agotados %6</translation>
+    </message>
+    <message>
+        <source>link up</source>
+        <translation>enlace activo</translation>
+    </message>
+    <message>
+        <source>LINK LOST</source>
+        <translation>ENLACE PERDIDO</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>Conexión</translation>
+    </message>
+    <message>
+        <source>Simulated machine (no hardware)</source>
+        <translation>Máquina simulada (sin hardware)</translation>
+    </message>
+    <message>
+        <source>Board on a serial port</source>
+        <translation>Placa en un puerto serie</translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation>Puerto</translation>
+    </message>
+    <message>
+        <source>Bit rate</source>
+        <translation>Velocidad (bit/s)</translation>
+    </message>
+    <message>
+        <source>Stop the machine before changing the connection.</source>
+        <translation>Detenga la máquina antes de cambiar la conexión.</translation>
     </message>
     <message>
         <source>trilho - %1</source>

@@ -1327,6 +1327,14 @@
         <translation>Sai&amp;r</translation>
     </message>
     <message>
+        <source>&amp;Options</source>
+        <translation>&amp;Opções</translation>
+    </message>
+    <message>
+        <source>&amp;Connection...</source>
+        <translation>&amp;Conexão...</translation>
+    </message>
+    <message>
         <source>Open program</source>
         <translation>Abrir programa</translation>
     </message>
@@ -1341,6 +1349,46 @@
     <message>
         <source>Line %1</source>
         <translation>Linha %1</translation>
+    </message>
+    <message>
+        <source>Simulated machine</source>
+        <translation>Máquina simulada</translation>
+    </message>
+    <message>
+        <source>%1 at %2 bit/s: %3 - packets %4, RESENDs %5, timeouts %6</source>
+        <translation>%1 a %2 bit/s: %3 - pacotes %4, RESENDs %5, tempos esgotados %6</translation>
+    </message>
+    <message>
+        <source>link up</source>
+        <translation>ligação ativa</translation>
+    </message>
+    <message>
+        <source>LINK LOST</source>
+        <translation>LIGAÇÃO PERDIDA</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>Conexão</translation>
+    </message>
+    <message>
+        <source>Simulated machine (no hardware)</source>
+        <translation>Máquina simulada (sem hardware)</translation>
+    </message>
+    <message>
+        <source>Board on a serial port</source>
+        <translation>Placa numa porta serial</translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation>Porta</translation>
+    </message>
+    <message>
+        <source>Bit rate</source>
+        <translation>Velocidade (bit/s)</translation>
+    </message>
+    <message>
+        <source>Stop the machine before changing the connection.</source>
+        <translation>Pare a máquina antes de mudar a conexão.</translation>
     </message>
     <message>
         <source>trilho - %1</source>

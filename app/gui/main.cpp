@@ -22,6 +22,8 @@
 #include "ui/xy/xy_main_window.h"
 #include "ui/xy/xy_session_runnable.h"
 
+#include <functional>
+
 using namespace trilho;
 
 int main(int argc, char* argv[]) {
@@ -70,8 +72,15 @@ int main(int argc, char* argv[]) {
         QStringLiteral("Machine profile: a file, or a shipped one by name (rail, xy_dc_table, "
                        "xy_plotter). Remembered."),
         QStringLiteral("PROFILE"));
+    const QCommandLineOption portOpt(
+        QStringLiteral("port"),
+        QStringLiteral("An XY machine's board on this serial port (default: simulated)."),
+        QStringLiteral("DEV"));
+    const QCommandLineOption baudOpt(QStringLiteral("baud"),
+                                     QStringLiteral("Bit rate of --port (default: the board's)."),
+                                     QStringLiteral("N"));
     parser.addOptions({langOpt, themeOpt, programOpt, noStartOpt, settingsOpt, sizeOpt, autoOpt,
-                       runOpt, shotOpt, shotAfterOpt, quitOpt, machineOpt});
+                       runOpt, shotOpt, shotAfterOpt, quitOpt, machineOpt, portOpt, baudOpt});
     parser.process(app);
 
     std::unique_ptr<QSettings> settings =
@@ -121,6 +130,61 @@ int main(int argc, char* argv[]) {
     std::unique_ptr<ui::XyMainWindow> xyWindow;
     QMainWindow* window = nullptr;
 
+    // An XY machine: simulated (port empty) or a board on a serial port. Options > Connection
+    // reopens it on the other backend.
+    QString xyPort = parser.value(portOpt);
+    const int xyBaud = parser.value(baudOpt).toInt();
+    std::function<bool(const MachineProfile&, const QString&, int)> openXy;
+    openXy = [&](const MachineProfile& machine, const QString& port, int baud) -> bool {
+        std::unique_ptr<ui::XyRunnable> runnable;
+        SerialLinkMotion* device = nullptr;
+        if (port.isEmpty()) {
+            XySessionMake made = makeXySession(machine, 1);
+            if (!made.session) {
+                std::fprintf(stderr, "trilho: %s\n", made.error.c_str());
+                return false;
+            }
+            runnable = std::make_unique<ui::XySessionRunnable>(std::move(made.session));
+        } else {
+            SerialSettings serial;
+            serial.port = port;
+            serial.baud = baud;
+            XyDeviceSession made = makeXyDeviceSession(machine, serial);
+            if (!made.session) {
+                std::fprintf(stderr, "trilho: %s\n", qPrintable(made.error));
+                if (xyWindow)
+                    QMessageBox::warning(xyWindow.get(), QStringLiteral("trilho"), made.error);
+                return false;
+            }
+            baud = made.line ? serial.baud : baud;
+            auto r = std::make_unique<ui::XyDeviceRunnable>(std::move(made));
+            device = r->link();
+            runnable = std::move(r);
+        }
+        const QByteArray geometry = xyWindow ? xyWindow->saveGeometry() : QByteArray();
+        xyWindow.reset();
+        xyLink = std::make_unique<ui::XyLink>(
+            std::move(runnable), device ? ui::XyLink::Drive::EventLoop : ui::XyLink::Drive::Thread);
+        xyWindow = std::make_unique<ui::XyMainWindow>(*xyLink, *settings);
+        if (device)
+            xyWindow->setDeviceLink(
+                device, port,
+                baud > 0 ? baud : (machine.kind == MachineKind::Plotter ? 57600 : 9600));
+        QObject::connect(xyWindow.get(), &ui::XyMainWindow::connectionChosen, &app,
+                         [&, machine](const QString& newPort, int newBaud) {
+                             // Rebuilt after this signal returns: its sender goes with it.
+                             QTimer::singleShot(0, &app, [&, machine, newPort, newBaud] {
+                                 if (openXy(machine, newPort, newBaud)) {
+                                     window = xyWindow.get();
+                                     window->show();
+                                 }
+                             });
+                         });
+        if (!geometry.isEmpty()) xyWindow->restoreGeometry(geometry);
+        window = xyWindow.get();
+        return true;
+    };
+
     auto openMachine = [&](const MachineProfile& machine) -> bool {
         if (machine.kind == MachineKind::Rail) {
             railLink = std::make_unique<ui::MachineLink>(machine);
@@ -142,14 +206,7 @@ int main(int argc, char* argv[]) {
             }
             window = railWindow.get();
         } else {
-            XySessionMake made = makeXySession(machine, 1);
-            if (!made.session) {
-                std::fprintf(stderr, "trilho: %s\n", made.error.c_str());
-                return false;
-            }
-            xyLink = std::make_unique<ui::XyLink>(
-                std::make_unique<ui::XySessionRunnable>(std::move(made.session)), true);
-            xyWindow = std::make_unique<ui::XyMainWindow>(*xyLink, *settings);
+            if (!openXy(machine, xyPort, xyBaud)) return false;
             if (parser.isSet(programOpt) && !xyWindow->selectProgram(parser.value(programOpt))) {
                 std::fprintf(stderr, "trilho: cannot open program '%s'\n",
                              qPrintable(parser.value(programOpt)));

@@ -34,6 +34,12 @@ XyDeviceSession makeXyDeviceSession(const MachineProfile& profile, SerialSetting
     });
     QObject::connect(line, &SerialLine::lost, line,
                      [m](const QString& reason) { m->linkLost(reason.toStdString()); });
+    m->setReopen([line, settings](std::string* why) {
+        QString reason;
+        const bool ok = line->open(settings, &reason);
+        if (!ok && why) *why = reason.toStdString();
+        return ok;
+    });
     auto controller = std::make_unique<XyController>(profile, std::move(motion));
     // 1 ms: the protocols' own deadlines are seconds; the period only bounds the latency.
     made.session = std::make_unique<XySession>(nullptr, std::move(controller), 0.001);

@@ -29,6 +29,7 @@ class PlotterLinkMotion final : public SerialLinkMotion {
     bool hostFailed() const override { return host_.failed(); }
     std::string hostError() const override { return host_.error(); }
     void hostRetry() override { host_.retry(); }
+    void hostRestart() override { host_.restart(); }
     void hostClear() override { host_.clear(); }
     std::uint16_t toSteps(double mm, double mmPerStep) const;
 

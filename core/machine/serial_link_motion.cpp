@@ -31,10 +31,17 @@ void SerialLinkMotion::tick(double dtS) {
 }
 
 void SerialLinkMotion::resume() {
-    if (hostFailed() || !lost_.empty()) {
+    if (!lost_.empty()) {
+        std::string why;
+        if (reopen_ && !reopen_(&why)) {
+            lost_ = why;  // still unplugged: stays held, with the newer reason
+            return;
+        }
         lost_.clear();
-        hostRetry();
+        hostRestart();  // the board may have restarted: greet it and start the unfinished work
+        return;
     }
+    if (hostFailed()) hostRetry();
 }
 
 void SerialLinkMotion::stop() {

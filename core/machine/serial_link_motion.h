@@ -23,6 +23,9 @@ class SerialLinkMotion : public XyMotion {
     void onBytes(const std::uint8_t* data, std::size_t n);
     /// The transport lost the line (unplugged): fails at once with its reason.
     void linkLost(const std::string& reason) { lost_ = reason; }
+    /// How to open the line again after it was lost (a re-plug): resume() calls it first.
+    using Reopen = std::function<bool(std::string* why)>;
+    void setReopen(Reopen reopen) { reopen_ = std::move(reopen); }
 
     void tick(double dtS) override;
     bool busy() const override { return !hostIdle(); }
@@ -59,10 +62,12 @@ class SerialLinkMotion : public XyMotion {
     virtual bool hostFailed() const = 0;
     virtual std::string hostError() const = 0;
     virtual void hostRetry() = 0;
+    virtual void hostRestart() = 0;
     virtual void hostClear() = 0;
 
   private:
     Send send_;
+    Reopen reopen_;
     double nowS_ = 0.0;
     bool asked_ = false;  ///< a move or homing was queued and has not been seen finished
     bool homing_ = false;

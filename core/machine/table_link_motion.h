@@ -28,6 +28,7 @@ class TableLinkMotion final : public SerialLinkMotion {
     bool hostFailed() const override { return host_.failed(); }
     std::string hostError() const override { return host_.error(); }
     void hostRetry() override { host_.retry(); }
+    void hostRestart() override { host_.restart(); }
     void hostClear() override { host_.clear(); }
 
     TableHost host_;

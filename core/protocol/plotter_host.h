@@ -71,6 +71,12 @@ class PlotterHost {
     /// After failed(): a new REQUEST, then the object that was not finished again from its
     /// first point (preceded by a MOVE to where the last finished object ended).
     void retry();
+    /// After the line was lost and opened again: as retry(), whether or not the host had
+    /// noticed (a packet in flight on a pulled cable has no answer coming).
+    void restart() {
+        if (!failed_) fail("the line was opened again");
+        retry();
+    }
     /// Forgets every job (Stop).
     void clear();
 

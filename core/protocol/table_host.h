@@ -58,6 +58,12 @@ class TableHost {
     std::optional<table_wire::SetPointMm> reached() const { return reached_; }
     /// After failed(): the set point that was not finished is sent again, then the rest.
     void retry();
+    /// After the line was lost and opened again: as retry(), whether or not the host had
+    /// noticed (a packet in flight on a pulled cable has no answer coming).
+    void restart() {
+        if (!failed_) fail("the line was opened again");
+        retry();
+    }
     /// Forgets every set point (Stop).
     void clear();
 

@@ -1,10 +1,15 @@
 // The XY machines' screens (issue 11), offscreen, in virtual time: the link runs without its
 // thread and each test advances the machine itself, so every figure is repeatable.
 #include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QFileInfo>
 #include <QLabel>
 #include <QListWidget>
+#include <QProcess>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSettings>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -33,7 +38,7 @@ std::unique_ptr<XyLink> virtualLink(const MachineProfile& profile) {
     XySessionMake made = makeXySession(profile, 7);
     if (!made.session) qFatal("%s", made.error.c_str());
     return std::make_unique<XyLink>(std::make_unique<XySessionRunnable>(std::move(made.session)),
-                                    false);
+                                    XyLink::Drive::Manual);
 }
 
 /// Advances in 50 ms slices until done() or maxS of virtual time.
@@ -193,6 +198,80 @@ class XyScreensTest : public QObject {
         QVERIFY(w.history()->count() >= 1);
         QVERIFY(w.history()->item(0)->text().contains(QStringLiteral("bad.G")));
         QVERIFY(w.history()->item(0)->text().contains(QStringLiteral("2")));  // the line
+    }
+
+    /// The plotter's board on a serial line (trilho-device behind socat, so the line can be
+    /// pulled and plugged back at the same path): the screen runs the program over it, shows
+    /// the link's state, holds within 2.5 s of an unplug, and Resume after the re-plug goes on
+    /// to the end.
+    void plotterOnASerialLineSurvivesAnUnplug() {
+        const QString socat = QStandardPaths::findExecutable(QStringLiteral("socat"));
+        if (socat.isEmpty()) QSKIP("socat is not installed (scripts/deps.sh installs it)");
+        QProcess device;
+        device.start(QStringLiteral(TRILHO_DEVICE), {QStringLiteral("plotter")});
+        QString said, pty;
+        const QRegularExpression re(QStringLiteral(" on (\\S+) at "));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            (said += QString::fromUtf8(device.readAllStandardOutput()), re.match(said).hasMatch()),
+            10000);
+        pty = re.match(said).captured(1);
+        QTemporaryDir dir;
+        const QString cable = dir.filePath(QStringLiteral("ttyPLOTTER"));
+        auto plug = [&](QProcess& relay) {
+            relay.start(socat, {QStringLiteral("PTY,raw,echo=0,link=") + cable,
+                                pty + QStringLiteral(",raw,echo=0")});
+            QTRY_VERIFY_WITH_TIMEOUT(QFileInfo::exists(cable), 5000);
+        };
+        QProcess relay;
+        plug(relay);
+
+        const MachineProfile profile = shipped("xy_plotter.json");
+        SerialSettings serial;
+        serial.port = cable;
+        XyDeviceSession made = makeXyDeviceSession(profile, serial);
+        QVERIFY2(made.session != nullptr, qPrintable(made.error));
+        auto runnable = std::make_unique<XyDeviceRunnable>(std::move(made));
+        SerialLinkMotion* line = runnable->link();
+        XyLink link(std::move(runnable), XyLink::Drive::EventLoop);
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        XyMainWindow w(link, settings);
+        w.setDeviceLink(line, cable, 57600);
+        w.show();
+        QVERIFY(w.selectProgram(QStringLiteral(TRILHO_PROGRAMS_DIR "/plotter_quadrado.G")));
+        w.startButton()->click();
+        auto historyHas = [&](const QString& text) {
+            for (int i = 0; i < w.history()->count(); ++i)
+                if (w.history()->item(i)->text().contains(text)) return true;
+            return false;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(historyHas(QStringLiteral("Line to x=36.6 y=36")), 15000);
+        QVERIFY(w.linkLabel()->text().contains(QStringLiteral("link up")));
+
+        relay.kill();  // the cable pulled
+        relay.waitForFinished(2000);
+        QElapsedTimer since;
+        since.start();
+        QTRY_VERIFY_WITH_TIMEOUT(w.linkLabel()->text().contains(QStringLiteral("LINK LOST")), 2500);
+        QVERIFY(since.elapsed() < 2500);
+        QTRY_COMPARE_WITH_TIMEOUT(link.status().state, ControllerState::Paused, 2500);
+        QVERIFY(historyHas(QStringLiteral("Warning 20")));
+
+        QProcess relay2;
+        plug(relay2);  // plugged back, at the same path
+        QTRY_VERIFY_WITH_TIMEOUT(w.findChild<QPushButton*>(QStringLiteral("xyResume"))->isEnabled(),
+                                 2000);
+        w.findChild<QPushButton*>(QStringLiteral("xyResume"))->click();
+        QTRY_VERIFY_WITH_TIMEOUT(link.status().programFinished, 60000);
+        const XyStatus s = link.status();
+        QCOMPARE(s.sample.x.positionMm, 36.6);
+        QCOMPARE(s.sample.y.positionMm, 20.2);
+        QVERIFY(w.linkLabel()->text().contains(QStringLiteral("link up")));
+        relay2.kill();
+        relay2.waitForFinished(2000);
+        device.terminate();
+        device.waitForFinished(5000);
+        QVERIFY(QString::fromUtf8(device.readAllStandardOutput())
+                    .contains(QStringLiteral("objects plotted")));
     }
 
     void startScreenOffersTheThreeMachines() {

@@ -1,20 +1,35 @@
 #include "ui/xy/xy_link.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace trilho {
 namespace ui {
 
-XyLink::XyLink(std::unique_ptr<XyRunnable> machine, bool threaded, QObject* parent)
+XyLink::XyLink(std::unique_ptr<XyRunnable> machine, Drive drive, QObject* parent)
     : QObject(parent),
       machine_(std::move(machine)),
       profile_(machine_->controller().profile()),
-      threaded_(threaded) {
+      drive_(drive) {
     status_ = machine_->controller().status();
     poll_.setInterval(20);  // 50 Hz, as the rail's screens
     connect(&poll_, &QTimer::timeout, this, &XyLink::poll);
-    if (threaded_) {
+    if (drive_ == Drive::Thread) {
         worker_ = std::thread([this] { run(); });
+        poll_.start();
+    } else if (drive_ == Drive::EventLoop) {
+        // Every 5 ms, the periods the clock says have passed (at most 50 ms of them at once).
+        clock_.start();
+        stepTimer_.setInterval(5);
+        connect(&stepTimer_, &QTimer::timeout, this, [this] {
+            const double now = static_cast<double>(clock_.nsecsElapsed()) * 1e-9;
+            const double period = machine_->periodS();
+            double due = std::min(now - clockS_, 0.05);
+            clockS_ = now;
+            for (; due > 1e-12; due -= period)
+                stepOnce(std::min(period, due));
+        });
+        stepTimer_.start();
         poll_.start();
     }
 }
@@ -35,7 +50,7 @@ XyStatus XyLink::status() const {
 }
 
 void XyLink::advance(double seconds) {
-    if (threaded_) return;
+    if (drive_ != Drive::Manual) return;
     const double period = machine_->periodS();
     for (double t = 0.0; t < seconds - 1e-12; t += period)
         stepOnce(period);

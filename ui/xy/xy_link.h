@@ -1,8 +1,10 @@
 #pragma once
 // The screens' link to an XY machine: the controller and its simulated plant run on a worker
 // thread in real time (one step per sample period, measured); the GUI posts commands and takes
-// snapshots, never waiting on the worker. Tests run it without the thread (advance()), in
-// virtual time, so they are deterministic.
+// snapshots, never waiting on the worker. A board on a serial line runs on the GUI thread's
+// event loop instead (its bytes arrive there, and its protocol's deadlines are seconds). Tests
+// run it without either (advance()), in virtual time, so they are deterministic.
+#include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
 #include <atomic>
@@ -37,8 +39,12 @@ struct XyTraceRow {
 class XyLink : public QObject {
     Q_OBJECT
   public:
-    /// threaded: run the worker thread (the screens); false: tests call advance().
-    XyLink(std::unique_ptr<XyRunnable> machine, bool threaded, QObject* parent = nullptr);
+    enum class Drive : std::uint8_t {
+        Thread,     ///< a worker thread in real time (the simulated machines)
+        EventLoop,  ///< a timer on this thread in real time (a board on a serial line)
+        Manual,     ///< nobody: tests call advance()
+    };
+    XyLink(std::unique_ptr<XyRunnable> machine, Drive drive, QObject* parent = nullptr);
     ~XyLink() override;
 
     const MachineProfile& profile() const { return profile_; }
@@ -65,7 +71,10 @@ class XyLink : public QObject {
 
     std::unique_ptr<XyRunnable> machine_;
     MachineProfile profile_;
-    bool threaded_;
+    Drive drive_;
+    QElapsedTimer clock_;  ///< EventLoop: the time measured between steps
+    double clockS_ = 0.0;
+    QTimer stepTimer_;
     mutable std::mutex mutex_;  ///< guards everything below it
     std::vector<std::function<void(XyController&)>> commands_;
     std::deque<XyTraceRow> rows_;

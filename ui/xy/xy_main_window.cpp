@@ -18,10 +18,18 @@
 #include <QStatusBar>
 #include <QVBoxLayout>
 
+#include <QComboBox>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QFormLayout>
+#include <QRadioButton>
+#include <QSerialPortInfo>
+
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/source_file.h"
 #include "core/machine/event_text.h"
+#include "core/machine/serial_link_motion.h"
 #include "core/machine/xy_event_text.h"
 #include "ui/xy/dc_table_panel.h"
 #include "ui/xy/plotter_panel.h"
@@ -213,6 +221,12 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     file->addAction(tr("&Open program..."), this, &XyMainWindow::chooseFile);
     file->addSeparator();
     file->addAction(tr("E&xit"), this, &QWidget::close);
+    auto* options = menuBar()->addMenu(tr("&Options"));
+    options->addAction(tr("&Connection..."), this, &XyMainWindow::chooseConnection);
+
+    linkLabel_ = new QLabel(this);
+    linkLabel_->setObjectName(QStringLiteral("xyLink"));
+    statusBar()->addPermanentWidget(linkLabel_);
 
     connect(&link_, &XyLink::updated, this, &XyMainWindow::onUpdate);
     last_ = link_.status();
@@ -304,6 +318,7 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
         if (!line.isEmpty()) addHistory(line, alarm);
     }
     last_ = status;
+    showLinkState();
     const XySample& s = status.sample;
     view_->setTool({s.x.positionMm, s.y.positionMm}, s.pen);
     position_->setText(QStringLiteral("X %1  Y %2 mm")
@@ -339,6 +354,67 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
     }
     if (plotter_)
         plotter_->setControlsEnabled(status.state == ControllerState::Manual && !status.motionBusy);
+}
+
+void XyMainWindow::setDeviceLink(SerialLinkMotion* link, const QString& port, int baud) {
+    deviceLink_ = link;
+    port_ = port;
+    baud_ = baud;
+    showLinkState();
+}
+
+void XyMainWindow::showLinkState() {
+    if (!deviceLink_) {
+        linkLabel_->setText(tr("Simulated machine"));
+        linkLabel_->setStyleSheet(QString());
+        return;
+    }
+    const bool up = deviceLink_->linkUp();
+    QString text = tr("%1 at %2 bit/s: %3 - packets %4, RESENDs %5, timeouts %6")
+                       .arg(port_)
+                       .arg(baud_)
+                       .arg(up ? tr("link up") : tr("LINK LOST"))
+                       .arg(deviceLink_->packetsSent())
+                       .arg(deviceLink_->resends())
+                       .arg(deviceLink_->timeouts());
+    linkLabel_->setText(text);
+    linkLabel_->setToolTip(up ? QString() : QString::fromStdString(deviceLink_->linkError()));
+    linkLabel_->setStyleSheet(
+        up ? QString() : QStringLiteral("background:#c0161b;color:white;padding:1px 4px;"));
+}
+
+void XyMainWindow::chooseConnection() {
+    QDialog d(this);
+    d.setWindowTitle(tr("Connection"));
+    auto* simulated = new QRadioButton(tr("Simulated machine (no hardware)"), &d);
+    auto* serial = new QRadioButton(tr("Board on a serial port"), &d);
+    auto* port = new QComboBox(&d);
+    port->setEditable(true);  // a pseudo-terminal of trilho-device is not listed by the system
+    for (const QSerialPortInfo& info : QSerialPortInfo::availablePorts())
+        port->addItem(info.systemLocation());
+    if (!port_.isEmpty()) port->setCurrentText(port_);
+    auto* baud = new QComboBox(&d);
+    for (int b : {9600, 19200, 38400, 57600, 115200})
+        baud->addItem(QString::number(b), b);
+    const int ownBaud = link_.profile().kind == MachineKind::Plotter ? 57600 : 9600;
+    baud->setCurrentText(QString::number(baud_ > 0 ? baud_ : ownBaud));
+    (deviceLink_ ? serial : simulated)->setChecked(true);
+    auto* form = new QFormLayout(&d);
+    form->addRow(simulated);
+    form->addRow(serial);
+    form->addRow(tr("Port"), port);
+    form->addRow(tr("Bit rate"), baud);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &d);
+    form->addRow(buttons);
+    connect(buttons, &QDialogButtonBox::accepted, &d, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, &d, &QDialog::reject);
+    if (d.exec() != QDialog::Accepted) return;
+    if (moving(last_.state) || last_.motionBusy) {
+        statusBar()->showMessage(tr("Stop the machine before changing the connection."), 8000);
+        return;
+    }
+    emit connectionChosen(serial->isChecked() ? port->currentText().trimmed() : QString(),
+                          baud->currentData().toInt());
 }
 
 void XyMainWindow::closeEvent(QCloseEvent* e) {

@@ -16,6 +16,7 @@ class QAction;
 class QSettings;
 
 namespace trilho {
+class SerialLinkMotion;
 namespace ui {
 
 class WorkAreaView;
@@ -32,6 +33,10 @@ class XyMainWindow : public QMainWindow {
     /// and the history) when it cannot be read or has errors.
     bool selectProgram(const QString& path);
     void startProgram();  ///< Automatic (homes first when needed), then runs the program
+    /// The machine is a board on this serial port (its link's state in the status bar); none:
+    /// the simulated machine.
+    void setDeviceLink(SerialLinkMotion* link, const QString& port, int baud);
+    QLabel* linkLabel() const { return linkLabel_; }
 
     WorkAreaView* workArea() const { return view_; }
     XyPlots* plots() const { return plots_; }
@@ -44,6 +49,10 @@ class XyMainWindow : public QMainWindow {
     QPushButton* estopButton() const { return estop_; }
     const std::shared_ptr<const Program>& program() const { return program_; }
 
+  signals:
+    /// Options > Connection chose another backend: port empty for the simulated machine.
+    void connectionChosen(const QString& port, int baud);
+
   protected:
     void changeEvent(QEvent* e) override;
     void closeEvent(QCloseEvent* e) override;
@@ -54,6 +63,8 @@ class XyMainWindow : public QMainWindow {
     void chooseFile();
     void retranslate();
     void addHistory(const QString& line, bool alarm);
+    void chooseConnection();
+    void showLinkState();
 
     XyLink& link_;
     QSettings& settings_;
@@ -66,6 +77,10 @@ class XyMainWindow : public QMainWindow {
     QPushButton *open_, *automatic_, *start_, *hold_, *resume_, *stop_, *estop_, *reset_, *ack_;
     std::shared_ptr<const Program> program_;
     QString programName_;
+    QLabel* linkLabel_;
+    SerialLinkMotion* deviceLink_ = nullptr;
+    QString port_;
+    int baud_ = 0;
     XyStatus last_;
 };
 

@@ -59,10 +59,19 @@ void XyPlots::addSample(double tS, const XySample& s) {
         for (int i = 0; i < p->graphCount(); ++i)
             p->graph(i)->data()->removeBefore(from);
         p->xAxis->setRange(std::max(0.0, from), std::max(kWindowS, tS));
-        p->rescaleAxes(true);
-        p->xAxis->setRange(std::max(0.0, from), std::max(kWindowS, tS));
-        QCPRange r = p->yAxis->range();
-        p->yAxis->setRange(r.lower - 0.05 * r.size() - 0.5, r.upper + 0.05 * r.size() + 0.5);
+        // The values' own range (a flat line at 0 gets +-1, not QCustomPlot's default).
+        QCPRange r;
+        bool any = false;
+        for (int i = 0; i < p->graphCount(); ++i) {
+            bool found = false;
+            const QCPRange g = p->graph(i)->getValueRange(found);
+            if (!found) continue;
+            r = any ? QCPRange(std::min(r.lower, g.lower), std::max(r.upper, g.upper)) : g;
+            any = true;
+        }
+        if (!any) r = QCPRange(0.0, 0.0);
+        const double margin = std::max(1.0, 0.05 * r.size());
+        p->yAxis->setRange(r.lower - margin, r.upper + margin);
         p->replot(QCustomPlot::rpQueuedReplot);
     }
 }

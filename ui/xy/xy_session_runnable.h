@@ -3,6 +3,7 @@
 // them.
 #include <memory>
 
+#include "app/session/xy_device_session.h"
 #include "app/session/xy_session.h"
 #include "ui/xy/xy_link.h"
 
@@ -18,6 +19,20 @@ class XySessionRunnable : public XyRunnable {
 
   private:
     std::unique_ptr<XySession> session_;
+};
+
+/// A board on a serial line: the session and the line it owns (drive it with
+/// XyLink::Drive::EventLoop, where the line's bytes arrive).
+class XyDeviceRunnable : public XyRunnable {
+  public:
+    explicit XyDeviceRunnable(XyDeviceSession device) : device_(std::move(device)) {}
+    void step(double dtS) override { device_.session->step(dtS); }
+    XyController& controller() override { return device_.session->controller(); }
+    double periodS() const override { return device_.session->periodS(); }
+    SerialLinkMotion* link() const { return device_.link; }
+
+  private:
+    XyDeviceSession device_;
 };
 
 }  // namespace ui
