@@ -3,7 +3,6 @@
 // are paced at the bit rate in both directions (10 bits a byte, 8N1) unless unpaced, the bytes
 // towards the board pass through the line faults, and the firmware is stepped every
 // millisecond with the time measured.
-#include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
 #include <deque>
@@ -30,6 +29,7 @@ class DeviceRunner : public QObject {
     DeviceRunner(std::unique_ptr<DeviceFirmware> firmware, int fd, const RunnerSettings& s);
     DeviceRunner(std::unique_ptr<DeviceFirmware> firmware, QSerialPort* port,
                  const RunnerSettings& s);
+    ~DeviceRunner() override;
 
     std::string summary() const;
     std::uint64_t bytesIn() const { return bytesIn_; }
@@ -41,7 +41,10 @@ class DeviceRunner : public QObject {
     void arrive(const char* data, qint64 n);
     void tick();
     void writeOut(const std::uint8_t* data, std::size_t n);
-    double nowS() const { return static_cast<double>(clock_.nsecsElapsed()) * 1e-9; }
+    /// Wakes the runner at the next byte's due time, to the microsecond (a timerfd): a 1 ms
+    /// timer would add up to 2 ms to each round trip, half the line's rate at 57600 bit/s.
+    void armForNextByte();
+    double nowS() const;
     double byteS() const { return settings_.unpaced ? 0.0 : 10.0 / settings_.baud; }
 
     struct Timed {
@@ -54,7 +57,9 @@ class DeviceRunner : public QObject {
     QSocketNotifier* notifier_ = nullptr;
     RunnerSettings settings_;
     LineFaults faults_;
-    QElapsedTimer clock_;
+    double startS_ = 0.0;  ///< CLOCK_MONOTONIC at start, s
+    int wakeFd_ = -1;      ///< timerfd for the byte-precise wake-ups
+    QSocketNotifier* wake_ = nullptr;
     QTimer timer_;
     double lastS_ = 0.0;
     std::deque<Timed> in_, out_;
