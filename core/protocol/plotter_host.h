@@ -26,8 +26,8 @@ struct PlotterHostConfig {
     /// after 2 s (seed 001); waiting half a second longer lets that RESEND come first, so a
     /// packet is not sent twice when its first bytes were lost.
     double answerTimeoutS = 2.5;
-    int maxTimeouts = 3;          ///< then fail
-    int maxResends = 10;          ///< RESENDs for one packet before failing
+    int maxTimeouts = 3;  ///< then fail
+    int maxResends = 10;  ///< RESENDs for one packet before failing
     /// The device's plotting rate, steps/s: END and ORIGEM wait for the drawing, so their
     /// deadline is the answer timeout plus twice the time the longest axis needs at this rate.
     double stepsPerS = 1000.0;
