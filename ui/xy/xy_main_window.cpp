@@ -25,6 +25,7 @@
 #include <QRadioButton>
 #include <QSerialPortInfo>
 
+#include "app/common/data_paths.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/source_file.h"
@@ -288,7 +289,8 @@ void XyMainWindow::startProgram() {
 }
 
 void XyMainWindow::chooseFile() {
-    const QString folder = settings_.value(QStringLiteral("xyLastFolder")).toString();
+    const QString folder = settings_.value(QStringLiteral("xyLastFolder"), examplesDir())
+                               .toString();  // first: the examples
     const QString path = QFileDialog::getOpenFileName(this, tr("Open program"), folder,
                                                       tr("G-code programs (*.G *.g)"));
     if (path.isEmpty()) return;
