@@ -9,5 +9,6 @@ int compileCommand(const QStringList& args);
 int profileCommand(const QStringList& args);
 int runCommand(const QStringList& args);
 int latencyCommand(const QStringList& args);
+int serveCommand(const QStringList& args);
 
 }  // namespace trilho::cli

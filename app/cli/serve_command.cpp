@@ -1,0 +1,183 @@
+// trilho-cli serve --machine P [--modbus-tcp HOST:PORT] [--modbus-rtu DEV --baud N --unit ID]
+//   [--programs DIR] [--remote] [--virtual-time] [--time-scale K] [--fault NAME@T]...
+// The headless machine (issue 13): the rail's controller and the DNC link over Modbus, no
+// screens; runs until SIGINT or SIGTERM. Reading is always allowed; writes need --remote.
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QHostAddress>
+#include <QTimer>
+#include <csignal>
+#include <cstdio>
+#include <memory>
+
+#include "app/cli/cli_output.h"
+#include "app/cli/commands.h"
+#include "app/common/data_paths.h"
+#include "app/dnc/dnc_server.h"
+#include "app/dnc/virtual_machine.h"
+#include "app/dnc/worker_machine.h"
+
+namespace trilho::cli {
+
+namespace {
+
+volatile std::sig_atomic_t g_quit = 0;
+extern "C" void onQuit(int) {
+    g_quit = 1;
+}
+
+}  // namespace
+
+int serveCommand(const QStringList& args) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QStringLiteral("Run the rail headless with the DNC link (Modbus) until SIGINT/SIGTERM."));
+    const QCommandLineOption machineOpt(
+        QStringLiteral("machine"), QStringLiteral("Machine profile: a file or a shipped name."),
+        QStringLiteral("PROFILE"));
+    const QCommandLineOption tcpOpt(
+        QStringLiteral("modbus-tcp"),
+        QStringLiteral("Serve Modbus TCP on HOST:PORT (default 127.0.0.1:1502)."),
+        QStringLiteral("HOST:PORT"));
+    const QCommandLineOption rtuOpt(QStringLiteral("modbus-rtu"),
+                                    QStringLiteral("Serve Modbus RTU on this serial device."),
+                                    QStringLiteral("DEV"));
+    const QCommandLineOption baudOpt(QStringLiteral("baud"),
+                                     QStringLiteral("Bit rate of --modbus-rtu (default 19200)."),
+                                     QStringLiteral("N"));
+    const QCommandLineOption unitOpt(QStringLiteral("unit"),
+                                     QStringLiteral("Unit id of --modbus-rtu (1-247, default 1)."),
+                                     QStringLiteral("ID"));
+    const QCommandLineOption programsOpt(
+        QStringLiteral("programs"),
+        QStringLiteral("The program library: NNNN.G files (default ./programs)."),
+        QStringLiteral("DIR"));
+    const QCommandLineOption remoteOpt(
+        QStringLiteral("remote"),
+        QStringLiteral("Allow remote writes and commands (the operator's consent)."));
+    const QCommandLineOption virtualOpt(
+        QStringLiteral("virtual-time"),
+        QStringLiteral("Step the controller in virtual time from the event loop (tests)."));
+    const QCommandLineOption scaleOpt(
+        QStringLiteral("time-scale"),
+        QStringLiteral("With --virtual-time: servo periods run per millisecond (default 10)."),
+        QStringLiteral("K"));
+    const QCommandLineOption faultOpt(
+        QStringLiteral("fault"),
+        QStringLiteral("With --virtual-time: a fault T s after the first program starts "
+                       "(as trilho-cli run)."),
+        QStringLiteral("NAME[@T][=V]"));
+    parser.addOptions({machineOpt, tcpOpt, rtuOpt, baudOpt, unitOpt, programsOpt, remoteOpt,
+                       virtualOpt, scaleOpt, faultOpt});
+    auto usage = [](const QString& message) { return usageError("serve", message); };
+    if (auto done = parseArguments(parser, args, "serve")) return *done;
+    if (!parser.positionalArguments().isEmpty())
+        return usage(
+            QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().front()));
+
+    QString host = QStringLiteral("127.0.0.1");
+    quint16 port = 1502;
+    if (parser.isSet(tcpOpt)) {
+        const QString v = parser.value(tcpOpt);
+        const auto colon = v.lastIndexOf(QLatin1Char(':'));
+        bool ok = colon > 0;
+        const uint p = ok ? v.mid(colon + 1).toUInt(&ok) : 0;
+        if (!ok || p < 1 || p > 65535 || QHostAddress(v.left(colon)).isNull())
+            return usage(
+                QStringLiteral("--modbus-tcp must be HOST:PORT with a numeric address and a port "
+                               "1-65535 (got '%1')")
+                    .arg(v));
+        host = v.left(colon);
+        port = static_cast<quint16>(p);
+    }
+    int baud = 19200, unit = 1, scale = 10;
+    auto integer = [&](const QCommandLineOption& opt, int lo, int hi, int& into) {
+        if (!parser.isSet(opt)) return true;
+        bool ok = false;
+        const int v = parser.value(opt).toInt(&ok);
+        if (!ok || v < lo || v > hi) return false;
+        into = v;
+        return true;
+    };
+    if (!integer(baudOpt, 50, 4000000, baud))
+        return usage(QStringLiteral("--baud must be 50-4000000"));
+    if (!integer(unitOpt, 1, 247, unit)) return usage(QStringLiteral("--unit must be 1-247"));
+    if (!integer(scaleOpt, 1, 10000, scale))
+        return usage(QStringLiteral("--time-scale must be 1-10000 periods per millisecond"));
+    if (parser.isSet(scaleOpt) && !parser.isSet(virtualOpt))
+        return usage(QStringLiteral("--time-scale needs --virtual-time"));
+    std::vector<ScheduledFault> faults;
+    for (const QString& f : parser.values(faultOpt)) {
+        const FaultParse parsed = parseFault(f.toStdString());
+        if (!parsed.fault) return usage(QString::fromStdString(parsed.error));
+        faults.push_back(*parsed.fault);
+    }
+    if (!faults.empty() && !parser.isSet(virtualOpt))
+        return usage(QStringLiteral("--fault needs --virtual-time"));
+
+    const ProfileLoad load = loadNamedMachineProfile(parser.value(machineOpt));
+    if (!load.profile) return usage(load.error);
+    if (!load.error.isEmpty()) err(QStringLiteral("trilho-cli serve: %1\n").arg(load.error));
+    const MachineProfile profile = *load.profile;
+    if (profile.kind != MachineKind::Rail)
+        return usage(QStringLiteral("serve runs the rail; the XY machines have no DNC link yet"));
+
+    CompileOptions compileOptions;
+    compileOptions.machine = profile.limits;
+    compileOptions.maxDiagnostics = 100;
+    dnc::ProgramLibrary library(
+        parser.isSet(programsOpt) ? parser.value(programsOpt) : QStringLiteral("programs"),
+        compileOptions);
+
+    std::unique_ptr<dnc::DncMachine> machine;
+    if (parser.isSet(virtualOpt))
+        machine = std::make_unique<dnc::VirtualMachine>(profile, scale, faults);
+    else
+        machine = std::make_unique<dnc::WorkerMachine>(profile);
+    dnc::DncServer server(*machine, library);
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);  // one line at a time, even into a pipe
+    QObject::connect(&server, &dnc::DncServer::historyLine,
+                     [](const QString& line) { out(line + QLatin1Char('\n')); });
+    server.setRemote(parser.isSet(remoteOpt));
+
+    QString error;
+    if (!server.listenTcp(host, port, &error)) {
+        err(QStringLiteral("trilho-cli serve: cannot listen on %1:%2: %3\n")
+                .arg(host)
+                .arg(port)
+                .arg(error));
+        return kUsage;
+    }
+    if (!QHostAddress(host).isLoopback())
+        err(QStringLiteral("trilho-cli serve: warning: Modbus TCP on %1 is reachable from other "
+                           "hosts; Modbus has no authentication\n")
+                .arg(host));
+    out(QStringLiteral("trilho-cli serve: Modbus TCP on %1:%2\n").arg(host).arg(port));
+    if (parser.isSet(rtuOpt)) {
+        if (!server.listenRtu(parser.value(rtuOpt), baud, unit, &error)) {
+            err(QStringLiteral("trilho-cli serve: cannot open %1: %2\n")
+                    .arg(parser.value(rtuOpt), error));
+            return kUsage;
+        }
+        out(QStringLiteral("trilho-cli serve: Modbus RTU on %1 at %2 baud, unit %3\n")
+                .arg(parser.value(rtuOpt))
+                .arg(baud)
+                .arg(unit));
+    }
+    out(QStringLiteral("trilho-cli serve: remote writes %1\n")
+            .arg(server.remote() ? QStringLiteral("allowed (--remote)")
+                                 : QStringLiteral("refused (no --remote)")));
+
+    std::signal(SIGINT, onQuit);
+    std::signal(SIGTERM, onQuit);
+    QTimer quitCheck;  // a signal handler may only set a flag; the loop looks at it
+    QObject::connect(&quitCheck, &QTimer::timeout, [] {
+        if (g_quit) QCoreApplication::quit();
+    });
+    quitCheck.start(50);
+    QCoreApplication::exec();
+    out(QStringLiteral("trilho-cli serve: stopped\n"));
+    return kOk;
+}
+
+}  // namespace trilho::cli

@@ -1,0 +1,35 @@
+#pragma once
+// The machine behind the DNC server: the rail's controller in real time (a ServoWorker) or in
+// virtual time (a SimSession stepped by the event loop, for tests). The server only reads
+// snapshots, sends commands and waits for their tickets; it never steps anything itself.
+#include <cstdint>
+#include <functional>
+#include <memory>
+
+#include "core/gcode/program.h"
+#include "core/machine/rail_controller.h"
+#include "core/runtime/servo_worker.h"
+
+namespace trilho::dnc {
+
+/// Says when a command has been applied by the controller.
+struct Ticket {
+    bool byVersion = false;  ///< a flag (Stop): applied once the snapshot passed this version
+    std::uint64_t value = 0;
+};
+
+class DncMachine {
+  public:
+    virtual ~DncMachine() = default;
+    virtual ControllerStatus snapshot() const = 0;
+    virtual Ticket send(CommandKind kind, std::int64_t i = 0, double a = 0.0, double b = 0.0,
+                        double c = 0.0) = 0;
+    virtual Ticket loadProgram(std::shared_ptr<const Program> program) = 0;
+    /// Stop bypasses the queue (as the screens' Stop does).
+    virtual Ticket requestStop() = 0;
+    virtual bool applied(const Ticket& t) const = 0;
+    virtual void drainEvents(const std::function<void(const ControllerEvent&)>& f) = 0;
+    virtual const MachineProfile& profile() const = 0;
+};
+
+}  // namespace trilho::dnc

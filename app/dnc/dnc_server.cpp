@@ -1,0 +1,334 @@
+#include "app/dnc/dnc_server.h"
+
+#include <QModbusRtuSerialServer>
+#include <QModbusTcpServer>
+#include <QSerialPort>
+#include <QStringList>
+#include <QTcpSocket>
+#include <QUrl>
+
+#include "core/machine/event_text.h"
+
+namespace trilho::dnc {
+
+namespace {
+
+/// A Qt Modbus server whose requests go through DncServer::handle first.
+template <class Base>
+class Served : public Base {
+  public:
+    Served(DncServer& dnc, QString client, QObject* parent)
+        : Base(parent), dnc_(dnc), client_(std::move(client)) {}
+
+  protected:
+    QModbusResponse processRequest(const QModbusPdu& request) override {
+        const QString client = client_.isEmpty() ? dnc_.tcpClients() : client_;
+        return dnc_.handle(
+            request, *this, [this](const QModbusPdu& p) { return Base::processRequest(p); },
+            client);
+    }
+
+  private:
+    DncServer& dnc_;
+    QString client_;  ///< empty: a TCP server (the peers are asked)
+};
+
+class PeerObserver final : public QModbusTcpConnectionObserver {
+  public:
+    explicit PeerObserver(std::function<void(QTcpSocket*)> f) : f_(std::move(f)) {}
+    bool acceptNewConnection(QTcpSocket* client) override {
+        f_(client);
+        return true;
+    }
+
+  private:
+    std::function<void(QTcpSocket*)> f_;
+};
+
+QModbusDataUnitMap registerMap() {
+    QModbusDataUnitMap map;
+    map.insert(QModbusDataUnit::InputRegisters,
+               QModbusDataUnit(QModbusDataUnit::InputRegisters, 0, in::kCount));
+    map.insert(QModbusDataUnit::HoldingRegisters,
+               QModbusDataUnit(QModbusDataUnit::HoldingRegisters, 0, hold::kCount));
+    return map;
+}
+
+QModbusPdu::ExceptionCode toQt(Exception e) {
+    switch (e) {
+        case Exception::IllegalFunction:
+            return QModbusPdu::IllegalFunction;
+        case Exception::IllegalAddress:
+            return QModbusPdu::IllegalDataAddress;
+        default:
+            return QModbusPdu::IllegalDataValue;
+    }
+}
+
+bool runningState(ControllerState s) {
+    return s == ControllerState::Running || s == ControllerState::Waiting ||
+           s == ControllerState::Paused || s == ControllerState::Homing;
+}
+
+}  // namespace
+
+DncServer::DncServer(DncMachine& machine, ProgramLibrary library, QObject* parent)
+    : QObject(parent), machine_(machine), library_(std::move(library)) {
+    // 20 ms: a supervisor polling at 50 Hz or slower sees every refresh; a read refreshes too.
+    connect(&timer_, &QTimer::timeout, this, [this] {
+        refresh();
+        for (QModbusServer* s : servers_)
+            publish(*s);
+    });
+    timer_.start(20);
+    refresh();
+}
+
+DncServer::~DncServer() {
+    for (QModbusServer* s : servers_)
+        s->disconnectDevice();
+}
+
+bool DncServer::listenTcp(const QString& host, quint16 port, QString* error) {
+    auto* srv = new Served<QModbusTcpServer>(*this, QString(), this);
+    srv->setConnectionParameter(QModbusDevice::NetworkAddressParameter, host);
+    srv->setConnectionParameter(QModbusDevice::NetworkPortParameter, port);
+    srv->setServerAddress(1);
+    srv->setMap(registerMap());
+    srv->installConnectionObserver(new PeerObserver([this](QTcpSocket* s) {
+        peers_.insert(s, QStringLiteral("%1:%2")
+                             .arg(QHostAddress(s->peerAddress().toIPv4Address()).toString())
+                             .arg(s->peerPort()));
+    }));
+    connect(srv, &QModbusTcpServer::modbusClientDisconnected, this,
+            [this](QTcpSocket* s) { peers_.remove(s); });
+    if (!srv->connectDevice() || srv->state() != QModbusDevice::ConnectedState) {
+        if (error) *error = srv->errorString();
+        delete srv;
+        return false;
+    }
+    servers_.push_back(srv);
+    publish(*srv);
+    return true;
+}
+
+bool DncServer::listenRtu(const QString& device, int baud, int unitId, QString* error) {
+    auto* srv = new Served<QModbusRtuSerialServer>(*this, device, this);
+    srv->setConnectionParameter(QModbusDevice::SerialPortNameParameter, device);
+    srv->setConnectionParameter(QModbusDevice::SerialBaudRateParameter, baud);
+    srv->setConnectionParameter(QModbusDevice::SerialDataBitsParameter, QSerialPort::Data8);
+    srv->setConnectionParameter(QModbusDevice::SerialParityParameter, QSerialPort::NoParity);
+    srv->setConnectionParameter(QModbusDevice::SerialStopBitsParameter, QSerialPort::OneStop);
+    srv->setServerAddress(unitId);
+    srv->setMap(registerMap());
+    if (!srv->connectDevice() || srv->state() != QModbusDevice::ConnectedState) {
+        if (error) *error = srv->errorString();
+        delete srv;
+        return false;
+    }
+    servers_.push_back(srv);
+    publish(*srv);
+    return true;
+}
+
+void DncServer::setRemote(bool on) {
+    link_.remote = on;
+    refresh();
+}
+
+QString DncServer::tcpClients() const {
+    QStringList names = peers_.values();
+    names.sort();
+    if (names.isEmpty()) return QStringLiteral("an unknown client");
+    if (names.size() == 1) return names.front();
+    return QStringLiteral("one of %1").arg(names.join(QStringLiteral(", ")));
+}
+
+void DncServer::refresh() {
+    const ControllerStatus s = machine_.snapshot();
+    machine_.drainEvents([this](const ControllerEvent& e) {
+        if (e.kind == EventKind::AlarmRaised) ++link_.alarmSeq;
+        emit historyLine(trilho::historyLine(e));
+    });
+    if (pending_ && machine_.applied(pending_->ticket)) {
+        link_.commandSeq = pending_->seq;
+        link_.commandResult = pending_->result;
+        pending_.reset();
+    }
+    fillInputRegisters(s, link_, input_);
+    fillLiveHolding(s, holding_);
+}
+
+void DncServer::publish(QModbusServer& server) {
+    QModbusDataUnit inputs(QModbusDataUnit::InputRegisters, 0, in::kCount);
+    for (std::uint16_t i = 0; i < in::kCount; ++i)
+        inputs.setValue(i, input_[i]);
+    server.setData(inputs);
+    // Only the live part; the download block is what clients wrote.
+    QModbusDataUnit live(QModbusDataUnit::HoldingRegisters, 0, hold::kDownloadNumber);
+    for (std::uint16_t i = 0; i < hold::kDownloadNumber; ++i)
+        live.setValue(i, holding_[i]);
+    server.setData(live);
+}
+
+QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& server,
+                                  const std::function<QModbusResponse(const QModbusPdu&)>& base,
+                                  const QString& client) {
+    refresh();
+    publish(server);
+    const auto fc = request.functionCode();
+    const QByteArray data = request.data();
+    const WriteDecode d = decodeHoldingWrite(
+        static_cast<std::uint8_t>(fc), reinterpret_cast<const std::uint8_t*>(data.constData()),
+        static_cast<std::size_t>(data.size()));
+    const bool writes = d.isWrite || fc == QModbusPdu::WriteSingleCoil ||
+                        fc == QModbusPdu::WriteMultipleCoils || fc == QModbusPdu::WriteFileRecord ||
+                        fc == QModbusPdu::MaskWriteRegister;
+    if (!writes) return base(request);
+    if (!link_.remote) {
+        emit historyLine(QStringLiteral("DNC: write refused (Remote is off): function %1 from %2")
+                             .arg(int(fc))
+                             .arg(client));
+        return QModbusExceptionResponse(fc, QModbusPdu::IllegalFunction);
+    }
+    if (!d.isWrite) return base(request);  // coils, files: none in the map (an exception)
+    Exception e = d.error;
+    if (e == Exception::None) e = checkHoldingWrite(d.write, holding_, machine_.snapshot().law);
+    if (e != Exception::None) {
+        emit historyLine(QStringLiteral("DNC: write refused (%1): function %2 at %3 from %4")
+                             .arg(e == Exception::IllegalAddress ? QStringLiteral("address")
+                                                                 : QStringLiteral("bad value"))
+                             .arg(int(fc))
+                             .arg(d.write.start)
+                             .arg(client));
+        return QModbusExceptionResponse(fc, toQt(e));
+    }
+    const QModbusResponse response = base(request);
+    if (response.isException()) return response;
+    for (std::size_t i = 0; i < d.write.values.size(); ++i)
+        holding_[d.write.start + i] = d.write.values[i];
+    applyWrite(d.write);
+    refresh();
+    for (QModbusServer* s : servers_)
+        publish(*s);
+    return response;
+}
+
+void DncServer::applyWrite(const HoldingWrite& w) {
+    auto touches = [&w](std::uint16_t from, std::uint16_t to) {
+        return w.start < to && w.start + w.values.size() > from;
+    };
+    auto f = [this](std::uint16_t a) { return double(joinFloat(holding_[a], holding_[a + 1])); };
+    if (touches(hold::kKp, hold::kKd + 2))
+        machine_.send(CommandKind::SetGains, static_cast<int>(machine_.snapshot().law),
+                      f(hold::kKp), f(hold::kKi), f(hold::kKd));
+    if (touches(hold::kFeedOverride, hold::kFeedOverride + 2))
+        machine_.send(CommandKind::FeedOverride, 0, f(hold::kFeedOverride));
+    if (touches(hold::kCommand, hold::kCommand + 1)) {
+        const auto c = static_cast<Command>(holding_[hold::kCommand]);
+        holding_[hold::kCommand] = 0;  // reads back 0: done
+        runCommand(c, holding_[hold::kArgument], holding_[hold::kSeq]);
+    }
+}
+
+void DncServer::finishCommand(std::uint16_t seq, CommandResult r, std::optional<Ticket> ticket) {
+    if (ticket && !machine_.applied(*ticket)) {
+        pending_ = Pending{seq, r, *ticket};
+        return;
+    }
+    pending_.reset();
+    link_.commandSeq = seq;
+    link_.commandResult = r;
+}
+
+void DncServer::noteDiagnostics(int number, const Program& p) {
+    link_.diagProgram = static_cast<std::uint16_t>(number);
+    link_.diagErrors = static_cast<std::uint16_t>(std::min<std::size_t>(p.errorCount(), 0xFFFF));
+    link_.diagCode = 0;
+    link_.diagLine = 0;
+    for (const Diagnostic& d : p.diagnostics) {
+        if (d.severity != Severity::Error) continue;
+        link_.diagCode = static_cast<std::uint16_t>(static_cast<int>(d.id) + 1);
+        link_.diagLine = static_cast<std::uint16_t>(std::min<std::uint32_t>(d.line, 0xFFFF));
+        break;
+    }
+}
+
+void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq) {
+    const ControllerStatus s = machine_.snapshot();
+    switch (c) {
+        case Command::StartProgram: {
+            if (runningState(s.state)) return finishCommand(seq, CommandResult::Busy);
+            if (s.state == ControllerState::Alarm || s.state == ControllerState::EStop)
+                return finishCommand(seq, CommandResult::NotReady);
+            QString error;
+            const auto program = library_.load(argument, &error);
+            if (!program) {
+                emit historyLine(QStringLiteral("DNC: no program %1 (%2)")
+                                     .arg(library_.pathOf(argument), error));
+                return finishCommand(seq, CommandResult::NoProgram);
+            }
+            noteDiagnostics(argument, **program);
+            if (!(*program)->ok()) {
+                emit historyLine(QStringLiteral("DNC: program %1 has %2 errors: not started")
+                                     .arg(argument)
+                                     .arg(link_.diagErrors));
+                return finishCommand(seq, CommandResult::CompileErrors);
+            }
+            if (!s.automatic || s.state == ControllerState::Manual)
+                machine_.send(CommandKind::SelectAutomatic);
+            machine_.loadProgram(*program);
+            link_.program = argument;
+            emit historyLine(QStringLiteral("DNC: program %1 started").arg(argument));
+            return finishCommand(seq, CommandResult::Applied, machine_.send(CommandKind::Start));
+        }
+        case Command::Hold:
+            return finishCommand(seq, CommandResult::Applied, machine_.send(CommandKind::Hold));
+        case Command::Continue:
+            return finishCommand(seq, CommandResult::Applied, machine_.send(CommandKind::Continue));
+        case Command::Stop:
+            return finishCommand(seq, CommandResult::Applied, machine_.requestStop());
+        case Command::Acknowledge:
+            return finishCommand(seq, CommandResult::Applied,
+                                 machine_.send(CommandKind::Acknowledge));
+        case Command::SelectAutomatic:
+            return finishCommand(seq, CommandResult::Applied,
+                                 machine_.send(CommandKind::SelectAutomatic));
+        case Command::SelectManual:
+            return finishCommand(seq, CommandResult::Applied,
+                                 machine_.send(CommandKind::SelectManual));
+        case Command::CommitDownload: {
+            const std::uint16_t length = holding_[hold::kDownloadLength];
+            if (holding_[hold::kDownloadNumber] != argument || length > hold::kDownloadMaxBytes)
+                return finishCommand(seq, CommandResult::BadDownload);
+            QByteArray source;
+            source.reserve(length);
+            for (std::uint16_t i = 0; i < length; ++i) {
+                const std::uint16_t r = holding_[hold::kDownloadData + i / 2];
+                source.append(static_cast<char>(i % 2 == 0 ? r >> 8 : r & 0xFF));
+            }
+            const auto program = library_.compileText(source);
+            noteDiagnostics(argument, *program);
+            if (!program->ok()) {
+                emit historyLine(QStringLiteral("DNC: download of program %1 refused: %2 errors")
+                                     .arg(argument)
+                                     .arg(link_.diagErrors));
+                return finishCommand(seq, CommandResult::CompileErrors);
+            }
+            QString error;
+            if (!library_.save(argument, source, &error)) {
+                emit historyLine(QStringLiteral("DNC: cannot save %1: %2")
+                                     .arg(library_.pathOf(argument), error));
+                return finishCommand(seq, CommandResult::SaveFailed);
+            }
+            emit historyLine(
+                QStringLiteral("DNC: program %1 saved (%2 bytes)").arg(argument).arg(length));
+            return finishCommand(seq, CommandResult::Applied);
+        }
+        case Command::None:
+        case Command::Count_:
+            break;
+    }
+}
+
+}  // namespace trilho::dnc

@@ -1,0 +1,37 @@
+#pragma once
+// The simulated rail under its servo thread, in real time (trilho-cli serve without
+// --virtual-time): what the screens run, without the screens.
+#include <memory>
+
+#include "app/dnc/dnc_machine.h"
+#include "hal/sim/sim_rail.h"
+
+namespace trilho::dnc {
+
+class WorkerMachine final : public DncMachine {
+  public:
+    explicit WorkerMachine(const MachineProfile& profile, std::uint64_t seed = 1);
+    ~WorkerMachine() override;
+
+    ControllerStatus snapshot() const override { return worker_->snapshot(); }
+    Ticket send(CommandKind kind, std::int64_t i, double a, double b, double c) override {
+        return {false, worker_->send(kind, i, a, b, c)};
+    }
+    Ticket loadProgram(std::shared_ptr<const Program> program) override {
+        return {false, worker_->loadProgram(std::move(program))};
+    }
+    Ticket requestStop() override;
+    bool applied(const Ticket& t) const override;
+    void drainEvents(const std::function<void(const ControllerEvent&)>& f) override {
+        worker_->drainEvents(f);
+    }
+    const MachineProfile& profile() const override { return profile_; }
+
+  private:
+    MachineProfile profile_;
+    std::unique_ptr<SimRail> rail_;
+    std::unique_ptr<RailController> controller_;
+    std::unique_ptr<ServoWorker> worker_;
+};
+
+}  // namespace trilho::dnc

@@ -1,0 +1,313 @@
+#!/usr/bin/env python3
+"""The DNC link against real Modbus clients (issue 13): pymodbus and mbpoll talk to
+`trilho-cli serve --virtual-time` on 127.0.0.1. Usage: dnc_clients.py CLI {pymodbus,mbpoll,
+refused,alarm}. Exits 77 (ctest SKIP_RETURN_CODE) when the client is not installed.
+Every wait is on a condition with a deadline, never a fixed sleep."""
+import os
+import shutil
+import socket
+import struct
+import subprocess
+import sys
+import tempfile
+import time
+
+# core/dnc/register_map.h (PDU addresses)
+IN_VERSION, IN_STATE, IN_MODE, IN_HOMED, IN_PAUSE, IN_PROGRAM, IN_FINISHED = 0, 2, 3, 4, 5, 8, 9
+IN_ALARMS, IN_ALARMS_ACK, IN_LAST_ALARM, IN_ALARM_SEQ = 10, 12, 14, 15
+IN_CMD_SEQ, IN_CMD_RESULT, IN_REMOTE, IN_DIAG_ERRORS, IN_DIAG_CODE, IN_DIAG_LINE = 16, 17, 18, 19, 20, 21
+IN_LAW, IN_POSITION, IN_SETPOINT, IN_SPEED, IN_COUNT = 23, 24, 26, 30, 34
+H_KP, H_FEED, H_COMMAND, H_DL_NUMBER, H_DL_LENGTH, H_DL_DATA, H_COUNT = 0, 6, 8, 16, 17, 18, 18 + 4096
+MANUAL, AUTO_IDLE, HOMING, RUNNING, WAITING, PAUSED, ALARM = 0, 1, 2, 3, 4, 5, 6
+START, HOLD, CONTINUE, STOP, ACK, AUTO, MANUAL_CMD, COMMIT = 1, 2, 3, 4, 5, 6, 7, 8
+APPLIED, NO_PROGRAM, COMPILE_ERRORS = 1, 2, 3
+
+# A slow move (so hold, continue and stop find it running), an m00, and back.
+PROGRAM = ("( downloaded over Modbus )\nN0010 G01 X0200 F010\nN0020 M00\n"
+           "N0030 G01 X0000 F050\nN0040 M02\n")
+BAD_PROGRAM = "N0010 G01 X0010 F020\nN0020 Q12\nN0030 M02\n"
+
+failures = []
+
+
+def check(cond, what):
+    print(("ok   " if cond else "FAIL ") + what, flush=True)
+    if not cond:
+        failures.append(what)
+
+
+def free_port():
+    s = socket.socket()
+    s.bind(("127.0.0.1", 0))
+    port = s.getsockname()[1]
+    s.close()
+    return port
+
+
+class Server:
+    def __init__(self, cli, programs, remote=True, extra=()):
+        self.port = free_port()
+        args = [cli, "serve", "--virtual-time", "--modbus-tcp", f"127.0.0.1:{self.port}",
+                "--programs", programs] + (["--remote"] if remote else []) + list(extra)
+        self.proc = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                     text=True)
+        self.lines = []
+        deadline = time.monotonic() + 20
+        while time.monotonic() < deadline:
+            line = self.proc.stdout.readline()
+            if not line:
+                break
+            self.lines.append(line)
+            if "Modbus TCP on" in line:
+                return
+        raise SystemExit("server did not start: " + "".join(self.lines))
+
+    def stop(self):
+        self.proc.terminate()
+        out, _ = self.proc.communicate(timeout=20)
+        self.lines.append(out)
+        return self.proc.returncode, "".join(self.lines)
+
+
+def wait_for(pred, what, seconds=30.0):
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        if pred():
+            check(True, what)
+            return True
+        time.sleep(0.005)  # polling interval of the condition, not a synchronisation
+    check(False, what + " (timed out)")
+    return False
+
+
+def f32(hi, lo):
+    return struct.unpack(">f", struct.pack(">HH", hi, lo))[0]
+
+
+def regs_of(x):
+    return list(struct.unpack(">HH", struct.pack(">f", x)))
+
+
+# ---------------------------------------------------------------- pymodbus
+class Py:
+    def __init__(self, port):
+        from pymodbus.client import ModbusTcpClient
+        self.c = ModbusTcpClient("127.0.0.1", port=port, timeout=5)
+        assert self.c.connect()
+        self.seq = 100
+
+    def ir(self, addr, count=1):
+        r = self.c.read_input_registers(addr, count, slave=1)
+        assert not r.isError(), r
+        return r.registers
+
+    def hr(self, addr, count=1):
+        r = self.c.read_holding_registers(addr, count, slave=1)
+        assert not r.isError(), r
+        return r.registers
+
+    def write(self, addr, values):
+        return self.c.write_registers(addr, values, slave=1)
+
+    def exc(self, r):
+        return getattr(r, "exception_code", 0) if r.isError() else 0
+
+    def command(self, code, arg=0):
+        self.seq += 1
+        r = self.write(H_COMMAND, [code, arg, self.seq])
+        assert not r.isError(), r
+        ok = wait_for(lambda: self.ir(IN_CMD_SEQ)[0] == self.seq, f"command {code} echoed seq {self.seq}")
+        return self.ir(IN_CMD_RESULT)[0] if ok else -1
+
+    def state(self):
+        return self.ir(IN_STATE)[0]
+
+
+def download(p, number, text):
+    data = text.encode("ascii")
+    padded = data + (b"\0" if len(data) % 2 else b"")
+    words = [(padded[i] << 8) | padded[i + 1] for i in range(0, len(padded), 2)]
+    assert not p.write(H_DL_NUMBER, [number, len(data)]).isError()
+    for i in range(0, len(words), 120):
+        assert not p.write(H_DL_DATA + i, words[i:i + 120]).isError()
+    return p.command(COMMIT, number)
+
+
+def run_pymodbus(cli):
+    with tempfile.TemporaryDirectory() as programs:
+        srv = Server(cli, programs)
+        try:
+            p = Py(srv.port)
+            check(p.ir(IN_VERSION)[0] == 1, "protocol version 1")
+            check(p.state() == MANUAL, "starts in Manual")
+            r = p.ir(IN_POSITION, 2)
+            check(abs(f32(*r)) < 1.0, f"position float near 0 mm ({f32(*r):.3f})")
+            check(p.ir(IN_REMOTE)[0] == 1, "remote register says consent given")
+            # gains of the active law (engineered unless the profile says classic)
+            gains = [2.0, 5.0, 0.01] if p.ir(IN_LAW)[0] == 1 else [0.3, 0.0005, 1.0]
+            values = sum((regs_of(g) for g in gains), [])
+            check(not p.write(H_KP, values).isError(), "gains written")
+            wait_for(lambda: [round(f32(*p.hr(H_KP + 2 * i, 2)), 6) for i in range(3)] ==
+                     [round(struct.unpack(">f", struct.pack(">f", g))[0], 6) for g in gains],
+                     "gains read back")
+            check(p.exc(p.write(H_KP, regs_of(50.0))) == 3, "kp 50 -> illegal data value")
+            check(abs(f32(*p.hr(H_KP, 2)) - gains[0]) < 1e-6, "kp unchanged after the refusal")
+            check(p.exc(p.write(H_KP, regs_of(2.0)[:1])) == 3, "half a float -> illegal data value")
+            check(p.exc(p.write(H_COMMAND, [77, 0, 1])) == 3, "unknown command -> illegal data value")
+            check(p.exc(p.c.read_input_registers(IN_COUNT, 4, slave=1)) == 2,
+                  "input register past the map -> illegal data address")
+            check(p.exc(p.write(H_COUNT + 5, [1])) == 2, "holding register past the map -> illegal address")
+            check(p.ir(IN_VERSION)[0] == 1, "the server goes on after exceptions")
+            # feed override
+            check(not p.write(H_FEED, regs_of(1.0)).isError(), "feed override 1.0 written")
+            # download: a bad program is refused with its diagnostics, nothing saved
+            check(download(p, 43, BAD_PROGRAM) == COMPILE_ERRORS, "bad download refused (compile errors)")
+            check(p.ir(IN_DIAG_ERRORS)[0] >= 1, f"diagnostics count {p.ir(IN_DIAG_ERRORS)[0]}")
+            check(p.ir(IN_DIAG_LINE)[0] == 2 and p.ir(IN_DIAG_CODE)[0] > 0,
+                  f"first error line {p.ir(IN_DIAG_LINE)[0]} code {p.ir(IN_DIAG_CODE)[0]}")
+            check(not os.path.exists(os.path.join(programs, "0043.G")), "0043.G not saved")
+            check(download(p, 42, PROGRAM) == APPLIED, "program 42 downloaded")
+            with open(os.path.join(programs, "0042.G")) as f:
+                check(f.read() == PROGRAM, "0042.G holds the downloaded text")
+            check(p.command(START, 99) == NO_PROGRAM, "start of a missing program refused")
+            # run by number, hold, continue, m00, stop
+            check(p.command(START, 42) == APPLIED, "start program 42")
+            wait_for(lambda: p.state() == RUNNING, "running")
+            check(p.ir(IN_PROGRAM)[0] == 42, "program number 42 in the status")
+            check(p.command(HOLD) == APPLIED, "hold applied")
+            wait_for(lambda: p.state() == PAUSED and p.ir(IN_PAUSE)[0] == 2, "paused by hold")
+            wait_for(lambda: abs(f32(*p.ir(IN_SPEED, 2))) < 0.5, "at rest while held")
+            held = f32(*p.ir(IN_POSITION, 2))
+            check(p.command(CONTINUE) == APPLIED, "continue applied")
+            wait_for(lambda: f32(*p.ir(IN_POSITION, 2)) > held + 1.0, "moving on after continue")
+            wait_for(lambda: p.state() == PAUSED and p.ir(IN_PAUSE)[0] == 1, "paused at m00", 60)
+            check(abs(f32(*p.ir(IN_POSITION, 2)) - 200.0) < 1.0,
+                  f"at 200 mm on the m00 ({f32(*p.ir(IN_POSITION, 2)):.3f})")
+            check(p.command(CONTINUE) == APPLIED, "continue after m00")
+            wait_for(lambda: p.state() == RUNNING, "running after m00")
+            check(p.command(STOP) == APPLIED, "stop applied")
+            wait_for(lambda: p.state() == AUTO_IDLE, "idle after stop")
+            # a whole run to the end
+            check(p.command(START, 42) == APPLIED, "start program 42 again")
+            wait_for(lambda: p.state() == PAUSED and p.ir(IN_PAUSE)[0] == 1, "m00 again", 60)
+            p.command(CONTINUE)
+            wait_for(lambda: p.ir(IN_FINISHED)[0] == 1 and p.state() == AUTO_IDLE, "program finished", 60)
+            check(abs(f32(*p.ir(IN_POSITION, 2))) < 0.5, "back at 0 mm")
+            p.c.close()
+        finally:
+            rc, out = srv.stop()
+        check(rc == 0, f"server exit status {rc} after SIGTERM")
+        check("program 42 saved" in out and "program 42 started" in out, "history lines of the link")
+
+
+def run_alarm(cli):
+    with tempfile.TemporaryDirectory() as programs:
+        with open(os.path.join(programs, "0007.G"), "w") as f:
+            f.write(PROGRAM)
+        srv = Server(cli, programs, extra=["--fault", "stuck-encoder@0.5"])
+        try:
+            p = Py(srv.port)
+            seq0 = p.ir(IN_ALARM_SEQ)[0]
+            check(p.command(START, 7) == APPLIED, "start program 7")
+            wait_for(lambda: p.state() == ALARM, "alarm state after the stuck encoder", 60)
+            active = (p.ir(IN_ALARMS)[0] << 16) | p.ir(IN_ALARMS + 1)[0]
+            ack = (p.ir(IN_ALARMS_ACK)[0] << 16) | p.ir(IN_ALARMS_ACK + 1)[0]
+            last = p.ir(IN_LAST_ALARM)[0]
+            check(active != 0 and ack != 0 and (ack & (1 << last)),
+                  f"alarm {last} active (mask {active:#x}) and to acknowledge ({ack:#x})")
+            check(p.ir(IN_ALARM_SEQ)[0] > seq0, "alarm sequence number moved")
+            check(p.command(START, 7) == 7, "start refused while in alarm (not ready)")
+            check(p.command(ACK) == APPLIED, "acknowledge applied")
+            wait_for(lambda: p.state() != ALARM and p.ir(IN_ALARMS_ACK + 1)[0] == 0 and
+                     p.ir(IN_ALARMS_ACK)[0] == 0, "alarm acknowledged")
+            p.c.close()
+        finally:
+            srv.stop()
+
+
+def run_refused(cli):
+    with tempfile.TemporaryDirectory() as programs:
+        srv = Server(cli, programs, remote=False)
+        try:
+            p = Py(srv.port)
+            check(p.ir(IN_VERSION)[0] == 1 and p.ir(IN_REMOTE)[0] == 0, "reads allowed, remote 0")
+            kp = p.hr(H_KP, 2)
+            check(p.exc(p.write(H_KP, regs_of(2.0))) == 1, "gains write refused (illegal function)")
+            check(p.exc(p.write(H_COMMAND, [AUTO, 0, 1])) == 1, "command refused")
+            check(p.hr(H_KP, 2) == kp and p.state() == MANUAL, "nothing changed")
+            p.c.close()
+        finally:
+            rc, out = srv.stop()
+        check("write refused (Remote is off)" in out and "127.0.0.1:" in out,
+              "history line names the client")
+
+
+# ---------------------------------------------------------------- mbpoll
+def mbpoll(port, *args):
+    cmd = ["mbpoll", "-m", "tcp", "-a", "1", "-p", str(port), "-0", "-1", "-o", "5"] + list(args)
+    r = subprocess.run(cmd, capture_output=True, text=True, timeout=30)
+    return r.returncode, r.stdout + r.stderr
+
+
+def mb_values(text):
+    vals = {}
+    for line in text.splitlines():
+        line = line.strip()
+        if line.startswith("[") and "]:" in line:
+            k, v = line[1:].split("]:", 1)
+            vals[int(k)] = float(v.split()[0])
+    return vals
+
+
+def run_mbpoll(cli):
+    with tempfile.TemporaryDirectory() as programs:
+        srv = Server(cli, programs)
+        port = srv.port
+        try:
+            def ir(addr, kind="3"):
+                rc, out = mbpoll(port, "-t", kind, "-r", str(addr), "-c", "1", *(["-B"] if "float" in kind else []), "127.0.0.1")
+                return mb_values(out).get(addr)
+            check(ir(IN_VERSION) == 1, "mbpoll reads the protocol version")
+            check(ir(IN_STATE) == MANUAL, "mbpoll reads Manual")
+            pos = ir(IN_POSITION, "3:float")
+            check(pos is not None and abs(pos) < 1.0, f"mbpoll reads the position as a float ({pos})")
+            law = ir(IN_LAW)
+            gains = ["2", "5", "0.01"] if law == 1 else ["0.3", "0.0005", "1"]
+            rc, out = mbpoll(port, "-t", "4:float", "-B", "-r", "0", "127.0.0.1", *gains)
+            check(rc == 0, "mbpoll writes the gains")
+            wait_for(lambda: abs((ir(0, "4:float") or 0) - float(gains[0])) < 1e-6, "kp read back by mbpoll")
+            rc, out = mbpoll(port, "-t", "4:float", "-B", "-r", "0", "127.0.0.1", "50")
+            check(rc != 0 and "llegal data value" in out, "kp 50 refused: " + out.strip().splitlines()[-1])
+            rc, out = mbpoll(port, "-t", "3", "-r", "500", "-c", "1", "127.0.0.1")
+            check(rc != 0 and "llegal data address" in out, "address 500 refused")
+            rc, out = mbpoll(port, "-t", "4", "-r", str(H_COMMAND), "127.0.0.1", str(AUTO), "0", "5")
+            check(rc == 0, "mbpoll selects Automatic")
+            wait_for(lambda: ir(IN_CMD_SEQ) == 5, "command seq 5 echoed")
+            wait_for(lambda: ir(IN_STATE) == AUTO_IDLE and ir(IN_HOMED) == 1, "homed in Automatic")
+        finally:
+            srv.stop()
+
+
+def main():
+    cli, mode = sys.argv[1], sys.argv[2]
+    if mode == "mbpoll":
+        if not shutil.which("mbpoll"):
+            print("mbpoll not installed: skipped (scripts/deps.sh installs it)")
+            return 77
+        run_mbpoll(cli)
+    else:
+        try:
+            import pymodbus  # noqa: F401
+        except ImportError:
+            print("pymodbus not installed: skipped (scripts/deps.sh installs python3-pymodbus)")
+            return 77
+        {"pymodbus": run_pymodbus, "alarm": run_alarm, "refused": run_refused}[mode](cli)
+    if failures:
+        print(f"{len(failures)} failed: " + "; ".join(failures))
+        return 1
+    print("all passed")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,126 @@
+// The DNC register map's encoding and the checks on writes (core/dnc).
+#include <gtest/gtest.h>
+
+#include "core/dnc/register_map.h"
+#include "core/dnc/status_registers.h"
+#include "core/dnc/write_check.h"
+
+namespace trilho::dnc {
+namespace {
+
+std::vector<std::uint8_t> writeMultiple(std::uint16_t start, std::vector<std::uint16_t> values) {
+    std::vector<std::uint8_t> d = {
+        static_cast<std::uint8_t>(start >> 8), static_cast<std::uint8_t>(start & 0xFF), 0,
+        static_cast<std::uint8_t>(values.size()), static_cast<std::uint8_t>(values.size() * 2)};
+    for (std::uint16_t v : values)
+        d.push_back(static_cast<std::uint8_t>(v >> 8)),
+            d.push_back(static_cast<std::uint8_t>(v & 0xFF));
+    return d;
+}
+
+Exception check(std::uint16_t start, std::vector<std::uint16_t> values,
+                LoopLaw law = LoopLaw::Engineered) {
+    HoldingImage current{};
+    const auto bytes = writeMultiple(start, values);
+    const WriteDecode d = decodeHoldingWrite(0x10, bytes.data(), bytes.size());
+    EXPECT_TRUE(d.isWrite);
+    if (d.error != Exception::None) return d.error;
+    return checkHoldingWrite(d.write, current, law);
+}
+
+std::vector<std::uint16_t> floatRegs(float v) {
+    const Words w = splitFloat(v);
+    return {w.hi, w.lo};
+}
+
+TEST(DncRegisters, FloatsAreAbcd) {
+    // 1.5f = 0x3FC00000: the high word first, as mbpoll -B and pymodbus Endian.Big read it.
+    const Words w = splitFloat(1.5f);
+    EXPECT_EQ(w.hi, 0x3FC0);
+    EXPECT_EQ(w.lo, 0x0000);
+    EXPECT_EQ(joinFloat(0x42F6, 0xE979), 123.456f);
+    EXPECT_EQ(joinU32(0x0001, 0x0008), 0x10008u);
+}
+
+TEST(DncRegisters, StatusEncoding) {
+    ControllerStatus s;
+    s.timeS = 1.234;
+    s.state = ControllerState::Alarm;
+    s.automatic = true;
+    s.homed = true;
+    s.blockN = -1;
+    s.blockLine = 7;
+    s.activeAlarms = alarmBit(AlarmCode::FollowingError) | alarmBit(AlarmCode::SoftLimit);
+    s.lastAlarm = AlarmCode::FollowingError;
+    s.servo.positionMm = -250.5;
+    s.servo.velocityMmS = 12.25;
+    s.feedOverride = 0.5;
+    LinkState link;
+    link.program = 42;
+    link.alarmSeq = 3;
+    link.commandSeq = 9;
+    link.commandResult = CommandResult::Applied;
+    InputImage r{};
+    fillInputRegisters(s, link, r);
+    EXPECT_EQ(r[in::kVersion], kProtocolVersion);
+    EXPECT_EQ(r[in::kHeartbeat], 123);
+    EXPECT_EQ(r[in::kState], 6);
+    EXPECT_EQ(r[in::kMode], 1);
+    EXPECT_EQ(r[in::kHomed], 1);
+    EXPECT_EQ(r[in::kBlockN], 0xFFFF);
+    EXPECT_EQ(r[in::kBlockLine], 7);
+    EXPECT_EQ(r[in::kProgram], 42);
+    EXPECT_EQ(joinU32(r[in::kAlarms], r[in::kAlarms + 1]), (1u << 3) | (1u << 4));
+    // Only 3 must be acknowledged; 4 (soft limit) is a warning.
+    EXPECT_EQ(joinU32(r[in::kAlarmsAck], r[in::kAlarmsAck + 1]), 1u << 3);
+    EXPECT_EQ(r[in::kLastAlarm], 3);
+    EXPECT_EQ(r[in::kAlarmSeq], 3);
+    EXPECT_EQ(r[in::kCommandSeq], 9);
+    EXPECT_EQ(r[in::kCommandResult], 1);
+    EXPECT_EQ(joinFloat(r[in::kPosition], r[in::kPosition + 1]), -250.5f);
+    EXPECT_EQ(joinFloat(r[in::kSpeed], r[in::kSpeed + 1]), 12.25f);
+    EXPECT_EQ(joinFloat(r[in::kFeedOverride], r[in::kFeedOverride + 1]), 0.5f);
+}
+
+TEST(DncRegisters, GainsInRangeAccepted) {
+    std::vector<std::uint16_t> v;
+    for (float g : {2.0f, 5.0f, 0.01f}) {
+        const auto w = floatRegs(g);
+        v.insert(v.end(), w.begin(), w.end());
+    }
+    EXPECT_EQ(check(hold::kKp, v), Exception::None);
+    // The classic law's kp range is 0.1..0.5: 2.0 is refused there.
+    EXPECT_EQ(check(hold::kKp, v, LoopLaw::Classic), Exception::IllegalValue);
+}
+
+TEST(DncRegisters, BadValuesRefused) {
+    EXPECT_EQ(check(hold::kKp, floatRegs(50.0f)), Exception::IllegalValue);
+    EXPECT_EQ(check(hold::kKp, floatRegs(std::numeric_limits<float>::quiet_NaN())),
+              Exception::IllegalValue);
+    EXPECT_EQ(check(hold::kKp, {floatRegs(2.0f)[0]}), Exception::IllegalValue);  // half a float
+    EXPECT_EQ(check(hold::kKp + 1, floatRegs(2.0f)), Exception::IllegalValue);   // straddles
+    EXPECT_EQ(check(hold::kFeedOverride, floatRegs(1.6f)), Exception::IllegalValue);
+    EXPECT_EQ(check(hold::kFeedOverride, floatRegs(1.5f)), Exception::None);
+    EXPECT_EQ(check(hold::kCommand, {99}), Exception::IllegalValue);
+    EXPECT_EQ(check(hold::kCommand, {1, 0, 1}), Exception::IllegalValue);  // program 0
+    EXPECT_EQ(check(hold::kCommand, {1, 10000, 1}), Exception::IllegalValue);
+    EXPECT_EQ(check(hold::kCommand, {1, 42, 1}), Exception::None);
+    EXPECT_EQ(check(hold::kDownloadLength, {hold::kDownloadMaxBytes + 1}), Exception::IllegalValue);
+    EXPECT_EQ(check(hold::kDownloadData, {0x4730}), Exception::None);          // "G0"
+    EXPECT_EQ(check(hold::kDownloadData, {0x47FF}), Exception::IllegalValue);  // not ASCII
+}
+
+TEST(DncRegisters, MalformedFramesAndAddresses) {
+    const std::uint8_t shortFrame[] = {0, 1, 0};
+    EXPECT_EQ(decodeHoldingWrite(0x06, shortFrame, sizeof shortFrame).error,
+              Exception::IllegalValue);
+    auto bytes = writeMultiple(0, {1, 2});
+    bytes[4] = 3;  // byte count disagrees
+    EXPECT_EQ(decodeHoldingWrite(0x10, bytes.data(), bytes.size()).error, Exception::IllegalValue);
+    const auto past = writeMultiple(hold::kCount - 1, {0x2020, 0x2020});
+    EXPECT_EQ(decodeHoldingWrite(0x10, past.data(), past.size()).error, Exception::IllegalAddress);
+    EXPECT_FALSE(decodeHoldingWrite(0x03, shortFrame, sizeof shortFrame).isWrite);
+}
+
+}  // namespace
+}  // namespace trilho::dnc
