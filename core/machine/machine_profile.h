@@ -47,7 +47,7 @@ struct LoopGains {
 };
 
 /// The sample periods the rail is proven to home and move at (profile_extremes_test.cpp). At
-/// 10 ms homing from the left already stops 0.1 mm short of the hard stop, and at 12.5 ms the
+/// 10 ms homing from the right already stops 0.1 mm short of the hard stop, and at 12.5 ms the
 /// 4 mm centre vane can be stepped over; the servo thread is not asked for more than 2 kHz.
 inline constexpr double kMinSamplePeriodS = 0.0005;
 inline constexpr double kMaxSamplePeriodS = 0.01;

@@ -89,13 +89,11 @@ void RailController::beginHoming() {
     // not known until the centre mark is crossed: no soft limits during the search.
     servo_.release();
     servo_.setSoftLimitsActive(false);
-    homingPhase_ = (servo_.sample().switches & switch_bits::kCentre) ? HomingPhase::Settle
-                                                                     : HomingPhase::SearchLeft;
-    if (homingPhase_ == HomingPhase::Settle) {
-        // Sitting on the centre vane: leave it to the right first so the search crosses it.
-        homingPhase_ = HomingPhase::SearchRight;
-        leavingCentre_ = true;
-    }
+    // The VB's Automatico_Click drove right first (motor(131)) until any switch, then left
+    // (motor(125)) to the centre when that switch was the right end.
+    homingPhase_ = HomingPhase::SearchRight;
+    // Sitting on the centre vane: leave it to the right first so the search back crosses it.
+    leavingCentre_ = (servo_.sample().switches & switch_bits::kCentre) != 0;
     homingTimeS_ = 0.0;
     stillForS_ = 0.0;
     status_.homed = false;
@@ -113,11 +111,12 @@ void RailController::stepHoming(double dtS) {
     const auto code = [](int offset) { return static_cast<std::uint8_t>(kDacZero + offset); };
     switch (homingPhase_) {
         case HomingPhase::SearchLeft:
-            // Drive left until the centre switch or the left end (the VB's Automatico_Click).
+            // Drive left until the centre switch (the VB's second loop); the left end means
+            // the centre mark was passed unseen.
             if (centre) {
                 homingPhase_ = HomingPhase::CrossLeft;
             } else if (left) {
-                homingPhase_ = HomingPhase::SearchRight;
+                return raiseAlarm(AlarmCode::HomingFailed);
             } else {
                 servo_.setDirect(code(-kHomingSearchCodes));
             }
@@ -138,7 +137,7 @@ void RailController::stepHoming(double dtS) {
             } else if (centre) {
                 homingPhase_ = HomingPhase::CrossRight;
             } else if (right) {
-                return raiseAlarm(AlarmCode::HomingFailed);
+                homingPhase_ = HomingPhase::SearchLeft;  // the platform was right of centre
             } else {
                 servo_.setDirect(code(kHomingSearchCodes));
             }

@@ -429,3 +429,34 @@ int main(int argc, char** argv) {
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
 }
+
+namespace {
+using namespace trilho;
+/// Homes from startMm; the lowest and highest true positions on the way.
+std::pair<double, double> homingSpan(double startMm) {
+    SimSession s(MachineProfile::rail(), 1, startMm);
+    s.controller().selectAutomatic();
+    double lo = startMm, hi = startMm;
+    s.runUntil(
+        [&] {
+            lo = std::min(lo, s.rail().state().positionMm);
+            hi = std::max(hi, s.rail().state().positionMm);
+            return s.controller().status().state != ControllerState::Homing;
+        },
+        120.0);
+    EXPECT_TRUE(s.controller().status().homed);
+    return {lo, hi};
+}
+}  // namespace
+
+TEST(Controller, HomingDrivesRightFirstAsTheVbDid) {
+    // Automatico_Click: motor(131) until any switch, then motor(125) to the centre when that
+    // switch was the right end. From the left the platform never goes further left.
+    const auto [loLeft, hiLeft] = homingSpan(-300.0);
+    EXPECT_GT(loLeft, -300.5);
+    EXPECT_LT(hiLeft, 20.0);  // crosses the vane and settles back
+    // From the right it meets the right end switch first, then comes back to the centre.
+    const auto [loRight, hiRight] = homingSpan(300.0);
+    EXPECT_GT(hiRight, 1270.0);
+    EXPECT_GT(loRight, -20.0);
+}

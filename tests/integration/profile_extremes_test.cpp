@@ -120,8 +120,8 @@ bool unsettledOnly(const Outcome& o) {
     });
 }
 
-/// Both sides of the centre: from the right, homing finds the vane at once; from the left, it
-/// runs onto the left end switch first and turns back. Each from four starts a quarter of a
+/// Both sides of the centre: homing drives right first, as the VB did, so from the left it finds
+/// the vane at once; from the right it runs onto the right end switch first and turns back. Each from four starts a quarter of a
 /// servo period's travel at the homing speed apart, so the switches are met at four phases of
 /// the servo period (a long period may step over the vane, or read the end switch late).
 std::vector<double> starts(const MachineProfile& p, int phases = 4) {
@@ -152,12 +152,12 @@ void expectWorks(const MachineProfile& p, const std::string& what) {
             EXPECT_TRUE(unsettledOnly(o));
             EXPECT_LT(o.overshootMm, 400.0);
         }
-        // Homing from the left runs onto the left end switch on purpose; nothing reaches the
+        // Homing from the right runs onto the right end switch on purpose; nothing reaches the
         // hard stop, and the moves touch no switch.
-        EXPECT_GT(o.minX, -p.plant.hardStopMm);
-        EXPECT_LT(o.maxX, end);
-        if (start > 0) {
-            EXPECT_GT(o.minX, -end);
+        EXPECT_LT(o.maxX, p.plant.hardStopMm);
+        EXPECT_GT(o.minX, -end);
+        if (start < 0) {
+            EXPECT_LT(o.maxX, end);
         }
     }
 }
