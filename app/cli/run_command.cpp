@@ -424,11 +424,7 @@ int runCommand(const QStringList& args) {
 
     const double finalMm = last.servo.positionMm;
     if (options.json) {
-        QJsonObject o;
-        o[QStringLiteral("ok")] = outcome == Outcome::Finished && !report.offTarget;
-        o[QStringLiteral("history")] = QJsonArray::fromStringList(report.history);
-        if (report.omitted) o[QStringLiteral("history_omitted")] = double(report.omitted);
-        o[QStringLiteral("alarms")] = report.alarms;
+        QJsonObject o = runJson(outcome, report);
         o[QStringLiteral("final_position_mm")] = std::round(finalMm * 1e4) / 1e4;
         o[QStringLiteral("axes_mm")] =
             QJsonObject{{QStringLiteral("x"), std::round(finalMm * 1e4) / 1e4}};
@@ -449,21 +445,7 @@ int runCommand(const QStringList& args) {
             text += QStringLiteral("stopped by --max-seconds %1\n").arg(options.maxSeconds);
         out(text);
     }
-    if (!traceOk) {
-        err(QStringLiteral("trilho-cli run: %1\n").arg(trace.error()));
-        if (outcome == Outcome::Finished) return kUsage;
-    }
-    // A program that ended away from where it sent the platform is no success (warning 13).
-    if (outcome == Outcome::Finished && report.offTarget) return kAlarm;
-    switch (outcome) {
-        case Outcome::Finished:
-            return kOk;
-        case Outcome::Alarm:
-            return kAlarm;
-        case Outcome::TimeLimit:
-            return kTimeLimit;
-    }
-    return kOk;
+    return runExitStatus(outcome, report, traceOk, trace);
 }
 
 }  // namespace trilho::cli

@@ -150,4 +150,36 @@ class TraceFile {
     QString path_, error_;
 };
 
+/// The JSON fields every run reports, rail or XY: ok, history (and how many lines were left
+/// out), alarms.
+inline QJsonObject runJson(Outcome outcome, const Report& report) {
+    QJsonObject o;
+    o[QStringLiteral("ok")] = outcome == Outcome::Finished && !report.offTarget;
+    o[QStringLiteral("history")] = QJsonArray::fromStringList(report.history);
+    if (report.omitted) o[QStringLiteral("history_omitted")] = double(report.omitted);
+    o[QStringLiteral("alarms")] = report.alarms;
+    return o;
+}
+
+/// The exit status of a run (README): a trace that could not be written is said after the
+/// run's own report and makes a finished run a usage error; a program that ended away from
+/// where it sent the machine is no success (warning 13).
+inline int runExitStatus(Outcome outcome, const Report& report, bool traceOk,
+                         const TraceFile& trace) {
+    if (!traceOk) {
+        err(QStringLiteral("trilho-cli run: %1\n").arg(trace.error()));
+        if (outcome == Outcome::Finished) return kUsage;
+    }
+    if (outcome == Outcome::Finished && report.offTarget) return kAlarm;
+    switch (outcome) {
+        case Outcome::Finished:
+            return kOk;
+        case Outcome::Alarm:
+            return kAlarm;
+        case Outcome::TimeLimit:
+            return kTimeLimit;
+    }
+    return kOk;
+}
+
 }  // namespace trilho::cli

@@ -130,11 +130,7 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
     const XyStatus last = c.status();
     const double x = last.sample.x.positionMm, y = last.sample.y.positionMm;
     if (options.json) {
-        QJsonObject o;
-        o[QStringLiteral("ok")] = outcome == Outcome::Finished && !report.offTarget;
-        o[QStringLiteral("history")] = QJsonArray::fromStringList(report.history);
-        if (report.omitted) o[QStringLiteral("history_omitted")] = double(report.omitted);
-        o[QStringLiteral("alarms")] = report.alarms;
+        QJsonObject o = runJson(outcome, report);
         o[QStringLiteral("final_position_mm")] = round4(x);
         o[QStringLiteral("axes_mm")] =
             QJsonObject{{QStringLiteral("x"), round4(x)}, {QStringLiteral("y"), round4(y)}};
@@ -161,20 +157,7 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
             text += QStringLiteral("stopped by --max-seconds %1\n").arg(options.maxSeconds);
         out(text);
     }
-    if (!traceOk) {
-        err(QStringLiteral("trilho-cli run: %1\n").arg(trace.error()));
-        if (outcome == Outcome::Finished) return kUsage;
-    }
-    if (outcome == Outcome::Finished && report.offTarget) return kAlarm;
-    switch (outcome) {
-        case Outcome::Finished:
-            return kOk;
-        case Outcome::Alarm:
-            return kAlarm;
-        case Outcome::TimeLimit:
-            return kTimeLimit;
-    }
-    return kOk;
+    return runExitStatus(outcome, report, traceOk, trace);
 }
 
 }  // namespace trilho::cli
