@@ -10,9 +10,6 @@ constexpr int kHomingSearchCodes = 20;    ///< 297 mm/s: the search for the cent
 constexpr double kHomingTimeoutS = 60.0;  ///< longer than a full-length search at that speed
 constexpr double kStillSpeedMmS = 0.5;
 constexpr double kStillTimeS = 0.05;
-/// Status-only blocks run without waiting a period, at most this many a tick: a program's
-/// status lines arrive at the screens at a bounded rate whatever the program does.
-constexpr int kMaxBlocksPerStep = 8;
 }  // namespace
 
 const char* controllerStateName(ControllerState s) {
@@ -321,94 +318,21 @@ bool RailController::start(std::size_t fromIndex) {
     return true;
 }
 
-void RailController::beginBlock() {
-    const Block& b = program_->blocks[pc_];
-    blockStarted_ = true;
-    status_.blockIndex = static_cast<std::int32_t>(pc_);
-    status_.blockN = b.n;
-    status_.blockLine = b.line;
-    status_.modal.apply(b);
-    switch (b.op) {
-        case Op::Rapid:
-            post(EventKind::Rapid, b.n, b.x);
-            // A move of no length is no activity: a cycle of them is a motionless loop.
-            if (std::abs(b.x - servo_.sample().targetMm) > 1e-9 || !haveTarget_)
-                gotosSinceActivity_ = 0;
-            servo_.moveTo(b.x, 1.0);
-            haveTarget_ = true, lastTargetMm_ = b.x;
-            break;
-        case Op::Linear:
-            post(EventKind::Linear, b.n, b.x, b.feed);
-            if (std::abs(b.x - servo_.sample().targetMm) > 1e-9 || !haveTarget_)
-                gotosSinceActivity_ = 0;
-            servo_.moveTo(b.x, b.feed / 100.0);
-            haveTarget_ = true, lastTargetMm_ = b.x;
-            break;
-        case Op::Dwell:
-            if (b.seconds() > 0.0) gotosSinceActivity_ = 0;  // g04 x0 waits for nothing
-            post(EventKind::Dwell, b.n, b.seconds());
-            status_.dwellRemainingS = b.seconds();
-            setState(ControllerState::Waiting);
-            break;
-        case Op::Absolute:
-            post(EventKind::Absolute, b.n), finishBlock();
-            break;
-        case Op::Incremental:
-            post(EventKind::Incremental, b.n), finishBlock();
-            break;
-        case Op::SetZero:
-            post(EventKind::SetZero, b.n, b.zero()), finishBlock();
-            break;
-        case Op::ResetZero:
-            post(EventKind::ResetZero, b.n), finishBlock();
-            break;
-        case Op::Feed:
-            post(EventKind::Feed, b.n, 0.0, b.feed), finishBlock();
-            break;
-        case Op::Stop:
-            gotosSinceActivity_ = 0;
-            post(EventKind::WaitContinue, b.n);
-            status_.pause = PauseReason::M00;
-            setState(ControllerState::Paused);
-            break;
-        case Op::Goto:
-            post(EventKind::Goto, b.n, b.targetN());
-            pc_ = static_cast<std::size_t>(b.targetIndex);
-            blockStarted_ = false;
-            // More gotos than the program has, with no move, dwell or m00 between: one of them
-            // ran twice, so the program cycles without moving or waiting (pigeonhole). Hold it
-            // with a warning rather than spin status lines at the servo rate for ever.
-            if (++gotosSinceActivity_ > gotoBlocks_) {
-                gotosSinceActivity_ = 0;
-                raiseAlarm(AlarmCode::MotionlessLoop);  // says it is held and what to do
-                holdFrom_ = ControllerState::Running;
-                status_.pause = PauseReason::Hold;
-                status_.heldByController = true;
-                setState(ControllerState::Paused);
-            } else if (status_.singleBlock) {
-                status_.pause = PauseReason::SingleBlock;
-                setState(ControllerState::Paused);
-                post(EventKind::SingleBlockWait, b.n);
-            }
-            break;
-        case Op::End:
-            ending_ = true;  // stepEnding() finishes once the platform stands still
-            stillForS_ = 0.0;
-            stillRefMm_ = servo_.sample().positionMm;
-            break;
-    }
+void RailController::startMove(const Block& b) {
+    const double speed = b.op == Op::Rapid ? 1.0 : b.feed / 100.0;
+    if (b.op == Op::Rapid)
+        post(EventKind::Rapid, b.n, b.x);
+    else
+        post(EventKind::Linear, b.n, b.x, b.feed);
+    // A move of no length is no activity: a cycle of them is a motionless loop.
+    if (std::abs(b.x - servo_.sample().targetMm) > 1e-9 || !haveTarget_) gotosSinceActivity_ = 0;
+    servo_.moveTo(b.x, speed);
+    haveTarget_ = true, lastTargetMm_ = b.x;
 }
 
-void RailController::finishBlock() {
-    const Block& b = program_->blocks[pc_];
-    ++pc_;
-    blockStarted_ = false;
-    setState(ControllerState::Running);
-    if (status_.singleBlock) {
-        status_.pause = PauseReason::SingleBlock;
-        setState(ControllerState::Paused);
-        post(EventKind::SingleBlockWait, b.n);
-    }
+void RailController::beginEnding() {
+    stillForS_ = 0.0;
+    stillRefMm_ = servo_.sample().positionMm;
 }
 
 void RailController::stepEnding(double dtS) {
@@ -440,34 +364,6 @@ void RailController::stepEnding(double dtS) {
     status_.blockIndex = -1;
     blockStarted_ = false;
     setState(ControllerState::AutoIdle);
-}
-
-void RailController::stepRunning(double dtS) {
-    if (ending_) return stepEnding(dtS);
-    if (approachFirst_) {
-        if (!servo_.sample().inPosition) return;
-        approachFirst_ = false;
-    }
-    for (int k = 0; k < kMaxBlocksPerStep && status_.state == ControllerState::Running; ++k) {
-        if (ending_) break;
-        if (!blockStarted_) {
-            beginBlock();
-            continue;
-        }
-        const Block& b = program_->blocks[pc_];
-        if (isMotion(b.op) && servo_.sample().inPosition) {
-            finishBlock();
-            continue;
-        }
-        break;  // a move in progress
-    }
-    if (status_.state == ControllerState::Waiting) {
-        status_.dwellRemainingS -= dtS;
-        if (status_.dwellRemainingS <= 1e-12) {
-            status_.dwellRemainingS = 0.0;
-            finishBlock();
-        }
-    }
 }
 
 void RailController::pressContinue() {

@@ -11,22 +11,11 @@
 #include "core/gcode/modal_state.h"
 #include "core/gcode/program.h"
 #include "core/machine/controller_event.h"
+#include "core/machine/controller_state.h"
+#include "core/machine/program_runner.h"
 #include "core/runtime/event_ring.h"
 
 namespace trilho {
-
-enum class ControllerState : std::uint8_t {
-    Manual,    ///< default at start: the operator drives the rail
-    AutoIdle,  ///< automatic, homed, no program running
-    Homing,    ///< going to the centre switch
-    Running,   ///< executing a block (a move, or status blocks)
-    Waiting,   ///< g04 dwell
-    Paused,    ///< m00, an operator hold, or single block
-    Alarm,     ///< an alarm that must be acknowledged stopped the machine
-    EStop,     ///< emergency stop: drive at 0 V until reset
-};
-
-enum class PauseReason : std::uint8_t { None, M00, Hold, SingleBlock };
 
 /// Everything the screens and the command line show; trivially copyable for the seqlock.
 struct ControllerStatus {
@@ -56,7 +45,7 @@ struct ControllerStatus {
     std::uint64_t lastCommandSeq = 0;  ///< the last command applied (echoed by the worker)
 };
 
-class RailController {
+class RailController : private ProgramRunner<RailController> {
   public:
     RailController(const MachineProfile& profile, RailIo& io);
 
@@ -131,10 +120,13 @@ class RailController {
     void checkServoWarnings();
     /// M02: waits for the platform to stand still, then ends (or warns how far it is off).
     void stepEnding(double dtS);
+    // ---- ProgramRunner's hooks (program_runner.h) ----
+    friend class ProgramRunner<RailController>;
+    void startMove(const Block& b);
+    bool moveDone() const { return servo_.sample().inPosition; }
+    void beginEnding();
+    void holdForMotionlessLoop() { status_.heldByController = true; }
     void setState(ControllerState s) { status_.state = s; }
-    void beginBlock();
-    void finishBlock();
-    void stepRunning(double dtS);
     void stepHoming(double dtS);
     void checkServoFault();
     void checkManualLimits();
@@ -145,26 +137,18 @@ class RailController {
     RailServo servo_;
     mutable ControllerStatus status_;
     SpscRing<ControllerEvent, 1024> events_;
-    std::shared_ptr<const Program> program_;
-    std::size_t pc_ = 0;  ///< index of the block being executed
-    bool blockStarted_ = false;
     HomingPhase homingPhase_ = HomingPhase::SearchLeft;
     double homingTimeS_ = 0.0;
     double stillForS_ = 0.0;
     bool jogging_ = false;
     std::size_t pendingStart_ = 0;  ///< start() asked before homing finished
     bool startAfterHoming_ = false;
-    bool approachFirst_ = false;  ///< start-from-block: move to the modal position first
     bool leavingCentre_ = false;  ///< homing began on the centre vane: leave it first
-    ControllerState holdFrom_ = ControllerState::Running;
-    double rejectWindow_ = 0.0;  ///< recent implausible counter reads (decays 10 per s)
+    double rejectWindow_ = 0.0;   ///< recent implausible counter reads (decays 10 per s)
     std::uint32_t lastRejected_ = 0;
     std::uint32_t lastLimitStops_ = 0;
     std::uint32_t lastCorrections_ = 0;
-    std::size_t gotoBlocks_ = 0;          ///< goto blocks in the program
-    std::size_t gotosSinceActivity_ = 0;  ///< gotos run since the last move, dwell or pause
-    bool ending_ = false;                 ///< M02 reached: waiting for the platform to be still
-    bool haveTarget_ = false;             ///< a move of this run set lastTargetMm_
+    bool haveTarget_ = false;  ///< a move of this run set lastTargetMm_
     double lastTargetMm_ = 0.0;
     double stillRefMm_ = 0.0;  ///< position where the platform was last seen still
 };

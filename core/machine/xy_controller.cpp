@@ -5,11 +5,6 @@
 
 namespace trilho {
 
-namespace {
-/// Status-only blocks run without waiting a period, at most this many a tick (as the rail).
-constexpr int kMaxBlocksPerStep = 8;
-}  // namespace
-
 XyController::XyController(const MachineProfile& profile, std::unique_ptr<XyMotion> motion)
     : profile_(profile), motion_(std::move(motion)) {
     status_.sample = motion_->sample();
@@ -160,87 +155,15 @@ void XyController::moveProgram(XyPoint target, XyMove kind, double speedFraction
     haveTarget_ = true, lastTarget_ = target;
 }
 
-void XyController::beginBlock() {
-    const Block& b = program_->blocks[pc_];
-    blockStarted_ = true;
-    status_.blockIndex = static_cast<std::int32_t>(pc_);
-    status_.blockN = b.n;
-    status_.blockLine = b.line;
-    status_.modal.apply(b);
-    switch (b.op) {
-        case Op::Rapid:
-            post(EventKind::Rapid, b.n, b.x, 0.0, AlarmCode::None, yOf(pc_));
-            moveProgram({b.x, yOf(pc_)}, XyMove::Travel, 1.0);
-            break;
-        case Op::Linear:
-            post(EventKind::Linear, b.n, b.x, b.feed, AlarmCode::None, yOf(pc_));
-            moveProgram({b.x, yOf(pc_)}, XyMove::Draw, b.feed / 100.0);
-            break;
-        case Op::Dwell:
-            if (b.seconds() > 0.0) gotosSinceActivity_ = 0;
-            post(EventKind::Dwell, b.n, b.seconds());
-            status_.dwellRemainingS = b.seconds();
-            setState(ControllerState::Waiting);
-            break;
-        case Op::Absolute:
-            post(EventKind::Absolute, b.n), finishBlock();
-            break;
-        case Op::Incremental:
-            post(EventKind::Incremental, b.n), finishBlock();
-            break;
-        case Op::SetZero:
-            post(EventKind::SetZero, b.n, b.zero()), finishBlock();
-            break;
-        case Op::ResetZero:
-            post(EventKind::ResetZero, b.n), finishBlock();
-            break;
-        case Op::Feed:
-            post(EventKind::Feed, b.n, 0.0, b.feed), finishBlock();
-            break;
-        case Op::Stop:
-            gotosSinceActivity_ = 0;
-            post(EventKind::WaitContinue, b.n);
-            status_.pause = PauseReason::M00;
-            setState(ControllerState::Paused);
-            break;
-        case Op::Goto:
-            post(EventKind::Goto, b.n, b.targetN());
-            pc_ = static_cast<std::size_t>(b.targetIndex);
-            blockStarted_ = false;
-            // As the rail: more gotos than the program has with no move, dwell or m00 between
-            // is a cycle that neither moves nor waits; hold it with a warning.
-            if (++gotosSinceActivity_ > gotoBlocks_) {
-                gotosSinceActivity_ = 0;
-                raiseAlarm(AlarmCode::MotionlessLoop);
-                holdFrom_ = ControllerState::Running;
-                status_.pause = PauseReason::Hold;
-                heldByController_ = status_.heldByController = true;
-                setState(ControllerState::Paused);
-            } else if (status_.singleBlock) {
-                status_.pause = PauseReason::SingleBlock;
-                setState(ControllerState::Paused);
-                post(EventKind::SingleBlockWait, b.n);
-            }
-            break;
-        case Op::End:
-            ending_ = true;
-            break;
-    }
+void XyController::startMove(const Block& b) {
+    const bool rapid = b.op == Op::Rapid;
+    post(rapid ? EventKind::Rapid : EventKind::Linear, b.n, b.x, rapid ? 0.0 : b.feed,
+         AlarmCode::None, yOf(pc_));
+    moveProgram({b.x, yOf(pc_)}, rapid ? XyMove::Travel : XyMove::Draw,
+                rapid ? 1.0 : b.feed / 100.0);
 }
 
-void XyController::finishBlock() {
-    const Block& b = program_->blocks[pc_];
-    ++pc_;
-    blockStarted_ = false;
-    setState(ControllerState::Running);
-    if (status_.singleBlock) {
-        status_.pause = PauseReason::SingleBlock;
-        setState(ControllerState::Paused);
-        post(EventKind::SingleBlockWait, b.n);
-    }
-}
-
-void XyController::stepEnding() {
+void XyController::stepEnding(double) {
     if (motion_->busy()) return;  // settling in position
     ending_ = false;
     const XySample s = motion_->sample();
@@ -255,34 +178,6 @@ void XyController::stepEnding() {
     status_.blockIndex = -1;
     blockStarted_ = false;
     setState(ControllerState::AutoIdle);
-}
-
-void XyController::stepRunning(double dtS) {
-    if (ending_) return stepEnding();
-    if (approachFirst_) {
-        if (motion_->busy()) return;
-        approachFirst_ = false;
-    }
-    for (int k = 0; k < kMaxBlocksPerStep && status_.state == ControllerState::Running; ++k) {
-        if (ending_) break;
-        if (!blockStarted_) {
-            beginBlock();
-            continue;
-        }
-        const Block& b = program_->blocks[pc_];
-        if (isMotion(b.op) && !motion_->busy()) {
-            finishBlock();
-            continue;
-        }
-        break;  // a move in progress
-    }
-    if (status_.state == ControllerState::Waiting) {
-        status_.dwellRemainingS -= dtS;
-        if (status_.dwellRemainingS <= 1e-12) {
-            status_.dwellRemainingS = 0.0;
-            finishBlock();
-        }
-    }
 }
 
 void XyController::pressContinue() {

@@ -10,8 +10,9 @@
 #include "core/gcode/modal_state.h"
 #include "core/gcode/program.h"
 #include "core/machine/controller_event.h"
+#include "core/machine/controller_state.h"
 #include "core/machine/machine_profile.h"
-#include "core/machine/rail_controller.h"  // ControllerState, PauseReason
+#include "core/machine/program_runner.h"
 #include "core/machine/xy_motion.h"
 #include "core/runtime/event_ring.h"
 
@@ -43,7 +44,7 @@ struct XyStatus {
     bool motionBusy = false;        ///< a move or homing is under way (also a manual one)
 };
 
-class XyController {
+class XyController : private ProgramRunner<XyController> {
   public:
     XyController(const MachineProfile& profile, std::unique_ptr<XyMotion> motion);
 
@@ -89,34 +90,29 @@ class XyController {
     std::unique_ptr<XyMotion> motion_;
     mutable XyStatus status_;
     SpscRing<ControllerEvent, 1024> events_;
-    std::shared_ptr<const Program> program_;
 
     void post(EventKind kind, std::int32_t n = -1, double x = 0.0, double feed = 0.0,
               AlarmCode alarm = AlarmCode::None, double value = 0.0);
     void setState(ControllerState s) { status_.state = s; }
     void beginHoming();
-    void beginBlock();
-    void finishBlock();
-    void stepRunning(double dtS);
-    void stepEnding();
+    // ---- ProgramRunner's hooks (program_runner.h) ----
+    friend class ProgramRunner<XyController>;
+    void startMove(const Block& b);
+    bool moveDone() const { return !motion_->busy(); }
+    void beginEnding() {}
+    void stepEnding(double dtS);
+    void holdForMotionlessLoop() { heldByController_ = status_.heldByController = true; }
     void checkMotionFault();
     void abandonRun();
     /// Starts a move of the program (targets from the compiled blocks, mm).
     void moveProgram(XyPoint target, XyMove kind, double speedFraction);
     double yOf(std::size_t index) const;
 
-    std::size_t pc_ = 0;  ///< index of the block being executed
-    bool blockStarted_ = false;
     bool startAfterHoming_ = false;
     std::size_t pendingStart_ = 0;
-    bool approachFirst_ = false;  ///< go to where the program starts (or the start block) first
     XyPoint startPoint_;
-    ControllerState holdFrom_ = ControllerState::Running;
     bool heldByController_ = false;
     bool linkHeld_ = false;  ///< the run is held for a failed device link (alarm 20)
-    std::size_t gotoBlocks_ = 0;
-    std::size_t gotosSinceActivity_ = 0;
-    bool ending_ = false;
     bool haveTarget_ = false;
     XyPoint lastTarget_;
     ControllerState modeBeforeAlarm_ = ControllerState::Manual;

@@ -1,0 +1,160 @@
+#pragma once
+// gcode.md's interpreter table, once, for every machine: which block runs next, what each kind
+// of block does to the run (status blocks finish at once, m00 waits for Continue, m03 jumps,
+// g04 waits, m02 ends, single block pauses after each), and the motionless-loop guard. The
+// machine's controller (RailController, XyController) supplies the moves and the ending
+// through CRTP hooks, so the rail and the XY tables cannot drift apart:
+//   d.status_            state, pause, blockIndex/N/Line, modal, singleBlock, dwellRemainingS
+//   d.post(kind, n, x, feed)   an event; d.setState(s); d.raiseAlarm(code)
+//   d.startMove(block)   posts the move's event and starts it (resetting the loop guard when it
+//                        really moves); d.moveDone(): the move has ended, in position
+//   d.beginEnding(); d.stepEnding(dtS)   m02: wait for the machine to stand still, then end
+//   d.holdForMotionlessLoop()   marks the hold as the controller's own
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+
+#include "core/gcode/program.h"
+#include "core/machine/controller_event.h"
+#include "core/machine/controller_state.h"
+
+namespace trilho {
+
+template <typename Derived>
+class ProgramRunner {
+  protected:
+    /// Blocks that take no time (status blocks, gotos) run at most this many per period, so a
+    /// program of them cannot stall the servo thread.
+    static constexpr int kMaxBlocksPerStep = 8;
+
+    void beginBlock();
+    void finishBlock();
+    /// One period of a running program: starts and finishes blocks, counts a dwell down.
+    void stepRunning(double dtS);
+
+    std::shared_ptr<const Program> program_;
+    std::size_t pc_ = 0;  ///< index of the block being executed
+    bool blockStarted_ = false;
+    bool approachFirst_ = false;          ///< start-from-block: move to the modal position first
+    bool ending_ = false;                 ///< m02 reached: waiting for the machine to stand still
+    std::size_t gotoBlocks_ = 0;          ///< goto blocks in the program
+    std::size_t gotosSinceActivity_ = 0;  ///< gotos run since the last move, dwell or pause
+    ControllerState holdFrom_ = ControllerState::Running;
+
+  private:
+    Derived& d() { return static_cast<Derived&>(*this); }
+};
+
+template <typename Derived>
+void ProgramRunner<Derived>::beginBlock() {
+    auto& status = d().status_;
+    const Block& b = program_->blocks[pc_];
+    blockStarted_ = true;
+    status.blockIndex = static_cast<std::int32_t>(pc_);
+    status.blockN = b.n;
+    status.blockLine = b.line;
+    status.modal.apply(b);
+    switch (b.op) {
+        case Op::Rapid:
+        case Op::Linear:
+            d().startMove(b);
+            break;
+        case Op::Dwell:
+            if (b.seconds() > 0.0) gotosSinceActivity_ = 0;  // g04 x0 waits for nothing
+            d().post(EventKind::Dwell, b.n, b.seconds());
+            status.dwellRemainingS = b.seconds();
+            d().setState(ControllerState::Waiting);
+            break;
+        case Op::Absolute:
+            d().post(EventKind::Absolute, b.n), finishBlock();
+            break;
+        case Op::Incremental:
+            d().post(EventKind::Incremental, b.n), finishBlock();
+            break;
+        case Op::SetZero:
+            d().post(EventKind::SetZero, b.n, b.zero()), finishBlock();
+            break;
+        case Op::ResetZero:
+            d().post(EventKind::ResetZero, b.n), finishBlock();
+            break;
+        case Op::Feed:
+            d().post(EventKind::Feed, b.n, 0.0, b.feed), finishBlock();
+            break;
+        case Op::Stop:
+            gotosSinceActivity_ = 0;
+            d().post(EventKind::WaitContinue, b.n);
+            status.pause = PauseReason::M00;
+            d().setState(ControllerState::Paused);
+            break;
+        case Op::Goto:
+            d().post(EventKind::Goto, b.n, b.targetN());
+            pc_ = static_cast<std::size_t>(b.targetIndex);
+            blockStarted_ = false;
+            // More gotos than the program has, with no move, dwell or m00 between: one of them
+            // ran twice, so the program cycles without moving or waiting (pigeonhole). Hold it
+            // with a warning rather than spin status lines at the servo rate for ever.
+            if (++gotosSinceActivity_ > gotoBlocks_) {
+                gotosSinceActivity_ = 0;
+                d().raiseAlarm(AlarmCode::MotionlessLoop);  // says it is held and what to do
+                holdFrom_ = ControllerState::Running;
+                status.pause = PauseReason::Hold;
+                d().holdForMotionlessLoop();
+                d().setState(ControllerState::Paused);
+            } else if (status.singleBlock) {
+                status.pause = PauseReason::SingleBlock;
+                d().setState(ControllerState::Paused);
+                d().post(EventKind::SingleBlockWait, b.n);
+            }
+            break;
+        case Op::End:
+            ending_ = true;  // stepEnding() finishes once the machine stands still
+            d().beginEnding();
+            break;
+    }
+}
+
+template <typename Derived>
+void ProgramRunner<Derived>::finishBlock() {
+    auto& status = d().status_;
+    const Block& b = program_->blocks[pc_];
+    ++pc_;
+    blockStarted_ = false;
+    d().setState(ControllerState::Running);
+    if (status.singleBlock) {
+        status.pause = PauseReason::SingleBlock;
+        d().setState(ControllerState::Paused);
+        d().post(EventKind::SingleBlockWait, b.n);
+    }
+}
+
+template <typename Derived>
+void ProgramRunner<Derived>::stepRunning(double dtS) {
+    auto& status = d().status_;
+    if (ending_) return d().stepEnding(dtS);
+    if (approachFirst_) {
+        if (!d().moveDone()) return;
+        approachFirst_ = false;
+    }
+    for (int k = 0; k < kMaxBlocksPerStep && status.state == ControllerState::Running; ++k) {
+        if (ending_) break;
+        if (!blockStarted_) {
+            beginBlock();
+            continue;
+        }
+        const Block& b = program_->blocks[pc_];
+        if (isMotion(b.op) && d().moveDone()) {
+            finishBlock();
+            continue;
+        }
+        break;  // a move in progress
+    }
+    if (status.state == ControllerState::Waiting) {
+        status.dwellRemainingS -= dtS;
+        if (status.dwellRemainingS <= 1e-12) {
+            status.dwellRemainingS = 0.0;
+            finishBlock();
+        }
+    }
+}
+
+}  // namespace trilho
