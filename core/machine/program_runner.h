@@ -10,6 +10,7 @@
 //                        really moves); d.moveDone(): the move has ended, in position
 //   d.beginEnding(); d.stepEnding(dtS)   m02: wait for the machine to stand still, then end
 //   d.holdForMotionlessLoop()   marks the hold as the controller's own
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -31,6 +32,12 @@ class ProgramRunner {
     void finishBlock();
     /// One period of a running program: starts and finishes blocks, counts a dwell down.
     void stepRunning(double dtS);
+    /// Continue: after an m00 the next block, after a single block the next one, after a hold
+    /// d.resume().
+    void pressContinue();
+    /// m02 with the machine at rest offMm (>= 0) from its last target: ends the program, or
+    /// says how far off it ended when that is outside windowMm (warning 13).
+    void endProgram(double offMm, double windowMm);
 
     std::shared_ptr<const Program> program_;
     std::size_t pc_ = 0;  ///< index of the block being executed
@@ -155,6 +162,37 @@ void ProgramRunner<Derived>::stepRunning(double dtS) {
             finishBlock();
         }
     }
+}
+
+template <typename Derived>
+void ProgramRunner<Derived>::pressContinue() {
+    auto& status = d().status_;
+    if (status.state != ControllerState::Paused) return;
+    if (status.pause == PauseReason::M00) {
+        d().post(EventKind::ContinuePressed);
+        status.pause = PauseReason::None;
+        finishBlock();
+    } else if (status.pause == PauseReason::SingleBlock) {
+        status.pause = PauseReason::None;
+        d().setState(ControllerState::Running);
+    } else {
+        d().resume();
+    }
+}
+
+template <typename Derived>
+void ProgramRunner<Derived>::endProgram(double offMm, double windowMm) {
+    auto& status = d().status_;
+    // A program never reports success with the machine away from where it sent it: it says how
+    // far instead.
+    if (std::abs(offMm) > windowMm)
+        d().raiseAlarm(AlarmCode::FinalPositionOff, offMm);
+    else
+        d().post(EventKind::ProgramEnd);
+    status.programFinished = true;
+    status.blockIndex = -1;
+    blockStarted_ = false;
+    d().setState(ControllerState::AutoIdle);
 }
 
 }  // namespace trilho

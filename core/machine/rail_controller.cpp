@@ -356,28 +356,7 @@ void RailController::stepEnding(double dtS) {
     // A program never reports success with the platform away from where it sent it (the
     // classic law releases the drive at 0.5 mm and may coast on): it says how far instead.
     const double off = haveTarget_ ? s.positionMm - lastTargetMm_ : 0.0;
-    if (std::abs(off) > profile().loop.finalPositionWindowMm)
-        raiseAlarm(AlarmCode::FinalPositionOff, off);
-    else
-        post(EventKind::ProgramEnd);
-    status_.programFinished = true;
-    status_.blockIndex = -1;
-    blockStarted_ = false;
-    setState(ControllerState::AutoIdle);
-}
-
-void RailController::pressContinue() {
-    if (status_.state != ControllerState::Paused) return;
-    if (status_.pause == PauseReason::M00) {
-        post(EventKind::ContinuePressed);
-        status_.pause = PauseReason::None;
-        finishBlock();
-    } else if (status_.pause == PauseReason::SingleBlock) {
-        status_.pause = PauseReason::None;
-        setState(ControllerState::Running);
-    } else {
-        resume();
-    }
+    endProgram(off, profile().loop.finalPositionWindowMm);
 }
 
 void RailController::hold() {

@@ -86,7 +86,7 @@ class RailController : private ProgramRunner<RailController> {
     bool loadProgram(std::shared_ptr<const Program> program);
     /// Runs from block `fromIndex` (0: the whole program) with the modal state rebuilt.
     bool start(std::size_t fromIndex = 0);
-    void pressContinue();
+    using ProgramRunner<RailController>::pressContinue;
     void hold();  ///< controlled stop, then paused; resume() goes on
     void resume();
     void stop();  ///< controlled stop, program abandoned

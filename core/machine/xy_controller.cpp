@@ -170,28 +170,7 @@ void XyController::stepEnding(double) {
     const double off =
         haveTarget_ ? std::hypot(s.x.positionMm - lastTarget_.x, s.y.positionMm - lastTarget_.y)
                     : 0.0;
-    if (off > profile_.loop.finalPositionWindowMm)
-        raiseAlarm(AlarmCode::FinalPositionOff, off);
-    else
-        post(EventKind::ProgramEnd);
-    status_.programFinished = true;
-    status_.blockIndex = -1;
-    blockStarted_ = false;
-    setState(ControllerState::AutoIdle);
-}
-
-void XyController::pressContinue() {
-    if (status_.state != ControllerState::Paused) return;
-    if (status_.pause == PauseReason::M00) {
-        post(EventKind::ContinuePressed);
-        status_.pause = PauseReason::None;
-        finishBlock();
-    } else if (status_.pause == PauseReason::SingleBlock) {
-        status_.pause = PauseReason::None;
-        setState(ControllerState::Running);
-    } else {
-        resume();
-    }
+    endProgram(off, profile_.loop.finalPositionWindowMm);
 }
 
 void XyController::hold() {

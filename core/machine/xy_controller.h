@@ -72,7 +72,7 @@ class XyController : private ProgramRunner<XyController> {
     // ---- automatic ----
     bool loadProgram(std::shared_ptr<const Program> program);
     bool start(std::size_t fromIndex = 0);
-    void pressContinue();
+    using ProgramRunner<XyController>::pressContinue;
     void hold();
     void resume();
     void stop();
