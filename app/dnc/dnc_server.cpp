@@ -22,7 +22,10 @@ class Served : public Base {
 
   protected:
     QModbusResponse processRequest(const QModbusPdu& request) override {
-        const QString client = client_.isEmpty() ? dnc_.tcpClients() : client_;
+        // Qt's TCP server calls this from its slot on the client socket's readyRead (with
+        // the server as the context object), so sender() is the socket that sent the request.
+        QString client = client_;
+        if (client.isEmpty()) client = dnc_.peerName(qobject_cast<QTcpSocket*>(this->sender()));
         return dnc_.handle(
             request, *this, [this](const QModbusPdu& p) { return Base::processRequest(p); },
             client);
@@ -94,7 +97,6 @@ bool DncServer::listenTcp(const QString& host, quint16 port, QString* error) {
     srv->setConnectionParameter(QModbusDevice::NetworkAddressParameter, host);
     srv->setConnectionParameter(QModbusDevice::NetworkPortParameter, port);
     srv->setServerAddress(1);
-    srv->setMap(registerMap());
     srv->installConnectionObserver(new PeerObserver([this](QTcpSocket* s) {
         peers_.insert(s, QStringLiteral("%1:%2")
                              .arg(QHostAddress(s->peerAddress().toIPv4Address()).toString())
@@ -107,8 +109,7 @@ bool DncServer::listenTcp(const QString& host, quint16 port, QString* error) {
         delete srv;
         return false;
     }
-    servers_.push_back(srv);
-    publish(*srv);
+    adopt(srv);
     return true;
 }
 
@@ -120,20 +121,32 @@ bool DncServer::listenRtu(const QString& device, int baud, int unitId, QString* 
     srv->setConnectionParameter(QModbusDevice::SerialParityParameter, QSerialPort::NoParity);
     srv->setConnectionParameter(QModbusDevice::SerialStopBitsParameter, QSerialPort::OneStop);
     srv->setServerAddress(unitId);
-    srv->setMap(registerMap());
     if (!srv->connectDevice() || srv->state() != QModbusDevice::ConnectedState) {
         if (error) *error = srv->errorString();
         delete srv;
         return false;
     }
-    servers_.push_back(srv);
-    publish(*srv);
+    adopt(srv);
     return true;
+}
+
+void DncServer::adopt(QModbusServer* server) {
+    server->setMap(registerMap());
+    servers_.push_back(server);
+    publish(*server);
 }
 
 void DncServer::setRemote(bool on) {
     link_.remote = on;
     refresh();
+}
+
+QString DncServer::peerName(QTcpSocket* socket) const {
+    if (socket) {
+        const auto it = peers_.constFind(socket);
+        if (it != peers_.constEnd()) return *it;
+    }
+    return tcpClients();
 }
 
 QString DncServer::tcpClients() const {
@@ -178,9 +191,10 @@ QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& serv
     publish(server);
     const auto fc = request.functionCode();
     const QByteArray data = request.data();
-    const WriteDecode d = decodeHoldingWrite(
-        static_cast<std::uint8_t>(fc), reinterpret_cast<const std::uint8_t*>(data.constData()),
-        static_cast<std::size_t>(data.size()));
+    const auto* bytes = reinterpret_cast<const std::uint8_t*>(data.constData());
+    const auto size = static_cast<std::size_t>(data.size());
+    if (fc == QModbusPdu::ReadFileRecord) return readFile(fc, bytes, size);
+    const WriteDecode d = decodeHoldingWrite(static_cast<std::uint8_t>(fc), bytes, size);
     const bool writes = d.isWrite || fc == QModbusPdu::WriteSingleCoil ||
                         fc == QModbusPdu::WriteMultipleCoils || fc == QModbusPdu::WriteFileRecord ||
                         fc == QModbusPdu::MaskWriteRegister;
@@ -191,7 +205,8 @@ QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& serv
                              .arg(client));
         return QModbusExceptionResponse(fc, QModbusPdu::IllegalFunction);
     }
-    if (!d.isWrite) return base(request);  // coils, files: none in the map (an exception)
+    if (fc == QModbusPdu::WriteFileRecord) return writeFile(request, bytes, size, client);
+    if (!d.isWrite) return base(request);  // coils: none in the map (an exception)
     Exception e = d.error;
     if (e == Exception::None) e = checkHoldingWrite(d.write, holding_, machine_.snapshot().law);
     if (e != Exception::None) {
@@ -212,6 +227,54 @@ QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& serv
     for (QModbusServer* s : servers_)
         publish(*s);
     return response;
+}
+
+QModbusResponse DncServer::readFile(QModbusPdu::FunctionCode fc, const std::uint8_t* data,
+                                    std::size_t size) {
+    const FileRecordDecode d = decodeReadFileRecord(data, size);
+    if (d.error != Exception::None) return QModbusExceptionResponse(fc, toQt(d.error));
+    const FileReadResult r =
+        readFileRecords(d.refs, [this](std::uint16_t file) -> std::optional<std::vector<uint8_t>> {
+            const auto text = library_.read(file, kMaxFileBytes);
+            if (!text) return std::nullopt;
+            return std::vector<std::uint8_t>(text->begin(), text->end());
+        });
+    if (r.error != Exception::None) return QModbusExceptionResponse(fc, toQt(r.error));
+    return QModbusResponse(fc, QByteArray(reinterpret_cast<const char*>(r.response.data()),
+                                          static_cast<qsizetype>(r.response.size())));
+}
+
+QModbusResponse DncServer::writeFile(const QModbusPdu& request, const std::uint8_t* data,
+                                     std::size_t size, const QString& client) {
+    const auto fc = request.functionCode();
+    const FileRecordDecode d = decodeWriteFileRecord(data, size);
+    FileWritePlan plan;
+    if (d.error == Exception::None) plan = fileWriteAsHolding(d.refs);
+    Exception e = d.error != Exception::None ? d.error : plan.error;
+    // Checked one after the other on a copy, so a bad sub-request changes nothing at all.
+    HoldingImage after = holding_;
+    const LoopLaw law = machine_.snapshot().law;
+    for (const HoldingWrite& w : plan.writes) {
+        if (e != Exception::None) break;
+        e = checkHoldingWrite(w, after, law);
+        std::copy(w.values.begin(), w.values.end(), after.begin() + w.start);
+    }
+    if (e != Exception::None) {
+        emit historyLine(QStringLiteral("DNC: file record write refused (%1) from %2")
+                             .arg(e == Exception::IllegalAddress ? QStringLiteral("address")
+                                                                 : QStringLiteral("bad value"),
+                                  client));
+        return QModbusExceptionResponse(fc, toQt(e));
+    }
+    holding_ = after;
+    // The download block as clients read it with function 03.
+    QModbusDataUnit block(QModbusDataUnit::HoldingRegisters, hold::kDownloadNumber,
+                          hold::kCount - hold::kDownloadNumber);
+    for (std::uint16_t i = hold::kDownloadNumber; i < hold::kCount; ++i)
+        block.setValue(i - hold::kDownloadNumber, holding_[i]);
+    for (QModbusServer* s : servers_)
+        s->setData(block);
+    return QModbusResponse(fc, request.data());  // function 21 answers with its request
 }
 
 void DncServer::applyWrite(const HoldingWrite& w) {

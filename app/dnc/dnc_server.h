@@ -6,6 +6,7 @@
 // operator's consent (setRemote); reading is always allowed.
 #include <QHash>
 #include <QHostAddress>
+#include <QModbusPdu>
 #include <QObject>
 #include <QTimer>
 #include <memory>
@@ -13,12 +14,11 @@
 
 #include "app/dnc/dnc_machine.h"
 #include "app/dnc/program_library.h"
+#include "core/dnc/file_records.h"
 #include "core/dnc/status_registers.h"
 #include "core/dnc/write_check.h"
 
 class QModbusServer;
-class QModbusPdu;
-class QModbusResponse;
 class QTcpSocket;
 
 namespace trilho::dnc {
@@ -33,6 +33,9 @@ class DncServer : public QObject {
     bool listenTcp(const QString& host, quint16 port, QString* error);
     /// Serves unit `unitId` on a serial line (Modbus RTU), 8N1.
     bool listenRtu(const QString& device, int baud, int unitId, QString* error);
+    /// Serves the map through a Modbus server made elsewhere (the fuzz target's, unconnected);
+    /// the server must outlive this object or be its child.
+    void adopt(QModbusServer* server);
     void setRemote(bool on);
     bool remote() const { return link_.remote; }
 
@@ -43,6 +46,8 @@ class DncServer : public QObject {
                            const QString& client);
     /// Peers connected over TCP ("127.0.0.1:50412"), for the history line of a refused write.
     QString tcpClients() const;
+    /// The peer of that socket ("127.0.0.1:50412"); all peers when it is not known.
+    QString peerName(QTcpSocket* socket) const;
 
   signals:
     /// A line for the history (history lines of the controller, and the link's own).
@@ -52,6 +57,11 @@ class DncServer : public QObject {
     void refresh();
     void publish(QModbusServer& server);
     void applyWrite(const HoldingWrite& w);
+    /// Functions 20 (a stored program) and 21 (into the download block): file_records.h.
+    QModbusResponse readFile(QModbusPdu::FunctionCode fc, const std::uint8_t* data,
+                             std::size_t size);
+    QModbusResponse writeFile(const QModbusPdu& request, const std::uint8_t* data, std::size_t size,
+                              const QString& client);
     void runCommand(Command c, std::uint16_t argument, std::uint16_t seq);
     void finishCommand(std::uint16_t seq, CommandResult r, std::optional<Ticket> ticket = {});
     void noteDiagnostics(int number, const Program& p);

@@ -19,6 +19,12 @@ std::shared_ptr<const Program> ProgramLibrary::compileText(const QByteArray& sou
         std::string_view(source.constData(), static_cast<std::size_t>(source.size())), options_));
 }
 
+std::optional<QByteArray> ProgramLibrary::read(int number, qint64 maxBytes) const {
+    QFile f(pathOf(number));
+    if (!f.open(QIODevice::ReadOnly)) return std::nullopt;
+    return f.read(maxBytes);
+}
+
 std::optional<std::shared_ptr<const Program>> ProgramLibrary::load(int number,
                                                                    QString* error) const {
     QFile f(pathOf(number));

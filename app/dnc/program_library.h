@@ -21,6 +21,8 @@ class ProgramLibrary {
     bool exists(int number) const;
     /// Reads and compiles program `number`; nullopt when there is no such file.
     std::optional<std::shared_ptr<const Program>> load(int number, QString* error) const;
+    /// The stored text of program `number`, at most maxBytes of it; nullopt when missing.
+    std::optional<QByteArray> read(int number, qint64 maxBytes) const;
     std::shared_ptr<const Program> compileText(const QByteArray& source) const;
     /// Writes the source atomically (the folder is created when missing).
     bool save(int number, const QByteArray& source, QString* error) const;

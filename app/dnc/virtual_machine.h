@@ -31,9 +31,10 @@ class VirtualMachine final : public QObject, public DncMachine {
     }
     const MachineProfile& profile() const override { return profile_; }
 
-  private:
+    /// periodsPerTick servo periods; the timer calls it each millisecond (the fuzz target too).
     void tick();
 
+  private:
     MachineProfile profile_;
     mutable SimSession session_;
     QTimer timer_;

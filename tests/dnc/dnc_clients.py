@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The DNC link against real Modbus clients (issue 13): pymodbus and mbpoll talk to
 `trilho-cli serve --virtual-time` on 127.0.0.1. Usage: dnc_clients.py CLI {pymodbus,mbpoll,
-refused,alarm}. Exits 77 (ctest SKIP_RETURN_CODE) when the client is not installed.
+refused,alarm,files,rtu}. Exits 77 (ctest SKIP_RETURN_CODE) when the client is not installed.
 Every wait is on a condition with a deadline, never a fixed sleep."""
 import os
 import shutil
@@ -94,6 +94,8 @@ class Py:
         from pymodbus.client import ModbusTcpClient
         self.c = ModbusTcpClient("127.0.0.1", port=port, timeout=5)
         assert self.c.connect()
+        # This client's own address, as the server's history line must name it.
+        self.peer = "%s:%d" % self.c.socket.getsockname()[:2]
         self.seq = 100
 
     def ir(self, addr, count=1):
@@ -230,16 +232,165 @@ def run_refused(cli):
         srv = Server(cli, programs, remote=False)
         try:
             p = Py(srv.port)
+            other = Py(srv.port)  # a second client, so the line must name the sender, not "one of"
+            check(other.ir(IN_VERSION)[0] == 1, "a second client connected")
             check(p.ir(IN_VERSION)[0] == 1 and p.ir(IN_REMOTE)[0] == 0, "reads allowed, remote 0")
             kp = p.hr(H_KP, 2)
             check(p.exc(p.write(H_KP, regs_of(2.0))) == 1, "gains write refused (illegal function)")
             check(p.exc(p.write(H_COMMAND, [AUTO, 0, 1])) == 1, "command refused")
             check(p.hr(H_KP, 2) == kp and p.state() == MANUAL, "nothing changed")
             p.c.close()
+            other.c.close()
         finally:
             rc, out = srv.stop()
-        check("write refused (Remote is off)" in out and "127.0.0.1:" in out,
-              "history line names the client")
+        check(f"write refused (Remote is off): function 16 from {p.peer}\n" in out,
+              f"history line names the client that wrote ({p.peer}), of two")
+
+
+# ---------------------------------------------------------------- file records (20, 21)
+def file_write(p, number, text):
+    """Function 21: file N record 0 = length, records 1.. = the text (two bytes each)."""
+    from pymodbus.file_message import FileRecord, WriteFileRecordRequest
+    data = text.encode("ascii")
+    padded = data + (b"\0" if len(data) % 2 else b"")
+    body = struct.pack(">H", len(data)) + padded
+    # At most 120 records a request (the PDU holds 253 bytes).
+    for rec in range(0, len(body) // 2, 120):
+        chunk = body[2 * rec:2 * rec + 240]
+        r = p.c.execute(WriteFileRecordRequest(
+            records=[FileRecord(file_number=number, record_number=rec, record_data=chunk)], unit=1))
+        if r.isError():
+            return r
+    return r
+
+
+def file_read(p, number, record, length):
+    from pymodbus.file_message import FileRecord, ReadFileRecordRequest
+    return p.c.execute(ReadFileRecordRequest(
+        records=[FileRecord(file_number=number, record_number=record, record_length=length)],
+        unit=1))
+
+
+def file_read_text(p, number):
+    r = file_read(p, number, 0, 1)
+    if r.isError():
+        return r
+    n = struct.unpack(">H", r.records[0].record_data)[0]
+    data = b""
+    for rec in range(1, (n + 1) // 2 + 1, 120):
+        r = file_read(p, number, rec, min(120, (n + 1) // 2 + 1 - rec))
+        if r.isError():
+            return r
+        data += r.records[0].record_data
+    return data[:n].decode("ascii")
+
+
+def run_files(cli):
+    # Longer than one request (about 1.4 KB), so the records span several requests.
+    text = PROGRAM.replace("N0040 M02\n", "") + "".join(
+        f"N{n:04d} G01 X{(n % 7) * 10:04d} F050 ( record test line )\n" for n in range(50, 1000, 20)
+    ) + "N9990 M02\n"
+    with tempfile.TemporaryDirectory() as programs:
+        srv = Server(cli, programs)
+        try:
+            p = Py(srv.port)
+            r = file_write(p, 77, text)
+            check(not r.isError(), f"function 21 writes program 77 ({len(text)} bytes)")
+            dl = p.hr(H_DL_NUMBER, 2)
+            check(dl == [77, len(text)], f"it lands in the download block (holding 16, 17 = {dl})")
+            check(p.exc(file_read(p, 77, 0, 1)) == 2, "not readable before it is committed (02)")
+            check(p.command(COMMIT, 77) == APPLIED, "command 8 compiles and saves 0077.G")
+            with open(os.path.join(programs, "0077.G")) as f:
+                check(f.read() == text, "0077.G holds exactly the text written")
+            check(file_read_text(p, 77) == text, "function 20 reads it back whole")
+            r = file_read(p, 77, 0, 3)
+            check(not r.isError() and r.records[0].record_data[:2] == struct.pack(">H", len(text))
+                  and r.records[0].record_data[2:] == text[:4].encode(), "record 0 = length, 1.. = text")
+            # Refusals: past the end, no such program, file 0, a non-ASCII byte; nothing changes.
+            last = (len(text) + 1) // 2
+            check(p.exc(file_read(p, 77, last, 2)) == 2, "a record past the end: exception 02")
+            check(p.exc(file_read(p, 9999, 0, 1)) == 2, "no program 9999: exception 02")
+            check(p.exc(file_read(p, 0, 0, 1)) == 2, "file 0: exception 02")
+            from pymodbus.file_message import FileRecord, WriteFileRecordRequest
+            r = p.c.execute(WriteFileRecordRequest(records=[FileRecord(
+                file_number=78, record_number=1, record_data=b"G\xff")], unit=1))
+            check(p.exc(r) == 3, "a non-ASCII byte: exception 03")
+            check(p.hr(H_DL_NUMBER, 1) == [77], "and the block is unchanged")
+            r = p.c.execute(WriteFileRecordRequest(records=[FileRecord(
+                file_number=78, record_number=4096, record_data=b"G0G0")], unit=1))
+            check(p.exc(r) == 2, "past the download block: exception 02")
+            # A program with errors is not saved, and its diagnostics are readable.
+            check(not file_write(p, 79, BAD_PROGRAM).isError(), "a bad program is written")
+            check(p.command(COMMIT, 79) == COMPILE_ERRORS, "and refused on commit")
+            check(p.ir(IN_DIAG_ERRORS)[0] >= 1 and p.ir(IN_DIAG_LINE)[0] == 2,
+                  "its first error is on line 2")
+            check(not os.path.exists(os.path.join(programs, "0079.G")), "0079.G not written")
+            # Run the one downloaded by file records, by number.
+            check(p.command(START, 77) == APPLIED, "program 77 started by number")
+            wait_for(lambda: p.ir(IN_PROGRAM)[0] == 77 and p.state() in (RUNNING, WAITING, PAUSED, HOMING),
+                     "program 77 running")
+            check(p.command(STOP) == APPLIED, "stopped")
+            p.c.close()
+        finally:
+            srv.stop()
+
+
+# ---------------------------------------------------------------- RTU over a pty pair
+def run_rtu(cli):
+    if not shutil.which("socat"):
+        print("socat not installed: skipped (scripts/deps.sh installs it)")
+        raise SystemExit(77)
+    from pymodbus.client import ModbusSerialClient
+    with tempfile.TemporaryDirectory() as d:
+        a, b = os.path.join(d, "machine"), os.path.join(d, "supervisor")
+        link = subprocess.Popen(["socat", f"pty,raw,echo=0,link={a}", f"pty,raw,echo=0,link={b}"],
+                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        programs = os.path.join(d, "programs")
+        os.mkdir(programs)
+        try:
+            deadline = time.monotonic() + 10
+            while not (os.path.exists(a) and os.path.exists(b)) and time.monotonic() < deadline:
+                time.sleep(0.01)  # polling for socat's links, not a synchronisation
+            check(os.path.exists(a) and os.path.exists(b), "socat made the pty pair")
+            srv = subprocess.Popen([cli, "serve", "--virtual-time", "--remote", "--modbus-tcp",
+                                    f"127.0.0.1:{free_port()}", "--modbus-rtu", a, "--baud",
+                                    "19200", "--unit", "7", "--programs", programs],
+                                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+            lines = []
+            while time.monotonic() < deadline + 10:
+                line = srv.stdout.readline()
+                if not line:
+                    break
+                lines.append(line)
+                if "Modbus RTU on" in line:
+                    break
+            check(any("Modbus RTU on" in x for x in lines), "serve listens on the pty: " + "".join(lines).strip())
+            c = ModbusSerialClient(b, baudrate=19200, timeout=2)
+            check(c.connect(), "pymodbus opens the other end")
+            r = c.read_input_registers(IN_VERSION, IN_COUNT, slave=7)
+            check(not r.isError() and r.registers[IN_VERSION] == 1 and r.registers[IN_STATE] == MANUAL,
+                  "RTU: status block read from unit 7")
+            r = c.read_input_registers(IN_VERSION, 1, slave=8)
+            check(r.isError(), "unit 8 does not answer (another machine on the bus)")
+            r = c.write_registers(H_COMMAND, [AUTO, 0, 9], slave=7)
+            check(not r.isError(), "RTU: select Automatic")
+
+            def rtu_ir(addr):
+                rr = c.read_input_registers(addr, 1, slave=7)
+                return None if rr.isError() else rr.registers[0]
+            wait_for(lambda: rtu_ir(IN_CMD_SEQ) == 9, "RTU: command seq 9 echoed")
+            wait_for(lambda: rtu_ir(IN_STATE) == AUTO_IDLE and rtu_ir(IN_HOMED) == 1, "RTU: homed")
+            r = c.write_registers(H_KP, regs_of(1e9), slave=7)
+            check(getattr(r, "exception_code", 0) == 3, "RTU: kp 1e9 refused with exception 03")
+            r = c.read_input_registers(500, 1, slave=7)
+            check(getattr(r, "exception_code", 0) == 2, "RTU: address 500 refused with exception 02")
+            c.close()
+            srv.terminate()
+            out, _ = srv.communicate(timeout=20)
+            check(srv.returncode == 0, f"serve exits 0 on SIGTERM ({srv.returncode})")
+        finally:
+            link.terminate()
+            link.wait(timeout=10)
 
 
 # ---------------------------------------------------------------- mbpoll
@@ -301,7 +452,8 @@ def main():
         except ImportError:
             print("pymodbus not installed: skipped (scripts/deps.sh installs python3-pymodbus)")
             return 77
-        {"pymodbus": run_pymodbus, "alarm": run_alarm, "refused": run_refused}[mode](cli)
+        {"pymodbus": run_pymodbus, "alarm": run_alarm, "refused": run_refused,
+         "files": run_files, "rtu": run_rtu}[mode](cli)
     if failures:
         print(f"{len(failures)} failed: " + "; ".join(failures))
         return 1
