@@ -4,6 +4,8 @@
 #include <QFile>
 #include <QSaveFile>
 
+#include "core/gcode/source_file.h"
+
 namespace trilho::dnc {
 
 QString ProgramLibrary::pathOf(int number) const {
@@ -20,19 +22,22 @@ std::shared_ptr<const Program> ProgramLibrary::compileText(const QByteArray& sou
 }
 
 std::optional<QByteArray> ProgramLibrary::read(int number, qint64 maxBytes) const {
-    QFile f(pathOf(number));
-    if (!f.open(QIODevice::ReadOnly)) return std::nullopt;
-    return f.read(maxBytes);
+    const SourceFile f = readRegularFile(QFile::encodeName(pathOf(number)).toStdString(),
+                                         "program", maxBytes, "file records");
+    if (!f.ok) return std::nullopt;
+    return QByteArray(f.bytes.data(), static_cast<qsizetype>(f.bytes.size()));
 }
 
 std::optional<std::shared_ptr<const Program>> ProgramLibrary::load(int number,
                                                                    QString* error) const {
-    QFile f(pathOf(number));
-    if (!f.open(QIODevice::ReadOnly)) {
-        if (error) *error = f.errorString();
+    // Regular files only, at most kMaxSourceBytes: a FIFO dropped in the folder must not block
+    // the server, nor a huge file exhaust it.
+    const SourceFile f = readSourceFile(QFile::encodeName(pathOf(number)).toStdString());
+    if (!f.ok) {
+        if (error) *error = QString::fromStdString(f.error);
         return std::nullopt;
     }
-    return compileText(f.readAll());
+    return compileText(QByteArray(f.bytes.data(), static_cast<qsizetype>(f.bytes.size())));
 }
 
 bool ProgramLibrary::save(int number, const QByteArray& source, QString* error) const {

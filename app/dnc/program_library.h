@@ -21,7 +21,8 @@ class ProgramLibrary {
     bool exists(int number) const;
     /// Reads and compiles program `number`; nullopt when there is no such file.
     std::optional<std::shared_ptr<const Program>> load(int number, QString* error) const;
-    /// The stored text of program `number`, at most maxBytes of it; nullopt when missing.
+    /// The stored text of program `number`; nullopt when missing, not a regular file or longer
+    /// than maxBytes.
     std::optional<QByteArray> read(int number, qint64 maxBytes) const;
     std::shared_ptr<const Program> compileText(const QByteArray& source) const;
     /// Writes the source atomically (the folder is created when missing).

@@ -325,6 +325,10 @@ def run_files(cli):
             check(p.ir(IN_DIAG_ERRORS)[0] >= 1 and p.ir(IN_DIAG_LINE)[0] == 2,
                   "its first error is on line 2")
             check(not os.path.exists(os.path.join(programs, "0079.G")), "0079.G not written")
+            # A FIFO dropped in the library must not block the server (it is not a program).
+            os.mkfifo(os.path.join(programs, "0050.G"))
+            check(p.exc(file_read(p, 50, 0, 1)) == 2, "a FIFO as 0050.G: exception 02, no hang")
+            check(p.command(START, 50) == NO_PROGRAM, "and it does not start (result 2)")
             # Run the one downloaded by file records, by number.
             check(p.command(START, 77) == APPLIED, "program 77 started by number")
             wait_for(lambda: p.ir(IN_PROGRAM)[0] == 77 and p.state() in (RUNNING, WAITING, PAUSED, HOMING),
