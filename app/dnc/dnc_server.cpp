@@ -36,16 +36,14 @@ class Served : public Base {
     QString client_;  ///< empty: a TCP server (the peers are asked)
 };
 
+/// Notes each client, and refuses one past kMaxTcpClients (Qt then closes its socket).
 class PeerObserver final : public QModbusTcpConnectionObserver {
   public:
-    explicit PeerObserver(std::function<void(QTcpSocket*)> f) : f_(std::move(f)) {}
-    bool acceptNewConnection(QTcpSocket* client) override {
-        f_(client);
-        return true;
-    }
+    explicit PeerObserver(std::function<bool(QTcpSocket*)> accept) : accept_(std::move(accept)) {}
+    bool acceptNewConnection(QTcpSocket* client) override { return accept_(client); }
 
   private:
-    std::function<void(QTcpSocket*)> f_;
+    std::function<bool(QTcpSocket*)> accept_;
 };
 
 QModbusDataUnitMap registerMap() {
@@ -98,9 +96,23 @@ bool DncServer::listenTcp(const QString& host, quint16 port, QString* error) {
     srv->setConnectionParameter(QModbusDevice::NetworkPortParameter, port);
     srv->setServerAddress(1);
     srv->installConnectionObserver(new PeerObserver([this](QTcpSocket* s) {
-        peers_.insert(s, QStringLiteral("%1:%2")
-                             .arg(QHostAddress(s->peerAddress().toIPv4Address()).toString())
-                             .arg(s->peerPort()));
+        const QString name = QStringLiteral("%1:%2")
+                                 .arg(QHostAddress(s->peerAddress().toIPv4Address()).toString())
+                                 .arg(s->peerPort());
+        if (peers_.size() >= kMaxTcpClients) {
+            // Each client costs a socket and its buffers: a bound, so a flood of connections
+            // cannot exhaust the machine's descriptors or memory. Said once per flood.
+            if (!refusingClients_)
+                emit historyLine(QStringLiteral("DNC: connection from %1 refused: %2 clients "
+                                                "already connected (the limit)")
+                                     .arg(name)
+                                     .arg(kMaxTcpClients));
+            refusingClients_ = true;
+            return false;
+        }
+        refusingClients_ = false;
+        peers_.insert(s, name);
+        return true;
     }));
     connect(srv, &QModbusTcpServer::modbusClientDisconnected, this,
             [this](QTcpSocket* s) { peers_.remove(s); });

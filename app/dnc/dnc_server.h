@@ -26,6 +26,9 @@ namespace trilho::dnc {
 class DncServer : public QObject {
     Q_OBJECT
   public:
+    /// TCP clients served at once; one more is refused (its connection closed at once).
+    static constexpr int kMaxTcpClients = 64;
+
     DncServer(DncMachine& machine, ProgramLibrary library, QObject* parent = nullptr);
     ~DncServer() override;
 
@@ -74,6 +77,7 @@ class DncServer : public QObject {
     QTimer timer_;
     std::vector<QModbusServer*> servers_;  ///< owned (children)
     QHash<QTcpSocket*, QString> peers_;    ///< connected TCP clients, "address:port"
+    bool refusingClients_ = false;         ///< at kMaxTcpClients: the history said so once
     /// A command applied by the machine later (the worker's queue): echoed then.
     struct Pending {
         std::uint16_t seq;

@@ -22,8 +22,8 @@ std::shared_ptr<const Program> ProgramLibrary::compileText(const QByteArray& sou
 }
 
 std::optional<QByteArray> ProgramLibrary::read(int number, qint64 maxBytes) const {
-    const SourceFile f = readRegularFile(QFile::encodeName(pathOf(number)).toStdString(),
-                                         "program", maxBytes, "file records");
+    const SourceFile f = readRegularFile(QFile::encodeName(pathOf(number)).toStdString(), "program",
+                                         maxBytes, "file records");
     if (!f.ok) return std::nullopt;
     return QByteArray(f.bytes.data(), static_cast<qsizetype>(f.bytes.size()));
 }

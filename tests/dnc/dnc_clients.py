@@ -397,6 +397,76 @@ def run_rtu(cli):
             link.wait(timeout=10)
 
 
+# ---------------------------------------------------------------- raw frames
+def mbap(pdu, tid=1, unit=1, proto=0, length=None):
+    n = len(pdu) + 1 if length is None else length
+    return struct.pack(">HHHB", tid, proto, n, unit) + pdu
+
+
+def exchange(port, frame, timeout=3.0):
+    """Sends bytes on a fresh connection; the answer, or b"" when the server closed it."""
+    with socket.create_connection(("127.0.0.1", port), timeout=timeout) as s:
+        try:
+            s.sendall(frame)
+            return s.recv(300)
+        except socket.timeout:
+            return None
+        except (ConnectionResetError, BrokenPipeError):
+            return b""
+
+
+def run_frames(cli):
+    with tempfile.TemporaryDirectory() as programs:
+        srv = Server(cli, programs)
+        try:
+            port = srv.port
+            status = mbap(struct.pack(">BHH", 4, 0, IN_COUNT))
+            ok = exchange(port, status)
+            check(ok is not None and len(ok) == 7 + 2 + 2 * IN_COUNT and ok[7] == 4,
+                  "a well-formed read is answered (the reference)")
+            # Function 16 whose byte count disagrees with its quantity: exception 03.
+            r = exchange(port, mbap(struct.pack(">BHHB", 16, 0, 2, 2) + b"\0\0"))
+            check(r is not None and r[7:9] == bytes([0x90, 3]), f"a malformed write: exception 03 ({r!r})")
+            r = exchange(port, mbap(struct.pack(">BHH", 4, 30, 10)))
+            check(r is not None and r[7:9] == bytes([0x84, 2]), "input registers 30..39: exception 02")
+            r = exchange(port, mbap(struct.pack(">BHH", 4, 0, 200)))
+            check(r is not None and r[7:9] == bytes([0x84, 3]), "200 registers at once: exception 03")
+            r = exchange(port, mbap(struct.pack(">BHH", 4, 0, 0)))
+            check(r is not None and r[7:9] == bytes([0x84, 3]), "quantity 0: exception 03")
+            # Qt's framing answers a code it cannot size itself, with function byte 0x80.
+            r = exchange(port, mbap(bytes([0x41, 1, 2, 3])))
+            check(r is not None and r[7] & 0x80 and r[8] == 1, f"an unknown function: exception 01 ({r!r})")
+            # Frames that are not Modbus: the server drops them (and maybe the connection) and goes on.
+            for what, frame in [("a wrong protocol id", mbap(struct.pack(">BHH", 4, 0, 1), proto=7)),
+                                ("a length field of 0", mbap(b"", length=0)),
+                                ("a length field of 3000", mbap(struct.pack(">BHH", 4, 0, 1), length=3000)),
+                                ("64 KB of noise", bytes(range(256)) * 256),
+                                ("half a header", b"\0\1\0")]:
+                exchange(port, frame, timeout=0.5)
+                after = exchange(port, status)
+                check(after is not None and len(after) == 7 + 2 + 2 * IN_COUNT,
+                      f"after {what} the server still answers")
+            # A flood of connections: 64 are served, one more is closed at once.
+            held = []
+            try:
+                for _ in range(64):
+                    held.append(socket.create_connection(("127.0.0.1", port), timeout=5))
+                for c in held[:1] + held[-1:]:
+                    c.sendall(status)
+                served = all(len(c.recv(300)) == 7 + 2 + 2 * IN_COUNT for c in held[:1] + held[-1:])
+                check(served, "64 connections held open are served")
+                extra = exchange(port, status, timeout=3)
+                check(extra == b"", "the 65th is closed by the server")
+            finally:
+                for c in held:
+                    c.close()
+            wait_for(lambda: exchange(port, status) not in (None, b""),
+                     "once they close, a new client is served again")
+        finally:
+            rc, out = srv.stop()
+        check("refused: 64 clients already connected" in out, "the history says why the 65th was refused")
+
+
 # ---------------------------------------------------------------- mbpoll
 def mbpoll(port, *args):
     cmd = ["mbpoll", "-m", "tcp", "-a", "1", "-p", str(port), "-0", "-1", "-o", "5"] + list(args)
@@ -457,7 +527,7 @@ def main():
             print("pymodbus not installed: skipped (scripts/deps.sh installs python3-pymodbus)")
             return 77
         {"pymodbus": run_pymodbus, "alarm": run_alarm, "refused": run_refused,
-         "files": run_files, "rtu": run_rtu}[mode](cli)
+         "files": run_files, "rtu": run_rtu, "frames": run_frames}[mode](cli)
     if failures:
         print(f"{len(failures)} failed: " + "; ".join(failures))
         return 1
