@@ -1,5 +1,7 @@
 #include "app/dnc/virtual_machine.h"
 
+#include "core/runtime/apply_command.h"
+
 namespace trilho::dnc {
 
 VirtualMachine::VirtualMachine(const MachineProfile& profile, int periodsPerTick,
@@ -29,42 +31,10 @@ void VirtualMachine::tick() {
 }
 
 Ticket VirtualMachine::send(CommandKind kind, std::int64_t i, double a, double b, double c) {
+    // The same dispatch as the servo thread's queue (apply_command.h); applied at once here.
     RailController& m = session_.controller();
-    switch (kind) {
-        case CommandKind::SelectManual:
-            m.selectManual();
-            break;
-        case CommandKind::SelectAutomatic:
-            m.selectAutomatic();
-            break;
-        case CommandKind::Start:
-            m.start(static_cast<std::size_t>(std::max<std::int64_t>(0, i)));
-            break;
-        case CommandKind::Continue:
-            m.pressContinue();
-            break;
-        case CommandKind::Hold:
-            m.hold();
-            break;
-        case CommandKind::Resume:
-            m.resume();
-            break;
-        case CommandKind::FeedOverride:
-            m.setFeedOverride(a);
-            break;
-        case CommandKind::Acknowledge:
-            m.acknowledgeAlarms();
-            break;
-        case CommandKind::SetGains:
-            m.setGains(static_cast<LoopLaw>(i), {a, b, c});
-            break;
-        case CommandKind::SetLaw:
-            m.setLaw(static_cast<LoopLaw>(i));
-            break;
-        default:  // the link sends no manual-mode or jog commands
-            break;
-    }
-    m.setCommandSeq(++seq_);
+    applyCommand(m, Command{++seq_, kind, i, a, b, c});
+    m.setCommandSeq(seq_);
     return {false, seq_};
 }
 

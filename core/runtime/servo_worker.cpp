@@ -1,5 +1,7 @@
 #include "core/runtime/servo_worker.h"
 
+#include "core/runtime/apply_command.h"
+
 #include <pthread.h>
 #include <sched.h>
 #include <time.h>
@@ -75,74 +77,19 @@ std::uint64_t ServoWorker::loadProgram(std::shared_ptr<const Program> program) {
 
 void ServoWorker::apply(const Command& c) {
     RailController& m = controller_;
-    switch (c.kind) {
-        case CommandKind::SelectManual:
-            m.selectManual();
-            break;
-        case CommandKind::SelectAutomatic:
-            m.selectAutomatic();
-            break;
-        case CommandKind::ManualLeft:
-            m.manualLeft();
-            break;
-        case CommandKind::ManualRight:
-            m.manualRight();
-            break;
-        case CommandKind::ManualStop:
-            m.manualStop();
-            break;
-        case CommandKind::JogStart:
-            m.jogStart(static_cast<int>(c.i), c.a);
-            break;
-        case CommandKind::JogStop:
-            m.jogStop();
-            break;
-        case CommandKind::JogIncrement:
-            m.jogIncrement(c.a, c.b);
-            break;
-        case CommandKind::Start:
-            m.start(static_cast<std::size_t>(std::max<std::int64_t>(0, c.i)));
-            break;
-        case CommandKind::Continue:
-            m.pressContinue();
-            break;
-        case CommandKind::Hold:
-            m.hold();
-            break;
-        case CommandKind::Resume:
-            m.resume();
-            break;
-        case CommandKind::SingleBlock:
-            m.setSingleBlock(c.i != 0);
-            break;
-        case CommandKind::FeedOverride:
-            m.setFeedOverride(c.a);
-            break;
-        case CommandKind::Acknowledge:
-            m.acknowledgeAlarms();
-            break;
-        case CommandKind::ResetEStop:
-            m.resetEmergencyStop();
-            break;
-        case CommandKind::SetGains:
-            m.setGains(static_cast<LoopLaw>(c.i), {c.a, c.b, c.c});
-            break;
-        case CommandKind::SetLaw:
-            m.setLaw(static_cast<LoopLaw>(c.i));
-            break;
-        case CommandKind::LoadProgram: {
-            // The program may be large: the handover is a pointer swap under a lock the
-            // servo thread only tries, so a producer holding it never blocks a tick.
-            std::unique_lock lock(programMutex_, std::try_to_lock);
-            if (!lock.owns_lock()) {
-                deferredLoad_ = c;  // retried next tick; the command ring has one producer only
-                return;
-            }
-            deferredLoad_.reset();
-            m.loadProgram(std::move(pendingProgram_));
-            pendingProgram_.reset();
-            break;
+    if (c.kind == CommandKind::LoadProgram) {
+        // The program may be large: the handover is a pointer swap under a lock the servo
+        // thread only tries, so a producer holding it never blocks a tick.
+        std::unique_lock lock(programMutex_, std::try_to_lock);
+        if (!lock.owns_lock()) {
+            deferredLoad_ = c;  // retried next tick; the command ring has one producer only
+            return;
         }
+        deferredLoad_.reset();
+        m.loadProgram(std::move(pendingProgram_));
+        pendingProgram_.reset();
+    } else {
+        applyCommand(m, c);
     }
     m.setCommandSeq(c.seq);
 }
