@@ -86,6 +86,7 @@ DncServer::DncServer(DncMachine& machine, ProgramLibrary library, QObject* paren
 }
 
 DncServer::~DncServer() {
+    closing_ = true;
     for (QModbusServer* s : servers_)
         s->disconnectDevice();
 }
@@ -139,7 +140,32 @@ bool DncServer::listenRtu(const QString& device, int baud, int unitId, QString* 
         return false;
     }
     adopt(srv);
+    watchSerialLine(srv, device);
     return true;
+}
+
+void DncServer::watchSerialLine(QModbusServer* srv, const QString& device) {
+    // A USB adapter pulled out, or the pty's other end gone: say so, then try the device again
+    // every second, so a re-plugged line serves again without restarting the machine.
+    auto* reopen = new QTimer(srv);
+    reopen->setInterval(1000);
+    connect(srv, &QModbusDevice::errorOccurred, this,
+            [this, srv, reopen, device](QModbusDevice::Error e) {
+                if (e == QModbusDevice::NoError || reopen->isActive())
+                    return;  // said once per loss
+                emit historyLine(
+                    QStringLiteral("DNC: Modbus RTU on %1: %2").arg(device, srv->errorString()));
+                if (srv->state() == QModbusDevice::ConnectedState) srv->disconnectDevice();
+            });
+    connect(srv, &QModbusDevice::stateChanged, this, [this, reopen](QModbusDevice::State st) {
+        if (st == QModbusDevice::UnconnectedState && !closing_) reopen->start();
+    });
+    connect(reopen, &QTimer::timeout, this, [this, srv, reopen, device] {
+        if (srv->connectDevice() && srv->state() == QModbusDevice::ConnectedState) {
+            reopen->stop();
+            emit historyLine(QStringLiteral("DNC: Modbus RTU on %1 open again").arg(device));
+        }
+    });
 }
 
 void DncServer::adopt(QModbusServer* server) {

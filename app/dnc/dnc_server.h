@@ -60,6 +60,8 @@ class DncServer : public QObject {
     void refresh();
     void publish(QModbusServer& server);
     void applyWrite(const HoldingWrite& w);
+    /// Reports a serial line's errors and reopens it when it comes back.
+    void watchSerialLine(QModbusServer* srv, const QString& device);
     /// Functions 20 (a stored program) and 21 (into the download block): file_records.h.
     QModbusResponse readFile(QModbusPdu::FunctionCode fc, const std::uint8_t* data,
                              std::size_t size);
@@ -77,6 +79,7 @@ class DncServer : public QObject {
     QTimer timer_;
     std::vector<QModbusServer*> servers_;  ///< owned (children)
     QHash<QTcpSocket*, QString> peers_;    ///< connected TCP clients, "address:port"
+    bool closing_ = false;                 ///< being destroyed: no reopening
     bool refusingClients_ = false;         ///< at kMaxTcpClients: the history said so once
     /// A command applied by the machine later (the worker's queue): echoed then.
     struct Pending {

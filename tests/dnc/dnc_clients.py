@@ -389,9 +389,28 @@ def run_rtu(cli):
             r = c.read_input_registers(500, 1, slave=7)
             check(getattr(r, "exception_code", 0) == 2, "RTU: address 500 refused with exception 02")
             c.close()
+            # The line goes away (an adapter pulled out) and comes back at the same path.
+            link.terminate()
+            link.wait(timeout=10)
+            link = subprocess.Popen(["socat", f"pty,raw,echo=0,link={a}", f"pty,raw,echo=0,link={b}"],
+                                    stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+
+            def back():
+                if not os.path.exists(b):
+                    return False
+                cc = ModbusSerialClient(b, baudrate=19200, timeout=0.5)
+                try:
+                    rr = cc.read_input_registers(IN_VERSION, 1, slave=7) if cc.connect() else None
+                    return rr is not None and not rr.isError() and rr.registers[0] == 1
+                finally:
+                    cc.close()
+            wait_for(back, "RTU: served again once the line is back (reopened within 1 s)", seconds=30)
             srv.terminate()
             out, _ = srv.communicate(timeout=20)
             check(srv.returncode == 0, f"serve exits 0 on SIGTERM ({srv.returncode})")
+            check(out.count("DNC: Modbus RTU on") == 2 and "open again" in out,
+                  "the history says the line was lost, once, and open again: "
+                  + " | ".join(x for x in out.splitlines() if "RTU" in x))
         finally:
             link.terminate()
             link.wait(timeout=10)
