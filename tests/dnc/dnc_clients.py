@@ -325,6 +325,12 @@ def run_files(cli):
             check(p.ir(IN_DIAG_ERRORS)[0] >= 1 and p.ir(IN_DIAG_LINE)[0] == 2,
                   "its first error is on line 2")
             check(not os.path.exists(os.path.join(programs, "0079.G")), "0079.G not written")
+            # The file cannot be written (here a folder stands at its name; a full disk or a
+            # read-only folder take the same path): result 5, and the old file is untouched.
+            os.mkdir(os.path.join(programs, "0044.G"))
+            check(not file_write(p, 44, "N1 M02\n").isError(), "program 44 written to the block")
+            check(p.command(COMMIT, 44) == 5, "its save fails: result 5 (save failed)")
+            check(os.path.isdir(os.path.join(programs, "0044.G")), "and nothing was replaced")
             # A FIFO dropped in the library must not block the server (it is not a program).
             os.mkfifo(os.path.join(programs, "0050.G"))
             check(p.exc(file_read(p, 50, 0, 1)) == 2, "a FIFO as 0050.G: exception 02, no hang")
