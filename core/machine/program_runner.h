@@ -5,7 +5,7 @@
 // machine's controller (RailController, XyController) supplies the moves and the ending
 // through CRTP hooks, so the rail and the XY tables cannot drift apart:
 //   d.status_            state, pause, blockIndex/N/Line, modal, singleBlock, dwellRemainingS
-//   d.post(kind, n, x, feed)   an event; d.setState(s); d.raiseAlarm(code)
+//   d.setState(s); d.raiseAlarm(code)   (post(), the event ring and drainEvents are here)
 //   d.startMove(block)   posts the move's event and starts it (resetting the loop guard when it
 //                        really moves); d.moveDone(): the move has ended, in position
 //   d.beginEnding(); d.stepEnding(dtS)   m02: wait for the machine to stand still, then end
@@ -18,12 +18,39 @@
 #include "core/gcode/program.h"
 #include "core/machine/controller_event.h"
 #include "core/machine/controller_state.h"
+#include "core/runtime/event_ring.h"
 
 namespace trilho {
 
 template <typename Derived>
 class ProgramRunner {
+  public:
+    /// Events since the last drain, in order (history lines, alarms, mode changes). The servo
+    /// thread posts, one reader drains (a single-producer, single-consumer ring).
+    template <typename F>
+    void drainEvents(F&& f) {
+        ControllerEvent e;
+        while (events_.pop(e))
+            f(e);
+    }
+
   protected:
+    /// An event stamped with the controller's time; the ones that change the online status
+    /// box become status_.lastStatus too.
+    void post(EventKind kind, std::int32_t n = -1, double x = 0.0, double feed = 0.0,
+              AlarmCode alarm = AlarmCode::None, double value = 0.0) {
+        ControllerEvent e;
+        e.timeS = d().status_.timeS;
+        e.kind = kind;
+        e.n = n;
+        e.x = x;
+        e.feed = feed;
+        e.alarm = alarm;
+        e.value = value;
+        events_.push(e);
+        if (setsOnlineStatus(kind)) d().status_.lastStatus = e;
+    }
+
     /// Blocks that take no time (status blocks, gotos) run at most this many per period, so a
     /// program of them cannot stall the servo thread.
     static constexpr int kMaxBlocksPerStep = 8;
@@ -49,6 +76,7 @@ class ProgramRunner {
     ControllerState holdFrom_ = ControllerState::Running;
 
   private:
+    SpscRing<ControllerEvent, 1024> events_;
     Derived& d() { return static_cast<Derived&>(*this); }
 };
 

@@ -41,20 +41,6 @@ RailController::RailController(const MachineProfile& profile, RailIo& io) : serv
     status_.servo = servo_.sample();
 }
 
-void RailController::post(EventKind kind, std::int32_t n, double x, double feed, AlarmCode alarm,
-                          double value) {
-    ControllerEvent e;
-    e.timeS = status_.timeS;
-    e.kind = kind;
-    e.n = n;
-    e.x = x;
-    e.feed = feed;
-    e.alarm = alarm;
-    e.value = value;
-    events_.push(e);
-    if (setsOnlineStatus(kind)) status_.lastStatus = e;
-}
-
 // ---- modes -----------------------------------------------------------------------------------
 
 void RailController::selectManual() {

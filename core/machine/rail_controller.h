@@ -13,7 +13,6 @@
 #include "core/machine/controller_event.h"
 #include "core/machine/controller_state.h"
 #include "core/machine/program_runner.h"
-#include "core/runtime/event_ring.h"
 
 namespace trilho {
 
@@ -59,14 +58,6 @@ class RailController : private ProgramRunner<RailController> {
     }
     const MachineProfile& profile() const { return servo_.profile(); }
 
-    /// Events since the last drain, in order (history lines, alarms, mode changes).
-    template <typename F>
-    void drainEvents(F&& f) {
-        ControllerEvent e;
-        while (events_.pop(e))
-            f(e);
-    }
-
     // ---- modes ----
     void selectManual();
     void selectAutomatic();  ///< homes to the centre switch first
@@ -87,6 +78,7 @@ class RailController : private ProgramRunner<RailController> {
     /// Runs from block `fromIndex` (0: the whole program) with the modal state rebuilt.
     bool start(std::size_t fromIndex = 0);
     using ProgramRunner<RailController>::pressContinue;
+    using ProgramRunner<RailController>::drainEvents;
     void hold();  ///< controlled stop, then paused; resume() goes on
     void resume();
     void stop();  ///< controlled stop, program abandoned
@@ -113,8 +105,6 @@ class RailController : private ProgramRunner<RailController> {
         Centre
     };
 
-    void post(EventKind kind, std::int32_t n = -1, double x = 0.0, double feed = 0.0,
-              AlarmCode alarm = AlarmCode::None, double value = 0.0);
     void beginHoming();
     /// The servo's counters of warnings (manual soft-limit stops, centre-mark corrections).
     void checkServoWarnings();
@@ -136,7 +126,6 @@ class RailController : private ProgramRunner<RailController> {
 
     RailServo servo_;
     mutable ControllerStatus status_;
-    SpscRing<ControllerEvent, 1024> events_;
     HomingPhase homingPhase_ = HomingPhase::SearchLeft;
     double homingTimeS_ = 0.0;
     double stillForS_ = 0.0;

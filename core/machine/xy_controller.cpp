@@ -18,20 +18,6 @@ const XyStatus& XyController::status() const {
     return status_;
 }
 
-void XyController::post(EventKind kind, std::int32_t n, double x, double feed, AlarmCode alarm,
-                        double value) {
-    ControllerEvent e;
-    e.timeS = status_.timeS;
-    e.kind = kind;
-    e.n = n;
-    e.x = x;
-    e.feed = feed;
-    e.alarm = alarm;
-    e.value = value;
-    events_.push(e);
-    if (setsOnlineStatus(kind)) status_.lastStatus = e;
-}
-
 // ---- modes -----------------------------------------------------------------------------------
 
 void XyController::selectManual() {

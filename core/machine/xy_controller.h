@@ -14,7 +14,6 @@
 #include "core/machine/machine_profile.h"
 #include "core/machine/program_runner.h"
 #include "core/machine/xy_motion.h"
-#include "core/runtime/event_ring.h"
 
 namespace trilho {
 
@@ -54,13 +53,6 @@ class XyController : private ProgramRunner<XyController> {
     const MachineProfile& profile() const { return profile_; }
     XyMotion& motion() { return *motion_; }
 
-    template <typename F>
-    void drainEvents(F&& f) {
-        ControllerEvent e;
-        while (events_.pop(e))
-            f(e);
-    }
-
     // ---- modes ----
     void selectManual();
     void selectAutomatic();  ///< homes first (origin sensor / index)
@@ -73,6 +65,7 @@ class XyController : private ProgramRunner<XyController> {
     bool loadProgram(std::shared_ptr<const Program> program);
     bool start(std::size_t fromIndex = 0);
     using ProgramRunner<XyController>::pressContinue;
+    using ProgramRunner<XyController>::drainEvents;
     void hold();
     void resume();
     void stop();
@@ -89,10 +82,6 @@ class XyController : private ProgramRunner<XyController> {
     MachineProfile profile_;
     std::unique_ptr<XyMotion> motion_;
     mutable XyStatus status_;
-    SpscRing<ControllerEvent, 1024> events_;
-
-    void post(EventKind kind, std::int32_t n = -1, double x = 0.0, double feed = 0.0,
-              AlarmCode alarm = AlarmCode::None, double value = 0.0);
     void setState(ControllerState s) { status_.state = s; }
     void beginHoming();
     // ---- ProgramRunner's hooks (program_runner.h) ----
