@@ -10,11 +10,16 @@
 //                        really moves); d.moveDone(): the move has ended, in position
 //   d.beginEnding(); d.stepEnding(dtS)   m02: wait for the machine to stand still, then end
 //   d.holdForMotionlessLoop()   marks the hold as the controller's own
+//   d.programFits(p)     the program suits this machine (an XY one has a y per block)
+//   d.homedForStart(); d.beginHoming()   start() homes first when the position is not known
+//   d.beginApproach(i)   moves to where block i would start, setting approachFirst_
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 
+#include "core/gcode/modal_state.h"
 #include "core/gcode/program.h"
 #include "core/machine/controller_event.h"
 #include "core/machine/controller_state.h"
@@ -33,6 +38,13 @@ class ProgramRunner {
         while (events_.pop(e))
             f(e);
     }
+
+    /// Takes a compiled program (Execute recompiles first; the caller does). A program with
+    /// errors is refused with the CompileErrors warning and nothing moves.
+    bool loadProgram(std::shared_ptr<const Program> program);
+    /// Runs from block `fromIndex` (0: the whole program) with the modal state rebuilt; homes
+    /// first when the position is not known (after an alarm of the position chain).
+    bool start(std::size_t fromIndex = 0);
 
   protected:
     /// An event stamped with the controller's time; the ones that change the online status
@@ -74,11 +86,69 @@ class ProgramRunner {
     std::size_t gotoBlocks_ = 0;          ///< goto blocks in the program
     std::size_t gotosSinceActivity_ = 0;  ///< gotos run since the last move, dwell or pause
     ControllerState holdFrom_ = ControllerState::Running;
+    std::size_t pendingStart_ = 0;  ///< start() asked before homing finished
+    bool startAfterHoming_ = false;
+    bool haveTarget_ = false;  ///< a move of this run set the last target
 
   private:
     SpscRing<ControllerEvent, 1024> events_;
     Derived& d() { return static_cast<Derived&>(*this); }
 };
+
+template <typename Derived>
+bool ProgramRunner<Derived>::loadProgram(std::shared_ptr<const Program> program) {
+    auto& st = d().status_;
+    if (st.state == ControllerState::Running || st.state == ControllerState::Waiting ||
+        st.state == ControllerState::Paused)
+        return false;
+    if (!program || !program->ok() || !d().programFits(*program)) {
+        const double errors = program ? static_cast<double>(program->errorCount()) : 0.0;
+        post(EventKind::CompileFailed, -1, errors);
+        d().raiseAlarm(AlarmCode::CompileErrors);
+        program_.reset();
+        st.programLoaded = false;
+        return false;
+    }
+    program_ = std::move(program);
+    gotoBlocks_ =
+        static_cast<std::size_t>(std::count_if(program_->blocks.begin(), program_->blocks.end(),
+                                               [](const Block& b) { return b.op == Op::Goto; }));
+    st.programLoaded = true;
+    st.programFinished = false;
+    return true;
+}
+
+template <typename Derived>
+bool ProgramRunner<Derived>::start(std::size_t fromIndex) {
+    auto& st = d().status_;
+    if (!st.automatic || !program_ || fromIndex >= program_->blocks.size()) return false;
+    if (st.state == ControllerState::Homing) {
+        pendingStart_ = fromIndex;
+        startAfterHoming_ = true;
+        return true;
+    }
+    if (st.state != ControllerState::AutoIdle) return false;
+    if (!d().homedForStart()) {
+        // After an alarm of the position chain: Execute homes first, then runs (it used to do
+        // nothing, silently).
+        pendingStart_ = fromIndex;
+        startAfterHoming_ = true;
+        d().beginHoming();
+        return true;
+    }
+    st.modal = modalStateBefore(*program_, fromIndex);
+    pc_ = fromIndex;
+    blockStarted_ = false;
+    st.programFinished = false;
+    st.pause = PauseReason::None;
+    gotosSinceActivity_ = 0;
+    ending_ = false;
+    haveTarget_ = false;
+    if (fromIndex > 0) post(EventKind::StartFromBlock, program_->blocks[fromIndex].n);
+    d().beginApproach(fromIndex);
+    d().setState(ControllerState::Running);
+    return true;
+}
 
 template <typename Derived>
 void ProgramRunner<Derived>::beginBlock() {

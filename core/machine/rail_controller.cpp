@@ -248,60 +248,13 @@ void RailController::checkManualLimits() {
 
 // ---- automatic -------------------------------------------------------------------------------
 
-bool RailController::loadProgram(std::shared_ptr<const Program> program) {
-    if (status_.state == ControllerState::Running || status_.state == ControllerState::Waiting ||
-        status_.state == ControllerState::Paused)
-        return false;
-    if (!program || !program->ok()) {
-        const double errors = program ? static_cast<double>(program->errorCount()) : 0.0;
-        post(EventKind::CompileFailed, -1, errors);
-        raiseAlarm(AlarmCode::CompileErrors);
-        program_.reset();
-        status_.programLoaded = false;
-        return false;
-    }
-    program_ = std::move(program);
-    gotoBlocks_ =
-        static_cast<std::size_t>(std::count_if(program_->blocks.begin(), program_->blocks.end(),
-                                               [](const Block& b) { return b.op == Op::Goto; }));
-    status_.programLoaded = true;
-    status_.programFinished = false;
-    return true;
-}
-
-bool RailController::start(std::size_t fromIndex) {
-    if (!status_.automatic || !program_ || fromIndex >= program_->blocks.size()) return false;
-    if (status_.state == ControllerState::Homing) {
-        pendingStart_ = fromIndex;
-        startAfterHoming_ = true;
-        return true;
-    }
-    if (status_.state != ControllerState::AutoIdle) return false;
-    if (!status_.homed) {
-        // After an alarm of the position chain: Execute homes first, then runs (it used to do
-        // nothing, silently).
-        pendingStart_ = fromIndex;
-        startAfterHoming_ = true;
-        beginHoming();
-        return true;
-    }
-    status_.modal = modalStateBefore(*program_, fromIndex);
-    pc_ = fromIndex;
-    blockStarted_ = false;
-    status_.programFinished = false;
-    status_.pause = PauseReason::None;
-    gotosSinceActivity_ = 0;
-    ending_ = false;
-    haveTarget_ = false;
-    if (fromIndex > 0) post(EventKind::StartFromBlock, program_->blocks[fromIndex].n);
+void RailController::beginApproach(std::size_t /*fromIndex: status_.modal has it*/) {
     // Execution starts at the rail centre (gcode.md); from a block, where the program would
     // have left the platform.
     const double startAt = status_.modal.hasPosition ? status_.modal.positionMm : 0.0;
     approachFirst_ =
         std::abs(servo_.sample().positionMm - startAt) > profile().loop.inPositionWindowMm;
     if (approachFirst_) servo_.moveTo(startAt, 1.0);
-    setState(ControllerState::Running);
-    return true;
 }
 
 void RailController::startMove(const Block& b) {

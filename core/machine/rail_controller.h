@@ -72,11 +72,8 @@ class RailController : private ProgramRunner<RailController> {
     void jogIncrement(double deltaMm, double speedFraction);
 
     // ---- automatic mode ----
-    /// Takes a compiled program (Execute recompiles first; the caller does). A program with
-    /// errors is refused with the CompileErrors warning and nothing moves.
-    bool loadProgram(std::shared_ptr<const Program> program);
-    /// Runs from block `fromIndex` (0: the whole program) with the modal state rebuilt.
-    bool start(std::size_t fromIndex = 0);
+    using ProgramRunner<RailController>::loadProgram;
+    using ProgramRunner<RailController>::start;
     using ProgramRunner<RailController>::pressContinue;
     using ProgramRunner<RailController>::drainEvents;
     void hold();  ///< controlled stop, then paused; resume() goes on
@@ -106,6 +103,10 @@ class RailController : private ProgramRunner<RailController> {
     };
 
     void beginHoming();
+    bool homedForStart() const { return status_.homed; }
+    bool programFits(const Program&) const { return true; }
+    /// Execution starts at the rail centre; from a block, where the program left the platform.
+    void beginApproach(std::size_t fromIndex);
     /// The servo's counters of warnings (manual soft-limit stops, centre-mark corrections).
     void checkServoWarnings();
     /// M02: waits for the platform to stand still, then ends (or warns how far it is off).
@@ -130,14 +131,11 @@ class RailController : private ProgramRunner<RailController> {
     double homingTimeS_ = 0.0;
     double stillForS_ = 0.0;
     bool jogging_ = false;
-    std::size_t pendingStart_ = 0;  ///< start() asked before homing finished
-    bool startAfterHoming_ = false;
     bool leavingCentre_ = false;  ///< homing began on the centre vane: leave it first
     double rejectWindow_ = 0.0;   ///< recent implausible counter reads (decays 10 per s)
     std::uint32_t lastRejected_ = 0;
     std::uint32_t lastLimitStops_ = 0;
     std::uint32_t lastCorrections_ = 0;
-    bool haveTarget_ = false;  ///< a move of this run set lastTargetMm_
     double lastTargetMm_ = 0.0;
     double stillRefMm_ = 0.0;  ///< position where the platform was last seen still
 };

@@ -66,55 +66,7 @@ void XyController::moveTo(XyPoint target, double speedFraction) {
 
 // ---- automatic -------------------------------------------------------------------------------
 
-bool XyController::loadProgram(std::shared_ptr<const Program> program) {
-    if (status_.state == ControllerState::Running || status_.state == ControllerState::Waiting ||
-        status_.state == ControllerState::Paused)
-        return false;
-    const bool yOk = program && program->y.size() == program->blocks.size();
-    if (!program || !program->ok() || !yOk) {
-        const double errors = program ? static_cast<double>(program->errorCount()) : 0.0;
-        post(EventKind::CompileFailed, -1, errors);
-        raiseAlarm(AlarmCode::CompileErrors);
-        program_.reset();
-        status_.programLoaded = false;
-        return false;
-    }
-    program_ = std::move(program);
-    gotoBlocks_ =
-        static_cast<std::size_t>(std::count_if(program_->blocks.begin(), program_->blocks.end(),
-                                               [](const Block& b) { return b.op == Op::Goto; }));
-    status_.programLoaded = true;
-    status_.programFinished = false;
-    return true;
-}
-
-double XyController::yOf(std::size_t index) const {
-    return program_->y[index];
-}
-
-bool XyController::start(std::size_t fromIndex) {
-    if (!status_.automatic || !program_ || fromIndex >= program_->blocks.size()) return false;
-    if (status_.state == ControllerState::Homing) {
-        pendingStart_ = fromIndex;
-        startAfterHoming_ = true;
-        return true;
-    }
-    if (status_.state != ControllerState::AutoIdle) return false;
-    if (!motion_->homed()) {
-        pendingStart_ = fromIndex;
-        startAfterHoming_ = true;
-        beginHoming();
-        return true;
-    }
-    status_.modal = modalStateBefore(*program_, fromIndex);
-    pc_ = fromIndex;
-    blockStarted_ = false;
-    status_.programFinished = false;
-    status_.pause = PauseReason::None;
-    gotosSinceActivity_ = 0;
-    ending_ = false;
-    haveTarget_ = false;
-    if (fromIndex > 0) post(EventKind::StartFromBlock, program_->blocks[fromIndex].n);
+void XyController::beginApproach(std::size_t fromIndex) {
     // Execution starts at the machine origin (gcode.md: where the compiler's targets start);
     // from a block, where the program would have left the table.
     startPoint_ = {};
@@ -127,8 +79,10 @@ bool XyController::start(std::size_t fromIndex) {
     const XyPoint at = motion_->commanded();
     approachFirst_ = std::hypot(at.x - startPoint_.x, at.y - startPoint_.y) > 1e-9;
     if (approachFirst_) motion_->beginMove(startPoint_, XyMove::Travel, 1.0);
-    setState(ControllerState::Running);
-    return true;
+}
+
+double XyController::yOf(std::size_t index) const {
+    return program_->y[index];
 }
 
 void XyController::moveProgram(XyPoint target, XyMove kind, double speedFraction) {

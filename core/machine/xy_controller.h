@@ -62,8 +62,8 @@ class XyController : private ProgramRunner<XyController> {
     /// The DC table's front panel: type X and Y, Send.
     void moveTo(XyPoint target, double speedFraction);
     // ---- automatic ----
-    bool loadProgram(std::shared_ptr<const Program> program);
-    bool start(std::size_t fromIndex = 0);
+    using ProgramRunner<XyController>::loadProgram;
+    using ProgramRunner<XyController>::start;
     using ProgramRunner<XyController>::pressContinue;
     using ProgramRunner<XyController>::drainEvents;
     void hold();
@@ -96,13 +96,15 @@ class XyController : private ProgramRunner<XyController> {
     /// Starts a move of the program (targets from the compiled blocks, mm).
     void moveProgram(XyPoint target, XyMove kind, double speedFraction);
     double yOf(std::size_t index) const;
+    bool homedForStart() const { return motion_->homed(); }
+    /// An XY program carries a y for every block.
+    bool programFits(const Program& p) const { return p.y.size() == p.blocks.size(); }
+    /// Execution starts at the origin; from a block, where the program left the table.
+    void beginApproach(std::size_t fromIndex);
 
-    bool startAfterHoming_ = false;
-    std::size_t pendingStart_ = 0;
     XyPoint startPoint_;
     bool heldByController_ = false;
     bool linkHeld_ = false;  ///< the run is held for a failed device link (alarm 20)
-    bool haveTarget_ = false;
     XyPoint lastTarget_;
     ControllerState modeBeforeAlarm_ = ControllerState::Manual;
 };
