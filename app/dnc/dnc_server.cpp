@@ -232,10 +232,9 @@ QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& serv
     const auto* bytes = reinterpret_cast<const std::uint8_t*>(data.constData());
     const auto size = static_cast<std::size_t>(data.size());
     if (fc == QModbusPdu::ReadFileRecord) return readFile(fc, bytes, size);
-    const WriteDecode d = decodeHoldingWrite(static_cast<std::uint8_t>(fc), bytes, size);
+    WriteDecode d = decodeHoldingWrite(static_cast<std::uint8_t>(fc), bytes, size);
     const bool writes = d.isWrite || fc == QModbusPdu::WriteSingleCoil ||
-                        fc == QModbusPdu::WriteMultipleCoils || fc == QModbusPdu::WriteFileRecord ||
-                        fc == QModbusPdu::MaskWriteRegister;
+                        fc == QModbusPdu::WriteMultipleCoils || fc == QModbusPdu::WriteFileRecord;
     if (!writes) return base(request);
     if (!link_.remote) {
         emit historyLine(QStringLiteral("DNC: write refused (Remote is off): function %1 from %2")
@@ -245,6 +244,7 @@ QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& serv
     }
     if (fc == QModbusPdu::WriteFileRecord) return writeFile(request, bytes, size, client);
     if (!d.isWrite) return base(request);  // coils: none in the map (an exception)
+    resolveMask(d, holding_);              // function 22: the value it leaves, checked as a write
     Exception e = d.error;
     if (e == Exception::None) e = checkHoldingWrite(d.write, holding_, machine_.snapshot().law);
     if (e != Exception::None) {

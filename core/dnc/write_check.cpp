@@ -57,6 +57,16 @@ WriteDecode decodeHoldingWrite(std::uint8_t functionCode, const std::uint8_t* da
             if (size < 5) return d.error = Exception::IllegalValue, d;
             d.error = decodeList(be16(data), be16(data + 2), data + 5, size - 5, data[4], d.write);
             return d;
+        case 0x16:  // address, AND mask, OR mask
+            d.isWrite = true;
+            if (size != 6) return d.error = Exception::IllegalValue, d;
+            if (be16(data) >= hold::kCount) return d.error = Exception::IllegalAddress, d;
+            d.mask = true;
+            d.write.start = be16(data);
+            d.write.values = {0};
+            d.andMask = be16(data + 2);
+            d.orMask = be16(data + 4);
+            return d;
         case 0x17:  // read address, read quantity, write address, write quantity, count, values
             d.isWrite = true;
             if (size < 9) return d.error = Exception::IllegalValue, d;
@@ -66,6 +76,12 @@ WriteDecode decodeHoldingWrite(std::uint8_t functionCode, const std::uint8_t* da
         default:
             return d;
     }
+}
+
+void resolveMask(WriteDecode& d, const std::array<std::uint16_t, hold::kCount>& current) {
+    if (!d.mask || d.error != Exception::None) return;
+    const unsigned now = current[d.write.start];
+    d.write.values = {static_cast<std::uint16_t>((now & d.andMask) | (d.orMask & ~d.andMask))};
 }
 
 GainRange gainRange(LoopLaw law) {

@@ -28,9 +28,13 @@ struct HoldingWrite {
 };
 
 struct WriteDecode {
-    bool isWrite = false;  ///< the function writes holding registers (06, 16, 23)
+    bool isWrite = false;  ///< the function writes holding registers (06, 16, 22, 23)
     Exception error = Exception::None;
     HoldingWrite write;
+    /// Function 22 (mask write): the register becomes (current AND andMask) OR (orMask AND NOT
+    /// andMask); write.values holds that only once resolveMask has seen the current value.
+    bool mask = false;
+    std::uint16_t andMask = 0, orMask = 0;
 };
 
 /// Decodes a request's PDU data (the bytes after the function code). A malformed frame (a
@@ -38,6 +42,10 @@ struct WriteDecode {
 /// hold::kCount IllegalAddress, as the protocol says.
 WriteDecode decodeHoldingWrite(std::uint8_t functionCode, const std::uint8_t* data,
                                std::size_t size);
+
+/// Function 22's value from the register as it is now (no-op for other functions), so a mask
+/// write is checked like any other write.
+void resolveMask(WriteDecode& d, const std::array<std::uint16_t, hold::kCount>& current);
 
 /// The gains' ranges per law: the machine profile's (machine_profile.cpp, forEachNumber).
 struct GainRange {

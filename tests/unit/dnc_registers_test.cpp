@@ -122,5 +122,32 @@ TEST(DncRegisters, MalformedFramesAndAddresses) {
     EXPECT_FALSE(decodeHoldingWrite(0x03, shortFrame, sizeof shortFrame).isWrite);
 }
 
+// Found by fuzz_dnc_request: function 22 went to Qt's register store unchecked, so half of the
+// feed override's float could be set to anything. It is now a write like the others.
+TEST(DncRegisters, MaskWriteIsCheckedLikeAnyWrite) {
+    const std::uint8_t lowWordOfFeed[] = {0, 7, 0, 0, 0, 4};  // register 7: AND 0, OR 4
+    WriteDecode d = decodeHoldingWrite(0x16, lowWordOfFeed, sizeof lowWordOfFeed);
+    ASSERT_TRUE(d.isWrite);
+    ASSERT_TRUE(d.mask);
+    HoldingImage current{};
+    resolveMask(d, current);
+    EXPECT_EQ(d.write.start, 7);
+    EXPECT_EQ(d.write.values, (std::vector<std::uint16_t>{4}));
+    EXPECT_EQ(checkHoldingWrite(d.write, current, LoopLaw::Engineered), Exception::IllegalValue);
+
+    // (current AND and) OR (or AND NOT and), on the download block's text.
+    current[hold::kDownloadData] = 0x4130;  // "A0"
+    const std::uint8_t lowByte[] = {0, hold::kDownloadData, 0xFF, 0x00, 0x00, 0x31};
+    d = decodeHoldingWrite(0x16, lowByte, sizeof lowByte);
+    resolveMask(d, current);
+    EXPECT_EQ(d.write.values, (std::vector<std::uint16_t>{0x4131}));
+    EXPECT_EQ(checkHoldingWrite(d.write, current, LoopLaw::Engineered), Exception::None);
+
+    const std::uint8_t shortMask[] = {0, 7, 0, 0, 0};
+    EXPECT_EQ(decodeHoldingWrite(0x16, shortMask, sizeof shortMask).error, Exception::IllegalValue);
+    const std::uint8_t pastMap[] = {0xFF, 0xFF, 0, 0, 0, 0};
+    EXPECT_EQ(decodeHoldingWrite(0x16, pastMap, sizeof pastMap).error, Exception::IllegalAddress);
+}
+
 }  // namespace
 }  // namespace trilho::dnc
