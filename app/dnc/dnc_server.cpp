@@ -99,9 +99,12 @@ bool DncServer::listenTcp(const QString& host, quint16 port, QString* error) {
         peers_.insert(s, QStringLiteral("%1:%2")
                              .arg(QHostAddress(s->peerAddress().toIPv4Address()).toString())
                              .arg(s->peerPort()));
+        emit clientsChanged();
     }));
-    connect(srv, &QModbusTcpServer::modbusClientDisconnected, this,
-            [this](QTcpSocket* s) { peers_.remove(s); });
+    connect(srv, &QModbusTcpServer::modbusClientDisconnected, this, [this](QTcpSocket* s) {
+        peers_.remove(s);
+        emit clientsChanged();
+    });
     if (!srv->connectDevice() || srv->state() != QModbusDevice::ConnectedState) {
         if (error) *error = srv->errorString();
         delete srv;
