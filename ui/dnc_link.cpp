@@ -37,7 +37,10 @@ bool DncLink::start(const DncSettings& settings, QString* error) {
 
     const QString host = DncSettings::bindAddress(settings.host);
     QString why;
+    QString historyError;  ///< in the history's language (its other DNC lines are English)
     if (!server_->listenTcp(host, settings.port, &why)) {
+        historyError =
+            QStringLiteral("cannot listen on %1:%2: %3").arg(host).arg(settings.port).arg(why);
         error_ = tr("Cannot listen on %1:%2: %3. Another program (another trilho?) may be "
                     "using this port: choose another port or stop that program.")
                      .arg(host)
@@ -49,6 +52,7 @@ bool DncLink::start(const DncSettings& settings, QString* error) {
         error_ =
             tr("Cannot open the serial device %1 for Modbus RTU: %2").arg(settings.rtuDevice, why);
         shortError_ = tr("DNC: cannot open %1").arg(settings.rtuDevice);
+        historyError = QStringLiteral("cannot open %1: %2").arg(settings.rtuDevice, why);
     } else {
         error_.clear();
         shortError_.clear();
@@ -66,6 +70,7 @@ bool DncLink::start(const DncSettings& settings, QString* error) {
     }
     server_.reset();
     machine_.reset();
+    emit historyLine(QStringLiteral("DNC: not serving: %1").arg(historyError));
     if (error) *error = error_;
     emit stateChanged();
     return false;

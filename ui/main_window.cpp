@@ -101,6 +101,7 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     statusBar()->addPermanentWidget(timingLabel_);
     dncLabel_ = new QLabel(this);
     dncLabel_->setObjectName(QStringLiteral("dncState"));
+    dncLabel_->setContentsMargins(8, 0, 12, 0);  // px: apart from the timing and state texts
     dncLabel_->hide();
     statusBar()->addPermanentWidget(dncLabel_);
     compileProgress_ = new QProgressBar(this);

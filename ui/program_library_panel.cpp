@@ -110,7 +110,9 @@ void ProgramLibraryPanel::refresh() {
         item->setText(1, info.fileName());
         item->setText(2, what);
         item->setToolTip(2, what);
-        item->setText(3, info.lastModified().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")));
+        // To the minute: the comment column keeps the width.
+        item->setText(3, info.lastModified().toString(QStringLiteral("yyyy-MM-dd HH:mm")));
+        item->setToolTip(3, info.lastModified().toString(Qt::ISODate));
         item->setData(0, Qt::UserRole, info.absoluteFilePath());
         if (info.absoluteFilePath() == current) list_->setCurrentItem(item);
         watcher_.addPath(info.absoluteFilePath());

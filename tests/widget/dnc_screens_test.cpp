@@ -4,6 +4,7 @@
 // deadline (QTRY_*, QSignalSpy), never a bare sleep.
 #include <QAction>
 #include <QCheckBox>
+#include <QDockWidget>
 #include <QFile>
 #include <QGroupBox>
 #include <QLabel>
@@ -259,6 +260,8 @@ class DncScreensTest : public QObject {
         QCOMPARE(window_->dncLabel()->text(),
                  QStringLiteral("DNC: cannot listen on 127.0.0.1:%1 (port taken?)").arg(port));
         QVERIFY(!window_->remoteAction()->isEnabled());
+        QVERIFY(historyHas(
+            QStringLiteral("DNC: not serving: cannot listen on 127.0.0.1:%1: ").arg(port)));
         // Another port then works, and the error goes.
         const quint16 other = freePort();
         d->portEdit()->setText(QString::number(other));
@@ -355,6 +358,50 @@ class DncScreensTest : public QObject {
         writeFile(later + QStringLiteral("/0001.G"), "; first\nN10 M02\n");
         QTRY_COMPARE_WITH_TIMEOUT(window_->library()->list()->topLevelItemCount(), 1, 5000);
         QCOMPARE(window_->library()->list()->topLevelItem(0)->text(2), QStringLiteral("first"));
+    }
+
+    /// With TRILHO_SCREENSHOT_DIR set (run under xvfb with QT_QPA_PLATFORM=xcb for real
+    /// fonts): the main screen serving a client with Remote on, and Options > DNC with a
+    /// non-local address, in English and pt_BR, for docs/screenshots/dnc_*.png.
+    void screenshots() {
+        const QString out = qEnvironmentVariable("TRILHO_SCREENSHOT_DIR");
+        if (out.isEmpty()) QSKIP("TRILHO_SCREENSHOT_DIR not set");
+        QDir().mkpath(programsDir());
+        writeFile(programsDir() + QStringLiteral("/0042.G"),
+                  "( Pick and place at the lathe )\nN10 G90\nN20 G01 X100 F50\nN30 M02\n");
+        writeFile(programsDir() + QStringLiteral("/0007.G"),
+                  "; Load cycle: store, lathe, mill\nN10 G90\nN20 G00 X0\nN30 M02\n");
+        writeFile(programsDir() + QStringLiteral("/0100.G"), "N10 G90\nN20 M02\n");
+        window_->resize(1366, 768);
+        const quint16 port = freePort();
+        for (const QString& lang : {QStringLiteral("en"), QStringLiteral("pt_BR")}) {
+            window_->setLanguage(lang);
+            bool ok = false;
+            DncDialog* d = serve(QStringLiteral("127.0.0.1"), QString::number(port), &ok);
+            QVERIFY(ok);
+            connectClient(port);
+            QTRY_VERIFY_WITH_TIMEOUT(window_->dncLink()->clientCount() == 1, 5000);
+            {
+                auto refused = writeFeed(0.5f);  // a history line (the reply before its client)
+                QVERIFY(finished(refused.get()));
+            }
+            window_->remoteAction()->trigger();
+            d->close();
+            window_->findChild<QDockWidget*>(QStringLiteral("libraryDock"))->raise();
+            window_->findChild<QDockWidget*>(QStringLiteral("historyDock"))->raise();
+            QTRY_VERIFY_WITH_TIMEOUT(window_->dncLabel()->text().contains(QLatin1String("1 ")),
+                                     5000);
+            QCoreApplication::processEvents();
+            QVERIFY(window_->grab().save(out + QStringLiteral("/dnc_main_%1.png").arg(lang)));
+            d = window_->openDncDialog();
+            d->hostEdit()->setText(QStringLiteral("0.0.0.0"));
+            d->adjustSize();
+            QCoreApplication::processEvents();
+            QVERIFY(d->grab().save(out + QStringLiteral("/dnc_dialog_%1.png").arg(lang)));
+            d->hostEdit()->setText(QStringLiteral("127.0.0.1"));
+            d->close();
+            client_.reset();
+        }
     }
 
     void commentsAreFoundAsTheCompilerReadsThem() {
