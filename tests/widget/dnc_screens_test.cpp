@@ -311,6 +311,16 @@ class DncScreensTest : public QObject {
         QVERIFY(d->messageLabel()->text().startsWith(QStringLiteral("Modbus RTU needs")));
         // Nothing bad was remembered.
         QVERIFY(!settings_->contains(QStringLiteral("dnc/port")));
+        // A serial device that is not there: said, and TCP is not left half-served.
+        d->rtuDeviceEdit()->setText(dir_.filePath(QStringLiteral("no-such-tty")));
+        QVERIFY(!d->apply());
+        QVERIFY(d->messageLabel()->text().startsWith(
+            QStringLiteral("Cannot open the serial device %1 for Modbus RTU: ")
+                .arg(dir_.filePath(QStringLiteral("no-such-tty")))));
+        QVERIFY(!window_->dncLink()->running());
+        QCOMPARE(window_->dncLabel()->text(),
+                 QStringLiteral("DNC: cannot open %1")
+                     .arg(dir_.filePath(QStringLiteral("no-such-tty"))));
     }
 
     void theLibraryListsProgramsByNumberAndFollowsTheFolder() {
