@@ -12,6 +12,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QShowEvent>
 #include <QSpinBox>
 #include <QVBoxLayout>
 
@@ -212,6 +213,15 @@ void DncDialog::retranslate() {
            "(Options > Remote, Ctrl+Shift+R), which is off at every start."));
     updateWarning();
     updateState();
+}
+
+void DncDialog::showEvent(QShowEvent* e) {
+    if (!e->spontaneous()) {
+        showSettings(DncSettings::load(settings_));
+        message_->hide();
+        updateState();
+    }
+    QDialog::showEvent(e);
 }
 
 void DncDialog::changeEvent(QEvent* e) {

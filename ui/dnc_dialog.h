@@ -49,6 +49,8 @@ class DncDialog : public QDialog {
 
   protected:
     void changeEvent(QEvent* e) override;
+    /// Opened again: the remembered settings, not what was typed and closed without Apply.
+    void showEvent(QShowEvent* e) override;
 
   private:
     void retranslate();

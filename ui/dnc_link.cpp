@@ -32,8 +32,14 @@ bool DncLink::start(const DncSettings& settings, QString* error) {
         if (line.startsWith(QLatin1String("DNC:"))) emit historyLine(line);
     });
     connect(server_.get(), &dnc::DncServer::clientsChanged, this, &DncLink::stateChanged);
-    server_->setRemote(false);           // consent is given at the screens, after every start
-    QDir().mkpath(settings.programs());  // downloads go there; the library list watches it
+    server_->setRemote(false);  // consent is given at the screens, after every start
+    // Downloads go there; the library list watches it. A folder that cannot be made is said
+    // now: the link still serves (reading, running nothing), a download then fails with
+    // SaveFailed.
+    if (!QDir().mkpath(settings.programs()))
+        emit historyLine(QStringLiteral("DNC: cannot create the programs folder %1: downloads "
+                                        "will fail")
+                             .arg(settings.programs()));
 
     const QString host = DncSettings::bindAddress(settings.host);
     QString why;

@@ -321,6 +321,12 @@ class DncScreensTest : public QObject {
         QCOMPARE(window_->dncLabel()->text(),
                  QStringLiteral("DNC: cannot open %1")
                      .arg(dir_.filePath(QStringLiteral("no-such-tty"))));
+        // Closed and opened again: what is remembered, not what was typed.
+        d->close();
+        d->portEdit()->setText(QStringLiteral("junk"));
+        QCOMPARE(window_->openDncDialog(), d);
+        QCOMPARE(d->portEdit()->text(), settings_->value(QStringLiteral("dnc/port")).toString());
+        QVERIFY(!d->messageLabel()->isVisible());
     }
 
     void theLibraryListsProgramsByNumberAndFollowsTheFolder() {
