@@ -20,6 +20,7 @@
 #include <QTest>
 #include <QToolButton>
 #include <QTreeWidget>
+#include <cmath>
 
 #include "core/dnc/register_map.h"
 #include "translations/i18n.h"
@@ -214,6 +215,38 @@ class DncScreensTest : public QObject {
         QVERIFY(finished(again.get()));
         QCOMPARE(again->error(), QModbusDevice::ProtocolError);
         QCOMPARE(link_->status().feedOverride, 0.5);
+    }
+
+    void theSupervisorRunsAProgramByNumberOnTheScreensController() {
+        // One controller: a program started over the link moves the rail the screens show.
+        QDir().mkpath(programsDir());
+        writeFile(programsDir() + QStringLiteral("/0042.G"),
+                  "( to x = 20 mm and stop )\nN10 G90\nN20 G01 X20 F50\nN30 M02\n");
+        const quint16 port = freePort();
+        bool ok = false;
+        serve(QStringLiteral("127.0.0.1"), QString::number(port), &ok);
+        QVERIFY(ok);
+        connectClient(port);
+        window_->remoteAction()->trigger();
+        QVERIFY(window_->dncLink()->remote());
+        // Command 1 (start program), argument 42, seq 7: registers 8..10 in one request.
+        QModbusDataUnit start(QModbusDataUnit::HoldingRegisters, dnc::hold::kCommand, 3);
+        start.setValue(0, quint16(dnc::Command::StartProgram));
+        start.setValue(1, 42);
+        start.setValue(2, 7);
+        {
+            std::unique_ptr<QModbusReply> r(client_->sendWriteRequest(start, 1));
+            QVERIFY(finished(r.get()));
+            QCOMPARE(r->error(), QModbusDevice::NoError);
+        }
+        QVERIFY(historyHas(QStringLiteral("DNC: program 42 started")));
+        QTRY_COMPARE_WITH_TIMEOUT(readInput(dnc::in::kCommandSeq), quint16(7), 10000);
+        QCOMPARE(readInput(dnc::in::kCommandResult), quint16(dnc::CommandResult::Applied));
+        QCOMPARE(readInput(dnc::in::kProgram), quint16(42));
+        // It homes first (automatic from manual), then runs to x = 20 mm and ends there.
+        QTRY_VERIFY_WITH_TIMEOUT(link_->status().homed && link_->status().programFinished, 60000);
+        QVERIFY(std::abs(link_->status().servo.positionMm - 20.0) < 0.5);
+        QVERIFY(window_->automaticAction()->isChecked());  // the screens follow
     }
 
     void remoteIsOffAtEveryStart() {
