@@ -483,6 +483,128 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::DncDialog</name>
+    <message>
+        <source>Programs folder</source>
+        <translation>Carpeta de los programas</translation>
+    </message>
+    <message>
+        <source>The address &apos;%1&apos; is not an IP address: write a numeric address such as 127.0.0.1 (this computer only), or 0.0.0.0 for every network interface.</source>
+        <translation>La dirección &apos;%1&apos; no es una dirección IP: escriba una dirección numérica como 127.0.0.1 (solo este ordenador) o 0.0.0.0 para todas las interfaces de red.</translation>
+    </message>
+    <message>
+        <source>The port must be a whole number from 1 to 65535 (got &apos;%1&apos;); Modbus TCP&apos;s own is 502, which needs administrator rights: 1502 does not.</source>
+        <translation>El puerto debe ser un número entero de 1 a 65535 (recibido &apos;%1&apos;); el de Modbus TCP es 502, que requiere derechos de administrador: 1502 no.</translation>
+    </message>
+    <message>
+        <source>Modbus RTU needs the serial device, e.g. /dev/ttyUSB0 (or turn RTU off).</source>
+        <translation>Modbus RTU necesita el dispositivo serie, p. ej. /dev/ttyUSB0 (o desactive RTU).</translation>
+    </message>
+    <message>
+        <source>Warning: %1 can be reached from other computers. Modbus has no password and no encryption: anyone on that network can read this machine and, while Remote is on, change its gains and run programs. Use 127.0.0.1 unless the cell&apos;s network is closed.</source>
+        <translation>Atención: %1 es accesible desde otros ordenadores. Modbus no tiene contraseña ni cifrado: cualquiera en esa red puede leer esta máquina y, con Remoto activado, cambiar sus ganancias y ejecutar programas. Use 127.0.0.1 salvo que la red de la célula sea cerrada.</translation>
+    </message>
+    <message>
+        <source>DNC: off</source>
+        <translation>DNC: desactivado</translation>
+    </message>
+    <message>
+        <source>DNC link (Modbus)</source>
+        <translation>Enlace DNC (Modbus)</translation>
+    </message>
+    <message>
+        <source>Serve the DNC link (Modbus) for the cell&apos;s supervisor</source>
+        <translation>Servir el enlace DNC (Modbus) para el supervisor de la célula</translation>
+    </message>
+    <message>
+        <source>Modbus TCP</source>
+        <translation>Modbus TCP</translation>
+    </message>
+    <message>
+        <source>Address:</source>
+        <translation>Dirección:</translation>
+    </message>
+    <message>
+        <source>Port:</source>
+        <translation>Puerto:</translation>
+    </message>
+    <message>
+        <source>Modbus RTU on a serial line (8N1)</source>
+        <translation>Modbus RTU en una línea serie (8N1)</translation>
+    </message>
+    <message>
+        <source>Device:</source>
+        <translation>Dispositivo:</translation>
+    </message>
+    <message>
+        <source>Baud:</source>
+        <translation>Baudios:</translation>
+    </message>
+    <message>
+        <source>Unit id:</source>
+        <translation>Unidad (id):</translation>
+    </message>
+    <message>
+        <source>Program library</source>
+        <translation>Biblioteca de programas</translation>
+    </message>
+    <message>
+        <source>Folder:</source>
+        <translation>Carpeta:</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Examinar...</translation>
+    </message>
+    <message>
+        <source>Reading is always allowed. Writes and commands need Remote (Options &gt; Remote, Ctrl+Shift+R), which is off at every start.</source>
+        <translation>La lectura siempre está permitida. Escrituras y comandos requieren Remoto (Opciones &gt; Remoto, Ctrl+Shift+R), que está desactivado en cada inicio.</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::DncLink</name>
+    <message>
+        <source>Cannot listen on %1:%2: %3. Another program (another trilho?) may be using this port: choose another port or stop that program.</source>
+        <translation>No se puede escuchar en %1:%2: %3. Otro programa (¿otro trilho?) puede estar usando este puerto: elija otro puerto o cierre ese programa.</translation>
+    </message>
+    <message>
+        <source>DNC: cannot listen on %1:%2 (port taken?)</source>
+        <translation>DNC: no escucha en %1:%2 (¿puerto ocupado?)</translation>
+    </message>
+    <message>
+        <source>Cannot open the serial device %1 for Modbus RTU: %2</source>
+        <translation>No se puede abrir el dispositivo serie %1 para Modbus RTU: %2</translation>
+    </message>
+    <message>
+        <source>DNC: cannot open %1</source>
+        <translation>DNC: no se puede abrir %1</translation>
+    </message>
+    <message>
+        <source>DNC: %1</source>
+        <translation>DNC: %1</translation>
+    </message>
+    <message>
+        <source>DNC: %1, %2, %3</source>
+        <translation>DNC: %1, %2, %3</translation>
+    </message>
+    <message>
+        <source>Remote ON</source>
+        <translation>Remoto ACTIVADO</translation>
+    </message>
+    <message>
+        <source>Remote off</source>
+        <translation>Remoto desactivado</translation>
+    </message>
+    <message>
+        <source>1 client</source>
+        <translation>1 cliente</translation>
+    </message>
+    <message>
+        <source>%1 clients</source>
+        <translation>%1 clientes</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::DroPanel</name>
     <message>
         <source>Machine X</source>
@@ -852,6 +974,22 @@
         <translation>Simulación</translation>
     </message>
     <message>
+        <source>Program library</source>
+        <translation>Biblioteca de programas</translation>
+    </message>
+    <message>
+        <source>&amp;DNC link...</source>
+        <translation>Enlace &amp;DNC...</translation>
+    </message>
+    <message>
+        <source>&amp;Remote (DNC)</source>
+        <translation>&amp;Remoto (DNC)</translation>
+    </message>
+    <message>
+        <source>Allow the cell&apos;s supervisor to write and command over the DNC link (%1). Off at every start.</source>
+        <translation>Permite al supervisor de la célula escribir y mandar por el enlace DNC (%1). Desactivado en cada inicio.</translation>
+    </message>
+    <message>
         <source>E-STOP LATCHED</source>
         <translation>EMERGENCIA ACTIVADA</translation>
     </message>
@@ -1096,6 +1234,41 @@
     <message>
         <source>Object: %1 points (at most 300 per object)</source>
         <translation>Objeto: %1 puntos (como máximo 300 por objeto)</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::ProgramLibraryPanel</name>
+    <message>
+        <source>Folder: %1</source>
+        <translation>Carpeta: %1</translation>
+    </message>
+    <message>
+        <source>Folder: %1 (not created yet)</source>
+        <translation>Carpeta: %1 (aún no creada)</translation>
+    </message>
+    <message>
+        <source>%1 bytes, no comment</source>
+        <translation>%1 bytes, sin comentario</translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <translation>N.º</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Archivo</translation>
+    </message>
+    <message>
+        <source>Comment or size</source>
+        <translation>Comentario o tamaño</translation>
+    </message>
+    <message>
+        <source>Modified</source>
+        <translation>Modificado</translation>
+    </message>
+    <message>
+        <source>Open in the editor</source>
+        <translation>Abrir en el editor</translation>
     </message>
 </context>
 <context>

@@ -483,6 +483,128 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::DncDialog</name>
+    <message>
+        <source>Programs folder</source>
+        <translation>Pasta dos programas</translation>
+    </message>
+    <message>
+        <source>The address &apos;%1&apos; is not an IP address: write a numeric address such as 127.0.0.1 (this computer only), or 0.0.0.0 for every network interface.</source>
+        <translation>O endereço &apos;%1&apos; não é um endereço IP: escreva um endereço numérico como 127.0.0.1 (só este computador) ou 0.0.0.0 para todas as interfaces de rede.</translation>
+    </message>
+    <message>
+        <source>The port must be a whole number from 1 to 65535 (got &apos;%1&apos;); Modbus TCP&apos;s own is 502, which needs administrator rights: 1502 does not.</source>
+        <translation>A porta deve ser um número inteiro de 1 a 65535 (recebido &apos;%1&apos;); a do Modbus TCP é 502, que exige direitos de administrador: 1502 não.</translation>
+    </message>
+    <message>
+        <source>Modbus RTU needs the serial device, e.g. /dev/ttyUSB0 (or turn RTU off).</source>
+        <translation>O Modbus RTU precisa do dispositivo serial, p. ex. /dev/ttyUSB0 (ou desligue o RTU).</translation>
+    </message>
+    <message>
+        <source>Warning: %1 can be reached from other computers. Modbus has no password and no encryption: anyone on that network can read this machine and, while Remote is on, change its gains and run programs. Use 127.0.0.1 unless the cell&apos;s network is closed.</source>
+        <translation>Atenção: %1 pode ser alcançado de outros computadores. O Modbus não tem senha nem criptografia: qualquer um nessa rede pode ler esta máquina e, com o Remoto ligado, mudar seus ganhos e executar programas. Use 127.0.0.1, a menos que a rede da célula seja fechada.</translation>
+    </message>
+    <message>
+        <source>DNC: off</source>
+        <translation>DNC: desligado</translation>
+    </message>
+    <message>
+        <source>DNC link (Modbus)</source>
+        <translation>Enlace DNC (Modbus)</translation>
+    </message>
+    <message>
+        <source>Serve the DNC link (Modbus) for the cell&apos;s supervisor</source>
+        <translation>Servir o enlace DNC (Modbus) para o supervisor da célula</translation>
+    </message>
+    <message>
+        <source>Modbus TCP</source>
+        <translation>Modbus TCP</translation>
+    </message>
+    <message>
+        <source>Address:</source>
+        <translation>Endereço:</translation>
+    </message>
+    <message>
+        <source>Port:</source>
+        <translation>Porta:</translation>
+    </message>
+    <message>
+        <source>Modbus RTU on a serial line (8N1)</source>
+        <translation>Modbus RTU numa linha serial (8N1)</translation>
+    </message>
+    <message>
+        <source>Device:</source>
+        <translation>Dispositivo:</translation>
+    </message>
+    <message>
+        <source>Baud:</source>
+        <translation>Baud:</translation>
+    </message>
+    <message>
+        <source>Unit id:</source>
+        <translation>Unidade (id):</translation>
+    </message>
+    <message>
+        <source>Program library</source>
+        <translation>Biblioteca de programas</translation>
+    </message>
+    <message>
+        <source>Folder:</source>
+        <translation>Pasta:</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Procurar...</translation>
+    </message>
+    <message>
+        <source>Reading is always allowed. Writes and commands need Remote (Options &gt; Remote, Ctrl+Shift+R), which is off at every start.</source>
+        <translation>A leitura é sempre permitida. Escritas e comandos exigem o Remoto (Opções &gt; Remoto, Ctrl+Shift+R), que começa desligado a cada início.</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::DncLink</name>
+    <message>
+        <source>Cannot listen on %1:%2: %3. Another program (another trilho?) may be using this port: choose another port or stop that program.</source>
+        <translation>Não é possível escutar em %1:%2: %3. Outro programa (outro trilho?) pode estar usando esta porta: escolha outra porta ou feche esse programa.</translation>
+    </message>
+    <message>
+        <source>DNC: cannot listen on %1:%2 (port taken?)</source>
+        <translation>DNC: não escuta em %1:%2 (porta ocupada?)</translation>
+    </message>
+    <message>
+        <source>Cannot open the serial device %1 for Modbus RTU: %2</source>
+        <translation>Não é possível abrir o dispositivo serial %1 para Modbus RTU: %2</translation>
+    </message>
+    <message>
+        <source>DNC: cannot open %1</source>
+        <translation>DNC: não abre %1</translation>
+    </message>
+    <message>
+        <source>DNC: %1</source>
+        <translation>DNC: %1</translation>
+    </message>
+    <message>
+        <source>DNC: %1, %2, %3</source>
+        <translation>DNC: %1, %2, %3</translation>
+    </message>
+    <message>
+        <source>Remote ON</source>
+        <translation>Remoto LIGADO</translation>
+    </message>
+    <message>
+        <source>Remote off</source>
+        <translation>Remoto desligado</translation>
+    </message>
+    <message>
+        <source>1 client</source>
+        <translation>1 cliente</translation>
+    </message>
+    <message>
+        <source>%1 clients</source>
+        <translation>%1 clientes</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::DroPanel</name>
     <message>
         <source>Machine X</source>
@@ -852,6 +974,22 @@
         <translation>Simulação</translation>
     </message>
     <message>
+        <source>Program library</source>
+        <translation>Biblioteca de programas</translation>
+    </message>
+    <message>
+        <source>&amp;DNC link...</source>
+        <translation>Enlace &amp;DNC...</translation>
+    </message>
+    <message>
+        <source>&amp;Remote (DNC)</source>
+        <translation>&amp;Remoto (DNC)</translation>
+    </message>
+    <message>
+        <source>Allow the cell&apos;s supervisor to write and command over the DNC link (%1). Off at every start.</source>
+        <translation>Permite ao supervisor da célula escrever e comandar pelo enlace DNC (%1). Desligado a cada início.</translation>
+    </message>
+    <message>
         <source>E-STOP LATCHED</source>
         <translation>EMERGÊNCIA ACIONADA</translation>
     </message>
@@ -1096,6 +1234,41 @@
     <message>
         <source>Object: %1 points (at most 300 per object)</source>
         <translation>Objeto: %1 pontos (no máximo 300 por objeto)</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::ProgramLibraryPanel</name>
+    <message>
+        <source>Folder: %1</source>
+        <translation>Pasta: %1</translation>
+    </message>
+    <message>
+        <source>Folder: %1 (not created yet)</source>
+        <translation>Pasta: %1 (ainda não criada)</translation>
+    </message>
+    <message>
+        <source>%1 bytes, no comment</source>
+        <translation>%1 bytes, sem comentário</translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <translation>Nº</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Arquivo</translation>
+    </message>
+    <message>
+        <source>Comment or size</source>
+        <translation>Comentário ou tamanho</translation>
+    </message>
+    <message>
+        <source>Modified</source>
+        <translation>Modificado</translation>
+    </message>
+    <message>
+        <source>Open in the editor</source>
+        <translation>Abrir no editor</translation>
     </message>
 </context>
 <context>

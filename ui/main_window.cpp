@@ -33,6 +33,9 @@
 #include "core/machine/event_text.h"
 #include "translations/i18n.h"
 #include "ui/code_editor.h"
+#include "ui/dnc_dialog.h"
+#include "ui/dnc_link.h"
+#include "ui/dnc_settings.h"
 #include "ui/dro_panel.h"
 #include "ui/execution_panel.h"
 #include "ui/history_panel.h"
@@ -40,6 +43,7 @@
 #include "ui/keys_dialog.h"
 #include "ui/machine_link.h"
 #include "ui/plot_panel.h"
+#include "ui/program_library_panel.h"
 #include "ui/program_panel.h"
 #include "ui/rail_view.h"
 #include "ui/run_controls.h"
@@ -84,6 +88,7 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     v->addLayout(top);
     v->addWidget(formScroll, 1);
     setCentralWidget(centre);
+    dnc_ = new DncLink(link_, this);
     buildMenus();
     buildDocks();
     stateLabel_ = new QLabel(this);
@@ -94,6 +99,11 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     timingLabel_->setObjectName(QStringLiteral("timing"));
     statusBar()->addWidget(hintLabel_, 1);
     statusBar()->addPermanentWidget(timingLabel_);
+    dncLabel_ = new QLabel(this);
+    dncLabel_->setObjectName(QStringLiteral("dncState"));
+    dncLabel_->setContentsMargins(8, 0, 12, 0);  // px: apart from the timing and state texts
+    dncLabel_->hide();
+    statusBar()->addPermanentWidget(dncLabel_);
     compileProgress_ = new QProgressBar(this);
     compileProgress_->setRange(0, 0);  // busy: the compiler runs in one pass
     compileProgress_->setMaximumWidth(120);
@@ -137,6 +147,15 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
         !restoreState(settings_.value(QStringLiteral("windowState")).toByteArray());
     const QString lastProgram = settings_.value(QStringLiteral("lastProgram")).toString();
     if (!lastProgram.isEmpty() && QFileInfo::exists(lastProgram)) selectProgram(lastProgram);
+
+    // The DNC link: served again at start when it was on, always with Remote off (consent is
+    // given anew by the operator, never remembered).
+    connect(dnc_, &DncLink::stateChanged, this, &MainWindow::showDncState);
+    connect(dnc_, &DncLink::historyLine, this, &MainWindow::addDncLine);
+    const DncSettings dnc = DncSettings::load(settings_);
+    library_->setFolder(dnc.programs());
+    if (dnc.enabled) dnc_->start(dnc, nullptr);  // a failure shows in the status bar
+    showDncState();
 }
 
 MainWindow::~MainWindow() {
@@ -211,12 +230,21 @@ void MainWindow::buildMenus() {
     });
     for (QAction* a : {standardDialect_, classicDialect_})
         a->setCheckable(true), dialects->addAction(a);
+    optionsMenu_->addSeparator();
+    dncAction_ = optionsMenu_->addAction(QString(), this, [this] { openDncDialog(); });
+    remote_ = optionsMenu_->addAction(QString());
+    remote_->setObjectName(QStringLiteral("remote"));
+    remote_->setCheckable(true);
+    remote_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+    remote_->setShortcutContext(Qt::WindowShortcut);
+    remote_->setEnabled(false);  // until the link is served
+    connect(remote_, &QAction::toggled, dnc_, &DncLink::setRemote);
     viewMenu_ = menuBar()->addMenu(QString());
     resetLayout_ = viewMenu_->addAction(QString(), this, &MainWindow::resetLayout);
     viewMenu_->addSeparator();
     helpMenu_ = menuBar()->addMenu(QString());
     keys_ = helpMenu_->addAction(QString(), this, [this] {
-        KeysDialog dialog(runControls_->keyedActions(), this);
+        KeysDialog dialog(runControls_->keyedActions() << remote_, this);
         dialog.exec();
     });
 
@@ -241,6 +269,16 @@ void MainWindow::buildMenus() {
     bar->addWidget(estop_);
     bar->addWidget(resetEstop_);
     bar->addWidget(ack_);
+    bar->addSeparator();
+    remoteButton_ = new QToolButton(bar);
+    remoteButton_->setObjectName(QStringLiteral("remoteButton"));
+    remoteButton_->setDefaultAction(remote_);
+    // On, it stands out: the supervisor may move the rail.
+    remoteButton_->setStyleSheet(
+        QStringLiteral("QToolButton#remoteButton:checked { background: rgb(255,170,0); "
+                       "color: black; font-weight: bold; border: 2px solid rgb(160,90,0); "
+                       "border-radius: 4px; padding: 4px 10px; }"));
+    bar->addWidget(remoteButton_);
     connect(estop_, &QToolButton::clicked, &link_, &MachineLink::emergencyStop);
     connect(resetEstop_, &QToolButton::clicked, &link_, &MachineLink::resetEmergencyStop);
     connect(ack_, &QToolButton::clicked, &link_, &MachineLink::acknowledge);
@@ -283,7 +321,13 @@ void MainWindow::buildDocks() {
     connect(simulation_, &SimulationPanel::lateTicksChanged, &link_, &MachineLink::setLateTicks);
     plotDock_->raise();
     tabifyDockWidget(programDock_, jogDock_);
+    library_ = new ProgramLibraryPanel(this);
+    libraryDock_ = dock(library_, "libraryDock", Qt::RightDockWidgetArea);
+    tabifyDockWidget(jogDock_, libraryDock_);
     programDock_->raise();
+    connect(library_, &ProgramLibraryPanel::openRequested, this, [this](const QString& path) {
+        if (selectProgram(path)) programDock_->raise();
+    });
 
     // The unsaved marker: "name *" in the Program field and the dock's title.
     connect(program_, &ProgramPanel::dirtyChanged, this, [this] { showProgramName(); });
@@ -344,6 +388,12 @@ void MainWindow::retranslate() {
     historyDock_->setWindowTitle(tr("History"));
     railDock_->setWindowTitle(tr("Rail"));
     simulationDock_->setWindowTitle(tr("Simulation"));
+    libraryDock_->setWindowTitle(tr("Program library"));
+    dncAction_->setText(tr("&DNC link..."));
+    remote_->setText(tr("&Remote (DNC)"));
+    remote_->setToolTip(tr("Allow the cell's supervisor to write and command over the DNC "
+                           "link (%1). Off at every start.")
+                            .arg(remote_->shortcut().toString(QKeySequence::NativeText)));
     estop_->setText(last_.state == ControllerState::EStop ? tr("E-STOP LATCHED")
                                                           : tr("E-STOP (Pause, F1)"));
     estopBanner_->setText(
@@ -524,8 +574,8 @@ void MainWindow::showProgramName() {
 
 void MainWindow::resetLayout() {
     restoreState(defaultLayout_);
-    for (QDockWidget* d :
-         {programDock_, plotDock_, jogDock_, historyDock_, railDock_, simulationDock_}) {
+    for (QDockWidget* d : {programDock_, plotDock_, jogDock_, historyDock_, railDock_,
+                           simulationDock_, libraryDock_}) {
         d->setFloating(false);
         d->show();
     }
@@ -558,6 +608,36 @@ void MainWindow::startCompiled(std::shared_ptr<Program> program, std::size_t fro
     }
     dro_->setProgramBlocks(static_cast<int>(program->blocks.size()));
     link_.run(program, fromIndex);
+}
+
+DncDialog* MainWindow::openDncDialog() {
+    if (!dncDialog_) {
+        dncDialog_ = new DncDialog(*dnc_, settings_, this);
+        connect(dncDialog_, &DncDialog::applied, this,
+                [this](const DncSettings& s) { library_->setFolder(s.programs()); });
+    }
+    dncDialog_->show();
+    dncDialog_->raise();
+    dncDialog_->activateWindow();
+    return dncDialog_;
+}
+
+void MainWindow::showDncState() {
+    const QSignalBlocker block(remote_);  // showing the state is not the operator's toggle
+    remote_->setEnabled(dnc_->running());
+    remote_->setChecked(dnc_->remote());
+    const QString text = dnc_->statusLine();
+    dncLabel_->setText(text);
+    dncLabel_->setToolTip(dnc_->statusText());
+    dncLabel_->setStyleSheet(dnc_->error().isEmpty() ? QString()
+                                                     : QStringLiteral("color: rgb(170,0,0);"));
+    dncLabel_->setVisible(!text.isEmpty());
+}
+
+void MainWindow::addDncLine(const QString& line) {
+    history_->add(QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")),
+                  QStringLiteral("status"), 0, line);
+    link_.journalNote(QStringLiteral("status"), 0, line);
 }
 
 void MainWindow::loadGainsFromSettings() {

@@ -23,6 +23,8 @@ class QToolButton;
 namespace trilho {
 namespace ui {
 
+class DncDialog;
+class DncLink;
 class DroPanel;
 class ExecutionPanel;
 class HistoryPanel;
@@ -30,6 +32,7 @@ class RunControls;
 class JogPanel;
 class MachineLink;
 class PlotPanel;
+class ProgramLibraryPanel;
 class ProgramPanel;
 class RailView;
 class SimulationPanel;
@@ -80,6 +83,16 @@ class MainWindow : public QMainWindow {
     QAction* classicDialectAction() const { return classicDialect_; }
     QAction* classicLawAction() const { return classicLaw_; }
     QToolButton* emergencyButton() const { return estop_; }
+    // ---- the DNC link (issue 13) ----
+    DncLink* dncLink() const { return dnc_; }
+    /// Options > DNC (non-modal, one at a time): shown and returned.
+    DncDialog* openDncDialog();
+    QAction* dncAction() const { return dncAction_; }
+    /// Options > Remote, also on the safety bar: the operator's consent to the link's writes.
+    QAction* remoteAction() const { return remote_; }
+    QToolButton* remoteButton() const { return remoteButton_; }
+    QLabel* dncLabel() const { return dncLabel_; }
+    ProgramLibraryPanel* library() const { return library_; }
 
   protected:
     void closeEvent(QCloseEvent* e) override;
@@ -115,6 +128,8 @@ class MainWindow : public QMainWindow {
   private:
     void applyGain(int which, double value);
     void loadGainsFromSettings();
+    void showDncState();
+    void addDncLine(const QString& line);
 
     MachineLink& link_;
     QSettings& settings_;
@@ -132,14 +147,20 @@ class MainWindow : public QMainWindow {
     bool defaultSizesPending_ = false;  ///< no saved layout: default dock sizes at first show
     Confirmer confirmer_;
     std::function<QString()> online_;
-    QDockWidget *programDock_, *plotDock_, *jogDock_, *historyDock_, *railDock_, *simulationDock_;
+    QDockWidget *programDock_, *plotDock_, *jogDock_, *historyDock_, *railDock_, *simulationDock_,
+        *libraryDock_;
     QMenu *fileMenu_, *commandMenu_, *optionsMenu_, *languageMenu_, *themeMenu_, *lawMenu_,
         *dialectMenu_, *viewMenu_, *helpMenu_;
     QAction *select_, *exit_, *manual_, *automatic_, *compile_, *execute_, *keys_, *resetLayout_;
     QAction *classicTheme_, *systemTheme_, *classicLaw_, *engineeredLaw_, *standardDialect_,
         *classicDialect_;
     QActionGroup* languages_;
-    QToolButton *estop_, *resetEstop_, *ack_;
+    QToolButton *estop_, *resetEstop_, *ack_, *remoteButton_;
+    QAction *dncAction_, *remote_;
+    DncLink* dnc_;
+    DncDialog* dncDialog_ = nullptr;
+    ProgramLibraryPanel* library_;
+    QLabel* dncLabel_;  ///< the link's state in the status bar; hidden while it is off
     QToolBar* safetyBar_;
     QLabel* stateLabel_;
     QLabel* hintLabel_;    ///< what to do next (after an alarm, before homing)

@@ -113,10 +113,13 @@ bool DncServer::listenTcp(const QString& host, quint16 port, QString* error) {
         }
         refusingClients_ = false;
         peers_.insert(s, name);
+        emit clientsChanged();
         return true;
     }));
-    connect(srv, &QModbusTcpServer::modbusClientDisconnected, this,
-            [this](QTcpSocket* s) { peers_.remove(s); });
+    connect(srv, &QModbusTcpServer::modbusClientDisconnected, this, [this](QTcpSocket* s) {
+        peers_.remove(s);
+        emit clientsChanged();
+    });
     if (!srv->connectDevice() || srv->state() != QModbusDevice::ConnectedState) {
         if (error) *error = srv->errorString();
         delete srv;

@@ -51,10 +51,14 @@ class DncServer : public QObject {
     QString tcpClients() const;
     /// The peer of that socket ("127.0.0.1:50412"); all peers when it is not known.
     QString peerName(QTcpSocket* socket) const;
+    /// How many TCP clients are connected now (the screens' status bar).
+    int clientCount() const { return static_cast<int>(peers_.size()); }
 
   signals:
     /// A line for the history (history lines of the controller, and the link's own).
     void historyLine(const QString& line);
+    /// A TCP client connected or went away (clientCount() says how many now).
+    void clientsChanged();
 
   private:
     void refresh();

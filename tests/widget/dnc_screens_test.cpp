@@ -1,0 +1,465 @@
+// Issue 13 at the screens: Options > DNC serves the same DncServer as trilho-cli serve over the
+// screens' own servo worker; a real Modbus TCP client (QModbusTcpClient) reads and writes it.
+// Offscreen, on the simulated rail in real time; every wait is on an observed condition with a
+// deadline (QTRY_*, QSignalSpy), never a bare sleep.
+#include <QAction>
+#include <QCheckBox>
+#include <QDockWidget>
+#include <QFile>
+#include <QGroupBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QModbusReply>
+#include <QModbusTcpClient>
+#include <QPushButton>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTableWidget>
+#include <QTcpServer>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QToolButton>
+#include <QTreeWidget>
+#include <cmath>
+
+#include "core/dnc/register_map.h"
+#include "translations/i18n.h"
+#include "ui/dnc_dialog.h"
+#include "ui/dnc_link.h"
+#include "ui/history_panel.h"
+#include "ui/machine_link.h"
+#include "ui/main_window.h"
+#include "ui/program_library_panel.h"
+#include "ui/program_panel.h"
+
+using namespace trilho;
+using namespace trilho::ui;
+
+namespace {
+
+/// A port nobody listens on now (the OS's pick; closed again before the dialog takes it).
+quint16 freePort() {
+    QTcpServer probe;
+    if (!probe.listen(QHostAddress::LocalHost, 0)) return 0;
+    return probe.serverPort();
+}
+
+/// Waits for a Modbus reply (the event loop runs meanwhile); false after 5 s.
+bool finished(QModbusReply* reply) {
+    if (!reply) return false;
+    if (reply->isFinished()) return true;
+    QSignalSpy done(reply, &QModbusReply::finished);
+    return done.wait(5000);
+}
+
+}  // namespace
+
+class DncScreensTest : public QObject {
+    Q_OBJECT
+
+  private:
+    QTemporaryDir dir_;
+    std::unique_ptr<QSettings> settings_;
+    std::unique_ptr<MachineLink> link_;
+    std::unique_ptr<MainWindow> window_;
+    std::unique_ptr<QModbusTcpClient> client_;
+
+    QString programsDir() const { return dir_.filePath(QStringLiteral("programs")); }
+    void writeFile(const QString& path, const QByteArray& text) {
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(text);
+    }
+    /// Options > DNC filled in and applied; returns the dialog.
+    DncDialog* serve(const QString& host, const QString& port, bool* ok) {
+        DncDialog* d = window_->openDncDialog();
+        d->enabledBox()->setChecked(true);
+        d->hostEdit()->setText(host);
+        d->portEdit()->setText(port);
+        d->programsEdit()->setText(programsDir());
+        *ok = d->apply();
+        return d;
+    }
+    void connectClient(quint16 port) {
+        client_ = std::make_unique<QModbusTcpClient>();
+        client_->setConnectionParameter(QModbusDevice::NetworkAddressParameter,
+                                        QStringLiteral("127.0.0.1"));
+        client_->setConnectionParameter(QModbusDevice::NetworkPortParameter, port);
+        client_->setTimeout(3000);
+        client_->setNumberOfRetries(0);
+        QVERIFY(client_->connectDevice());
+        QTRY_COMPARE_WITH_TIMEOUT(client_->state(), QModbusDevice::ConnectedState, 5000);
+    }
+    quint16 readInput(std::uint16_t address) {
+        std::unique_ptr<QModbusReply> r(client_->sendReadRequest(
+            QModbusDataUnit(QModbusDataUnit::InputRegisters, address, 1), 1));
+        if (!finished(r.get()) || r->error() != QModbusDevice::NoError) return 0xFFFF;
+        return r->result().value(0);
+    }
+    /// Writes the feed override (holding 6-7, float32, high word first); the reply.
+    std::unique_ptr<QModbusReply> writeFeed(float factor) {
+        const dnc::Words w = dnc::splitFloat(factor);
+        QModbusDataUnit unit(QModbusDataUnit::HoldingRegisters, dnc::hold::kFeedOverride, 2);
+        unit.setValue(0, w.hi);
+        unit.setValue(1, w.lo);
+        std::unique_ptr<QModbusReply> r(client_->sendWriteRequest(unit, 1));
+        return r;
+    }
+    bool historyHas(const QString& text) {
+        QTableWidget* t = window_->history()->table();
+        for (int r = 0; r < t->rowCount(); ++r)
+            if (t->item(r, 3) && t->item(r, 3)->text().contains(text)) return true;
+        return false;
+    }
+
+  private slots:
+    void init() {
+        installLanguage(QStringLiteral("en"));
+        settings_ = std::make_unique<QSettings>(dir_.filePath(QStringLiteral("s.ini")),
+                                                QSettings::IniFormat);
+        settings_->clear();
+        link_ = std::make_unique<MachineLink>(MachineProfile::rail());
+        window_ = std::make_unique<MainWindow>(*link_, *settings_);
+        window_->resize(1280, 900);
+        window_->show();
+        QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    }
+    void cleanup() {
+        client_.reset();
+        window_.reset();
+        link_.reset();
+    }
+
+    void offUntilTheOperatorServesIt() {
+        QVERIFY(!window_->dncLink()->running());
+        QVERIFY(!window_->dncLabel()->isVisible());
+        QVERIFY(!window_->remoteAction()->isEnabled());
+        QVERIFY(!window_->remoteAction()->isChecked());
+        QVERIFY(window_->remoteButton()->isVisible());  // on the main screen, greyed
+    }
+
+    void theDialogServesARealClientAndCountsIt() {
+        const quint16 port = freePort();
+        QVERIFY(port != 0);
+        bool ok = false;
+        DncDialog* d = serve(QStringLiteral("127.0.0.1"), QString::number(port), &ok);
+        QVERIFY2(ok, qPrintable(d->messageLabel()->text()));
+        QVERIFY(window_->dncLink()->running());
+        QVERIFY(!d->messageLabel()->isVisible());
+        QVERIFY(window_->dncLabel()->isVisible());
+        QCOMPARE(window_->dncLabel()->text(),
+                 QStringLiteral("DNC: 127.0.0.1:%1, Remote off, 0 clients").arg(port));
+        QCOMPARE(d->stateLabel()->text(), window_->dncLabel()->text());
+        // Remembered, but Remote is not a setting at all.
+        QCOMPARE(settings_->value(QStringLiteral("dnc/port")).toUInt(), uint(port));
+        QCOMPARE(settings_->value(QStringLiteral("dnc/enabled")).toBool(), true);
+        QVERIFY(!settings_->contains(QStringLiteral("dnc/remote")));
+
+        connectClient(port);
+        QTRY_COMPARE_WITH_TIMEOUT(
+            window_->dncLabel()->text(),
+            QStringLiteral("DNC: 127.0.0.1:%1, Remote off, 1 client").arg(port), 5000);
+        QCOMPARE(readInput(dnc::in::kVersion), dnc::kProtocolVersion);
+        QCOMPARE(readInput(dnc::in::kRemote), quint16(0));
+        QCOMPARE(readInput(dnc::in::kState), quint16(link_->status().state));
+        QVERIFY(historyHas(QStringLiteral("DNC: serving Modbus TCP on 127.0.0.1:%1").arg(port)));
+
+        // Stop from the dialog: the port closes, the label goes.
+        d->enabledBox()->setChecked(false);
+        QVERIFY(d->apply());
+        QVERIFY(!window_->dncLink()->running());
+        QVERIFY(!window_->dncLabel()->isVisible());
+        QCOMPARE(d->stateLabel()->text(), QStringLiteral("DNC: off"));
+        QTRY_COMPARE_WITH_TIMEOUT(client_->state(), QModbusDevice::UnconnectedState, 5000);
+    }
+
+    void remoteOffRefusesAWriteAndTheHistorySaysSoOnAcceptsIt() {
+        const quint16 port = freePort();
+        bool ok = false;
+        serve(QStringLiteral("localhost"), QString::number(port), &ok);
+        QVERIFY(ok);
+        QVERIFY(window_->remoteAction()->isEnabled());
+        QVERIFY(!window_->remoteAction()->isChecked());
+        connectClient(port);
+        const double before = link_->status().feedOverride;
+
+        auto refused = writeFeed(0.5f);
+        QVERIFY(finished(refused.get()));
+        QCOMPARE(refused->error(), QModbusDevice::ProtocolError);
+        QCOMPARE(refused->rawResult().exceptionCode(), QModbusPdu::IllegalFunction);
+        QTRY_VERIFY_WITH_TIMEOUT(historyHas(QStringLiteral("DNC: write refused (Remote is off): "
+                                                           "function 16 from 127.0.0.1:")),
+                                 5000);
+        QCOMPARE(link_->status().feedOverride, before);
+
+        // The operator's consent, by its key on the main screen.
+        window_->activateWindow();
+        QTRY_VERIFY(window_->isActiveWindow());
+        QTest::keyClick(window_.get(), Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
+        QVERIFY(window_->remoteAction()->isChecked());
+        QVERIFY(window_->dncLink()->remote());
+        QVERIFY(window_->remoteButton()->isChecked());
+        QVERIFY(window_->dncLabel()->text().contains(QStringLiteral("Remote ON")));
+        QVERIFY(historyHas(QStringLiteral("DNC: Remote on")));
+        QCOMPARE(readInput(dnc::in::kRemote), quint16(1));
+
+        auto accepted = writeFeed(0.5f);
+        QVERIFY(finished(accepted.get()));
+        QCOMPARE(accepted->error(), QModbusDevice::NoError);
+        QTRY_COMPARE_WITH_TIMEOUT(link_->status().feedOverride, 0.5, 5000);
+
+        // Off again: refused again.
+        window_->remoteAction()->trigger();
+        QVERIFY(!window_->dncLink()->remote());
+        auto again = writeFeed(1.0f);
+        QVERIFY(finished(again.get()));
+        QCOMPARE(again->error(), QModbusDevice::ProtocolError);
+        QCOMPARE(link_->status().feedOverride, 0.5);
+    }
+
+    void theSupervisorRunsAProgramByNumberOnTheScreensController() {
+        // One controller: a program started over the link moves the rail the screens show.
+        QDir().mkpath(programsDir());
+        writeFile(programsDir() + QStringLiteral("/0042.G"),
+                  "( to x = 20 mm and stop )\nN10 G90\nN20 G01 X20 F50\nN30 M02\n");
+        const quint16 port = freePort();
+        bool ok = false;
+        serve(QStringLiteral("127.0.0.1"), QString::number(port), &ok);
+        QVERIFY(ok);
+        connectClient(port);
+        window_->remoteAction()->trigger();
+        QVERIFY(window_->dncLink()->remote());
+        // Command 1 (start program), argument 42, seq 7: registers 8..10 in one request.
+        QModbusDataUnit start(QModbusDataUnit::HoldingRegisters, dnc::hold::kCommand, 3);
+        start.setValue(0, quint16(dnc::Command::StartProgram));
+        start.setValue(1, 42);
+        start.setValue(2, 7);
+        {
+            std::unique_ptr<QModbusReply> r(client_->sendWriteRequest(start, 1));
+            QVERIFY(finished(r.get()));
+            QCOMPARE(r->error(), QModbusDevice::NoError);
+        }
+        QVERIFY(historyHas(QStringLiteral("DNC: program 42 started")));
+        QTRY_COMPARE_WITH_TIMEOUT(readInput(dnc::in::kCommandSeq), quint16(7), 10000);
+        QCOMPARE(readInput(dnc::in::kCommandResult), quint16(dnc::CommandResult::Applied));
+        QCOMPARE(readInput(dnc::in::kProgram), quint16(42));
+        // It homes first (automatic from manual), then runs to x = 20 mm and ends there.
+        QTRY_VERIFY_WITH_TIMEOUT(link_->status().homed && link_->status().programFinished, 60000);
+        QVERIFY(std::abs(link_->status().servo.positionMm - 20.0) < 0.5);
+        QVERIFY(window_->automaticAction()->isChecked());  // the screens follow
+    }
+
+    void remoteIsOffAtEveryStart() {
+        // A link that was on comes back at start, but never with Remote on (even with a
+        // hand-written "dnc/remote" in the file).
+        const quint16 port = freePort();
+        settings_->setValue(QStringLiteral("dnc/enabled"), true);
+        settings_->setValue(QStringLiteral("dnc/port"), port);
+        settings_->setValue(QStringLiteral("dnc/programs"), programsDir());
+        settings_->setValue(QStringLiteral("dnc/remote"), true);
+        window_.reset();
+        window_ = std::make_unique<MainWindow>(*link_, *settings_);
+        window_->show();
+        QVERIFY(window_->dncLink()->running());
+        QVERIFY(window_->remoteAction()->isEnabled());
+        QVERIFY(!window_->remoteAction()->isChecked());
+        QVERIFY(!window_->dncLink()->remote());
+        QCOMPARE(window_->dncLabel()->text(),
+                 QStringLiteral("DNC: 127.0.0.1:%1, Remote off, 0 clients").arg(port));
+        // A new start from the dialog is off too.
+        window_->remoteAction()->trigger();
+        QVERIFY(window_->dncLink()->remote());
+        bool ok = false;
+        serve(QStringLiteral("127.0.0.1"), QString::number(port), &ok);
+        QVERIFY(ok);
+        QVERIFY(!window_->dncLink()->remote());
+        QVERIFY(!window_->remoteAction()->isChecked());
+    }
+
+    void aTakenPortIsSaidNotCrashed() {
+        QTcpServer squatter;
+        QVERIFY(squatter.listen(QHostAddress(QStringLiteral("127.0.0.1")), 0));
+        const quint16 port = squatter.serverPort();
+        bool ok = true;
+        DncDialog* d = serve(QStringLiteral("127.0.0.1"), QString::number(port), &ok);
+        QVERIFY(!ok);
+        QVERIFY(!window_->dncLink()->running());
+        QVERIFY(d->messageLabel()->isVisible());
+        QVERIFY2(d->messageLabel()->text().startsWith(
+                     QStringLiteral("Cannot listen on 127.0.0.1:%1: ").arg(port)),
+                 qPrintable(d->messageLabel()->text()));
+        QVERIFY(d->messageLabel()->text().contains(QStringLiteral("choose another port")));
+        QVERIFY(window_->dncLabel()->isVisible());
+        QCOMPARE(window_->dncLabel()->text(),
+                 QStringLiteral("DNC: cannot listen on 127.0.0.1:%1 (port taken?)").arg(port));
+        QVERIFY(!window_->remoteAction()->isEnabled());
+        QVERIFY(historyHas(
+            QStringLiteral("DNC: not serving: cannot listen on 127.0.0.1:%1: ").arg(port)));
+        // Another port then works, and the error goes.
+        const quint16 other = freePort();
+        d->portEdit()->setText(QString::number(other));
+        QVERIFY(d->apply());
+        QVERIFY(!d->messageLabel()->isVisible());
+        QVERIFY(window_->dncLabel()->text().startsWith(
+            QStringLiteral("DNC: 127.0.0.1:%1,").arg(other)));
+    }
+
+    void badInputsAreExplainedAndANonLocalAddressWarns() {
+        DncDialog* d = window_->openDncDialog();
+        QVERIFY(QTest::qWaitForWindowExposed(d));
+        QCOMPARE(d->hostEdit()->text(), QStringLiteral("127.0.0.1"));  // the defaults
+        QCOMPARE(d->portEdit()->text(), QStringLiteral("1502"));
+        QVERIFY(!d->enabledBox()->isChecked());
+        QVERIFY(!d->rtuGroup()->isChecked());
+        QVERIFY(!d->warningLabel()->isVisible());
+        d->hostEdit()->setText(QStringLiteral("0.0.0.0"));
+        QVERIFY(d->warningLabel()->isVisible());
+        QVERIFY(d->warningLabel()->text().contains(QStringLiteral("no password")));
+        QVERIFY(d->warningLabel()->text().contains(QStringLiteral("0.0.0.0")));
+        d->hostEdit()->setText(QStringLiteral("192.168.0.10"));
+        QVERIFY(d->warningLabel()->isVisible());
+        d->hostEdit()->setText(QStringLiteral("localhost"));
+        QVERIFY(!d->warningLabel()->isVisible());
+        d->hostEdit()->setText(QStringLiteral("::1"));
+        QVERIFY(!d->warningLabel()->isVisible());
+
+        d->enabledBox()->setChecked(true);
+        d->hostEdit()->setText(QStringLiteral("plc.local"));
+        QVERIFY(!d->apply());
+        QVERIFY(d->messageLabel()->text().startsWith(
+            QStringLiteral("The address 'plc.local' is not an IP address")));
+        QVERIFY(!window_->dncLink()->running());
+        d->hostEdit()->setText(QStringLiteral("127.0.0.1"));
+        for (const char* bad : {"abc", "0", "70000", "", "-5"}) {
+            d->portEdit()->setText(QLatin1String(bad));
+            QVERIFY(!d->apply());
+            QCOMPARE(d->messageLabel()->text().left(47),
+                     QStringLiteral("The port must be a whole number from 1 to 65535"));
+            QVERIFY(!window_->dncLink()->running());
+        }
+        d->portEdit()->setText(QString::number(freePort()));
+        d->rtuGroup()->setChecked(true);
+        d->rtuDeviceEdit()->clear();
+        QVERIFY(!d->apply());
+        QVERIFY(d->messageLabel()->text().startsWith(QStringLiteral("Modbus RTU needs")));
+        // Nothing bad was remembered.
+        QVERIFY(!settings_->contains(QStringLiteral("dnc/port")));
+        // A serial device that is not there: said, and TCP is not left half-served.
+        d->rtuDeviceEdit()->setText(dir_.filePath(QStringLiteral("no-such-tty")));
+        QVERIFY(!d->apply());
+        QVERIFY(d->messageLabel()->text().startsWith(
+            QStringLiteral("Cannot open the serial device %1 for Modbus RTU: ")
+                .arg(dir_.filePath(QStringLiteral("no-such-tty")))));
+        QVERIFY(!window_->dncLink()->running());
+        QCOMPARE(window_->dncLabel()->text(),
+                 QStringLiteral("DNC: cannot open %1")
+                     .arg(dir_.filePath(QStringLiteral("no-such-tty"))));
+        // Closed and opened again: what is remembered, not what was typed.
+        d->close();
+        d->portEdit()->setText(QStringLiteral("junk"));
+        QCOMPARE(window_->openDncDialog(), d);
+        QCOMPARE(d->portEdit()->text(), settings_->value(QStringLiteral("dnc/port")).toString());
+        QVERIFY(!d->messageLabel()->isVisible());
+    }
+
+    void theLibraryListsProgramsByNumberAndFollowsTheFolder() {
+        QDir().mkpath(programsDir());
+        writeFile(programsDir() + QStringLiteral("/0042.G"),
+                  "( Pick and place at the lathe )\nN10 G90\nN20 G01 X100 F50\nN30 M02\n");
+        writeFile(programsDir() + QStringLiteral("/notes.txt"), "not a program");
+        DncDialog* d = window_->openDncDialog();
+        d->programsEdit()->setText(programsDir());
+        QVERIFY(d->apply());  // off, but the folder is taken
+        ProgramLibraryPanel* lib = window_->library();
+        QCOMPARE(lib->folder(), programsDir());
+        QTreeWidget* list = lib->list();
+        QCOMPARE(list->topLevelItemCount(), 1);
+        QCOMPARE(list->topLevelItem(0)->text(0), QStringLiteral("42"));
+        QCOMPARE(list->topLevelItem(0)->text(1), QStringLiteral("0042.G"));
+        QCOMPARE(list->topLevelItem(0)->text(2), QStringLiteral("Pick and place at the lathe"));
+        QVERIFY(!list->topLevelItem(0)->text(3).isEmpty());
+
+        // A new program appears (as a download would write it): listed in number order.
+        writeFile(programsDir() + QStringLiteral("/0007.G"), "N10 G90\nN20 M02\n");
+        QTRY_COMPARE_WITH_TIMEOUT(list->topLevelItemCount(), 2, 5000);
+        QCOMPARE(list->topLevelItem(0)->text(0), QStringLiteral("7"));
+        QCOMPARE(list->topLevelItem(0)->text(2), QStringLiteral("16 bytes, no comment"));
+        QCOMPARE(list->topLevelItem(1)->text(0), QStringLiteral("42"));
+
+        // Open: the program in the editor, as Select does with a file.
+        list->setCurrentItem(list->topLevelItem(1));
+        QVERIFY(lib->openButton()->isEnabled());
+        lib->openButton()->click();
+        QCOMPARE(window_->programPanel()->path(), programsDir() + QStringLiteral("/0042.G"));
+        QVERIFY(window_->programPanel()->text().contains(QStringLiteral("Pick and place")));
+
+        // And it goes when removed.
+        QVERIFY(QFile::remove(programsDir() + QStringLiteral("/0007.G")));
+        QTRY_COMPARE_WITH_TIMEOUT(list->topLevelItemCount(), 1, 5000);
+    }
+
+    void aFolderNotYetMadeIsWatchedUntilItIs() {
+        const QString later = dir_.filePath(QStringLiteral("later/programs"));
+        window_->library()->setFolder(later);
+        QCOMPARE(window_->library()->list()->topLevelItemCount(), 0);
+        QVERIFY(QDir().mkpath(dir_.filePath(QStringLiteral("later"))));
+        QVERIFY(QDir().mkpath(later));
+        writeFile(later + QStringLiteral("/0001.G"), "; first\nN10 M02\n");
+        QTRY_COMPARE_WITH_TIMEOUT(window_->library()->list()->topLevelItemCount(), 1, 5000);
+        QCOMPARE(window_->library()->list()->topLevelItem(0)->text(2), QStringLiteral("first"));
+    }
+
+    /// With TRILHO_SCREENSHOT_DIR set (run under xvfb with QT_QPA_PLATFORM=xcb for real
+    /// fonts): the main screen serving a client with Remote on, and Options > DNC with a
+    /// non-local address, in English and pt_BR, for docs/screenshots/dnc_*.png.
+    void screenshots() {
+        const QString out = qEnvironmentVariable("TRILHO_SCREENSHOT_DIR");
+        if (out.isEmpty()) QSKIP("TRILHO_SCREENSHOT_DIR not set");
+        QDir().mkpath(programsDir());
+        writeFile(programsDir() + QStringLiteral("/0042.G"),
+                  "( Pick and place at the lathe )\nN10 G90\nN20 G01 X100 F50\nN30 M02\n");
+        writeFile(programsDir() + QStringLiteral("/0007.G"),
+                  "; Load cycle: store, lathe, mill\nN10 G90\nN20 G00 X0\nN30 M02\n");
+        writeFile(programsDir() + QStringLiteral("/0100.G"), "N10 G90\nN20 M02\n");
+        window_->resize(1366, 768);
+        const quint16 port = freePort();
+        for (const QString& lang : {QStringLiteral("en"), QStringLiteral("pt_BR")}) {
+            window_->setLanguage(lang);
+            bool ok = false;
+            DncDialog* d = serve(QStringLiteral("127.0.0.1"), QString::number(port), &ok);
+            QVERIFY(ok);
+            connectClient(port);
+            QTRY_VERIFY_WITH_TIMEOUT(window_->dncLink()->clientCount() == 1, 5000);
+            {
+                auto refused = writeFeed(0.5f);  // a history line (the reply before its client)
+                QVERIFY(finished(refused.get()));
+            }
+            window_->remoteAction()->trigger();
+            d->close();
+            window_->findChild<QDockWidget*>(QStringLiteral("libraryDock"))->raise();
+            window_->findChild<QDockWidget*>(QStringLiteral("historyDock"))->raise();
+            QTRY_VERIFY_WITH_TIMEOUT(window_->dncLabel()->text().contains(QLatin1String("1 ")),
+                                     5000);
+            QCoreApplication::processEvents();
+            QVERIFY(window_->grab().save(out + QStringLiteral("/dnc_main_%1.png").arg(lang)));
+            d = window_->openDncDialog();
+            d->hostEdit()->setText(QStringLiteral("0.0.0.0"));
+            d->adjustSize();
+            QCoreApplication::processEvents();
+            QVERIFY(d->grab().save(out + QStringLiteral("/dnc_dialog_%1.png").arg(lang)));
+            d->hostEdit()->setText(QStringLiteral("127.0.0.1"));
+            d->close();
+            client_.reset();
+        }
+    }
+
+    void commentsAreFoundAsTheCompilerReadsThem() {
+        QCOMPARE(ProgramLibraryPanel::firstComment("%\n(  Endless shuttle )\nN10"),
+                 QStringLiteral("Endless shuttle"));
+        QCOMPARE(ProgramLibraryPanel::firstComment("N10 G90 ; go\n"), QStringLiteral("go"));
+        QCOMPARE(ProgramLibraryPanel::firstComment("N10 G90\nN20 M02\n"), QString());
+    }
+};
+
+QTEST_MAIN(DncScreensTest)
+#include "dnc_screens_test.moc"
