@@ -4,7 +4,9 @@
 // deadline (QTRY_*, QSignalSpy), never a bare sleep.
 #include <QAction>
 #include <QCheckBox>
+#include <QDir>
 #include <QDockWidget>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QGroupBox>
 #include <QLabel>
@@ -29,6 +31,7 @@
 #include "ui/history_panel.h"
 #include "ui/machine_link.h"
 #include "ui/main_window.h"
+#include "ui/run_controls.h"
 #include "ui/program_library_panel.h"
 #include "ui/program_panel.h"
 
@@ -247,6 +250,64 @@ class DncScreensTest : public QObject {
         QTRY_VERIFY_WITH_TIMEOUT(link_->status().homed && link_->status().programFinished, 60000);
         QVERIFY(std::abs(link_->status().servo.positionMm - 20.0) < 0.5);
         QVERIFY(window_->automaticAction()->isChecked());  // the screens follow
+    }
+
+    /// Command `code` with argument and seq in one request; waits for the seq's echo and
+    /// returns the result register.
+    quint16 command(dnc::Command code, quint16 argument, quint16 seq) {
+        QModbusDataUnit unit(QModbusDataUnit::HoldingRegisters, dnc::hold::kCommand, 3);
+        unit.setValue(0, quint16(code));
+        unit.setValue(1, argument);
+        unit.setValue(2, seq);
+        std::unique_ptr<QModbusReply> r(client_->sendWriteRequest(unit, 1));
+        if (!finished(r.get()) || r->error() != QModbusDevice::NoError) return 0xFFFF;
+        QElapsedTimer t;
+        t.start();
+        while (readInput(dnc::in::kCommandSeq) != seq && t.elapsed() < 10000)
+            QTest::qWait(5);  // polling the echo with a deadline, not a synchronisation
+        return readInput(dnc::in::kCommandResult);
+    }
+
+    void theMachinesEStopAndStopWinOverTheLink() {
+        // machine.md 3.6 / issue 13: the operator at the machine always wins. A slow move
+        // (10 % feed) so the program is still running when the operator acts.
+        QDir().mkpath(programsDir());
+        writeFile(programsDir() + QStringLiteral("/0042.G"),
+                  "( slow )\nN10 G90\nN20 G01 X150 F10\nN30 M02\n");
+        const quint16 port = freePort();
+        bool ok = false;
+        serve(QStringLiteral("127.0.0.1"), QString::number(port), &ok);
+        QVERIFY(ok);
+        connectClient(port);
+        window_->remoteAction()->trigger();
+        QCOMPARE(command(dnc::Command::StartProgram, 42, 1), quint16(dnc::CommandResult::Applied));
+        QTRY_COMPARE_WITH_TIMEOUT(link_->status().state, ControllerState::Running, 60000);
+
+        // E-stop at the machine: the link can neither continue, acknowledge it away, nor
+        // start again; only Reset E-stop at the screens does.
+        window_->emergencyButton()->click();
+        QTRY_COMPARE_WITH_TIMEOUT(link_->status().state, ControllerState::EStop, 5000);
+        QCOMPARE(command(dnc::Command::Continue, 0, 2), quint16(dnc::CommandResult::Applied));
+        QCOMPARE(command(dnc::Command::Acknowledge, 0, 3), quint16(dnc::CommandResult::Applied));
+        QCOMPARE(command(dnc::Command::StartProgram, 42, 4), quint16(dnc::CommandResult::NotReady));
+        QCOMPARE(command(dnc::Command::SelectAutomatic, 0, 5),
+                 quint16(dnc::CommandResult::Applied));
+        QCOMPARE(link_->status().state, ControllerState::EStop);
+        QCOMPARE(readInput(dnc::in::kState), quint16(ControllerState::EStop));
+
+        // Stop at the machine: the program is abandoned and a Continue from the link does not
+        // bring it back.
+        link_->resetEmergencyStop();
+        link_->acknowledge();
+        QTRY_VERIFY_WITH_TIMEOUT(link_->status().state != ControllerState::EStop, 5000);
+        QCOMPARE(command(dnc::Command::StartProgram, 42, 6), quint16(dnc::CommandResult::Applied));
+        QTRY_COMPARE_WITH_TIMEOUT(link_->status().state, ControllerState::Running, 60000);
+        window_->runControls()->stopAction()->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(link_->status().state, ControllerState::AutoIdle, 10000);
+        const double stoppedAt = link_->status().servo.positionMm;
+        QCOMPARE(command(dnc::Command::Continue, 0, 7), quint16(dnc::CommandResult::Applied));
+        QCOMPARE(link_->status().state, ControllerState::AutoIdle);
+        QVERIFY(std::abs(link_->status().servo.positionMm - stoppedAt) < 0.5);
     }
 
     void remoteIsOffAtEveryStart() {
