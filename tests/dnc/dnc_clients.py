@@ -46,20 +46,26 @@ def free_port():
 
 class Server:
     def __init__(self, cli, programs, remote=True, extra=()):
-        self.port = free_port()
-        args = [cli, "serve", "--virtual-time", "--modbus-tcp", f"127.0.0.1:{self.port}",
-                "--programs", programs] + (["--remote"] if remote else []) + list(extra)
-        self.proc = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                                     text=True)
-        self.lines = []
-        deadline = time.monotonic() + 20
-        while time.monotonic() < deadline:
-            line = self.proc.stdout.readline()
-            if not line:
+        # A free port can be taken again before serve binds it (tests run in parallel): a
+        # "cannot listen" is retried on another port, anything else fails the test.
+        for attempt in range(5):
+            self.port = free_port()
+            args = [cli, "serve", "--virtual-time", "--modbus-tcp", f"127.0.0.1:{self.port}",
+                    "--programs", programs] + (["--remote"] if remote else []) + list(extra)
+            self.proc = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                         text=True)
+            self.lines = []
+            deadline = time.monotonic() + 20
+            while time.monotonic() < deadline:
+                line = self.proc.stdout.readline()
+                if not line:
+                    break
+                self.lines.append(line)
+                if "Modbus TCP on" in line:
+                    return
+            self.proc.wait(timeout=20)
+            if "cannot listen" not in "".join(self.lines):
                 break
-            self.lines.append(line)
-            if "Modbus TCP on" in line:
-                return
         raise SystemExit("server did not start: " + "".join(self.lines))
 
     def stop(self):
