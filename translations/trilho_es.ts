@@ -440,6 +440,21 @@
     </message>
 </context>
 <context>
+    <name>trilho::SerialLine</name>
+    <message>
+        <source>serial port %1: %2 (was the device unplugged?)</source>
+        <translation>puerto serie %1: %2 (¿se desconectó el dispositivo?)</translation>
+    </message>
+    <message>
+        <source>cannot open serial port %1: %2</source>
+        <translation>no se puede abrir el puerto serie %1: %2</translation>
+    </message>
+    <message>
+        <source>cannot set %1 bit/s 8N1 on serial port %2: %3</source>
+        <translation>no se puede configurar %1 bit/s 8N1 en el puerto serie %2: %3</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::DcTablePanel</name>
     <message>
         <source>Set point</source>
