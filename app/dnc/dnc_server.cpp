@@ -2,6 +2,7 @@
 
 #include <QModbusRtuSerialServer>
 #include <QModbusTcpServer>
+#include <QPointer>
 #include <QSerialPort>
 #include <QStringList>
 #include <QTcpSocket>
@@ -87,8 +88,17 @@ DncServer::DncServer(DncMachine& machine, ProgramLibrary library, QObject* paren
 
 DncServer::~DncServer() {
     closing_ = true;
+    // Qt 6.4's TCP server frees a client's read buffer when that client's socket is destroyed,
+    // through a connection that dies with the server: sockets still alive when the server goes
+    // leak it (LeakSanitizer, stopping the link with clients connected). So the clients are
+    // closed, and their sockets destroyed, while the server still lives.
+    QList<QPointer<QTcpSocket>> clients;
+    for (QTcpSocket* c : peers_.keys())
+        clients.append(c);
     for (QModbusServer* s : servers_)
         s->disconnectDevice();
+    for (const QPointer<QTcpSocket>& c : clients)
+        delete c.data();
 }
 
 bool DncServer::listenTcp(const QString& host, quint16 port, QString* error) {
@@ -118,7 +128,7 @@ bool DncServer::listenTcp(const QString& host, quint16 port, QString* error) {
     }));
     connect(srv, &QModbusTcpServer::modbusClientDisconnected, this, [this](QTcpSocket* s) {
         peers_.remove(s);
-        emit clientsChanged();
+        if (!closing_) emit clientsChanged();  // not to the screens while this goes away
     });
     if (!srv->connectDevice() || srv->state() != QModbusDevice::ConnectedState) {
         if (error) *error = srv->errorString();
