@@ -189,6 +189,8 @@ int serveCommand(const QStringList& args) {
         parser.isSet(programsOpt) ? parser.value(programsOpt) : QStringLiteral("programs"),
         compileOptions);
 
+    // Before the servo thread starts: a SIGUSR1 must never meet its default action (exit).
+    if (!parser.isSet(virtualOpt)) std::signal(SIGUSR1, onReport);
     std::unique_ptr<dnc::DncMachine> machine;
     dnc::WorkerMachine* realTime = nullptr;  // the timing report's source; null in virtual time
     if (parser.isSet(virtualOpt)) {
@@ -234,7 +236,6 @@ int serveCommand(const QStringList& args) {
 
     std::signal(SIGINT, onQuit);
     std::signal(SIGTERM, onQuit);
-    if (realTime) std::signal(SIGUSR1, onReport);
     QTimer quitCheck;  // a signal handler may only set a flag; the loop looks at it
     QObject::connect(&quitCheck, &QTimer::timeout, [realTime] {
         if (g_quit) QCoreApplication::quit();
