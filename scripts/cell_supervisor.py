@@ -5,8 +5,9 @@ their state side by side every REFRESH seconds until every one has finished, the
 each ended where its program ends. Started by scripts/cell-demo, which starts the machines.
 
 Usage: cell_supervisor.py PORT [PORT...] [--timeout S=120] [--refresh S=0.5]
-Machine i (1-based, in the order of the ports) gets program 100+i: out to 100+40*i mm, a 0.5 s
-dwell, back to -20*i mm, m02 (so it needs at most 20 machines on the rail's +-850 mm).
+Machine i (1-based, in the order of the ports) gets program 100+i: out to 100+40*i mm at F60
+(feeds are % of the rail's top speed), a 0.5 s dwell, back to -20*i mm at F100, m02 (so at
+most 20 machines: their targets must fit the rail's +-850 mm).
 Exit 0 when all finished on their targets, 1 otherwise, 77 when pymodbus is missing."""
 import argparse
 import struct
@@ -37,9 +38,9 @@ def program_for(i):
     out, back = 100 + 40 * i, -20 * i
     text = (f"( cell demo: machine {i} )\n"
             f"N0010 G90\n"
-            f"N0020 G01 X{out} F100\n"
+            f"N0020 G01 X{out} F60\n"
             f"N0030 G04 X0.5\n"
-            f"N0040 G01 X{back} F150\n"
+            f"N0040 G01 X{back} F100\n"
             f"N0050 M02\n")
     return 100 + i, text, float(back)
 
