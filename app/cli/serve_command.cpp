@@ -246,6 +246,7 @@ int serveCommand(const QStringList& args) {
     });
     quitCheck.start(50);
     QTimer reportTimer;
+    reportTimer.setTimerType(Qt::PreciseTimer);  // a coarse timer may fire 5 % early
     if (realTime && reportS > 0.0) {
         QObject::connect(&reportTimer, &QTimer::timeout,
                          [realTime] { out(timingLine(*realTime)); });
