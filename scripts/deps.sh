@@ -11,7 +11,7 @@ TRILHO_PACKAGES=(
   help2man desktop-file-utils file
   clang-14 libfuzzer-14-dev
   socat
-  mbpoll python3-pymodbus
+  mbpoll python3-pymodbus libmodbus-dev
 )
 missing=()
 for p in "${TRILHO_PACKAGES[@]}"; do

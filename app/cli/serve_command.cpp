@@ -1,11 +1,16 @@
 // trilho-cli serve --machine P [--modbus-tcp HOST:PORT] [--modbus-rtu DEV --baud N --unit ID]
 //   [--programs DIR] [--remote] [--virtual-time] [--time-scale K] [--fault NAME@T]...
+//   [--timing-report SECONDS]
 // The headless machine (issue 13): the rail's controller and the DNC link over Modbus, no
 // screens; runs until SIGINT or SIGTERM. Reading is always allowed; writes need --remote.
+// In real time, SIGUSR1, --timing-report and the exit print the servo thread's timing since the
+// previous report and the process's resident memory (issue 13 item 6: the load figures).
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QFile>
 #include <QHostAddress>
 #include <QTimer>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <memory>
@@ -22,8 +27,49 @@ namespace trilho::cli {
 namespace {
 
 volatile std::sig_atomic_t g_quit = 0;
+volatile std::sig_atomic_t g_report = 0;
 extern "C" void onQuit(int) {
     g_quit = 1;
+}
+extern "C" void onReport(int) {
+    g_report = 1;
+}
+
+/// Resident set size of this process, KiB (VmRSS of /proc/self/status); -1 when unreadable.
+long long residentKiB() {
+    QFile f(QStringLiteral("/proc/self/status"));
+    if (!f.open(QIODevice::ReadOnly)) return -1;
+    for (const QByteArray& line : f.readAll().split('\n')) {
+        if (!line.startsWith("VmRSS:")) continue;
+        bool ok = false;
+        const long long kib = line.mid(6).trimmed().split(' ').front().toLongLong(&ok);
+        return ok ? kib : -1;
+    }
+    return -1;
+}
+
+QString us(std::int64_t ns) {
+    return QString::number(static_cast<double>(ns) / 1000.0, 'f', 1);
+}
+
+/// One line of key=value pairs (scripts/bench-dnc reads it): the servo thread's tick-to-tick
+/// period and wake lateness since the previous report, in microseconds, and the RSS.
+QString timingLine(dnc::WorkerMachine& machine) {
+    const std::optional<TimingWindow> w = machine.takeTimingWindow();
+    if (!w) return QStringLiteral("trilho-cli serve: timing unavailable (servo thread stalled)\n");
+    return QStringLiteral(
+               "trilho-cli serve: timing window_s=%1 ticks=%2 nominal_us=%3 period_p50_us=%4 "
+               "period_p99_us=%5 period_max_us=%6 wake_p50_us=%7 wake_p99_us=%8 wake_max_us=%9 "
+               "overruns=%10 rss_kib=%11 realtime=%12\n")
+        .arg(static_cast<double>(w->endNs - w->startNs) * 1e-9, 0, 'f', 2)
+        .arg(w->period.count())
+        .arg(std::llround(machine.periodS() * 1e6))
+        .arg(us(w->period.quantileNs(0.5)), us(w->period.quantileNs(0.99)), us(w->period.maxNs()),
+             us(w->wakeLatency.quantileNs(0.5)), us(w->wakeLatency.quantileNs(0.99)),
+             us(w->wakeLatency.maxNs()))
+        .arg(w->overruns)
+        .arg(residentKiB())
+        .arg(machine.realtimePriority() ? QStringLiteral("yes") : QStringLiteral("no"));
 }
 
 }  // namespace
@@ -67,8 +113,13 @@ int serveCommand(const QStringList& args) {
         QStringLiteral("With --virtual-time: a fault T s after the first program starts "
                        "(as trilho-cli run)."),
         QStringLiteral("NAME[@T][=V]"));
+    const QCommandLineOption reportOpt(
+        QStringLiteral("timing-report"),
+        QStringLiteral("In real time: print the servo thread's timing and the memory every "
+                       "SECONDS (also on SIGUSR1 and at exit)."),
+        QStringLiteral("SECONDS"));
     parser.addOptions({machineOpt, tcpOpt, rtuOpt, baudOpt, unitOpt, programsOpt, remoteOpt,
-                       virtualOpt, scaleOpt, faultOpt});
+                       virtualOpt, scaleOpt, faultOpt, reportOpt});
     auto usage = [](const QString& message) { return usageError("serve", message); };
     if (auto done = parseArguments(parser, args, "serve")) return *done;
     if (!parser.positionalArguments().isEmpty())
@@ -114,6 +165,15 @@ int serveCommand(const QStringList& args) {
     }
     if (!faults.empty() && !parser.isSet(virtualOpt))
         return usage(QStringLiteral("--fault needs --virtual-time"));
+    double reportS = 0.0;
+    if (parser.isSet(reportOpt)) {
+        bool ok = false;
+        reportS = parser.value(reportOpt).toDouble(&ok);
+        if (!ok || !std::isfinite(reportS) || reportS < 0.1 || reportS > 86400)
+            return usage(QStringLiteral("--timing-report must be 0.1-86400 seconds"));
+        if (parser.isSet(virtualOpt))
+            return usage(QStringLiteral("--timing-report needs real time (no --virtual-time)"));
+    }
 
     const ProfileLoad load = loadNamedMachineProfile(parser.value(machineOpt));
     if (!load.profile) return usage(load.error);
@@ -129,11 +189,17 @@ int serveCommand(const QStringList& args) {
         parser.isSet(programsOpt) ? parser.value(programsOpt) : QStringLiteral("programs"),
         compileOptions);
 
+    // Before the servo thread starts: a SIGUSR1 must never meet its default action (exit).
+    if (!parser.isSet(virtualOpt)) std::signal(SIGUSR1, onReport);
     std::unique_ptr<dnc::DncMachine> machine;
-    if (parser.isSet(virtualOpt))
+    dnc::WorkerMachine* realTime = nullptr;  // the timing report's source; null in virtual time
+    if (parser.isSet(virtualOpt)) {
         machine = std::make_unique<dnc::VirtualMachine>(profile, scale, faults);
-    else
-        machine = std::make_unique<dnc::WorkerMachine>(profile);
+    } else {
+        auto worker = std::make_unique<dnc::WorkerMachine>(profile);
+        realTime = worker.get();
+        machine = std::move(worker);
+    }
     dnc::DncServer server(*machine, library);
     std::setvbuf(stdout, nullptr, _IOLBF, 0);  // one line at a time, even into a pipe
     QObject::connect(&server, &dnc::DncServer::historyLine,
@@ -171,11 +237,23 @@ int serveCommand(const QStringList& args) {
     std::signal(SIGINT, onQuit);
     std::signal(SIGTERM, onQuit);
     QTimer quitCheck;  // a signal handler may only set a flag; the loop looks at it
-    QObject::connect(&quitCheck, &QTimer::timeout, [] {
+    QObject::connect(&quitCheck, &QTimer::timeout, [realTime] {
         if (g_quit) QCoreApplication::quit();
+        if (g_report && realTime) {
+            g_report = 0;
+            out(timingLine(*realTime));
+        }
     });
     quitCheck.start(50);
+    QTimer reportTimer;
+    reportTimer.setTimerType(Qt::PreciseTimer);  // a coarse timer may fire 5 % early
+    if (realTime && reportS > 0.0) {
+        QObject::connect(&reportTimer, &QTimer::timeout,
+                         [realTime] { out(timingLine(*realTime)); });
+        reportTimer.start(static_cast<int>(std::lround(reportS * 1000.0)));
+    }
     QCoreApplication::exec();
+    if (realTime) out(timingLine(*realTime));  // since the last report, while the thread runs
     out(QStringLiteral("trilho-cli serve: stopped\n"));
     return kOk;
 }

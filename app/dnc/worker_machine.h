@@ -2,6 +2,7 @@
 // The simulated rail under its servo thread, in real time (trilho-cli serve without
 // --virtual-time): what the screens run, without the screens.
 #include <memory>
+#include <optional>
 
 #include "app/dnc/dnc_machine.h"
 #include "hal/sim/sim_rail.h"
@@ -26,6 +27,10 @@ class WorkerMachine final : public DncMachine {
         worker_->drainEvents(f);
     }
     const MachineProfile& profile() const override { return profile_; }
+    /// The servo thread's timing since the previous call (ServoWorker::takeTimingWindow).
+    std::optional<TimingWindow> takeTimingWindow() { return worker_->takeTimingWindow(); }
+    double periodS() const { return worker_->periodS(); }
+    bool realtimePriority() const { return worker_->timing().realtimePriority; }
 
   private:
     MachineProfile profile_;

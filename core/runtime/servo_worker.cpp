@@ -104,6 +104,16 @@ void ServoWorker::run() {
         }
         const std::int64_t wake = monotonicNs();
         timing_.wakeLatency.add(wake - next);
+        if (windowSwap_.load(std::memory_order_acquire)) {
+            windowIndex_.store(windowIndex_.load(std::memory_order_relaxed) ^ 1u,
+                               std::memory_order_relaxed);
+            windowSwap_.store(false, std::memory_order_release);
+        }
+        TimingWindow& window = windows_[windowIndex_.load(std::memory_order_relaxed)];
+        if (window.period.count() == 0 && window.wakeLatency.count() == 0) window.startNs = wake;
+        window.endNs = wake;
+        window.period.add(wake - lastWake);
+        window.wakeLatency.add(wake - next);
         const double dt = static_cast<double>(wake - lastWake) * 1e-9;
         lastWake = wake;
 
@@ -153,10 +163,28 @@ void ServoWorker::run() {
         next += period;
         if (end > next) {  // overran: skip the missed periods rather than burst to catch up
             ++timing_.overruns;
+            ++window.overruns;
             next = end + period - (end - next) % period;
         }
     }
     io_.writeDrive(kDacZero);
+}
+
+std::optional<TimingWindow> ServoWorker::takeTimingWindow(double timeoutS) {
+    std::lock_guard lock(windowMutex_);
+    // A request left pending by a call that timed out is still valid: wait for it.
+    windowSwap_.store(true, std::memory_order_release);
+    const std::int64_t deadline = monotonicNs() + static_cast<std::int64_t>(timeoutS * 1e9);
+    while (windowSwap_.load(std::memory_order_acquire)) {
+        if (monotonicNs() > deadline) return std::nullopt;
+        const timespec pause{0, 200000};  // 0.2 ms: a fraction of a servo period
+        nanosleep(&pause, nullptr);
+    }
+    // The thread now fills the other window; this one is ours until the next request.
+    TimingWindow& done = windows_[windowIndex_.load(std::memory_order_relaxed) ^ 1u];
+    std::optional<TimingWindow> result(done);
+    done = TimingWindow{};
+    return result;
 }
 
 void ServoWorker::keepAlarm(const ControllerEvent& e) {

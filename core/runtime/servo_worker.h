@@ -64,6 +64,16 @@ struct WorkerTiming {
     bool realtimePriority = false;       ///< SCHED_FIFO was granted
 };
 
+/// The servo thread's timing over a window of time, read while it runs (trilho-cli serve's
+/// timing report, issue 13 item 6).
+struct TimingWindow {
+    LatencyHistogram period{1000};       ///< ns between consecutive wakes (tick to tick), 1 us bins
+    LatencyHistogram wakeLatency{1000};  ///< ns late against the absolute wake time, 1 us bins
+    std::uint64_t overruns = 0;          ///< periods that ended after the next one was due
+    std::int64_t startNs = 0;            ///< monotonicNs() of the window's first tick
+    std::int64_t endNs = 0;              ///< monotonicNs() of its last tick
+};
+
 class ServoWorker {
   public:
     using PlantStep = std::function<void(double dtS)>;
@@ -111,6 +121,12 @@ class ServoWorker {
     void setTracing(bool on) { tracing_.store(on); }
     /// Timing statistics; read after stopThread() (the servo thread owns them while running).
     const WorkerTiming& timing() const { return timing_; }
+    /// The timing since the previous call (or since start()), while the thread runs: the servo
+    /// thread switches to a second, cleared window at its next tick, so it never waits nor
+    /// allocates. One caller at a time (a mutex); waits up to timeoutS for that tick and
+    /// returns nothing if it did not come (the switch then happens later and the next call
+    /// returns the window since then).
+    std::optional<TimingWindow> takeTimingWindow(double timeoutS = 1.0);
     /// Test hook run inside each tick (e.g. to stall the loop on purpose).
     void setTickHook(std::function<void()> hook) { tickHook_ = std::move(hook); }
     double periodS() const { return periodS_; }
@@ -148,6 +164,13 @@ class ServoWorker {
     SpscRing<ControllerEvent, 4096> events_;
     SpscRing<TraceRow, 65536> trace_;
     WorkerTiming timing_;
+    // Two windows: the servo thread fills windows_[windowIndex_]; takeTimingWindow() sets
+    // windowSwap_, the thread flips the index at its next tick and clears the flag (release),
+    // and the reader then owns the other window until its next request.
+    std::array<TimingWindow, 2> windows_{};
+    std::atomic<unsigned> windowIndex_{0};
+    std::atomic<bool> windowSwap_{false};
+    std::mutex windowMutex_;
     std::function<void()> tickHook_;
     std::array<ControllerEvent, 64> alarmBacklog_{};  ///< servo thread only
     std::size_t alarmBacklogHead_ = 0, alarmBacklogCount_ = 0;

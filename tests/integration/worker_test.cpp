@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <optional>
 #include <thread>
 
 #include "core/gcode/compiler.h"
@@ -95,6 +96,27 @@ TEST(ServoWorker, AStalledLoopTripsTheWatchdog) {
     EXPECT_TRUE(rig.worker.snapshot().activeAlarms & alarmBit(AlarmCode::LoopOverrun));
     EXPECT_EQ(rig.rail.driveCode(), 128);
     rig.worker.stopThread();
+}
+
+TEST(ServoWorker, TimingWindowsSplitTheTicksWhileTheLoopRuns) {
+    Rig rig;
+    rig.worker.start(false);
+    // Each window holds the ticks since the previous call; none counted twice, none lost.
+    ASSERT_TRUE(eventually([&] { return rig.worker.snapshotVersion() > 20; }));
+    const std::optional<TimingWindow> a = rig.worker.takeTimingWindow(10.0);
+    ASSERT_TRUE(a.has_value());
+    const std::uint64_t seen = rig.worker.snapshotVersion();
+    ASSERT_TRUE(eventually([&] { return rig.worker.snapshotVersion() > seen + 20; }));
+    const std::optional<TimingWindow> b = rig.worker.takeTimingWindow(10.0);
+    ASSERT_TRUE(b.has_value());
+    rig.worker.stopThread();
+    EXPECT_GT(a->period.count(), 0u);
+    EXPECT_GE(b->period.count(), 20u);
+    EXPECT_EQ(a->period.count(), a->wakeLatency.count());
+    EXPECT_GT(b->startNs, a->endNs);
+    EXPECT_LE(a->period.count() + b->period.count(), rig.worker.timing().wakeLatency.count());
+    // The period is between wakes: nominally 1 ms; no bound on a shared machine's lateness.
+    EXPECT_GT(b->period.quantileNs(0.5), 0);
 }
 
 TEST(SeqLock, ReaderNeverSeesAHalfWrittenValue) {
