@@ -121,9 +121,10 @@ bool unsettledOnly(const Outcome& o) {
 }
 
 /// Both sides of the centre: homing drives right first, as the VB did, so from the left it finds
-/// the vane at once; from the right it runs onto the right end switch first and turns back. Each from four starts a quarter of a
-/// servo period's travel at the homing speed apart, so the switches are met at four phases of
-/// the servo period (a long period may step over the vane, or read the end switch late).
+/// the vane at once; from the right it runs onto the right end switch first and turns back. Each
+/// from four starts a quarter of a servo period's travel at the homing speed apart, so the switches
+/// are met at four phases of the servo period (a long period may step over the vane, or read the
+/// end switch late).
 std::vector<double> starts(const MachineProfile& p, int phases = 4) {
     const double homingMmPerPeriod = 20.0 / 127.0 * p.plant.maxSpeedMmS() * p.loop.samplePeriodS;
     std::vector<double> s;
