@@ -115,6 +115,22 @@ class DncScreensTest : public QObject {
         return false;
     }
 
+    /// Command `code` with argument and seq in one request; waits for the seq's echo and
+    /// returns the result register.
+    quint16 command(dnc::Command code, quint16 argument, quint16 seq) {
+        QModbusDataUnit unit(QModbusDataUnit::HoldingRegisters, dnc::hold::kCommand, 3);
+        unit.setValue(0, quint16(code));
+        unit.setValue(1, argument);
+        unit.setValue(2, seq);
+        std::unique_ptr<QModbusReply> r(client_->sendWriteRequest(unit, 1));
+        if (!finished(r.get()) || r->error() != QModbusDevice::NoError) return 0xFFFF;
+        QElapsedTimer t;
+        t.start();
+        while (readInput(dnc::in::kCommandSeq) != seq && t.elapsed() < 10000)
+            QTest::qWait(5);  // polling the echo with a deadline, not a synchronisation
+        return readInput(dnc::in::kCommandResult);
+    }
+
   private slots:
     void init() {
         installLanguage(QStringLiteral("en"));
@@ -235,39 +251,13 @@ class DncScreensTest : public QObject {
         window_->remoteAction()->trigger();
         QVERIFY(window_->dncLink()->remote());
         // Command 1 (start program), argument 42, seq 7: registers 8..10 in one request.
-        QModbusDataUnit start(QModbusDataUnit::HoldingRegisters, dnc::hold::kCommand, 3);
-        start.setValue(0, quint16(dnc::Command::StartProgram));
-        start.setValue(1, 42);
-        start.setValue(2, 7);
-        {
-            std::unique_ptr<QModbusReply> r(client_->sendWriteRequest(start, 1));
-            QVERIFY(finished(r.get()));
-            QCOMPARE(r->error(), QModbusDevice::NoError);
-        }
+        QCOMPARE(command(dnc::Command::StartProgram, 42, 7), quint16(dnc::CommandResult::Applied));
         QVERIFY(historyHas(QStringLiteral("DNC: program 42 started")));
-        QTRY_COMPARE_WITH_TIMEOUT(readInput(dnc::in::kCommandSeq), quint16(7), 10000);
-        QCOMPARE(readInput(dnc::in::kCommandResult), quint16(dnc::CommandResult::Applied));
         QCOMPARE(readInput(dnc::in::kProgram), quint16(42));
         // It homes first (automatic from manual), then runs to x = 20 mm and ends there.
         QTRY_VERIFY_WITH_TIMEOUT(link_->status().homed && link_->status().programFinished, 60000);
         QVERIFY(std::abs(link_->status().servo.positionMm - 20.0) < 0.5);
         QVERIFY(window_->automaticAction()->isChecked());  // the screens follow
-    }
-
-    /// Command `code` with argument and seq in one request; waits for the seq's echo and
-    /// returns the result register.
-    quint16 command(dnc::Command code, quint16 argument, quint16 seq) {
-        QModbusDataUnit unit(QModbusDataUnit::HoldingRegisters, dnc::hold::kCommand, 3);
-        unit.setValue(0, quint16(code));
-        unit.setValue(1, argument);
-        unit.setValue(2, seq);
-        std::unique_ptr<QModbusReply> r(client_->sendWriteRequest(unit, 1));
-        if (!finished(r.get()) || r->error() != QModbusDevice::NoError) return 0xFFFF;
-        QElapsedTimer t;
-        t.start();
-        while (readInput(dnc::in::kCommandSeq) != seq && t.elapsed() < 10000)
-            QTest::qWait(5);  // polling the echo with a deadline, not a synchronisation
-        return readInput(dnc::in::kCommandResult);
     }
 
     void theMachinesEStopAndStopWinOverTheLink() {
