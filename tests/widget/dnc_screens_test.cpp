@@ -296,6 +296,8 @@ class DncScreensTest : public QObject {
         QTRY_COMPARE_WITH_TIMEOUT(link_->status().state, ControllerState::Running, 60000);
         window_->runControls()->stopAction()->trigger();
         QTRY_COMPARE_WITH_TIMEOUT(link_->status().state, ControllerState::AutoIdle, 10000);
+        // Stop is a controlled stop: the state is AutoIdle at once, the platform decelerates.
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(link_->status().servo.velocityMmS) < 0.05, 10000);
         const double stoppedAt = link_->status().servo.positionMm;
         QCOMPARE(command(dnc::Command::Continue, 0, 7), quint16(dnc::CommandResult::Applied));
         QCOMPARE(link_->status().state, ControllerState::AutoIdle);
