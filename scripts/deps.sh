@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages trilho needs to build, test and run (sudo when not root).
-# Sourced by scripts/run and scripts/test; does nothing when everything is already there.
+# Run by scripts/run and scripts/test; installs nothing when everything is already there, then
+# checks that every tool and Python module the tests use answers (scripts/check-tools), so a
+# missing package is one line here rather than a traceback inside a test.
+# Usage: scripts/deps.sh [--no-check]   (--no-check: install only; scripts/run, which runs no test)
 set -euo pipefail
 TRILHO_PACKAGES=(
   build-essential cmake ninja-build pkg-config
@@ -12,7 +15,12 @@ TRILHO_PACKAGES=(
   clang-14 libfuzzer-14-dev
   socat
   mbpoll python3-pymodbus libmodbus-dev
+  # pymodbus.client imports serial_asyncio (Debian 12's pymodbus 3.0 lists it only as a
+  # Recommends, and we install without recommends).
+  python3-serial-asyncio
 )
+check=1
+[ "${1:-}" = "--no-check" ] && check=0
 missing=()
 for p in "${TRILHO_PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -25,3 +33,4 @@ if [ ${#missing[@]} -gt 0 ]; then
   $SUDO apt-get update -qq
   $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
+[ $check -eq 0 ] || bash "$(dirname "${BASH_SOURCE[0]}")/check-tools" --quiet

@@ -2,6 +2,7 @@
 
 #include <QCommandLineParser>
 #include <QFile>
+#include <string_view>
 #include <vector>
 
 namespace trilho::cli {
@@ -21,10 +22,67 @@ std::optional<int> parseArguments(QCommandLineParser& parser, const QStringList&
     parser.addHelpOption();
     if (!parser.parse(args)) return usageError(command, parser.errorText());
     if (parser.isSet(QStringLiteral("help"))) {
-        out(parser.helpText());
+        out(parser.helpText() + QLatin1Char('\n') + exitStatusHelp(command));
         return kOk;
     }
     return std::nullopt;
+}
+
+QString exitStatusHelp(const char* command) {
+    const std::string_view c = command ? command : "";
+    QString text = QStringLiteral("Exit status:\n");
+    // "  N  meaning", wrapped at 79 columns under the meaning (help2man and terminals).
+    auto line = [&](int status, const char* meaning) {
+        QString row = QStringLiteral("  %1 ").arg(status);
+        qsizetype width = row.size();
+        for (const QString& word : QString::fromLatin1(meaning).split(QLatin1Char(' '))) {
+            if (width + 1 + word.size() > 79) {
+                row += QStringLiteral("\n     ");
+                width = 5;
+            } else {
+                row += QLatin1Char(' ');
+                ++width;
+            }
+            row += word;
+            width += word.size();
+        }
+        text += row + QLatin1Char('\n');
+    };
+    if (c == "run") {
+        line(kOk, "finished: m02 reached with the machine on its last target");
+        line(kCompileErrors, "compile errors (listed; nothing moved)");
+        line(kUsage,
+             "usage error, a file or profile that cannot be read, a trace that could not be "
+             "written (after the run's own report), or out of memory");
+        line(kAlarm,
+             "an alarm stopped the run, the program ended off its target (warning 13), a "
+             "motionless loop was held (warning 15), a serial link failed (--port), or Ctrl-C / "
+             "SIGTERM stopped a real-time run (an E-stop, reported)");
+        line(kTimeLimit, "--max-seconds ended the run (default 3600 s in --virtual-time)");
+    } else if (c == "compile") {
+        line(kOk, "no errors (warnings may be listed)");
+        line(kCompileErrors, "compile errors, each listed with its file, line and column");
+        line(kUsage, "usage error, a file that cannot be read, or out of memory");
+    } else if (c == "serve") {
+        line(kOk, "stopped by SIGINT or SIGTERM");
+        line(kUsage,
+             "usage error, a profile that cannot be read, or a port or device that cannot be "
+             "opened");
+    } else if (c == "profile") {
+        line(kOk, "the profile is valid (printed in full)");
+        line(kUsage, "usage error, or a profile that cannot be read or is invalid (named)");
+    } else if (c == "latency") {
+        line(kOk, "measured (printed)");
+        line(kUsage, "usage error");
+    } else {
+        line(kOk, "success");
+        line(kCompileErrors, "compile errors");
+        line(kUsage, "usage error, a file that cannot be read, or out of memory");
+        line(kAlarm, "run: an alarm or a warning ended the run, or it was interrupted");
+        line(kTimeLimit, "run: --max-seconds ended the run");
+        text += QStringLiteral("  Each command's --help gives its own.\n");
+    }
+    return text;
 }
 
 int usageError(const char* command, const QString& message) {

@@ -12,7 +12,9 @@ class QCommandLineParser;
 
 namespace trilho::cli {
 
-/// Exit statuses, the same for every command (issue 2 and 4).
+/// Exit statuses, the same for every command (issue 2 and 4). Each command's --help lists the
+/// ones it can return, with their meaning (exitStatusHelp), and so do its man page and the
+/// README; tests/integration/cli_exit_status_test.cpp makes each one happen.
 enum Exit : int {
     kOk = 0,
     kCompileErrors = 1,
@@ -20,6 +22,10 @@ enum Exit : int {
     kAlarm = 3,
     kTimeLimit = 4,
 };
+
+/// The "Exit status:" section of a command's --help ("compile", "run", ...; nullptr: the
+/// summary for trilho-cli --help), ending with a newline.
+QString exitStatusHelp(const char* command);
 
 void out(const QString& text);  ///< stdout, UTF-8, no newline added
 void err(const QString& text);  ///< stderr, UTF-8, no newline added

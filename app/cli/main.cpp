@@ -42,7 +42,8 @@ static int dispatch(int argc, char* argv[]) {
     if (command == QLatin1String("latency")) return trilho::cli::latencyCommand(args);
     if (command == QLatin1String("serve")) return trilho::cli::serveCommand(args);
     if (command == QLatin1String("--help") || command == QLatin1String("-h")) {
-        trilho::cli::out(QString::fromLatin1(kUsage));
+        trilho::cli::out(QString::fromLatin1(kUsage) + QLatin1Char('\n') +
+                         trilho::cli::exitStatusHelp(nullptr));
         return trilho::cli::kOk;
     }
     if (command == QLatin1String("--version")) {

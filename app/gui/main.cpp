@@ -23,65 +23,131 @@
 #include "ui/xy/xy_session_runnable.h"
 
 #include <functional>
+#include <string_view>
 
 using namespace trilho;
+
+namespace {
+
+/// The options of trilho, for the screens and for --help.
+struct Options {
+    QCommandLineOption lang{QStringLiteral("lang"), QStringLiteral("en, pt_BR or es."),
+                            QStringLiteral("lang")};
+    QCommandLineOption theme{QStringLiteral("theme"), QStringLiteral("classic or system."),
+                             QStringLiteral("theme")};
+    QCommandLineOption program{QStringLiteral("program"), QStringLiteral("Select this .G file."),
+                               QStringLiteral("FILE")};
+    QCommandLineOption noStart{QStringLiteral("no-start-screen"),
+                               QStringLiteral("Skip the start screen.")};
+    QCommandLineOption settings{QStringLiteral("settings"),
+                                QStringLiteral("Settings file (default: the user's)."),
+                                QStringLiteral("FILE.ini")};
+    QCommandLineOption size{QStringLiteral("size"), QStringLiteral("Window size, e.g. 1280x800."),
+                            QStringLiteral("WxH")};
+    QCommandLineOption automatic{QStringLiteral("automatic"),
+                                 QStringLiteral("Select Automatic at start (homes).")};
+    QCommandLineOption run{QStringLiteral("run"),
+                           QStringLiteral("Execute the program once homed.")};
+    QCommandLineOption shot{QStringLiteral("screenshot"),
+                            QStringLiteral("Save the main window to this PNG and quit."),
+                            QStringLiteral("FILE.png")};
+    QCommandLineOption shotAfter{QStringLiteral("screenshot-after"),
+                                 QStringLiteral("Seconds before the screenshot (default 1)."),
+                                 QStringLiteral("S"), QStringLiteral("1")};
+    QCommandLineOption quit{QStringLiteral("quit-after"),
+                            QStringLiteral("Quit after this many seconds."), QStringLiteral("S")};
+    QCommandLineOption machine{
+        QStringLiteral("machine"),
+        QStringLiteral("Machine profile: a file, or a shipped one by name (rail, xy_dc_table, "
+                       "xy_plotter). Remembered."),
+        QStringLiteral("PROFILE")};
+    QCommandLineOption port{
+        QStringLiteral("port"),
+        QStringLiteral("An XY machine's board on this serial port (default: simulated)."),
+        QStringLiteral("DEV")};
+    QCommandLineOption baud{QStringLiteral("baud"),
+                            QStringLiteral("Bit rate of --port (default: the board's)."),
+                            QStringLiteral("N")};
+
+    void addTo(QCommandLineParser& parser) const {
+        parser.setApplicationDescription(QStringLiteral(
+            "Numerical control screens for the robot rail and the XY tables (simulated by "
+            "default).\n\nA display is needed for the screens (DISPLAY, WAYLAND_DISPLAY, or "
+            "QT_QPA_PLATFORM=offscreen for tests); --help and --version need none."));
+        parser.addHelpOption();
+        parser.addVersionOption();
+        parser.addOptions({lang, theme, program, noStart, settings, size, automatic, run, shot,
+                           shotAfter, quit, machine, port, baud});
+    }
+};
+
+void nameApplication() {
+    QCoreApplication::setOrganizationName(QStringLiteral("trilho"));
+    QCoreApplication::setApplicationName(QStringLiteral("trilho"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(TRILHO_VERSION));
+}
+
+/// --help, --version (and their short forms) answer with no display: the screens' application
+/// object aborts without one, so these are answered by a core application first.
+bool wantsTextOnly(int argc, char* argv[]) {
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view a(argv[i]);
+        if (a == "--help" || a == "-h" || a == "-?" || a == "--help-all" || a == "--version" ||
+            a == "-v")
+            return true;
+    }
+    return false;
+}
+
+/// Whether Qt will find a display; false with one clear line on stderr (Qt itself aborts with
+/// "could not connect to display" and a core dump).
+bool displayAvailable() {
+    if (qEnvironmentVariableIsSet("QT_QPA_PLATFORM")) return true;  // the user chose
+    if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY")) {
+        std::fprintf(stderr,
+                     "trilho: no display (neither DISPLAY nor WAYLAND_DISPLAY is set): start it "
+                     "from a desktop session, or under xvfb-run, or with "
+                     "QT_QPA_PLATFORM=offscreen; trilho-cli runs programs with no display\n");
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
 
 int main(int argc, char* argv[]) {
     QElapsedTimer launch;
     launch.start();
+    const Options options;
+    if (wantsTextOnly(argc, argv)) {
+        QCoreApplication core(argc, argv);
+        nameApplication();
+        QCommandLineParser parser;
+        options.addTo(parser);
+        parser.process(core);  // prints and exits 0 for --help and --version
+        return 0;
+    }
+    if (!displayAvailable()) return 2;
     QApplication app(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("trilho"));
-    QApplication::setApplicationName(QStringLiteral("trilho"));
-    QApplication::setApplicationVersion(QStringLiteral(TRILHO_VERSION));
+    nameApplication();
 
     QCommandLineParser parser;
-    parser.setApplicationDescription(
-        QStringLiteral("Numerical control for the robot rail (simulated)."));
-    parser.addHelpOption();
-    parser.addVersionOption();
-    const QCommandLineOption langOpt(QStringLiteral("lang"), QStringLiteral("en, pt_BR or es."),
-                                     QStringLiteral("lang"));
-    const QCommandLineOption themeOpt(QStringLiteral("theme"), QStringLiteral("classic or system."),
-                                      QStringLiteral("theme"));
-    const QCommandLineOption programOpt(
-        QStringLiteral("program"), QStringLiteral("Select this .G file."), QStringLiteral("FILE"));
-    const QCommandLineOption noStartOpt(QStringLiteral("no-start-screen"),
-                                        QStringLiteral("Skip the start screen."));
-    const QCommandLineOption settingsOpt(QStringLiteral("settings"),
-                                         QStringLiteral("Settings file (default: the user's)."),
-                                         QStringLiteral("FILE.ini"));
-    const QCommandLineOption sizeOpt(QStringLiteral("size"),
-                                     QStringLiteral("Window size, e.g. 1280x800."),
-                                     QStringLiteral("WxH"));
-    const QCommandLineOption autoOpt(QStringLiteral("automatic"),
-                                     QStringLiteral("Select Automatic at start (homes)."));
-    const QCommandLineOption runOpt(QStringLiteral("run"),
-                                    QStringLiteral("Execute the program once homed."));
-    const QCommandLineOption shotOpt(QStringLiteral("screenshot"),
-                                     QStringLiteral("Save the main window to this PNG and quit."),
-                                     QStringLiteral("FILE.png"));
-    const QCommandLineOption shotAfterOpt(
-        QStringLiteral("screenshot-after"),
-        QStringLiteral("Seconds before the screenshot (default 1)."), QStringLiteral("S"),
-        QStringLiteral("1"));
-    const QCommandLineOption quitOpt(QStringLiteral("quit-after"),
-                                     QStringLiteral("Quit after this many seconds."),
-                                     QStringLiteral("S"));
-    const QCommandLineOption machineOpt(
-        QStringLiteral("machine"),
-        QStringLiteral("Machine profile: a file, or a shipped one by name (rail, xy_dc_table, "
-                       "xy_plotter). Remembered."),
-        QStringLiteral("PROFILE"));
-    const QCommandLineOption portOpt(
-        QStringLiteral("port"),
-        QStringLiteral("An XY machine's board on this serial port (default: simulated)."),
-        QStringLiteral("DEV"));
-    const QCommandLineOption baudOpt(QStringLiteral("baud"),
-                                     QStringLiteral("Bit rate of --port (default: the board's)."),
-                                     QStringLiteral("N"));
-    parser.addOptions({langOpt, themeOpt, programOpt, noStartOpt, settingsOpt, sizeOpt, autoOpt,
-                       runOpt, shotOpt, shotAfterOpt, quitOpt, machineOpt, portOpt, baudOpt});
+    options.addTo(parser);
     parser.process(app);
+    const QCommandLineOption& langOpt = options.lang;
+    const QCommandLineOption& themeOpt = options.theme;
+    const QCommandLineOption& programOpt = options.program;
+    const QCommandLineOption& noStartOpt = options.noStart;
+    const QCommandLineOption& settingsOpt = options.settings;
+    const QCommandLineOption& sizeOpt = options.size;
+    const QCommandLineOption& autoOpt = options.automatic;
+    const QCommandLineOption& runOpt = options.run;
+    const QCommandLineOption& shotOpt = options.shot;
+    const QCommandLineOption& shotAfterOpt = options.shotAfter;
+    const QCommandLineOption& quitOpt = options.quit;
+    const QCommandLineOption& machineOpt = options.machine;
+    const QCommandLineOption& portOpt = options.port;
+    const QCommandLineOption& baudOpt = options.baud;
 
     std::unique_ptr<QSettings> settings =
         parser.isSet(settingsOpt)
