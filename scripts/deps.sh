@@ -12,7 +12,9 @@ TRILHO_PACKAGES=(
   libqcustomplot-dev libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev libgl1-mesa-dev
   xvfb xauth
   help2man desktop-file-utils file
-  clang-14 libfuzzer-14-dev
+  # clang-14's sanitizer and fuzzer runtimes (libclang_rt.*) are in libclang-rt-14-dev, which
+  # clang-14 only recommends; libfuzzer-14-dev alone does not link -fsanitize=fuzzer.
+  clang-14 libfuzzer-14-dev libclang-rt-14-dev
   socat
   mbpoll python3-pymodbus libmodbus-dev
   # pymodbus.client imports serial_asyncio (Debian 12's pymodbus 3.0 lists it only as a
