@@ -58,9 +58,21 @@ void MachineLink::setFaults(const FaultInjection& faults) {
     faultVersion_.fetch_add(1, std::memory_order_release);
 }
 
+void MachineLink::send(CommandKind kind, std::int64_t i, double a, double b, double c) {
+    if (worker_->send(kind, i, a, b, c) == 0)
+        emit commandRefused(
+            tr("Command not taken: the servo thread's queue is full. Press "
+               "again."));
+}
+
 void MachineLink::run(std::shared_ptr<const Program> program, std::size_t fromIndex) {
-    worker_->loadProgram(std::move(program));
-    worker_->send(CommandKind::Start, static_cast<std::int64_t>(fromIndex));
+    if (worker_->loadProgram(std::move(program)) == 0) {
+        emit commandRefused(
+            tr("Program not started: the servo thread is still taking the one "
+               "before it, or its queue is full. Press again."));
+        return;
+    }
+    send(CommandKind::Start, static_cast<std::int64_t>(fromIndex));
 }
 
 void MachineLink::poll() {

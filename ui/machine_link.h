@@ -34,32 +34,32 @@ class MachineLink : public QObject {
     void journalNote(const QString& kind, int code, const QString& text);
 
     // commands
-    void selectManual() { worker_->send(CommandKind::SelectManual); }
-    void selectAutomatic() { worker_->send(CommandKind::SelectAutomatic); }
-    void manualLeft() { worker_->send(CommandKind::ManualLeft); }
-    void manualRight() { worker_->send(CommandKind::ManualRight); }
-    void manualStop() { worker_->send(CommandKind::ManualStop); }
+    void selectManual() { send(CommandKind::SelectManual); }
+    void selectAutomatic() { send(CommandKind::SelectAutomatic); }
+    void manualLeft() { send(CommandKind::ManualLeft); }
+    void manualRight() { send(CommandKind::ManualRight); }
+    void manualStop() { send(CommandKind::ManualStop); }
     void jogStart(int direction, double fraction) {
-        worker_->send(CommandKind::JogStart, direction, fraction);
+        send(CommandKind::JogStart, direction, fraction);
     }
-    void jogStop() { worker_->send(CommandKind::JogStop); }
+    void jogStop() { send(CommandKind::JogStop); }
     void jogIncrement(double mm, double fraction) {
-        worker_->send(CommandKind::JogIncrement, 0, mm, fraction);
+        send(CommandKind::JogIncrement, 0, mm, fraction);
     }
     void run(std::shared_ptr<const Program> program, std::size_t fromIndex);
-    void pressContinue() { worker_->send(CommandKind::Continue); }
-    void hold() { worker_->send(CommandKind::Hold); }
-    void resume() { worker_->send(CommandKind::Resume); }
+    void pressContinue() { send(CommandKind::Continue); }
+    void hold() { send(CommandKind::Hold); }
+    void resume() { send(CommandKind::Resume); }
     void stop() { worker_->requestStop(); }
     void emergencyStop() { worker_->requestEmergencyStop(); }
-    void resetEmergencyStop() { worker_->send(CommandKind::ResetEStop); }
-    void acknowledge() { worker_->send(CommandKind::Acknowledge); }
-    void setSingleBlock(bool on) { worker_->send(CommandKind::SingleBlock, on ? 1 : 0); }
-    void setFeedOverride(double f) { worker_->send(CommandKind::FeedOverride, 0, f); }
+    void resetEmergencyStop() { send(CommandKind::ResetEStop); }
+    void acknowledge() { send(CommandKind::Acknowledge); }
+    void setSingleBlock(bool on) { send(CommandKind::SingleBlock, on ? 1 : 0); }
+    void setFeedOverride(double f) { send(CommandKind::FeedOverride, 0, f); }
     void setGains(LoopLaw law, const LoopGains& g) {
-        worker_->send(CommandKind::SetGains, static_cast<int>(law), g.kp, g.ki, g.kd);
+        send(CommandKind::SetGains, static_cast<int>(law), g.kp, g.ki, g.kd);
     }
-    void setLaw(LoopLaw law) { worker_->send(CommandKind::SetLaw, static_cast<int>(law)); }
+    void setLaw(LoopLaw law) { send(CommandKind::SetLaw, static_cast<int>(law)); }
     /// Reads the worker now (also done by the timer); tests call it to avoid waiting a tick.
     /// At most kEventsPerPoll events a call: the window keeps handling input whatever the
     /// program does; the rest wait for the next frame (alarms are never dropped).
@@ -81,8 +81,14 @@ class MachineLink : public QObject {
     void eventArrived(const trilho::ControllerEvent& event);
     /// The history could not be written (the text says why); emitted once per failure.
     void journalFailed(const QString& reason);
+    /// The servo thread's command queue had no room: the command was not taken (never said
+    /// applied). Says which; the screens show it and the operator can press again.
+    void commandRefused(const QString& what);
 
   private:
+    /// Queues an operator's command; a refusal (full queue) is said with commandRefused.
+    void send(CommandKind kind, std::int64_t i = 0, double a = 0.0, double b = 0.0, double c = 0.0);
+
     MachineProfile profile_;
     std::unique_ptr<SimRail> rail_;
     std::unique_ptr<RailController> controller_;

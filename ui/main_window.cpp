@@ -111,6 +111,9 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     statusBar()->addPermanentWidget(compileProgress_);
     statusBar()->addPermanentWidget(stateLabel_);
     connect(&link_, &MachineLink::journalFailed, this, &MainWindow::reportJournalProblem);
+    // A command the servo thread's queue could not take is said, never passed over.
+    connect(&link_, &MachineLink::commandRefused, this,
+            [this](const QString& what) { statusBar()->showMessage(what, 8000); });
 
     connect(&link_, &MachineLink::statusChanged, this, &MainWindow::onStatus);
     connect(&link_, &MachineLink::eventArrived, this, &MainWindow::onEvent);

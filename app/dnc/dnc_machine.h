@@ -16,12 +16,21 @@ namespace trilho::dnc {
 struct Ticket {
     bool byVersion = false;  ///< a flag (Stop): applied once the snapshot passed this version
     std::uint64_t value = 0;
+    /// The machine did not take the command (its queue was full, or a program handed over is
+    /// still waiting): nothing was queued and nothing will happen.
+    bool refused = false;
 };
+
+/// The ticket of a command queued on a ServoWorker: its number, or refused (0).
+inline Ticket workerTicket(std::uint64_t seq) {
+    return {false, seq, seq == 0};
+}
 
 class DncMachine {
   public:
     virtual ~DncMachine() = default;
     virtual ControllerStatus snapshot() const = 0;
+    /// A client's command: applied later (applied() says when), or refused at once.
     virtual Ticket send(CommandKind kind, std::int64_t i = 0, double a = 0.0, double b = 0.0,
                         double c = 0.0) = 0;
     virtual Ticket loadProgram(std::shared_ptr<const Program> program) = 0;

@@ -269,11 +269,25 @@ QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& serv
                              .arg(client));
         return QModbusExceptionResponse(fc, toQt(e));
     }
+    const HoldingImage before = holding_;
     const QModbusResponse response = base(request);
     if (response.isException()) return response;
     for (std::size_t i = 0; i < d.write.values.size(); ++i)
         holding_[d.write.start + i] = d.write.values[i];
-    applyWrite(d.write);
+    if (!applyWrite(d.write, client)) {
+        // Not taken by the machine: the write is undone (the registers read back what the
+        // machine has) and the client reads "busy", never a success.
+        holding_ = before;
+        refresh();
+        for (QModbusServer* s : servers_)
+            publish(*s);
+        emit historyLine(QStringLiteral("DNC: write refused (the machine is busy): function %1 "
+                                        "at %2 from %3")
+                             .arg(int(fc))
+                             .arg(d.write.start)
+                             .arg(client));
+        return QModbusExceptionResponse(fc, QModbusPdu::ServerDeviceBusy);
+    }
     refresh();
     for (QModbusServer* s : servers_)
         publish(*s);
@@ -328,29 +342,45 @@ QModbusResponse DncServer::writeFile(const QModbusPdu& request, const std::uint8
     return QModbusResponse(fc, request.data());  // function 21 answers with its request
 }
 
-void DncServer::applyWrite(const HoldingWrite& w) {
+bool DncServer::applyWrite(const HoldingWrite& w, const QString& client) {
     auto touches = [&w](std::uint16_t from, std::uint16_t to) {
         return w.start < to && w.start + w.values.size() > from;
     };
     auto f = [this](std::uint16_t a) { return double(joinFloat(holding_[a], holding_[a + 1])); };
-    if (touches(hold::kKp, hold::kKd + 2))
-        machine_.send(CommandKind::SetGains, static_cast<int>(machine_.snapshot().law),
-                      f(hold::kKp), f(hold::kKi), f(hold::kKd));
-    if (touches(hold::kFeedOverride, hold::kFeedOverride + 2))
-        machine_.send(CommandKind::FeedOverride, 0, f(hold::kFeedOverride));
+    if (touches(hold::kKp, hold::kKd + 2) &&
+        machine_
+            .send(CommandKind::SetGains, static_cast<int>(machine_.snapshot().law), f(hold::kKp),
+                  f(hold::kKi), f(hold::kKd))
+            .refused)
+        return false;
+    if (touches(hold::kFeedOverride, hold::kFeedOverride + 2) &&
+        machine_.send(CommandKind::FeedOverride, 0, f(hold::kFeedOverride)).refused)
+        return false;
     if (touches(hold::kCommand, hold::kCommand + 1)) {
         const auto c = static_cast<Command>(holding_[hold::kCommand]);
         holding_[hold::kCommand] = 0;  // reads back 0: done
-        runCommand(c, holding_[hold::kArgument], holding_[hold::kSeq]);
+        runCommand(c, holding_[hold::kArgument], holding_[hold::kSeq], client);
     }
+    return true;
 }
 
-void DncServer::finishCommand(std::uint16_t seq, CommandResult r, std::optional<Ticket> ticket) {
+void DncServer::finishCommand(std::uint16_t seq, CommandResult r, std::optional<Ticket> ticket,
+                              const QString& client) {
+    if (ticket && ticket->refused) {
+        emit historyLine(QStringLiteral("DNC: command (sequence %1) from %2 refused: the machine "
+                                        "is busy with the commands before it")
+                             .arg(seq)
+                             .arg(client.isEmpty() ? QStringLiteral("a client") : client));
+        r = CommandResult::Busy;
+        ticket.reset();
+    }
     if (ticket && !machine_.applied(*ticket)) {
-        pending_ = Pending{seq, r, *ticket};
+        pending_ = Pending{seq, r, *ticket};  // a later queued command: the earlier go first
         return;
     }
-    pending_.reset();
+    // A result known now (busy, no program, ...) is echoed now, and leaves a command still on
+    // its way to the machine pending: it is echoed once applied, and keeps Starts serialised.
+    if (ticket) pending_.reset();
     link_.commandSeq = seq;
     link_.commandResult = r;
 }
@@ -368,53 +398,66 @@ void DncServer::noteDiagnostics(int number, const Program& p) {
     }
 }
 
-void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq) {
+void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq,
+                           const QString& client) {
     const ControllerStatus s = machine_.snapshot();
+    // The result of a refused ticket (Busy) names the client in the history.
+    auto finish = [&](CommandResult r, std::optional<Ticket> ticket = {}) {
+        finishCommand(seq, r, ticket, client);
+    };
     switch (c) {
         case Command::StartProgram: {
-            if (runningState(s.state)) return finishCommand(seq, CommandResult::Busy);
+            // A command still on its way to the machine (a Start, a mode change) has not shown
+            // in the snapshot yet: a Start now would be checked against a stale state and could
+            // replace the program about to run. Serialised: this one is busy.
+            if (pending_ || runningState(s.state)) return finish(CommandResult::Busy);
             if (s.state == ControllerState::Alarm || s.state == ControllerState::EStop)
-                return finishCommand(seq, CommandResult::NotReady);
+                return finish(CommandResult::NotReady);
             QString error;
             const auto program = library_.load(argument, &error);
             if (!program) {
                 emit historyLine(QStringLiteral("DNC: no program %1 (%2)")
                                      .arg(library_.pathOf(argument), error));
-                return finishCommand(seq, CommandResult::NoProgram);
+                return finish(CommandResult::NoProgram);
             }
             noteDiagnostics(argument, **program);
             if (!(*program)->ok()) {
                 emit historyLine(QStringLiteral("DNC: program %1 has %2 errors: not started")
                                      .arg(argument)
                                      .arg(link_.diagErrors));
-                return finishCommand(seq, CommandResult::CompileErrors);
+                return finish(CommandResult::CompileErrors);
             }
-            if (!s.automatic || s.state == ControllerState::Manual)
-                machine_.send(CommandKind::SelectAutomatic);
-            machine_.loadProgram(*program);
+            if (!s.automatic || s.state == ControllerState::Manual) {
+                const Ticket automatic = machine_.send(CommandKind::SelectAutomatic);
+                if (automatic.refused) return finish(CommandResult::Busy, automatic);
+            }
+            const Ticket load = machine_.loadProgram(*program);
+            if (load.refused) return finish(CommandResult::Busy, load);
+            const Ticket start = machine_.send(CommandKind::Start);
+            if (start.refused) return finish(CommandResult::Busy, start);
             link_.program = argument;
-            emit historyLine(QStringLiteral("DNC: program %1 started").arg(argument));
-            return finishCommand(seq, CommandResult::Applied, machine_.send(CommandKind::Start));
+            emit historyLine(
+                QStringLiteral("DNC: program %1 started by %2").arg(argument).arg(client));
+            return finish(CommandResult::Applied, start);
         }
         case Command::Hold:
-            return finishCommand(seq, CommandResult::Applied, machine_.send(CommandKind::Hold));
+            return finish(CommandResult::Applied, machine_.send(CommandKind::Hold));
         case Command::Continue:
-            return finishCommand(seq, CommandResult::Applied, machine_.send(CommandKind::Continue));
+            return finish(CommandResult::Applied, machine_.send(CommandKind::Continue));
         case Command::Stop:
-            return finishCommand(seq, CommandResult::Applied, machine_.requestStop());
+            return finish(CommandResult::Applied, machine_.requestStop());
         case Command::Acknowledge:
-            return finishCommand(seq, CommandResult::Applied,
-                                 machine_.send(CommandKind::Acknowledge));
+            return finish(CommandResult::Applied, machine_.send(CommandKind::Acknowledge));
         case Command::SelectAutomatic:
-            return finishCommand(seq, CommandResult::Applied,
-                                 machine_.send(CommandKind::SelectAutomatic));
+            if (pending_) return finish(CommandResult::Busy);
+            return finish(CommandResult::Applied, machine_.send(CommandKind::SelectAutomatic));
         case Command::SelectManual:
-            return finishCommand(seq, CommandResult::Applied,
-                                 machine_.send(CommandKind::SelectManual));
+            if (pending_) return finish(CommandResult::Busy);
+            return finish(CommandResult::Applied, machine_.send(CommandKind::SelectManual));
         case Command::CommitDownload: {
             const std::uint16_t length = holding_[hold::kDownloadLength];
             if (holding_[hold::kDownloadNumber] != argument || length > hold::kDownloadMaxBytes)
-                return finishCommand(seq, CommandResult::BadDownload);
+                return finish(CommandResult::BadDownload);
             QByteArray source;
             source.reserve(length);
             for (std::uint16_t i = 0; i < length; ++i) {
@@ -427,17 +470,17 @@ void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq)
                 emit historyLine(QStringLiteral("DNC: download of program %1 refused: %2 errors")
                                      .arg(argument)
                                      .arg(link_.diagErrors));
-                return finishCommand(seq, CommandResult::CompileErrors);
+                return finish(CommandResult::CompileErrors);
             }
             QString error;
             if (!library_.save(argument, source, &error)) {
                 emit historyLine(QStringLiteral("DNC: cannot save %1: %2")
                                      .arg(library_.pathOf(argument), error));
-                return finishCommand(seq, CommandResult::SaveFailed);
+                return finish(CommandResult::SaveFailed);
             }
             emit historyLine(
                 QStringLiteral("DNC: program %1 saved (%2 bytes)").arg(argument).arg(length));
-            return finishCommand(seq, CommandResult::Applied);
+            return finish(CommandResult::Applied);
         }
         case Command::None:
         case Command::Count_:

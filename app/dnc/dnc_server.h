@@ -63,7 +63,9 @@ class DncServer : public QObject {
   private:
     void refresh();
     void publish(QModbusServer& server);
-    void applyWrite(const HoldingWrite& w);
+    /// Hands a stored write to the machine; false when the machine refused a gain or override
+    /// change (its queue is busy): the caller undoes the write and answers exception 06.
+    bool applyWrite(const HoldingWrite& w, const QString& client);
     /// Reports a serial line's errors and reopens it when it comes back.
     void watchSerialLine(QModbusServer* srv, const QString& device);
     /// Functions 20 (a stored program) and 21 (into the download block): file_records.h.
@@ -71,8 +73,10 @@ class DncServer : public QObject {
                              std::size_t size);
     QModbusResponse writeFile(const QModbusPdu& request, const std::uint8_t* data, std::size_t size,
                               const QString& client);
-    void runCommand(Command c, std::uint16_t argument, std::uint16_t seq);
-    void finishCommand(std::uint16_t seq, CommandResult r, std::optional<Ticket> ticket = {});
+    void runCommand(Command c, std::uint16_t argument, std::uint16_t seq, const QString& client);
+    /// Echoes the result now, or once the ticket is applied; a refused ticket is Busy now.
+    void finishCommand(std::uint16_t seq, CommandResult r, std::optional<Ticket> ticket = {},
+                       const QString& client = {});
     void noteDiagnostics(int number, const Program& p);
 
     DncMachine& machine_;

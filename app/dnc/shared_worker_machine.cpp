@@ -15,6 +15,7 @@ Ticket SharedWorkerMachine::requestStop() {
 }
 
 bool SharedWorkerMachine::applied(const Ticket& t) const {
+    if (t.refused) return false;
     if (t.byVersion) return worker_.snapshotVersion() >= t.value;
     return worker_.snapshot().lastCommandSeq >= t.value;
 }

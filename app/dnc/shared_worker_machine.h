@@ -20,11 +20,13 @@ class SharedWorkerMachine final : public DncMachine {
     void noteEvent(const ControllerEvent& e);
 
     ControllerStatus snapshot() const override { return worker_.snapshot(); }
+    /// A client's commands share the operator's queue as CommandSource::Remote: they can be
+    /// refused when it is busy, and never take the room the operator's need.
     Ticket send(CommandKind kind, std::int64_t i, double a, double b, double c) override {
-        return {false, worker_.send(kind, i, a, b, c)};
+        return workerTicket(worker_.send(kind, i, a, b, c, CommandSource::Remote));
     }
     Ticket loadProgram(std::shared_ptr<const Program> program) override {
-        return {false, worker_.loadProgram(std::move(program))};
+        return workerTicket(worker_.loadProgram(std::move(program), CommandSource::Remote));
     }
     Ticket requestStop() override;
     bool applied(const Ticket& t) const override;

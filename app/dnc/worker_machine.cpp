@@ -25,6 +25,7 @@ Ticket WorkerMachine::requestStop() {
 }
 
 bool WorkerMachine::applied(const Ticket& t) const {
+    if (t.refused) return false;
     if (t.byVersion) return worker_->snapshotVersion() >= t.value;
     return worker_->snapshot().lastCommandSeq >= t.value;
 }

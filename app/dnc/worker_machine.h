@@ -16,10 +16,10 @@ class WorkerMachine final : public DncMachine {
 
     ControllerStatus snapshot() const override { return worker_->snapshot(); }
     Ticket send(CommandKind kind, std::int64_t i, double a, double b, double c) override {
-        return {false, worker_->send(kind, i, a, b, c)};
+        return workerTicket(worker_->send(kind, i, a, b, c, CommandSource::Remote));
     }
     Ticket loadProgram(std::shared_ptr<const Program> program) override {
-        return {false, worker_->loadProgram(std::move(program))};
+        return workerTicket(worker_->loadProgram(std::move(program), CommandSource::Remote));
     }
     Ticket requestStop() override;
     bool applied(const Ticket& t) const override;

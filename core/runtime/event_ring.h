@@ -34,6 +34,11 @@ class SpscRing {
         return true;
     }
     std::uint64_t dropped() const { return dropped_.load(std::memory_order_relaxed); }
+    /// Values waiting, as the writer sees it (the reader may have taken some since).
+    std::size_t size() const {
+        return head_.load(std::memory_order_relaxed) - tail_.load(std::memory_order_acquire);
+    }
+    static constexpr std::size_t capacity() { return Capacity; }
 
   private:
     std::array<T, Capacity> items_{};

@@ -60,19 +60,46 @@ void ServoWorker::stopThread() {
     if (watchdogThread_.joinable()) watchdogThread_.join();
 }
 
-std::uint64_t ServoWorker::send(CommandKind kind, std::int64_t i, double a, double b, double c) {
-    std::lock_guard lock(sendMutex_);
-    Command cmd{nextSeq_++, kind, i, a, b, c};
-    commands_.push(cmd);
-    return cmd.seq;
+bool ServoWorker::roomFor(CommandSource source) const {
+    const std::size_t limit =
+        source == CommandSource::Operator ? kCommandCapacity : kCommandCapacity - kOperatorReserve;
+    return commands_.size() < limit;
 }
 
-std::uint64_t ServoWorker::loadProgram(std::shared_ptr<const Program> program) {
+std::uint64_t ServoWorker::pushLocked(CommandKind kind, std::int64_t i, double a, double b,
+                                      double c) {
+    const Command cmd{nextSeq_, kind, i, a, b, c};
+    // Producers are serialised by sendMutex_ and roomFor() was true: only the servo thread runs
+    // meanwhile, and it only makes room, so the push cannot fail.
+    if (!commands_.push(cmd)) {
+        refusedCommands_.fetch_add(1);
+        return 0;
+    }
+    return nextSeq_++;
+}
+
+std::uint64_t ServoWorker::send(CommandKind kind, std::int64_t i, double a, double b, double c,
+                                CommandSource source) {
+    std::lock_guard lock(sendMutex_);
+    if (!roomFor(source)) {
+        refusedCommands_.fetch_add(1);
+        return 0;
+    }
+    return pushLocked(kind, i, a, b, c);
+}
+
+std::uint64_t ServoWorker::loadProgram(std::shared_ptr<const Program> program,
+                                       CommandSource source) {
+    std::lock_guard lock(sendMutex_);
     {
-        std::lock_guard lock(programMutex_);
+        std::lock_guard programLock(programMutex_);
+        if (pendingProgram_ || !roomFor(source)) {
+            refusedCommands_.fetch_add(1);
+            return 0;
+        }
         pendingProgram_ = std::move(program);
     }
-    return send(CommandKind::LoadProgram);
+    return pushLocked(CommandKind::LoadProgram, 0, 0.0, 0.0, 0.0);
 }
 
 void ServoWorker::apply(const Command& c) {

@@ -42,6 +42,11 @@ enum class CommandKind : std::uint8_t {
     LoadProgram,  ///< takes the program handed over with loadProgram()
 };
 
+/// Who sent a command: the operator at the screens, or a remote client (the DNC link). A
+/// remote client may fill the command queue only up to ServoWorker::kOperatorReserve below its
+/// capacity, so the operator's commands are never crowded out by a client.
+enum class CommandSource : std::uint8_t { Operator, Remote };
+
 struct Command {
     std::uint64_t seq = 0;
     CommandKind kind = CommandKind::ManualStop;
@@ -88,11 +93,22 @@ class ServoWorker {
     void stopThread();
     bool running() const { return running_.load(); }
 
-    /// Queues a command; returns its sequence number (the snapshot echoes the last applied).
+    /// Commands the queue holds; a remote client may fill all but kOperatorReserve of them.
+    static constexpr std::size_t kCommandCapacity = 256;
+    static constexpr std::size_t kOperatorReserve = 64;
+
+    /// Queues a command; returns its sequence number (the snapshot echoes the last applied), or
+    /// 0 when the queue has no room for it: the command is refused, nothing is queued and no
+    /// number is used, so a later command's number never marks a refused one applied.
     std::uint64_t send(CommandKind kind, std::int64_t i = 0, double a = 0.0, double b = 0.0,
-                       double c = 0.0);
-    /// Hands a compiled program over and queues LoadProgram.
-    std::uint64_t loadProgram(std::shared_ptr<const Program> program);
+                       double c = 0.0, CommandSource source = CommandSource::Operator);
+    /// Hands a compiled program over and queues LoadProgram; 0 (refused, nothing changed) when
+    /// the queue is full or another program handed over has not been taken yet (it is never
+    /// replaced: the Start queued after it would run the wrong one, or nothing).
+    std::uint64_t loadProgram(std::shared_ptr<const Program> program,
+                              CommandSource source = CommandSource::Operator);
+    /// Commands refused so far (full queue, or a load while another was queued).
+    std::uint64_t refusedCommands() const { return refusedCommands_.load(); }
     /// Bypass the queue: acted on at the very next tick.
     void requestStop() { stopFlag_.store(true); }
     void requestEmergencyStop() { estopFlag_.store(true); }
@@ -156,7 +172,11 @@ class ServoWorker {
     std::atomic<std::int64_t> heartbeatNs_{0};
     std::mutex sendMutex_;  ///< producers only; the servo thread never takes it
     std::uint64_t nextSeq_ = 1;
-    SpscRing<Command, 256> commands_;
+    SpscRing<Command, kCommandCapacity> commands_;
+    std::atomic<std::uint64_t> refusedCommands_{0};
+    /// Whether a command from source fits now; sendMutex_ held.
+    bool roomFor(CommandSource source) const;
+    std::uint64_t pushLocked(CommandKind kind, std::int64_t i, double a, double b, double c);
     std::mutex programMutex_;  ///< the servo thread only try_locks it
     std::shared_ptr<const Program> pendingProgram_;
     std::optional<Command> deferredLoad_;  ///< servo thread only: a load that found the lock taken

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <optional>
 #include <thread>
+#include <vector>
 
 #include "core/gcode/compiler.h"
 #include "core/runtime/servo_worker.h"
@@ -44,6 +45,66 @@ TEST(ServoWorker, CommandsAreAppliedInOrderAndEchoed) {
     EXPECT_EQ(rig.worker.snapshot().manualCode, 130);
     rig.worker.stopThread();
     EXPECT_EQ(rig.rail.driveCode(), 128);  // the thread leaves the drive at 0 V
+}
+
+// Issue 20 item 1: a command is either queued (and then applied, its number echoed) or refused
+// at once (number 0); a refused command never takes a number a later one could mark applied,
+// and a remote client can never fill the queue the operator needs.
+TEST(ServoWorker, AFullQueueRefusesAndNeverMarksARefusedCommandApplied) {
+    Rig rig;  // not started: nothing drains the queue while it is filled
+    std::vector<std::uint64_t> remote;
+    std::uint64_t refusedRemote = 0;
+    for (int k = 0; k < 400; ++k) {
+        const std::uint64_t seq =
+            rig.worker.send(CommandKind::FeedOverride, 0, 0.5, 0, 0, CommandSource::Remote);
+        if (seq == 0)
+            ++refusedRemote;
+        else
+            remote.push_back(seq);
+    }
+    ASSERT_EQ(remote.size(), ServoWorker::kCommandCapacity - ServoWorker::kOperatorReserve);
+    EXPECT_EQ(refusedRemote, 400u - remote.size());
+    // Numbers are consecutive: no refused command used one.
+    for (std::size_t k = 1; k < remote.size(); ++k)
+        EXPECT_EQ(remote[k], remote[k - 1] + 1);
+    // The operator still has the reserve, and its commands go in after the client's.
+    std::vector<std::uint64_t> local;
+    for (std::size_t k = 0; k < ServoWorker::kOperatorReserve; ++k) {
+        const std::uint64_t seq = rig.worker.send(CommandKind::Hold);
+        ASSERT_NE(seq, 0u) << k;
+        local.push_back(seq);
+    }
+    EXPECT_EQ(local.front(), remote.back() + 1);
+    // Now full for everyone: refused, and said so.
+    EXPECT_EQ(rig.worker.send(CommandKind::Hold), 0u);
+    EXPECT_EQ(rig.worker.send(CommandKind::Hold, 0, 0, 0, 0, CommandSource::Remote), 0u);
+    EXPECT_EQ(rig.worker.loadProgram(std::make_shared<Program>()), 0u);
+    EXPECT_EQ(rig.worker.refusedCommands(), refusedRemote + 3);
+    rig.worker.start(false);
+    // Every accepted command is applied, in order, and the echo ends at the last accepted one.
+    ASSERT_TRUE(eventually([&] { return rig.worker.snapshot().lastCommandSeq == local.back(); }));
+    EXPECT_DOUBLE_EQ(rig.worker.snapshot().feedOverride, 0.5);
+    // After the refusal the next command takes the next number: nothing skipped.
+    EXPECT_EQ(rig.worker.send(CommandKind::Resume), local.back() + 1);
+    rig.worker.stopThread();
+}
+
+// Issue 20 item 5 at the worker: a program handed over while another load is still queued is
+// refused, never put in its place (the second Start would run nothing).
+TEST(ServoWorker, ASecondLoadWhileOneIsQueuedIsRefused) {
+    Rig rig;
+    CompileOptions o;
+    auto a = std::make_shared<Program>(compile("G1 X10 F50\nM2\n", o));
+    auto b = std::make_shared<Program>(compile("G1 X-10 F50\nM2\n", o));
+    const std::uint64_t first = rig.worker.loadProgram(a);
+    ASSERT_NE(first, 0u);
+    EXPECT_EQ(rig.worker.loadProgram(b), 0u);
+    rig.worker.send(CommandKind::SelectAutomatic);
+    rig.worker.start(false);
+    ASSERT_TRUE(eventually([&] { return rig.worker.snapshot().lastCommandSeq > first; }));
+    // Once taken, another program may be handed over.
+    EXPECT_NE(rig.worker.loadProgram(b), 0u);
+    rig.worker.stopThread();
 }
 
 TEST(ServoWorker, SnapshotsAreConsistentWhileTheLoopRuns) {

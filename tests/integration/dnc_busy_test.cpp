@@ -1,0 +1,151 @@
+// Issue 20 items 1 and 5 at the DNC server: a command the machine's queue cannot take is
+// answered busy (never "applied"), a write the machine refused is undone and answered exception
+// 06, and a second Start before the first reached the machine is busy, not a second load over
+// the first. The machine is the screens' shared worker, not started: nothing drains its queue,
+// as when the servo thread is behind a flood.
+#include <gtest/gtest.h>
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QModbusTcpServer>
+#include <QTemporaryDir>
+
+#include "app/dnc/dnc_server.h"
+#include "app/dnc/shared_worker_machine.h"
+#include "core/gcode/compiler.h"
+#include "hal/sim/sim_rail.h"
+
+namespace trilho::dnc {
+namespace {
+
+/// Qt's own processing (the register store) reachable from outside, as the real servers'.
+class ExposedServer final : public QModbusTcpServer {
+  public:
+    using QModbusTcpServer::QModbusTcpServer;
+    QModbusResponse base(const QModbusPdu& p) { return QModbusTcpServer::processRequest(p); }
+};
+
+QByteArray writeMultiple(std::uint16_t start, const std::vector<std::uint16_t>& values) {
+    QByteArray b;
+    auto u16 = [&b](std::uint16_t v) {
+        b.append(static_cast<char>(v >> 8));
+        b.append(static_cast<char>(v & 0xFF));
+    };
+    u16(start);
+    u16(static_cast<std::uint16_t>(values.size()));
+    b.append(static_cast<char>(values.size() * 2));
+    for (std::uint16_t v : values)
+        u16(v);
+    return b;
+}
+
+struct Rig {
+    QTemporaryDir dir;
+    MachineProfile profile = MachineProfile::rail();
+    SimRail rail{profile.plant};
+    RailController controller{profile, rail};
+    ServoWorker worker{controller, rail, [this](double dt) { rail.step(dt); }};
+    SharedWorkerMachine machine{worker, profile};
+    std::unique_ptr<DncServer> dnc;
+    ExposedServer* server = nullptr;
+    QStringList history;
+
+    Rig() {
+        rail.placeAt(0.0);
+        CompileOptions options;
+        options.machine = profile.limits;
+        dnc = std::make_unique<DncServer>(machine, ProgramLibrary(dir.path(), options));
+        server = new ExposedServer(dnc.get());
+        dnc->adopt(server);
+        dnc->setRemote(true);
+        QObject::connect(dnc.get(), &DncServer::historyLine,
+                         [this](const QString& l) { history << l; });
+        QFile f(dir.filePath(QStringLiteral("0042.G")));
+        EXPECT_TRUE(f.open(QIODevice::WriteOnly));
+        f.write("G1 X20 F50\nM2\n");
+    }
+    QModbusResponse write(std::uint16_t start, const std::vector<std::uint16_t>& values) {
+        const QModbusRequest r(QModbusPdu::WriteMultipleRegisters, writeMultiple(start, values));
+        return dnc->handle(
+            r, *server, [this](const QModbusPdu& p) { return server->base(p); },
+            QStringLiteral("127.0.0.1:5020"));
+    }
+    std::uint16_t input(std::uint16_t address) {
+        const QModbusRequest r(
+            QModbusPdu::ReadInputRegisters,
+            QByteArray::fromHex(
+                QByteArray::number(address, 16).rightJustified(4, '0').append("0001")));
+        const QModbusResponse a = dnc->handle(
+            r, *server, [this](const QModbusPdu& p) { return server->base(p); },
+            QStringLiteral("127.0.0.1:5020"));
+        EXPECT_FALSE(a.isException());
+        return static_cast<std::uint16_t>((static_cast<std::uint8_t>(a.data()[1]) << 8) |
+                                          static_cast<std::uint8_t>(a.data()[2]));
+    }
+    std::uint16_t holding(std::uint16_t address) {
+        QModbusDataUnit u(QModbusDataUnit::HoldingRegisters, address, 1);
+        server->data(&u);
+        return u.value(0);
+    }
+    /// A command written with its argument and the client's number, as clients do.
+    QModbusResponse command(Command c, std::uint16_t argument, std::uint16_t seq) {
+        return write(hold::kCommand, {static_cast<std::uint16_t>(c), argument, seq});
+    }
+    void fillQueue() {
+        while (worker.send(CommandKind::SingleBlock, 0, 0, 0, 0, CommandSource::Remote) != 0) {
+        }
+    }
+};
+
+TEST(DncBusy, AHoldTheQueueCannotTakeIsAnsweredBusyNeverApplied) {
+    int argc = 0;
+    QCoreApplication app(argc, nullptr);
+    Rig rig;
+    rig.fillQueue();
+    ASSERT_FALSE(rig.command(Command::Hold, 0, 77).isException());
+    EXPECT_EQ(rig.input(in::kCommandSeq), 77);
+    EXPECT_EQ(rig.input(in::kCommandResult), static_cast<std::uint16_t>(CommandResult::Busy));
+    EXPECT_TRUE(rig.history.filter(QStringLiteral("127.0.0.1:5020 refused")).size() == 1)
+        << rig.history.join(QLatin1Char('\n')).toStdString();
+    // The operator's reserve is untouched: the screens' Hold still goes in.
+    EXPECT_NE(rig.worker.send(CommandKind::Hold), 0u);
+}
+
+TEST(DncBusy, AnOverrideTheMachineRefusedIsUndoneAndAnsweredException06) {
+    int argc = 0;
+    QCoreApplication app(argc, nullptr);
+    Rig rig;
+    const Words before{rig.holding(hold::kFeedOverride), rig.holding(hold::kFeedOverride + 1)};
+    rig.fillQueue();
+    const Words half = splitFloat(0.5f);
+    const QModbusResponse r = rig.write(hold::kFeedOverride, {half.hi, half.lo});
+    ASSERT_TRUE(r.isException());
+    EXPECT_EQ(r.exceptionCode(), QModbusPdu::ServerDeviceBusy);
+    // Reads back what the machine has, not what was refused.
+    EXPECT_EQ(rig.holding(hold::kFeedOverride), before.hi);
+    EXPECT_EQ(rig.holding(hold::kFeedOverride + 1), before.lo);
+    EXPECT_EQ(rig.history.filter(QStringLiteral("the machine is busy")).size(), 1);
+}
+
+TEST(DncBusy, ASecondStartBeforeTheFirstReachedTheMachineIsBusy) {
+    int argc = 0;
+    QCoreApplication app(argc, nullptr);
+    Rig rig;  // the worker is not started: the first Start waits in its queue
+    ASSERT_FALSE(rig.command(Command::StartProgram, 42, 1).isException());
+    ASSERT_FALSE(rig.command(Command::StartProgram, 42, 2).isException());
+    EXPECT_EQ(rig.input(in::kCommandSeq), 2);
+    EXPECT_EQ(rig.input(in::kCommandResult), static_cast<std::uint16_t>(CommandResult::Busy));
+    // The first one runs: the servo thread takes the queue and the program goes.
+    rig.worker.start(false);
+    bool running = false;
+    for (int k = 0; k < 200000 && !running; ++k) {
+        running = rig.worker.snapshot().state == ControllerState::Homing ||
+                  rig.worker.snapshot().state == ControllerState::Running;
+        QCoreApplication::processEvents();
+    }
+    EXPECT_TRUE(running);
+    rig.worker.stopThread();
+}
+
+}  // namespace
+}  // namespace trilho::dnc
