@@ -72,6 +72,14 @@ WriteDecode decodeHoldingWrite(std::uint8_t functionCode, const std::uint8_t* da
             if (size < 9) return d.error = Exception::IllegalValue, d;
             d.error =
                 decodeList(be16(data + 4), be16(data + 6), data + 9, size - 9, data[8], d.write);
+            if (d.error != Exception::None) return d;
+            // The read half is checked here too, before anything is written: Qt's store writes
+            // first and only then finds a bad read (issue 20 item 9). Quantity 1..125 (the
+            // Modbus specification), inside the map.
+            if (be16(data + 2) < 1 || be16(data + 2) > 125)
+                return d.error = Exception::IllegalValue, d;
+            if (std::size_t{be16(data)} + be16(data + 2) > hold::kCount)
+                return d.error = Exception::IllegalAddress, d;
             return d;
         default:
             return d;

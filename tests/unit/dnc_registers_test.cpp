@@ -122,6 +122,37 @@ TEST(DncRegisters, MalformedFramesAndAddresses) {
     EXPECT_FALSE(decodeHoldingWrite(0x03, shortFrame, sizeof shortFrame).isWrite);
 }
 
+// Issue 20 item 9: function 23 with a good write and a read out of range (or of a bad
+// quantity) is an exception found before anything is stored, as every exception must be.
+TEST(DncRegisters, ReadWriteMultipleChecksItsReadBeforeWriting) {
+    auto frame = [](std::uint16_t readAt, std::uint16_t readCount) {
+        const std::vector<std::uint8_t> w = writeMultiple(hold::kFeedOverride, {0x3F00, 0x0000});
+        std::vector<std::uint8_t> f;
+        f.reserve(4 + w.size());
+        f.push_back(static_cast<std::uint8_t>(readAt >> 8));
+        f.push_back(static_cast<std::uint8_t>(readAt & 0xFF));
+        f.push_back(static_cast<std::uint8_t>(readCount >> 8));
+        f.push_back(static_cast<std::uint8_t>(readCount & 0xFF));
+        for (std::uint8_t b : w)
+            f.push_back(b);
+        return f;
+    };
+    const auto good = frame(0, 4);
+    EXPECT_EQ(decodeHoldingWrite(0x17, good.data(), good.size()).error, Exception::None);
+    const auto pastMap = frame(hold::kCount - 1, 2);
+    EXPECT_EQ(decodeHoldingWrite(0x17, pastMap.data(), pastMap.size()).error,
+              Exception::IllegalAddress);
+    const auto farAway = frame(60000, 1);
+    EXPECT_EQ(decodeHoldingWrite(0x17, farAway.data(), farAway.size()).error,
+              Exception::IllegalAddress);
+    for (const std::uint16_t quantity :
+         {std::uint16_t{0}, std::uint16_t{126}, std::uint16_t{0xFFFF}}) {
+        const auto bad = frame(0, quantity);
+        EXPECT_EQ(decodeHoldingWrite(0x17, bad.data(), bad.size()).error, Exception::IllegalValue)
+            << quantity;
+    }
+}
+
 // Found by fuzz_dnc_request: function 22 went to Qt's register store unchecked, so half of the
 // feed override's float could be set to anything. It is now a write like the others.
 TEST(DncRegisters, MaskWriteIsCheckedLikeAnyWrite) {
