@@ -136,6 +136,13 @@ void XyController::resume() {
 
 void XyController::stop() {
     const auto s = status_.state;
+    if ((s == ControllerState::Manual || s == ControllerState::AutoIdle) && motion_->busy()) {
+        // A manual move (a set point sent, a jog): the same controlled stop as a program's,
+        // and the mode stays (issue 19: Stop stops every motion, not only a program's).
+        motion_->stop();
+        post(EventKind::Stopped);
+        return;
+    }
     if (s != ControllerState::Running && s != ControllerState::Waiting &&
         s != ControllerState::Paused && s != ControllerState::Homing)
         return;

@@ -142,6 +142,48 @@ class XyScreensTest : public QObject {
         QVERIFY(std::abs(s.sample.y.positionMm - 50.0) < 0.11);
     }
 
+    // Issue 19 item 1: a manual Send on the DC table is stopped by Stop (F8), Esc and Space,
+    // as a program is: the table stops short of the set point, in Manual, and Send is back.
+    void dcTableManualSendStopsOnStopEscAndSpace() {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        w.show();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        DcTablePanel* panel = w.tablePanel();
+        const Qt::Key keys[] = {Qt::Key_F8, Qt::Key_Escape, Qt::Key_Space};
+        for (Qt::Key key : keys) {
+            const double x0 = link->status().sample.x.positionMm;
+            const double target = x0 < 125.0 ? 250.0 : 0.0;
+            panel->xBox()->setValue(target);
+            panel->yBox()->setValue(target);
+            panel->sendButton()->click();
+            link->advance(0.3);
+            QVERIFY2(link->status().motionBusy, "the set point is under way");
+            QVERIFY2(w.stopButton()->isEnabled(), "Stop is offered during a manual move");
+            const double mid = link->status().sample.x.positionMm;
+            QVERIFY(std::abs(mid - x0) > 1.0);
+            QTest::keyClick(&w, key);
+            QVERIFY(advanceUntil(
+                *link, [&] { return !link->status().motionBusy; }, 5.0));
+            link->advance(0.5);
+            const XyStatus s = link->status();
+            QCOMPARE(s.state, ControllerState::Manual);
+            // Stopped on the way: far from the set point, within a braking distance of where
+            // the key was pressed.
+            QVERIFY2(std::abs(s.sample.x.positionMm - target) > 20.0,
+                     qPrintable(QStringLiteral("key %1: at %2 mm, the set point %3 mm")
+                                    .arg(int(key))
+                                    .arg(s.sample.x.positionMm)
+                                    .arg(target)));
+            QVERIFY(std::abs(s.sample.x.positionMm - mid) < 60.0);
+            QVERIFY(panel->sendButton()->isEnabled());
+            QVERIFY(!w.stopButton()->isEnabled());
+        }
+    }
+
     void plotterJogAndEStopKey() {
         QTemporaryDir dir;
         QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);

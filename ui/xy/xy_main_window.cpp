@@ -1,6 +1,7 @@
 #include "ui/xy/xy_main_window.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QEvent>
@@ -8,9 +9,12 @@
 #include <QFileInfo>
 #include <QGridLayout>
 #include <QHBoxLayout>
+#include <QKeyEvent>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QMenuBar>
+#include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSettings>
 #include <QShortcut>
@@ -161,6 +165,7 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     key(QKeySequence(Qt::Key_F7), resume_);
     key(QKeySequence(Qt::Key_F8), stop_);
     key(QKeySequence(QKeySequence::Open), open_);
+    qApp->installEventFilter(this);  // F1, Esc and Space: eventFilter
 
     // The machine's own panel.
     QWidget* machinePanel = nullptr;
@@ -346,7 +351,9 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
     hold_->setEnabled(status.state == ControllerState::Running ||
                       status.state == ControllerState::Waiting);
     resume_->setEnabled(status.state == ControllerState::Paused);
-    stop_->setEnabled(moving(status.state) || status.state == ControllerState::Paused);
+    // Stop stops every motion: a program's, a homing, and a manual set point or jog.
+    stop_->setEnabled(moving(status.state) || status.state == ControllerState::Paused ||
+                      status.motionBusy);
     reset_->setEnabled(latched);
     ack_->setEnabled(!latched && alarmed);
     automatic_->setEnabled(idle && !status.automatic);
@@ -417,6 +424,26 @@ void XyMainWindow::chooseConnection() {
     }
     emit connectionChosen(serial->isChecked() ? port->currentText().trimmed() : QString(),
                           baud->currentData().toInt());
+}
+
+bool XyMainWindow::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() != QEvent::KeyPress) return QMainWindow::eventFilter(watched, event);
+    auto* key = static_cast<QKeyEvent*>(event);
+    if (key->key() == Qt::Key_F1) {  // E-stop, as on the rail: wherever the focus is
+        link_.post([](XyController& c) { c.emergencyStop(); });
+        return true;
+    }
+    const bool popupOpen = QApplication::activePopupWidget() != nullptr ||
+                           QApplication::activeModalWidget() != nullptr;
+    if (!isActiveWindow() || popupOpen) return QMainWindow::eventFilter(watched, event);
+    QWidget* focus = QApplication::focusWidget();
+    const bool typing = qobject_cast<QPlainTextEdit*>(focus) || qobject_cast<QLineEdit*>(focus);
+    if (key->key() == Qt::Key_Escape ||
+        (key->key() == Qt::Key_Space && !typing && !key->isAutoRepeat())) {
+        link_.post([](XyController& c) { c.stop(); });
+        return true;
+    }
+    return QMainWindow::eventFilter(watched, event);
 }
 
 void XyMainWindow::closeEvent(QCloseEvent* e) {

@@ -47,6 +47,7 @@ class XyMainWindow : public QMainWindow {
     QLabel* positionLabel() const { return position_; }
     QPushButton* startButton() const { return start_; }
     QPushButton* estopButton() const { return estop_; }
+    QPushButton* stopButton() const { return stop_; }
     const std::shared_ptr<const Program>& program() const { return program_; }
 
   signals:
@@ -55,6 +56,9 @@ class XyMainWindow : public QMainWindow {
 
   protected:
     void changeEvent(QEvent* e) override;
+    /// The rail's keys, whatever has the focus: F1 E-stop; Esc and Space a controlled stop when
+    /// no menu or dialog is open (Space types a space in a text field).
+    bool eventFilter(QObject* watched, QEvent* event) override;
     void closeEvent(QCloseEvent* e) override;
 
   private:
