@@ -184,6 +184,35 @@ class XyScreensTest : public QObject {
         }
     }
 
+    // Issue 19 item 1 on the plotter: a long jog stops on Space (and Stop is offered).
+    void plotterJogStopsOnSpace() {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_plotter.json"));
+        XyMainWindow w(*link, settings);
+        w.show();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        PlotterPanel* panel = w.plotterPanel();
+        panel->jogStepBox()->setValue(panel->jogStepBox()->maximum());
+        const double x0 = link->status().sample.x.positionMm;
+        panel->rightButton()->click();
+        link->advance(0.3);
+        QVERIFY(link->status().motionBusy);
+        QVERIFY(w.stopButton()->isEnabled());
+        const double mid = link->status().sample.x.positionMm;
+        QVERIFY(mid > x0 + 0.5);
+        QTest::keyClick(&w, Qt::Key_Space);
+        QVERIFY(advanceUntil(
+            *link, [&] { return !link->status().motionBusy; }, 5.0));
+        link->advance(0.5);
+        const double end = link->status().sample.x.positionMm;
+        QVERIFY2(end < x0 + panel->jogStepBox()->maximum() - 5.0,
+                 qPrintable(QStringLiteral("stopped at %1 mm").arg(end)));
+        QVERIFY(end - mid < 10.0);
+        QCOMPARE(link->status().state, ControllerState::Manual);
+    }
+
     void plotterJogAndEStopKey() {
         QTemporaryDir dir;
         QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
