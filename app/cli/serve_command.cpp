@@ -17,6 +17,7 @@
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
+#include "app/cli/line_writer.h"
 #include "app/common/data_paths.h"
 #include "app/dnc/dnc_server.h"
 #include "app/dnc/virtual_machine.h"
@@ -118,8 +119,18 @@ int serveCommand(const QStringList& args) {
         QStringLiteral("In real time: print the servo thread's timing and the memory every "
                        "SECONDS (also on SIGUSR1 and at exit)."),
         QStringLiteral("SECONDS"));
+    const QCommandLineOption idleOpt(
+        QStringLiteral("idle-timeout"),
+        QStringLiteral("Close a TCP connection that sends nothing for SECONDS, or does not read "
+                       "its answers that long (default 60; 0: never)."),
+        QStringLiteral("SECONDS"));
+    const QCommandLineOption supervisorOpt(
+        QStringLiteral("supervisor"),
+        QStringLiteral("Keep the last of the 64 TCP connections for this address (the cell's "
+                       "supervisor), so other clients can never lock it out."),
+        QStringLiteral("ADDRESS"));
     parser.addOptions({machineOpt, tcpOpt, rtuOpt, baudOpt, unitOpt, programsOpt, remoteOpt,
-                       virtualOpt, scaleOpt, faultOpt, reportOpt});
+                       virtualOpt, scaleOpt, faultOpt, reportOpt, idleOpt, supervisorOpt});
     auto usage = [](const QString& message) { return usageError("serve", message); };
     if (auto done = parseArguments(parser, args, "serve")) return *done;
     if (!parser.positionalArguments().isEmpty())
@@ -175,6 +186,20 @@ int serveCommand(const QStringList& args) {
             return usage(QStringLiteral("--timing-report needs real time (no --virtual-time)"));
     }
 
+    dnc::TcpLimits tcpLimits;
+    if (parser.isSet(idleOpt)) {
+        bool ok = false;
+        tcpLimits.idleTimeoutS = parser.value(idleOpt).toDouble(&ok);
+        if (!ok || !std::isfinite(tcpLimits.idleTimeoutS) || tcpLimits.idleTimeoutS < 0 ||
+            tcpLimits.idleTimeoutS > 86400)
+            return usage(QStringLiteral("--idle-timeout must be 0-86400 seconds (got '%1')")
+                             .arg(parser.value(idleOpt)));
+    }
+    if (parser.isSet(supervisorOpt) &&
+        !tcpLimits.supervisor.setAddress(parser.value(supervisorOpt)))
+        return usage(QStringLiteral("--supervisor must be a numeric IP address (got '%1')")
+                         .arg(parser.value(supervisorOpt)));
+
     const ProfileLoad load = loadNamedMachineProfile(parser.value(machineOpt));
     if (!load.profile) return usage(load.error);
     if (!load.error.isEmpty()) err(QStringLiteral("trilho-cli serve: %1\n").arg(load.error));
@@ -200,10 +225,14 @@ int serveCommand(const QStringList& args) {
         realTime = worker.get();
         machine = std::move(worker);
     }
+    // Every line after the start goes through a writer thread: a stdout nobody reads never
+    // stops the server (LineWriter); the lines it cannot keep are counted and said.
+    LineWriter output(stdout);
+    auto say = [&output](const QString& text) { output.write(text.toStdString()); };
     dnc::DncServer server(*machine, library);
-    std::setvbuf(stdout, nullptr, _IOLBF, 0);  // one line at a time, even into a pipe
+    server.setTcpLimits(tcpLimits);
     QObject::connect(&server, &dnc::DncServer::historyLine,
-                     [](const QString& line) { out(line + QLatin1Char('\n')); });
+                     [&say](const QString& line) { say(line + QLatin1Char('\n')); });
     server.setRemote(parser.isSet(remoteOpt));
 
     QString error;
@@ -218,30 +247,30 @@ int serveCommand(const QStringList& args) {
         err(QStringLiteral("trilho-cli serve: warning: Modbus TCP on %1 is reachable from other "
                            "hosts; Modbus has no authentication\n")
                 .arg(host));
-    out(QStringLiteral("trilho-cli serve: Modbus TCP on %1:%2\n").arg(host).arg(port));
+    say(QStringLiteral("trilho-cli serve: Modbus TCP on %1:%2\n").arg(host).arg(port));
     if (parser.isSet(rtuOpt)) {
         if (!server.listenRtu(parser.value(rtuOpt), baud, unit, &error)) {
             err(QStringLiteral("trilho-cli serve: cannot open %1: %2\n")
                     .arg(parser.value(rtuOpt), error));
             return kUsage;
         }
-        out(QStringLiteral("trilho-cli serve: Modbus RTU on %1 at %2 baud, unit %3\n")
+        say(QStringLiteral("trilho-cli serve: Modbus RTU on %1 at %2 baud, unit %3\n")
                 .arg(parser.value(rtuOpt))
                 .arg(baud)
                 .arg(unit));
     }
-    out(QStringLiteral("trilho-cli serve: remote writes %1\n")
+    say(QStringLiteral("trilho-cli serve: remote writes %1\n")
             .arg(server.remote() ? QStringLiteral("allowed (--remote)")
                                  : QStringLiteral("refused (no --remote)")));
 
     std::signal(SIGINT, onQuit);
     std::signal(SIGTERM, onQuit);
     QTimer quitCheck;  // a signal handler may only set a flag; the loop looks at it
-    QObject::connect(&quitCheck, &QTimer::timeout, [realTime] {
+    QObject::connect(&quitCheck, &QTimer::timeout, [realTime, &say] {
         if (g_quit) QCoreApplication::quit();
         if (g_report && realTime) {
             g_report = 0;
-            out(timingLine(*realTime));
+            say(timingLine(*realTime));
         }
     });
     quitCheck.start(50);
@@ -249,12 +278,12 @@ int serveCommand(const QStringList& args) {
     reportTimer.setTimerType(Qt::PreciseTimer);  // a coarse timer may fire 5 % early
     if (realTime && reportS > 0.0) {
         QObject::connect(&reportTimer, &QTimer::timeout,
-                         [realTime] { out(timingLine(*realTime)); });
+                         [realTime, &say] { say(timingLine(*realTime)); });
         reportTimer.start(static_cast<int>(std::lround(reportS * 1000.0)));
     }
     QCoreApplication::exec();
-    if (realTime) out(timingLine(*realTime));  // since the last report, while the thread runs
-    out(QStringLiteral("trilho-cli serve: stopped\n"));
+    if (realTime) say(timingLine(*realTime));  // since the last report, while the thread runs
+    say(QStringLiteral("trilho-cli serve: stopped\n"));
     return kOk;
 }
 

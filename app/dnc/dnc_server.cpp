@@ -1,20 +1,19 @@
 #include "app/dnc/dnc_server.h"
 
 #include <QModbusRtuSerialServer>
-#include <QModbusTcpServer>
-#include <QPointer>
 #include <QSerialPort>
 #include <QStringList>
-#include <QTcpSocket>
 #include <QUrl>
 
+#include "app/dnc/modbus_tcp_listener.h"
+#include "app/dnc/register_store.h"
 #include "core/machine/event_text.h"
 
 namespace trilho::dnc {
 
 namespace {
 
-/// A Qt Modbus server whose requests go through DncServer::handle first.
+/// A Qt Modbus RTU server whose requests go through DncServer::handle first.
 template <class Base>
 class Served : public Base {
   public:
@@ -23,28 +22,14 @@ class Served : public Base {
 
   protected:
     QModbusResponse processRequest(const QModbusPdu& request) override {
-        // Qt's TCP server calls this from its slot on the client socket's readyRead (with
-        // the server as the context object), so sender() is the socket that sent the request.
-        QString client = client_;
-        if (client.isEmpty()) client = dnc_.peerName(qobject_cast<QTcpSocket*>(this->sender()));
         return dnc_.handle(
             request, *this, [this](const QModbusPdu& p) { return Base::processRequest(p); },
-            client);
+            client_);
     }
 
   private:
     DncServer& dnc_;
-    QString client_;  ///< empty: a TCP server (the peers are asked)
-};
-
-/// Notes each client, and refuses one past kMaxTcpClients (Qt then closes its socket).
-class PeerObserver final : public QModbusTcpConnectionObserver {
-  public:
-    explicit PeerObserver(std::function<bool(QTcpSocket*)> accept) : accept_(std::move(accept)) {}
-    bool acceptNewConnection(QTcpSocket* client) override { return accept_(client); }
-
-  private:
-    std::function<bool(QTcpSocket*)> accept_;
+    QString client_;  ///< the serial line's device: the client named in the history
 };
 
 QModbusDataUnitMap registerMap() {
@@ -83,60 +68,70 @@ DncServer::DncServer(DncMachine& machine, ProgramLibrary library, QObject* paren
             publish(*s);
     });
     timer_.start(20);
+    clock_.start();
+    connect(&summaryTimer_, &QTimer::timeout, this, [this] {
+        const QString summary = refusals_.roll(static_cast<double>(clock_.elapsed()) / 1000.0);
+        if (!summary.isEmpty()) emit historyLine(summary);
+    });
+    summaryTimer_.start(1000);
     refresh();
+}
+
+void DncServer::refused(const QString& client, const QString& line) {
+    for (const QString& l : refusals_.note(client, line, double(clock_.elapsed()) / 1000.0))
+        emit historyLine(l);
 }
 
 DncServer::~DncServer() {
     closing_ = true;
-    // Qt 6.4's TCP server frees a client's read buffer when that client's socket is destroyed,
-    // through a connection that dies with the server: sockets still alive when the server goes
-    // leak it (LeakSanitizer, stopping the link with clients connected). So the clients are
-    // closed, and their sockets destroyed, while the server still lives.
-    QList<QPointer<QTcpSocket>> clients;
-    for (QTcpSocket* c : peers_.keys())
-        clients.append(c);
+    tcp_.reset();  // its sockets first, while the store they were answered from still lives
     for (QModbusServer* s : servers_)
         s->disconnectDevice();
-    for (const QPointer<QTcpSocket>& c : clients)
-        delete c.data();
 }
 
 bool DncServer::listenTcp(const QString& host, quint16 port, QString* error) {
-    auto* srv = new Served<QModbusTcpServer>(*this, QString(), this);
-    srv->setConnectionParameter(QModbusDevice::NetworkAddressParameter, host);
-    srv->setConnectionParameter(QModbusDevice::NetworkPortParameter, port);
-    srv->setServerAddress(1);
-    srv->installConnectionObserver(new PeerObserver([this](QTcpSocket* s) {
-        const QString name = QStringLiteral("%1:%2")
-                                 .arg(QHostAddress(s->peerAddress().toIPv4Address()).toString())
-                                 .arg(s->peerPort());
-        if (peers_.size() >= kMaxTcpClients) {
-            // Each client costs a socket and its buffers: a bound, so a flood of connections
-            // cannot exhaust the machine's descriptors or memory. Said once per flood.
-            if (!refusingClients_)
-                emit historyLine(QStringLiteral("DNC: connection from %1 refused: %2 clients "
-                                                "already connected (the limit)")
-                                     .arg(name)
-                                     .arg(kMaxTcpClients));
-            refusingClients_ = true;
-            return false;
-        }
-        refusingClients_ = false;
-        peers_.insert(s, name);
-        emit clientsChanged();
-        return true;
-    }));
-    connect(srv, &QModbusTcpServer::modbusClientDisconnected, this, [this](QTcpSocket* s) {
-        peers_.remove(s);
+    if (!tcpStore_) {
+        tcpStore_ = new RegisterStore(this);
+        adopt(tcpStore_);
+    }
+    auto listener = std::make_unique<ModbusTcpListener>(
+        [this](const QByteArray& pdu, const QString& client) { return answerTcp(pdu, client); },
+        tcpLimits_);
+    connect(listener.get(), &ModbusTcpListener::historyLine, this, &DncServer::historyLine);
+    connect(listener.get(), &ModbusTcpListener::refusal, this, &DncServer::refused);
+    connect(listener.get(), &ModbusTcpListener::clientsChanged, this, [this] {
         if (!closing_) emit clientsChanged();  // not to the screens while this goes away
     });
-    if (!srv->connectDevice() || srv->state() != QModbusDevice::ConnectedState) {
-        if (error) *error = srv->errorString();
-        delete srv;
+    QHostAddress address;
+    if (!address.setAddress(host)) {
+        if (error) *error = QStringLiteral("'%1' is not an IP address").arg(host);
         return false;
     }
-    adopt(srv);
+    if (!listener->listen(address, port, error)) return false;
+    tcp_ = std::move(listener);
     return true;
+}
+
+QByteArray DncServer::answerTcp(const QByteArray& pdu, const QString& client) {
+    // The function code of every answer is the request's (its high bit set for an exception),
+    // whatever Qt's store makes of a code it does not know.
+    const auto code = static_cast<std::uint8_t>(pdu.at(0));
+    const QModbusRequest request(static_cast<QModbusPdu::FunctionCode>(code), pdu.mid(1));
+    const QModbusResponse r = handle(
+        request, *tcpStore_, [this](const QModbusPdu& p) { return tcpStore_->base(p); }, client);
+    QByteArray out;
+    if (r.isException()) {
+        out.append(static_cast<char>(code | 0x80));
+        out.append(static_cast<char>(r.exceptionCode()));
+    } else {
+        out.append(static_cast<char>(code));
+        out.append(r.data());
+    }
+    return out;
+}
+
+int DncServer::clientCount() const {
+    return tcp_ ? tcp_->clientCount() : 0;
 }
 
 bool DncServer::listenRtu(const QString& device, int baud, int unitId, QString* error) {
@@ -192,22 +187,6 @@ void DncServer::setRemote(bool on) {
     refresh();
 }
 
-QString DncServer::peerName(QTcpSocket* socket) const {
-    if (socket) {
-        const auto it = peers_.constFind(socket);
-        if (it != peers_.constEnd()) return *it;
-    }
-    return tcpClients();
-}
-
-QString DncServer::tcpClients() const {
-    QStringList names = peers_.values();
-    names.sort();
-    if (names.isEmpty()) return QStringLiteral("an unknown client");
-    if (names.size() == 1) return names.front();
-    return QStringLiteral("one of %1").arg(names.join(QStringLiteral(", ")));
-}
-
 void DncServer::refresh() {
     const ControllerStatus s = machine_.snapshot();
     machine_.drainEvents([this](const ControllerEvent& e) {
@@ -250,9 +229,9 @@ QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& serv
                         fc == QModbusPdu::WriteMultipleCoils || fc == QModbusPdu::WriteFileRecord;
     if (!writes) return base(request);
     if (!link_.remote) {
-        emit historyLine(QStringLiteral("DNC: write refused (Remote is off): function %1 from %2")
-                             .arg(int(fc))
-                             .arg(client));
+        refused(client, QStringLiteral("DNC: write refused (Remote is off): function %1 from %2")
+                            .arg(int(fc))
+                            .arg(client));
         return QModbusExceptionResponse(fc, QModbusPdu::IllegalFunction);
     }
     if (fc == QModbusPdu::WriteFileRecord) return writeFile(request, bytes, size, client);
@@ -261,12 +240,12 @@ QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& serv
     Exception e = d.error;
     if (e == Exception::None) e = checkHoldingWrite(d.write, holding_, machine_.snapshot().law);
     if (e != Exception::None) {
-        emit historyLine(QStringLiteral("DNC: write refused (%1): function %2 at %3 from %4")
-                             .arg(e == Exception::IllegalAddress ? QStringLiteral("address")
-                                                                 : QStringLiteral("bad value"))
-                             .arg(int(fc))
-                             .arg(d.write.start)
-                             .arg(client));
+        refused(client, QStringLiteral("DNC: write refused (%1): function %2 at %3 from %4")
+                            .arg(e == Exception::IllegalAddress ? QStringLiteral("address")
+                                                                : QStringLiteral("bad value"))
+                            .arg(int(fc))
+                            .arg(d.write.start)
+                            .arg(client));
         return QModbusExceptionResponse(fc, toQt(e));
     }
     const HoldingImage before = holding_;
@@ -281,11 +260,11 @@ QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& serv
         refresh();
         for (QModbusServer* s : servers_)
             publish(*s);
-        emit historyLine(QStringLiteral("DNC: write refused (the machine is busy): function %1 "
-                                        "at %2 from %3")
-                             .arg(int(fc))
-                             .arg(d.write.start)
-                             .arg(client));
+        refused(client, QStringLiteral("DNC: write refused (the machine is busy): function %1 "
+                                       "at %2 from %3")
+                            .arg(int(fc))
+                            .arg(d.write.start)
+                            .arg(client));
         return QModbusExceptionResponse(fc, QModbusPdu::ServerDeviceBusy);
     }
     refresh();
@@ -325,10 +304,10 @@ QModbusResponse DncServer::writeFile(const QModbusPdu& request, const std::uint8
         std::copy(w.values.begin(), w.values.end(), after.begin() + w.start);
     }
     if (e != Exception::None) {
-        emit historyLine(QStringLiteral("DNC: file record write refused (%1) from %2")
-                             .arg(e == Exception::IllegalAddress ? QStringLiteral("address")
-                                                                 : QStringLiteral("bad value"),
-                                  client));
+        refused(client, QStringLiteral("DNC: file record write refused (%1) from %2")
+                            .arg(e == Exception::IllegalAddress ? QStringLiteral("address")
+                                                                : QStringLiteral("bad value"),
+                                 client));
         return QModbusExceptionResponse(fc, toQt(e));
     }
     holding_ = after;
@@ -367,10 +346,10 @@ bool DncServer::applyWrite(const HoldingWrite& w, const QString& client) {
 void DncServer::finishCommand(std::uint16_t seq, CommandResult r, std::optional<Ticket> ticket,
                               const QString& client) {
     if (ticket && ticket->refused) {
-        emit historyLine(QStringLiteral("DNC: command (sequence %1) from %2 refused: the machine "
-                                        "is busy with the commands before it")
-                             .arg(seq)
-                             .arg(client.isEmpty() ? QStringLiteral("a client") : client));
+        refused(client, QStringLiteral("DNC: command (sequence %1) from %2 refused: the machine "
+                                       "is busy with the commands before it")
+                            .arg(seq)
+                            .arg(client.isEmpty() ? QStringLiteral("a client") : client));
         r = CommandResult::Busy;
         ticket.reset();
     }

@@ -4,7 +4,7 @@
 // status snapshot, refreshed on a timer (20 ms) and before every request; writes are checked
 // (write_check.h) before they are stored and become machine commands. Remote writes need the
 // operator's consent (setRemote); reading is always allowed.
-#include <QHash>
+#include <QElapsedTimer>
 #include <QHostAddress>
 #include <QModbusPdu>
 #include <QObject>
@@ -13,27 +13,34 @@
 #include <optional>
 
 #include "app/dnc/dnc_machine.h"
+#include "app/dnc/modbus_tcp_listener.h"
 #include "app/dnc/program_library.h"
+#include "app/dnc/refusal_summary.h"
+#include "app/dnc/register_store.h"
 #include "core/dnc/file_records.h"
 #include "core/dnc/status_registers.h"
 #include "core/dnc/write_check.h"
 
 class QModbusServer;
-class QTcpSocket;
 
 namespace trilho::dnc {
 
 class DncServer : public QObject {
     Q_OBJECT
   public:
-    /// TCP clients served at once; one more is refused (its connection closed at once).
+    /// TCP clients served at once by default; one more is refused (closed at once).
     static constexpr int kMaxTcpClients = 64;
 
     DncServer(DncMachine& machine, ProgramLibrary library, QObject* parent = nullptr);
     ~DncServer() override;
 
+    /// What each TCP connection may cost and how long it may stay silent (before listenTcp).
+    void setTcpLimits(const TcpLimits& limits) { tcpLimits_ = limits; }
+    const TcpLimits& tcpLimits() const { return tcpLimits_; }
     /// Listens on host:port (Modbus TCP). False with error when the port is taken.
     bool listenTcp(const QString& host, quint16 port, QString* error);
+    /// The TCP listener (null before listenTcp): its port, what it buffers.
+    const ModbusTcpListener* tcpListener() const { return tcp_.get(); }
     /// Serves unit `unitId` on a serial line (Modbus RTU), 8N1.
     bool listenRtu(const QString& device, int baud, int unitId, QString* error);
     /// Serves the map through a Modbus server made elsewhere (the fuzz target's, unconnected);
@@ -47,12 +54,8 @@ class DncServer : public QObject {
     QModbusResponse handle(const QModbusPdu& request, QModbusServer& server,
                            const std::function<QModbusResponse(const QModbusPdu&)>& base,
                            const QString& client);
-    /// Peers connected over TCP ("127.0.0.1:50412"), for the history line of a refused write.
-    QString tcpClients() const;
-    /// The peer of that socket ("127.0.0.1:50412"); all peers when it is not known.
-    QString peerName(QTcpSocket* socket) const;
     /// How many TCP clients are connected now (the screens' status bar).
-    int clientCount() const { return static_cast<int>(peers_.size()); }
+    int clientCount() const;
 
   signals:
     /// A line for the history (history lines of the controller, and the link's own).
@@ -61,6 +64,10 @@ class DncServer : public QObject {
     void clientsChanged();
 
   private:
+    /// A refused request's history line, through the summary (refusal_summary.h).
+    void refused(const QString& client, const QString& line);
+    /// A TCP request's PDU answered (ModbusTcpListener's handler).
+    QByteArray answerTcp(const QByteArray& pdu, const QString& client);
     void refresh();
     void publish(QModbusServer& server);
     /// Hands a stored write to the machine; false when the machine refused a gain or override
@@ -86,9 +93,13 @@ class DncServer : public QObject {
     HoldingImage holding_{};
     QTimer timer_;
     std::vector<QModbusServer*> servers_;  ///< owned (children)
-    QHash<QTcpSocket*, QString> peers_;    ///< connected TCP clients, "address:port"
-    bool closing_ = false;                 ///< being destroyed: no reopening
-    bool refusingClients_ = false;         ///< at kMaxTcpClients: the history said so once
+    RefusalSummary refusals_;
+    QElapsedTimer clock_;  ///< the refusal summary's time
+    QTimer summaryTimer_;  ///< ends a refusal window that no new refusal ends
+    TcpLimits tcpLimits_;
+    RegisterStore* tcpStore_ = nullptr;       ///< child; the TCP side's register store
+    std::unique_ptr<ModbusTcpListener> tcp_;  ///< the TCP connections
+    bool closing_ = false;                    ///< being destroyed: no reopening
     /// A command applied by the machine later (the worker's queue): echoed then.
     struct Pending {
         std::uint16_t seq;

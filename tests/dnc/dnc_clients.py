@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The DNC link against real Modbus clients (issue 13): pymodbus and mbpoll talk to
 `trilho-cli serve --virtual-time` on 127.0.0.1. Usage: dnc_clients.py CLI {pymodbus,mbpoll,
-refused,alarm,files,rtu}. Exits 77 (ctest SKIP_RETURN_CODE) when the client is not installed.
+refused,alarm,files,rtu,frames,bounds}. Exits 77 (ctest SKIP_RETURN_CODE) when the client is not installed.
 Every wait is on a condition with a deadline, never a fixed sleep."""
 import os
 import shutil
@@ -446,6 +446,145 @@ def exchange(port, frame, timeout=3.0):
             return b""
 
 
+def recv_exactly(sock, n, timeout=5.0):
+    """n bytes from sock, or None when they did not come in time (or it closed)."""
+    sock.settimeout(timeout)
+    data = b""
+    try:
+        while len(data) < n:
+            chunk = sock.recv(n - len(data))
+            if not chunk:
+                return None
+            data += chunk
+    except (socket.timeout, ConnectionResetError):
+        return None
+    return data
+
+
+def rss_kib(pid):
+    with open(f"/proc/{pid}/status") as f:
+        for line in f:
+            if line.startswith("VmRSS:"):
+                return int(line.split()[1])
+    return -1
+
+
+def run_bounds(cli):
+    """Issue 20 items 2, 3 and 6: a client that pipelines reads and never reads its answers
+    neither grows serve's memory nor slows the others; a flood of refused writes with serve's
+    stdout unread is summarised and never stops the server; idle connections time out; the
+    supervisor's slot is kept."""
+    status = mbap(struct.pack(">BHH", 4, 0, IN_COUNT))
+    answer_len = 7 + 2 + 2 * IN_COUNT
+    with tempfile.TemporaryDirectory() as programs:
+        srv = Server(cli, programs, remote=False,
+                     extra=("--idle-timeout", "2", "--supervisor", "127.0.0.2"))
+        try:
+            port = srv.port
+            base = rss_kib(srv.proc.pid)
+            greedy = socket.create_connection(("127.0.0.1", port), timeout=5)
+            greedy.setblocking(False)
+            sent = 0
+            chunk = status * 512
+            other = socket.create_connection(("127.0.0.1", port), timeout=5)
+            worst = 0.0
+            answered = 0
+            deadline = time.monotonic() + 6.0
+            started = time.monotonic()
+            closed_after = None  # when the server closed the greedy client (s after start)
+            peak = 0
+            while time.monotonic() < deadline:
+                if closed_after is None:
+                    try:
+                        sent += greedy.send(chunk)
+                    except BlockingIOError:
+                        pass
+                    except (ConnectionResetError, BrokenPipeError):
+                        closed_after = time.monotonic() - started
+                peak = max(peak, rss_kib(srv.proc.pid))
+                t = time.monotonic()
+                other.sendall(status)
+                a = recv_exactly(other, answer_len, timeout=2.0)
+                worst = max(worst, time.monotonic() - t)
+                answered += a is not None
+            grown = peak - base
+            check(answered > 100 and worst < 0.5,
+                  f"another client is served while one pipelines without reading ({answered} answers, worst {worst * 1000:.0f} ms)")
+            check(grown < 20 * 1024, f"serve grew at most {grown} KiB while {sent // 1024} KiB of requests were pipelined unread")
+            # It reads none of its answers: closed once the idle timeout (2 s) has passed.
+            end = time.monotonic() + 15
+            while closed_after is None and time.monotonic() < end:
+                try:
+                    if greedy.recv(1 << 20) == b"":
+                        closed_after = time.monotonic() - started
+                except BlockingIOError:
+                    time.sleep(0.05)  # polling a socket, not a synchronisation
+                except ConnectionResetError:
+                    closed_after = time.monotonic() - started
+            check(closed_after is not None and closed_after > 1.5,
+                  f"the client that never read its answers is closed after the idle timeout ({closed_after} s)")
+            other.close()
+            # An idle connection is closed after --idle-timeout 2.
+            idle = socket.create_connection(("127.0.0.1", port), timeout=10)
+            t = time.monotonic()
+            try:
+                got = idle.recv(10)
+            except ConnectionResetError:
+                got = b""
+            took = time.monotonic() - t
+            check(got == b"" and 1.5 < took < 5.0, f"an idle connection is closed after 2-3 s ({took:.1f} s)")
+            idle.close()
+            # 63 connections from 127.0.0.1 fill every slot but the supervisor's.
+            held = []
+            try:
+                for _ in range(63):
+                    held.append(socket.create_connection(("127.0.0.1", port), timeout=5))
+                for c in held[:1] + held[-1:]:
+                    c.sendall(status)
+                check(all(recv_exactly(c, answer_len) is not None for c in held[:1] + held[-1:]),
+                      "63 connections are served")
+                extra = exchange(port, status, timeout=3)
+                check(extra == b"", "a 64th from another address is refused: the last slot is the supervisor's")
+                sup = socket.socket()
+                sup.bind(("127.0.0.2", 0))
+                sup.settimeout(5)
+                sup.connect(("127.0.0.1", port))
+                sup.sendall(status)
+                check(recv_exactly(sup, answer_len) is not None, "the supervisor (127.0.0.2) is served in the kept slot")
+                sup.close()
+            finally:
+                for c in held:
+                    c.close()
+            wait_for(lambda: exchange(port, status) not in (None, b""),
+                     "once they close, a client from 127.0.0.1 is served again")
+            # A flood of refused writes (no --remote) with serve's stdout unread: answered, and
+            # the history is summarised.
+            flood = socket.create_connection(("127.0.0.1", port), timeout=5)
+            write = mbap(struct.pack(">BHH", 6, H_FEED, 0))
+            refusals = 0
+            t_end = time.monotonic() + 3.0
+            while time.monotonic() < t_end:
+                flood.sendall(write * 64)
+                got = recv_exactly(flood, 9 * 64)
+                if got is None:
+                    break
+                refusals += 64
+            check(refusals > 2000, f"{refusals} refused writes were all answered with stdout unread")
+            reader = socket.create_connection(("127.0.0.1", port), timeout=5)
+            reader.sendall(status)
+            check(recv_exactly(reader, answer_len) is not None, "another client is still answered")
+            reader.close()
+            flood.close()
+        finally:
+            rc, out = srv.stop()
+        lines = [l for l in out.splitlines() if "write refused" in l]
+        summaries = [l for l in out.splitlines() if "refused requests in the last" in l]
+        check(len(lines) <= 30, f"{len(lines)} refusal lines written whole for {refusals} refusals")
+        check(len(summaries) >= 1, "the refusals are summed up: " + (summaries[0] if summaries else "none"))
+        check("closed: silent for 2 s" in out, "the history names the idle connection closed")
+        check("read none of its answers" in out, "the history names the client that did not read")
+
+
 def run_frames(cli):
     with tempfile.TemporaryDirectory() as programs:
         srv = Server(cli, programs)
@@ -464,14 +603,27 @@ def run_frames(cli):
             check(r is not None and r[7:9] == bytes([0x84, 3]), "200 registers at once: exception 03")
             r = exchange(port, mbap(struct.pack(">BHH", 4, 0, 0)))
             check(r is not None and r[7:9] == bytes([0x84, 3]), "quantity 0: exception 03")
-            # Qt's framing answers a code it cannot size itself, with function byte 0x80.
+            # An unknown function: exception 01 under its own code with the high bit (issue 20
+            # item 12: Qt's framing answered function byte 0x80).
             r = exchange(port, mbap(bytes([0x41, 1, 2, 3])))
-            check(r is not None and r[7] & 0x80 and r[8] == 1, f"an unknown function: exception 01 ({r!r})")
-            # Frames that are not Modbus: the server drops them (and maybe the connection) and goes on.
-            for what, frame in [("a wrong protocol id", mbap(struct.pack(">BHH", 4, 0, 1), proto=7)),
-                                ("a length field of 0", mbap(b"", length=0)),
-                                ("a length field of 3000", mbap(struct.pack(">BHH", 4, 0, 1), length=3000)),
-                                ("64 KB of noise", bytes(range(256)) * 256),
+            check(r is not None and r[7:9] == bytes([0xC1, 1]), f"an unknown function: 0xC1, exception 01 ({r!r})")
+            # Issue 20 item 7, as docs/dnc.md says: a frame of another protocol is dropped
+            # unanswered and the connection goes on; a length field no frame can have (0, 1, 3000)
+            # leaves the stream out of step, so the connection is closed.
+            with socket.create_connection(("127.0.0.1", port), timeout=3) as c:
+                c.sendall(mbap(struct.pack(">BHH", 4, 0, 1), proto=7, tid=9) + status)
+                answer = recv_exactly(c, 7 + 2 + 2 * IN_COUNT)
+                check(answer is not None and answer[:2] == b"\0\1",
+                      f"a wrong protocol id is dropped, the next request on that connection answered ({answer[:9]!r})")
+            for length in (0, 1, 3000):
+                with socket.create_connection(("127.0.0.1", port), timeout=3) as c:
+                    c.sendall(mbap(struct.pack(">BHH", 4, 0, 1), length=length) + status)
+                    try:
+                        got = c.recv(300)
+                    except (ConnectionResetError, BrokenPipeError):
+                        got = b""
+                    check(got == b"", f"a length field of {length} closes the connection unanswered ({got[:9]!r})")
+            for what, frame in [("64 KB of noise", bytes(range(256)) * 256),
                                 ("half a header", b"\0\1\0")]:
                 exchange(port, frame, timeout=0.5)
                 after = exchange(port, status)
@@ -558,7 +710,7 @@ def main():
             print("pymodbus not installed: skipped (scripts/deps.sh installs python3-pymodbus)")
             return 77
         {"pymodbus": run_pymodbus, "alarm": run_alarm, "refused": run_refused,
-         "files": run_files, "rtu": run_rtu, "frames": run_frames}[mode](cli)
+         "files": run_files, "rtu": run_rtu, "frames": run_frames, "bounds": run_bounds}[mode](cli)
     if failures:
         print(f"{len(failures)} failed: " + "; ".join(failures))
         return 1

@@ -1,0 +1,87 @@
+#pragma once
+// Modbus TCP for the DNC link: the connections, the framing (core/dnc/mbap_frame.h) and what
+// each connection may cost, around a handler that answers one PDU. Qt's QModbusTcpServer
+// buffered without bound for a client that pipelined and never read (232 MB in 60 s), served
+// a greedy client before any other, answered frames it should drop and could be locked out by
+// idle connections (issue 20 items 3, 6, 7); this one bounds each connection and takes turns:
+// - a connection's answers waiting to be sent are at most maxPendingBytes: past that its
+//   requests are not read (TCP then holds the client back) until it reads its answers, and a
+//   client that reads none for idleTimeoutS is closed;
+// - Qt reads at most one frame ahead per connection (its read buffer is bounded);
+// - every connection with a request waiting gets framesPerTurn answers in turn, and the event
+//   loop runs between turns (the screens' keys, the servo snapshot);
+// - a connection silent for idleTimeoutS is closed (0: never), and the last slot of maxClients
+//   is kept for the supervisor's address when one is configured.
+#include <QElapsedTimer>
+#include <QHash>
+#include <QHostAddress>
+#include <QObject>
+#include <QTimer>
+#include <deque>
+#include <functional>
+#include <memory>
+
+class QTcpServer;
+class QTcpSocket;
+
+namespace trilho::dnc {
+
+struct TcpLimits {
+    int maxClients = 64;             ///< connections served at once
+    QHostAddress supervisor;         ///< the last slot is this address's (null: none kept)
+    double idleTimeoutS = 60.0;      ///< a connection that sends nothing this long is closed
+    qint64 maxPendingBytes = 16384;  ///< answers waiting to be sent, per connection (bytes)
+    int framesPerTurn = 4;           ///< requests answered per connection before the next one's
+};
+
+class ModbusTcpListener : public QObject {
+    Q_OBJECT
+  public:
+    /// Answers one request PDU (function code and data) from a client ("address:port") with a
+    /// response PDU (function code and data); never empty.
+    using Handler = std::function<QByteArray(const QByteArray& pdu, const QString& client)>;
+
+    ModbusTcpListener(Handler handler, TcpLimits limits, QObject* parent = nullptr);
+    ~ModbusTcpListener() override;
+
+    bool listen(const QHostAddress& host, quint16 port, QString* error);
+    quint16 port() const;
+    int clientCount() const { return static_cast<int>(connections_.size()); }
+    const TcpLimits& limits() const { return limits_; }
+    /// Bytes this process holds for all connections (read and write buffers): the bound.
+    qint64 bufferedBytes() const;
+
+  signals:
+    void historyLine(const QString& line);
+    /// A request of client's dropped unanswered (the line says why): summarised upstream.
+    void refusal(const QString& client, const QString& line);
+    void clientsChanged();
+
+  private:
+    struct Connection {
+        QTcpSocket* socket = nullptr;
+        QString name;           ///< "address:port"
+        QByteArray in;          ///< the start of the stream not yet answered (< one frame + header)
+        QElapsedTimer heard;    ///< since the last whole request (or the connection)
+        QElapsedTimer stalled;  ///< since its answers filled maxPendingBytes (invalid: not)
+        bool queued = false;    ///< in ready_
+    };
+    void accept();
+    void drop(QTcpSocket* socket, const QString& why);
+    void markReady(Connection& c);
+    void serveTurn();
+    /// Answers up to framesPerTurn requests; true when it has more waiting and may go on.
+    bool serve(Connection& c);
+    void checkTimeouts();
+
+    Handler handler_;
+    TcpLimits limits_;
+    QTcpServer* server_ = nullptr;
+    QHash<QTcpSocket*, std::shared_ptr<Connection>> connections_;
+    std::deque<QTcpSocket*> ready_;  ///< connections with a request waiting, in turn order
+    QTimer turn_;                    ///< zero-time: one turn, then the event loop
+    QTimer watch_;                   ///< 1 s: idle and stalled connections
+    bool refusing_ = false;          ///< at the limit: the history said so once
+};
+
+}  // namespace trilho::dnc

@@ -1,0 +1,110 @@
+// Issue 20 item 2: refused requests' history lines are bounded whatever the clients do, and
+// serve's output never blocks the server on a stream nobody reads.
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <random>
+#include <string>
+
+#include "app/cli/line_writer.h"
+#include "app/dnc/refusal_summary.h"
+
+namespace trilho {
+namespace {
+
+TEST(RefusalSummary, AtMostTotalPlusOneLinesAWindowAndTheCountIsExact) {
+    std::mt19937 rng(20);
+    dnc::RefusalSummary summary;
+    const auto& limits = summary.limits();
+    double t = 0.0;
+    std::uint64_t sent = 0;
+    std::uint64_t counted = 0;
+    int linesThisWindow = 0;
+    double windowStart = 0.0;
+    int worstWindow = 0;
+    // 60 s of 1..64 clients refusing at up to 10 kHz, with quiet gaps.
+    while (t < 60.0) {
+        t += std::uniform_real_distribution<double>(0.0, rng() % 50 == 0 ? 3.0 : 1e-4)(rng);
+        const QString client = QStringLiteral("10.0.0.%1:502").arg(rng() % 64);
+        const QStringList lines = summary.note(client, QStringLiteral("refused"), t);
+        ++sent;
+        for (const QString& l : lines) {
+            if (l.contains(QStringLiteral("refused requests in the last"))) {
+                counted += l.section(QLatin1Char(' '), 1, 1).toULongLong();
+                worstWindow = std::max(worstWindow, linesThisWindow);
+                linesThisWindow = 0;
+                windowStart = t;
+            } else if (l == QStringLiteral("refused") && t - windowStart > limits.windowS) {
+                // a window ended with nothing held back: it needs no summary
+                worstWindow = std::max(worstWindow, linesThisWindow);
+                linesThisWindow = 0;
+                windowStart = t;
+            }
+            ++linesThisWindow;
+        }
+    }
+    const QString last = summary.roll(t + limits.windowS);
+    if (!last.isEmpty()) counted += last.section(QLatin1Char(' '), 1, 1).toULongLong();
+    worstWindow = std::max(worstWindow, linesThisWindow);
+    EXPECT_LE(worstWindow, limits.total + 1);
+    EXPECT_GT(counted, 0u);
+    EXPECT_LE(counted, sent);  // windows with nothing held back are not summed up
+}
+
+TEST(RefusalSummary, AQuietClientIsShownWholeAndTheSummaryNamesTheLoudest) {
+    dnc::RefusalSummary summary;
+    for (int k = 0; k < 1000; ++k)
+        summary.note(QStringLiteral("10.0.0.1:1"), QStringLiteral("loud"), 0.001 * k);
+    const QStringList quiet =
+        summary.note(QStringLiteral("10.0.0.2:1"), QStringLiteral("quiet"), 1.5);
+    EXPECT_EQ(quiet, QStringList{QStringLiteral("quiet")});
+    const QString s = summary.roll(10.5);
+    EXPECT_TRUE(
+        s.startsWith(QStringLiteral("DNC: 1001 refused requests in the last 10 s from 2 "
+                                    "client(s) (most: 10.0.0.1:1, 1000); 4 shown")))
+        << s.toStdString();
+    EXPECT_TRUE(summary.roll(30.0).isEmpty());  // a window with nothing
+}
+
+TEST(LineWriter, AStreamNobodyReadsNeverBlocksTheWriterAndTheGapIsSaid) {
+    int fds[2];
+    ASSERT_EQ(::pipe(fds), 0);
+    std::FILE* stream = ::fdopen(fds[1], "w");
+    ASSERT_NE(stream, nullptr);
+    std::string said;
+    {
+        cli::LineWriter writer(stream, 64);
+        const std::string line(200, 'x');
+        // 10,000 lines of 200 bytes: 2 MB into a 64 KB pipe nobody reads. Each write returns.
+        for (int k = 0; k < 10000; ++k)
+            writer.write(line + "\n");
+        EXPECT_GT(writer.dropped(), 9000u);
+        // Now someone reads: everything queued comes out, and then what follows the gap, with
+        // the gap said where it is.
+        ::fcntl(fds[0], F_SETFL, O_NONBLOCK);
+        char buffer[65536];
+        auto readAll = [&] {
+            while (!writer.drain(0.01)) {
+                const ssize_t n = ::read(fds[0], buffer, sizeof buffer);
+                if (n > 0) said.append(buffer, static_cast<std::size_t>(n));
+            }
+            for (ssize_t n; (n = ::read(fds[0], buffer, sizeof buffer)) > 0;)
+                said.append(buffer, static_cast<std::size_t>(n));
+        };
+        readAll();
+        writer.write("last\n");
+        readAll();
+    }
+    std::fclose(stream);
+    ::close(fds[0]);
+    const std::size_t gap = said.find(" lines not written: the output was not read\nlast\n");
+    ASSERT_NE(gap, std::string::npos);
+    EXPECT_EQ(gap + 49, said.size());  // the gap is said just before the line after it
+    EXPECT_EQ(said.find("lines not written"), said.rfind("lines not written"));
+}
+
+}  // namespace
+}  // namespace trilho
