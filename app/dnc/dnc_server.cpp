@@ -52,6 +52,16 @@ QModbusPdu::ExceptionCode toQt(Exception e) {
     }
 }
 
+std::uint16_t be16(const std::uint8_t* p) {
+    return static_cast<std::uint16_t>((p[0] << 8) | p[1]);
+}
+
+/// Function 08's sub-functions that only read: 00 returns the query, 02 the diagnostic
+/// register, 0B-12 the counters (Modbus Application Protocol v1.1b3, 6.8).
+bool diagnosticReadsOnly(std::uint16_t sub) {
+    return sub == 0x00 || sub == 0x02 || (sub >= 0x0B && sub <= 0x12);
+}
+
 bool runningState(ControllerState s) {
     return s == ControllerState::Running || s == ControllerState::Waiting ||
            s == ControllerState::Paused || s == ControllerState::Homing;
@@ -165,14 +175,18 @@ void DncServer::watchSerialLine(QModbusServer* srv, const QString& device) {
                     QStringLiteral("DNC: Modbus RTU on %1: %2").arg(device, srv->errorString()));
                 if (srv->state() == QModbusDevice::ConnectedState) srv->disconnectDevice();
             });
-    connect(srv, &QModbusDevice::stateChanged, this, [this, reopen](QModbusDevice::State st) {
-        if (st == QModbusDevice::UnconnectedState && !closing_) reopen->start();
-    });
-    connect(reopen, &QTimer::timeout, this, [this, srv, reopen, device] {
-        if (srv->connectDevice() && srv->state() == QModbusDevice::ConnectedState) {
-            reopen->stop();
-            emit historyLine(QStringLiteral("DNC: Modbus RTU on %1 open again").arg(device));
-        }
+    connect(
+        srv, &QModbusDevice::stateChanged, this, [this, reopen, device](QModbusDevice::State st) {
+            if (st == QModbusDevice::UnconnectedState && !closing_) reopen->start();
+            // Qt reconnects by itself too (08/01 restarts the line): the timer stops
+            // whoever reopened it, so a later loss is said and retried again.
+            if (st == QModbusDevice::ConnectedState && reopen->isActive()) {
+                reopen->stop();
+                emit historyLine(QStringLiteral("DNC: Modbus RTU on %1 open again").arg(device));
+            }
+        });
+    connect(reopen, &QTimer::timeout, this, [srv] {
+        if (srv->state() == QModbusDevice::UnconnectedState) srv->connectDevice();
     });
 }
 
@@ -225,7 +239,12 @@ QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& serv
     const auto size = static_cast<std::size_t>(data.size());
     if (fc == QModbusPdu::ReadFileRecord) return readFile(fc, bytes, size);
     WriteDecode d = decodeHoldingWrite(static_cast<std::uint8_t>(fc), bytes, size);
-    const bool writes = d.isWrite || fc == QModbusPdu::WriteSingleCoil ||
+    // Function 08's sub-functions that change the link (restart, listen only, clear counters,
+    // change the ASCII delimiter) are writes too: 08/04 silenced every RTU client until 08/01
+    // (issue 20 item 4). Echo (00) and the counters' reads need no consent.
+    const bool changesLink =
+        fc == QModbusPdu::Diagnostics && size >= 2 && !diagnosticReadsOnly(be16(bytes));
+    const bool writes = d.isWrite || changesLink || fc == QModbusPdu::WriteSingleCoil ||
                         fc == QModbusPdu::WriteMultipleCoils || fc == QModbusPdu::WriteFileRecord;
     if (!writes) return base(request);
     if (!link_.remote) {
@@ -234,6 +253,10 @@ QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& serv
                             .arg(client));
         return QModbusExceptionResponse(fc, QModbusPdu::IllegalFunction);
     }
+    if (changesLink)
+        emit historyLine(QStringLiteral("DNC: diagnostics 08/%1 from %2 (changes the link)")
+                             .arg(be16(bytes), 2, 16, QLatin1Char('0'))
+                             .arg(client));
     if (fc == QModbusPdu::WriteFileRecord) return writeFile(request, bytes, size, client);
     if (!d.isWrite) return base(request);  // coils: none in the map (an exception)
     resolveMask(d, holding_);              // function 22: the value it leaves, checked as a write

@@ -245,12 +245,21 @@ def run_refused(cli):
             check(p.exc(p.write(H_KP, regs_of(2.0))) == 1, "gains write refused (illegal function)")
             check(p.exc(p.write(H_COMMAND, [AUTO, 0, 1])) == 1, "command refused")
             check(p.hr(H_KP, 2) == kp and p.state() == MANUAL, "nothing changed")
+            # Issue 20 item 4: diagnostics that change the link need consent; the echo does not.
+            listen_only = exchange(srv.port, mbap(struct.pack(">BHH", 8, 4, 0)))
+            check(listen_only is not None and listen_only[7:9] == bytes([0x88, 1]),
+                  f"08/04 (listen only) refused without Remote ({listen_only!r})")
+            exchange(srv.port, mbap(struct.pack(">BHH", 8, 0, 0x1234)))  # echo: no consent needed
+            check(p.ir(IN_VERSION)[0] == 1, "still served after the 08s")
             p.c.close()
             other.c.close()
         finally:
             rc, out = srv.stop()
         check(f"write refused (Remote is off): function 16 from {p.peer}\n" in out,
               f"history line names the client that wrote ({p.peer}), of two")
+        # (Over TCP Qt's store answers 08 with 01 anyway: the history tells consent apart.)
+        check(out.count("write refused (Remote is off): function 8 ") == 1,
+              "08/04 refused for consent, 08/00 not: " + " | ".join(l for l in out.splitlines() if "function 8 " in l))
 
 
 # ---------------------------------------------------------------- file records (20, 21)
@@ -400,6 +409,13 @@ def run_rtu(cli):
             check(getattr(r, "exception_code", 0) == 3, "RTU: kp 1e9 refused with exception 03")
             r = c.read_input_registers(500, 1, slave=7)
             check(getattr(r, "exception_code", 0) == 2, "RTU: address 500 refused with exception 02")
+            # Issue 20 item 4: diagnostics. 08/00 (echo) needs no consent; 08/01 (restart the
+            # line, with --remote here) is said in the history, and the line is served after it.
+            from pymodbus.diag_message import ReturnQueryDataRequest, RestartCommunicationsOptionRequest
+            r = c.execute(ReturnQueryDataRequest(0x1234, unit=7))
+            check(not r.isError(), f"RTU: 08/00 echoes ({r})")
+            c.execute(RestartCommunicationsOptionRequest(False, unit=7))
+            wait_for(lambda: rtu_ir(IN_VERSION) == 1, "RTU: served after 08/01 (restart)")
             c.close()
             # The line goes away (an adapter pulled out) and comes back at the same path.
             link.terminate()
@@ -420,7 +436,8 @@ def run_rtu(cli):
             srv.terminate()
             out, _ = srv.communicate(timeout=20)
             check(srv.returncode == 0, f"serve exits 0 on SIGTERM ({srv.returncode})")
-            check(out.count("DNC: Modbus RTU on") == 2 and "open again" in out,
+            check("diagnostics 08/01" in out, "the history names the 08/01 and its client")
+            check(out.count("DNC: Modbus RTU on") >= 2 and "open again" in out,
                   "the history says the line was lost, once, and open again: "
                   + " | ".join(x for x in out.splitlines() if "RTU" in x))
         finally:
