@@ -87,6 +87,15 @@ DncServer::DncServer(DncMachine& machine, ProgramLibrary library, QObject* paren
     refresh();
 }
 
+bool DncServer::takeDownloadBlock(const QString& client) {
+    if (!downloadOwner_.isEmpty() && downloadOwner_ != client &&
+        double(downloadTouched_.elapsed()) / 1000.0 < kDownloadOwnershipS)
+        return false;
+    downloadOwner_ = client;
+    downloadTouched_.restart();
+    return true;
+}
+
 void DncServer::refused(const QString& client, const QString& line) {
     for (const QString& l : refusals_.note(client, line, double(clock_.elapsed()) / 1000.0))
         emit historyLine(l);
@@ -271,6 +280,17 @@ QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& serv
                             .arg(client));
         return QModbusExceptionResponse(fc, toQt(e));
     }
+    const bool intoDownload =
+        std::size_t{d.write.start} + d.write.values.size() > hold::kDownloadNumber;
+    if (intoDownload && !takeDownloadBlock(client)) {
+        refused(client, QStringLiteral("DNC: write refused (the download block is %1's until it "
+                                       "commits): function %2 at %3 from %4")
+                            .arg(downloadOwner_)
+                            .arg(int(fc))
+                            .arg(d.write.start)
+                            .arg(client));
+        return QModbusExceptionResponse(fc, QModbusPdu::ServerDeviceBusy);
+    }
     const HoldingImage before = holding_;
     const QModbusResponse response = base(request);
     if (response.isException()) return response;
@@ -314,6 +334,12 @@ QModbusResponse DncServer::readFile(QModbusPdu::FunctionCode fc, const std::uint
 QModbusResponse DncServer::writeFile(const QModbusPdu& request, const std::uint8_t* data,
                                      std::size_t size, const QString& client) {
     const auto fc = request.functionCode();
+    if (!takeDownloadBlock(client)) {
+        refused(client, QStringLiteral("DNC: file record write refused (the download block is "
+                                       "%1's until it commits) from %2")
+                            .arg(downloadOwner_, client));
+        return QModbusExceptionResponse(fc, QModbusPdu::ServerDeviceBusy);
+    }
     const FileRecordDecode d = decodeWriteFileRecord(data, size);
     FileWritePlan plan;
     if (d.error == Exception::None) plan = fileWriteAsHolding(d.refs);
@@ -457,6 +483,9 @@ void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq,
             if (pending_) return finish(CommandResult::Busy);
             return finish(CommandResult::Applied, machine_.send(CommandKind::SelectManual));
         case Command::CommitDownload: {
+            // Only the client whose download it is commits it; the block is free afterwards.
+            if (!takeDownloadBlock(client)) return finish(CommandResult::Busy);
+            downloadOwner_.clear();
             const std::uint16_t length = holding_[hold::kDownloadLength];
             if (holding_[hold::kDownloadNumber] != argument || length > hold::kDownloadMaxBytes)
                 return finish(CommandResult::BadDownload);

@@ -64,6 +64,9 @@ class DncServer : public QObject {
     void clientsChanged();
 
   private:
+    /// Whether client may write into the download block now: it is free, or client's, or its
+    /// owner has not written for kDownloadOwnershipS. True makes client its owner.
+    bool takeDownloadBlock(const QString& client);
     /// A refused request's history line, through the summary (refusal_summary.h).
     void refused(const QString& client, const QString& line);
     /// A TCP request's PDU answered (ModbusTcpListener's handler).
@@ -93,6 +96,11 @@ class DncServer : public QObject {
     HoldingImage holding_{};
     QTimer timer_;
     std::vector<QModbusServer*> servers_;  ///< owned (children)
+    /// The download block belongs to one client from its first write to its commit (issue 20
+    /// item 8: two clients interleaving downloads saved a program neither sent).
+    QString downloadOwner_;
+    QElapsedTimer downloadTouched_;
+    static constexpr double kDownloadOwnershipS = 30.0;
     RefusalSummary refusals_;
     QElapsedTimer clock_;  ///< the refusal summary's time
     QTimer summaryTimer_;  ///< ends a refusal window that no new refusal ends

@@ -309,6 +309,21 @@ def run_files(cli):
         srv = Server(cli, programs)
         try:
             p = Py(srv.port)
+            # Issue 20 item 8: the download block is one client's from its first write to its
+            # commit; another client's download is busy (06) meanwhile, its commit too.
+            mine, theirs = "N0010 G01 X0010 F010\nN0020 M02\n", "N0010 G01 X0099 F010\nN0020 M02\n"
+            other = Py(srv.port)
+            check(not file_write(p, 55, mine).isError(), "a download to 55 begins")
+            check(other.exc(file_write(other, 55, theirs)) == 6,
+                  "another client's download meanwhile is refused busy (06)")
+            check(other.exc(other.write(H_DL_DATA, [0x2020])) == 6, "so is its function 16 into the block")
+            check(other.command(COMMIT, 55) == 4, "and its commit is busy")
+            check(p.command(COMMIT, 55) == APPLIED, "the owner commits")
+            with open(os.path.join(programs, "0055.G")) as f:
+                check(f.read() == mine, "0055.G holds what the owner sent, nothing of the other's")
+            check(not file_write(other, 55, theirs).isError(), "after the commit the block is free")
+            check(other.command(COMMIT, 55) == APPLIED, "and the other client commits its own")
+            other.c.close()
             r = file_write(p, 77, text)
             check(not r.isError(), f"function 21 writes program 77 ({len(text)} bytes)")
             dl = p.hr(H_DL_NUMBER, 2)
