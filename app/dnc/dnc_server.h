@@ -72,6 +72,11 @@ class DncServer : public QObject {
     /// A TCP request's PDU answered (ModbusTcpListener's handler).
     QByteArray answerTcp(const QByteArray& pdu, const QString& client);
     void refresh();
+    /// refresh() unless done within the last servo period (1 ms); true when it refreshed.
+    bool refreshIfStale();
+    /// Functions 03 and 04 from the link's own image (input_, holding_).
+    QModbusResponse readRegisters(QModbusPdu::FunctionCode fc, const std::uint8_t* data,
+                                  std::size_t size) const;
     void publish(QModbusServer& server);
     /// Hands a stored write to the machine; false when the machine refused a gain or override
     /// change (its queue is busy): the caller undoes the write and answers exception 06.
@@ -102,8 +107,9 @@ class DncServer : public QObject {
     QElapsedTimer downloadTouched_;
     static constexpr double kDownloadOwnershipS = 30.0;
     RefusalSummary refusals_;
-    QElapsedTimer clock_;  ///< the refusal summary's time
-    QTimer summaryTimer_;  ///< ends a refusal window that no new refusal ends
+    QElapsedTimer clock_;                  ///< the refusal summary's time, and the refreshes'
+    qint64 refreshedNs_ = -1'000'000'000;  ///< clock_ time of the last refresh
+    QTimer summaryTimer_;                  ///< ends a refusal window that no new refusal ends
     TcpLimits tcpLimits_;
     RegisterStore* tcpStore_ = nullptr;       ///< child; the TCP side's register store
     std::unique_ptr<ModbusTcpListener> tcp_;  ///< the TCP connections

@@ -191,6 +191,7 @@ bool ModbusTcpListener::serve(Connection& c) {
         c.heard.restart();
         if (!connections_.contains(s)) return false;
     }
+    s->flush();  // this turn's answers to the kernel now, not after another loop iteration
     if (s->bytesAvailable() > 0) return true;
     return scanMbap(reinterpret_cast<const std::uint8_t*>(c.in.constData()),
                     static_cast<std::size_t>(c.in.size()))
