@@ -1,5 +1,7 @@
 #include "ui/run_controls.h"
 
+#include <cmath>
+
 #include <QAction>
 #include <QEvent>
 #include <QGridLayout>
@@ -78,6 +80,7 @@ RunControls::RunControls(QWidget* parent) : QWidget(parent) {
     connect(overrideReset_, &QAction::triggered, this, [this] { override_->setValue(100); });
     connect(override_, &QSlider::valueChanged, this, [this](int v) {
         retranslate();
+        overrideSent_.start();
         emit feedOverrideChanged(v / 100.0);
     });
     retranslate();
@@ -100,6 +103,16 @@ void RunControls::showStatus(const ControllerStatus& s, bool programSelected, bo
     continue_->setEnabled(s.state == ControllerState::Paused);
     // Stop is never greyed while anything can move: manual drive, jog, homing or a program.
     stop_->setEnabled(s.state != ControllerState::EStop);
+    // One source of truth (issue 19 item 4): the slider shows the machine's override, whoever
+    // set it (the DNC link too), but for a moment after the operator moved it, while the
+    // command is on its way to the servo thread.
+    const int machinePercent = static_cast<int>(std::lround(s.feedOverride * 100.0));
+    const bool operatorJustMoved = overrideSent_.isValid() && overrideSent_.elapsed() < 300;
+    if (!override_->isSliderDown() && !operatorJustMoved && override_->value() != machinePercent) {
+        const QSignalBlocker block(override_);
+        override_->setValue(machinePercent);
+        retranslate();
+    }
     if (single_->isChecked() != s.singleBlock) {
         const QSignalBlocker block(single_);
         single_->setChecked(s.singleBlock);

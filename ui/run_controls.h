@@ -3,6 +3,7 @@
 // feed hold, continue, stop, single block and feed override, each an action with a key so the
 // Help > Keys page and the buttons can never disagree. It raises intents; the main window
 // decides (and asks) what they do.
+#include <QElapsedTimer>
 #include <QList>
 #include <QWidget>
 
@@ -54,6 +55,7 @@ class RunControls : public QWidget {
         *overrideReset_;
     QList<QToolButton*> buttons_;
     QSlider* override_;
+    QElapsedTimer overrideSent_;  ///< since the operator last moved the override
     QLabel* overrideLabel_;
 };
 

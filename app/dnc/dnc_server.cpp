@@ -1,5 +1,7 @@
 #include "app/dnc/dnc_server.h"
 
+#include <cmath>
+
 #include <QModbusRtuSerialServer>
 #include <QSerialPort>
 #include <QStringList>
@@ -52,6 +54,32 @@ QModbusPdu::ExceptionCode toQt(Exception e) {
     }
 }
 
+/// The names of hold::kCommand's values, for the history (docs/dnc.md).
+const char* commandName(Command c) {
+    switch (c) {
+        case Command::StartProgram:
+            return "start";
+        case Command::Hold:
+            return "hold";
+        case Command::Continue:
+            return "continue";
+        case Command::Stop:
+            return "stop";
+        case Command::Acknowledge:
+            return "acknowledge";
+        case Command::SelectAutomatic:
+            return "automatic";
+        case Command::SelectManual:
+            return "manual";
+        case Command::CommitDownload:
+            return "commit download";
+        case Command::None:
+        case Command::Count_:
+            break;
+    }
+    return "none";
+}
+
 std::uint16_t be16(const std::uint8_t* p) {
     return static_cast<std::uint16_t>((p[0] << 8) | p[1]);
 }
@@ -80,8 +108,9 @@ DncServer::DncServer(DncMachine& machine, ProgramLibrary library, QObject* paren
     timer_.start(20);
     clock_.start();
     connect(&summaryTimer_, &QTimer::timeout, this, [this] {
-        const QString summary = refusals_.roll(static_cast<double>(clock_.elapsed()) / 1000.0);
-        if (!summary.isEmpty()) emit historyLine(summary);
+        const double now = static_cast<double>(clock_.elapsed()) / 1000.0;
+        for (RefusalSummary* summary : {&refusals_, &accepted_})
+            if (const QString line = summary->roll(now); !line.isEmpty()) emit historyLine(line);
     });
     summaryTimer_.start(1000);
     refresh();
@@ -94,6 +123,11 @@ bool DncServer::takeDownloadBlock(const QString& client) {
     downloadOwner_ = client;
     downloadTouched_.restart();
     return true;
+}
+
+void DncServer::acceptedLine(const QString& client, const QString& line) {
+    for (const QString& l : accepted_.note(client, line, double(clock_.elapsed()) / 1000.0))
+        emit historyLine(l);
 }
 
 void DncServer::refused(const QString& client, const QString& line) {
@@ -412,15 +446,25 @@ bool DncServer::applyWrite(const HoldingWrite& w, const QString& client) {
         return w.start < to && w.start + w.values.size() > from;
     };
     auto f = [this](std::uint16_t a) { return double(joinFloat(holding_[a], holding_[a + 1])); };
-    if (touches(hold::kKp, hold::kKd + 2) &&
-        machine_
-            .send(CommandKind::SetGains, static_cast<int>(machine_.snapshot().law), f(hold::kKp),
-                  f(hold::kKi), f(hold::kKd))
-            .refused)
-        return false;
-    if (touches(hold::kFeedOverride, hold::kFeedOverride + 2) &&
-        machine_.send(CommandKind::FeedOverride, 0, f(hold::kFeedOverride)).refused)
-        return false;
+    if (touches(hold::kKp, hold::kKd + 2)) {
+        if (machine_
+                .send(CommandKind::SetGains, static_cast<int>(machine_.snapshot().law),
+                      f(hold::kKp), f(hold::kKi), f(hold::kKd))
+                .refused)
+            return false;
+        acceptedLine(client, QStringLiteral("DNC: gains kp %1, ki %2, kd %3 set by %4")
+                                 .arg(f(hold::kKp))
+                                 .arg(f(hold::kKi))
+                                 .arg(f(hold::kKd))
+                                 .arg(client));
+    }
+    if (touches(hold::kFeedOverride, hold::kFeedOverride + 2)) {
+        if (machine_.send(CommandKind::FeedOverride, 0, f(hold::kFeedOverride)).refused)
+            return false;
+        acceptedLine(client, QStringLiteral("DNC: feed override %1 % set by %2")
+                                 .arg(std::lround(f(hold::kFeedOverride) * 100.0))
+                                 .arg(client));
+    }
     if (touches(hold::kCommand, hold::kCommand + 1)) {
         const auto c = static_cast<Command>(holding_[hold::kCommand]);
         holding_[hold::kCommand] = 0;  // reads back 0: done
@@ -468,6 +512,12 @@ void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq,
     const ControllerStatus s = machine_.snapshot();
     // The result of a refused ticket (Busy) names the client in the history.
     auto finish = [&](CommandResult r, std::optional<Ticket> ticket = {}) {
+        if (r == CommandResult::Applied && !(ticket && ticket->refused) &&
+            c != Command::StartProgram && c != Command::CommitDownload)  // those say more
+            acceptedLine(client, QStringLiteral("DNC: command %1 (sequence %2) from %3")
+                                     .arg(QLatin1String(commandName(c)))
+                                     .arg(seq)
+                                     .arg(client));
         finishCommand(seq, r, ticket, client);
     };
     switch (c) {

@@ -69,6 +69,8 @@ class DncServer : public QObject {
     bool takeDownloadBlock(const QString& client);
     /// A refused request's history line, through the summary (refusal_summary.h).
     void refused(const QString& client, const QString& line);
+    /// An accepted write's history line, through its own summary.
+    void acceptedLine(const QString& client, const QString& line);
     /// A TCP request's PDU answered (ModbusTcpListener's handler).
     QByteArray answerTcp(const QByteArray& pdu, const QString& client);
     void refresh();
@@ -107,6 +109,8 @@ class DncServer : public QObject {
     QElapsedTimer downloadTouched_;
     static constexpr double kDownloadOwnershipS = 30.0;
     RefusalSummary refusals_;
+    /// Accepted writes are history lines naming the client (issue 19 item 4), bounded alike.
+    RefusalSummary accepted_{RefusalSummary::Limits{}, QStringLiteral("accepted writes")};
     QElapsedTimer clock_;                  ///< the refusal summary's time, and the refreshes'
     qint64 refreshedNs_ = -1'000'000'000;  ///< clock_ time of the last refresh
     QTimer summaryTimer_;                  ///< ends a refusal window that no new refusal ends

@@ -23,7 +23,9 @@ class RefusalSummary {
         int total = 10;     ///< refusals of all clients written whole in a window
     };
     RefusalSummary() = default;
-    explicit RefusalSummary(Limits limits) : limits_(limits) {}
+    /// what: how the summary names the lines it counts ("refused requests", "accepted writes").
+    explicit RefusalSummary(Limits limits, QString what = QStringLiteral("refused requests"))
+        : limits_(limits), what_(std::move(what)) {}
 
     /// A refusal from client: the lines to write now: the last window's summary when this
     /// one ended it (see roll()), then the line itself unless it is only counted.
@@ -34,6 +36,7 @@ class RefusalSummary {
 
   private:
     Limits limits_;
+    QString what_ = QStringLiteral("refused requests");
     double windowStartS_ = -1.0;
     int shown_ = 0;
     std::uint64_t held_ = 0;                   ///< refusals counted, not shown, this window

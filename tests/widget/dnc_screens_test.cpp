@@ -228,14 +228,22 @@ class DncScreensTest : public QObject {
         QVERIFY(finished(accepted.get()));
         QCOMPARE(accepted->error(), QModbusDevice::NoError);
         QTRY_COMPARE_WITH_TIMEOUT(link_->status().feedOverride, 0.5, 5000);
+        // Issue 19 item 4: one source of truth. The slider and its caption follow the override
+        // whoever set it, the accepted write is a history line naming the client, and Ctrl+0
+        // then brings the machine back to 100 %.
+        QTRY_COMPARE_WITH_TIMEOUT(window_->runControls()->overrideSlider()->value(), 50, 5000);
+        QVERIFY(historyHas(QStringLiteral("DNC: feed override 50 % set by ")));
+        window_->runControls()->overrideResetAction()->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(link_->status().feedOverride, 1.0, 5000);
+        QCOMPARE(window_->runControls()->overrideSlider()->value(), 100);
 
         // Off again: refused again.
         window_->remoteAction()->trigger();
         QVERIFY(!window_->dncLink()->remote());
-        auto again = writeFeed(1.0f);
+        auto again = writeFeed(0.7f);
         QVERIFY(finished(again.get()));
         QCOMPARE(again->error(), QModbusDevice::ProtocolError);
-        QCOMPARE(link_->status().feedOverride, 0.5);
+        QCOMPARE(link_->status().feedOverride, 1.0);
     }
 
     void theSupervisorRunsAProgramByNumberOnTheScreensController() {
