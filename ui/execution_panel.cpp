@@ -274,24 +274,39 @@ void ExecutionPanel::setProgramName(const QString& name) {
     program_->setToolTip(name);
 }
 
+namespace {
+/// A list's line in view from its start (the alarm's number and first words; issue 19 item 6:
+/// the box showed "...ollow the command (a jam..."), the whole text on hover.
+void showFromStart(QComboBox* box, const QString& text) {
+    box->setEditText(text);
+    box->lineEdit()->setCursorPosition(0);
+    box->setToolTip(text);
+}
+void addWithTip(QComboBox* box, const QString& line) {
+    box->addItem(line);
+    box->setItemData(box->count() - 1, line, Qt::ToolTipRole);
+}
+}  // namespace
+
 void ExecutionPanel::addStatusLine(const QString& line) {
-    status_->addItem(line);
+    addWithTip(status_, line);
     status_->setCurrentIndex(status_->count() - 1);
+    showFromStart(status_, line);
     if (status_->count() > 5000) status_->removeItem(0);  // the journal keeps everything
 }
 
 void ExecutionPanel::addAlarmLine(const QString& line) {
-    alarms_->addItem(line);
-    alarms_->setEditText(line);
+    addWithTip(alarms_, line);
+    showFromStart(alarms_, line);
 }
 
 void ExecutionPanel::clearAlarms() {
     alarms_->clear();
-    alarms_->setEditText(QString());
+    showFromStart(alarms_, QString());
 }
 
 void ExecutionPanel::setAlarmSummary(const QString& text) {
-    alarms_->setEditText(text);
+    showFromStart(alarms_, text);
 }
 void ExecutionPanel::setLineText(const QString& text) {
     line_->setText(text);

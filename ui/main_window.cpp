@@ -282,6 +282,15 @@ void MainWindow::buildMenus() {
                        "color: black; font-weight: bold; border: 2px solid rgb(160,90,0); "
                        "border-radius: 4px; padding: 4px 10px; }"));
     bar->addWidget(remoteButton_);
+    // An armed fault of the Simulation dock is said here, in every tab, until cleared.
+    faultArmed_ = new QLabel(bar);
+    faultArmed_->setObjectName(QStringLiteral("faultArmed"));
+    faultArmed_->setStyleSheet(
+        QStringLiteral("QLabel#faultArmed { background: rgb(255,170,0); color: black; "
+                       "font-weight: bold; border: 2px solid rgb(160,90,0); border-radius: 4px; "
+                       "padding: 4px 10px; }"));
+    faultArmedAction_ = bar->addWidget(faultArmed_);
+    faultArmedAction_->setVisible(false);
     connect(estop_, &QToolButton::clicked, &link_, &MachineLink::emergencyStop);
     connect(resetEstop_, &QToolButton::clicked, &link_, &MachineLink::resetEmergencyStop);
     connect(ack_, &QToolButton::clicked, &link_, &MachineLink::acknowledge);
@@ -322,6 +331,7 @@ void MainWindow::buildDocks() {
     tabifyDockWidget(historyDock_, simulationDock_);
     connect(simulation_, &SimulationPanel::faultsChanged, &link_, &MachineLink::setFaults);
     connect(simulation_, &SimulationPanel::lateTicksChanged, &link_, &MachineLink::setLateTicks);
+    connect(simulation_, &SimulationPanel::armedChanged, this, &MainWindow::showArmedFaults);
     plotDock_->raise();
     tabifyDockWidget(programDock_, jogDock_);
     library_ = new ProgramLibraryPanel(this);
@@ -361,6 +371,7 @@ void MainWindow::buildDocks() {
 }
 
 void MainWindow::retranslate() {
+    if (faultArmed_ && simulation_) showArmedFaults(simulation_->armedText());
     setWindowTitle(tr("Didactic D.N.C. system for the automatic rail"));
     fileMenu_->setTitle(tr("&File"));
     select_->setText(tr("&Select"));
@@ -849,6 +860,13 @@ void MainWindow::closeEvent(QCloseEvent* e) {
     settings_.setValue(QStringLiteral("geometry"), saveGeometry());
     settings_.setValue(QStringLiteral("windowState"), saveState());
     e->accept();
+}
+
+void MainWindow::showArmedFaults(const QString& text) {
+    armedFaults_ = text;
+    faultArmed_->setText(tr("Simulated fault armed: %1").arg(text));
+    faultArmed_->setToolTip(tr("Set in the Simulation dock; Clear all there puts the rail right."));
+    faultArmedAction_->setVisible(!text.isEmpty());
 }
 
 }  // namespace ui

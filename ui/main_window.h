@@ -66,6 +66,9 @@ class MainWindow : public QMainWindow {
     HistoryPanel* history() const { return history_; }
     RailView* railView() const { return rail_; }
     SimulationPanel* simulation() const { return simulation_; }
+    /// The safety bar's "Simulated fault armed" label (hidden when none is).
+    QLabel* faultArmedLabel() const { return faultArmed_; }
+    bool faultArmedShown() const { return faultArmedAction_->isVisible(); }
     RunControls* runControls() const { return runControls_; }
     DroPanel* dro() const { return dro_; }
     QLabel* estopBanner() const { return estopBanner_; }
@@ -140,6 +143,10 @@ class MainWindow : public QMainWindow {
     HistoryPanel* history_;
     RailView* rail_;
     SimulationPanel* simulation_;
+    QLabel* faultArmed_ = nullptr;
+    QAction* faultArmedAction_ = nullptr;
+    QString armedFaults_;
+    void showArmedFaults(const QString& text);
     RunControls* runControls_;
     DroPanel* dro_;
     QLabel* estopBanner_;

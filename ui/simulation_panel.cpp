@@ -1,5 +1,6 @@
 #include "ui/simulation_panel.h"
 
+#include <QAbstractSpinBox>
 #include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QEvent>
@@ -61,12 +62,23 @@ SimulationPanel::SimulationPanel(QWidget* parent) : QWidget(parent) {
     v->addWidget(clear_);
     v->addStretch(1);
 
+    // A value changes only by deliberate input: a wheel needs the box's focus (a click), and
+    // typing takes effect on Enter or on leaving the box, not at each digit.
+    for (QAbstractSpinBox* box :
+         std::initializer_list<QAbstractSpinBox*>{lostHz_, slip_, noise_, lateMs_, lateRate_}) {
+        box->setFocusPolicy(Qt::StrongFocus);
+        box->setKeyboardTracking(false);
+        box->installEventFilter(this);
+    }
     for (QCheckBox* c : {stuck_, amplifier_, torn_})
         connect(c, &QCheckBox::toggled, this, &SimulationPanel::emitFaults);
     connect(lostHz_, &QSpinBox::valueChanged, this, &SimulationPanel::emitFaults);
     for (QDoubleSpinBox* d : {slip_, noise_})
         connect(d, &QDoubleSpinBox::valueChanged, this, &SimulationPanel::emitFaults);
-    auto late = [this] { emit lateTicksChanged(lateMs_->value() / 1000.0, lateRate_->value()); };
+    auto late = [this] {
+        emit lateTicksChanged(lateMs_->value() / 1000.0, lateRate_->value());
+        emit armedChanged(armedText());
+    };
     connect(lateMs_, &QSpinBox::valueChanged, this, late);
     connect(lateRate_, &QDoubleSpinBox::valueChanged, this, late);
     connect(clear_, &QPushButton::clicked, this, [this] {
@@ -93,6 +105,33 @@ FaultInjection SimulationPanel::faults() const {
 
 void SimulationPanel::emitFaults() {
     emit faultsChanged(faults());
+    emit armedChanged(armedText());
+}
+
+QString SimulationPanel::armedText() const {
+    QStringList armed;
+    if (stuck_->isChecked()) armed << tr("stuck encoder");
+    if (amplifier_->isChecked()) armed << tr("amplifier trip");
+    if (torn_->isChecked()) armed << tr("torn counter reads");
+    if (lostHz_->value() > 0) armed << tr("lost counts above %1 counts/s").arg(lostHz_->value());
+    if (slip_->value() > 0.0) armed << tr("cable slip %1").arg(slip_->value(), 0, 'f', 3);
+    if (noise_->value() > 0.0) armed << tr("switch noise %1").arg(noise_->value(), 0, 'f', 4);
+    if (lateMs_->value() > 0)
+        armed << tr("late ticks up to %1 ms (p %2)")
+                     .arg(lateMs_->value())
+                     .arg(lateRate_->value(), 0, 'f', 3);
+    return armed.join(QStringLiteral(", "));
+}
+
+bool SimulationPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::Wheel) {
+        auto* box = qobject_cast<QAbstractSpinBox*>(watched);
+        if (box && !box->hasFocus()) {
+            event->ignore();
+            return true;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
 }
 
 void SimulationPanel::retranslate() {

@@ -26,13 +26,22 @@ class SimulationPanel : public QWidget {
     QCheckBox* amplifierTrip() const { return amplifier_; }
     QSpinBox* lateTickMs() const { return lateMs_; }
     QPushButton* clearAll() const { return clear_; }
+    QDoubleSpinBox* cableSlip() const { return slip_; }
+    /// What is armed now, one line for the safety bar ("stuck encoder, cable slip 0.010");
+    /// empty when nothing is.
+    QString armedText() const;
 
   signals:
     void faultsChanged(const trilho::FaultInjection& faults);
     void lateTicksChanged(double maxS, double rate);
+    /// armedText() changed (a fault or late ticks set or cleared).
+    void armedChanged(const QString& text);
 
   protected:
     void changeEvent(QEvent* e) override;
+    /// A wheel turned over a number box that does not have the focus scrolls nothing in it
+    /// (issue 19 item 5: two wheel steps over the dock set cable slip 0.010).
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
   private:
     void retranslate();

@@ -2,6 +2,7 @@
 // Every wait is on an observed condition with a deadline (QTRY_*), never a bare sleep.
 #include <QAction>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QGroupBox>
 #include <QLineEdit>
@@ -16,6 +17,7 @@
 #include <QTest>
 #include <QTextBlock>
 #include <QToolButton>
+#include <QWheelEvent>
 
 #include <QCheckBox>
 #include <QLabel>
@@ -89,6 +91,47 @@ class MainWindowTest : public QObject {
         start.show();
         QTest::mouseClick(start.okButton(), Qt::LeftButton);
         QCOMPARE(accepted.count(), 1);
+    }
+
+    // Issue 19 item 6: a long alarm shows its number and first words, the whole text on hover.
+    void longAlarmTextsShowTheirStartAndAllOnHover() {
+        const QString text = QStringLiteral(
+            "Alarm 16: The platform does not follow the command (a jam, a broken belt or a stuck "
+            "encoder): check the mechanics and the encoder cable, then Acknowledge.");
+        panel()->addAlarmLine(text);
+        QLineEdit* shown = panel()->alarms()->lineEdit();
+        QCOMPARE(shown->text(), text);
+        QCOMPARE(shown->cursorPosition(), 0);  // the start is what is in view
+        QCOMPARE(panel()->alarms()->toolTip(), text);
+        const int last = panel()->alarms()->count() - 1;
+        QCOMPARE(panel()->alarms()->itemData(last, Qt::ToolTipRole).toString(), text);
+        panel()->addStatusLine(text);
+        QCOMPARE(panel()->statusList()->lineEdit()->cursorPosition(), 0);
+        QCOMPARE(panel()->statusList()->toolTip(), text);
+    }
+
+    // Issue 19 item 5: a wheel over the Simulation dock injects nothing; an armed fault shows
+    // on the safety bar, in every tab, until cleared.
+    void aWheelInjectsNoFaultAndAnArmedOneShowsOnTheSafetyBar() {
+        SimulationPanel* sim = window_->simulation();
+        QVERIFY(!window_->faultArmedShown());
+        QDoubleSpinBox* slip = sim->cableSlip();
+        window_->setFocus();
+        QVERIFY(!slip->hasFocus());
+        const QPointF at(slip->width() / 2.0, slip->height() / 2.0);
+        for (int k = 0; k < 2; ++k) {
+            QWheelEvent wheel(at, slip->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton,
+                              Qt::NoModifier, Qt::NoScrollPhase, false);
+            QCoreApplication::sendEvent(slip, &wheel);
+        }
+        QCOMPARE(slip->value(), 0.0);
+        QCOMPARE(link_->faults().slipFraction, 0.0);
+        QVERIFY(!window_->faultArmedShown());
+        sim->stuckEncoder()->setChecked(true);
+        QVERIFY(window_->faultArmedShown());
+        QVERIFY(window_->faultArmedLabel()->text().contains(QStringLiteral("stuck encoder")));
+        sim->clearAll()->click();
+        QVERIFY(!window_->faultArmedShown());
     }
 
     void modesEnableAndGreyAsTheOriginal() {
