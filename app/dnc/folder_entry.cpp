@@ -133,11 +133,13 @@ EntryRead readFolderEntry(const QString& dir, const QString& name, std::int64_t 
         r.error = QStringLiteral("'%1' %2").arg(where, why);
         return r;
     }
-    const QString tooLarge =
-        QStringLiteral("cannot read '%1': larger than %2 bytes (the limit for %3)")
-            .arg(where)
-            .arg(maxBytes)
-            .arg(limitFor);
+    // In MB when it is whole MB, as readRegularFile says it ("larger than 64 MB").
+    constexpr std::int64_t kMB = 1 << 20;
+    const QString limit = maxBytes >= kMB && maxBytes % kMB == 0
+                              ? QStringLiteral("%1 MB").arg(maxBytes / kMB)
+                              : QStringLiteral("%1 bytes").arg(maxBytes);
+    const QString tooLarge = QStringLiteral("cannot read '%1': larger than %2 (the limit for %3)")
+                                 .arg(where, limit, limitFor);
     if (overlong == Overlong::Refuse && st.sizeBytes > maxBytes) {
         r.error = tooLarge;
         return r;

@@ -237,7 +237,7 @@ TEST(ProgramLibrary, HugeFilesAreRefusedWithoutReadingThem) {
     // Sparse: a terabyte costs nothing on the disk, and is refused from its size alone.
     ASSERT_EQ(::truncate(QFile::encodeName(l.at(11)).constData(), 1LL << 40), 0);
     EXPECT_TRUE(says(l.readError(11), "larger than 19998 bytes"));
-    EXPECT_TRUE(says(l.loadError(11), "larger than 67108864 bytes"));
+    EXPECT_TRUE(says(l.loadError(11), "larger than 64 MB (the limit for a program file)"));
     put(l.at(12), QByteArray(kFileRecordBytes + 1, 'N'));
     EXPECT_TRUE(says(l.readError(12), "larger than 19998 bytes (the limit for file records)"));
     // The screens' list reads only a head.
