@@ -1266,6 +1266,10 @@
         <translation>%1 bytes, sin comentario</translation>
     </message>
     <message>
+        <source>Not served: %1</source>
+        <translation>No servido: %1</translation>
+    </message>
+    <message>
         <source>No.</source>
         <translation>N.º</translation>
     </message>

@@ -1266,6 +1266,10 @@
         <translation>%1 bytes, sem comentário</translation>
     </message>
     <message>
+        <source>Not served: %1</source>
+        <translation>Não servido: %1</translation>
+    </message>
+    <message>
         <source>No.</source>
         <translation>Nº</translation>
     </message>

@@ -13,6 +13,8 @@
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
+#include "app/dnc/program_library.h"
+
 namespace trilho {
 namespace ui {
 
@@ -94,28 +96,38 @@ void ProgramLibraryPanel::refresh() {
         return;
     }
     watcher_.addPath(dir.absolutePath());
-    static const QRegularExpression kName(QStringLiteral("^(\\d{4})\\.G$"));
     const QLocale locale;
-    for (const QFileInfo& info :
-         dir.entryInfoList({QStringLiteral("*.G")}, QDir::Files, QDir::Name)) {
-        const auto m = kName.match(info.fileName());
-        if (!m.hasMatch()) continue;  // only programs by number: what the link can run
-        QFile f(info.absoluteFilePath());
+    // The library's own list: an entry it will not serve (a link, a folder, a FIFO...) is shown
+    // with the reason, greyed and not openable, so the operator sees why program N does not run.
+    const dnc::ProgramLibrary library(dir_, CompileOptions{});
+    for (const dnc::LibraryEntry& e : library.list()) {
+        const QFileInfo info(e.path);
         QString what;
-        if (f.open(QIODevice::ReadOnly)) what = firstComment(f.read(kHeadBytes));
-        if (what.isEmpty()) what = tr("%1 bytes, no comment").arg(locale.toString(info.size()));
+        if (e.refused.isEmpty()) {
+            if (const auto head = library.readHead(e.number, kHeadBytes))
+                what = firstComment(*head);
+            if (what.isEmpty())
+                what = tr("%1 bytes, no comment").arg(locale.toString(qint64(e.sizeBytes)));
+        } else {
+            what = tr("Not served: %1").arg(e.refused);
+        }
         auto* item = new QTreeWidgetItem(list_);
-        item->setText(0, QString::number(m.captured(1).toInt()));
+        item->setText(0, QString::number(e.number));
         item->setTextAlignment(0, Qt::AlignRight | Qt::AlignVCenter);
         item->setText(1, info.fileName());
         item->setText(2, what);
         item->setToolTip(2, what);
-        // To the minute: the comment column keeps the width.
-        item->setText(3, info.lastModified().toString(QStringLiteral("yyyy-MM-dd HH:mm")));
-        item->setToolTip(3, info.lastModified().toString(Qt::ISODate));
-        item->setData(0, Qt::UserRole, info.absoluteFilePath());
-        if (info.absoluteFilePath() == current) list_->setCurrentItem(item);
-        watcher_.addPath(info.absoluteFilePath());
+        if (e.refused.isEmpty()) {
+            // To the minute: the comment column keeps the width. (A refused entry has none: a
+            // link's would be its target's.)
+            item->setText(3, info.lastModified().toString(QStringLiteral("yyyy-MM-dd HH:mm")));
+            item->setToolTip(3, info.lastModified().toString(Qt::ISODate));
+            item->setData(0, Qt::UserRole, info.absoluteFilePath());
+            if (info.absoluteFilePath() == current) list_->setCurrentItem(item);
+            watcher_.addPath(info.absoluteFilePath());
+        } else {
+            item->setFlags(item->flags() & ~(Qt::ItemIsEnabled | Qt::ItemIsSelectable));
+        }
     }
     open_->setEnabled(list_->currentItem() != nullptr);
 }

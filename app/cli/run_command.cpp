@@ -146,7 +146,7 @@ extern "C" void onInterrupt(int) {
 Outcome runRealTime(const MachineProfile& profile, std::shared_ptr<const Program> program,
                     const RunOptions& options, Report& report, TraceFile& trace,
                     ControllerStatus& last, double& plantMm) {
-    SimRail rail(profile.plant);
+    SimRail rail(profile.plant, options.seed);  // --seed applies in real time too
     rail.placeAt(0.0);
     RailController controller(profile, rail);
     ServoWorker worker(controller, rail, [&rail](double dt) { rail.step(dt); });
@@ -205,7 +205,8 @@ int runCommand(const QStringList& args) {
         QStringLiteral("Run in virtual time, as fast as possible."));
     const QCommandLineOption massOpt(
         QStringLiteral("mass-factor"),
-        QStringLiteral("Multiply the simulated moving mass (the controller is not told)."),
+        QStringLiteral("Multiply the simulated moving mass, on the rail and the DC table (the "
+                       "controller is not told; refused on the plotter)."),
         QStringLiteral("F"), QStringLiteral("1"));
     const QCommandLineOption continueOpt(
         QStringLiteral("continue-after"),
@@ -231,7 +232,8 @@ int runCommand(const QStringList& args) {
         QStringLiteral("MAX_MS"));
     const QCommandLineOption rateOpt(
         QStringLiteral("jitter-rate"),
-        QStringLiteral("Probability that a period is late (default 0.01)."), QStringLiteral("P"));
+        QStringLiteral("Probability that a period is late (default 0.01; with --tick-jitter)."),
+        QStringLiteral("P"));
     const QCommandLineOption seedOpt(QStringLiteral("seed"),
                                      QStringLiteral("Seed of the simulation's randomness."),
                                      QStringLiteral("N"));
@@ -317,7 +319,15 @@ int runCommand(const QStringList& args) {
             return usage(
                 QStringLiteral("--fault and --tick-jitter are for the simulated machine, "
                                "not --port"));
+        // A real board's payload and randomness are its own: nothing here could apply them.
+        if (parser.isSet(massOpt) || parser.isSet(seedOpt))
+            return usage(
+                QStringLiteral("--mass-factor and --seed are for the simulated machine, "
+                               "not --port"));
     }
+    if (parser.isSet(rateOpt) && !parser.isSet(jitterOpt))
+        return usage(QStringLiteral(
+            "--jitter-rate needs --tick-jitter (how late a late period is; without it none is)"));
     if (parser.isSet(baudOpt)) {
         bool ok = false;
         options.baud = parser.value(baudOpt).toInt(&ok);
@@ -336,7 +346,23 @@ int runCommand(const QStringList& args) {
     if (!load.profile) return usage(load.error);
     if (!load.error.isEmpty()) err(QStringLiteral("trilho-cli run: %1\n").arg(load.error));
     MachineProfile profile = *load.profile;
-    profile.plant.massFactor *= options.massFactor;
+    // The payload goes where the simulated plant has a mass: the rail's platform, the DC table's
+    // axes. The plotter's steppers are modelled without one (a pulse is a step, up to the
+    // pull-out rate): there the option would change nothing, so it is refused.
+    switch (profile.kind) {
+        case MachineKind::Rail:
+            profile.plant.massFactor *= options.massFactor;
+            break;
+        case MachineKind::DcTable:
+            profile.dcTable.massFactor *= options.massFactor;
+            break;
+        case MachineKind::Plotter:
+            if (parser.isSet(massOpt))
+                return usage(QStringLiteral(
+                    "--mass-factor is for the rail and the DC table: the plotter's simulated "
+                    "steppers have no mass to change"));
+            break;
+    }
 
     const QString file = files.front();
     const SourceFile source = readSourceFile(localPath(file));

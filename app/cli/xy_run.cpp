@@ -9,6 +9,7 @@
 
 #include <QCoreApplication>
 
+#include "app/session/late_ticks.h"
 #include "app/session/xy_device_session.h"
 #include "app/session/xy_session.h"
 #include "core/machine/serial_link_motion.h"
@@ -90,6 +91,9 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
     c.start(0);
     Outcome outcome = Outcome::Finished;
     double pausedSince = -1.0;
+    // Late periods (--tick-jitter), from the program's start on, as on the rail; a board on a
+    // line (--port) keeps its own time (the option is refused there).
+    LateTicks ticks(options.tickJitterMs / 1000.0, options.jitterRate, options.seed);
     const auto t0 = std::chrono::steady_clock::now();
     if (!options.virtualTime) {
         std::setvbuf(stdout, nullptr, _IOLBF, 0);
@@ -97,16 +101,19 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
         std::signal(SIGTERM, onXyInterrupt);
     }
     while (true) {
+        const double dtS = ticks.next(session.periodS());
         if (!options.virtualTime) {
-            // Real time: one period per period of the clock (the plant is simulated here).
-            std::this_thread::sleep_until(
-                t0 + std::chrono::duration<double>(session.elapsedS() + session.periodS()));
+            // Real time: one period per period of the clock (the plant is simulated here); a
+            // late one is waited for.
+            std::this_thread::sleep_until(t0 +
+                                          std::chrono::duration<double>(session.elapsedS() + dtS));
             if (g_xyInterrupted) c.emergencyStop();
             if (link) QCoreApplication::processEvents();  // the serial line's bytes
         }
-        session.step();
+        session.step(dtS);
         c.drainEvents([&](const ControllerEvent& e) { report.add(e); });
         const XyStatus& s = c.status();
+        if (!ticks.armed() && s.state == ControllerState::Running) ticks.arm();
         if (trace.active()) traceRow(trace, s);
         bool press = false;
         if (link && link->fault() != AlarmCode::None) {
@@ -143,16 +150,23 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
                             {QStringLiteral("timeouts"), double(link->timeouts())},
                             {QStringLiteral("error"), QString::fromStdString(link->linkError())}};
         }
-        if (session.hasPlant())
+        if (session.hasPlant()) {
             o[QStringLiteral("plant_position_mm")] =
                 QJsonObject{{QStringLiteral("x"), round4(session.plant().positionMm(0))},
                             {QStringLiteral("y"), round4(session.plant().positionMm(1))}};
+            o[QStringLiteral("late_ticks")] = static_cast<double>(ticks.late());
+            o[QStringLiteral("worst_period_ms")] = std::round(ticks.worstS() * 1e6) / 1e3;
+        }
         out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
     } else {
         QString text = QStringLiteral("final position: x %1 mm, y %2 mm (%3 s)\n")
                            .arg(x, 0, 'f', 3)
                            .arg(y, 0, 'f', 3)
                            .arg(last.timeS, 0, 'f', 3);
+        if (ticks.late() > 0)
+            text += QStringLiteral("late ticks: %1, the longest period %2 ms\n")
+                        .arg(ticks.late())
+                        .arg(ticks.worstS() * 1e3, 0, 'f', 1);
         if (outcome == Outcome::TimeLimit)
             text += QStringLiteral("stopped by --max-seconds %1\n").arg(options.maxSeconds);
         out(text);

@@ -42,6 +42,12 @@ struct DcTableParams {
     /// in the window the table is within one count of its target; DcTableMotion never uses a
     /// window narrower than half a count of the axis (0.053 mm on X).
     double inPositionWindowMm = 0.05;
+    /// Multiplies the moving load's inertia, the payload of `trilho-cli run --mass-factor` (the
+    /// loop is not told). Not a profile key: the profile describes the machine, this a payload
+    /// on it, as the rail's plant.massFactor does from the command line. Chosen: the axes' whole
+    /// mechanical time constant is the load's (seed 004 gives no split between the rotor's
+    /// inertia and the table's), so it scales the time constant alone; friction is left as it is.
+    double massFactor = 1.0;
     // Engineered gains {kp %/mm, ki %/(mm.s), kff %/(mm/s)}, chosen by simulation on the
     // default plant (tests/integration/xy_table_test.cpp, XyTableMoves): kff = 100 % /
     // noLoadSpeedMmS, so the feed-forward alone runs the commanded speed; kp 14 and ki 40 keep

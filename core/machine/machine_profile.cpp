@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/gcode/source_file.h"
+#include "core/machine/json_duplicate_keys.h"
 
 namespace trilho {
 
@@ -398,6 +399,19 @@ ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin
     }
     if (!doc.isObject()) {
         result.error = QStringLiteral("%1: the profile must be a JSON object").arg(origin);
+        return result;
+    }
+    // QJsonDocument kept one of two equal keys and dropped the other without a word: the raw
+    // text is scanned for them before anything is read from it.
+    if (const auto dup = findDuplicateKey(json)) {
+        result.error = QStringLiteral(
+                           "%1: %2: the key is given twice, at %3:%4 and %5:%6 (a profile says "
+                           "each key once)")
+                           .arg(origin, dup->path)
+                           .arg(dup->first.line)
+                           .arg(dup->first.column)
+                           .arg(dup->second.line)
+                           .arg(dup->second.column);
         return result;
     }
     const QJsonObject root = doc.object();

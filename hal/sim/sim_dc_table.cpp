@@ -9,13 +9,21 @@ namespace {
 double frictionScale(std::mt19937_64& rng) {
     return std::uniform_real_distribution<double>(0.9, 1.1)(rng);
 }
+
+/// The axis as it moves the table's load: its mechanical time constant, tau = J R / (Kt Ke),
+/// grows with the inertia J the payload adds (DcTableParams::massFactor).
+DcAxisParams loaded(DcAxisParams axis, double massFactor) {
+    axis.timeConstantS *= massFactor;
+    return axis;
+}
 }  // namespace
 
 SimDcTable::SimDcTable(const DcTableParams& params, std::uint64_t seed)
     : params_(params), axes_{[&] {
           std::mt19937_64 rng(seed);
           const double fx = frictionScale(rng), fy = frictionScale(rng);
-          return std::array<SimDcAxis, 2>{SimDcAxis(params.x, fx), SimDcAxis(params.y, fy)};
+          return std::array<SimDcAxis, 2>{SimDcAxis(loaded(params.x, params.massFactor), fx),
+                                          SimDcAxis(loaded(params.y, params.massFactor), fy)};
       }()} {}
 
 void SimDcTable::writePwm(int axis, std::uint16_t duty, bool reverse) {

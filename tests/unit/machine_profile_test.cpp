@@ -221,5 +221,86 @@ TEST(MachineProfile, MissingFileIsAClearError) {
         QStringLiteral("cannot open machine profile '/nonexistent/rail.json'")));
 }
 
+// Issue 20 item 14: QJsonDocument keeps one of two equal keys and drops the other without a
+// word; the strict reader refuses a profile that says a key (or a section) twice, naming the
+// key's path and the line:column of both.
+std::string profileError(const QByteArray& json) {
+    return machineProfileFromJson(json, QStringLiteral("t.json")).error.toStdString();
+}
+
+TEST(MachineProfileStrict, DuplicateKeyNamesItsPathAndBothPlaces) {
+    EXPECT_EQ(profileError("{\n  \"loop\": {\n    \"kp\": 1,\n    \"kp\": 2\n  }\n}\n"),
+              "t.json: loop.kp: the key is given twice, at 3:5 and 4:5 (a profile says each key "
+              "once)");
+}
+
+TEST(MachineProfileStrict, DuplicateSectionIsRefused) {
+    EXPECT_EQ(profileError(R"({"loop": {"kp": 1}, "plant": {}, "loop": {"ki": 2}})"),
+              "t.json: loop: the key is given twice, at 1:2 and 1:34 (a profile says each key "
+              "once)");
+}
+
+TEST(MachineProfileStrict, DuplicateAtEveryDepth) {
+    EXPECT_EQ(profileError(R"({"kind": "xy-dc-table", "kind": "xy-dc-table"})"),
+              "t.json: kind: the key is given twice, at 1:2 and 1:25 (a profile says each key "
+              "once)");
+    EXPECT_EQ(
+        profileError(
+            R"({"kind": "xy-dc-table", "dcTable": {"x": {"mmPerTurn": 2, "mmPerTurn": 2}}})"),
+        "t.json: dcTable.x.mmPerTurn: the key is given twice, at 1:43 and 1:59 (a profile says "
+        "each key once)");
+    // Inside an array (no profile key takes one, but the scan must not lose its place there).
+    EXPECT_EQ(profileError(R"({"comment": "x", "source": [{"a": 1}, {"b": 1, "b": 2}]})"),
+              "t.json: source[1].b: the key is given twice, at 1:40 and 1:48 (a profile says "
+              "each key once)");
+}
+
+TEST(MachineProfileStrict, DuplicateSpelledWithEscapesIsTheSameKey) {
+    // "\u006bp" is "kp" to any JSON reader.
+    EXPECT_EQ(profileError(R"({"loop": {"kp": 1, "\u006bp": 2}})"),
+              "t.json: loop.kp: the key is given twice, at 1:11 and 1:20 (a profile says each key "
+              "once)");
+}
+
+TEST(MachineProfileStrict, SameNameInDifferentObjectsOrCaseIsNoDuplicate) {
+    // The same key in two sections is two keys; the same letters in another case is another
+    // key (and an unknown one, with its "did you mean").
+    const ProfileLoad ok = machineProfileFromJson(
+        R"({"loop": {"source": "a"}, "plant": {"source": "a"}, "source": "b"})",
+        QStringLiteral("t.json"));
+    EXPECT_TRUE(ok.profile) << ok.error.toStdString();
+    const std::string e =
+        profileError(R"({"loop": {"samplePeriodS": 0.001, "SamplePeriodS": 0.001}})");
+    EXPECT_NE(e.find("loop.SamplePeriodS: unknown key (did you mean \"samplePeriodS\"?)"),
+              std::string::npos)
+        << e;
+}
+
+TEST(MachineProfileStrict, KeysInsideStringsAreNotKeys) {
+    // Braces, quotes and colons inside strings, escaped quotes: the scan follows the strings.
+    const ProfileLoad ok = machineProfileFromJson(
+        R"({"comment": "{\"loop\": 1, \"loop\": 2} : , [", "source": "\\", "loop": {"comment": "}"}})",
+        QStringLiteral("t.json"));
+    EXPECT_TRUE(ok.profile) << ok.error.toStdString();
+}
+
+TEST(MachineProfileStrict, ColumnsCountCharactersNotBytes) {
+    EXPECT_EQ(profileError("{\"comment\": \"ç\", \"comment\": \"é\"}"),
+              "t.json: comment: the key is given twice, at 1:2 and 1:18 (a profile says each "
+              "key once)");
+}
+
+TEST(MachineProfileStrict, DuplicateInAFileNamesTheFile) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("dup.json"));
+    QFile f(path);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write("{\n\"plant\": {\"massFactor\": 1},\n\"plant\": {\"massFactor\": 2}\n}\n");
+    f.close();
+    EXPECT_EQ(loadMachineProfile(path).error.toStdString(),
+              path.toStdString() +
+                  ": plant: the key is given twice, at 2:1 and 3:1 (a profile says each key once)");
+}
+
 }  // namespace
 }  // namespace trilho

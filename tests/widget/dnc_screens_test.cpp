@@ -472,6 +472,27 @@ class DncScreensTest : public QObject {
         QCOMPARE(window_->library()->list()->topLevelItem(0)->text(2), QStringLiteral("first"));
     }
 
+    // Issue 20 item 8: a link in the folder is listed with why it is not served, and cannot be
+    // opened (the editor would follow it).
+    void aLinkInTheLibraryIsListedAsNotServed() {
+        const QString folder = dir_.filePath(QStringLiteral("linked/programs"));
+        QVERIFY(QDir().mkpath(folder));
+        writeFile(dir_.filePath(QStringLiteral("linked/secret.txt")), "( secret )\n");
+        QVERIFY(QFile::link(dir_.filePath(QStringLiteral("linked/secret.txt")),
+                            folder + QStringLiteral("/0005.G")));
+        writeFile(folder + QStringLiteral("/0006.G"), "( six )\nN10 M02\n");
+        window_->library()->setFolder(folder);
+        QTreeWidget* list = window_->library()->list();
+        QCOMPARE(list->topLevelItemCount(), 2);
+        QTreeWidgetItem* link = list->topLevelItem(0);
+        QCOMPARE(link->text(0), QStringLiteral("5"));
+        QVERIFY2(link->text(2).startsWith(QStringLiteral("Not served: is a symbolic link")),
+                 qPrintable(link->text(2)));
+        QVERIFY(!link->text(2).contains(QStringLiteral("secret )")));
+        QVERIFY(!(link->flags() & Qt::ItemIsSelectable));
+        QCOMPARE(list->topLevelItem(1)->text(2), QStringLiteral("six"));
+    }
+
     /// With TRILHO_SCREENSHOT_DIR set (run under xvfb with QT_QPA_PLATFORM=xcb for real
     /// fonts): the main screen serving a client with Remote on, and Options > DNC with a
     /// non-local address, in English and pt_BR, for docs/screenshots/dnc_*.png.
