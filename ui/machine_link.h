@@ -36,6 +36,7 @@ class MachineLink : public QObject {
     // commands
     void selectManual() { send(CommandKind::SelectManual); }
     void selectAutomatic() { send(CommandKind::SelectAutomatic); }
+    void home() { send(CommandKind::Home); }
     void manualLeft() { send(CommandKind::ManualLeft); }
     void manualRight() { send(CommandKind::ManualRight); }
     void manualStop() { send(CommandKind::ManualStop); }

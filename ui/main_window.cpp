@@ -178,10 +178,15 @@ void MainWindow::buildMenus() {
 
     commandMenu_ = menuBar()->addMenu(QString());
     manual_ = commandMenu_->addAction(QString(), &link_, &MachineLink::selectManual);
-    automatic_ = commandMenu_->addAction(QString(), &link_, &MachineLink::selectAutomatic);
+    automatic_ = commandMenu_->addAction(QString(), this, &MainWindow::requestAutomatic);
     manual_->setCheckable(true);
     automatic_->setCheckable(true);
     manual_->setChecked(true);
+    // The explicit Home (issue 19 item 3), as LinuxCNC's, Mach4's and UGS's: asks first.
+    home_ = commandMenu_->addAction(QString(), this, &MainWindow::requestHome);
+    home_->setObjectName(QStringLiteral("home"));
+    home_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Home));
+    home_->setShortcutContext(Qt::ApplicationShortcut);
     commandMenu_->addSeparator();
     compile_ = commandMenu_->addAction(QString(), this, &MainWindow::compileSelected);
     execute_ = commandMenu_->addAction(QString(), this, &MainWindow::requestCycleStart);
@@ -247,7 +252,7 @@ void MainWindow::buildMenus() {
     viewMenu_->addSeparator();
     helpMenu_ = menuBar()->addMenu(QString());
     keys_ = helpMenu_->addAction(QString(), this, [this] {
-        KeysDialog dialog(runControls_->keyedActions() << remote_, this);
+        KeysDialog dialog(runControls_->keyedActions() << home_ << remote_, this);
         dialog.exec();
     });
 
@@ -272,6 +277,10 @@ void MainWindow::buildMenus() {
     bar->addWidget(estop_);
     bar->addWidget(resetEstop_);
     bar->addWidget(ack_);
+    homeButton_ = new QToolButton(bar);
+    homeButton_->setObjectName(QStringLiteral("homeButton"));
+    connect(homeButton_, &QToolButton::clicked, this, &MainWindow::requestHome);
+    bar->addWidget(homeButton_);
     bar->addSeparator();
     remoteButton_ = new QToolButton(bar);
     remoteButton_->setObjectName(QStringLiteral("remoteButton"));
@@ -350,14 +359,27 @@ void MainWindow::buildDocks() {
                 p->blockAtOrAfterLine(static_cast<std::uint32_t>(program_->cursorLine()));
             if (!p->ok()) return startCompiled(std::move(p), from);
             if (from >= p->blocks.size()) return;
+            if (!last_.automatic) {
+                // The controller runs programs in Automatic only: say so rather than ask and
+                // then do nothing.
+                statusBar()->showMessage(tr("Start from a block runs in Automatic: choose "
+                                            "Command > Automatic first (it homes the rail)."),
+                                         10000);
+                return;
+            }
             // It runs a rapid approach at once: say from where to where before it does.
             const Block& b = p->blocks[from];
             const QString block =
                 b.n >= 0 ? QStringLiteral("N%1").arg(b.n) : tr("line %1").arg(b.line);
-            if (!confirm(
-                    tr("Start from the selected block"),
-                    tr("Start %1 from block %2? The rail moves at once, at rapid speed, %3.")
-                        .arg(QFileInfo(selectedFile_).fileName(), block, approachText(*p, from))))
+            if (!confirm(tr("Start from the selected block"),
+                         tr("Start %1 from block %2? %3The rail moves at once, at rapid speed, "
+                            "%4.")
+                             .arg(QFileInfo(selectedFile_).fileName(), block,
+                                  last_.homed ? QString()
+                                              : tr("Its position is not known, so it homes "
+                                                   "first: %1 ")
+                                                    .arg(homingText()),
+                                  approachText(*p, from))))
                 return;
             startCompiled(std::move(p), from);
         });
@@ -379,6 +401,8 @@ void MainWindow::retranslate() {
     commandMenu_->setTitle(tr("C&ommand"));
     manual_->setText(tr("&Manual"));
     automatic_->setText(tr("&Automatic"));
+    home_->setText(tr("&Home"));
+    homeButton_->setText(tr("Home (Ctrl+Home)"));
     compile_->setText(tr("&Compile file"));
     execute_->setText(tr("&Execute file"));
     optionsMenu_->setTitle(tr("O&ptions"));
@@ -536,11 +560,12 @@ void MainWindow::requestCycleStart() {
     compileEditor(true, [this](std::shared_ptr<Program> program) {
         if (program->ok() &&
             !confirm(tr("Cycle start"),
-                     tr("Execute %1? The rail moves %2, then runs the program.%3")
+                     tr("Execute %1? %3The rail moves %2, then runs the program.")
                          .arg(QFileInfo(selectedFile_).fileName(), approachText(*program, 0),
                               last_.homed ? QString()
-                                          : tr(" Its position is not known: it homes first "
-                                               "(to the end switches and back).")))) {
+                                          : tr("Its position is not known, so it homes first: "
+                                               "%1 ")
+                                                .arg(homingText())))) {
             return;
         }
         startCompiled(std::move(program), 0);
@@ -555,11 +580,62 @@ QString MainWindow::approachText(const Program& program, std::size_t fromIndex) 
     QString text = tr("from x = %1 mm to x = %2 mm")
                        .arg(last_.servo.positionMm, 0, 'f', 2)
                        .arg(startAt, 0, 'f', 2);
+    // A full run starts at the rail centre, a move the program does not contain: say why.
+    if (!modal.hasPosition)
+        text += tr(" (the rail centre, where every program starts, as in the 1996 program)");
     for (std::size_t i = fromIndex; i < program.blocks.size(); ++i)
         if (isMotion(program.blocks[i].op))
             return text +
                    tr(" (first programmed move to x = %1 mm)").arg(program.blocks[i].x, 0, 'f', 2);
     return text;
+}
+
+QString MainWindow::homingText() const {
+    // rail_controller.cpp beginHoming(): right until a switch; from the right of the centre
+    // that is the right end switch, and then back left to the centre mark; then to x = 0.
+    const double endMm = link_.profile().limits.x.softMaxMm;
+    QString where;
+    if (!last_.homed)
+        where = tr("the rail drives right until a switch: the centre mark if it is left of the "
+                   "centre; otherwise the right end switch (about x = +%1 mm), then back left "
+                   "to the centre mark")
+                    .arg(endMm, 0, 'f', 0);
+    else if (last_.servo.positionMm < 0.0)
+        where = tr("the rail drives right from x = %1 mm to the centre mark")
+                    .arg(last_.servo.positionMm, 0, 'f', 1);
+    else
+        where = tr("the rail drives right from x = %1 mm to the right end switch (about x = "
+                   "+%2 mm), then back left to the centre mark")
+                    .arg(last_.servo.positionMm, 0, 'f', 1)
+                    .arg(endMm, 0, 'f', 0);
+    return tr("%1, and stops at x = 0.").arg(where);
+}
+
+void MainWindow::requestAutomatic() {
+    automatic_->setChecked(last_.automatic);  // the menu shows the mode, not the click
+    if (last_.automatic) return;
+    // The 1996 program homed when Automatico was chosen; trilho keeps that, and asks first.
+    if (!confirm(tr("Automatic"),
+                 tr("Automatic homes the rail first, as in 1996: %1 Home now?").arg(homingText())))
+        return;
+    link_.selectAutomatic();
+}
+
+void MainWindow::requestHome() {
+    const bool movable =
+        last_.state == ControllerState::Manual || last_.state == ControllerState::AutoIdle;
+    if (!movable) {
+        statusBar()->showMessage(tr("Home: stop the rail (or reset the E-stop, acknowledge the "
+                                    "alarm) first."),
+                                 8000);
+        return;
+    }
+    if (!confirm(tr("Home"),
+                 tr("Home the rail? %1%2")
+                     .arg(homingText(),
+                          last_.automatic ? QString() : tr(" It then stays in Automatic."))))
+        return;
+    link_.home();
 }
 
 bool MainWindow::confirm(const QString& title, const QString& text) {

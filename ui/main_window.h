@@ -80,6 +80,7 @@ class MainWindow : public QMainWindow {
     QLabel* timingLabel() const { return timingLabel_; }
     QAction* manualAction() const { return manual_; }
     QAction* automaticAction() const { return automatic_; }
+    QAction* homeAction() const { return home_; }
     QAction* compileAction() const { return compile_; }
     QAction* executeAction() const { return execute_; }
     QAction* selectAction() const { return select_; }
@@ -144,6 +145,12 @@ class MainWindow : public QMainWindow {
     RailView* rail_;
     SimulationPanel* simulation_;
     QLabel* faultArmed_ = nullptr;
+    QAction* home_ = nullptr;
+    QToolButton* homeButton_ = nullptr;
+    /// What homing does from where the rail is, for the questions that lead to it.
+    QString homingText() const;
+    void requestAutomatic();
+    void requestHome();
     QAction* faultArmedAction_ = nullptr;
     QString armedFaults_;
     void showArmedFaults(const QString& text);

@@ -300,7 +300,7 @@ int main(int argc, char* argv[]) {
         });
         if (xyWindow) {
             if (parser.isSet(runOpt))
-                xyWindow->startProgram();  // Automatic homes first, then runs
+                xyWindow->startProgram(false);  // --run: chosen; Automatic homes first
             else if (parser.isSet(autoOpt))
                 xyLink->post([](XyController& c) { c.selectAutomatic(); });
             return;

@@ -67,6 +67,12 @@ void RailController::selectAutomatic() {
     beginHoming();
 }
 
+void RailController::home() {
+    if (status_.state == ControllerState::Manual) return selectAutomatic();
+    if (status_.state != ControllerState::AutoIdle) return;  // moving, held, alarm, E-stop
+    beginHoming();
+}
+
 void RailController::beginHoming() {
     // machine.md: selecting Automatic sends the platform to the rail centre. The position is
     // not known until the centre mark is crossed: no soft limits during the search.

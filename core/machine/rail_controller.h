@@ -61,6 +61,9 @@ class RailController : private ProgramRunner<RailController> {
     // ---- modes ----
     void selectManual();
     void selectAutomatic();  ///< homes to the centre switch first
+    /// The explicit Home command (issue 19 item 3): in Manual as selectAutomatic(); in
+    /// Automatic at rest, homes again (the position is then taken anew from the centre mark).
+    void home();
 
     // ---- manual mode, as in 1996: '<' and '>' change the drive code a step, space stops ----
     void manualLeft();

@@ -38,6 +38,12 @@ void XyController::selectAutomatic() {
     beginHoming();
 }
 
+void XyController::home() {
+    if (status_.state == ControllerState::Manual && !motion_->busy()) return selectAutomatic();
+    if (status_.state != ControllerState::AutoIdle || motion_->busy()) return;
+    beginHoming();
+}
+
 void XyController::beginHoming() {
     motion_->beginHoming();
     setState(ControllerState::Homing);

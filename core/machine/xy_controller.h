@@ -56,6 +56,9 @@ class XyController : private ProgramRunner<XyController> {
     // ---- modes ----
     void selectManual();
     void selectAutomatic();  ///< homes first (origin sensor / index)
+    /// The explicit Home command (issue 19 item 3): in Manual as selectAutomatic(); in
+    /// Automatic at rest, homes again.
+    void home();
     // ---- manual ----
     /// Jogs one axis (0 x, 1 y) by deltaMm at speedFraction; the plotter's UP/DOWN/LEFT/RIGHT.
     void jog(int axis, double deltaMm, double speedFraction);

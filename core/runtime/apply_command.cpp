@@ -9,6 +9,9 @@ void applyCommand(RailController& m, const Command& c) {
         case CommandKind::SelectManual:
             m.selectManual();
             break;
+        case CommandKind::Home:
+            m.home();
+            break;
         case CommandKind::SelectAutomatic:
             m.selectAutomatic();
             break;

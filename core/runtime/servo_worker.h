@@ -40,6 +40,7 @@ enum class CommandKind : std::uint8_t {
     SetGains,     ///< i = law, a, b, c = kp, ki, kd
     SetLaw,       ///< i = law
     LoadProgram,  ///< takes the program handed over with loadProgram()
+    Home,         ///< the explicit Home command (RailController::home)
 };
 
 /// Who sent a command: the operator at the screens, or a remote client (the DNC link). A

@@ -78,6 +78,7 @@ class OperatorScreensTest : public QObject {
         QTRY_VERIFY_WITH_TIMEOUT(
             status().automatic && status().homed && status().state == ControllerState::AutoIdle,
             30000);
+        questions_.clear();  // the Automatic question (homingIsAskedAndNamed checks it)
     }
     void startLongMove() {
         goAutomatic();
@@ -368,6 +369,58 @@ class OperatorScreensTest : public QObject {
         QVERIFY(defaultNo);
         QTest::qWait(200);
         QCOMPARE(status().state, ControllerState::AutoIdle);
+    }
+
+    // Issue 19 items 2 and 3: a mode change never moves the rail unasked; Automatic and the
+    // explicit Home ask first and say where the rail goes; a start names the centre rapid.
+    void homingIsAskedAndNamed() {
+        answer_ = false;
+        window_->automaticAction()->trigger();
+        QCOMPARE(questions_.value(0), QStringLiteral("Automatic"));
+        QVERIFY(questions_.value(1).contains(QStringLiteral("centre mark")));
+        QVERIFY(questions_.value(1).contains(QStringLiteral("x = 0")));
+        QTest::qWait(200);  // proving that nothing happens takes time
+        link_->poll();
+        QCOMPARE(status().state, ControllerState::Manual);
+        QVERIFY(!window_->automaticAction()->isChecked());
+        // The explicit Home: menu (with its key) and button, asked too.
+        QCOMPARE(window_->homeAction()->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_Home));
+        questions_.clear();
+        window_->homeAction()->trigger();
+        QCOMPARE(questions_.value(0), QStringLiteral("Home"));
+        QTest::qWait(200);
+        link_->poll();
+        QCOMPARE(status().state, ControllerState::Manual);
+        answer_ = true;
+        goAutomatic();
+        // Home again from Automatic at rest, after moving away: it really homes.
+        QVERIFY(window_->selectProgram(writeProgram("h.G", "N10 G0 X-200\nN20 M2\n")));
+        window_->executeAction()->trigger();
+        QVERIFY(
+            questions_.value(1).contains(QStringLiteral("rail centre, where every program "
+                                                        "starts")));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            status().programFinished && status().state == ControllerState::AutoIdle, 30000);
+        questions_.clear();
+        window_->homeAction()->trigger();
+        QVERIFY(
+            questions_.value(1).contains(QStringLiteral("from x = -200.0 mm to the centre "
+                                                        "mark")));
+        QTRY_VERIFY_WITH_TIMEOUT(status().state == ControllerState::Homing, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(status().homed && status().state == ControllerState::AutoIdle &&
+                                     std::abs(status().servo.positionMm) < 0.1,
+                                 30000);
+    }
+
+    void startFromABlockInManualSaysAutomaticFirst() {
+        QVERIFY(window_->selectProgram(writeProgram("m.G", "N10 G0 X200\nN20 M2\n")));
+        window_->programPanel()->editor()->goToLine(2, 1);
+        for (QPushButton* b : window_->programPanel()->findChildren<QPushButton*>())
+            if (b->text().startsWith(QStringLiteral("Start from")))
+                QTest::mouseClick(b, Qt::LeftButton);
+        QTRY_VERIFY(window_->statusBar()->currentMessage().contains(QStringLiteral("Automatic")));
+        QVERIFY(questions_.isEmpty());  // nothing asked that would then do nothing
+        QCOMPARE(status().state, ControllerState::Manual);
     }
 
     void startFromTheSelectedBlockNamesTheApproach() {

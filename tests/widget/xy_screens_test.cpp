@@ -92,6 +92,7 @@ class XyScreensTest : public QObject {
         QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
         auto link = virtualLink(shipped("xy_dc_table.json"));
         XyMainWindow w(*link, settings);
+        w.setConfirmer([](const QString&, const QString&) { return true; });
         w.resize(1366, 768);
         w.show();
         QVERIFY(w.tablePanel() != nullptr);
@@ -122,6 +123,7 @@ class XyScreensTest : public QObject {
         QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
         auto link = virtualLink(shipped("xy_dc_table.json"));
         XyMainWindow w(*link, settings);
+        w.setConfirmer([](const QString&, const QString&) { return true; });
         w.show();
         DcTablePanel* panel = w.tablePanel();
         panel->xBox()->setValue(100.0);
@@ -149,6 +151,7 @@ class XyScreensTest : public QObject {
         QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
         auto link = virtualLink(shipped("xy_dc_table.json"));
         XyMainWindow w(*link, settings);
+        w.setConfirmer([](const QString&, const QString&) { return true; });
         w.show();
         w.activateWindow();
         QVERIFY(QTest::qWaitForWindowActive(&w));
@@ -185,11 +188,54 @@ class XyScreensTest : public QObject {
     }
 
     // Issue 19 item 1 on the plotter: a long jog stops on Space (and Stop is offered).
+    // Issue 19 items 2 and 3 on the XY machines: cycle start and Automatic ask first and say
+    // what moves; Command > Home (Ctrl+Home) homes, asked; Command > Manual comes back.
+    void xyMotionIsAskedAndHomeAndManualAreCommands() {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_plotter.json"));
+        XyMainWindow w(*link, settings);
+        QStringList asked;
+        bool answer = false;
+        w.setConfirmer([&](const QString& title, const QString& text) {
+            asked << title << text;
+            return answer;
+        });
+        w.show();
+        QVERIFY(w.selectProgram(QStringLiteral(TRILHO_PROGRAMS_DIR "/plotter_quadrado.G")));
+        w.startButton()->click();
+        QCOMPARE(asked.value(0), QStringLiteral("Cycle start"));
+        QVERIFY(asked.value(1).contains(QStringLiteral("plotter_quadrado.G")));
+        QVERIFY(asked.value(1).contains(QStringLiteral("origin sensors")));  // not homed yet
+        link->advance(1.0);
+        QCOMPARE(link->status().state, ControllerState::Manual);  // No: nothing moved
+        QVERIFY(!link->status().motionBusy);
+        asked.clear();
+        QCOMPARE(w.homeAction()->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_Home));
+        w.homeAction()->trigger();
+        QCOMPARE(asked.value(0), QStringLiteral("Home"));
+        link->advance(1.0);
+        QCOMPARE(link->status().state, ControllerState::Manual);
+        answer = true;
+        w.homeAction()->trigger();
+        QVERIFY(advanceUntil(
+            *link,
+            [&] {
+                return link->status().homed && link->status().state == ControllerState::AutoIdle;
+            },
+            60.0));
+        w.manualAction()->trigger();
+        link->advance(0.1);
+        QCOMPARE(link->status().state, ControllerState::Manual);
+        QVERIFY(!link->status().automatic);
+    }
+
     void plotterJogStopsOnSpace() {
         QTemporaryDir dir;
         QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
         auto link = virtualLink(shipped("xy_plotter.json"));
         XyMainWindow w(*link, settings);
+        w.setConfirmer([](const QString&, const QString&) { return true; });
         w.show();
         w.activateWindow();
         QVERIFY(QTest::qWaitForWindowActive(&w));
@@ -218,6 +264,7 @@ class XyScreensTest : public QObject {
         QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
         auto link = virtualLink(shipped("xy_plotter.json"));
         XyMainWindow w(*link, settings);
+        w.setConfirmer([](const QString&, const QString&) { return true; });
         w.show();
         QVERIFY(w.plotterPanel() != nullptr);
         PlotterPanel* panel = w.plotterPanel();
@@ -244,6 +291,7 @@ class XyScreensTest : public QObject {
         QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
         auto link = virtualLink(shipped("xy_plotter.json"));
         XyMainWindow w(*link, settings);
+        w.setConfirmer([](const QString&, const QString&) { return true; });
         w.show();
         QVERIFY(w.selectProgram(QStringLiteral(TRILHO_PROGRAMS_DIR "/plotter_quadrado.G")));
         QVERIFY(w.plotterPanel()->pointsLabel()->text().contains(QStringLiteral("5")));
@@ -264,6 +312,7 @@ class XyScreensTest : public QObject {
         f.close();
         auto link = virtualLink(shipped("xy_dc_table.json"));
         XyMainWindow w(*link, settings);
+        w.setConfirmer([](const QString&, const QString&) { return true; });
         QVERIFY(!w.selectProgram(bad));
         QVERIFY(!w.startButton()->isEnabled());
         QVERIFY(w.history()->count() >= 1);

@@ -14,6 +14,7 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSettings>
@@ -130,9 +131,8 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     controls->addWidget(estop_);
 
     connect(open_, &QPushButton::clicked, this, &XyMainWindow::chooseFile);
-    connect(automatic_, &QPushButton::clicked, this,
-            [this] { link_.post([](XyController& c) { c.selectAutomatic(); }); });
-    connect(start_, &QPushButton::clicked, this, &XyMainWindow::startProgram);
+    connect(automatic_, &QPushButton::clicked, this, &XyMainWindow::requestAutomatic);
+    connect(start_, &QPushButton::clicked, this, [this] { startProgram(); });
     connect(hold_, &QPushButton::clicked, this,
             [this] { link_.post([](XyController& c) { c.hold(); }); });
     connect(resume_, &QPushButton::clicked, this, [this] {
@@ -227,6 +227,15 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     file->addAction(tr("&Open program..."), this, &XyMainWindow::chooseFile);
     file->addSeparator();
     file->addAction(tr("E&xit"), this, &QWidget::close);
+    // The same commands as the rail's Command menu (issue 19 items 2 and 3): a mode change
+    // never moves the machine unasked, and Home is a command of its own.
+    auto* command = menuBar()->addMenu(tr("&Command"));
+    manual_ = command->addAction(tr("&Manual"), this,
+                                 [this] { link_.post([](XyController& c) { c.selectManual(); }); });
+    command->addAction(tr("&Automatic"), this, &XyMainWindow::requestAutomatic);
+    home_ = command->addAction(tr("&Home"), this, &XyMainWindow::requestHome);
+    home_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Home));
+    home_->setShortcutContext(Qt::ApplicationShortcut);
     auto* options = menuBar()->addMenu(tr("&Options"));
     options->addAction(tr("&Connection..."), this, &XyMainWindow::chooseConnection);
 
@@ -266,6 +275,7 @@ bool XyMainWindow::selectProgram(const QString& path) {
         return false;
     }
     program_ = program;
+    programPath_ = path;
     const XySample s = last_.sample;
     view_->setPlannedPath(WorkAreaView::plan(*program, {s.x.positionMm, s.y.positionMm}));
     view_->clearFollowed();
@@ -282,8 +292,60 @@ bool XyMainWindow::selectProgram(const QString& path) {
     return true;
 }
 
-void XyMainWindow::startProgram() {
+bool XyMainWindow::confirm(const QString& title, const QString& text) {
+    if (confirmer_) return confirmer_(title, text);
+    QMessageBox box(QMessageBox::Question, title, text, QMessageBox::Yes | QMessageBox::No, this);
+    box.setObjectName(QStringLiteral("confirmation"));
+    box.setDefaultButton(QMessageBox::No);  // a stray Enter never starts the machine
+    return box.exec() == QMessageBox::Yes;
+}
+
+QString XyMainWindow::homingText() const {
+    if (link_.profile().kind == MachineKind::Plotter)
+        return tr(
+            "the pen lifts and the carriage runs to the origin sensors, where both axes "
+            "are zeroed (0, 0).");
+    return tr(
+        "the DC table has no home switch: its origin is where it stood at power-on, and "
+        "nothing moves.");
+}
+
+void XyMainWindow::requestAutomatic() {
+    if (last_.automatic) return;
+    if (!confirm(tr("Automatic"),
+                 tr("Automatic homes the machine first: %1 Go on?").arg(homingText())))
+        return;
+    link_.post([](XyController& c) { c.selectAutomatic(); });
+}
+
+void XyMainWindow::requestHome() {
+    const bool idle =
+        (last_.state == ControllerState::Manual || last_.state == ControllerState::AutoIdle) &&
+        !last_.motionBusy;
+    if (!idle) {
+        statusBar()->showMessage(tr("Home: stop the machine (or reset the E-stop, acknowledge "
+                                    "the alarm) first."),
+                                 8000);
+        return;
+    }
+    if (!confirm(tr("Home"), tr("Home the machine? %1").arg(homingText()))) return;
+    link_.post([](XyController& c) { c.home(); });
+}
+
+void XyMainWindow::startProgram(bool ask) {
     if (!program_) return;
+    const XySample& at = last_.sample;
+    if (ask && !confirm(tr("Cycle start"),
+                        tr("Run %1? %2The machine travels at full speed from (%3, %4) mm to the "
+                           "program's start, then runs it.")
+                            .arg(QFileInfo(programPath_).fileName(),
+                                 last_.homed ? QString()
+                                             : tr("Its position is not known, so it homes "
+                                                  "first: %1 ")
+                                                   .arg(homingText()))
+                            .arg(at.x.positionMm, 0, 'f', 1)
+                            .arg(at.y.positionMm, 0, 'f', 1)))
+        return;
     auto program = program_;
     view_->clearFollowed();
     link_.post([program](XyController& c) {

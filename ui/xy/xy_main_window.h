@@ -4,6 +4,7 @@
 // table, seed 001's controls for the plotter), per-axis plots, the position readout, the run
 // controls and the history. The rail keeps its own replicated 1996 screen (MainWindow).
 #include <QMainWindow>
+#include <functional>
 #include <memory>
 
 #include "core/gcode/program.h"
@@ -32,7 +33,15 @@ class XyMainWindow : public QMainWindow {
     /// Reads and compiles a .G file for this machine; false (and the reason in the status bar
     /// and the history) when it cannot be read or has errors.
     bool selectProgram(const QString& path);
-    void startProgram();  ///< Automatic (homes first when needed), then runs the program
+    /// Automatic (homes first when needed), then runs the program; asks first naming what
+    /// moves where unless ask is false (the command line's --run, a deliberate choice).
+    void startProgram(bool ask = true);
+    /// Who answers the confirmations (tests); by default a Yes/No box that defaults to No.
+    void setConfirmer(std::function<bool(const QString&, const QString&)> confirmer) {
+        confirmer_ = std::move(confirmer);
+    }
+    QAction* homeAction() const { return home_; }
+    QAction* manualAction() const { return manual_; }
     /// The machine is a board on this serial port (its link's state in the status bar); none:
     /// the simulated machine.
     void setDeviceLink(SerialLinkMotion* link, const QString& port, int baud);
@@ -62,6 +71,13 @@ class XyMainWindow : public QMainWindow {
     void closeEvent(QCloseEvent* e) override;
 
   private:
+    bool confirm(const QString& title, const QString& text);
+    /// What homing does on this machine, for the questions that lead to it.
+    QString homingText() const;
+    void requestAutomatic();
+    void requestHome();
+    std::function<bool(const QString&, const QString&)> confirmer_;
+    QAction *home_ = nullptr, *manual_ = nullptr;
     void onUpdate(const std::vector<XyTraceRow>& rows, const std::vector<ControllerEvent>& events,
                   const XyStatus& status);
     void chooseFile();
@@ -80,6 +96,7 @@ class XyMainWindow : public QMainWindow {
     QLabel *state_, *position_, *block_, *program_label_;
     QPushButton *open_, *automatic_, *start_, *hold_, *resume_, *stop_, *estop_, *reset_, *ack_;
     std::shared_ptr<const Program> program_;
+    QString programPath_;  ///< the file program_ came from
     QString programName_;
     QLabel* linkLabel_;
     SerialLinkMotion* deviceLink_ = nullptr;
