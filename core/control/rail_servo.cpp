@@ -468,7 +468,14 @@ void RailServo::tick(double dtS) {
             // no reading strays a count beyond it. A platform resting on the boundary between
             // two counts reads both in turn; its mean is where it is.
             const double window = profile_.loop.inPositionWindowMm;
-            if (std::abs(s.errorMm) <= window + 1.0 / profile_.plant.countsPerMm + 1e-9) {
+            // The mean may sit half a count beyond the window: the encoder's own resolution,
+            // below which Coulomb friction eats the loop's fraction-of-a-code corrections.
+            const double doneBound = window + 0.5 / profile_.plant.countsPerMm + 1e-9;
+            // A late tick held the drive for longer than a period: the platform moved on that
+            // held code, so what was settled before it says nothing about now. The settling
+            // starts afresh, on time (issue 19 item 9: a 20 ms late tick inside the 50 ms
+            // window let a block end 2 counts off).
+            if (!late && std::abs(s.errorMm) <= window + 1.0 / profile_.plant.countsPerMm + 1e-9) {
                 settledFor_ += dtS;
                 settledErrorSum_ += s.errorMm * dtS;
             } else {
@@ -476,11 +483,11 @@ void RailServo::tick(double dtS) {
             }
             // A late tick disturbs the settling through no fault of the loop: it starts afresh.
             unsettledFor_ = late ? 0.0 : unsettledFor_ + dtS;
-            // The mean may sit half a count beyond the window: the encoder's own resolution,
-            // below which Coulomb friction eats the loop's fraction-of-a-code corrections.
+            // Done when the mean over the settle time is within the bound and so is the reading
+            // now: a block never ends on a reading outside the window plus half a count.
             if (settledFor_ >= profile_.loop.inPositionTimeS &&
-                std::abs(settledErrorSum_ / settledFor_) <=
-                    window + 0.5 / profile_.plant.countsPerMm + 1e-9) {
+                std::abs(settledErrorSum_ / settledFor_) <= doneBound &&
+                std::abs(s.errorMm) <= doneBound) {
                 s.inPosition = true;
                 s.mode = ServoMode::Hold;
             } else if (settledFor_ >= 2.0 * profile_.loop.inPositionTimeS) {
