@@ -248,6 +248,10 @@
         <translation>Encoder detenido: el accionamiento comandó %1 mm sin una sola cuenta y se cortó. Revise el encoder y su cable, reconozca y vuelva a referenciar.</translation>
     </message>
     <message>
+        <source>Counts lost: the count differs by %1 mm from the travel the drive made, so the position is wrong and the drive was cut. Lower the speed or check the encoder and its counter card, acknowledge, then home again.</source>
+        <translation>Cuentas perdidas: la cuenta difiere en %1 mm del recorrido que hizo el accionamiento, la posición es errónea y se cortó el accionamiento. Reduzca la velocidad o revise el encoder y la tarjeta contadora, reconozca y vuelva a referenciar.</translation>
+    </message>
+    <message>
         <source>Over-current: a motor drew too much current at %1 % PWM and its drive was cut. Free the axis, acknowledge, then home again.</source>
         <translation>Sobrecorriente: un motor consumió demasiada corriente a %1 % de PWM y se cortó su accionamiento. Libere el eje, reconozca y luego vuelva a referenciar.</translation>
     </message>

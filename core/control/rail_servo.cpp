@@ -14,7 +14,10 @@ RailServo::RailServo(const MachineProfile& profile, RailIo& io)
                                                          profile.loop.samplePeriodS)))),
       accel_(profile.motion.accelerationMmS2),
       speedPerCode_(profile.plant.maxSpeedMmS() / 127.0),
+      countLimitMmS_(0.95 * profile.plant.counterMaxRateHz / profile.plant.countsPerMm),
       plantAccelBound_(1.5 * profile.motion.maxDecelerationMmS2) {
+    countLimitCodes_ =
+        std::clamp(static_cast<int>(std::floor(countLimitMmS_ / speedPerCode_)), 1, 127);
     switches_.reset(io_.readSwitches());
     counter_.resync(io_, 0);
     sample_.switches = switches_.value();
@@ -61,9 +64,10 @@ void RailServo::planFrom(double positionMm, double velocityMmS) {
         profileMotion_ =
             Trapezoid::fromState(positionMm, v, rest, std::max(std::abs(v), 1.0), accel_, maxDecel);
     } else {
-        profileMotion_ =
-            Trapezoid::fromState(positionMm, velocityMmS, sample_.targetMm,
-                                 profile_.motion.rapidSpeedMmS * fraction, accel_, maxDecel);
+        // Never faster than the counter card counts (issue 20 item 11): slowed, not refused.
+        profileMotion_ = Trapezoid::fromState(
+            positionMm, velocityMmS, sample_.targetMm,
+            std::min(profile_.motion.rapidSpeedMmS * fraction, countLimitMmS_), accel_, maxDecel);
     }
     profileTime_ = 0.0;
 }
@@ -238,7 +242,22 @@ bool RailServo::guardSoftLimits() {
     return false;
 }
 
-bool RailServo::checkEncoder(double dtS, bool counted) {
+std::uint8_t RailServo::counterSafeCode(std::uint8_t code) const {
+    return static_cast<std::uint8_t>(std::clamp(static_cast<int>(code), kDacZero - countLimitCodes_,
+                                                kDacZero + countLimitCodes_));
+}
+
+bool RailServo::checkCountDrift(bool reset) {
+    const double drift = sample_.countDriftMm;
+    const double allowed =
+        profile_.loop.countLossMm + profile_.loop.countLossFraction * driftTravelMm_;
+    if (reset) sample_.countDriftMm = driftTravelMm_ = 0.0;
+    if (drift <= allowed) return true;
+    fault(ServoFault::CountsLost, drift);
+    return false;
+}
+
+bool RailServo::checkEncoder(double dtS, bool counted, double countedMm) {
     // Plausibility: the drive commanded motion for encoderStallMm of travel and the counter did
     // not change once. A platform that moves at all makes 22.8 counts a millimetre, so this is
     // a dead encoder, its cable, or a jam. The travel is that of a model of the amplifier (its
@@ -251,6 +270,29 @@ bool RailServo::checkEncoder(double dtS, bool counted) {
         std::clamp((commanded - before) * std::min(1.0, dtS / profile_.plant.speedLoopTauS),
                    -plantAccelBound_ * dtS, plantAccelBound_ * dtS);
     modelVelocity_ += step;
+    // Lost counts (issue 20 item 11) read as a platform slower than the amplifier drives it.
+    // The model and the platform differ while the current limit holds the platform back (a
+    // payload heavier than the profile's: up to 8 mm over a 2540 mm rapid at x3), so the speeds
+    // are compared only while both are steady, over 20 ms: there the speed loop has no
+    // acceleration to make and runs the platform at the commanded speed whatever the mass,
+    // and counts the card misses are the difference. Positive: counted short of the drive.
+    constexpr double kSteadyS = 0.02, kSteadyMmS2 = 600.0;
+    const double w = std::min(1.0, dtS / kSteadyS);
+    modelSlow_ += (modelVelocity_ - modelSlow_) * w;
+    measuredSlow_ += (velocity_ - measuredSlow_) * w;
+    const bool steady = std::abs(modelVelocity_ - modelSlow_) < kSteadyMmS2 * kSteadyS &&
+                        std::abs(velocity_ - measuredSlow_) < kSteadyMmS2 * kSteadyS &&
+                        sinceLateS_ > kSteadyS;
+    if (sample_.mode == ServoMode::Move || sample_.mode == ServoMode::Hold) {
+        // Only while counts come: a counter that stopped is the stall check's (alarm 16).
+        if (steady && counted && std::abs(modelVelocity_) > speedPerCode_)
+            sample_.countDriftMm += (0.5 * (before + modelVelocity_) * dtS - countedMm) *
+                                    (modelVelocity_ > 0.0 ? 1.0 : -1.0);
+        driftTravelMm_ += std::abs(countedMm);
+        if (!checkCountDrift(false)) return false;
+    } else {
+        sample_.countDriftMm = driftTravelMm_ = 0.0;  // manual drive, homing, idle: no check
+    }
     if (counted || sample_.mode == ServoMode::Idle || sample_.mode == ServoMode::Fault) {
         stallTravel_ = 0.0;
         return true;
@@ -329,7 +371,9 @@ void RailServo::tick(double dtS) {
         lastCode_ = kDacZero;
         return;
     }
-    if (!checkEncoder(dtS, counter_.lastDelta() != 0 || counter_.rebased())) return;
+    if (!checkEncoder(dtS, counter_.lastDelta() != 0 || counter_.rebased(),
+                      s.positionMm - previous - jumpMm))
+        return;
     // After a re-base the platform is not where the plan thought: plan the rest of the move
     // from the corrected position, at the speed the setpoint had (no jump in the command).
     if (jumpMm != 0.0 && s.mode == ServoMode::Move && profile_.loop.law == LoopLaw::Engineered &&
@@ -356,6 +400,7 @@ void RailServo::tick(double dtS) {
             const bool intoLeft = directCode_ < kDacZero && (sw & switch_bits::kLeftEnd);
             const bool intoRight = directCode_ > kDacZero && (sw & switch_bits::kRightEnd);
             if (intoLeft || intoRight) directCode_ = kDacZero;  // refuse motion into an end switch
+            directCode_ = counterSafeCode(directCode_);
             s.loop = LoopOutput{};
             s.loop.code = directCode_;
             s.loop.command = directCode_ - 128.0;
@@ -448,9 +493,11 @@ void RailServo::tick(double dtS) {
     in.speedFraction = s.mode == ServoMode::Move ? std::clamp(fraction, 0.0, 1.0) : 1.0;
     // The drive never commands more speed than the setpoint needs now (its speed, 20 % more,
     // the lead its acceleration needs through the amplifier's lag) plus a margin.
-    in.maxSpeedMmS = std::abs(spVelocity) * 1.2 + accel_ * profile_.plant.speedLoopTauS +
-                     profile_.loop.driveMarginMmS;
+    in.maxSpeedMmS = std::min(std::abs(spVelocity) * 1.2 + accel_ * profile_.plant.speedLoopTauS +
+                                  profile_.loop.driveMarginMmS,
+                              countLimitMmS_);
     s.loop = loop_.update(in);
+    s.loop.code = counterSafeCode(s.loop.code);  // the classic law's clamp is its own
     io_.writeDrive(s.loop.code);
     lastCode_ = s.loop.code;
 
@@ -458,6 +505,7 @@ void RailServo::tick(double dtS) {
     if (s.mode == ServoMode::Move) {
         if (profile_.loop.law == LoopLaw::Classic) {
             if (std::abs(s.errorMm) <= profile_.loop.classicInPositionMm) {
+                if (!checkCountDrift(true)) return;
                 s.inPosition = true;
                 release();  // as the VB did: motor(128) once in position
             } else if (moveTime_ > classicDeadline_ && fraction > 0.0) {
@@ -468,7 +516,14 @@ void RailServo::tick(double dtS) {
             // no reading strays a count beyond it. A platform resting on the boundary between
             // two counts reads both in turn; its mean is where it is.
             const double window = profile_.loop.inPositionWindowMm;
-            if (std::abs(s.errorMm) <= window + 1.0 / profile_.plant.countsPerMm + 1e-9) {
+            // The mean may sit half a count beyond the window: the encoder's own resolution,
+            // below which Coulomb friction eats the loop's fraction-of-a-code corrections.
+            const double doneBound = window + 0.5 / profile_.plant.countsPerMm + 1e-9;
+            // A late tick held the drive for longer than a period: the platform moved on that
+            // held code, so what was settled before it says nothing about now. The settling
+            // starts afresh, on time (issue 19 item 9: a 20 ms late tick inside the 50 ms
+            // window let a block end 2 counts off).
+            if (!late && std::abs(s.errorMm) <= window + 1.0 / profile_.plant.countsPerMm + 1e-9) {
                 settledFor_ += dtS;
                 settledErrorSum_ += s.errorMm * dtS;
             } else {
@@ -476,11 +531,12 @@ void RailServo::tick(double dtS) {
             }
             // A late tick disturbs the settling through no fault of the loop: it starts afresh.
             unsettledFor_ = late ? 0.0 : unsettledFor_ + dtS;
-            // The mean may sit half a count beyond the window: the encoder's own resolution,
-            // below which Coulomb friction eats the loop's fraction-of-a-code corrections.
+            // Done when the mean over the settle time is within the bound and so is the reading
+            // now: a block never ends on a reading outside the window plus half a count.
             if (settledFor_ >= profile_.loop.inPositionTimeS &&
-                std::abs(settledErrorSum_ / settledFor_) <=
-                    window + 0.5 / profile_.plant.countsPerMm + 1e-9) {
+                std::abs(settledErrorSum_ / settledFor_) <= doneBound &&
+                std::abs(s.errorMm) <= doneBound) {
+                if (!checkCountDrift(true)) return;
                 s.inPosition = true;
                 s.mode = ServoMode::Hold;
             } else if (settledFor_ >= 2.0 * profile_.loop.inPositionTimeS) {

@@ -32,6 +32,7 @@ enum class ServoFault : std::uint8_t {
     SoftLimit,     ///< the predicted stopping point passed a soft limit: stopped before the switch
     EncoderStall,  ///< the drive ran encoderStallMm with no change of the counter
     InPositionTimeout,  ///< the move ended but never settled in the window
+    CountsLost,  ///< the move ended with the counted travel short of the drive's (lost counts)
 };
 
 /// Everything one tick knew, for the controller, the screens and traces.
@@ -65,6 +66,10 @@ struct ServoSample {
     std::uint32_t limitStops = 0;
     double faultValue = 0.0;  ///< SoftLimit: the limit, mm; EncoderStall: mm run; timeout: error
     bool feedHeld = false;    ///< feed override 0: braked to rest, the move stays active
+    /// The travel the amplifier model expected from the drive less the travel counted, mm, in
+    /// the direction of motion, summed while both speeds are steady, since the platform was
+    /// last in position (lost counts make it grow; issue 20 item 11).
+    double countDriftMm = 0.0;
 };
 
 class RailServo {
@@ -111,7 +116,12 @@ class RailServo {
     /// The soft-limit guard: false (and stopped) when the stopping point passes a limit.
     bool guardSoftLimits();
     /// The encoder plausibility check: false (faulted) when the drive ran without counts.
-    bool checkEncoder(double dtS, bool counted);
+    /// Also adds the period's expected travel less countedMm to the count drift.
+    bool checkEncoder(double dtS, bool counted, double countedMm);
+    /// False (faulted) when the count drift says counts were lost; reset: a move ended.
+    bool checkCountDrift(bool reset);
+    /// The drive code limited to the speed the counter card counts without loss.
+    std::uint8_t counterSafeCode(std::uint8_t code) const;
 
     MachineProfile profile_;
     RailIo& io_;
@@ -134,6 +144,12 @@ class RailServo {
     double modelVelocity_ = 0.0;    ///< mm/s: the amplifier model of the encoder check
     double lateAllowanceMm_ = 0.0;  ///< following error allowed after a late tick, decaying
     double speedPerCode_ = 0.0;     ///< mm/s per DAC code (1885 / 127)
+    /// mm/s: 95 % of the speed at which the counter card reaches its highest count rate; no
+    /// plan and no drive command goes faster (issue 20 item 11).
+    double countLimitMmS_ = 0.0;
+    int countLimitCodes_ = 127;   ///< the same in DAC codes from 128
+    double driftTravelMm_ = 0.0;  ///< mm counted (absolute) since the drift was last reset
+    double modelSlow_ = 0.0, measuredSlow_ = 0.0;  ///< mm/s, 20 ms means: is the speed steady
     /// The plant accelerates up to its current limit, above the planner's braking figure.
     double plantAccelBound_ = 0.0;
     bool useOverride_ = true;

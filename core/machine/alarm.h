@@ -27,6 +27,7 @@ enum class AlarmCode : std::uint8_t {
     StepsLost = 18,          ///< the plotter's homing found the origin off: steps were lost
     OriginNotFound = 19,     ///< the plotter's homing did not find the origin sensor
     DeviceLink = 20,         ///< the serial link to an XY board failed: the run is held
+    CountsLost = 21,  ///< a move ended with the counted travel short of the drive's: drive cut
     Count_
 };
 

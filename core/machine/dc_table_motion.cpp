@@ -13,6 +13,14 @@ constexpr double kInPositionTimeS = 0.02;
 /// (no integral, large lag) may need seconds to creep in, or never get there.
 constexpr double kSettleTimeoutS = 3.0;
 constexpr double kClassicSettleTimeoutS = 30.0;
+/// Encoder plausibility (issue 19 item 8): travel, mm, the motor model says the drive made
+/// with no change of the count. Chosen: about 10 counts of either axis (0.106 and 0.1 mm a
+/// count); a stuck encoder at 150 mm/s runs it in 7 ms, and the cut stops the motor within
+/// its 30 ms time constant, so the table stops well inside 20 mm of where the count froze.
+constexpr double kEncoderStallMm = 1.0;
+/// The model counts no speed below this multiple of the friction's PWM percent: the seed
+/// varies each axis' friction by up to 10 %, and a drive near friction may not move at all.
+constexpr double kStallDeadBandFriction = 1.5;
 }  // namespace
 
 DcTableMotion::DcTableMotion(const MachineProfile& profile, DcTableIo& io)
@@ -102,7 +110,11 @@ void DcTableMotion::writeDrives(const std::array<double, 2>& percent) {
 }
 
 void DcTableMotion::cut() {
+    // The seed's board has no speed loop: PWM 0 leaves the motor to its back EMF and friction,
+    // which stop it within its time constant (30 ms); that is the stop for every fault.
     drivesOn_ = false;
+    modelSpeedMmS_ = {};
+    stallTravelMm_ = {};
     phase_ = Phase::Idle;
     held_ = false;
     writeDrives({0.0, 0.0});
@@ -127,8 +139,32 @@ void DcTableMotion::clearFault() {
     drivesOn_ = true;
 }
 
+bool DcTableMotion::checkEncoder(std::size_t k, bool counted, double dtS) {
+    // The motor model: the PWM percent above friction (with a margin) gives a speed through
+    // the motor's time constant, as SimDcAxis and the engineered feed-forward assume. Travel
+    // it makes with no change of the count is a dead encoder (or its cable): the loop would
+    // drive on towards a setpoint it never sees reached, at up to the clamp's 200 mm/s.
+    const DcAxisParams& a = k == 0 ? params_.x : params_.y;
+    const double u = drivePercent_[k];
+    const double over = std::max(0.0, std::abs(u) - kStallDeadBandFriction * a.coulombPercent);
+    const double target = std::copysign(over * a.noLoadSpeedMmS / 100.0, u);
+    modelSpeedMmS_[k] += (target - modelSpeedMmS_[k]) * std::min(1.0, dtS / a.timeConstantS);
+    if (counted || !drivesOn_) {
+        stallTravelMm_[k] = 0.0;
+        return true;
+    }
+    stallTravelMm_[k] += std::abs(modelSpeedMmS_[k]) * dtS;
+    if (stallTravelMm_[k] < kEncoderStallMm) return true;
+    raise(AlarmCode::EncoderStalled, stallTravelMm_[k]);
+    return false;
+}
+
 void DcTableMotion::tick(double dtS) {
+    const std::array<std::int64_t, 2> before = counts_;
     readEncoders();
+    // The drive written last tick ran over this period: its modelled travel against the count.
+    for (std::size_t k = 0; k < 2; ++k)
+        if (!checkEncoder(k, counts_[k] != before[k], dtS)) break;
     for (int i = 0; i < 2; ++i)
         if (drivesOn_ && io_.readOverCurrent(i))
             raise(AlarmCode::OverCurrent, std::abs(drivePercent_[static_cast<std::size_t>(i)]));

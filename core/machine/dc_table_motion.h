@@ -3,7 +3,8 @@
 // commanded point to the target, sampled every dcTable.samplePeriodS; each axis runs its
 // DcAxisLoop on the encoder count and writes PWM and direction (hal/dc_table_io.h).
 // Faults: following error (alarm 3, the larger axis error in mm), an over-current input
-// (alarm 17, the axis' PWM percent when it fired), a move that never settles (alarm 12).
+// (alarm 17, the axis' PWM percent when it fired), a move that never settles (alarm 12), an
+// encoder that does not count while the drive runs its axis (alarm 16, the mm it ran).
 // Hold and stop brake along the line. Homing: the seed has no origin sensor; its firmware
 // starts with both counts at zero, so the origin is where the table stood at power-on (the
 // operator puts it in the origin corner first). beginHoming() accepts that zero and does not
@@ -52,6 +53,8 @@ class DcTableMotion final : public XyMotion {
     void readEncoders();
     void raise(AlarmCode code, double value);
     void writeDrives(const std::array<double, 2>& percent);
+    /// The encoder plausibility check of one axis; false (raised) when it ran without counts.
+    bool checkEncoder(std::size_t k, bool counted, double dtS);
 
     DcTableParams params_;
     double rapidMmS_, accelMmS2_;
@@ -62,6 +65,8 @@ class DcTableMotion final : public XyMotion {
     std::array<std::int64_t, 2> counts_{};
     std::array<double, 2> measuredMm_{};
     std::array<double, 2> drivePercent_{};
+    std::array<double, 2> modelSpeedMmS_{};  ///< the motor model of the encoder check, mm/s
+    std::array<double, 2> stallTravelMm_{};  ///< mm the model ran since the count last changed
     Phase phase_ = Phase::Idle;
     SyncTrapezoid plan_;
     double planTimeS_ = 0.0;

@@ -145,6 +145,10 @@ constexpr const char* kAlarm[static_cast<int>(AlarmCode::Count_)] = {
                       "Link to the device lost: it did not answer, the line was too noisy, or "
                       "the cable was pulled. The run is held: check the cable and the port, "
                       "then press Continue to go on from the first point not acknowledged."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Counts lost: the count differs by %1 mm from the travel the drive made, so "
+                      "the position is wrong and the drive was cut. Lower the speed or check the "
+                      "encoder and its counter card, acknowledge, then home again."),
 };
 
 QString number(double v) {

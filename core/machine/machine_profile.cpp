@@ -97,6 +97,7 @@ void forEachRailNumber(MachineProfile& p, F&& f) {
     f("plant.coulombFrictionN", pl.coulombFrictionN, 0.0, 1000.0);
     f("plant.viscousFrictionNsPerM", pl.viscousFrictionNsPerM, 0.0, 1000.0);
     f("plant.countsPerMm", pl.countsPerMm, 0.1, 10000.0);
+    f("plant.counterMaxRateHz", pl.counterMaxRateHz, 100.0, 1e8);
     f("plant.endSwitchMm", pl.endSwitchMm, 1.0, 100000.0);
     f("plant.hardStopMm", pl.hardStopMm, 1.0, 100000.0);
     f("plant.centreSwitchHalfWidthMm", pl.centreSwitchHalfWidthMm, 0.1, 100.0);
@@ -115,6 +116,8 @@ void forEachRailNumber(MachineProfile& p, F&& f) {
     f("loop.minFollowingErrorMm", l.minFollowingErrorMm, 0.01, 10000.0);
     f("loop.driveMarginMmS", l.driveMarginMmS, 0.0, 100000.0);
     f("loop.encoderStallMm", l.encoderStallMm, 0.1, 1000.0);
+    f("loop.countLossMm", l.countLossMm, 0.1, 1000.0);
+    f("loop.countLossFraction", l.countLossFraction, 0.0, 1.0);
     f("loop.inPositionTimeoutS", l.inPositionTimeoutS, 0.1, 600.0);
     f("loop.classicInPositionTimeoutS", l.classicInPositionTimeoutS, 0.1, 3600.0);
     f("loop.finalPositionWindowMm", l.finalPositionWindowMm, 0.001, 100.0);

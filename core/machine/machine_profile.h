@@ -26,9 +26,14 @@ struct PlantParams {
     double massFactor = 1.0;  ///< multiplies movingMassKg (payload changes; the loop is not told)
     double speedLoopTauS =
         0.015;  ///< chosen: TRANSAXE 710 PI speed loop, first-order time constant
-    double coulombFrictionN = 40.0;        ///< chosen: rollers and cable
-    double viscousFrictionNsPerM = 30.0;   ///< chosen
-    double countsPerMm = 22.8;             ///< machine.md: 100 mm = 2280 counts
+    double coulombFrictionN = 40.0;       ///< chosen: rollers and cable
+    double viscousFrictionNsPerM = 30.0;  ///< chosen
+    double countsPerMm = 22.8;            ///< machine.md: 100 mm = 2280 counts
+    /// The counter card's highest count rate, counts/s: above it counts are lost (machine.md 5,
+    /// the 5000-line encoder counted "8 by 8"). The servo never plans nor drives a speed whose
+    /// rate is above 95 % of it. Chosen: 50,000, above the 42,978 counts/s of the top speed, so
+    /// the stock rail is never slowed; a profile for a slower card gives its own figure.
+    double counterMaxRateHz = 50000.0;
     double endSwitchMm = 1280.0;           ///< chosen: end switches 15 mm inside the hard stops
     double hardStopMm = 1295.0;            ///< machine.md: about 2590 mm of travel, centre origin
     double centreSwitchHalfWidthMm = 2.0;  ///< chosen: the centre vane reads active within +-2 mm
@@ -77,6 +82,13 @@ struct LoopParams {
     /// Commanded travel (mm, above 15 mm/s) with no change of the counter: the encoder or its
     /// cable is dead. Chosen: 5 mm, 110 counts that a moving platform would have produced.
     double encoderStallMm = 5.0;
+    /// Counts lost (issue 20 item 11): while the platform's speed and the amplifier model's are
+    /// both steady, the travel the model expected from the drive is compared with the travel
+    /// counted; a shortfall above countLossMm plus countLossFraction of the travel since the
+    /// platform was last in position stops the machine (alarm 21). Chosen, see
+    /// motion_safety_test.cpp (CountsLost).
+    double countLossMm = 2.0;
+    double countLossFraction = 0.002;
     /// A move whose profile has ended must settle in the window within this time, s.
     double inPositionTimeoutS = 2.0;
     /// The same for the classic law, whose integral creeps over the last half millimetre for

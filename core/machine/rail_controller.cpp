@@ -424,7 +424,8 @@ void RailController::acknowledgeAlarms() {
     const std::uint32_t positionFaults =
         alarmBit(AlarmCode::FollowingError) | alarmBit(AlarmCode::EncoderFault) |
         alarmBit(AlarmCode::EncoderStalled) | alarmBit(AlarmCode::LoopOverrun) |
-        alarmBit(AlarmCode::HomingFailed) | alarmBit(AlarmCode::AmplifierFault);
+        alarmBit(AlarmCode::HomingFailed) | alarmBit(AlarmCode::AmplifierFault) |
+        alarmBit(AlarmCode::CountsLost);
     if (status_.activeAlarms & positionFaults) status_.homed = false;
     status_.activeAlarms = 0;
     servo_.clearFault();
@@ -469,6 +470,9 @@ void RailController::checkServoFault() {
             break;
         case ServoFault::InPositionTimeout:
             raiseAlarm(AlarmCode::InPositionTimeout, servo_.sample().faultValue);
+            break;
+        case ServoFault::CountsLost:
+            raiseAlarm(AlarmCode::CountsLost, servo_.sample().faultValue);
             break;
         default:
             break;

@@ -25,8 +25,18 @@ void SimDcAxis::placeAt(double positionMm) {
     state_.velocityMmS = 0.0;
 }
 
+void SimDcAxis::setEncoderStuck(bool on) {
+    const auto now = static_cast<std::int64_t>(std::floor(state_.positionMm / mmPerCount()));
+    if (on && !encoderStuck_) stuckCount_ = now - countOffset_;
+    if (!on && encoderStuck_) countOffset_ = now - stuckCount_;
+    encoderStuck_ = on;
+}
+
 std::uint16_t SimDcAxis::encoder() const {
-    const auto count = static_cast<std::int64_t>(std::floor(state_.positionMm / mmPerCount()));
+    const auto count =
+        encoderStuck_ ? stuckCount_
+                      : static_cast<std::int64_t>(std::floor(state_.positionMm / mmPerCount())) -
+                            countOffset_;
     return static_cast<std::uint16_t>(static_cast<std::uint64_t>(count) & 0xffffu);
 }
 

@@ -34,6 +34,9 @@ class SimDcAxis {
     void clearOverCurrent() { overCurrent_ = false, state_.currentPercent = 0.0; }
     /// A jam (a crash, a seized screw): the axis stops dead and stays there.
     void setJammed(bool on) { state_.jammed = on; }
+    /// A dead encoder (its cable, its disc): the count freezes where it is; the motor runs on.
+    /// Clearing it reconnects the encoder: the counts of the motion meanwhile are lost.
+    void setEncoderStuck(bool on);
     /// Puts the axis at rest at positionMm (the encoder reads it from the origin).
     void placeAt(double positionMm);
 
@@ -46,6 +49,9 @@ class SimDcAxis {
     double frictionPercent_;
     SimDcAxisState state_;
     bool overCurrent_ = false;
+    bool encoderStuck_ = false;
+    std::int64_t stuckCount_ = 0;   ///< the count while the encoder is stuck
+    std::int64_t countOffset_ = 0;  ///< counts lost while it was stuck
 };
 
 }  // namespace trilho

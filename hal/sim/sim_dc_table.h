@@ -33,6 +33,8 @@ class SimDcTable final : public DcTableIo, public XyPlant {
     const SimDcAxis& axis(int i) const { return axes_[static_cast<std::size_t>(i)]; }
     /// Jams an axis (fault injection).
     void setJammed(int axis, bool on) { this->axis(axis).setJammed(on); }
+    /// Freezes an axis' encoder (fault injection).
+    void setEncoderStuck(int axis, bool on) { this->axis(axis).setEncoderStuck(on); }
     bool pwmRunning() const { return pwmRunning_; }
 
   private:

@@ -42,7 +42,8 @@ bool hasAlarm(const test::ProgramRunResult& r, AlarmCode code) {
 /// A session homed at the centre, ready to run.
 struct Cell {
     SimSession session;
-    explicit Cell(MachineProfile p = MachineProfile::rail()) : session(p, 1, 0.0) {
+    explicit Cell(MachineProfile p = MachineProfile::rail(), std::uint64_t seed = 1)
+        : session(p, seed, 0.0) {
         c().selectAutomatic();
         session.runUntil([&] { return c().status().state == ControllerState::AutoIdle; }, 60);
         EXPECT_TRUE(c().status().homed);
@@ -209,6 +210,83 @@ TEST(MotionSoak, DISABLED_LongSoak) {
     EXPECT_EQ(t.runs, 6000);
 }
 
+// ---- in position means in position, late ticks or not (issue 19 item 9) ------------------------
+
+/// A ciclo_continuo-like shuttle between -400 and +400 with late ticks; at every block the servo
+/// declares done, the reading's error and the plant's. Returns the worst of each.
+struct DoneErrors {
+    int blocks = 0;
+    double worstReadMm = 0.0, worstPlantMm = 0.0, worstOvershootMm = 0.0;
+    std::uint32_t lateTicks = 0;
+};
+
+DoneErrors shuttleWithLateTicks(std::uint64_t seed, double seconds, double jitterS, double rate) {
+    Cell cell(MachineProfile::rail(), seed);
+    RailController& c = cell.c();
+    EXPECT_TRUE(c.loadProgram(compileText(
+        "N10 G90\nN20 G01 X-400 F70\nN30 G04 X0.5\nN40 G01 X400\nN50 G04 X0.5\nN60 M03 X20\n"
+        "N70 M02\n")));
+    EXPECT_TRUE(c.start());
+    FaultInjection f;
+    f.tickJitterMaxS = jitterS;
+    f.tickJitterRate = rate;
+    cell.session.rail().setFaults(f);
+    DoneErrors d;
+    bool wasIn = true;
+    double lastTarget = 0.0, from = 0.0;
+    const double end = cell.session.elapsedS() + seconds;
+    while (cell.session.elapsedS() < end) {
+        cell.session.step();
+        const ServoSample& s = c.status().servo;
+        EXPECT_NE(c.status().state, ControllerState::Alarm)
+            << "alarm " << static_cast<int>(c.status().lastAlarm);
+        if (c.status().state == ControllerState::Alarm) break;
+        if (s.mode == ServoMode::Move && !s.inPosition) {
+            if (wasIn) from = s.moveStartMm;
+            wasIn = false, lastTarget = s.targetMm;
+        }
+        // Past the target in the move's direction, as the plant is.
+        const double past = (cell.x() - lastTarget) * (lastTarget > from ? 1.0 : -1.0);
+        if (!wasIn) d.worstOvershootMm = std::max(d.worstOvershootMm, past);
+        if (!wasIn && s.inPosition) {
+            wasIn = true;
+            ++d.blocks;
+            d.worstReadMm = std::max(d.worstReadMm, std::abs(s.positionMm - s.targetMm));
+            d.worstPlantMm = std::max(d.worstPlantMm, std::abs(cell.x() - s.targetMm));
+        }
+    }
+    d.lateTicks = c.status().servo.overruns;
+    return d;
+}
+
+TEST(InPosition, ALateTickWhileSettlingNeverEndsABlockOutsideItsWindow) {
+    // The defect: run --virtual-time --tick-jitter 20 --jitter-rate 0.02 --seed 6 declared a
+    // block done 2 counts (0.088 mm) from its target. The bound: the reading at the moment a
+    // block is done is within the window plus the encoder's half count; the overshoot under
+    // late ticks stays under 1 mm (the held drive's physics).
+    const MachineProfile p = MachineProfile::rail();
+    const double bound = p.loop.inPositionWindowMm + 0.5 * kCount + 1e-9;
+    DoneErrors worst;
+    for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+        const DoneErrors d = shuttleWithLateTicks(seed, 60.0, 0.020, 0.02);
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        EXPECT_GT(d.blocks, 30);
+        EXPECT_GT(d.lateTicks, 500u);
+        EXPECT_LE(d.worstReadMm, bound);
+        EXPECT_LT(d.worstOvershootMm, 1.0);
+        worst.blocks += d.blocks;
+        worst.worstReadMm = std::max(worst.worstReadMm, d.worstReadMm);
+        worst.worstPlantMm = std::max(worst.worstPlantMm, d.worstPlantMm);
+        worst.worstOvershootMm = std::max(worst.worstOvershootMm, d.worstOvershootMm);
+        if (::testing::Test::HasFailure()) break;
+    }
+    std::printf(
+        "in position under late ticks: %d blocks, worst reading at done %.4f mm (%.2f "
+        "counts), plant %.4f mm, overshoot %.3f mm\n",
+        worst.blocks, worst.worstReadMm, worst.worstReadMm / kCount, worst.worstPlantMm,
+        worst.worstOvershootMm);
+}
+
 // ---- soft limits at run time -------------------------------------------------------------------
 
 /// Runs until pred or maxS; returns the largest |x| the plant reached.
@@ -344,6 +422,70 @@ TEST(StuckEncoder, AtEveryFeedThePlatformRunsUnder20mmBeforeTheDriveIsCut) {
     }
     std::printf("stuck encoder: worst travel before the drive was cut %.2f mm (F%d)\n", worst,
                 worstFeed);
+}
+
+// Issue 19 item 8: where the platform comes to rest after the encoder sticks, at every feed and
+// mass. The drive is stopped through the amplifier's speed loop, which still works: zero speed
+// is commanded and the amplifier brakes at its current limit (IEC 60204-1 category 1). No stop
+// is shorter than braking at that limit from the speed at the fault, v^2 / 2a (74 mm from the
+// 750 mm/s of G1 F100 0.3 s in, at the nominal mass): the bound is 20 mm beyond it, and 20 mm
+// from the fault itself wherever that braking distance is the smaller part.
+TEST(StuckEncoder, AtEveryFeedAndMassThePlatformRestsWithin20mmOfTheShortestStop) {
+    const MachineProfile p = MachineProfile::rail();
+    double worstBeyond = 0.0, worstLiteral = 0.0;
+    int literalFeeds = 0;
+    for (double mass : {0.5, 1.0, 2.0, 3.0}) {
+        // The hardest braking the amplifier can do: its peak force plus friction on the mass.
+        const double massKg = p.plant.movingMassKg * mass + p.plant.reflectedMassKg;
+        const double brake = (p.plant.peakForceN() + p.plant.coulombFrictionN) / massKg * 1000.0;
+        for (int feed = 1; feed <= 100; ++feed) {
+            for (int dir : {+1, -1}) {
+                Cell cell;
+                cell.session.rail().setMassFactor(mass);
+                ASSERT_TRUE(cell.c().loadProgram(compileText(
+                    "G1 X" + std::to_string(1000 * dir) + " F" + std::to_string(feed) + "\nM2\n")));
+                ASSERT_TRUE(cell.c().start());
+                FaultInjection f;
+                f.stuckEncoderAtS = cell.session.rail().state().timeS + 0.3;
+                cell.session.rail().setFaults(f);
+                double atFault = NAN, speed = 0.0;
+                const double end = cell.session.elapsedS() + 60.0;
+                while (cell.session.elapsedS() < end) {
+                    cell.session.step();
+                    const double t = cell.session.rail().state().timeS;
+                    if (std::isnan(atFault) && t >= f.stuckEncoderAtS)
+                        atFault = cell.x(), speed = cell.session.rail().state().velocityMmS;
+                    if (!std::isnan(atFault) && cell.c().status().state == ControllerState::Alarm)
+                        break;
+                }
+                SCOPED_TRACE("F" + std::to_string(feed) + " mass x" + std::to_string(mass) +
+                             " dir " + std::to_string(dir));
+                ASSERT_EQ(cell.c().status().state, ControllerState::Alarm);
+                cell.session.runUntil(
+                    [&] { return std::abs(cell.session.rail().state().velocityMmS) < 1e-3; }, 5.0);
+                const double rest = (cell.x() - atFault) * dir;
+                const double shortest = speed * speed / (2.0 * brake);
+                EXPECT_LT(rest, shortest + 20.0);
+                EXPECT_GT(rest, -1.0);  // it never ran backwards
+                if (shortest < 10.0) {
+                    ++literalFeeds;
+                    EXPECT_LT(rest, 20.0);
+                    worstLiteral = std::max(worstLiteral, rest);
+                }
+                worstBeyond = std::max(worstBeyond, rest - shortest);
+                if (feed == 100 && dir == 1 && mass == 1.0)
+                    std::printf(
+                        "stuck encoder at F100: %.1f mm/s at the fault, rests %.2f mm on, "
+                        "braking alone needs %.2f mm\n",
+                        speed, rest, shortest);
+                if (::testing::Test::HasFailure()) return;
+            }
+        }
+    }
+    std::printf(
+        "stuck encoder: at rest at most %.2f mm beyond the shortest stop; %d runs whose "
+        "braking needs under 10 mm rest at most %.2f mm after the fault\n",
+        worstBeyond, literalFeeds, worstLiteral);
 }
 
 // ---- feed override 0 is a feed hold -------------------------------------------------------------
@@ -485,15 +627,19 @@ TEST(MotionlessLoop, ACycleWithADwellIsNotOne) {
 
 // ---- lost counts and cable slip are corrected at the centre mark, and said ----------------------
 
-TEST(CentreMark, LostCountsAreReportedWithTheSizeOfTheCorrection) {
+TEST(CentreMark, LostCountsTheDriftCheckMissesAreCorrectedThereAndSaid) {
+    // Lost counts are compared with the amplifier model only while the speeds are steady
+    // (CountsLost below). A card that misses counts above 37,000 counts/s (1623 mm/s) loses
+    // them only around the top of these rapids, where the speed is still changing: 6.8 mm
+    // that only the centre mark sees, and corrects (30,000 counts/s now stops with alarm 21).
     test::ProgramRunSpec spec;
-    spec.faults.maxCountRateHz = 30000;  // above 1316 mm/s the card misses counts
+    spec.faults.maxCountRateHz = 37000;
     const auto r = test::runProgram(compileText("G0 X1000\nG0 X-1000\nG0 X0\nM2\n"), spec);
     ASSERT_TRUE(hasAlarm(r, AlarmCode::CounterCorrected));
     const auto e = std::find_if(r.events.begin(), r.events.end(), [](const auto& ev) {
         return ev.alarm == AlarmCode::CounterCorrected;
     });
-    EXPECT_GT(std::abs(e->value), 1.0);  // 1.x: 4-5 mm corrected silently
+    EXPECT_GT(std::abs(e->value), 3.0 * kCount);  // the warning's threshold
     EXPECT_TRUE(r.finished);
     std::printf("lost counts: the centre mark corrected %.2f mm\n", e->value);
 }
@@ -503,6 +649,93 @@ TEST(CentreMark, ACleanRunReportsNoCorrection) {
     const auto r = test::runProgram(compileText("G0 X1000\nG0 X-1000\nG0 X0\nM2\n"), spec);
     EXPECT_FALSE(hasAlarm(r, AlarmCode::CounterCorrected));
     EXPECT_TRUE(r.finished);
+}
+
+// ---- counts lost anywhere are detected; the plan never outruns the counter (issue 20 item 11) --
+
+/// Runs program on a homed rail with faults from its start; the largest |count drift| seen
+/// while moving, the plant's extremes, and how it ended.
+struct DriftRun {
+    double worstDriftMm = 0.0, maxPlantMm = 0.0;
+    bool finished = false;
+    AlarmCode alarm = AlarmCode::None;
+    double alarmValue = 0.0;
+};
+
+DriftRun runForDrift(const std::string& text, double massFactor, const FaultInjection& faults,
+                     MachineProfile p = MachineProfile::rail(), double seconds = 60.0) {
+    Cell cell(p);
+    cell.session.rail().setMassFactor(massFactor);
+    RailController& c = cell.c();
+    EXPECT_TRUE(c.loadProgram(compileText(text)));
+    EXPECT_TRUE(c.start());
+    cell.session.rail().setFaults(faults);
+    DriftRun r;
+    std::vector<ControllerEvent> events;
+    runWatching(
+        cell,
+        [&] {
+            const auto& st = c.status();
+            r.worstDriftMm = std::max(r.worstDriftMm, std::abs(st.servo.countDriftMm));
+            r.maxPlantMm = std::max(r.maxPlantMm, cell.x());
+            return st.programFinished || st.state == ControllerState::Alarm;
+        },
+        seconds, &events);
+    // Follow the platform to rest after an alarm: where it really stopped.
+    runWatching(
+        cell,
+        [&] {
+            r.maxPlantMm = std::max(r.maxPlantMm, cell.x());
+            return false;
+        },
+        c.status().state == ControllerState::Alarm ? 3.0 : 0.0, &events);
+    r.finished = c.status().programFinished;
+    for (const ControllerEvent& e : events)
+        if (e.kind == EventKind::AlarmRaised && r.alarm == AlarmCode::None)
+            r.alarm = e.alarm, r.alarmValue = e.value;
+    return r;
+}
+
+TEST(CountsLost, NearTheSoftLimitTheyStopTheMachineNeverFinishSilently) {
+    // The defect: G0 to 1268-1270 with a card that misses counts above 30,000 counts/s (1316
+    // mm/s) ended "Program finished !" with the platform at 1275.8 mm, past the soft limit.
+    FaultInjection f;
+    f.maxCountRateHz = 30000;
+    const DriftRun r = runForDrift("G0 X1268\nG0 X1270\nG0 X1268\nG0 X1270\nM2\n", 1.0, f);
+    std::printf("lost counts near the soft limit: alarm %d (%.2f mm), platform reached %.2f mm\n",
+                static_cast<int>(r.alarm), r.alarmValue, r.maxPlantMm);
+    EXPECT_FALSE(r.finished);
+    EXPECT_EQ(r.alarm, AlarmCode::CountsLost);
+    EXPECT_LT(r.maxPlantMm, MachineProfile::rail().limits.x.softMaxMm);
+}
+
+TEST(CountsLost, AProfileThatKnowsTheCardsRateIsSlowedAndLosesNone) {
+    MachineProfile p = MachineProfile::rail();
+    p.plant.counterMaxRateHz = 30000;  // 95 %: 1250 mm/s
+    FaultInjection f;
+    f.maxCountRateHz = 30000;
+    const DriftRun r = runForDrift("G0 X1268\nG0 X1270\nG0 X-1270\nG0 X1270\nM2\n", 1.0, f, p);
+    EXPECT_TRUE(r.finished);
+    EXPECT_EQ(r.alarm, AlarmCode::None);
+    EXPECT_LE(r.maxPlantMm, 1270.0 + 1.5 * kCount);
+}
+
+TEST(CountsLost, NoFalseAlarmAtAnyMassFeedOrLength) {
+    // The model's own error: masses x0.5 to x3, rapids and feeds, long and short moves, the
+    // soft limits. The worst drift is printed against the allowance (2 mm + 0.2 % of travel).
+    double worst = 0.0;
+    for (double mass : {0.5, 1.0, 2.0, 3.0}) {
+        for (const char* program :
+             {"G0 X1270\nG0 X-1270\nG0 X0\nM2\n", "G1 X600 F10\nG1 X0 F50\nG1 X3 F100\nM2\n",
+              "G0 X0.5\nG0 X1\nG1 X200 F30\nG0 X-200\nM2\n"}) {
+            const DriftRun r = runForDrift(program, mass, {}, MachineProfile::rail(), 120.0);
+            SCOPED_TRACE(std::string(program) + " mass x" + std::to_string(mass));
+            EXPECT_TRUE(r.finished);
+            EXPECT_EQ(r.alarm, AlarmCode::None) << r.alarmValue;
+            worst = std::max(worst, r.worstDriftMm);
+        }
+    }
+    std::printf("count drift without lost counts: worst %.3f mm\n", worst);
 }
 
 // ---- after an alarm, the next legal action works ---------------------------------------------

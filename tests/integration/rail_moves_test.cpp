@@ -142,17 +142,27 @@ TEST(RailFaults, AmplifierTripIsDetected) {
     EXPECT_EQ(r.trace.back().loop.code, 128);
 }
 
-TEST(RailFaults, LostCountsAreToleratedAndCorrectedAtTheCentre) {
+TEST(RailFaults, LostCountsAtASteadySpeedStopTheMove) {
+    // Issue 20 item 11: -1000 to 1000 cruises at 1700 mm/s, above the card's 1316: the counts
+    // lost while the speed is steady are alarm 21's (1.x tolerated them).
+    FaultInjection f;
+    f.maxCountRateHz = 30000;
+    auto across = move(-1000, 1000, 1.0, f);
+    EXPECT_EQ(across.fault, ServoFault::CountsLost);
+    EXPECT_FALSE(across.inPosition);
+}
+
+TEST(RailFaults, LostCountsWhileTheSpeedChangesAreLeftToTheCentreMark) {
+    // 0 to 1000 never cruises (it peaks at 1581 mm/s and brakes at once): the counts lost over
+    // the top are lost while the speed changes, where the amplifier model's check does not
+    // look (docs/architecture.md, "Counts lost"); the move ends with the count behind, and
+    // the next crossing of the centre mark corrects it (warning 14, motion_safety_test.cpp).
     FaultInjection f;
     f.maxCountRateHz = 30000;  // 1316 mm/s: the top of a long move loses counts
     auto away = move(0, 1000, 1.0, f);
     EXPECT_EQ(away.fault, ServoFault::None);
     EXPECT_TRUE(away.inPosition);
     EXPECT_GT(away.finalErrorMm, 1.0);  // the drift is real: the count fell behind
-    // Crossing the centre mark clears the counter: only the loss after it remains.
-    auto across = move(-1000, 1000, 1.0, f);
-    EXPECT_EQ(across.fault, ServoFault::None);
-    EXPECT_LT(across.finalErrorMm, away.finalErrorMm + kCount);
 }
 
 TEST(RailFaults, CableSlipIsToleratedAndBounded) {

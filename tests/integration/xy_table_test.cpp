@@ -85,7 +85,9 @@ TEST(XyTableFaults, JammedAxisRaisesAndCutsBothDrives) {
         s.runUntil([&] { return s.controller().status().state == ControllerState::Alarm; }, 2.0));
     const AlarmCode a = s.controller().status().lastAlarm;
     std::printf("jam: alarm %d after %.3f s\n", static_cast<int>(a), s.elapsedS() - 0.5);
-    EXPECT_TRUE(a == AlarmCode::OverCurrent || a == AlarmCode::FollowingError);
+    // A jam is also a drive that runs without counts: the encoder check (16) may see it first.
+    EXPECT_TRUE(a == AlarmCode::OverCurrent || a == AlarmCode::FollowingError ||
+                a == AlarmCode::EncoderStalled);
     s.step();
     EXPECT_EQ(table.axis(0).state().drivePercent, 0.0);
     EXPECT_EQ(table.axis(1).state().drivePercent, 0.0);
@@ -96,6 +98,43 @@ TEST(XyTableFaults, JammedAxisRaisesAndCutsBothDrives) {
     s.controller().moveTo({10, 10}, 1.0);
     EXPECT_TRUE(s.runUntil([&] { return !s.controller().motion().busy(); }, 5.0));
     EXPECT_NEAR(table.positionMm(0), 10.0, 0.11);
+}
+
+TEST(XyTableFaults, AStuckEncoderStopsTheAxisWithin20mmAtEveryFeed) {
+    // Issue 19 item 8: the encoder of one axis freezes 0.3 s into a move; the motor model sees
+    // the drive run without counts (alarm 16) and cuts it; the axis rests less than 20 mm from
+    // where it was when the count froze, at every feed from F1 to F100, on each axis, either way.
+    const MachineProfile profile = test::tableProfileForMoves();
+    double worst = 0.0;
+    for (int axis = 0; axis < 2; ++axis) {
+        for (int feed = 1; feed <= 100; ++feed) {
+            for (int dir : {+1, -1}) {
+                const XyPoint from{150, 150};
+                XyPoint to = from;
+                (axis == 0 ? to.x : to.y) += 140.0 * dir;
+                XySessionMake made = makeXySession(profile, 1, from);
+                XySession& s = *made.session;
+                auto& table = dynamic_cast<SimDcTable&>(s.plant());
+                s.runUntil([] { return false; }, 0.05);
+                s.controller().moveTo(to, feed / 100.0);
+                s.runUntil([] { return false; }, 0.3);
+                const double atFault = table.positionMm(axis);
+                table.setEncoderStuck(axis, true);
+                SCOPED_TRACE("axis " + std::to_string(axis) + " F" + std::to_string(feed) +
+                             " dir " + std::to_string(dir));
+                ASSERT_TRUE(s.runUntil(
+                    [&] { return s.controller().status().state == ControllerState::Alarm; }, 30.0));
+                EXPECT_EQ(s.controller().status().lastAlarm, AlarmCode::EncoderStalled);
+                s.runUntil([] { return false; }, 1.0);  // to rest
+                EXPECT_EQ(table.velocityMmS(axis), 0.0);
+                const double rest = std::abs(table.positionMm(axis) - atFault);
+                EXPECT_LT(rest, 20.0);
+                worst = std::max(worst, rest);
+                if (::testing::Test::HasFailure()) return;
+            }
+        }
+    }
+    std::printf("stuck encoder on the DC table: at rest at most %.2f mm from the fault\n", worst);
 }
 
 TEST(XyTableFaults, EmergencyStopCutsAtOnce) {
