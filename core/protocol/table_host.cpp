@@ -39,30 +39,70 @@ double TableHost::waitFor(const table_wire::SetPointMm& from,
     return config_.answerTimeoutS + 2.0 * travelMm / std::max(1e-3, config_.vmaxMmS);
 }
 
+namespace {
+bool same(const table_wire::SetPointMm& a, const table_wire::SetPointMm& b) {
+    return a.x == b.x && a.y == b.y;
+}
+}  // namespace
+
 void TableHost::receive(std::uint8_t byte, double nowS) {
-    if (failed_ || !inFlight_) {
-        ++stats_.unexpected;
+    const std::uint64_t noiseBefore = decoder_.discarded();
+    const auto answer = decoder_.feed(byte, nowS);
+    stats_.unexpected += decoder_.discarded() - noiseBefore;
+    if (answer) answered(*answer, nowS);
+}
+
+void TableHost::answered(const table_wire::DecodedAnswer& a, double nowS) {
+    const bool mine = inFlight_ && !failed_ && same(a.setPoint, current_);
+    if (!mine) {
+        if (mayStillAnswer_ && same(a.setPoint, *mayStillAnswer_)) {
+            ++stats_.late;  // the answer to a repeat (or to a set point abandoned): not ours
+            return;
+        }
+        if (!inFlight_ || failed_) {
+            ++stats_.unexpected;
+            return;
+        }
+        if (a.code == table_wire::kNak) {
+            // The table refused what it received, and nothing moved: line noise changed the set
+            // point on the way. Send it again (bounded).
+            ++stats_.garbled;
+            if (++garbled_ > config_.maxGarbled) {
+                fail("line noise: the table received " + name(a.setPoint) + " instead of " +
+                     name(current_) + " " + std::to_string(garbled_) +
+                     " times and refused it (outside the table); the line is too noisy");
+                return;
+            }
+            send(nowS);
+            return;
+        }
+        // ACK or CAN of a set point never sent: the table moved where the program did not ask.
+        reached_.reset();
+        offPath_ = true;
+        fail("line noise: the table received " + name(a.setPoint) + " instead of " +
+             name(current_) + " and " +
+             (a.code == table_wire::kAck ? std::string("moved there")
+                                         : std::string("cut its drives on the way there")) +
+             ": the table left the program's path");
         return;
     }
-    switch (byte) {
+    switch (a.code) {
         case table_wire::kAck:
             inFlight_ = false;
-            timeouts_ = 0;
+            timeouts_ = garbled_ = 0;
             reached_ = current_;
+            mayStillAnswer_ = current_;  // a repeat of it may be answered again
             ++stats_.acknowledged;
             poll(nowS);
             return;
         case table_wire::kNak:
             fail("the table refused " + name(current_) + ": outside the table");
             return;
-        case table_wire::kCan:
+        default:  // kCan
             // The table stopped where the cut found it: where it stands is no longer known.
             reached_.reset();
             fail("the table cut its drives on the way to " + name(current_) +
                  ": over-current (a jam or a collision?)");
-            return;
-        default:
-            ++stats_.unexpected;  // not an answer: the deadline decides
             return;
     }
 }
@@ -104,24 +144,27 @@ std::vector<std::uint8_t> TableHost::takeOutput() {
 void TableHost::fail(std::string why) {
     failed_ = true;
     error_ = std::move(why);
-    // Keep the place: the set point in flight goes back to the front of the queue.
-    if (inFlight_) queue_.push_front(current_);
+    // Keep the place: the set point in flight goes back to the front of the queue. A repeat of
+    // it may still be answered, late.
+    if (inFlight_) queue_.push_front(current_), mayStillAnswer_ = current_;
     inFlight_ = false;
 }
 
 void TableHost::retry() {
-    if (!failed_) return;
+    if (!failed_ || offPath_) return;  // off the path: only clear() (Stop) goes on
     failed_ = false;
     error_.clear();
-    timeouts_ = 0;
+    timeouts_ = garbled_ = 0;
 }
 
 void TableHost::clear() {
+    if (inFlight_) mayStillAnswer_ = current_;  // abandoned, but its answer may still come
     queue_.clear();
     inFlight_ = false;
     failed_ = false;
+    offPath_ = false;
     error_.clear();
-    timeouts_ = 0;
+    timeouts_ = garbled_ = 0;
 }
 
 }  // namespace trilho

@@ -1,0 +1,244 @@
+// Issue 20 item 10: the XY hosts against their emulated boards over virtual lines that are
+// late (a latency beyond the host's deadline), lossy, noisy and duplicating, both ways. A
+// late or duplicate answer is never taken for the answer to a later packet: a run the host
+// calls a success is one the board made (its trace, collapsed, equals the path asked), and
+// a run it cannot vouch for ends with a failure that says why. Seeded: each schedule repeats.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+
+#include "core/protocol/plotter_host.h"
+#include "core/protocol/table_host.h"
+#include "hal/emulator/plotter_firmware.h"
+#include "hal/emulator/table_firmware.h"
+#include "tests/support/virtual_serial_line.h"
+
+using namespace trilho;
+
+namespace {
+
+constexpr double kDtS = 0.001;  ///< virtual time per step, s
+
+/// The faults of one schedule: each direction its own LineFaults (and seed) and latency.
+struct Schedule {
+    LineFaultSettings down, up;  ///< towards the board, towards the host
+    double downDelayS = 0.0, upDelayS = 0.0;
+};
+
+Schedule seeded(std::uint64_t seed, double delayS, double dropP, double corruptP, double dupP) {
+    Schedule s;
+    s.down.seed = seed;
+    s.up.seed = seed + 1000;
+    s.down.dropP = s.up.dropP = dropP;
+    s.down.corruptP = s.up.corruptP = corruptP;
+    s.up.duplicateP = dupP;
+    s.downDelayS = s.upDelayS = delayS;
+    return s;
+}
+
+/// The points in order with consecutive repeats of the same place removed: a repeated packet
+/// stores (or runs) its point twice, a zero-length move that draws nothing.
+template <typename P>
+std::vector<P> collapsed(const std::vector<P>& in) {
+    std::vector<P> out;
+    for (const P& p : in)
+        if (out.empty() || out.back().x != p.x || out.back().y != p.y) out.push_back(p);
+    return out;
+}
+
+// ---- the plotter ----
+
+struct PlotterRun {
+    bool ok = false, failed = false;
+    std::string error;
+    std::vector<PlottedPoint> plotted;
+    PlotterHostStats host;
+    double seconds = 0.0;
+};
+
+PlotterRun runPlotter(const std::vector<PlotPoint>& drawing, const Schedule& s,
+                      double maxS = 900.0) {
+    const MachineProfile profile = MachineProfile::xyPlotter();
+    PlotterFirmware device(profile, 3);
+    PlotterHost host;
+    test::VirtualWire down(57600, s.downDelayS), up(57600, s.upDelayS);
+    LineFaults downFaults(s.down), upFaults(s.up);
+    host.request();
+    host.speed(1000);
+    host.origin();
+    host.plot(drawing);
+    double t = 0.0;
+    for (; t < maxS && !host.idle() && !host.failed(); t += kDtS) {
+        host.poll(t);
+        down.send(host.takeOutput(), t);
+        down.deliver(t, [&](std::uint8_t b, double at) {
+            for (std::uint8_t c : downFaults.passAll(b))
+                device.receive(c, at);
+        });
+        device.step(kDtS, t);
+        std::vector<std::uint8_t> answers;
+        for (std::uint8_t b : device.takeOutput())
+            for (std::uint8_t c : upFaults.passAll(b))
+                answers.push_back(c);
+        up.send(answers, t);
+        up.deliver(t, [&](std::uint8_t b, double at) { host.receive(b, at); });
+    }
+    // The board finishes what it holds (an object it was sent may still be plotting).
+    for (double end = t + 60.0; t < end; t += kDtS)
+        device.step(kDtS, t);
+    PlotterRun r;
+    r.ok = host.idle();
+    r.failed = host.failed();
+    r.error = host.error();
+    r.plotted = device.plotted();
+    r.host = host.stats();
+    r.seconds = t;
+    return r;
+}
+
+std::vector<PlottedPoint> asPlotted(const std::vector<PlotPoint>& drawing) {
+    std::vector<PlottedPoint> out;
+    for (const PlotPoint& p : drawing)
+        out.push_back({p.draw, p.x, p.y});
+    return out;
+}
+
+/// The seed's square (plotter_quadrado.G's corners, steps): a MOVE and four LINEs, so that
+/// the same answer (NEXT) follows every packet of the object.
+const std::vector<PlotPoint> kSquare{
+    {false, 200, 200}, {true, 600, 200}, {true, 600, 600}, {true, 200, 600}, {true, 200, 200}};
+
+std::string describe(const std::vector<PlottedPoint>& ps) {
+    std::string s;
+    for (const PlottedPoint& p : ps)
+        s += (p.draw ? " L" : " M") + std::to_string(p.x) + "," + std::to_string(p.y);
+    return s;
+}
+
+// ---- the table ----
+
+struct TableRun {
+    bool ok = false, failed = false;
+    std::string error;
+    std::vector<table_wire::SetPointMm> ran;
+    double xMm = 0.0, yMm = 0.0;  ///< where the table stands at the end
+    TableHostStats host;
+};
+
+TableRun runTable(const std::vector<table_wire::SetPointMm>& path, const Schedule& s,
+                  double maxS = 900.0) {
+    const MachineProfile profile = MachineProfile::xyDcTable();
+    TableFirmware device(profile, 7);
+    TableHostConfig config;
+    config.vmaxMmS = profile.motion.rapidSpeedMmS;
+    TableHost host(config);
+    test::VirtualWire down(9600, s.downDelayS), up(9600, s.upDelayS);
+    LineFaults downFaults(s.down), upFaults(s.up);
+    for (const auto& p : path)
+        EXPECT_TRUE(host.moveTo(p.x, p.y));
+    double t = 0.0;
+    for (; t < maxS && !host.idle() && !host.failed(); t += kDtS) {
+        host.poll(t);
+        down.send(host.takeOutput(), t);
+        down.deliver(t, [&](std::uint8_t b, double at) {
+            for (std::uint8_t c : downFaults.passAll(b))
+                device.receive(c, at);
+        });
+        device.step(kDtS, t);
+        std::vector<std::uint8_t> answers;
+        for (std::uint8_t b : device.takeOutput())
+            for (std::uint8_t c : upFaults.passAll(b))
+                answers.push_back(c);
+        up.send(answers, t);
+        up.deliver(t, [&](std::uint8_t b, double at) { host.receive(b, at); });
+    }
+    for (double end = t + 30.0; t < end; t += kDtS)  // the table finishes its move
+        device.step(kDtS, t);
+    TableRun r;
+    r.ok = host.idle();
+    r.failed = host.failed();
+    r.error = host.error();
+    r.ran = device.ran();
+    r.xMm = device.table().positionMm(0);
+    r.yMm = device.table().positionMm(1);
+    r.host = host.stats();
+    return r;
+}
+
+/// mesa_xy_quadrado.G's corners: a square and back to the origin.
+const std::vector<table_wire::SetPointMm> kTableSquare{{50, 50},  {150, 50}, {150, 150},
+                                                       {50, 150}, {50, 50},  {0, 0}};
+
+std::string describe(const std::vector<table_wire::SetPointMm>& ps) {
+    std::string s;
+    for (const auto& p : ps)
+        s += " (" + std::to_string(p.x) + "," + std::to_string(p.y) + ")";
+    return s;
+}
+
+bool sameSetPoints(const std::vector<table_wire::SetPointMm>& a,
+                   const std::vector<table_wire::SetPointMm>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i].x != b[i].x || a[i].y != b[i].y) return false;
+    return true;
+}
+
+}  // namespace
+
+// The defect as measured (the plotter: delay 2.7 s, 3 % of the bytes dropped): answers come
+// after the host's 2.5 s deadline, so every packet is sent twice and the second answer of one
+// packet was taken for the answer to the next; with a packet lost, a side was never drawn and
+// the host called it done.
+TEST(LateAnswers, ThePlotterNeverCallsDoneADrawingTheBoardDidNotDraw) {
+    const std::vector<PlottedPoint> want = asPlotted(kSquare);
+    int ok = 0, failed = 0;
+    for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+        Schedule s;
+        s.down.seed = seed;
+        s.down.dropP = 0.03;
+        s.downDelayS = 2.7;
+        const PlotterRun r = runPlotter(kSquare, s);
+        if (r.ok) {
+            ++ok;
+            EXPECT_EQ(collapsed(r.plotted), want)
+                << "seed " << seed << ": the host called it done; the board drew"
+                << describe(r.plotted);
+        } else {
+            ++failed;
+            EXPECT_TRUE(r.failed) << "seed " << seed << ": neither done nor failed";
+            EXPECT_FALSE(r.error.empty());
+        }
+    }
+    std::printf("plotter, 2.7 s late and 3 %% dropped, 12 seeds: %d drawn right, %d failed\n", ok,
+                failed);
+}
+
+// The table's defect: its one-byte ACK did not say which set point it answered; a late ACK was
+// taken for the next set point, which the busy board had dropped, and the host ended "OK"
+// with the table elsewhere.
+TEST(LateAnswers, TheTableNeverCallsDoneAPathTheBoardDidNotRun) {
+    int ok = 0, failed = 0;
+    for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+        Schedule s;
+        s.down.seed = seed;
+        s.up.seed = seed + 1000;
+        s.down.dropP = s.up.dropP = 0.02;
+        s.downDelayS = s.upDelayS = 1.5;  // 3 s round trip: beyond 2 s plus the move's time
+        const TableRun r = runTable(kTableSquare, s);
+        if (r.ok) {
+            ++ok;
+            EXPECT_TRUE(sameSetPoints(collapsed(r.ran), kTableSquare))
+                << "seed " << seed << ": the host called it done; the board ran" << describe(r.ran);
+            EXPECT_NEAR(r.xMm, 0.0, 0.1) << "seed " << seed;
+            EXPECT_NEAR(r.yMm, 0.0, 0.1) << "seed " << seed;
+        } else {
+            ++failed;
+            EXPECT_TRUE(r.failed) << "seed " << seed << ": neither done nor failed";
+            EXPECT_FALSE(r.error.empty());
+        }
+    }
+    std::printf("table, 1.5 s late each way and 2 %% dropped, 12 seeds: %d ran right, %d failed\n",
+                ok, failed);
+}
