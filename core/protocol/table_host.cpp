@@ -88,11 +88,35 @@ void TableHost::answered(const table_wire::DecodedAnswer& a, double nowS) {
     }
     switch (a.code) {
         case table_wire::kAck:
+            // Its move started from the set point acknowledged before (or from itself: a repeat
+            // after the first copy ran). Anything else ran in between, unheard: its answer was
+            // lost, and it was no set point of the program's.
+            if (reached_ && !same(a.before, *reached_) && !same(a.before, current_)) {
+                reached_.reset();
+                offPath_ = true;
+                fail("the table ran " + name(a.before) +
+                     ", which was not sent (line noise changed "
+                     "one on the way), before " +
+                     name(current_) + ": the table left the program's path");
+                return;
+            }
             inFlight_ = false;
             timeouts_ = garbled_ = 0;
             reached_ = current_;
             mayStillAnswer_ = current_;  // a repeat of it may be answered again
-            ++stats_.acknowledged;
+            if (!checking_) ++stats_.acknowledged;
+            if (copies_ == 1) {
+                needCheck_ = false;  // sent once: no copy of it is left on the way
+                checks_ = 0;
+            } else {
+                needCheck_ = true;
+                if (checking_ && ++checks_ > config_.maxTimeouts) {
+                    fail("the table's answers come later than " +
+                         std::to_string(std::lround(config_.checkTimeoutS)) +
+                         " s: where it ended (" + name(current_) + ") cannot be confirmed");
+                    return;
+                }
+            }
             poll(nowS);
             return;
         case table_wire::kNak:
@@ -120,9 +144,22 @@ void TableHost::poll(double nowS) {
         send(nowS);
         return;
     }
-    if (queue_.empty()) return;
+    if (queue_.empty()) {
+        if (!needCheck_ || !reached_) return;
+        // The last set point went more than once: send it again, once, and wait long for it.
+        current_ = *reached_;
+        checking_ = true;
+        copies_ = 0;
+        ++stats_.checks;
+        send(nowS);
+        return;
+    }
+    // The next set point's answer says where its move started: it checks the one before.
+    needCheck_ = checking_ = false;
+    checks_ = 0;
     current_ = queue_.front();
     queue_.pop_front();
+    copies_ = 0;
     send(nowS);
 }
 
@@ -130,8 +167,11 @@ void TableHost::send(double nowS) {
     const table_wire::SetPoint bytes = table_wire::encodeSetPoint(current_.x, current_.y);
     out_.insert(out_.end(), bytes.begin(), bytes.end());
     ++stats_.sent;
+    ++copies_;
     // Unknown position (before the first ACK, after a CAN): from the origin, the power-on place.
-    deadline_ = nowS + waitFor(reached_.value_or(table_wire::SetPointMm{0, 0}), current_);
+    deadline_ =
+        nowS + (checking_ ? config_.checkTimeoutS
+                          : waitFor(reached_.value_or(table_wire::SetPointMm{0, 0}), current_));
     inFlight_ = true;
 }
 
@@ -144,9 +184,10 @@ std::vector<std::uint8_t> TableHost::takeOutput() {
 void TableHost::fail(std::string why) {
     failed_ = true;
     error_ = std::move(why);
-    // Keep the place: the set point in flight goes back to the front of the queue. A repeat of
-    // it may still be answered, late.
-    if (inFlight_) queue_.push_front(current_), mayStillAnswer_ = current_;
+    // Keep the place: the set point in flight goes back to the front of the queue (a check is
+    // checked again). A repeat of it may still be answered, late.
+    if (inFlight_ && !checking_) queue_.push_front(current_);
+    if (inFlight_) mayStillAnswer_ = current_;
     inFlight_ = false;
 }
 
@@ -163,6 +204,8 @@ void TableHost::clear() {
     inFlight_ = false;
     failed_ = false;
     offPath_ = false;
+    needCheck_ = checking_ = false;
+    checks_ = 0;
     error_.clear();
     timeouts_ = garbled_ = 0;
 }

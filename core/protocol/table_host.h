@@ -8,8 +8,11 @@
 // (idempotent: a table already there answers ACK at once), bounded, then failure. An answer
 // naming the set point before (a late answer to a repeat) is ignored; a NAK naming a set point
 // never sent (line noise changed it on the way: nothing moved) sends it again, bounded; an ACK
-// or CAN naming one never sent means the table moved where the program did not ask: the host
-// fails and offPath() says so.
+// or CAN naming one never sent, or an ACK whose move started from a set point the host did not
+// hear answered, means the table moved where the program did not ask: the host fails and
+// offPath() says so. A set point sent more than once may still have a copy on its way, which
+// noise could change: when it is the last, the host sends it once more (a check, with a long
+// deadline) and is idle only when a check sent once comes back from it.
 #include <cstdint>
 #include <deque>
 #include <optional>
@@ -28,6 +31,7 @@ struct TableHostConfig {
     double vmaxMmS = 150.0;  ///< the profile's rapid speed, mm/s (each axis)
     int maxTimeouts = 3;     ///< repeats after a timeout; then fail
     int maxGarbled = 10;     ///< repeats after a NAK of a set point changed on the way; then fail
+    double checkTimeoutS = 10.0;  ///< the check's deadline, s: long, so that it goes once
 };
 
 struct TableHostStats {
@@ -37,6 +41,7 @@ struct TableHostStats {
     std::uint64_t unexpected = 0;    ///< answers to nothing asked, noise bytes (ignored)
     std::uint64_t late = 0;          ///< answers to a set point already answered (ignored)
     std::uint64_t garbled = 0;       ///< set points the table received changed (NAK: sent again)
+    std::uint64_t checks = 0;        ///< checks sent after a repeated last set point
 };
 
 class TableHost {
@@ -56,7 +61,7 @@ class TableHost {
     std::vector<std::uint8_t> takeOutput();
 
     // ---- state ----
-    bool idle() const { return !failed_ && !inFlight_ && queue_.empty(); }
+    bool idle() const { return !failed_ && !inFlight_ && queue_.empty() && !needCheck_; }
     bool inFlight() const { return inFlight_; }
     bool failed() const { return failed_; }
     const std::string& error() const { return error_; }
@@ -93,6 +98,10 @@ class TableHost {
     double deadline_ = 0.0;
     int timeouts_ = 0;
     int garbled_ = 0;
+    int copies_ = 0;          ///< copies of the set point in flight sent
+    bool checking_ = false;   ///< the set point in flight is a check
+    bool needCheck_ = false;  ///< the last set point went more than once: check it
+    int checks_ = 0;          ///< checks in a row that went more than once
     bool failed_ = false;
     bool offPath_ = false;
     table_wire::AnswerDecoder decoder_;

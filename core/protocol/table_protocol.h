@@ -7,10 +7,12 @@
 // emulator follows (docs/protocols.md B): after each set point the board sends an answer of 6
 // bytes: the code (ACK 0x06 when both axes are in position, NAK 0x15 when the set point is
 // outside the table and was not run, CAN 0x18 when an over-current input cut a drive), the
-// set point as the board received it (hiX loX hiY loY) and a checksum (the sum of the five
-// bytes kept in one byte, as the plotter's packets). The echo matches each answer to the set
-// point it answers (issue 20 item 10: a one-byte answer that came late was taken for the next
-// set point's) and shows a set point that line noise changed on the way.
+// set point as the board received it (hiX loX hiY loY), the set point it ran before (where
+// this move started, hiX loX hiY loY; (0, 0) after power-on) and a checksum (the sum of the
+// nine bytes kept in one byte, as the plotter's packets): 10 bytes. The echo matches each
+// answer to the set point it answers (issue 20 item 10: a one-byte answer that came late was
+// taken for the next set point's) and shows a set point that line noise changed on the way;
+// the set point before shows a move the host never heard of (its answer was lost).
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -23,7 +25,7 @@ inline constexpr std::uint8_t kCan = 0x18;            ///< over-current: the dri
 inline constexpr double kCalibrationPeriodS = 0.032;  ///< seed 004: one count every 32 ms
 
 using SetPoint = std::array<std::uint8_t, 4>;
-inline constexpr std::size_t kAnswerBytes = 6;
+inline constexpr std::size_t kAnswerBytes = 10;
 using Answer = std::array<std::uint8_t, kAnswerBytes>;
 
 constexpr SetPoint encodeSetPoint(std::uint16_t xMm, std::uint16_t yMm) {
@@ -44,25 +46,28 @@ constexpr bool isAnswerCode(std::uint8_t b) {
     return b == kAck || b == kNak || b == kCan;
 }
 
-/// code, hiX, loX, hiY, loY, checksum (the sum of the five bytes, mod 256).
-constexpr Answer encodeAnswer(std::uint8_t code, const SetPoint& received) {
-    Answer a{code, received[0], received[1], received[2], received[3], 0};
+/// code, the set point received, the set point run before it, checksum (the sum of the nine
+/// bytes, mod 256).
+constexpr Answer encodeAnswer(std::uint8_t code, const SetPoint& received, const SetPoint& before) {
+    Answer a{code,      received[0], received[1], received[2], received[3],
+             before[0], before[1],   before[2],   before[3],   0};
     unsigned sum = 0;
-    for (std::size_t i = 0; i < 5; ++i)
+    for (std::size_t i = 0; i + 1 < kAnswerBytes; ++i)
         sum += a[i];
-    a[5] = static_cast<std::uint8_t>(sum & 0xFFu);
+    a[kAnswerBytes - 1] = static_cast<std::uint8_t>(sum & 0xFFu);
     return a;
 }
 
 struct DecodedAnswer {
     std::uint8_t code;
     SetPointMm setPoint;  ///< the set point as the board received it
+    SetPointMm before;    ///< the set point it ran before (this move's start)
 };
 
 /// Frames the board's answers from the bytes as they come: a frame starts with a code byte
 /// and checks; a byte that cannot start one, or a frame that does not check, is dropped one
 /// byte at a time (the next code byte may start the real frame); a partial frame older than
-/// gapS is dropped (six bytes take 6 ms at 9600 bit/s: a gap means one was lost).
+/// gapS is dropped (ten bytes take 10 ms at 9600 bit/s: a gap means one was lost).
 class AnswerDecoder {
   public:
     explicit AnswerDecoder(double gapS = 0.05) : gapS_(gapS) {}
@@ -81,9 +86,10 @@ class AnswerDecoder {
             shift(skip);
             if (have_ < kAnswerBytes) return std::nullopt;
             const Answer a = buf_;
-            if (encodeAnswer(a[0], {a[1], a[2], a[3], a[4]})[5] == a[5]) {
+            if (encodeAnswer(a[0], {a[1], a[2], a[3], a[4]}, {a[5], a[6], a[7], a[8]})[9] == a[9]) {
                 have_ = 0;
-                return DecodedAnswer{a[0], decodeSetPoint({a[1], a[2], a[3], a[4]})};
+                return DecodedAnswer{a[0], decodeSetPoint({a[1], a[2], a[3], a[4]}),
+                                     decodeSetPoint({a[5], a[6], a[7], a[8]})};
             }
             shift(1);  // not a frame: its first byte was noise or the tail of a lost one
         }

@@ -54,19 +54,23 @@ void TableFirmware::handle(const table_wire::SetPoint& bytes) {
     }
     if (!inside(sp.x, sp.y)) {
         ++stats_.refused;
-        answer(table_wire::kNak, sp);  // nothing moves
+        answer(table_wire::kNak, sp, lastRun_);  // nothing moves
         return;
     }
     running_ = sp;
+    runningFrom_ = lastRun_;
+    lastRun_ = sp;
     moving_ = true;
     ran_.push_back(sp);
     motion_.beginMove({static_cast<double>(sp.x), static_cast<double>(sp.y)}, XyMove::Travel, 1.0);
 }
 
-void TableFirmware::answer(std::uint8_t code, const table_wire::SetPointMm& sp) {
-    // docs/protocols.md B: the code, the set point as received, a checksum.
+void TableFirmware::answer(std::uint8_t code, const table_wire::SetPointMm& sp,
+                           const table_wire::SetPointMm& before) {
+    // docs/protocols.md B: the code, the set point as received, the one run before, a checksum.
     const table_wire::Answer a =
-        table_wire::encodeAnswer(code, table_wire::encodeSetPoint(sp.x, sp.y));
+        table_wire::encodeAnswer(code, table_wire::encodeSetPoint(sp.x, sp.y),
+                                 table_wire::encodeSetPoint(before.x, before.y));
     out_.insert(out_.end(), a.begin(), a.end());
     ++stats_.answers;
 }
@@ -83,14 +87,14 @@ void TableFirmware::loopTick() {
             moving_ = false;
             stats_.lastCut = why;
             ++stats_.cut;
-            answer(table_wire::kCan, running_);
+            answer(table_wire::kCan, running_, runningFrom_);
         }
         return;
     }
     if (moving_ && !motion_.busy()) {
         moving_ = false;
         ++stats_.reached;
-        answer(table_wire::kAck, running_);
+        answer(table_wire::kAck, running_, runningFrom_);
     }
 }
 

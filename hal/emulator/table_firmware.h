@@ -3,7 +3,8 @@
 // point as 4 bytes (hiX loX hiY loY, whole mm), plans the synchronized trapezoid and runs the
 // per-axis loop every 5 ms until both axes are in position, then answers (the extension of
 // docs/protocols.md B: ACK in position, NAK outside the table, CAN when an over-current cut
-// the drives; each followed by the set point as received and a checksum). The open-loop calibration
+// the drives; each followed by the set point as received, the one run before it and a
+// checksum). The open-loop calibration
 // program drives one axis at a fixed PWM and sends its encoder count, LSB then MSB, every 32 ms
 // until 1300 pulses. It runs the core's DcTableMotion on SimDcTable: the same planner, loops and
 // plant as in-process runs, not copies. Plain and steppable: bytes in, bytes out, time passed in.
@@ -79,7 +80,8 @@ class TableFirmware final : public DeviceFirmware {
   private:
     void handle(const table_wire::SetPoint& bytes);
     void loopTick();
-    void answer(std::uint8_t code, const table_wire::SetPointMm& sp);
+    void answer(std::uint8_t code, const table_wire::SetPointMm& sp,
+                const table_wire::SetPointMm& before);
     void calibrationTick();
     bool inside(double xMm, double yMm) const;
 
@@ -93,6 +95,8 @@ class TableFirmware final : public DeviceFirmware {
     double lastByteS_ = 0.0;
     bool moving_ = false;
     table_wire::SetPointMm running_{};
+    table_wire::SetPointMm runningFrom_{};  ///< the set point run before running_
+    table_wire::SetPointMm lastRun_{};      ///< the last set point started ((0, 0) at power-on)
     // Board time: the plant is advanced from event to event (the 5 ms loop, the 32 ms stream),
     // so both run on exact instants whatever step() is called with.
     double clockS_ = 0.0;    ///< board time the plant has reached, s

@@ -141,7 +141,8 @@ TEST(TableLink, DroppedBytesCostRepeatsNotThePositions) {
         expectWithinACount(link);
         EXPECT_NEAR(link.device.table().positionMm(0), path.back().x, link.mmPerCount(0));
         EXPECT_NEAR(link.device.table().positionMm(1), path.back().y, link.mmPerCount(1));
-        EXPECT_EQ(link.host.stats().sent, path.size() + link.host.stats().timeouts);
+        EXPECT_EQ(link.host.stats().sent,
+                  path.size() + link.host.stats().timeouts + link.host.stats().checks);
         timeouts += link.host.stats().timeouts;
         std::printf(
             "2 %% of bytes dropped (seed %llu): %llu down, %llu up; %llu timeouts, %llu stale "
@@ -255,8 +256,9 @@ TEST(TableFirmware, AStalePartialIsDroppedAndARepeatDuringAMoveIsAnsweredOnce) {
     feed(table_wire::encodeSetPoint(30, 40), 4);
     EXPECT_EQ(device.stats().ignoredMoving, 1u);
     const std::vector<std::uint8_t> out = run(5.0);
-    // One answer: ACK, the set point as received, the checksum (0x06 + 30 + 40 = 76).
-    EXPECT_EQ(out, (std::vector<std::uint8_t>{table_wire::kAck, 0, 30, 0, 40, 76}));
+    // One answer: ACK, the set point as received, the one before (power-on: 0, 0), the
+    // checksum (0x06 + 30 + 40 = 76).
+    EXPECT_EQ(out, (std::vector<std::uint8_t>{table_wire::kAck, 0, 30, 0, 40, 0, 0, 0, 0, 76}));
     EXPECT_NEAR(device.table().positionMm(0), 30.0, device.table().axis(0).mmPerCount());
     EXPECT_NEAR(device.table().positionMm(1), 40.0, device.table().axis(1).mmPerCount());
     // Once there, the same set point is a zero-length move: ACK after the in-position check.
@@ -265,6 +267,7 @@ TEST(TableFirmware, AStalePartialIsDroppedAndARepeatDuringAMoveIsAnsweredOnce) {
     std::vector<std::uint8_t> again;
     while (again.empty() && t < sent + 1.0)
         again = run(0.001);
-    EXPECT_EQ(again, (std::vector<std::uint8_t>{table_wire::kAck, 0, 30, 0, 40, 76}));
+    EXPECT_EQ(again,
+              (std::vector<std::uint8_t>{table_wire::kAck, 0, 30, 0, 40, 0, 30, 0, 40, 146}));
     EXPECT_LT(t - sent, 0.05);
 }
