@@ -7,9 +7,14 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <random>
 #include <string>
 
+#include "core/gcode/compiler.h"
+#include "core/machine/event_text.h"
+#include "core/machine/table_link_motion.h"
+#include "core/machine/xy_controller.h"
 #include "core/protocol/plotter_host.h"
 #include "core/protocol/table_host.h"
 #include "hal/emulator/plotter_firmware.h"
@@ -347,4 +352,127 @@ TEST(LateAnswersProperty, TheTableRunsThePathOrSaysItFailed) {
     // The seed's set point has no checksum: at up to 3 % of bytes corrupted or duplicated
     // towards the board, a third of these runs see the table leave the path, and say so.
     EXPECT_GT(ok, runs / 3);
+}
+
+// ---- through the controller: what the history says ----
+
+namespace {
+struct TableMachine {
+    MachineProfile profile = MachineProfile::xyDcTable();
+    TableFirmware device{profile, 7};
+    test::VirtualWire down, up;
+    LineFaults downFaults, upFaults;
+    bool deaf = false;  ///< the board hears nothing (a cable cut on the way to it)
+    TableLinkMotion* link = nullptr;
+    std::unique_ptr<XyController> c;
+    std::vector<ControllerEvent> events;
+    double t = 0.0;
+
+    explicit TableMachine(const Schedule& s)
+        : down(9600, s.downDelayS), up(9600, s.upDelayS), downFaults(s.down), upFaults(s.up) {
+        auto motion = std::make_unique<TableLinkMotion>(
+            profile, [this](const std::vector<std::uint8_t>& b) { down.send(b, t); });
+        link = motion.get();
+        c = std::make_unique<XyController>(profile, std::move(motion));
+    }
+    void step() {
+        c->step(kDtS);
+        t += kDtS;
+        down.deliver(t, [&](std::uint8_t b, double at) {
+            if (deaf) return;
+            for (std::uint8_t x : downFaults.passAll(b))
+                device.receive(x, at);
+        });
+        device.step(kDtS, t);
+        std::vector<std::uint8_t> answers;
+        for (std::uint8_t b : device.takeOutput())
+            for (std::uint8_t x : upFaults.passAll(b))
+                answers.push_back(x);
+        up.send(answers, t);
+        up.deliver(t, [&](std::uint8_t b, double) { link->onBytes(&b, 1); });
+        c->drainEvents([&](const ControllerEvent& e) { events.push_back(e); });
+    }
+    bool has(EventKind k) const {
+        for (const ControllerEvent& e : events)
+            if (e.kind == k) return true;
+        return false;
+    }
+};
+
+std::shared_ptr<const Program> tableProgram(const MachineProfile& profile, const char* text) {
+    CompileOptions o;
+    o.machine = profile.limits;
+    auto p = std::make_shared<Program>(compile(text, o));
+    EXPECT_TRUE(p->ok());
+    return p;
+}
+
+constexpr const char* kTableSquareProgram =
+    "G00 X50 Y50\nG00 X150 Y50\nG00 X150 Y150\nG00 X50 Y150\nG00 X50 Y50\nG00 X0 Y0\nM02\n";
+}  // namespace
+
+// Issue 20 item 12: a link failure was logged "Program paused by the operator.". The history
+// says what happened: the link's warning, and no operator's pause.
+TEST(LateAnswersMachine, ALinkFailureIsNotLoggedAsAnOperatorsPause) {
+    TableMachine m(Schedule{});
+    m.c->selectAutomatic();
+    m.c->loadProgram(tableProgram(m.profile, kTableSquareProgram));
+    m.c->start(0);
+    for (int i = 0; i < 3000; ++i)  // homing and the first corner
+        m.step();
+    m.deaf = true;
+    while (m.t < 120.0 && m.link->fault() == AlarmCode::None)
+        m.step();
+    for (int i = 0; i < 100; ++i)
+        m.step();
+    ASSERT_EQ(m.link->fault(), AlarmCode::DeviceLink);
+    EXPECT_EQ(m.c->status().state, ControllerState::Paused);
+    EXPECT_FALSE(m.has(EventKind::Paused)) << "a link failure is no operator's pause";
+    EXPECT_FALSE(m.has(EventKind::ProgramEnd));
+    bool warned = false;
+    for (const ControllerEvent& e : m.events)
+        if (e.kind == EventKind::AlarmRaised && e.alarm == AlarmCode::DeviceLink) {
+            warned = true;
+            EXPECT_TRUE(
+                historyLine(e).startsWith(QStringLiteral("Warning 20: Link to the device "
+                                                         "lost")))
+                << historyLine(e).toStdString();
+        }
+    EXPECT_TRUE(warned);
+    EXPECT_NE(m.link->linkError().find("no answer from the table"), std::string::npos)
+        << m.link->linkError();
+}
+
+// The table's defect through the controller: "Program finished !" only when the board ran the
+// program's corners in order; otherwise the run is held on the link's alarm.
+TEST(LateAnswersMachine, ProgramFinishedOnlyWhenTheTableRanTheProgram) {
+    const std::vector<table_wire::SetPointMm> want{{0, 0},    {50, 50}, {150, 50}, {150, 150},
+                                                   {50, 150}, {50, 50}, {0, 0}};
+    int finished = 0, held = 0;
+    for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+        Schedule s;
+        s.down.seed = seed;
+        s.up.seed = seed + 1000;
+        s.down.dropP = s.up.dropP = 0.02;
+        s.downDelayS = s.upDelayS = 1.5;
+        TableMachine m(s);
+        m.c->selectAutomatic();
+        m.c->loadProgram(tableProgram(m.profile, kTableSquareProgram));
+        m.c->start(0);
+        while (m.t < 600.0 && !m.has(EventKind::ProgramEnd) && m.link->fault() == AlarmCode::None)
+            m.step();
+        if (m.has(EventKind::ProgramEnd)) {
+            ++finished;
+            EXPECT_TRUE(sameSetPoints(collapsed(m.device.ran()), want))
+                << "seed " << seed << ": Program finished !; the board ran"
+                << describe(m.device.ran());
+        } else {
+            ++held;
+            EXPECT_EQ(m.link->fault(), AlarmCode::DeviceLink) << "seed " << seed;
+        }
+    }
+    std::printf(
+        "table program, 1.5 s late each way, 2 %% dropped, 6 seeds: %d finished right, %d "
+        "held on the link's alarm\n",
+        finished, held);
 }
