@@ -13,7 +13,11 @@ namespace trilho {
 
 DeviceRunner::DeviceRunner(std::unique_ptr<DeviceFirmware> firmware, int fd,
                            const RunnerSettings& s)
-    : firmware_(std::move(firmware)), fd_(fd), settings_(s), faults_(s.faults) {
+    : firmware_(std::move(firmware)),
+      fd_(fd),
+      settings_(s),
+      faults_(s.faults),
+      outFaults_(s.outFaults) {
     notifier_ = new QSocketNotifier(fd_, QSocketNotifier::Read, this);
     connect(notifier_, &QSocketNotifier::activated, this, &DeviceRunner::readFd);
     start();
@@ -21,7 +25,11 @@ DeviceRunner::DeviceRunner(std::unique_ptr<DeviceFirmware> firmware, int fd,
 
 DeviceRunner::DeviceRunner(std::unique_ptr<DeviceFirmware> firmware, QSerialPort* port,
                            const RunnerSettings& s)
-    : firmware_(std::move(firmware)), port_(port), settings_(s), faults_(s.faults) {
+    : firmware_(std::move(firmware)),
+      port_(port),
+      settings_(s),
+      faults_(s.faults),
+      outFaults_(s.outFaults) {
     connect(port_, &QSerialPort::readyRead, this, [this] {
         const QByteArray bytes = port_->readAll();
         arrive(bytes.constData(), bytes.size());
@@ -105,8 +113,8 @@ void DeviceRunner::arrive(const char* data, qint64 n) {
         ++bytesIn_;
         // Each byte takes its time on the wire, after the one before it.
         inBusyUntil_ = std::max(inBusyUntil_, now) + byteS();
-        const auto passed = faults_.pass(static_cast<std::uint8_t>(data[i]));
-        if (passed) in_.push_back({inBusyUntil_ + faults_.delayS(), *passed});
+        for (std::uint8_t b : faults_.passAll(static_cast<std::uint8_t>(data[i])))
+            in_.push_back({inBusyUntil_ + faults_.delayS(), b});
     }
     tick();
 }
@@ -128,20 +136,16 @@ void DeviceRunner::tick() {
         firmware_->receive(in_.front().value, in_.front().at);
         answeredAt = in_.front().at;
         in_.pop_front();
-        for (std::uint8_t b : firmware_->takeOutput()) {
-            outBusyUntil_ = std::max(outBusyUntil_, answeredAt) + byteS();
-            out_.push_back({outBusyUntil_, b});
-        }
+        for (std::uint8_t b : firmware_->takeOutput())
+            queueOut(b, answeredAt);
     }
     const double dt = now - lastS_;
     if (dt >= firmware_->tickS() * 0.5) {
         firmware_->step(std::min(dt, 0.05), now);
         lastS_ = now;
     }
-    for (std::uint8_t b : firmware_->takeOutput()) {
-        outBusyUntil_ = std::max(outBusyUntil_, now) + byteS();
-        out_.push_back({outBusyUntil_, b});
-    }
+    for (std::uint8_t b : firmware_->takeOutput())
+        queueOut(b, now);
     std::vector<std::uint8_t> due;
     while (!out_.empty() && out_.front().at <= now) {
         due.push_back(out_.front().value);
@@ -149,6 +153,14 @@ void DeviceRunner::tick() {
     }
     if (!due.empty()) writeOut(due.data(), due.size());
     armForNextByte();
+}
+
+void DeviceRunner::queueOut(std::uint8_t byte, double readyS) {
+    // The answer takes its time on the wire; then the line towards the host may lose,
+    // corrupt, duplicate or delay it (a latency keeps the order).
+    outBusyUntil_ = std::max(outBusyUntil_, readyS) + byteS();
+    for (std::uint8_t b : outFaults_.passAll(byte))
+        out_.push_back({outBusyUntil_ + outFaults_.delayS(), b});
 }
 
 void DeviceRunner::writeOut(const std::uint8_t* data, std::size_t n) {
@@ -169,7 +181,11 @@ void DeviceRunner::writeOut(const std::uint8_t* data, std::size_t n) {
 std::string DeviceRunner::summary() const {
     return firmware_->summary() + "; bytes in " + std::to_string(bytesIn_) + ", out " +
            std::to_string(bytesOut_) + ", corrupted " + std::to_string(faults_.corrupted()) +
-           ", dropped " + std::to_string(faults_.dropped());
+           ", dropped " + std::to_string(faults_.dropped()) + ", duplicated " +
+           std::to_string(faults_.duplicated()) + "; answers corrupted " +
+           std::to_string(outFaults_.corrupted()) + ", dropped " +
+           std::to_string(outFaults_.dropped()) + ", duplicated " +
+           std::to_string(outFaults_.duplicated());
 }
 
 }  // namespace trilho

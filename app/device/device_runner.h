@@ -1,8 +1,9 @@
 #pragma once
 // Runs an emulated board's firmware in real time on a pseudo-terminal or a serial port: bytes
 // are paced at the bit rate in both directions (10 bits a byte, 8N1) unless unpaced, the bytes
-// towards the board pass through the line faults, and the firmware is stepped every
-// millisecond with the time measured.
+// towards the board pass through one set of line faults and the board's answers through
+// another (issue 20 item 10), and the firmware is stepped every millisecond with the time
+// measured.
 #include <QObject>
 #include <QTimer>
 #include <deque>
@@ -19,7 +20,8 @@ namespace trilho {
 struct RunnerSettings {
     int baud = 57600;
     bool unpaced = false;
-    LineFaultSettings faults;
+    LineFaultSettings faults;     ///< towards the board
+    LineFaultSettings outFaults;  ///< towards the host (the board's answers)
 };
 
 class DeviceRunner : public QObject {
@@ -57,6 +59,8 @@ class DeviceRunner : public QObject {
     QSocketNotifier* notifier_ = nullptr;
     RunnerSettings settings_;
     LineFaults faults_;
+    LineFaults outFaults_;
+    void queueOut(std::uint8_t byte, double readyS);
     double startS_ = 0.0;  ///< CLOCK_MONOTONIC at start, s
     int wakeFd_ = -1;      ///< timerfd for the byte-precise wake-ups
     QSocketNotifier* wake_ = nullptr;

@@ -1,7 +1,9 @@
 // trilho-device: the XY boards' firmware, emulated, on a pseudo-terminal or a serial port, so
 // the host code (trilho, trilho-cli) can be run against them with no hardware (issue 12).
 //   trilho-device plotter|table [--pty | --port DEV] [--baud N] [--corrupt P] [--drop P]
-//                 [--corrupt-every N] [--delay-ms N] [--seed N] [--unpaced] [--machine PROFILE]
+//                 [--corrupt-every N] [--duplicate P] [--delay-ms N] [--out-corrupt P]
+//                 [--out-drop P] [--out-duplicate P] [--out-delay-ms N] [--seed N] [--unpaced]
+//                 [--machine PROFILE]
 //                 [--calibration] (table: seed 004's open-loop calibration program)
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -62,6 +64,23 @@ int main(int argc, char* argv[]) {
     const QCommandLineOption delayOpt(QStringLiteral("delay-ms"),
                                       QStringLiteral("Extra delay of every received byte, ms."),
                                       QStringLiteral("N"));
+    const QCommandLineOption dupOpt(
+        QStringLiteral("duplicate"),
+        QStringLiteral("Probability that a received byte arrives twice."), QStringLiteral("P"));
+    const QCommandLineOption outCorruptOpt(
+        QStringLiteral("out-corrupt"),
+        QStringLiteral("Probability that a byte the board sends has a bit flipped."),
+        QStringLiteral("P"));
+    const QCommandLineOption outDropOpt(
+        QStringLiteral("out-drop"),
+        QStringLiteral("Probability that a byte the board sends is lost."), QStringLiteral("P"));
+    const QCommandLineOption outDupOpt(
+        QStringLiteral("out-duplicate"),
+        QStringLiteral("Probability that a byte the board sends arrives twice."),
+        QStringLiteral("P"));
+    const QCommandLineOption outDelayOpt(
+        QStringLiteral("out-delay-ms"),
+        QStringLiteral("Extra delay of every byte the board sends, ms."), QStringLiteral("N"));
     const QCommandLineOption seedOpt(QStringLiteral("seed"),
                                      QStringLiteral("Seed of the line faults (default 1)."),
                                      QStringLiteral("N"));
@@ -74,8 +93,9 @@ int main(int argc, char* argv[]) {
         QStringLiteral("calibration"),
         QStringLiteral("table: run the open-loop calibration program (x at a fixed PWM, the "
                        "encoder count sent LSB then MSB every 32 ms until 1300 pulses)."));
-    parser.addOptions({ptyOpt, portOpt, baudOpt, corruptOpt, everyOpt, dropOpt, delayOpt, seedOpt,
-                       unpacedOpt, machineOpt, calibrationOpt});
+    parser.addOptions({ptyOpt, portOpt, baudOpt, corruptOpt, everyOpt, dropOpt, delayOpt, dupOpt,
+                       outCorruptOpt, outDropOpt, outDupOpt, outDelayOpt, seedOpt, unpacedOpt,
+                       machineOpt, calibrationOpt});
     parser.process(app);
 
     const QStringList args = parser.positionalArguments();
@@ -105,16 +125,23 @@ int main(int argc, char* argv[]) {
         into = v;
         return true;
     };
-    double baud = settings.baud, every = 0, delayMs = 0, seed = 1;
+    double baud = settings.baud, every = 0, delayMs = 0, outDelayMs = 0, seed = 1;
     if (!number(baudOpt, 50, 4000000, baud) ||
         !number(corruptOpt, 0, 1, settings.faults.corruptP) ||
         !number(dropOpt, 0, 1, settings.faults.dropP) || !number(everyOpt, 0, 1e9, every) ||
-        !number(delayOpt, 0, 60000, delayMs) || !number(seedOpt, 0, 9e15, seed))
+        !number(delayOpt, 0, 60000, delayMs) || !number(dupOpt, 0, 1, settings.faults.duplicateP) ||
+        !number(outCorruptOpt, 0, 1, settings.outFaults.corruptP) ||
+        !number(outDropOpt, 0, 1, settings.outFaults.dropP) ||
+        !number(outDupOpt, 0, 1, settings.outFaults.duplicateP) ||
+        !number(outDelayOpt, 0, 60000, outDelayMs) || !number(seedOpt, 0, 9e15, seed))
         return 2;
     settings.baud = static_cast<int>(baud);
     settings.faults.corruptEvery = static_cast<unsigned>(every);
     settings.faults.delayS = delayMs / 1000.0;
     settings.faults.seed = static_cast<std::uint64_t>(seed);
+    // The answers' line loses other bytes than the board's: its own seed.
+    settings.outFaults.delayS = outDelayMs / 1000.0;
+    settings.outFaults.seed = settings.faults.seed + 1000;
     settings.unpaced = parser.isSet(unpacedOpt);
 
     MachineProfile profile = board == QLatin1String("plotter") ? MachineProfile::xyPlotter()

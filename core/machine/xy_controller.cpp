@@ -242,7 +242,8 @@ void XyController::checkMotionFault() {
             holdFrom_ = status_.state;
             status_.pause = PauseReason::Hold;
             setState(ControllerState::Paused);
-            post(EventKind::Paused, status_.blockN);
+            // No Paused event: its line is "Program paused by the operator." (issue 20 item
+            // 12); the link's warning above says what happened and that the run is held.
         }
         return;
     }

@@ -71,19 +71,23 @@ void PlotterHost::plot(const std::vector<PlotPoint>& drawing) {
 
 void PlotterHost::receive(std::uint8_t byte, double nowS) {
     if (failed_ || !inFlight_) {
-        ++stats_.unexpected;
+        if (owes(byte)) {
+            --owed_[byte];
+            ++stats_.late;
+        } else {
+            ++stats_.unexpected;
+        }
         return;
     }
     if (byte == current_.expect) {
-        inFlight_ = false;
-        timeouts_ = 0;
-        resends_ = 0;
-        if (current_.endsObject) ++objectsDone_;
-        poll(nowS);
+        accept(nowS);
         return;
     }
     if (byte == static_cast<std::uint8_t>(plotter_wire::Reply::Resend)) {
         ++stats_.resends;
+        // With nothing owed this RESEND answers a copy of this packet; otherwise it may be the
+        // late answer to an older one, so the copy it may answer is still counted as owed.
+        if (!owesAny()) ++copiesAnswered_;
         if (++resends_ > config_.maxResends) {
             fail("the plotter asked " + std::to_string(resends_ - 1) + " times to resend " +
                  std::string(plotter_wire::commandName(static_cast<Command>(current_.packet[0]))) +
@@ -93,7 +97,33 @@ void PlotterHost::receive(std::uint8_t byte, double nowS) {
         send(nowS);
         return;
     }
+    if (owes(byte)) {
+        --owed_[byte];  // a late answer to a packet already answered
+        ++stats_.late;
+        return;
+    }
     ++stats_.unexpected;  // not an answer to this packet: the deadline decides
+}
+
+void PlotterHost::accept(double nowS) {
+    const std::uint8_t e = current_.expect;
+    // Copies of this packet whose answers may still come (each copy is answered once).
+    const int more = std::max(0, copies_ - 1 - copiesAnswered_);
+    if (owes(e)) {
+        // Only a REQUEST is sent while its answer is owed (it asks nothing but "are you
+        // there?"): this may be the late one, so its own copies are all still owed.
+        owed_[e] += copies_ - 1;
+    } else {
+        // Not owed: the answer to this packet. Answers come in the order the packets went, so
+        // every answer to a packet sent before this one has come or is lost.
+        owed_.fill(0);
+        owed_[e] = more;
+    }
+    inFlight_ = false;
+    timeouts_ = 0;
+    resends_ = 0;
+    if (current_.endsObject) ++objectsDone_;
+    poll(nowS);
 }
 
 void PlotterHost::poll(double nowS) {
@@ -104,21 +134,44 @@ void PlotterHost::poll(double nowS) {
         if (++timeouts_ > config_.maxTimeouts) {
             fail("no answer from the plotter to " +
                  std::string(plotter_wire::commandName(static_cast<Command>(current_.packet[0]))) +
-                 " after " + std::to_string(timeouts_) + " tries: is it connected and on?");
+                 " after " + std::to_string(timeouts_) +
+                 " tries: is it connected and on? (what it did with them is not known)");
             return;
         }
         send(nowS);
         return;
     }
     if (queue_.empty()) return;
-    current_ = queue_.front();
-    queue_.pop_front();
+    const Item& next = queue_.front();
+    const auto requestOk = static_cast<std::uint8_t>(plotter_wire::Reply::RequestOk);
+    if (owes(next.expect) && next.expect != requestOk) {
+        // A late answer to an earlier packet could be taken for this one's: flush first.
+        if (owes(requestOk)) {
+            unknown_ = true;
+            fail(
+                "answers from the plotter came after their deadline and the next ones cannot "
+                "be told from them: what the plotter stored is not known");
+            return;
+        }
+        current_ = {plotter_wire::encode(Command::Request),
+                    requestOk,
+                    config_.answerTimeoutS,
+                    -1,
+                    false,
+                    true};
+        ++stats_.barriers;
+    } else {
+        current_ = next;
+        queue_.pop_front();
+    }
+    copies_ = copiesAnswered_ = 0;
     send(nowS);
 }
 
 void PlotterHost::send(double nowS) {
     out_.insert(out_.end(), current_.packet.begin(), current_.packet.end());
     ++stats_.packetsSent;
+    ++copies_;
     deadline_ = nowS + current_.waitS;
     inFlight_ = true;
 }
@@ -132,14 +185,20 @@ std::vector<std::uint8_t> PlotterHost::takeOutput() {
 void PlotterHost::fail(std::string why) {
     failed_ = true;
     error_ = std::move(why);
-    // Keep the place: the packet in flight goes back to the front of the queue.
-    if (inFlight_) queue_.push_front(current_);
+    if (inFlight_) {
+        // Its copies may still be answered, late.
+        owed_[current_.expect] += std::max(0, copies_ - copiesAnswered_);
+        // Keep the place: the packet in flight goes back to the front of the queue (a barrier
+        // is no job: the packet that needed it is still there).
+        if (!current_.barrier) queue_.push_front(current_);
+    }
     inFlight_ = false;
 }
 
 void PlotterHost::retry() {
     if (!failed_) return;
     failed_ = false;
+    unknown_ = false;
     error_.clear();
     timeouts_ = resends_ = 0;
     // The unfinished object again from its start: its stored points were lost with the device.
@@ -150,7 +209,7 @@ void PlotterHost::retry() {
     std::deque<Item> head;
     auto front = [&](Command c, std::uint16_t x = 0, std::uint16_t y = 0, double waitS = 0.0) {
         head.push_back({plotter_wire::encode(c, x, y), plotter_wire::expectedReply(c),
-                        waitS > 0.0 ? waitS : config_.answerTimeoutS, -1, false});
+                        waitS > 0.0 ? waitS : config_.answerTimeoutS, -1, false, false});
     };
     // A re-plugged Arduino restarts: it must answer again, find its origin (steppers have no
     // position of their own) and be told the speed.
@@ -168,9 +227,12 @@ void PlotterHost::retry() {
 }
 
 void PlotterHost::clear() {
+    // A packet in flight may still be answered: its answers are owed.
+    if (inFlight_) owed_[current_.expect] += std::max(0, copies_ - copiesAnswered_);
     queue_.clear();
     inFlight_ = false;
     failed_ = false;
+    unknown_ = false;
     error_.clear();
     objects_.clear();
     objectEnds_.clear();

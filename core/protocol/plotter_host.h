@@ -5,6 +5,16 @@
 // for its one-byte answer. RESEND sends the same packet again (bounded); no answer in time
 // sends it again (bounded); then the host fails with a plain reason and keeps its place, so
 // retry() after a re-plug goes on with the object that was not finished.
+//
+// Late answers (issue 20 item 10). The seed's answers do not say which packet they answer, so
+// a packet sent twice (its deadline passed, or the plotter asked RESEND) may be answered twice,
+// the second time while a later packet waits for the same byte (NEXT after NEXT). The host
+// counts, for each answer byte, the answers that may still come (owed); the bytes come back in
+// the order the packets went, so an answer it can attribute settles everything sent before.
+// Before a packet whose answer is owed, the host sends REQUEST and waits for REQUEST_OK, which
+// no owed answer can be: every late answer has then come or is lost (a barrier). If REQUEST_OK
+// itself is owed then, the host cannot tell, and fails saying so (stateUnknown()).
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <optional>
@@ -38,6 +48,8 @@ struct PlotterHostStats {
     std::uint64_t resends = 0;      ///< RESENDs answered
     std::uint64_t timeouts = 0;     ///< answers that did not come in time
     std::uint64_t unexpected = 0;   ///< bytes that answered nothing we asked
+    std::uint64_t late = 0;         ///< owed answers that came late (ignored)
+    std::uint64_t barriers = 0;     ///< REQUESTs sent to flush owed answers
 };
 
 class PlotterHost {
@@ -64,6 +76,9 @@ class PlotterHost {
     // ---- state ----
     bool idle() const { return !failed_ && !inFlight_ && queue_.empty(); }
     bool failed() const { return failed_; }
+    /// Failed because an answer could not be told from a late one: what the plotter stored is
+    /// not known (retry() still works after a re-plug, which empties the plotter).
+    bool stateUnknown() const { return failed_ && unknown_; }
     const std::string& error() const { return error_; }
     const PlotterHostStats& stats() const { return stats_; }
     std::size_t objectsDone() const { return objectsDone_; }
@@ -87,11 +102,20 @@ class PlotterHost {
         double waitS;     ///< answer deadline after sending
         int object = -1;  ///< the object this packet belongs to (-1: none)
         bool endsObject = false;
+        bool barrier = false;  ///< a REQUEST sent to flush owed answers (not a job)
     };
     void push(plotter_wire::Command c, std::uint16_t x = 0, std::uint16_t y = 0, double waitS = 0.0,
               int object = -1, bool endsObject = false);
     void send(double nowS);
+    void accept(double nowS);
     void fail(std::string why);
+    /// The answers owed to packets already answered (or abandoned): bytes that may still come.
+    bool owes(std::uint8_t byte) const { return owed_[byte] > 0; }
+    bool owesAny() const {
+        for (int n : owed_)
+            if (n > 0) return true;
+        return false;
+    }
 
     PlotterHostConfig config_;
     std::deque<Item> queue_;
@@ -101,7 +125,11 @@ class PlotterHost {
     double deadline_ = 0.0;
     int timeouts_ = 0;
     int resends_ = 0;
+    int copies_ = 0;               ///< copies of the packet in flight sent
+    int copiesAnswered_ = 0;       ///< of them, answered RESEND for certain
+    std::array<int, 256> owed_{};  ///< per answer byte, the late answers that may still come
     bool failed_ = false;
+    bool unknown_ = false;
     std::string error_;
     PlotterHostStats stats_;
     std::size_t objectsDone_ = 0, objectCount_ = 0;

@@ -2,9 +2,17 @@
 // The PC side of the DC table's protocol (xy.md B, seed 004, and the one-byte answer of
 // docs/protocols.md B) as a plain state machine: bytes in, bytes out, time passed in, so it is
 // tested without a port and the same code drives a real ATmega128 or the emulator. Set points
-// are queued and sent one at a time; each waits for its answer: ACK -> the next; NAK or CAN ->
-// the host fails with a plain reason and keeps its place; no answer in time -> the same set
-// point again (idempotent: a table already there answers ACK at once), bounded, then failure.
+// are queued and sent one at a time; each waits for its answer, which names the set point it
+// answers (issue 20 item 10): ACK of this set point -> the next; NAK or CAN of it -> the host
+// fails with a plain reason and keeps its place; no answer in time -> the same set point again
+// (idempotent: a table already there answers ACK at once), bounded, then failure. An answer
+// naming the set point before (a late answer to a repeat) is ignored; a NAK naming a set point
+// never sent (line noise changed it on the way: nothing moved) sends it again, bounded; an ACK
+// or CAN naming one never sent, or an ACK whose move started from a set point the host did not
+// hear answered, means the table moved where the program did not ask: the host fails and
+// offPath() says so. A set point sent more than once may still have a copy on its way, which
+// noise could change: when it is the last, the host sends it once more (a check, with a long
+// deadline) and is idle only when a check sent once comes back from it.
 #include <cstdint>
 #include <deque>
 #include <optional>
@@ -22,13 +30,18 @@ struct TableHostConfig {
     double answerTimeoutS = 2.0;
     double vmaxMmS = 150.0;  ///< the profile's rapid speed, mm/s (each axis)
     int maxTimeouts = 3;     ///< repeats after a timeout; then fail
+    int maxGarbled = 10;     ///< repeats after a NAK of a set point changed on the way; then fail
+    double checkTimeoutS = 10.0;  ///< the check's deadline, s: long, so that it goes once
 };
 
 struct TableHostStats {
     std::uint64_t sent = 0;          ///< set points sent, repeats included
     std::uint64_t acknowledged = 0;  ///< ACKs
     std::uint64_t timeouts = 0;      ///< answers that did not come in time
-    std::uint64_t unexpected = 0;    ///< bytes that answered nothing asked (ignored)
+    std::uint64_t unexpected = 0;    ///< answers to nothing asked, noise bytes (ignored)
+    std::uint64_t late = 0;          ///< answers to a set point already answered (ignored)
+    std::uint64_t garbled = 0;       ///< set points the table received changed (NAK: sent again)
+    std::uint64_t checks = 0;        ///< checks sent after a repeated last set point
 };
 
 class TableHost {
@@ -48,12 +61,15 @@ class TableHost {
     std::vector<std::uint8_t> takeOutput();
 
     // ---- state ----
-    bool idle() const { return !failed_ && !inFlight_ && queue_.empty(); }
+    bool idle() const { return !failed_ && !inFlight_ && queue_.empty() && !needCheck_; }
     bool inFlight() const { return inFlight_; }
     bool failed() const { return failed_; }
     const std::string& error() const { return error_; }
     const TableHostStats& stats() const { return stats_; }
     std::size_t queued() const { return queue_.size(); }
+    /// The table ran a set point the program did not ask (line noise changed it on the way):
+    /// failed() too, and retry() does not clear it; the run cannot go on as if nothing happened.
+    bool offPath() const { return offPath_; }
     /// The last set point the table acknowledged (nullopt before the first ACK).
     std::optional<table_wire::SetPointMm> reached() const { return reached_; }
     /// After failed(): the set point that was not finished is sent again, then the rest.
@@ -68,6 +84,7 @@ class TableHost {
     void clear();
 
   private:
+    void answered(const table_wire::DecodedAnswer& a, double nowS);
     void send(double nowS);
     void fail(std::string why);
     double waitFor(const table_wire::SetPointMm& from, const table_wire::SetPointMm& to) const;
@@ -80,7 +97,18 @@ class TableHost {
     table_wire::SetPointMm current_{};
     double deadline_ = 0.0;
     int timeouts_ = 0;
+    int garbled_ = 0;
+    int copies_ = 0;          ///< copies of the set point in flight sent
+    bool checking_ = false;   ///< the set point in flight is a check
+    bool needCheck_ = false;  ///< the last set point went more than once: check it
+    int checks_ = 0;          ///< checks in a row that went more than once
     bool failed_ = false;
+    bool offPath_ = false;
+    table_wire::AnswerDecoder decoder_;
+    /// A set point whose answers may still come though it was answered or abandoned: a repeat
+    /// of it (after a deadline) is answered too. Answers come in the order the set points
+    /// went, so once the set point after it is answered, none of it can come any more.
+    std::optional<table_wire::SetPointMm> mayStillAnswer_;
     std::string error_;
     TableHostStats stats_;
     /// Where the table stands for the deadline: the last ACK; before it, the origin, where

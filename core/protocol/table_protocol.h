@@ -3,10 +3,16 @@
 // as 4 bytes, hiX loX hiY loY, in whole millimetres (16 bits each). The open-loop calibration
 // program sends the encoder count as 2 bytes, LSB then MSB, every 32 ms.
 //
-// The seed is silent on how the PC learns that a move is done. The smallest extension, and
-// the one trilho's emulator follows (docs/protocols.md): after each set point the board sends
-// one byte: ACK (0x06) when both axes are in position, NAK (0x15) when the set point is
-// outside the table and was not run, CAN (0x18) when an over-current input cut a drive.
+// The seed is silent on how the PC learns that a move is done. trilho's extension, which its
+// emulator follows (docs/protocols.md B): after each set point the board sends an answer of 6
+// bytes: the code (ACK 0x06 when both axes are in position, NAK 0x15 when the set point is
+// outside the table and was not run, CAN 0x18 when an over-current input cut a drive), the
+// set point as the board received it (hiX loX hiY loY), the set point it ran before (where
+// this move started, hiX loX hiY loY; (0, 0) after power-on) and a checksum (the sum of the
+// nine bytes kept in one byte, as the plotter's packets): 10 bytes. The echo matches each
+// answer to the set point it answers (issue 20 item 10: a one-byte answer that came late was
+// taken for the next set point's) and shows a set point that line noise changed on the way;
+// the set point before shows a move the host never heard of (its answer was lost).
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -19,6 +25,8 @@ inline constexpr std::uint8_t kCan = 0x18;            ///< over-current: the dri
 inline constexpr double kCalibrationPeriodS = 0.032;  ///< seed 004: one count every 32 ms
 
 using SetPoint = std::array<std::uint8_t, 4>;
+inline constexpr std::size_t kAnswerBytes = 10;
+using Answer = std::array<std::uint8_t, kAnswerBytes>;
 
 constexpr SetPoint encodeSetPoint(std::uint16_t xMm, std::uint16_t yMm) {
     return {static_cast<std::uint8_t>(xMm >> 8), static_cast<std::uint8_t>(xMm & 0xFF),
@@ -33,6 +41,76 @@ constexpr SetPointMm decodeSetPoint(const SetPoint& b) {
     return {static_cast<std::uint16_t>((b[0] << 8) | b[1]),
             static_cast<std::uint16_t>((b[2] << 8) | b[3])};
 }
+
+constexpr bool isAnswerCode(std::uint8_t b) {
+    return b == kAck || b == kNak || b == kCan;
+}
+
+/// code, the set point received, the set point run before it, checksum (the sum of the nine
+/// bytes, mod 256).
+constexpr Answer encodeAnswer(std::uint8_t code, const SetPoint& received, const SetPoint& before) {
+    Answer a{code,      received[0], received[1], received[2], received[3],
+             before[0], before[1],   before[2],   before[3],   0};
+    unsigned sum = 0;
+    for (std::size_t i = 0; i + 1 < kAnswerBytes; ++i)
+        sum += a[i];
+    a[kAnswerBytes - 1] = static_cast<std::uint8_t>(sum & 0xFFu);
+    return a;
+}
+
+struct DecodedAnswer {
+    std::uint8_t code;
+    SetPointMm setPoint;  ///< the set point as the board received it
+    SetPointMm before;    ///< the set point it ran before (this move's start)
+};
+
+/// Frames the board's answers from the bytes as they come: a frame starts with a code byte
+/// and checks; a byte that cannot start one, or a frame that does not check, is dropped one
+/// byte at a time (the next code byte may start the real frame); a partial frame older than
+/// gapS is dropped (ten bytes take 10 ms at 9600 bit/s: a gap means one was lost).
+class AnswerDecoder {
+  public:
+    explicit AnswerDecoder(double gapS = 0.05) : gapS_(gapS) {}
+    std::optional<DecodedAnswer> feed(std::uint8_t byte, double tS) {
+        if (have_ > 0 && tS - lastT_ > gapS_) {
+            discarded_ += have_;
+            have_ = 0;
+        }
+        lastT_ = tS;
+        buf_[have_++] = byte;
+        for (;;) {
+            // Drop leading bytes that cannot start a frame.
+            std::size_t skip = 0;
+            while (skip < have_ && !isAnswerCode(buf_[skip]))
+                ++skip;
+            shift(skip);
+            if (have_ < kAnswerBytes) return std::nullopt;
+            const Answer a = buf_;
+            if (encodeAnswer(a[0], {a[1], a[2], a[3], a[4]}, {a[5], a[6], a[7], a[8]})[9] == a[9]) {
+                have_ = 0;
+                return DecodedAnswer{a[0], decodeSetPoint({a[1], a[2], a[3], a[4]}),
+                                     decodeSetPoint({a[5], a[6], a[7], a[8]})};
+            }
+            shift(1);  // not a frame: its first byte was noise or the tail of a lost one
+        }
+    }
+    /// Bytes that were not part of a frame (noise, the rest of a broken answer).
+    std::uint64_t discarded() const { return discarded_; }
+
+  private:
+    void shift(std::size_t n) {
+        if (n == 0) return;
+        for (std::size_t i = n; i < have_; ++i)
+            buf_[i - n] = buf_[i];
+        have_ -= n;
+        discarded_ += n;
+    }
+    double gapS_;
+    Answer buf_{};
+    std::size_t have_ = 0;
+    double lastT_ = 0.0;
+    std::uint64_t discarded_ = 0;
+};
 
 /// Reassembles the calibration stream: LSB then MSB. The stream has no framing, so pairs are
 /// told apart by time: the two bytes of a count arrive back to back (about 1 ms at 9600

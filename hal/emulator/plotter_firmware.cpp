@@ -104,6 +104,7 @@ void PlotterFirmware::startNextPoint() {
         return;
     }
     const plotter_wire::Decoded& p = object_[next_++];
+    plotted_.push_back({p.command == Command::Line, p.x, p.y});
     const XyPoint target = motion_.toMm({p.x, p.y});
     motion_.beginMove(target, p.command == Command::Line ? XyMove::Draw : XyMove::Travel,
                       std::min(1.0, speed_ / maxRate));

@@ -26,6 +26,15 @@ struct PlotterFirmwareStats {
     std::uint64_t objectsPlotted = 0;
 };
 
+/// One point the board plotted, in the order it plotted them (its trace, for the tests that
+/// compare what the board drew with what the program asked): pen down (LINE) or up (MOVE) to
+/// (x, y) steps.
+struct PlottedPoint {
+    bool draw = false;
+    std::uint16_t x = 0, y = 0;
+    bool operator==(const PlottedPoint&) const = default;
+};
+
 class PlotterFirmware final : public DeviceFirmware {
   public:
     /// Bytes of one packet must follow each other within this gap, s: at 57600 bit/s six bytes
@@ -45,6 +54,8 @@ class PlotterFirmware final : public DeviceFirmware {
     SimPlotter& plotter() { return plotter_; }
     PlotterMotion& motion() { return motion_; }
     std::uint16_t speed() const { return speed_; }
+    /// Every point the board began to plot, in order (stored points plotted on END).
+    const std::vector<PlottedPoint>& plotted() const { return plotted_; }
     /// The period the loop should be stepped at, s.
     static constexpr double kTickS = 0.001;
 
@@ -67,6 +78,7 @@ class PlotterFirmware final : public DeviceFirmware {
     std::uint8_t pendingAnswer_ = 0;  ///< sent when the motion ends
     std::uint16_t speed_;
     PlotterFirmwareStats stats_;
+    std::vector<PlottedPoint> plotted_;
 };
 
 }  // namespace trilho

@@ -54,12 +54,25 @@ void TableFirmware::handle(const table_wire::SetPoint& bytes) {
     }
     if (!inside(sp.x, sp.y)) {
         ++stats_.refused;
-        out_.push_back(table_wire::kNak);  // nothing moves
+        answer(table_wire::kNak, sp, lastRun_);  // nothing moves
         return;
     }
     running_ = sp;
+    runningFrom_ = lastRun_;
+    lastRun_ = sp;
     moving_ = true;
+    ran_.push_back(sp);
     motion_.beginMove({static_cast<double>(sp.x), static_cast<double>(sp.y)}, XyMove::Travel, 1.0);
+}
+
+void TableFirmware::answer(std::uint8_t code, const table_wire::SetPointMm& sp,
+                           const table_wire::SetPointMm& before) {
+    // docs/protocols.md B: the code, the set point as received, the one run before, a checksum.
+    const table_wire::Answer a =
+        table_wire::encodeAnswer(code, table_wire::encodeSetPoint(sp.x, sp.y),
+                                 table_wire::encodeSetPoint(before.x, before.y));
+    out_.insert(out_.end(), a.begin(), a.end());
+    ++stats_.answers;
 }
 
 void TableFirmware::loopTick() {
@@ -74,14 +87,14 @@ void TableFirmware::loopTick() {
             moving_ = false;
             stats_.lastCut = why;
             ++stats_.cut;
-            out_.push_back(table_wire::kCan);
+            answer(table_wire::kCan, running_, runningFrom_);
         }
         return;
     }
     if (moving_ && !motion_.busy()) {
         moving_ = false;
         ++stats_.reached;
-        out_.push_back(table_wire::kAck);
+        answer(table_wire::kAck, running_, runningFrom_);
     }
 }
 

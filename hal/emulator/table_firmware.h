@@ -1,12 +1,13 @@
 #pragma once
 // Seed 004's ATmega128 firmware (xy.md B, annex 7), emulated: the main program receives a set
 // point as 4 bytes (hiX loX hiY loY, whole mm), plans the synchronized trapezoid and runs the
-// per-axis loop every 5 ms until both axes are in position, then answers with one byte (the
-// extension of docs/protocols.md B: ACK in position, NAK outside the table, CAN when an
-// over-current cut the drives). The open-loop calibration program drives one axis at a fixed
-// PWM and sends its encoder count, LSB then MSB, every 32 ms until 1300 pulses. It runs the
-// core's DcTableMotion on SimDcTable: the same planner, loops and plant as in-process runs,
-// not copies. Plain and steppable: bytes in, bytes out, time passed in.
+// per-axis loop every 5 ms until both axes are in position, then answers (the extension of
+// docs/protocols.md B: ACK in position, NAK outside the table, CAN when an over-current cut
+// the drives; each followed by the set point as received, the one run before it and a
+// checksum). The open-loop calibration
+// program drives one axis at a fixed PWM and sends its encoder count, LSB then MSB, every 32 ms
+// until 1300 pulses. It runs the core's DcTableMotion on SimDcTable: the same planner, loops and
+// plant as in-process runs, not copies. Plain and steppable: bytes in, bytes out, time passed in.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -27,6 +28,7 @@ struct TableFirmwareStats {
     std::uint64_t staleBytes = 0;         ///< partial set points dropped for a gap in the bytes
     std::uint64_t ignoredMoving = 0;      ///< set points that completed during a move (dropped)
     std::uint64_t countsSent = 0;         ///< calibration counts sent (2 bytes each)
+    std::uint64_t answers = 0;            ///< answers sent (6 bytes each: ACK, NAK or CAN)
     AlarmCode lastCut = AlarmCode::None;  ///< the alarm behind the last CAN
 };
 
@@ -68,6 +70,9 @@ class TableFirmware final : public DeviceFirmware {
     SimDcTable& table() { return table_; }
     DcTableMotion& motion() { return motion_; }
     bool moving() const { return moving_; }
+    /// Every set point the board began to run, in order (its trace, for the tests that compare
+    /// where the table went with what the program asked).
+    const std::vector<table_wire::SetPointMm>& ran() const { return ran_; }
     /// The calibration's pulse count (pulsos) and whether it stopped the motor at 1300.
     std::uint16_t calibrationCount() const { return pulses_; }
     bool calibrationDone() const { return calibrationDone_; }
@@ -75,6 +80,8 @@ class TableFirmware final : public DeviceFirmware {
   private:
     void handle(const table_wire::SetPoint& bytes);
     void loopTick();
+    void answer(std::uint8_t code, const table_wire::SetPointMm& sp,
+                const table_wire::SetPointMm& before);
     void calibrationTick();
     bool inside(double xMm, double yMm) const;
 
@@ -88,6 +95,8 @@ class TableFirmware final : public DeviceFirmware {
     double lastByteS_ = 0.0;
     bool moving_ = false;
     table_wire::SetPointMm running_{};
+    table_wire::SetPointMm runningFrom_{};  ///< the set point run before running_
+    table_wire::SetPointMm lastRun_{};      ///< the last set point started ((0, 0) at power-on)
     // Board time: the plant is advanced from event to event (the 5 ms loop, the 32 ms stream),
     // so both run on exact instants whatever step() is called with.
     double clockS_ = 0.0;    ///< board time the plant has reached, s
@@ -100,6 +109,7 @@ class TableFirmware final : public DeviceFirmware {
     std::uint16_t pulses_ = 0;
     bool calibrationDone_ = false;
     TableFirmwareStats stats_;
+    std::vector<table_wire::SetPointMm> ran_;
 };
 
 }  // namespace trilho

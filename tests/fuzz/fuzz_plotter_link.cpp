@@ -3,7 +3,8 @@
 // either side, time steps (short, and long silences that fire the deadlines) and host jobs.
 // Invariants: no crash; a host call writes nothing or one whole valid packet and sends at most
 // one (one packet in flight); a failed host says why; the firmware answers at most one byte
-// for each byte it received (one a packet, or one RESEND after a partial).
+// for each byte it received (one a packet, or one RESEND after a partial); a barrier that
+// flushes late answers is a REQUEST; an unknown state is a failure.
 #include <cstdint>
 #include <vector>
 
@@ -20,7 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     PlotterFirmware device(profile, 1);
     PlotterHost host;
     double t = 0.0;
-    std::uint64_t deviceIn = 0, deviceOut = 0;
+    std::uint64_t deviceIn = 0, deviceOut = 0, barriers = 0;
 
     auto toDevice = [&](std::uint8_t b) {
         ++deviceIn;
@@ -39,6 +40,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             FUZZ_CHECK(plotter_wire::decode(p).has_value());
         }
         FUZZ_CHECK(host.failed() == !host.error().empty());
+        FUZZ_CHECK(!host.stateUnknown() || host.failed());
+        // A barrier (issue 20 item 10) is a REQUEST: the host never sends a packet that moves
+        // the head to flush late answers.
+        if (host.stats().barriers > barriers) {
+            FUZZ_CHECK(out.empty() || out[0] == static_cast<std::uint8_t>(Command::Request));
+            barriers = host.stats().barriers;
+        }
         for (std::uint8_t b : out)
             toDevice(b);
     };

@@ -3,9 +3,11 @@
 // every byte towards the host also feeds an EncoderStreamDecoder; the input is a script of
 // bytes injected towards either side, time steps, silences, set points, retry/clear and jams.
 // Invariants: no crash; a host call writes nothing or one whole set point and sends at most one
-// (one in flight); a failed host says why; the firmware answers at most once a set point (set
-// points), or sends at most two bytes every 32 ms (calibration); the decoder gives at most one
-// count for two bytes.
+// (one in flight); a failed host says why; the firmware answers at most once a set point, 10
+// bytes an answer (set points), or sends at most two bytes every 32 ms (calibration); the
+// decoder gives at most one count for two bytes; the host takes no more answers than the
+// board sent plus the frames the noise could hold, and off the path is a failure (issue 20
+// item 10).
 #include <cstdint>
 #include <vector>
 
@@ -36,6 +38,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         FUZZ_CHECK(out.size() == 4 * sent);
         FUZZ_CHECK(host.failed() == !host.error().empty());
         FUZZ_CHECK(!(host.inFlight() && host.idle()));
+        FUZZ_CHECK(!host.offPath() || host.failed());
         for (std::uint8_t b : out)
             device.receive(b, t);
     };
@@ -60,8 +63,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             FUZZ_CHECK(static_cast<double>(s.countsSent) <=
                        deviceS / table_wire::kCalibrationPeriodS + 1.0);
         } else {
-            FUZZ_CHECK(deviceOut == s.reached + s.refused + s.cut);
-            FUZZ_CHECK(deviceOut <= s.setPoints);
+            FUZZ_CHECK(deviceOut == table_wire::kAnswerBytes * (s.reached + s.refused + s.cut));
+            FUZZ_CHECK(s.answers == s.reached + s.refused + s.cut);
+            FUZZ_CHECK(s.answers <= s.setPoints);
         }
     };
     auto stepDevice = [&](double dt) {

@@ -138,8 +138,33 @@ TEST(DeviceLink, DroppedBytesCostTimeNotTheResult) {
     EXPECT_DOUBLE_EQ(axis(r, "x"), 36.6);
     EXPECT_DOUBLE_EQ(axis(r, "y"), 20.2);
     const QString said = d.stop();
-    EXPECT_FALSE(said.contains(QStringLiteral("dropped 0"))) << said.toStdString();
+    // Bytes towards the board were dropped (the answers' own counters follow: none dropped).
+    EXPECT_TRUE(
+        said.contains(QRegularExpression(QStringLiteral("; bytes in \\d+, out \\d+, "
+                                                        "corrupted 0, dropped [1-9]"))))
+        << said.toStdString();
     EXPECT_TRUE(said.contains(QStringLiteral("objects plotted 5"))) << said.toStdString();
+}
+
+// Issue 20 item 10: the board's answers corrupted, lost and duplicated on their way back.
+// Either the square ends where it should with the five moves plotted, or the run ends on the
+// link's alarm saying why; never a success the board did not make.
+TEST(DeviceLink, AnswersCorruptedLostAndDuplicatedEndRightOrSayWhy) {
+    Device d({QStringLiteral("--out-corrupt"), QStringLiteral("0.1"), QStringLiteral("--out-drop"),
+              QStringLiteral("0.03"), QStringLiteral("--out-duplicate"), QStringLiteral("0.05"),
+              QStringLiteral("--seed"), QStringLiteral("3")});
+    ASSERT_FALSE(d.path.isEmpty());
+    const LinkRun r = runOn(d.path, kSquare);
+    const QString said = d.stop();
+    EXPECT_FALSE(said.contains(QStringLiteral("answers corrupted 0,"))) << said.toStdString();
+    if (r.exit == 0) {
+        EXPECT_DOUBLE_EQ(axis(r, "x"), 36.6);
+        EXPECT_DOUBLE_EQ(axis(r, "y"), 20.2);
+        EXPECT_TRUE(said.contains(QStringLiteral("objects plotted 5"))) << said.toStdString();
+    } else {
+        EXPECT_EQ(r.exit, 3);
+        EXPECT_TRUE(r.err.contains(QStringLiteral("plotter"))) << r.err.toStdString();
+    }
 }
 
 TEST(DeviceLink, ThroughSocatInBetween) {

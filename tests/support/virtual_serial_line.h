@@ -1,7 +1,9 @@
 #pragma once
 // A serial line in virtual time between a host and a device emulator: each byte takes its
-// time on the wire (10 bits at the bit rate, 8N1) in order, and the bytes towards the device
-// pass through LineFaults (corrupted, dropped). Used to test the protocols without a port.
+// time on the wire (10 bits at the bit rate, 8N1) in order, plus a fixed latency (delayS, a
+// slow USB adapter or a radio link: bytes stay in order, they only come late). Faults
+// (corrupted, dropped, duplicated bytes) are LineFaults, applied by the caller on either side.
+// Used to test the protocols without a port.
 #include <cstdint>
 #include <deque>
 #include <optional>
@@ -13,11 +15,12 @@ namespace trilho::test {
 
 class VirtualWire {
   public:
-    explicit VirtualWire(double baud) : byteS_(10.0 / baud) {}
+    /// baud: bit/s; delayS: latency added to every byte, s (0: none).
+    explicit VirtualWire(double baud, double delayS = 0.0) : byteS_(10.0 / baud), delayS_(delayS) {}
     void send(const std::vector<std::uint8_t>& bytes, double nowS) {
         for (std::uint8_t b : bytes) {
             busyUntil_ = std::max(busyUntil_, nowS) + byteS_;
-            queue_.push_back({busyUntil_, b});
+            queue_.push_back({busyUntil_ + delayS_, b});
         }
     }
     /// The bytes that arrived by nowS, with their arrival times.
@@ -37,6 +40,7 @@ class VirtualWire {
         std::uint8_t value;
     };
     double byteS_;
+    double delayS_;
     double busyUntil_ = 0.0;
     std::deque<Byte> queue_;
     std::uint64_t carried_ = 0;

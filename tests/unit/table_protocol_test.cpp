@@ -35,11 +35,24 @@ TEST(TableWire, CalibrationStreamPairsByTime) {
 }
 
 namespace {
+/// The board's answer to sp (code, the set point as received, checksum), fed to the host.
+/// before: the set point the board ran before it (where the move started).
+void answerWith(TableHost& host, std::uint8_t code, const SetPoint& sp, const SetPoint& before,
+                double t) {
+    for (std::uint8_t b : encodeAnswer(code, sp, before))
+        host.receive(b, t);
+}
+void answerWith(TableHost& host, std::uint8_t code, std::uint16_t x, std::uint16_t y, double t,
+                std::uint16_t fromX = 0, std::uint16_t fromY = 0) {
+    answerWith(host, code, encodeSetPoint(x, y), encodeSetPoint(fromX, fromY), t);
+}
+
 /// A table that answers each complete set point through `answer` (nullopt: stays silent).
 struct ScriptedTable {
     std::function<std::optional<std::uint8_t>(const SetPointMm&)> answer;
     std::vector<SetPoint> received;
     std::vector<std::uint8_t> partial;
+    SetPoint lastRun{0, 0, 0, 0};
 
     void feed(TableHost& host, double t) {
         for (std::uint8_t b : host.takeOutput()) {
@@ -48,7 +61,11 @@ struct ScriptedTable {
                 SetPoint p{partial[0], partial[1], partial[2], partial[3]};
                 partial.clear();
                 received.push_back(p);
-                if (auto a = answer(decodeSetPoint(p))) host.receive(*a, t);
+                if (auto a = answer(decodeSetPoint(p))) {
+                    const SetPoint before = lastRun;
+                    if (*a != kNak) lastRun = p;
+                    answerWith(host, *a, p, before, t);
+                }
             }
         }
     }
@@ -76,9 +93,9 @@ TEST(TableHost, GoldenBytesOneSetPointInFlight) {
     EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 100, 0, 50}));
     host.poll(0.5);
     EXPECT_TRUE(host.takeOutput().empty());  // the first is not answered yet
-    host.receive(kAck, 0.6);
+    answerWith(host, kAck, 100, 50, 0.6);
     EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 180, 0, 120}));
-    host.receive(kAck, 1.0);
+    answerWith(host, kAck, 180, 120, 1.0, 100, 50);
     EXPECT_TRUE(host.idle());
     ASSERT_TRUE(host.reached());
     EXPECT_EQ(host.reached()->x, 180);
@@ -98,7 +115,7 @@ TEST(TableHost, NonIntegerMillimetresRoundToTheNearestAndOutOfRangeIsRefused) {
     EXPECT_EQ(host.queued(), 2u);
     host.poll(0.0);
     EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 100, 0, 50}));
-    host.receive(kAck, 0.1);
+    answerWith(host, kAck, 100, 50, 0.1);
     EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 0, 255, 255}));
 }
 
@@ -187,17 +204,120 @@ TEST(TableHost, CanFailsOverCurrentAndForgetsWhereTheTableIs) {
 
 TEST(TableHost, GarbageIsCountedNotObeyed) {
     TableHost host;
-    host.receive(kAck, 0.0);  // nothing asked yet
+    answerWith(host, kAck, 5, 5, 0.0);  // nothing asked yet
+    EXPECT_EQ(host.stats().unexpected, 1u);
     ASSERT_TRUE(host.moveTo(5, 5));
     host.poll(0.0);
     (void)host.takeOutput();
-    for (int b : {0, 255, 0x05, 0x16, 0x17, 0x41})
+    // Noise, a bare one-byte ACK, and an ACK frame whose checksum does not check.
+    for (int b : {0, 255, 0x05, 0x16, 0x17, 0x41, 0x06})
         host.receive(static_cast<std::uint8_t>(b), 0.1);
+    Answer broken = encodeAnswer(kAck, encodeSetPoint(5, 5), encodeSetPoint(0, 0));
+    broken[9] ^= 0x10;
+    for (std::uint8_t b : broken)
+        host.receive(b, 0.2);
     EXPECT_FALSE(host.idle());
     EXPECT_FALSE(host.failed());
-    EXPECT_EQ(host.stats().unexpected, 7u);
-    host.receive(kAck, 0.2);
+    EXPECT_EQ(host.stats().acknowledged, 0u);
+    answerWith(host, kAck, 5, 5, 0.5);  // after a gap: the partial is dropped, this one checks
     EXPECT_TRUE(host.idle());
+}
+
+TEST(TableHost, AnAnswerNamesItsSetPointAndALateOneIsNotTakenForTheNext) {
+    TableHost host;
+    ASSERT_TRUE(host.moveTo(10, 20));
+    ASSERT_TRUE(host.moveTo(30, 40));
+    host.poll(0.0);
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 10, 0, 20}));
+    host.poll(5.0);  // past the deadline: sent again
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 10, 0, 20}));
+    answerWith(host, kAck, 10, 20, 5.5);  // the first copy's, late
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 30, 0, 40}));
+    answerWith(host, kAck, 10, 20, 6.0, 10, 20);  // the repeat's: not the answer to (30, 40)
+    EXPECT_FALSE(host.idle());
+    EXPECT_EQ(host.stats().late, 1u);
+    answerWith(host, kAck, 30, 40, 6.5, 10, 20);
+    EXPECT_TRUE(host.idle());
+    EXPECT_EQ(host.reached()->x, 30);
+}
+
+// Issue 20 item 12: line noise was told as "the table refused set point (0, 0) mm: outside the
+// table". A NAK naming another set point is noise on the way: nothing moved, sent again.
+TEST(TableHost, ANakOfASetPointChangedOnTheWayIsNoiseAndSendsItAgain) {
+    TableHost host;
+    ASSERT_TRUE(host.moveTo(0, 0));
+    host.poll(0.0);
+    (void)host.takeOutput();
+    answerWith(host, kNak, 0, 256, 0.1);  // a bit flipped in hiY
+    EXPECT_FALSE(host.failed()) << host.error();
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 0, 0, 0}));
+    EXPECT_EQ(host.stats().garbled, 1u);
+    for (int i = 0; i < 10; ++i) {
+        answerWith(host, kNak, 0, 256, 1.0 + i);
+        (void)host.takeOutput();
+    }
+    ASSERT_TRUE(host.failed());
+    EXPECT_EQ(host.error(),
+              "line noise: the table received set point (0, 256) mm instead of set point (0, 0) "
+              "mm 11 times and refused it (outside the table); the line is too noisy");
+    EXPECT_FALSE(host.offPath());
+}
+
+TEST(TableHost, AMoveFromASetPointNotHeardOfIsTheTableOffThePath) {
+    TableHost host;
+    ASSERT_TRUE(host.moveTo(20, 40));
+    ASSERT_TRUE(host.moveTo(50, 90));
+    host.poll(0.0);
+    (void)host.takeOutput();
+    answerWith(host, kAck, 20, 40, 1.0);
+    (void)host.takeOutput();
+    // (50, 90) arrived as (18, 90), ran, and its answer was lost; the repeat ran from there.
+    answerWith(host, kAck, 50, 90, 9.0, 18, 90);
+    ASSERT_TRUE(host.failed());
+    EXPECT_TRUE(host.offPath());
+    EXPECT_EQ(host.error(),
+              "the table ran set point (18, 90) mm, which was not sent (line noise changed one on "
+              "the way), before set point (50, 90) mm: the table left the program's path");
+}
+
+TEST(TableHost, ALastSetPointSentTwiceIsCheckedOnceMore) {
+    TableHost host;
+    ASSERT_TRUE(host.moveTo(30, 40));
+    host.poll(0.0);
+    (void)host.takeOutput();
+    host.poll(3.0);  // past its deadline: sent again
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 30, 0, 40}));
+    answerWith(host, kAck, 30, 40, 3.5);
+    EXPECT_FALSE(host.idle());  // the repeat is still on its way: a check goes once
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 30, 0, 40}));
+    EXPECT_EQ(host.stats().checks, 1u);
+    host.poll(12.0);  // the check's deadline is 10 s: not passed
+    EXPECT_TRUE(host.takeOutput().empty());
+    // An answer from (30, 40) to (30, 40): nothing else ran since; the check went once.
+    answerWith(host, kAck, 30, 40, 12.1, 30, 40);
+    EXPECT_TRUE(host.idle());
+    EXPECT_EQ(host.stats().acknowledged, 1u);
+}
+
+TEST(TableHost, AnAckOfASetPointNeverSentIsTheTableOffThePath) {
+    TableHost host;
+    ASSERT_TRUE(host.moveTo(50, 50));
+    ASSERT_TRUE(host.moveTo(150, 50));
+    host.poll(0.0);
+    (void)host.takeOutput();
+    answerWith(host, kAck, 50, 50, 1.0);
+    (void)host.takeOutput();
+    answerWith(host, kAck, 150, 58, 3.0, 50, 50);  // the table ran (150, 58): loY's bit 3
+    ASSERT_TRUE(host.failed());
+    EXPECT_TRUE(host.offPath());
+    EXPECT_EQ(host.error(),
+              "line noise: the table received set point (150, 58) mm instead of set point (150, "
+              "50) mm and moved there: the table left the program's path");
+    host.retry();  // no Continue from off the path
+    EXPECT_TRUE(host.failed());
+    host.clear();
+    EXPECT_FALSE(host.failed());
+    EXPECT_FALSE(host.offPath());
 }
 
 TEST(TableHost, TheDeadlineGrowsWithTheLongerTravel) {
