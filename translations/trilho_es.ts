@@ -248,10 +248,6 @@
         <translation>Encoder detenido: el accionamiento comandó %1 mm sin una sola cuenta y se cortó. Revise el encoder y su cable, reconozca y vuelva a referenciar.</translation>
     </message>
     <message>
-        <source>Counts lost: the count differs by %1 mm from the travel the drive made, so the position is wrong and the drive was cut. Lower the speed or check the encoder and its counter card, acknowledge, then home again.</source>
-        <translation>Cuentas perdidas: la cuenta difiere en %1 mm del recorrido que hizo el accionamiento, la posición es errónea y se cortó el accionamiento. Reduzca la velocidad o revise el encoder y la tarjeta contadora, reconozca y vuelva a referenciar.</translation>
-    </message>
-    <message>
         <source>Over-current: a motor drew too much current at %1 % PWM and its drive was cut. Free the axis, acknowledge, then home again.</source>
         <translation>Sobrecorriente: un motor consumió demasiada corriente a %1 % de PWM y se cortó su accionamiento. Libere el eje, reconozca y luego vuelva a referenciar.</translation>
     </message>
@@ -266,6 +262,10 @@
     <message>
         <source>Link to the device lost: it did not answer, the line was too noisy, or the cable was pulled. The run is held: check the cable and the port, then press Continue to go on from the first point not acknowledged.</source>
         <translation>Enlace con el dispositivo perdido: no respondió, la línea tenía demasiado ruido o se desconectó el cable. La ejecución está suspendida: revise el cable y el puerto, luego pulse Continuar para seguir desde el primer punto no confirmado.</translation>
+    </message>
+    <message>
+        <source>Counts lost: the count differs by %1 mm from the travel the drive made, so the position is wrong and the drive was cut. Lower the speed or check the encoder and its counter card, acknowledge, then home again.</source>
+        <translation>Cuentas perdidas: la cuenta difiere en %1 mm del recorrido que hizo el accionamiento, la posición es errónea y se cortó el accionamiento. Reduzca la velocidad o revise el encoder y la tarjeta contadora, reconozca y vuelva a referenciar.</translation>
     </message>
     <message>
         <source>%1: Travel to x=%2 y=%4 at maximum speed.</source>
@@ -863,7 +863,22 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::MachineLink</name>
+    <message>
+        <source>Command not taken: the servo thread&apos;s queue is full. Press again.</source>
+        <translation>Comando no aceptado: la cola del servo está llena. Pulse de nuevo.</translation>
+    </message>
+    <message>
+        <source>Program not started: the servo thread is still taking the one before it, or its queue is full. Press again.</source>
+        <translation>Programa no iniciado: el servo todavía está recibiendo el anterior, o su cola está llena. Pulse de nuevo.</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::MainWindow</name>
+    <message>
+        <source>Start from a block runs in Automatic: choose Command &gt; Automatic first (it homes the rail).</source>
+        <translation>Iniciar desde un bloque funciona en Automático: elija antes Comando &gt; Automático (referencia el riel).</translation>
+    </message>
     <message>
         <source>line %1</source>
         <translation>línea %1</translation>
@@ -873,8 +888,12 @@
         <translation>Ejecutar desde el bloque seleccionado</translation>
     </message>
     <message>
-        <source>Start %1 from block %2? The rail moves at once, at rapid speed, %3.</source>
-        <translation>¿Iniciar %1 desde el bloque %2? El carril se mueve en seguida, a velocidad rápida, %3.</translation>
+        <source>Start %1 from block %2? %3The rail moves at once, at rapid speed, %4.</source>
+        <translation>¿Iniciar %1 desde el bloque %2? %3El riel se mueve de inmediato, a velocidad rápida, %4.</translation>
+    </message>
+    <message>
+        <source>Its position is not known, so it homes first: %1 </source>
+        <translation>La posición no se conoce, así que primero hace la referencia: %1 </translation>
     </message>
     <message>
         <source>Didactic D.N.C. system for the automatic rail</source>
@@ -903,6 +922,14 @@
     <message>
         <source>&amp;Automatic</source>
         <translation>&amp;Automático</translation>
+    </message>
+    <message>
+        <source>&amp;Home</source>
+        <translation>&amp;Referenciar</translation>
+    </message>
+    <message>
+        <source>Home (Ctrl+Home)</source>
+        <translation>Referenciar (Ctrl+Inicio)</translation>
     </message>
     <message>
         <source>&amp;Compile file</source>
@@ -1057,20 +1084,60 @@
         <translation>Inicio de ciclo</translation>
     </message>
     <message>
-        <source>Execute %1? The rail moves %2, then runs the program.%3</source>
-        <translation>¿Ejecutar %1? El carril se mueve %2 y luego ejecuta el programa.%3</translation>
-    </message>
-    <message>
-        <source> Its position is not known: it homes first (to the end switches and back).</source>
-        <translation> Su posición no se conoce: primero busca la referencia (hasta los finales de carrera y vuelta).</translation>
+        <source>Execute %1? %3The rail moves %2, then runs the program.</source>
+        <translation>¿Ejecutar %1? %3El riel se mueve %2, y luego ejecuta el programa.</translation>
     </message>
     <message>
         <source>from x = %1 mm to x = %2 mm</source>
         <translation>de x = %1 mm a x = %2 mm</translation>
     </message>
     <message>
+        <source> (the rail centre, where every program starts, as in the 1996 program)</source>
+        <translation> (el centro del riel, donde empieza todo programa, como en el programa de 1996)</translation>
+    </message>
+    <message>
         <source> (first programmed move to x = %1 mm)</source>
         <translation> (primer movimiento programado a x = %1 mm)</translation>
+    </message>
+    <message>
+        <source>the rail drives right until a switch: the centre mark if it is left of the centre; otherwise the right end switch (about x = +%1 mm), then back left to the centre mark</source>
+        <translation>el riel avanza a la derecha hasta un interruptor: la marca central si está a la izquierda del centro; si no, el final de carrera derecho (cerca de x = +%1 mm), y vuelve a la izquierda hasta la marca central</translation>
+    </message>
+    <message>
+        <source>the rail drives right from x = %1 mm to the centre mark</source>
+        <translation>el riel avanza a la derecha de x = %1 mm hasta la marca central</translation>
+    </message>
+    <message>
+        <source>the rail drives right from x = %1 mm to the right end switch (about x = +%2 mm), then back left to the centre mark</source>
+        <translation>el riel avanza a la derecha de x = %1 mm hasta el final de carrera derecho (cerca de x = +%2 mm), y vuelve a la izquierda hasta la marca central</translation>
+    </message>
+    <message>
+        <source>%1, and stops at x = 0.</source>
+        <translation>%1, y se detiene en x = 0.</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automático</translation>
+    </message>
+    <message>
+        <source>Automatic homes the rail first, as in 1996: %1 Home now?</source>
+        <translation>El modo automático primero referencia el riel, como en 1996: %1 ¿Referenciar ahora?</translation>
+    </message>
+    <message>
+        <source>Home: stop the rail (or reset the E-stop, acknowledge the alarm) first.</source>
+        <translation>Referenciar: detenga el riel (o rearme la emergencia, reconozca la alarma) antes.</translation>
+    </message>
+    <message>
+        <source>Home</source>
+        <translation>Referenciar</translation>
+    </message>
+    <message>
+        <source>Home the rail? %1%2</source>
+        <translation>¿Referenciar el riel? %1%2</translation>
+    </message>
+    <message>
+        <source> It then stays in Automatic.</source>
+        <translation> Después queda en Automático.</translation>
     </message>
     <message>
         <source>Program</source>
@@ -1163,6 +1230,14 @@
     <message>
         <source>The rail is moving (x = %1 mm, towards x = %2 mm). Exit stops it with an emergency stop. Exit now?</source>
         <translation>El carril se está moviendo (x = %1 mm, hacia x = %2 mm). Salir lo detiene con una parada de emergencia. ¿Salir ahora?</translation>
+    </message>
+    <message>
+        <source>Simulated fault armed: %1</source>
+        <translation>Falla simulada activa: %1</translation>
+    </message>
+    <message>
+        <source>Set in the Simulation dock; Clear all there puts the rail right.</source>
+        <translation>Definida en el panel Simulación; Borrar todo allí corrige el riel.</translation>
     </message>
 </context>
 <context>
@@ -1393,6 +1468,34 @@
 <context>
     <name>trilho::ui::SimulationPanel</name>
     <message>
+        <source>stuck encoder</source>
+        <translation>encoder trabado</translation>
+    </message>
+    <message>
+        <source>amplifier trip</source>
+        <translation>falla del amplificador</translation>
+    </message>
+    <message>
+        <source>torn counter reads</source>
+        <translation>lecturas partidas del contador</translation>
+    </message>
+    <message>
+        <source>lost counts above %1 counts/s</source>
+        <translation>cuentas perdidas por encima de %1 cuentas/s</translation>
+    </message>
+    <message>
+        <source>cable slip %1</source>
+        <translation>deslizamiento del cable %1</translation>
+    </message>
+    <message>
+        <source>switch noise %1</source>
+        <translation>ruido en los interruptores %1</translation>
+    </message>
+    <message>
+        <source>late ticks up to %1 ms (p %2)</source>
+        <translation>ciclos atrasados hasta %1 ms (p %2)</translation>
+    </message>
+    <message>
         <source>Faults of the simulated rail, for teaching and rehearsal. They act at once; Clear all puts the rail right (acknowledge any alarm after).</source>
         <translation>Fallas del riel simulado, para enseñanza y ensayo. Actúan al instante; Borrar todo restablece el riel (reconozca las alarmas después).</translation>
     </message>
@@ -1523,12 +1626,68 @@
         <translation>Sa&amp;lir</translation>
     </message>
     <message>
+        <source>&amp;Command</source>
+        <translation>&amp;Comando</translation>
+    </message>
+    <message>
+        <source>&amp;Manual</source>
+        <translation>&amp;Manual</translation>
+    </message>
+    <message>
+        <source>&amp;Automatic</source>
+        <translation>&amp;Automático</translation>
+    </message>
+    <message>
+        <source>&amp;Home</source>
+        <translation>&amp;Referenciar</translation>
+    </message>
+    <message>
         <source>&amp;Options</source>
         <translation>&amp;Opciones</translation>
     </message>
     <message>
         <source>&amp;Connection...</source>
         <translation>&amp;Conexión...</translation>
+    </message>
+    <message>
+        <source>the pen lifts and the carriage runs to the origin sensors, where both axes are zeroed (0, 0).</source>
+        <translation>la pluma sube y el carro va hasta los sensores de origen, donde los dos ejes se ponen a cero (0, 0).</translation>
+    </message>
+    <message>
+        <source>the DC table has no home switch: its origin is where it stood at power-on, and nothing moves.</source>
+        <translation>la mesa CC no tiene interruptor de referencia: su origen es donde estaba al encenderla, y nada se mueve.</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automático</translation>
+    </message>
+    <message>
+        <source>Automatic homes the machine first: %1 Go on?</source>
+        <translation>El modo automático primero referencia la máquina: %1 ¿Continuar?</translation>
+    </message>
+    <message>
+        <source>Home: stop the machine (or reset the E-stop, acknowledge the alarm) first.</source>
+        <translation>Referenciar: detenga la máquina (o rearme la emergencia, reconozca la alarma) antes.</translation>
+    </message>
+    <message>
+        <source>Home</source>
+        <translation>Referenciar</translation>
+    </message>
+    <message>
+        <source>Home the machine? %1</source>
+        <translation>¿Referenciar la máquina? %1</translation>
+    </message>
+    <message>
+        <source>Cycle start</source>
+        <translation>Inicio de ciclo</translation>
+    </message>
+    <message>
+        <source>Run %1? %2The machine travels at full speed from (%3, %4) mm to the program&apos;s start, then runs it.</source>
+        <translation>¿Ejecutar %1? %2La máquina va a velocidad máxima de (%3, %4) mm hasta el inicio del programa, y luego lo ejecuta.</translation>
+    </message>
+    <message>
+        <source>Its position is not known, so it homes first: %1 </source>
+        <translation>La posición no se conoce, así que primero hace la referencia: %1 </translation>
     </message>
     <message>
         <source>Open program</source>

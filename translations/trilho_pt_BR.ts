@@ -248,10 +248,6 @@
         <translation>Encoder parado: o acionamento comandou %1 mm sem uma única contagem e foi cortado. Verifique o encoder e o cabo, reconheça e refaça o referenciamento.</translation>
     </message>
     <message>
-        <source>Counts lost: the count differs by %1 mm from the travel the drive made, so the position is wrong and the drive was cut. Lower the speed or check the encoder and its counter card, acknowledge, then home again.</source>
-        <translation>Contagens perdidas: a contagem difere em %1 mm do percurso que o acionamento fez, a posição está errada e o acionamento foi cortado. Reduza a velocidade ou verifique o encoder e a placa contadora, reconheça e refaça o referenciamento.</translation>
-    </message>
-    <message>
         <source>Over-current: a motor drew too much current at %1 % PWM and its drive was cut. Free the axis, acknowledge, then home again.</source>
         <translation>Sobrecorrente: um motor consumiu corrente demais a %1 % de PWM e o seu acionamento foi cortado. Libere o eixo, reconheça e depois faça a referência de novo.</translation>
     </message>
@@ -266,6 +262,10 @@
     <message>
         <source>Link to the device lost: it did not answer, the line was too noisy, or the cable was pulled. The run is held: check the cable and the port, then press Continue to go on from the first point not acknowledged.</source>
         <translation>Ligação com o dispositivo perdida: ele não respondeu, a linha estava ruidosa demais ou o cabo foi desconectado. A execução está suspensa: verifique o cabo e a porta, depois pressione Continuar para seguir do primeiro ponto não confirmado.</translation>
+    </message>
+    <message>
+        <source>Counts lost: the count differs by %1 mm from the travel the drive made, so the position is wrong and the drive was cut. Lower the speed or check the encoder and its counter card, acknowledge, then home again.</source>
+        <translation>Contagens perdidas: a contagem difere em %1 mm do percurso que o acionamento fez, a posição está errada e o acionamento foi cortado. Reduza a velocidade ou verifique o encoder e a placa contadora, reconheça e refaça o referenciamento.</translation>
     </message>
     <message>
         <source>%1: Travel to x=%2 y=%4 at maximum speed.</source>
@@ -863,7 +863,22 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::MachineLink</name>
+    <message>
+        <source>Command not taken: the servo thread&apos;s queue is full. Press again.</source>
+        <translation>Comando não aceito: a fila do servo está cheia. Pressione de novo.</translation>
+    </message>
+    <message>
+        <source>Program not started: the servo thread is still taking the one before it, or its queue is full. Press again.</source>
+        <translation>Programa não iniciado: o servo ainda está recebendo o anterior, ou sua fila está cheia. Pressione de novo.</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::MainWindow</name>
+    <message>
+        <source>Start from a block runs in Automatic: choose Command &gt; Automatic first (it homes the rail).</source>
+        <translation>Iniciar de um bloco funciona em Automático: escolha antes Comando &gt; Automático (ele referencia o trilho).</translation>
+    </message>
     <message>
         <source>line %1</source>
         <translation>linha %1</translation>
@@ -873,8 +888,12 @@
         <translation>Executar a partir do bloco selecionado</translation>
     </message>
     <message>
-        <source>Start %1 from block %2? The rail moves at once, at rapid speed, %3.</source>
-        <translation>Iniciar %1 a partir do bloco %2? O trilho move-se já, em velocidade máxima, %3.</translation>
+        <source>Start %1 from block %2? %3The rail moves at once, at rapid speed, %4.</source>
+        <translation>Iniciar %1 a partir do bloco %2? %3O trilho move-se imediatamente, em velocidade rápida, %4.</translation>
+    </message>
+    <message>
+        <source>Its position is not known, so it homes first: %1 </source>
+        <translation>A posição não é conhecida, então primeiro faz a referência: %1 </translation>
     </message>
     <message>
         <source>Didactic D.N.C. system for the automatic rail</source>
@@ -903,6 +922,14 @@
     <message>
         <source>&amp;Automatic</source>
         <translation>&amp;Automático</translation>
+    </message>
+    <message>
+        <source>&amp;Home</source>
+        <translation>&amp;Referenciar</translation>
+    </message>
+    <message>
+        <source>Home (Ctrl+Home)</source>
+        <translation>Referenciar (Ctrl+Home)</translation>
     </message>
     <message>
         <source>&amp;Compile file</source>
@@ -1057,20 +1084,60 @@
         <translation>Início de ciclo</translation>
     </message>
     <message>
-        <source>Execute %1? The rail moves %2, then runs the program.%3</source>
-        <translation>Executar %1? O trilho move-se %2 e depois executa o programa.%3</translation>
-    </message>
-    <message>
-        <source> Its position is not known: it homes first (to the end switches and back).</source>
-        <translation> A posição não é conhecida: primeiro faz a referência (até os fins de curso e volta).</translation>
+        <source>Execute %1? %3The rail moves %2, then runs the program.</source>
+        <translation>Executar %1? %3O trilho move-se %2, e então executa o programa.</translation>
     </message>
     <message>
         <source>from x = %1 mm to x = %2 mm</source>
         <translation>de x = %1 mm para x = %2 mm</translation>
     </message>
     <message>
+        <source> (the rail centre, where every program starts, as in the 1996 program)</source>
+        <translation> (o centro do trilho, onde todo programa começa, como no programa de 1996)</translation>
+    </message>
+    <message>
         <source> (first programmed move to x = %1 mm)</source>
         <translation> (primeiro movimento programado para x = %1 mm)</translation>
+    </message>
+    <message>
+        <source>the rail drives right until a switch: the centre mark if it is left of the centre; otherwise the right end switch (about x = +%1 mm), then back left to the centre mark</source>
+        <translation>o trilho anda para a direita até uma chave: a marca central se estiver à esquerda do centro; senão a chave de fim de curso direita (cerca de x = +%1 mm), e volta à esquerda até a marca central</translation>
+    </message>
+    <message>
+        <source>the rail drives right from x = %1 mm to the centre mark</source>
+        <translation>o trilho anda para a direita de x = %1 mm até a marca central</translation>
+    </message>
+    <message>
+        <source>the rail drives right from x = %1 mm to the right end switch (about x = +%2 mm), then back left to the centre mark</source>
+        <translation>o trilho anda para a direita de x = %1 mm até a chave de fim de curso direita (cerca de x = +%2 mm), e volta à esquerda até a marca central</translation>
+    </message>
+    <message>
+        <source>%1, and stops at x = 0.</source>
+        <translation>%1, e para em x = 0.</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automático</translation>
+    </message>
+    <message>
+        <source>Automatic homes the rail first, as in 1996: %1 Home now?</source>
+        <translation>O modo automático primeiro referencia o trilho, como em 1996: %1 Referenciar agora?</translation>
+    </message>
+    <message>
+        <source>Home: stop the rail (or reset the E-stop, acknowledge the alarm) first.</source>
+        <translation>Referenciar: pare o trilho (ou rearme a emergência, reconheça o alarme) antes.</translation>
+    </message>
+    <message>
+        <source>Home</source>
+        <translation>Referenciar</translation>
+    </message>
+    <message>
+        <source>Home the rail? %1%2</source>
+        <translation>Referenciar o trilho? %1%2</translation>
+    </message>
+    <message>
+        <source> It then stays in Automatic.</source>
+        <translation> Depois fica em Automático.</translation>
     </message>
     <message>
         <source>Program</source>
@@ -1163,6 +1230,14 @@
     <message>
         <source>The rail is moving (x = %1 mm, towards x = %2 mm). Exit stops it with an emergency stop. Exit now?</source>
         <translation>O trilho está em movimento (x = %1 mm, rumo a x = %2 mm). Sair o pára com uma parada de emergência. Sair agora?</translation>
+    </message>
+    <message>
+        <source>Simulated fault armed: %1</source>
+        <translation>Falha simulada ativa: %1</translation>
+    </message>
+    <message>
+        <source>Set in the Simulation dock; Clear all there puts the rail right.</source>
+        <translation>Definida no painel Simulação; Limpar tudo lá corrige o trilho.</translation>
     </message>
 </context>
 <context>
@@ -1393,6 +1468,34 @@
 <context>
     <name>trilho::ui::SimulationPanel</name>
     <message>
+        <source>stuck encoder</source>
+        <translation>encoder travado</translation>
+    </message>
+    <message>
+        <source>amplifier trip</source>
+        <translation>falha do amplificador</translation>
+    </message>
+    <message>
+        <source>torn counter reads</source>
+        <translation>leituras rasgadas do contador</translation>
+    </message>
+    <message>
+        <source>lost counts above %1 counts/s</source>
+        <translation>contagens perdidas acima de %1 contagens/s</translation>
+    </message>
+    <message>
+        <source>cable slip %1</source>
+        <translation>deslizamento do cabo %1</translation>
+    </message>
+    <message>
+        <source>switch noise %1</source>
+        <translation>ruído nas chaves %1</translation>
+    </message>
+    <message>
+        <source>late ticks up to %1 ms (p %2)</source>
+        <translation>ciclos atrasados até %1 ms (p %2)</translation>
+    </message>
+    <message>
         <source>Faults of the simulated rail, for teaching and rehearsal. They act at once; Clear all puts the rail right (acknowledge any alarm after).</source>
         <translation>Falhas do trilho simulado, para ensino e treino. Agem na hora; Limpar tudo restaura o trilho (reconheça os alarmes depois).</translation>
     </message>
@@ -1523,12 +1626,68 @@
         <translation>Sai&amp;r</translation>
     </message>
     <message>
+        <source>&amp;Command</source>
+        <translation>&amp;Comando</translation>
+    </message>
+    <message>
+        <source>&amp;Manual</source>
+        <translation>&amp;Manual</translation>
+    </message>
+    <message>
+        <source>&amp;Automatic</source>
+        <translation>&amp;Automático</translation>
+    </message>
+    <message>
+        <source>&amp;Home</source>
+        <translation>&amp;Referenciar</translation>
+    </message>
+    <message>
         <source>&amp;Options</source>
         <translation>&amp;Opções</translation>
     </message>
     <message>
         <source>&amp;Connection...</source>
         <translation>&amp;Conexão...</translation>
+    </message>
+    <message>
+        <source>the pen lifts and the carriage runs to the origin sensors, where both axes are zeroed (0, 0).</source>
+        <translation>a caneta sobe e o carro vai até os sensores de origem, onde os dois eixos são zerados (0, 0).</translation>
+    </message>
+    <message>
+        <source>the DC table has no home switch: its origin is where it stood at power-on, and nothing moves.</source>
+        <translation>a mesa CC não tem chave de referência: sua origem é onde estava ao ligar, e nada se move.</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automático</translation>
+    </message>
+    <message>
+        <source>Automatic homes the machine first: %1 Go on?</source>
+        <translation>O modo automático primeiro referencia a máquina: %1 Continuar?</translation>
+    </message>
+    <message>
+        <source>Home: stop the machine (or reset the E-stop, acknowledge the alarm) first.</source>
+        <translation>Referenciar: pare a máquina (ou rearme a emergência, reconheça o alarme) antes.</translation>
+    </message>
+    <message>
+        <source>Home</source>
+        <translation>Referenciar</translation>
+    </message>
+    <message>
+        <source>Home the machine? %1</source>
+        <translation>Referenciar a máquina? %1</translation>
+    </message>
+    <message>
+        <source>Cycle start</source>
+        <translation>Início de ciclo</translation>
+    </message>
+    <message>
+        <source>Run %1? %2The machine travels at full speed from (%3, %4) mm to the program&apos;s start, then runs it.</source>
+        <translation>Executar %1? %2A máquina vai em velocidade máxima de (%3, %4) mm até o início do programa, e então o executa.</translation>
+    </message>
+    <message>
+        <source>Its position is not known, so it homes first: %1 </source>
+        <translation>A posição não é conhecida, então primeiro faz a referência: %1 </translation>
     </message>
     <message>
         <source>Open program</source>
