@@ -33,6 +33,7 @@
 #include "core/machine/event_text.h"
 #include "translations/i18n.h"
 #include "ui/code_editor.h"
+#include "ui/confirm_box.h"
 #include "ui/dnc_dialog.h"
 #include "ui/dnc_link.h"
 #include "ui/dnc_settings.h"
@@ -639,11 +640,7 @@ void MainWindow::requestHome() {
 }
 
 bool MainWindow::confirm(const QString& title, const QString& text) {
-    if (confirmer_) return confirmer_(title, text);
-    QMessageBox box(QMessageBox::Question, title, text, QMessageBox::Yes | QMessageBox::No, this);
-    box.setObjectName(QStringLiteral("confirmation"));
-    box.setDefaultButton(QMessageBox::No);  // a stray Enter never starts the rail
-    return box.exec() == QMessageBox::Yes;
+    return confirmer_ ? confirmer_(title, text) : askYesNoDefaultNo(this, title, text);
 }
 
 void MainWindow::stopKey() {
@@ -940,8 +937,13 @@ void MainWindow::closeEvent(QCloseEvent* e) {
 
 void MainWindow::showArmedFaults(const QString& text) {
     armedFaults_ = text;
-    faultArmed_->setText(tr("Simulated fault armed: %1").arg(text));
-    faultArmed_->setToolTip(tr("Set in the Simulation dock; Clear all there puts the rail right."));
+    // At most 320 px, so the bar keeps E-stop, Reset, Acknowledge and Home in view at 1024 px
+    // wide; the whole list on hover.
+    const QString full = tr("Simulated fault armed: %1").arg(text);
+    faultArmed_->setText(faultArmed_->fontMetrics().elidedText(full, Qt::ElideRight, 300));
+    faultArmed_->setMaximumWidth(320);
+    faultArmed_->setToolTip(full + QLatin1Char('\n') +
+                            tr("Set in the Simulation dock; Clear all there puts the rail right."));
     faultArmedAction_->setVisible(!text.isEmpty());
 }
 

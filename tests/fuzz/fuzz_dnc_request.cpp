@@ -10,6 +10,7 @@
 #include <cstdint>
 
 #include "app/dnc/dnc_server.h"
+#include "app/dnc/register_store.h"
 #include "app/dnc/virtual_machine.h"
 #include "core/gcode/compiler.h"
 #include "tests/fuzz/fuzz_input.h"
@@ -17,12 +18,7 @@
 
 namespace {
 
-/// Qt's own processing (the register store) reachable from outside, as the real servers'.
-class ExposedServer final : public QModbusTcpServer {
-  public:
-    using QModbusTcpServer::QModbusTcpServer;
-    QModbusResponse base(const QModbusPdu& p) { return QModbusTcpServer::processRequest(p); }
-};
+using ExposedServer = trilho::dnc::RegisterStore;
 
 std::vector<quint16> holding(ExposedServer& s) {
     QModbusDataUnit u(QModbusDataUnit::HoldingRegisters, 0, trilho::dnc::hold::kCount);

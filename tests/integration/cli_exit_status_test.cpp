@@ -44,11 +44,7 @@ class CliExitStatus : public ::testing::Test {
   protected:
     QTemporaryDir dir;
     QString write(const QString& name, const QByteArray& content) {
-        const QString path = dir.filePath(name);
-        QFile f(path);
-        EXPECT_TRUE(f.open(QIODevice::WriteOnly));
-        f.write(content);
-        return path;
+        return trilho::test::writeIn(dir, name, content);
     }
 };
 

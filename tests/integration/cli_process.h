@@ -1,9 +1,11 @@
 #pragma once
 // Runs trilho-cli as a child process and collects what it said.
 #include <gtest/gtest.h>
+#include <QFile>
 #include <QProcess>
 #include <QString>
 #include <QStringList>
+#include <QTemporaryDir>
 
 namespace trilho::test {
 
@@ -11,6 +13,15 @@ struct CliResult {
     int exit = -1;
     QString out, err;
 };
+
+/// Writes content to name in dir; returns its path.
+inline QString writeIn(const QTemporaryDir& dir, const QString& name, const QByteArray& content) {
+    const QString path = dir.filePath(name);
+    QFile f(path);
+    EXPECT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write(content);
+    return path;
+}
 
 inline CliResult runCli(const QStringList& args) {
     QProcess p;

@@ -175,12 +175,14 @@ TEST_F(CliXy, MassFactorChangesTheDcTablesRun) {
     EXPECT_EQ(heavier.exit, 0);
     EXPECT_GT(heavier.worstErrorMm, 3.0 * light.worstErrorMm);
     EXPECT_EQ(heaviest.exit, 3);
-    EXPECT_EQ(heaviest.json[QStringLiteral("alarms")]
-                  .toArray()
-                  .at(0)
-                  .toObject()[QStringLiteral("code")]
-                  .toInt(),
-              3);
+    // Twenty times the mass cannot follow: the following error (3), or the speed model's
+    // check that the axis moves as its drive says (16, issue 19 item 8), whichever comes first.
+    const int code = heaviest.json[QStringLiteral("alarms")]
+                         .toArray()
+                         .at(0)
+                         .toObject()[QStringLiteral("code")]
+                         .toInt();
+    EXPECT_TRUE(code == 3 || code == 16) << code;
 }
 
 TEST_F(CliXy, MassFactorIsRefusedWhereThereIsNoMass) {

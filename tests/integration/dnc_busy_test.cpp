@@ -11,6 +11,7 @@
 #include <QTemporaryDir>
 
 #include "app/dnc/dnc_server.h"
+#include "app/dnc/register_store.h"
 #include "app/dnc/shared_worker_machine.h"
 #include "core/gcode/compiler.h"
 #include "hal/sim/sim_rail.h"
@@ -18,12 +19,7 @@
 namespace trilho::dnc {
 namespace {
 
-/// Qt's own processing (the register store) reachable from outside, as the real servers'.
-class ExposedServer final : public QModbusTcpServer {
-  public:
-    using QModbusTcpServer::QModbusTcpServer;
-    QModbusResponse base(const QModbusPdu& p) { return QModbusTcpServer::processRequest(p); }
-};
+using ExposedServer = RegisterStore;
 
 QByteArray writeMultiple(std::uint16_t start, const std::vector<std::uint16_t>& values) {
     QByteArray b;

@@ -407,9 +407,15 @@ class OperatorScreensTest : public QObject {
             questions_.value(1).contains(QStringLiteral("from x = -200.0 mm to the centre "
                                                         "mark")));
         QTRY_VERIFY_WITH_TIMEOUT(status().state == ControllerState::Homing, 5000);
-        QTRY_VERIFY_WITH_TIMEOUT(status().homed && status().state == ControllerState::AutoIdle &&
-                                     std::abs(status().servo.positionMm) < 0.1,
-                                 30000);
+        QTRY_VERIFY2_WITH_TIMEOUT(
+            status().homed && status().state == ControllerState::AutoIdle &&
+                std::abs(status().servo.positionMm) < 0.1,
+            qPrintable(QStringLiteral("state %1, homed %2, x = %3 mm, alarms %4")
+                           .arg(int(status().state))
+                           .arg(status().homed)
+                           .arg(status().servo.positionMm)
+                           .arg(panel()->alarms()->currentText())),
+            30000);
     }
 
     void startFromABlockInManualSaysAutomaticFirst() {

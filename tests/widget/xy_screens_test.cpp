@@ -355,6 +355,7 @@ class XyScreensTest : public QObject {
         XyLink link(std::move(runnable), XyLink::Drive::EventLoop);
         QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
         XyMainWindow w(link, settings);
+        w.setConfirmer([](const QString&, const QString&) { return true; });
         w.setDeviceLink(line, cable, 57600);
         w.show();
         QVERIFY(w.selectProgram(QStringLiteral(TRILHO_PROGRAMS_DIR "/plotter_quadrado.G")));

@@ -37,6 +37,7 @@
 #include "core/machine/event_text.h"
 #include "core/machine/serial_link_motion.h"
 #include "core/machine/xy_event_text.h"
+#include "ui/confirm_box.h"
 #include "ui/xy/dc_table_panel.h"
 #include "ui/xy/plotter_panel.h"
 #include "ui/xy/work_area_view.h"
@@ -293,11 +294,7 @@ bool XyMainWindow::selectProgram(const QString& path) {
 }
 
 bool XyMainWindow::confirm(const QString& title, const QString& text) {
-    if (confirmer_) return confirmer_(title, text);
-    QMessageBox box(QMessageBox::Question, title, text, QMessageBox::Yes | QMessageBox::No, this);
-    box.setObjectName(QStringLiteral("confirmation"));
-    box.setDefaultButton(QMessageBox::No);  // a stray Enter never starts the machine
-    return box.exec() == QMessageBox::Yes;
+    return confirmer_ ? confirmer_(title, text) : askYesNoDefaultNo(this, title, text);
 }
 
 QString XyMainWindow::homingText() const {
