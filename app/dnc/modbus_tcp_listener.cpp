@@ -1,5 +1,6 @@
 #include "app/dnc/modbus_tcp_listener.h"
 
+#include <QScopeGuard>
 #include <QTcpServer>
 #include <QTcpSocket>
 #include <cmath>
@@ -131,10 +132,16 @@ void ModbusTcpListener::markReady(Connection& c) {
         c.queued = true;
         ready_.push_back(c.socket);
     }
+    // Alone with a request and not inside a turn: answer now (a turn is due to nobody else),
+    // saving the event loop's round before the answer. Otherwise take turns.
+    if (ready_.size() == 1 && !serving_) return serveTurn();
     if (!turn_.isActive()) turn_.start();
 }
 
 void ModbusTcpListener::serveTurn() {
+    if (serving_) return;
+    serving_ = true;
+    const auto done = qScopeGuard([this] { serving_ = false; });
     // One round: every connection waiting gets its turn once, in order; those with more go
     // to the back, and the event loop runs before the next round.
     for (std::size_t n = ready_.size(); n > 0 && !ready_.empty(); --n) {

@@ -82,6 +82,7 @@ class ModbusTcpListener : public QObject {
     QTimer turn_;                    ///< zero-time: one turn, then the event loop
     QTimer watch_;                   ///< 1 s: idle and stalled connections
     bool refusing_ = false;          ///< at the limit: the history said so once
+    bool serving_ = false;           ///< inside serveTurn (a flush may signal back into it)
 };
 
 }  // namespace trilho::dnc

@@ -184,7 +184,10 @@ def run_pymodbus(cli):
             check(p.ir(IN_PROGRAM)[0] == 42, "program number 42 in the status")
             check(p.command(HOLD) == APPLIED, "hold applied")
             wait_for(lambda: p.state() == PAUSED and p.ir(IN_PAUSE)[0] == 2, "paused by hold")
-            wait_for(lambda: abs(f32(*p.ir(IN_SPEED, 2))) < 0.5, "at rest while held")
+            if not wait_for(lambda: abs(f32(*p.ir(IN_SPEED, 2))) < 0.5, "at rest while held"):
+                print(f"  held: state {p.state()} pause {p.ir(IN_PAUSE)[0]} speed "
+                      f"{f32(*p.ir(IN_SPEED, 2)):.3f} mm/s at {f32(*p.ir(IN_POSITION, 2)):.3f} mm "
+                      f"setpoint {f32(*p.ir(IN_SETPOINT, 2)):.3f} mm alarms {p.ir(IN_ALARMS, 2)}")
             held = f32(*p.ir(IN_POSITION, 2))
             check(p.command(CONTINUE) == APPLIED, "continue applied")
             wait_for(lambda: f32(*p.ir(IN_POSITION, 2)) > held + 1.0, "moving on after continue")
