@@ -10,6 +10,7 @@
 #include <QRegularExpression>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -228,6 +229,32 @@ class XyScreensTest : public QObject {
         link->advance(0.1);
         QCOMPARE(link->status().state, ControllerState::Manual);
         QVERIFY(!link->status().automatic);
+    }
+
+    // Issue 19, the frame's fit: every XY window fits 1366x768 and 1024x768 with nothing off
+    // screen (a title bar of 30 px left over): its minimum size, and its status bar in view.
+    void xyWindowsFitSmallScreens() {
+        for (const char* machine : {"xy_dc_table.json", "xy_plotter.json"}) {
+            for (const QSize screen : {QSize(1366, 768), QSize(1024, 768)}) {
+                QTemporaryDir dir;
+                QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+                auto link = virtualLink(shipped(machine));
+                XyMainWindow w(*link, settings);
+                w.resize(screen.width(), screen.height() - 30);
+                w.show();
+                QVERIFY(QTest::qWaitForWindowExposed(&w));
+                const QSize least = w.minimumSizeHint().expandedTo(w.minimumSize());
+                QVERIFY2(least.width() <= screen.width() && least.height() <= screen.height() - 30,
+                         qPrintable(QStringLiteral("%1 needs %2x%3 on %4x%5")
+                                        .arg(QLatin1String(machine))
+                                        .arg(least.width())
+                                        .arg(least.height())
+                                        .arg(screen.width())
+                                        .arg(screen.height())));
+                QCOMPARE(w.height(), screen.height() - 30);
+                QVERIFY(w.statusBar()->geometry().bottom() < w.height());
+            }
+        }
     }
 
     void plotterJogStopsOnSpace() {

@@ -17,6 +17,8 @@
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QShortcut>
 #include <QSplitter>
@@ -100,6 +102,7 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     big.setPointSizeF(big.pointSizeF() * 1.8);
     big.setBold(true);
     position_->setFont(big);
+    position_->setWordWrap(true);  // X and Y on two lines in a narrow column
     QFont stateFont = state_->font();
     stateFont.setBold(true);
     stateFont.setPointSizeF(stateFont.pointSizeF() * 1.3);
@@ -125,11 +128,18 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     ack_ = button("xyAck");
     estop_->setStyleSheet(QStringLiteral(
         "QPushButton{background:#c0161b;color:white;font-weight:bold;padding:4px 10px;}"));
-    auto* controls = new QHBoxLayout;
-    for (QPushButton* b : {open_, automatic_, start_, hold_, resume_, stop_, reset_, ack_})
-        controls->addWidget(b);
-    controls->addStretch();
-    controls->addWidget(estop_);
+    // Two rows, the E-stop at the right of both: one row of nine buttons was 1039 px wide in
+    // pt_BR, wider than a 1024-px screen (issue 19, the fit).
+    auto* controls = new QGridLayout;
+    int column = 0;
+    for (QPushButton* b : {open_, automatic_, reset_, ack_})
+        controls->addWidget(b, 0, column++);
+    column = 0;
+    for (QPushButton* b : {start_, hold_, resume_, stop_})
+        controls->addWidget(b, 1, column++);
+    controls->setColumnStretch(4, 1);
+    estop_->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Expanding);
+    controls->addWidget(estop_, 0, 5, 2, 1);
 
     connect(open_, &QPushButton::clicked, this, &XyMainWindow::chooseFile);
     connect(automatic_, &QPushButton::clicked, this, &XyMainWindow::requestAutomatic);
@@ -207,9 +217,19 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     sideLayout->addWidget(machinePanel);
     sideLayout->addWidget(history_, 1);
 
+    // The side column scrolls when the screen is short (issue 19: the windows needed 798 px,
+    // so the status bar with the link's state was below a 768-px screen).
+    auto* sideScroll = new QScrollArea(this);
+    sideScroll->setWidget(side);
+    sideScroll->setWidgetResizable(true);
+    sideScroll->setFrameShape(QFrame::NoFrame);
+    sideScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    side->setMinimumWidth(side->sizeHint().width());
+    sideScroll->setMinimumWidth(side->sizeHint().width() +
+                                sideScroll->verticalScrollBar()->sizeHint().width());
     auto* split = new QSplitter(Qt::Horizontal, this);
     split->addWidget(view_);
-    split->addWidget(side);
+    split->addWidget(sideScroll);
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 2);
     auto* vsplit = new QSplitter(Qt::Vertical, this);
