@@ -119,8 +119,11 @@ void DroPanel::showStatus(const ControllerStatus& s) {
     work_->setText(millimetres(s.servo.positionMm - s.modal.zeroMm));
     work_->setVisible(zeroActive);
     workCaption_->setVisible(zeroActive);
+    // To go: what is left of the program's block (a hold does not shorten it), else of a
+    // manual move; nothing at rest.
     const bool moving = s.servo.mode == ServoMode::Move || executing(s);
-    toGo_->setText(millimetres(moving ? s.servo.targetMm - s.servo.positionMm : 0.0));
+    const double goal = executing(s) && std::isfinite(s.goalMm) ? s.goalMm : s.servo.targetMm;
+    toGo_->setText(millimetres(moving ? goal - s.servo.positionMm : 0.0));
 
     QStringList modal;
     modal << (s.modal.incremental ? QStringLiteral("G91") : QStringLiteral("G90"));

@@ -342,7 +342,9 @@ void ExecutionPanel::showStatus(const ControllerStatus& s) {
     if (still) shownSpeed_ = 0.0, shownAcceleration_ = 0.0;
     speed_->setText(mm(deadBand(shownSpeed_, 0.5), 1));
     acceleration_->setText(mm(deadBand(shownAcceleration_, 20.0), 0));
-    continue_->setEnabled(s.state == ControllerState::Paused && s.pause == PauseReason::M00);
+    // The Continue beside "Press Continue" works for every pause, as the run controls' one does
+    // (issue 19 item 7: the enabled one was away from the text that asked for it).
+    continue_->setEnabled(s.state == ControllerState::Paused);
     const bool moving = s.servo.mode == ServoMode::Move;
     if (moving || s.state == ControllerState::Running) {
         setpoint_->setText(mm(s.servo.targetMm));

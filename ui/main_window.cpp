@@ -118,7 +118,8 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
 
     connect(&link_, &MachineLink::statusChanged, this, &MainWindow::onStatus);
     connect(&link_, &MachineLink::eventArrived, this, &MainWindow::onEvent);
-    connect(panel_, &ExecutionPanel::continuePressed, &link_, &MachineLink::pressContinue);
+    // Continue after any pause (hold, m00, single block): the controller's resume() tells them.
+    connect(panel_, &ExecutionPanel::continuePressed, &link_, &MachineLink::resume);
     connect(panel_, &ExecutionPanel::leftPressed, &link_, &MachineLink::manualLeft);
     connect(panel_, &ExecutionPanel::rightPressed, &link_, &MachineLink::manualRight);
     // PARA stops in both modes: ciclo_continuo.G tells the operator to end it with PARA.

@@ -261,6 +261,7 @@ void RailController::beginApproach(std::size_t /*fromIndex: status_.modal has it
     approachFirst_ =
         std::abs(servo_.sample().positionMm - startAt) > profile().loop.inPositionWindowMm;
     if (approachFirst_) servo_.moveTo(startAt, 1.0);
+    status_.goalMm = approachFirst_ ? startAt : std::numeric_limits<double>::quiet_NaN();
 }
 
 void RailController::startMove(const Block& b) {
@@ -272,6 +273,7 @@ void RailController::startMove(const Block& b) {
     // A move of no length is no activity: a cycle of them is a motionless loop.
     if (std::abs(b.x - servo_.sample().targetMm) > 1e-9 || !haveTarget_) gotosSinceActivity_ = 0;
     servo_.moveTo(b.x, speed);
+    status_.goalMm = b.x;
     haveTarget_ = true, lastTargetMm_ = b.x;
 }
 
@@ -363,6 +365,8 @@ void RailController::setFeedOverride(double factor) {
 
 void RailController::abandonRun() {
     status_.pause = PauseReason::None;
+    status_.dwellRemainingS = 0.0;  // a dwell abandoned counts down no more
+    status_.goalMm = std::numeric_limits<double>::quiet_NaN();
     status_.blockIndex = -1;
     blockStarted_ = false;
     approachFirst_ = false;

@@ -1,4 +1,5 @@
 #pragma once
+#include <limits>
 // The machine controller (document 3.8.2 and machine.md "Operating modes"): one explicit state
 // machine over the servo. Manual is the default; Automatic homes to the centre switch; a
 // compiled program runs block by block exactly as gcode.md's interpreter table says. Plain and
@@ -33,6 +34,10 @@ struct ControllerStatus {
     std::int32_t blockN = -1;
     std::uint32_t blockLine = 0;
     double dwellRemainingS = 0.0;
+    /// Where the running program sends the platform now (the block's target, or the approach's
+    /// start), mm; NaN when no program runs. A hold does not change it: the readout's "To go" is
+    /// what is left of the block (issue 19 item 7).
+    double goalMm = std::numeric_limits<double>::quiet_NaN();
     std::uint8_t manualCode = 128;   ///< the manual drive code (original manual mode)
     std::uint32_t activeAlarms = 0;  ///< alarmBit() of each alarm not yet acknowledged
     AlarmCode lastAlarm = AlarmCode::None;

@@ -171,6 +171,7 @@ void XyController::setFeedOverride(double factor) {
 
 void XyController::abandonRun() {
     status_.pause = PauseReason::None;
+    status_.dwellRemainingS = 0.0;  // a dwell abandoned counts down no more
     status_.blockIndex = -1;
     blockStarted_ = false;
     approachFirst_ = false;

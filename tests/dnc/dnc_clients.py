@@ -545,7 +545,11 @@ def run_bounds(cli):
             grown = peak - base
             check(answered > 100 and worst < 0.5,
                   f"another client is served while one pipelines without reading ({answered} answers, worst {worst * 1000:.0f} ms)")
-            check(grown < 20 * 1024, f"serve grew at most {grown} KiB while {sent // 1024} KiB of requests were pipelined unread")
+            # Under ASan freed memory waits in its quarantine (256 MB by default) before reuse, so
+            # the resident size grows with allocation churn up to that cap: bounded, not live.
+            bound = (300 if "ASAN_OPTIONS" in os.environ else 20) * 1024
+            check(grown < bound, f"serve grew at most {grown} KiB (bound {bound} KiB) while "
+                                 f"{sent // 1024} KiB of requests were pipelined unread")
             # It reads none of its answers: closed once the idle timeout (2 s) has passed.
             end = time.monotonic() + 15
             while closed_after is None and time.monotonic() < end:

@@ -168,6 +168,34 @@ TEST(Controller, M00WaitsForContinue) {
     EXPECT_TRUE(r.saw(EventKind::ContinuePressed));
 }
 
+// Issue 19 item 7: the readout's facts. During a feed hold the block's goal stays the goal
+// (To go is what is left of the block, not the distance to the hold point); an E-stop clears
+// a dwell's countdown.
+TEST(Controller, TheGoalSurvivesAHoldAndAnEStopClearsTheDwell) {
+    RailRun r;
+    ASSERT_TRUE(r.home());
+    ASSERT_TRUE(r.c().loadProgram(compileText("N10 G1 X800 F40\nN20 G4 X5\nN30 M2\n")));
+    ASSERT_TRUE(r.c().start());
+    ASSERT_TRUE(r.until([&] { return r.c().status().servo.positionMm > 100.0; }, 20));
+    EXPECT_DOUBLE_EQ(r.c().status().goalMm, 800.0);
+    r.c().hold();
+    ASSERT_TRUE(r.until([&] { return std::abs(r.c().status().servo.velocityMmS) < 1.0; }, 10));
+    EXPECT_EQ(r.c().status().state, ControllerState::Paused);
+    EXPECT_DOUBLE_EQ(r.c().status().goalMm, 800.0);
+    EXPECT_GT(r.c().status().goalMm - r.c().status().servo.positionMm, 500.0);
+    r.c().resume();
+    ASSERT_TRUE(r.until([&] { return r.c().status().state == ControllerState::Waiting; }, 60));
+    r.until([] { return false; }, 1.0);
+    EXPECT_GT(r.c().status().dwellRemainingS, 3.0);
+    r.c().emergencyStop();
+    r.step();
+    EXPECT_EQ(r.c().status().dwellRemainingS, 0.0);
+    EXPECT_TRUE(std::isnan(r.c().status().goalMm));
+    r.c().resetEmergencyStop();
+    r.step();
+    EXPECT_EQ(r.c().status().dwellRemainingS, 0.0);
+}
+
 TEST(Controller, M03LoopsUntilStopped) {
     RailRun r;
     ASSERT_TRUE(r.home());

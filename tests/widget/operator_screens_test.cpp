@@ -224,6 +224,8 @@ class OperatorScreensTest : public QObject {
         QTest::keyClick(editor, Qt::Key_F6);  // feed hold
         QTRY_VERIFY_WITH_TIMEOUT(
             status().state == ControllerState::Paused && status().pause == PauseReason::Hold, 5000);
+        // Issue 19 item 7: the Continue beside "Press Continue" works after a hold too.
+        QTRY_VERIFY(panel()->continueButton()->isEnabled());
         QTRY_VERIFY(run()->continueAction()->isEnabled());
         QTest::keyClick(editor, Qt::Key_F7);  // continue
         QTRY_VERIFY_WITH_TIMEOUT(status().state == ControllerState::Running, 5000);
