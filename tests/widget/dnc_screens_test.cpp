@@ -13,6 +13,7 @@
 #include <QLineEdit>
 #include <QModbusReply>
 #include <QModbusTcpClient>
+#include <QProcess>
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
@@ -266,6 +267,60 @@ class DncScreensTest : public QObject {
         QTRY_VERIFY_WITH_TIMEOUT(link_->status().homed && link_->status().programFinished, 60000);
         QVERIFY(std::abs(link_->status().servo.positionMm - 20.0) < 0.5);
         QVERIFY(window_->automaticAction()->isChecked());  // the screens follow
+    }
+
+    // Issue 20: E-stop at the screens while the DNC link is flooded (8 clients pipelining
+    // reads they never read, and one sending refused writes as fast as it can) trips as fast
+    // as without the flood: the screens' event loop is never held by the link.
+    void eStopWhileTheLinkIsFloodedStaysFast() {
+        const quint16 port = freePort();
+        bool ok = false;
+        serve(QStringLiteral("127.0.0.1"), QString::number(port), &ok);
+        QVERIFY(ok);
+        auto trip = [&]() -> qint64 {
+            QElapsedTimer t;
+            t.start();
+            window_->emergencyButton()->click();
+            while (link_->status().state != ControllerState::EStop && t.elapsed() < 5000) {
+                QCoreApplication::processEvents(QEventLoop::AllEvents, 1);
+                link_->poll();
+            }
+            const qint64 ms = t.elapsed();
+            link_->resetEmergencyStop();
+            QElapsedTimer reset;
+            reset.start();
+            while (link_->status().state != ControllerState::Manual && reset.elapsed() < 5000) {
+                QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
+                link_->poll();
+            }
+            return ms;
+        };
+        const qint64 quiet = trip();
+        QProcess flood;
+        flood.start(
+            QStringLiteral("/usr/bin/python3"),
+            {QStringLiteral("-c"),
+             QStringLiteral("import socket,struct,sys,time\n"
+                            "p=int(sys.argv[1]); read=struct.pack('>HHHBBHH',1,0,6,1,4,0,34)\n"
+                            "write=struct.pack('>HHHBBHH',1,0,6,1,6,6,0)\n"
+                            "cs=[socket.create_connection(('127.0.0.1',p)) for _ in range(9)]\n"
+                            "[c.setblocking(False) for c in cs]\n"
+                            "end=time.time()+6\n"
+                            "while time.time()<end:\n"
+                            "  for i,c in enumerate(cs):\n"
+                            "    try: c.send((write if i==8 else read)*64)\n"
+                            "    except (BlockingIOError, OSError): pass\n"),
+             QString::number(port)});
+        QVERIFY(flood.waitForStarted(5000));
+        QTRY_VERIFY_WITH_TIMEOUT(window_->dncLink()->clientCount() == 9, 5000);
+        QTest::qWait(500);  // the flood under way (a load, not a synchronisation)
+        const qint64 flooded = trip();
+        flood.kill();
+        flood.waitForFinished(5000);
+        qInfo("E-stop to EStop state: %lld ms quiet, %lld ms flooded",
+              static_cast<long long>(quiet), static_cast<long long>(flooded));
+        QVERIFY2(flooded < quiet + 200,
+                 qPrintable(QStringLiteral("%1 ms flooded, %2 ms quiet").arg(flooded).arg(quiet)));
     }
 
     void theMachinesEStopAndStopWinOverTheLink() {
