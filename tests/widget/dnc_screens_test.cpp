@@ -360,7 +360,8 @@ class DncScreensTest : public QObject {
         window_->runControls()->stopAction()->trigger();
         QTRY_COMPARE_WITH_TIMEOUT(link_->status().state, ControllerState::AutoIdle, 10000);
         // Stop is a controlled stop: the state is AutoIdle at once, the platform decelerates.
-        QTRY_VERIFY_WITH_TIMEOUT(std::abs(link_->status().servo.velocityMmS) < 0.05, 10000);
+        // (On a loaded machine late ticks make the hold hunt a while: 30 s, a precondition.)
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(link_->status().servo.velocityMmS) < 0.05, 30000);
         const double stoppedAt = link_->status().servo.positionMm;
         QCOMPARE(command(dnc::Command::Continue, 0, 7), quint16(dnc::CommandResult::Applied));
         QCOMPARE(link_->status().state, ControllerState::AutoIdle);
