@@ -1212,6 +1212,10 @@
         <translation>Retenido: Reanudar continúa, Parar termina el programa.</translation>
     </message>
     <message>
+        <source>Cycle start runs in Automatic: choose Command &gt; Automatic first (it homes the rail).</source>
+        <translation>El inicio de ciclo funciona en Automático: elija antes Comando &gt; Automático (referencia el riel).</translation>
+    </message>
+    <message>
         <source>Unsaved program</source>
         <translation>Programa sin guardar</translation>
     </message>

@@ -1212,6 +1212,10 @@
         <translation>Retido: Retomar continua, Parar encerra o programa.</translation>
     </message>
     <message>
+        <source>Cycle start runs in Automatic: choose Command &gt; Automatic first (it homes the rail).</source>
+        <translation>O início de ciclo funciona em Automático: escolha antes Comando &gt; Automático (ele referencia o trilho).</translation>
+    </message>
+    <message>
         <source>Unsaved program</source>
         <translation>Programa não salvo</translation>
     </message>

@@ -891,6 +891,13 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
         stopKey();
         return true;
     }
+    // F5 in Manual: cycle start is grey there; say why rather than nothing (operator.md gap 24).
+    if (key->key() == Qt::Key_F5 && !last_.automatic && !key->isAutoRepeat()) {
+        statusBar()->showMessage(tr("Cycle start runs in Automatic: choose Command > Automatic "
+                                    "first (it homes the rail)."),
+                                 8000);
+        return true;
+    }
     // The original's keys in manual mode: '<' left, '>' right - unless the operator is typing.
     const bool typing = editor || qobject_cast<QLineEdit*>(focus);
     if (typing || last_.automatic) return QMainWindow::eventFilter(watched, event);

@@ -429,6 +429,13 @@ class OperatorScreensTest : public QObject {
         QTRY_VERIFY(window_->statusBar()->currentMessage().contains(QStringLiteral("Automatic")));
         QVERIFY(questions_.isEmpty());  // nothing asked that would then do nothing
         QCOMPARE(status().state, ControllerState::Manual);
+        // F5 in Manual says why nothing starts.
+        window_->statusBar()->clearMessage();
+        QTest::keyClick(window_.get(), Qt::Key_F5);
+        QTRY_VERIFY(
+            window_->statusBar()->currentMessage().startsWith(QStringLiteral("Cycle start")));
+        QVERIFY(questions_.isEmpty());
+        QCOMPARE(status().state, ControllerState::Manual);
     }
 
     void startFromTheSelectedBlockNamesTheApproach() {
