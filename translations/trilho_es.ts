@@ -1778,8 +1778,8 @@
         <translation>Detener (F8)</translation>
     </message>
     <message>
-        <source>E-STOP (Pause)</source>
-        <translation>EMERGENCIA (Pause)</translation>
+        <source>E-STOP (Pause, F1)</source>
+        <translation>EMERGENCIA (Pausa, F1)</translation>
     </message>
     <message>
         <source>Reset E-stop</source>

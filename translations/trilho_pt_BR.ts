@@ -1778,8 +1778,8 @@
         <translation>Parar (F8)</translation>
     </message>
     <message>
-        <source>E-STOP (Pause)</source>
-        <translation>EMERGÊNCIA (Pause)</translation>
+        <source>E-STOP (Pause, F1)</source>
+        <translation>EMERGÊNCIA (Pause, F1)</translation>
     </message>
     <message>
         <source>Reset E-stop</source>

@@ -545,7 +545,7 @@ void XyMainWindow::retranslate() {
     hold_->setText(tr("Hold (F6)"));
     resume_->setText(tr("Resume (F7)"));
     stop_->setText(tr("Stop (F8)"));
-    estop_->setText(tr("E-STOP (Pause)"));
+    estop_->setText(tr("E-STOP (Pause, F1)"));
     reset_->setText(tr("Reset E-stop"));
     ack_->setText(tr("Acknowledge"));
     program_label_->setText(program_ ? tr("Program: %1").arg(programName_)
