@@ -4,7 +4,7 @@
 #include <QLibraryInfo>
 #include <QTranslator>
 
-#include "app/common/data_paths.h"
+#include "host/common/data_paths.h"
 
 namespace trilho {
 namespace {

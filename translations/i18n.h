@@ -1,6 +1,6 @@
 #pragma once
 // Installs the translator for a UI language ("en", "pt_BR", "es") from the .qm files in
-// translationsDir() (app/common/data_paths.h).
+// translationsDir() (host/common/data_paths.h).
 #include <QString>
 #include <QStringList>
 

@@ -2,8 +2,8 @@
 
 #include <QDir>
 
-#include "app/dnc/dnc_server.h"
-#include "app/dnc/shared_worker_machine.h"
+#include "host/dnc/dnc_server.h"
+#include "host/dnc/shared_worker_machine.h"
 #include "ui/machine_link.h"
 
 namespace trilho {

@@ -26,7 +26,7 @@
 #include <QScrollArea>
 #include <QShortcut>
 #include <QtConcurrent/QtConcurrentRun>
-#include "app/common/data_paths.h"
+#include "host/common/data_paths.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/modal_state.h"

@@ -13,7 +13,7 @@
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
-#include "app/dnc/program_library.h"
+#include "host/dnc/program_library.h"
 
 namespace trilho {
 namespace ui {

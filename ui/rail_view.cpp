@@ -3,7 +3,7 @@
 #include <QPainter>
 #include <algorithm>
 
-#include "hal/rail_io.h"
+#include "core/io/rail_io.h"
 
 namespace trilho {
 namespace ui {

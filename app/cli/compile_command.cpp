@@ -9,7 +9,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/diagnostics_text.h"
 #include "app/cli/program_json.h"
-#include "app/common/data_paths.h"
+#include "host/common/data_paths.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/source_file.h"

@@ -5,7 +5,7 @@
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
-#include "app/common/data_paths.h"
+#include "host/common/data_paths.h"
 #include "core/machine/machine_profile.h"
 
 namespace trilho::cli {

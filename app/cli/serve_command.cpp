@@ -18,10 +18,10 @@
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
 #include "app/cli/line_writer.h"
-#include "app/common/data_paths.h"
-#include "app/dnc/dnc_server.h"
-#include "app/dnc/virtual_machine.h"
-#include "app/dnc/worker_machine.h"
+#include "host/common/data_paths.h"
+#include "host/dnc/dnc_server.h"
+#include "host/dnc/virtual_machine.h"
+#include "host/dnc/worker_machine.h"
 
 namespace trilho::cli {
 

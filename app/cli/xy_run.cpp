@@ -9,9 +9,9 @@
 
 #include <QCoreApplication>
 
-#include "app/session/late_ticks.h"
-#include "app/session/xy_device_session.h"
-#include "app/session/xy_session.h"
+#include "host/session/late_ticks.h"
+#include "host/session/xy_device_session.h"
+#include "host/session/xy_session.h"
 #include "core/machine/serial_link_motion.h"
 
 namespace trilho::cli {

@@ -11,7 +11,7 @@
 #include <QTimer>
 #include <cstdio>
 
-#include "app/common/data_paths.h"
+#include "host/common/data_paths.h"
 #include "core/machine/machine_profile.h"
 #include "translations/i18n.h"
 #include "ui/execution_panel.h"

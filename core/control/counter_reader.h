@@ -5,7 +5,7 @@
 // mark. Plain arithmetic, no allocation.
 #include <cstdint>
 
-#include "hal/rail_io.h"
+#include "core/io/rail_io.h"
 
 namespace trilho {
 

@@ -1,7 +1,7 @@
 #pragma once
 // The position loop of one DC table axis (xy.md B), run every dcTable.samplePeriodS (5 ms).
 // Output: signed PWM percent, magnitude clamped to 0..pwmClampPercent; the sign becomes the
-// direction bit (hal/dc_table_io.h: positive = forward = bit 0, negative = reverse = bit 1).
+// direction bit (core/io/dc_table_io.h: positive = forward = bit 0, negative = reverse = bit 1).
 //  - Classic: seed 004's difference equation, u = 100 (b0 e + b1 e_prev), e the error in
 //    radians of the motor (mm x 2 pi / mmPerTurn), u in percent PWM. The seed applies it to
 //    |e| with the direction bit fixed for the whole move; here it runs on the signed error and

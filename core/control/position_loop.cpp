@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "hal/rail_io.h"
+#include "core/io/rail_io.h"
 
 namespace trilho {
 

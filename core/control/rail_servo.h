@@ -10,7 +10,7 @@
 #include "core/control/switch_filter.h"
 #include "core/machine/machine_profile.h"
 #include "core/motion/trapezoid.h"
-#include "hal/rail_io.h"
+#include "core/io/rail_io.h"
 
 namespace trilho {
 

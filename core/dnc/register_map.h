@@ -1,6 +1,6 @@
 #pragma once
 // The DNC link's Modbus register map (machine.md 3.6, issue 13), shared by the server
-// (app/dnc) and the tests. Plain C++, no Qt. docs/dnc.md is the same table for people.
+// (host/dnc) and the tests. Plain C++, no Qt. docs/dnc.md is the same table for people.
 //
 // Addresses are PDU addresses (0-based, what goes on the wire). mbpoll counts references from
 // 1 unless given -0: input register kState (2) is `mbpoll -0 -t 3 -r 2` or `mbpoll -t 3 -r 3`.

@@ -1,7 +1,7 @@
 #pragma once
 // The DC XY table's motion (xy.md B, seed 004): each move is one SyncTrapezoid from the
 // commanded point to the target, sampled every dcTable.samplePeriodS; each axis runs its
-// DcAxisLoop on the encoder count and writes PWM and direction (hal/dc_table_io.h).
+// DcAxisLoop on the encoder count and writes PWM and direction (core/io/dc_table_io.h).
 // Faults: following error (alarm 3, the larger axis error in mm), an over-current input
 // (alarm 17, the axis' PWM percent when it fired), a move that never settles (alarm 12), an
 // encoder that does not count while the drive runs its axis (alarm 16, the mm it ran).
@@ -16,7 +16,7 @@
 #include "core/machine/machine_profile.h"
 #include "core/machine/xy_motion.h"
 #include "core/motion/sync_trapezoid.h"
-#include "hal/dc_table_io.h"
+#include "core/io/dc_table_io.h"
 
 namespace trilho {
 

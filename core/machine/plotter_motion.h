@@ -16,7 +16,7 @@
 #include "core/machine/machine_profile.h"
 #include "core/machine/xy_motion.h"
 #include "core/motion/bresenham_line.h"
-#include "hal/plotter_io.h"
+#include "core/io/plotter_io.h"
 
 namespace trilho {
 

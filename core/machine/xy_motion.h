@@ -3,7 +3,7 @@
 // servo axes on a synchronized trapezoid, xy.md B) and the plotter (two steppers driven by
 // Bresenham, xy.md A). XyController runs the program over it: blocks, modes, hold, alarms.
 // Plain and steppable: tick(dtS) is one period with time passed in; the machine's I/O
-// (hal/dc_table_io.h, hal/plotter_io.h) is read and written only inside tick().
+// (core/io/dc_table_io.h, core/io/plotter_io.h) is read and written only inside tick().
 #include <cstdint>
 
 #include "core/machine/alarm.h"

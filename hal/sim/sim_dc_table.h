@@ -1,13 +1,13 @@
 #pragma once
 // The simulated DC XY table (xy.md B): two SimDcAxis behind the ATmega128 board's I/O
-// (hal/dc_table_io.h). The over-current of either motor stops Timer1, which drives both PWM
+// (core/io/dc_table_io.h). The over-current of either motor stops Timer1, which drives both PWM
 // channels, as on the seed's board. Deterministic for a seed (the seed varies each axis'
 // friction by up to +-10 %, so soaks do not see one idealised plant).
 #include <array>
 #include <cstdint>
 
 #include "core/machine/dc_table_params.h"
-#include "hal/dc_table_io.h"
+#include "core/io/dc_table_io.h"
 #include "hal/sim/sim_dc_axis.h"
 #include "hal/sim/xy_plant.h"
 

@@ -13,7 +13,7 @@
 #include "core/machine/machine_profile.h"
 #include "core/machine/xy_motion.h"  // XyPoint
 #include "core/motion/step_event.h"
-#include "hal/plotter_io.h"
+#include "core/io/plotter_io.h"
 #include "hal/sim/xy_plant.h"
 
 namespace trilho {

@@ -8,9 +8,9 @@
 #include <QTemporaryDir>
 #include <cstdint>
 
-#include "app/dnc/dnc_server.h"
-#include "app/dnc/register_store.h"
-#include "app/dnc/virtual_machine.h"
+#include "host/dnc/dnc_server.h"
+#include "host/dnc/register_store.h"
+#include "host/dnc/virtual_machine.h"
 #include "core/dnc/mbap_frame.h"
 #include "core/gcode/compiler.h"
 #include "tests/fuzz/fuzz_support.h"

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <memory>
 
-#include "app/session/sim_session.h"
+#include "host/session/sim_session.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/source_file.h"
 #include "core/machine/event_text.h"

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "app/cli/line_writer.h"
-#include "app/dnc/refusal_summary.h"
+#include "host/dnc/refusal_summary.h"
 
 namespace trilho {
 namespace {

@@ -10,9 +10,9 @@
 #include <QModbusTcpServer>
 #include <QTemporaryDir>
 
-#include "app/dnc/dnc_server.h"
-#include "app/dnc/register_store.h"
-#include "app/dnc/shared_worker_machine.h"
+#include "host/dnc/dnc_server.h"
+#include "host/dnc/register_store.h"
+#include "host/dnc/shared_worker_machine.h"
 #include "core/gcode/compiler.h"
 #include "hal/sim/sim_rail.h"
 

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <memory>
 
-#include "app/session/sim_session.h"
+#include "host/session/sim_session.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/source_file.h"
 #include "tests/support/program_run.h"

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "app/session/sim_session.h"
+#include "host/session/sim_session.h"
 #include "core/gcode/compiler.h"
 #include "core/machine/machine_profile.h"
 

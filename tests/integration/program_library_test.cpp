@@ -20,7 +20,7 @@
 #include <QTemporaryDir>
 #include <random>
 
-#include "app/dnc/program_library.h"
+#include "host/dnc/program_library.h"
 #include "core/gcode/source_file.h"
 
 namespace trilho::dnc {

@@ -7,7 +7,7 @@
 #include <random>
 #include <sstream>
 
-#include "app/session/xy_session.h"
+#include "host/session/xy_session.h"
 #include "core/gcode/compiler.h"
 #include "core/machine/dc_table_motion.h"
 #include "hal/sim/sim_dc_table.h"

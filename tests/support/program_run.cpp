@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "app/session/sim_session.h"
+#include "host/session/sim_session.h"
 
 namespace trilho::test {
 

@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "app/session/xy_session.h"
+#include "host/session/xy_session.h"
 #include "core/gcode/program.h"
 
 namespace trilho::test {

@@ -5,7 +5,7 @@
 #include <QCoreApplication>
 #include <QFileInfo>
 
-#include "app/common/data_paths.h"
+#include "host/common/data_paths.h"
 
 namespace trilho {
 namespace {

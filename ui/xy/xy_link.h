@@ -20,7 +20,7 @@
 namespace trilho {
 namespace ui {
 
-/// What the link runs: a controller paired with its plant (app/session's XY sessions).
+/// What the link runs: a controller paired with its plant (host/session's XY sessions).
 class XyRunnable {
   public:
     virtual ~XyRunnable() = default;

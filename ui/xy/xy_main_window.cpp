@@ -32,7 +32,7 @@
 #include <QRadioButton>
 #include <QSerialPortInfo>
 
-#include "app/common/data_paths.h"
+#include "host/common/data_paths.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/source_file.h"

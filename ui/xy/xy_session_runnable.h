@@ -1,10 +1,10 @@
 #pragma once
-// The XY sessions of app/session (controller and simulated plant) as the screens' link runs
+// The XY sessions of host/session (controller and simulated plant) as the screens' link runs
 // them.
 #include <memory>
 
-#include "app/session/xy_device_session.h"
-#include "app/session/xy_session.h"
+#include "host/session/xy_device_session.h"
+#include "host/session/xy_session.h"
 #include "ui/xy/xy_link.h"
 
 namespace trilho {

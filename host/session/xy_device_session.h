@@ -6,7 +6,7 @@
 #include <QString>
 #include <memory>
 
-#include "app/session/xy_session.h"
+#include "host/session/xy_session.h"
 #include "hal/serial/serial_line.h"
 
 namespace trilho {

@@ -1,4 +1,4 @@
-#include "app/dnc/refusal_summary.h"
+#include "host/dnc/refusal_summary.h"
 
 namespace trilho::dnc {
 

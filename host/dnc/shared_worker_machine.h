@@ -6,7 +6,7 @@
 // taking events away from the screens.
 #include <deque>
 
-#include "app/dnc/dnc_machine.h"
+#include "host/dnc/dnc_machine.h"
 
 namespace trilho::dnc {
 

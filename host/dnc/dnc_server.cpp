@@ -1,4 +1,4 @@
-#include "app/dnc/dnc_server.h"
+#include "host/dnc/dnc_server.h"
 
 #include <cmath>
 
@@ -7,8 +7,8 @@
 #include <QStringList>
 #include <QUrl>
 
-#include "app/dnc/modbus_tcp_listener.h"
-#include "app/dnc/register_store.h"
+#include "host/dnc/modbus_tcp_listener.h"
+#include "host/dnc/register_store.h"
 #include "core/machine/event_text.h"
 
 namespace trilho::dnc {

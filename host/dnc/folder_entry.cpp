@@ -1,4 +1,4 @@
-#include "app/dnc/folder_entry.h"
+#include "host/dnc/folder_entry.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>

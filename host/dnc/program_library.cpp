@@ -1,10 +1,10 @@
-#include "app/dnc/program_library.h"
+#include "host/dnc/program_library.h"
 
 #include <QDir>
 #include <QRegularExpression>
 #include <algorithm>
 
-#include "app/dnc/folder_entry.h"
+#include "host/dnc/folder_entry.h"
 #include "core/gcode/source_file.h"
 
 namespace trilho::dnc {

@@ -1,4 +1,4 @@
-#include "app/dnc/shared_worker_machine.h"
+#include "host/dnc/shared_worker_machine.h"
 
 namespace trilho::dnc {
 

@@ -1,4 +1,4 @@
-#include "app/session/xy_session.h"
+#include "host/session/xy_session.h"
 
 #include "core/machine/dc_table_motion.h"
 #include "core/machine/plotter_motion.h"

@@ -1,4 +1,4 @@
-#include "app/dnc/virtual_machine.h"
+#include "host/dnc/virtual_machine.h"
 
 #include "core/runtime/apply_command.h"
 

@@ -1,4 +1,4 @@
-#include "app/dnc/worker_machine.h"
+#include "host/dnc/worker_machine.h"
 
 namespace trilho::dnc {
 

@@ -1,4 +1,4 @@
-#include "app/session/xy_device_session.h"
+#include "host/session/xy_device_session.h"
 
 #include "core/machine/plotter_link_motion.h"
 #include "core/machine/table_link_motion.h"

@@ -7,8 +7,8 @@
 #include <QTimer>
 #include <vector>
 
-#include "app/dnc/dnc_machine.h"
-#include "app/session/sim_session.h"
+#include "host/dnc/dnc_machine.h"
+#include "host/session/sim_session.h"
 #include "hal/sim/fault_schedule.h"
 
 namespace trilho::dnc {

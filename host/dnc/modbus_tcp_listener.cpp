@@ -1,4 +1,4 @@
-#include "app/dnc/modbus_tcp_listener.h"
+#include "host/dnc/modbus_tcp_listener.h"
 
 #include <QScopeGuard>
 #include <QTcpServer>

@@ -4,7 +4,7 @@
 #include <memory>
 #include <optional>
 
-#include "app/dnc/dnc_machine.h"
+#include "host/dnc/dnc_machine.h"
 #include "hal/sim/sim_rail.h"
 
 namespace trilho::dnc {

@@ -1,4 +1,4 @@
-#include "app/common/data_paths.h"
+#include "host/common/data_paths.h"
 
 #include <QCoreApplication>
 #include <QDir>

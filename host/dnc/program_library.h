@@ -4,7 +4,7 @@
 // atomically only once it compiled. Only regular files inside the folder are served and
 // replaced (issue 20 item 8): an entry that is a link, a folder, a FIFO, a socket or a device
 // is refused with a message naming it, and a download never writes through a link
-// (app/dnc/folder_entry.h).
+// (host/dnc/folder_entry.h).
 #include <QString>
 #include <memory>
 #include <optional>
