@@ -26,11 +26,11 @@
 #include <QScrollArea>
 #include <QShortcut>
 #include <QtConcurrent/QtConcurrentRun>
-#include "host/common/data_paths.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/modal_state.h"
 #include "core/machine/event_text.h"
+#include "host/common/data_paths.h"
 #include "translations/i18n.h"
 #include "ui/code_editor.h"
 #include "ui/confirm_box.h"

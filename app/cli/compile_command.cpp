@@ -9,11 +9,11 @@
 #include "app/cli/commands.h"
 #include "app/cli/diagnostics_text.h"
 #include "app/cli/program_json.h"
-#include "host/common/data_paths.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/source_file.h"
 #include "core/machine/machine_profile.h"
+#include "host/common/data_paths.h"
 #include "translations/i18n.h"
 
 namespace trilho::cli {

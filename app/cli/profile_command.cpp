@@ -5,8 +5,8 @@
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
-#include "host/common/data_paths.h"
 #include "core/machine/machine_profile.h"
+#include "host/common/data_paths.h"
 
 namespace trilho::cli {
 

@@ -25,14 +25,14 @@
 #include "app/cli/diagnostics_text.h"
 #include "app/cli/run_support.h"
 #include "app/cli/xy_run.h"
-#include "host/common/data_paths.h"
-#include "host/session/sim_session.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/source_file.h"
 #include "core/machine/event_text.h"
 #include "core/runtime/servo_worker.h"
 #include "hal/sim/fault_schedule.h"
+#include "host/common/data_paths.h"
+#include "host/session/sim_session.h"
 #include "translations/i18n.h"
 
 namespace trilho::cli {

@@ -9,10 +9,10 @@
 
 #include <QCoreApplication>
 
+#include "core/machine/serial_link_motion.h"
 #include "host/session/late_ticks.h"
 #include "host/session/xy_device_session.h"
 #include "host/session/xy_session.h"
-#include "core/machine/serial_link_motion.h"
 
 namespace trilho::cli {
 

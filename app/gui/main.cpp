@@ -11,8 +11,8 @@
 #include <QTimer>
 #include <cstdio>
 
-#include "host/common/data_paths.h"
 #include "core/machine/machine_profile.h"
+#include "host/common/data_paths.h"
 #include "translations/i18n.h"
 #include "ui/execution_panel.h"
 #include "ui/machine_link.h"

@@ -8,9 +8,9 @@
 #include "core/control/counter_reader.h"
 #include "core/control/position_loop.h"
 #include "core/control/switch_filter.h"
+#include "core/io/rail_io.h"
 #include "core/machine/machine_profile.h"
 #include "core/motion/trapezoid.h"
-#include "core/io/rail_io.h"
 
 namespace trilho {
 

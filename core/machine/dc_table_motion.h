@@ -13,10 +13,10 @@
 #include <cstdint>
 
 #include "core/control/dc_axis_loop.h"
+#include "core/io/dc_table_io.h"
 #include "core/machine/machine_profile.h"
 #include "core/machine/xy_motion.h"
 #include "core/motion/sync_trapezoid.h"
-#include "core/io/dc_table_io.h"
 
 namespace trilho {
 

@@ -13,10 +13,10 @@
 #include <array>
 #include <cstdint>
 
+#include "core/io/plotter_io.h"
 #include "core/machine/machine_profile.h"
 #include "core/machine/xy_motion.h"
 #include "core/motion/bresenham_line.h"
-#include "core/io/plotter_io.h"
 
 namespace trilho {
 

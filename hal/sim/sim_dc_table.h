@@ -6,8 +6,8 @@
 #include <array>
 #include <cstdint>
 
-#include "core/machine/dc_table_params.h"
 #include "core/io/dc_table_io.h"
+#include "core/machine/dc_table_params.h"
 #include "hal/sim/sim_dc_axis.h"
 #include "hal/sim/xy_plant.h"
 

@@ -10,10 +10,10 @@
 #include <random>
 #include <vector>
 
+#include "core/io/plotter_io.h"
 #include "core/machine/machine_profile.h"
 #include "core/machine/xy_motion.h"  // XyPoint
 #include "core/motion/step_event.h"
-#include "core/io/plotter_io.h"
 #include "hal/sim/xy_plant.h"
 
 namespace trilho {

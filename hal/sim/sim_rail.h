@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <random>
 
-#include "core/machine/machine_profile.h"
 #include "core/io/rail_io.h"
+#include "core/machine/machine_profile.h"
 #include "hal/sim/fault_injection.h"
 
 namespace trilho {

@@ -7,9 +7,9 @@
 #include <QStringList>
 #include <QUrl>
 
+#include "core/machine/event_text.h"
 #include "host/dnc/modbus_tcp_listener.h"
 #include "host/dnc/register_store.h"
-#include "core/machine/event_text.h"
 
 namespace trilho::dnc {
 

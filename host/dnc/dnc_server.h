@@ -12,14 +12,14 @@
 #include <memory>
 #include <optional>
 
+#include "core/dnc/file_records.h"
+#include "core/dnc/status_registers.h"
+#include "core/dnc/write_check.h"
 #include "host/dnc/dnc_machine.h"
 #include "host/dnc/modbus_tcp_listener.h"
 #include "host/dnc/program_library.h"
 #include "host/dnc/refusal_summary.h"
 #include "host/dnc/register_store.h"
-#include "core/dnc/file_records.h"
-#include "core/dnc/status_registers.h"
-#include "core/dnc/write_check.h"
 
 class QModbusServer;
 

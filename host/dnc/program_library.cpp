@@ -4,8 +4,8 @@
 #include <QRegularExpression>
 #include <algorithm>
 
-#include "host/dnc/folder_entry.h"
 #include "core/gcode/source_file.h"
+#include "host/dnc/folder_entry.h"
 
 namespace trilho::dnc {
 

@@ -7,9 +7,9 @@
 #include <QTimer>
 #include <vector>
 
+#include "hal/sim/fault_schedule.h"
 #include "host/dnc/dnc_machine.h"
 #include "host/session/sim_session.h"
-#include "hal/sim/fault_schedule.h"
 
 namespace trilho::dnc {
 

@@ -4,8 +4,8 @@
 #include <memory>
 #include <optional>
 
-#include "host/dnc/dnc_machine.h"
 #include "hal/sim/sim_rail.h"
+#include "host/dnc/dnc_machine.h"
 
 namespace trilho::dnc {
 

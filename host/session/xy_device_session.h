@@ -6,8 +6,8 @@
 #include <QString>
 #include <memory>
 
-#include "host/session/xy_session.h"
 #include "hal/serial/serial_line.h"
+#include "host/session/xy_session.h"
 
 namespace trilho {
 

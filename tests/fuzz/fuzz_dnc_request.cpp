@@ -9,10 +9,10 @@
 #include <QTemporaryDir>
 #include <cstdint>
 
+#include "core/gcode/compiler.h"
 #include "host/dnc/dnc_server.h"
 #include "host/dnc/register_store.h"
 #include "host/dnc/virtual_machine.h"
-#include "core/gcode/compiler.h"
 #include "tests/fuzz/fuzz_input.h"
 #include "tests/fuzz/fuzz_support.h"
 

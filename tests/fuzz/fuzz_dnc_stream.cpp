@@ -8,11 +8,11 @@
 #include <QTemporaryDir>
 #include <cstdint>
 
+#include "core/dnc/mbap_frame.h"
+#include "core/gcode/compiler.h"
 #include "host/dnc/dnc_server.h"
 #include "host/dnc/register_store.h"
 #include "host/dnc/virtual_machine.h"
-#include "core/dnc/mbap_frame.h"
-#include "core/gcode/compiler.h"
 #include "tests/fuzz/fuzz_support.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

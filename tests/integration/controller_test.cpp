@@ -5,10 +5,10 @@
 #include <cmath>
 #include <memory>
 
-#include "host/session/sim_session.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/source_file.h"
 #include "core/machine/event_text.h"
+#include "host/session/sim_session.h"
 #include "translations/i18n.h"
 
 namespace trilho {

@@ -10,11 +10,11 @@
 #include <QModbusTcpServer>
 #include <QTemporaryDir>
 
+#include "core/gcode/compiler.h"
+#include "hal/sim/sim_rail.h"
 #include "host/dnc/dnc_server.h"
 #include "host/dnc/register_store.h"
 #include "host/dnc/shared_worker_machine.h"
-#include "core/gcode/compiler.h"
-#include "hal/sim/sim_rail.h"
 
 namespace trilho::dnc {
 namespace {

@@ -8,9 +8,9 @@
 #include <cstdio>
 #include <memory>
 
-#include "host/session/sim_session.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/source_file.h"
+#include "host/session/sim_session.h"
 #include "tests/support/program_run.h"
 
 namespace trilho {

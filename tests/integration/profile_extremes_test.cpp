@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "host/session/sim_session.h"
 #include "core/gcode/compiler.h"
 #include "core/machine/machine_profile.h"
+#include "host/session/sim_session.h"
 
 namespace trilho {
 namespace {

@@ -20,8 +20,8 @@
 #include <QTemporaryDir>
 #include <random>
 
-#include "host/dnc/program_library.h"
 #include "core/gcode/source_file.h"
+#include "host/dnc/program_library.h"
 
 namespace trilho::dnc {
 namespace {

@@ -7,10 +7,10 @@
 #include <random>
 #include <sstream>
 
-#include "host/session/xy_session.h"
 #include "core/gcode/compiler.h"
 #include "core/machine/dc_table_motion.h"
 #include "hal/sim/sim_dc_table.h"
+#include "host/session/xy_session.h"
 #include "tests/support/xy_run.h"
 
 namespace trilho {

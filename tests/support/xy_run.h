@@ -5,8 +5,8 @@
 #include <memory>
 #include <string>
 
-#include "host/session/xy_session.h"
 #include "core/gcode/program.h"
+#include "host/session/xy_session.h"
 
 namespace trilho::test {
 

@@ -32,13 +32,13 @@
 #include <QRadioButton>
 #include <QSerialPortInfo>
 
-#include "host/common/data_paths.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/source_file.h"
 #include "core/machine/event_text.h"
 #include "core/machine/serial_link_motion.h"
 #include "core/machine/xy_event_text.h"
+#include "host/common/data_paths.h"
 #include "ui/confirm_box.h"
 #include "ui/xy/dc_table_panel.h"
 #include "ui/xy/plotter_panel.h"
