@@ -1068,6 +1068,10 @@
         <translation>¡Seleccione el archivo primero!</translation>
     </message>
     <message>
+        <source>The program is loading: it compiles when it is loaded.</source>
+        <translation>El programa se está cargando: se compilará cuando esté cargado.</translation>
+    </message>
+    <message>
         <source>Compiling %1 MB...</source>
         <translation>Compilando %1 MB...</translation>
     </message>
@@ -1384,8 +1388,20 @@
         <translation>Ejecutar desde el bloque seleccionado</translation>
     </message>
     <message>
+        <source>A program this large is shown read-only: edit it in a text editor</source>
+        <translation>Un programa de este tamaño se muestra solo para lectura: edítelo en un editor de texto</translation>
+    </message>
+    <message>
         <source>Saves atomically: a crash never leaves half a file</source>
         <translation>Guarda de forma atómica: un fallo nunca deja medio archivo</translation>
+    </message>
+    <message>
+        <source>%1 lines: too large to edit here, shown read-only. Click a line to select its block.</source>
+        <translation>%1 líneas: demasiado grande para editar aquí, se muestra solo para lectura. Haga clic en una línea para seleccionar su bloque.</translation>
+    </message>
+    <message>
+        <source>Loading %1 (%2 MB)...</source>
+        <translation>Cargando %1 (%2 MB)...</translation>
     </message>
     <message>
         <source>No program is selected: there is no file to save to.</source>

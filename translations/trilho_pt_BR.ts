@@ -1068,6 +1068,10 @@
         <translation>Selecione o arquivo primeiro !</translation>
     </message>
     <message>
+        <source>The program is loading: it compiles when it is loaded.</source>
+        <translation>O programa está carregando: ele será compilado quando estiver carregado.</translation>
+    </message>
+    <message>
         <source>Compiling %1 MB...</source>
         <translation>Compilando %1 MB...</translation>
     </message>
@@ -1384,8 +1388,20 @@
         <translation>Executar a partir do bloco selecionado</translation>
     </message>
     <message>
+        <source>A program this large is shown read-only: edit it in a text editor</source>
+        <translation>Um programa deste tamanho é mostrado só para leitura: edite-o num editor de texto</translation>
+    </message>
+    <message>
         <source>Saves atomically: a crash never leaves half a file</source>
         <translation>Salva de forma atômica: uma falha nunca deixa meio arquivo</translation>
+    </message>
+    <message>
+        <source>%1 lines: too large to edit here, shown read-only. Click a line to select its block.</source>
+        <translation>%1 linhas: grande demais para editar aqui, mostrado só para leitura. Clique numa linha para selecionar seu bloco.</translation>
+    </message>
+    <message>
+        <source>Loading %1 (%2 MB)...</source>
+        <translation>Carregando %1 (%2 MB)...</translation>
     </message>
     <message>
         <source>No program is selected: there is no file to save to.</source>

@@ -355,6 +355,20 @@ void MainWindow::buildDocks() {
 
     // The unsaved marker: "name *" in the Program field and the dock's title.
     connect(program_, &ProgramPanel::dirtyChanged, this, [this] { showProgramName(); });
+    // A large program loads on a worker thread: a Compile or Execute asked meanwhile runs when
+    // it is loaded; a file that fails to load is no longer the selected one.
+    connect(program_, &ProgramPanel::loaded, this, [this] {
+        if (!afterLoad_) return;
+        auto next = std::move(afterLoad_);
+        afterLoad_ = nullptr;
+        next();
+    });
+    connect(program_, &ProgramPanel::loadFailed, this, [this](const QString& error) {
+        afterLoad_ = nullptr;
+        selectedFile_.clear();
+        panel_->setProgramName(QString());
+        statusBar()->showMessage(error, 8000);
+    });
     connect(program_, &ProgramPanel::startFromCursorRequested, this, [this] {
         compileEditor(true, [this](std::shared_ptr<Program> p) {
             const auto from =
@@ -494,12 +508,18 @@ void MainWindow::compileEditor(bool showInAlarms,
         return;
     }
     if (compiling_) return;  // one at a time; the buttons are grey meanwhile
+    if (program_->loading()) {
+        afterLoad_ = [this, showInAlarms, then] { compileEditor(showInAlarms, then); };
+        statusBar()->showMessage(tr("The program is loading: it compiles when it is loaded."),
+                                 8000);
+        return;
+    }
     CompileOptions options;
     options.dialect = dialect_;
     options.machine = link_.profile().limits;
     options.maxDiagnostics = 1000;  // a file of garbage lists the first thousand, counts the rest
     // What the operator sees is what runs: the editor's text, saved or not.
-    std::string text = program_->text().toStdString();
+    std::shared_ptr<const std::string> text = program_->source();
     auto finish = [this, showInAlarms, then = std::move(then)](std::shared_ptr<Program> program) {
         compiling_ = false;
         compileProgress_->hide();
@@ -522,22 +542,22 @@ void MainWindow::compileEditor(bool showInAlarms,
     // Real programs compile in a millisecond; a long file goes to a worker thread, with a busy
     // bar, so the window (and E-stop by mouse or key) never waits for it.
     constexpr std::size_t kInlineBytes = 256 * 1024;
-    if (text.size() < kInlineBytes) {
-        finish(std::make_shared<Program>(compile(text, options)));
+    if (text->size() < kInlineBytes) {
+        finish(std::make_shared<Program>(compile(*text, options)));
         return;
     }
     compiling_ = true;
     compile_->setEnabled(false);
     execute_->setEnabled(false);
     compileProgress_->show();
-    statusBar()->showMessage(tr("Compiling %1 MB...").arg(double(text.size()) / 1e6, 0, 'f', 1));
+    statusBar()->showMessage(tr("Compiling %1 MB...").arg(double(text->size()) / 1e6, 0, 'f', 1));
     auto* watcher = new QFutureWatcher<std::shared_ptr<Program>>(this);
     connect(watcher, &QFutureWatcher<std::shared_ptr<Program>>::finished, this, [watcher, finish] {
         watcher->deleteLater();
         finish(watcher->result());
     });
     watcher->setFuture(QtConcurrent::run([text = std::move(text), options] {
-        return std::make_shared<Program>(compile(text, options));
+        return std::make_shared<Program>(compile(*text, options));
     }));
 }
 

@@ -161,6 +161,7 @@ class MainWindow : public QMainWindow {
     bool defaultSizesPending_ = false;  ///< no saved layout: default dock sizes at first show
     Confirmer confirmer_;
     std::function<QString()> online_;
+    std::function<void()> afterLoad_;  ///< a compile asked while a large program loads
     QDockWidget *programDock_, *plotDock_, *jogDock_, *historyDock_, *railDock_, *simulationDock_,
         *libraryDock_;
     QMenu *fileMenu_, *commandMenu_, *optionsMenu_, *languageMenu_, *themeMenu_, *lawMenu_,

@@ -22,10 +22,12 @@
 #include <QCheckBox>
 #include <QLabel>
 #include <QSpinBox>
+#include <QStatusBar>
 #include "translations/i18n.h"
 #include "ui/code_editor.h"
 #include "ui/execution_panel.h"
 #include "ui/gauge_widget.h"
+#include "ui/large_program_view.h"
 #include "ui/machine_link.h"
 #include "ui/main_window.h"
 #include "ui/plot_panel.h"
@@ -351,6 +353,63 @@ class MainWindowTest : public QObject {
         QCOMPARE(panel()->alarms()->currentText(),
                  QStringLiteral("Compilation completed successfully"));
         QVERIFY(window_->executeAction()->isEnabled());
+    }
+
+    // Issue 19: a very long program opens read-only in a view that paints only what is on
+    // screen, loads on a worker thread (E-stop answers meanwhile), and a Compile asked while
+    // it loads runs when it is loaded.
+    void aVeryLongProgramOpensReadOnlyAndEStopAnswersWhileItLoads() {
+        QByteArray text = "G90\n";
+        for (int i = 0; i < 200000; ++i)
+            text += i == 150000 ? "G01 X9999 F40\n" : (i % 2 ? "G01 X12.5 F40\n" : "G00 X-12.5\n");
+        text += "M02\n";
+        QVERIFY(text.size() > kAsyncLoadBytes);
+        ProgramPanel* program = window_->programPanel();
+        QVERIFY(window_->selectProgram(writeProgram("huge.G", text)));
+        QVERIFY(program->loading());          // on a worker thread: the select returned at once
+        window_->compileSelected();  // waits for the load, then compiles
+        QTest::keyClick(window_.get(), Qt::Key_F1);
+        QTRY_COMPARE(status().state, ControllerState::EStop);
+        QTRY_VERIFY_WITH_TIMEOUT(!program->loading() && !window_->compiling(), 30000);
+        QVERIFY(program->readOnlyLarge());
+        LargeProgramView* view = program->largeView();
+        QVERIFY(view->isVisible());
+        QCOMPARE(view->lineCount(), 200002);
+        QCOMPARE(view->lineText(150002), QStringLiteral("G01 X9999 F40"));
+        QCOMPARE(view->markedLines(), 1);  // the one bad line, from the compile
+        QVERIFY(!program->dirty());
+        QVERIFY(program->editor()->toPlainText().isEmpty());  // no editor copy of 3 MB
+        // The diagnostics list jumps to the line; "Start from the selected block" uses it.
+        QCOMPARE(program->diagnosticsList()->count(), 1);
+        QListWidgetItem* item = program->diagnosticsList()->item(0);
+        emit program->diagnosticsList()->itemClicked(item);
+        QCOMPARE(program->cursorLine(), 150002);
+        QVERIFY(view->firstVisibleLine() <= 150002);
+        view->goToLine(7);
+        QCOMPARE(program->cursorLine(), 7);
+        // A small program afterwards is editable again.
+        QVERIFY(window_->selectProgram(writeProgram("small.G", "G00 X10\nM02\n")));
+        QVERIFY(!program->readOnlyLarge());
+        QVERIFY(program->editor()->isVisible());
+        QCOMPARE(program->editor()->toPlainText(), QStringLiteral("G00 X10\nM02\n"));
+    }
+
+    // A large file that disappears before its load ends is said, and nothing stays selected.
+    void aLargeProgramThatCannotBeReadIsSaid() {
+        QByteArray text;
+        for (int i = 0; i < 100000; ++i)
+            text += "G01 X12.5 F40\n";
+        const QString path = writeProgram("gone.G", text);
+        ProgramPanel* program = window_->programPanel();
+        QVERIFY(window_->selectProgram(path));
+        QVERIFY(program->loading());
+        QVERIFY(QFile::remove(path));  // the worker may or may not have read it already
+        QTRY_VERIFY_WITH_TIMEOUT(!program->loading(), 10000);
+        if (program->path().isEmpty()) {
+            QVERIFY(window_->statusBar()->currentMessage().contains(QStringLiteral("gone.G")));
+        } else {
+            QCOMPARE(program->largeView()->lineCount(), 100000);
+        }
     }
 
     void aHistoryThatCannotBeKeptIsSaidOnScreen() {
