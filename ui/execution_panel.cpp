@@ -27,8 +27,8 @@ QGroupBox* frame(QWidget* parent) {
 /// Tight frame layouts: the whole form fits above the plots on a 768-line screen.
 template <typename Layout>
 Layout* tight(Layout* l) {
-    l->setContentsMargins(8, 2, 8, 4);
-    l->setVerticalSpacing(3);
+    l->setContentsMargins(8, 1, 8, 2);
+    l->setVerticalSpacing(2);
     return l;
 }
 QString mm(double v, int decimals = 2) {
@@ -52,7 +52,7 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("executionPanel"));
     setAutoFillBackground(true);
     auto* grid = new QGridLayout(this);
-    grid->setContentsMargins(24, 4, 24, 4);
+    grid->setContentsMargins(24, 2, 24, 2);
     grid->setHorizontalSpacing(36);
     grid->setVerticalSpacing(2);
 
@@ -66,7 +66,7 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
         c->lineEdit()->setReadOnly(true);
         c->setMaxVisibleItems(20);
         c->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-        c->setMinimumContentsLength(40);
+        c->setMinimumContentsLength(20);  // elided; the whole line on hover and in the list
     }
     auto* top = new QGridLayout;
     top->addWidget(alarmsLabel_, 0, 0);
@@ -74,7 +74,7 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
     top->addWidget(statusLabel_, 1, 0);
     top->addWidget(status_, 1, 1);
     top->setColumnStretch(1, 1);
-    grid->addLayout(top, 0, 0, 1, 2);
+    grid->addLayout(top, 0, 0);
 
     // Modo Automático (600,1200,3975,2175).
     autoFrame_ = frame(this);
@@ -116,12 +116,14 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
         b->setFocusPolicy(Qt::NoFocus);
     }
     stop_->setFocusPolicy(Qt::NoFocus);
-    m->addWidget(leftLabel_, 0, 0, Qt::AlignCenter);
-    m->addWidget(rightLabel_, 0, 2, Qt::AlignCenter);
-    m->addWidget(left_, 1, 0, Qt::AlignCenter);
-    m->addWidget(right_, 1, 2, Qt::AlignCenter);
-    m->addWidget(stop_, 2, 0, 1, 3);
-    m->setColumnStretch(1, 1);
+    // Each caption beside its key, not above it as on the VB form: the row it saves keeps the
+    // whole form (STOP and the gauges) in view at 768 lines.
+    m->addWidget(leftLabel_, 0, 0, Qt::AlignRight | Qt::AlignVCenter);
+    m->addWidget(left_, 0, 1, Qt::AlignLeft);
+    m->addWidget(right_, 0, 3, Qt::AlignRight);
+    m->addWidget(rightLabel_, 0, 4, Qt::AlignLeft | Qt::AlignVCenter);
+    m->addWidget(stop_, 1, 0, 1, 5);
+    m->setColumnStretch(2, 1);
 
     // Dados Atuais (5520,960,3255,1575).
     dataFrame_ = frame(this);
@@ -199,7 +201,7 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
 
     grid->addWidget(autoFrame_, 1, 0, 2, 1);
     grid->addWidget(manualFrame_, 3, 0, 2, 1);
-    grid->addWidget(dataFrame_, 1, 1);
+    grid->addWidget(dataFrame_, 0, 1, 2, 1);
     grid->addWidget(controllerFrame_, 2, 1, 2, 1);
     grid->addWidget(loopFrame_, 4, 1);
     grid->setColumnStretch(0, 4);

@@ -21,6 +21,8 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSlider>
@@ -732,6 +734,23 @@ class OperatorScreensTest : public QObject {
                                             .arg(QString::fromLatin1(lang))));
             }
             QVERIFY(window_->dro()->machinePosition()->isVisible());
+            // Issue 19: at 768 lines the 1996 form (the manual keys and STOP, the gauges) is
+            // whole, without scrolling, in every language.
+            if (h >= 768) {
+                auto* form = window_->findChild<QScrollArea*>(QStringLiteral("formScroll"));
+                QVERIFY(form);
+                QVERIFY2(form->verticalScrollBar()->maximum() == 0,
+                         qPrintable(QStringLiteral("the form scrolls by %1 px at %2x%3 in %4")
+                                        .arg(form->verticalScrollBar()->maximum())
+                                        .arg(w)
+                                        .arg(h)
+                                        .arg(QString::fromLatin1(lang))));
+                QVERIFY2(form->horizontalScrollBar()->maximum() == 0,
+                         qPrintable(QStringLiteral("the form scrolls sideways by %1 px at %2x%3")
+                                        .arg(form->horizontalScrollBar()->maximum())
+                                        .arg(w)
+                                        .arg(h)));
+            }
             if (w == 1366) {
                 for (QCustomPlot* plot : window_->plots()->findChildren<QCustomPlot*>())
                     QVERIFY2(plot->height() >= 150,
