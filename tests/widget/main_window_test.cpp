@@ -366,8 +366,8 @@ class MainWindowTest : public QObject {
         QVERIFY(text.size() > kAsyncLoadBytes);
         ProgramPanel* program = window_->programPanel();
         QVERIFY(window_->selectProgram(writeProgram("huge.G", text)));
-        QVERIFY(program->loading());          // on a worker thread: the select returned at once
-        window_->compileSelected();  // waits for the load, then compiles
+        QVERIFY(program->loading());  // on a worker thread: the select returned at once
+        window_->compileSelected();   // waits for the load, then compiles
         QTest::keyClick(window_.get(), Qt::Key_F1);
         QTRY_COMPARE(status().state, ControllerState::EStop);
         QTRY_VERIFY_WITH_TIMEOUT(!program->loading() && !window_->compiling(), 30000);
@@ -499,6 +499,26 @@ class MainWindowTest : public QObject {
         QVERIFY(
             panel()->positionField()->width() >=
             panel()->positionField()->fontMetrics().horizontalAdvance(QStringLiteral("-1234.56")));
+    }
+
+    // Issue 19: a layout saved on a 1366-wide screen, opened on a 1024x768 one, fits it.
+    void aLayoutSavedAt1366FitsAt1024() {
+        window_->resize(1366, 768);
+        QTRY_COMPARE(window_->width(), 1366);
+        QTest::qWait(50);
+        window_->close();  // saves geometry and dock state
+        QVERIFY(settings_->contains(QStringLiteral("windowState")));
+        window_ = std::make_unique<MainWindow>(*link_, *settings_);
+        window_->setConfirmer([](const QString&, const QString&) { return true; });
+        window_->resize(1024, 768);
+        window_->show();
+        QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+        QTRY_VERIFY(window_->width() <= 1024 && window_->height() <= 768);
+        QVERIFY(window_->minimumSizeHint().width() <= 1024);
+        QVERIFY(window_->minimumSizeHint().height() <= 768);
+        const QRect all = window_->rect();
+        QVERIFY(all.contains(QRect(window_->statusBar()->mapTo(window_.get(), QPoint(0, 0)),
+                                   window_->statusBar()->size())));
     }
 };
 
