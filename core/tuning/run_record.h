@@ -4,6 +4,7 @@
 // metrics), both written atomically (a temporary file renamed over the old one), and read back
 // with errors that name the file, line, column and value. The CSV's first seven columns are
 // those of `trilho-cli run --trace` on the rail, so one reader takes both.
+#include <QJsonObject>
 #include <QString>
 #include <cstdint>
 #include <optional>
@@ -25,7 +26,7 @@ struct TuningGains {
 
 /// What was run. axis: 0 on the rail, 'x' or 'y' on an XY table.
 struct RunConditions {
-    MachineProfile profile;  ///< the machine as run (mass factor applied to the plant)
+    MachineProfile profile;  ///< the machine's profile; massFactor multiplies its plant's mass
     char axis = 0;
     LoopLaw law = LoopLaw::Engineered;
     TuningGains gains;
@@ -77,6 +78,13 @@ inline constexpr std::size_t kMaxRunRows = 5'000'000;
 const char* runCsvHeader();
 /// The sidecar's path for a CSV path: "run.csv" -> "run.json", "run" -> "run.json".
 QString runSidecarPath(const QString& csvPath);
+
+/// The metrics as JSON, snake case with units in the keys (rise_time_s, overshoot_pct...); NaN
+/// (not reached) is null. The CLI and the sidecar print exactly this.
+QJsonObject stepMetricsToJson(const StepMetrics& m);
+/// The gains that apply to the machine and law: kp, ki, kd (rail), kp, ki, kff (DC table,
+/// engineered), b0, b1 (DC table, classic).
+QJsonObject tuningGainsToJson(const TuningGains& g, MachineKind kind, LoopLaw law);
 
 /// The metrics of a record's channels.
 StepMetrics measureRun(const RunChannels& c, double countsPerMm);

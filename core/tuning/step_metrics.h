@@ -34,11 +34,11 @@ struct StepMetrics {
     std::string problem;  ///< why there are no metrics ("the setpoint never moves")
 
     std::size_t samples = 0;
-    double stepTimeS = 0.0;   ///< first sample whose setpoint differs from the first one
-    double startMm = 0.0;     ///< setpoint before the step
-    double targetMm = 0.0;    ///< setpoint at the last sample
-    double amplitudeMm = 0.0; ///< targetMm - startMm (signed)
-    double durationS = 0.0;   ///< last sample - step time
+    double stepTimeS = 0.0;    ///< first sample whose setpoint differs from the first one
+    double startMm = 0.0;      ///< setpoint before the step
+    double targetMm = 0.0;     ///< setpoint at the last sample
+    double amplitudeMm = 0.0;  ///< targetMm - startMm (signed)
+    double durationS = 0.0;    ///< last sample - step time
 
     // step_info (times from the step, s; NaN when not reached)
     double riseTimeS = 0.0;
@@ -51,12 +51,12 @@ struct StepMetrics {
     double peakTimeS = 0.0;
 
     // CNC additions
-    double settlingTime1CountS = 0.0;  ///< last time |e| was above one count, from the step
+    double settlingTime1CountS = 0.0;     ///< last time |e| was above one count, from the step
     double steadyStateErrorCounts = 0.0;  ///< (setpoint - position) x counts/mm at the end
-    double iae = 0.0;   ///< mm.s
-    double itae = 0.0;  ///< mm.s^2
-    double ise = 0.0;   ///< mm^2.s
-    double followingErrorMaxMm = 0.0;  ///< max |setpoint - position| over the whole run
+    double iae = 0.0;                     ///< mm.s
+    double itae = 0.0;                    ///< mm.s^2
+    double ise = 0.0;                     ///< mm^2.s
+    double followingErrorMaxMm = 0.0;     ///< max |setpoint - position| over the whole run
     double followingErrorRmsMm = 0.0;
     bool saturationKnown = false;  ///< the signals carried a saturation channel
     double saturatedTimeS = 0.0;   ///< sum of the periods that began saturated

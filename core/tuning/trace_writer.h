@@ -13,7 +13,7 @@ class CsvRow {
     /// Longest row a caller may build.
     static constexpr std::size_t kCapacity = 512;
 
-    void clear() { len_ = 0; }
+    void clear() { len_ = 0, fields_ = 0; }
     /// Fixed-point with `decimals` digits; NaN and infinities are written empty.
     CsvRow& num(double v, int decimals);
     CsvRow& integer(long long v);
@@ -26,10 +26,11 @@ class CsvRow {
 
   private:
     void comma() {
-        if (len_ > 0 && buf_[len_ - 1] != '\n') buf_[len_++] = ',';
+        if (fields_++ > 0) buf_[len_++] = ',';
     }
     char buf_[kCapacity];
     std::size_t len_ = 0;
+    std::size_t fields_ = 0;  ///< in the current row
 };
 
 /// Rounds to `decimals` decimals, as the CSV prints it: a value kept this way reads back

@@ -25,12 +25,12 @@ inline constexpr double kMaxSaturationS = 0.2;
 
 struct StepTestSpec {
     MachineProfile profile = MachineProfile::rail();  ///< rail or DC table
-    char axis = 0;                ///< DC table: 'x' or 'y'; rail: 0
-    double amplitudeMm = 10.0;    ///< signed: the sign is the direction
-    std::optional<double> startMm;  ///< default: rail centre; table: the middle of the axis
-    std::optional<LoopLaw> law;     ///< default: the profile's
+    char axis = 0;                                    ///< DC table: 'x' or 'y'; rail: 0
+    double amplitudeMm = 10.0;                        ///< signed: the sign is the direction
+    std::optional<double> startMm;     ///< default: rail centre; table: the middle of the axis
+    std::optional<LoopLaw> law;        ///< default: the profile's
     std::optional<TuningGains> gains;  ///< default: the profile's for the law
-    double massFactor = 1.0;  ///< multiplies the profile's (the loop is not told)
+    double massFactor = 1.0;           ///< multiplies the profile's (the loop is not told)
     std::uint64_t seed = 1;
     double speedFraction = 1.0;  ///< 1: a step at rapid; below: a ramp at that fraction
     double preRollS = 0.01;
@@ -42,10 +42,10 @@ struct StepTestSpec {
 
 enum class StepAbort : std::uint8_t {
     None,
-    Refused,      ///< not started: the spec is invalid or outside the soft limits
-    ServoFault,   ///< following error, soft limit, encoder... (the servo's own alarm)
-    Saturation,   ///< more than kMaxSaturationS of continuous saturation
-    Envelope,     ///< the position left the test's envelope
+    Refused,     ///< not started: the spec is invalid or outside the soft limits
+    ServoFault,  ///< following error, soft limit, encoder... (the servo's own alarm)
+    Saturation,  ///< more than kMaxSaturationS of continuous saturation
+    Envelope,    ///< the position left the test's envelope
 };
 
 struct StepTestResult {
