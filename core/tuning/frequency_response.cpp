@@ -35,7 +35,8 @@ FrequencyView railFrequencyView(const RailModel& model, const LoopGains& gains, 
     points = std::max(points, 2);
     double previousPhase = 0.0;
     for (int i = 0; i < points; ++i) {
-        const double w = wMinRadS * std::pow(wMax / wMinRadS, static_cast<double>(i) / (points - 1));
+        const double w =
+            wMinRadS * std::pow(wMax / wMinRadS, static_cast<double>(i) / (points - 1));
         const std::complex<double> l = openLoop(model, gains, theta, w);
         double phase = std::arg(l) * 180.0 / std::numbers::pi;
         if (i > 0)  // unwrap: the delay's phase falls without bound

@@ -19,8 +19,8 @@ struct BodePoint {
 };
 
 struct LoopMargins {
-    double gainMarginDb = 0.0;             ///< +inf when the phase never crosses -180 deg
-    double phaseCrossoverRadS = 0.0;       ///< 0 when none
+    double gainMarginDb = 0.0;        ///< +inf when the phase never crosses -180 deg
+    double phaseCrossoverRadS = 0.0;  ///< 0 when none
     double phaseMarginDeg = 0.0;
     double gainCrossoverRadS = 0.0;
     bool hasGainMargin = false;

@@ -17,8 +17,8 @@ struct Segment {
 // The part fitted: 2-code doublet (linear: 30 mm/s, 2 000 mm/s2 at most, below the current
 // limit at x1), then a 14-code doublet (208 mm/s: the current limit at any mass), then rest.
 // Symmetric, so it ends near where it began: at most about 45 mm away at x3.
-constexpr Segment kFitPart[] = {{2, 0.08},   {-2, 0.16}, {2, 0.08},
-                                {14, 0.15},  {-14, 0.3}, {14, 0.15}, {0, 0.06}};
+constexpr Segment kFitPart[] = {{2, 0.08},  {-2, 0.16}, {2, 0.08}, {14, 0.15},
+                                {-14, 0.3}, {14, 0.15}, {0, 0.06}};
 // The part held out: other amplitudes and timing (6, 10 and 8 codes), also ending at rest.
 constexpr Segment kValidatePart[] = {{6, 0.12}, {-10, 0.2}, {8, 0.16}, {0, 0.08}};
 /// The return: a fifth of the rapid speed, the profile's own loop.
@@ -59,7 +59,8 @@ IdentificationRecord runIdentificationExperiment(RailRig& rig) {
                     return false;
                 }
                 out.push_back({tickTime, s.positionMm, static_cast<double>(s.loop.code) - 128.0});
-                rec.maxExcursionMm = std::max(rec.maxExcursionMm, excursion(rig, rec.startMm, servo));
+                rec.maxExcursionMm =
+                    std::max(rec.maxExcursionMm, excursion(rig, rec.startMm, servo));
                 if (rec.maxExcursionMm > kIdentificationMaxExcursionMm) {
                     rec.error = QCoreApplication::translate(
                         "trilho", "the platform left the experiment's +-100 mm");
@@ -85,18 +86,18 @@ IdentificationRecord runIdentificationExperiment(RailRig& rig) {
                 ok = false;
                 break;
             }
-            if (s.inPosition &&
-                std::abs(s.positionMm - rec.startMm) <= countMm * (1.0 + 1e-9))
+            if (s.inPosition && std::abs(s.positionMm - rec.startMm) <= countMm * (1.0 + 1e-6))
                 break;
         }
         servo.hold();
     }
     rec.endMm = servo.sample().positionMm;
     rec.experimentTimeS = rig.elapsedS() - t0;
-    if (ok && std::abs(rec.endMm - rec.startMm) > countMm * (1.0 + 1e-9))
+    if (ok && std::abs(rec.endMm - rec.startMm) > countMm * (1.0 + 1e-6))
         rec.error = QCoreApplication::translate(
-                        "trilho", "the platform did not come back within one count of its start "
-                                  "(%1 mm away)")
+                        "trilho",
+                        "the platform did not come back within one count of its start "
+                        "(%1 mm away)")
                         .arg(rec.endMm - rec.startMm, 0, 'f', 3);
     return rec;
 }

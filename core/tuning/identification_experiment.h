@@ -25,11 +25,11 @@ struct IdentificationRecord {
     std::vector<IdentificationTick> validate;  ///< held out: the fit is judged on it
     double periodS = 0.001;
     double startMm = 0.0;
-    double endMm = 0.0;               ///< measured after the return
-    double maxExcursionMm = 0.0;      ///< largest |position - start| seen
-    double experimentTimeS = 0.0;     ///< machine time of the whole experiment with its return
-    bool faulted = false;             ///< the servo faulted (alarm): the record is not usable
-    QString error;                    ///< why the experiment stopped early, empty if it did not
+    double endMm = 0.0;            ///< measured after the return
+    double maxExcursionMm = 0.0;   ///< largest |position - start| seen
+    double experimentTimeS = 0.0;  ///< machine time of the whole experiment with its return
+    bool faulted = false;          ///< the servo faulted (alarm): the record is not usable
+    QString error;                 ///< why the experiment stopped early, empty if it did not
 };
 
 /// Bounds the issue sets: at most 3 s of machine time, inside +-100 mm, back within a count.

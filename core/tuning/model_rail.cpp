@@ -5,7 +5,8 @@
 namespace trilho {
 
 std::uint16_t ModelRail::readCounter() {
-    const auto counts = static_cast<std::int64_t>(std::floor(state_.positionMm * countsPerMm_ + 0.5));
+    const auto counts =
+        static_cast<std::int64_t>(std::floor(state_.positionMm * countsPerMm_ + 0.5));
     return static_cast<std::uint16_t>(static_cast<std::uint64_t>(counts) & 0xffffu);
 }
 
@@ -13,7 +14,8 @@ ModelRig::ModelRig(const RailModel& model, const MachineProfile& profile, double
     : rail_(model, profile.plant.countsPerMm, startMm),
       servo_(std::make_unique<RailServo>(profile, rail_)),
       periodS_(profile.loop.samplePeriodS) {
-    servo_->resync(std::floor(startMm * profile.plant.countsPerMm + 0.5) / profile.plant.countsPerMm);
+    servo_->resync(std::floor(startMm * profile.plant.countsPerMm + 0.5) /
+                   profile.plant.countsPerMm);
     servo_->hold();
 }
 

@@ -30,7 +30,9 @@ Verification verify(RailRig& rig, const AutotuneOptions& o) {
     return v;
 }
 
-bool passed(const MoveResult& m) { return m.inPosition && !m.faulted; }
+bool passed(const MoveResult& m) {
+    return m.inPosition && !m.faulted;
+}
 }  // namespace
 
 AutotuneResult autotuneRail(RailRig& rig, const MachineProfile& profile,
@@ -62,8 +64,8 @@ AutotuneResult autotuneRail(RailRig& rig, const MachineProfile& profile,
     r.measuredLong = measured.longMove;
     r.machineTimeS = rig.elapsedS() - t0;
     (void)start;
-    const bool longOk = !(options.longMoveMm > 0.0) ||
-                        (passed(measured.longMove) && passed(measured.longBack));
+    const bool longOk =
+        !(options.longMoveMm > 0.0) || (passed(measured.longMove) && passed(measured.longBack));
     if (!passed(measured.step) || !passed(measured.stepBack) || !longOk) {
         r.error = QCoreApplication::translate(
             "trilho", "the verification move with the tuned gains did not end in position");

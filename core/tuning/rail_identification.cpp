@@ -80,7 +80,8 @@ RailIdentification identifyRail(const IdentificationRecord& rec, const MachinePr
     RailIdentification id;
     id.experimentTimeS = rec.experimentTimeS;
     id.maxExcursionMm = rec.maxExcursionMm;
-    id.returnErrorCounts = std::abs(rec.endMm - rec.startMm) * profile.plant.countsPerMm;
+    id.returnErrorCounts =  // whole counts: both ends are counter readings
+        std::round(std::abs(rec.endMm - rec.startMm) * profile.plant.countsPerMm);
     const int w = windowFor(rec.periodS);
     if (rec.fit.size() < 50 || rec.validate.size() < 50) {
         id.error = rec.error.isEmpty()

@@ -9,10 +9,10 @@
 namespace trilho {
 
 struct RailModel {
-    double speedGainMmSPerCode = 0.0;   ///< K: steady speed per DAC code, mm/s per code
-    double timeConstantS = 0.0;         ///< tau: the amplifier speed loop's lag, s
-    double accelerationLimitMmS2 = 0.0; ///< A: peak current / moving mass, mm/s2
-    double coulombMmS2 = 0.0;           ///< c: Coulomb friction / moving mass, mm/s2
+    double speedGainMmSPerCode = 0.0;    ///< K: steady speed per DAC code, mm/s per code
+    double timeConstantS = 0.0;          ///< tau: the amplifier speed loop's lag, s
+    double accelerationLimitMmS2 = 0.0;  ///< A: peak current / moving mass, mm/s2
+    double coulombMmS2 = 0.0;            ///< c: Coulomb friction / moving mass, mm/s2
 };
 
 /// The model's state: position and speed, mm and mm/s.

@@ -27,7 +27,7 @@ MoveResult runVerificationMove(RailRig& rig, double targetMm, double timeoutS, d
             break;
         }
         const double errCounts = (s.positionMm - targetMm) * countsPerMm;
-        if (std::abs(errCounts) > 1.0 + 1e-9) lastOutside = t;
+        if (std::abs(errCounts) > 1.0 + 1e-6) lastOutside = t;
         peakBeyond = std::max(peakBeyond, errCounts * dir);
         r.maxFollowingErrorMm = std::max(r.maxFollowingErrorMm, std::abs(s.errorMm));
         if (s.inPosition && inPositionAt < 0.0) inPositionAt = t;
@@ -38,7 +38,8 @@ MoveResult runVerificationMove(RailRig& rig, double targetMm, double timeoutS, d
     r.inPositionTimeS = inPositionAt;
     r.settlingTimeS = lastOutside + rig.periodS();  // the first tick inside for good
     r.overshootCounts = peakBeyond;
-    r.overshootPct = std::abs(r.stepMm) > 0.0 ? 100.0 * peakBeyond / countsPerMm / std::abs(r.stepMm) : 0.0;
+    r.overshootPct =
+        std::abs(r.stepMm) > 0.0 ? 100.0 * peakBeyond / countsPerMm / std::abs(r.stepMm) : 0.0;
     r.finalErrorCounts = std::abs(s.positionMm - targetMm) * countsPerMm;
     r.machineTimeS = rig.elapsedS() - t0;
     return r;

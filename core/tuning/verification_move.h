@@ -10,12 +10,12 @@
 namespace trilho {
 
 struct MoveResult {
-    double stepMm = 0.0;             ///< target - start
-    double overshootCounts = 0.0;    ///< beyond the target, in the direction of the move
-    double overshootPct = 0.0;       ///< of the step
-    double settlingTimeS = 0.0;      ///< to +-1 count of the target, from the command
-    double inPositionTimeS = 0.0;    ///< the servo's in-position flag (window held 50 ms)
-    double finalErrorCounts = 0.0;   ///< |position - target| at the end of the hold
+    double stepMm = 0.0;            ///< target - start
+    double overshootCounts = 0.0;   ///< beyond the target, in the direction of the move
+    double overshootPct = 0.0;      ///< of the step
+    double settlingTimeS = 0.0;     ///< to +-1 count of the target, from the command
+    double inPositionTimeS = 0.0;   ///< the servo's in-position flag (window held 50 ms)
+    double finalErrorCounts = 0.0;  ///< |position - target| at the end of the hold
     double maxFollowingErrorMm = 0.0;
     double machineTimeS = 0.0;
     bool inPosition = false;
