@@ -1,11 +1,11 @@
 #include "ui/workbench/model_view.h"
 
+#include <qcustomplot.h>
 #include <QLabel>
 #include <QScrollArea>
 #include <QSplitter>
 #include <QVBoxLayout>
 #include <cmath>
-#include <qcustomplot.h>
 
 namespace trilho {
 namespace ui {
@@ -27,6 +27,7 @@ ModelView::ModelView(QWidget* parent) : QWidget(parent) {
     scroll->setWidget(summary_);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setMinimumWidth(380);  // the prediction table and the figures, unwrapped
     bode_ = new QCustomPlot(this);
     bode_->setObjectName(QStringLiteral("bodePlot"));
     bode_->setMinimumHeight(200);
@@ -58,15 +59,17 @@ void ModelView::showMessage(const QString& text) {
 
 QString ModelView::identificationHtml(const RailIdentification& id) const {
     const RailModel& m = id.model;
-    QString h = tr("<b>Identified model</b> (G = K / (s (tau s + 1)), acceleration limited, "
-                   "Coulomb friction)");
-    h += QStringLiteral("<br>") + tr("speed gain K = %1 mm/s per code").arg(num(m.speedGainMmSPerCode, 3));
-    h += QStringLiteral("<br>") + tr("time constant tau = %1 ms").arg(num(m.timeConstantS * 1e3, 2));
+    QString h =
+        tr("<b>Identified model</b> (G = K / (s (tau s + 1)), acceleration limited, "
+           "Coulomb friction)");
     h += QStringLiteral("<br>") +
-         tr("acceleration limit = %1 mm/s2 (mass %2 kg)").arg(num(m.accelerationLimitMmS2, 0),
-                                                               num(id.massKg, 2));
-    h += QStringLiteral("<br>") + tr("Coulomb friction = %1 mm/s2 (%2 N)")
-                                      .arg(num(m.coulombMmS2, 1), num(id.coulombN, 2));
+         tr("speed gain K = %1 mm/s per code").arg(num(m.speedGainMmSPerCode, 3));
+    h +=
+        QStringLiteral("<br>") + tr("time constant tau = %1 ms").arg(num(m.timeConstantS * 1e3, 2));
+    h += QStringLiteral("<br>") + tr("acceleration limit = %1 mm/s2 (mass %2 kg)")
+                                      .arg(num(m.accelerationLimitMmS2, 0), num(id.massKg, 2));
+    h += QStringLiteral("<br>") +
+         tr("Coulomb friction = %1 mm/s2 (%2 N)").arg(num(m.coulombMmS2, 1), num(id.coulombN, 2));
     h += QStringLiteral("<br>") +
          tr("fit on held-out velocity (NRMSE) = <b>%1 %</b>; on the fitted part %2 %; on "
             "position %3 % (flattering: position integrates)")
@@ -140,10 +143,12 @@ void ModelView::showAutotune(const AutotuneResult& r) {
             .arg(what, num(p.overshootCounts, 2), num(m.overshootCounts, 2),
                  num(p.settlingTimeS * 1e3, 1), num(m.settlingTimeS * 1e3, 1));
     };
-    h += QStringLiteral("<br><br><b>%1</b>").arg(tr("Prediction (on the model, before applying) "
-                                                    "against measurement"));
-    h += QStringLiteral("<table border=\"1\" cellpadding=\"3\" cellspacing=\"0\"><tr><th></th>"
-                        "<th>%1</th><th>%2</th><th>%3</th><th>%4</th></tr>")
+    h += QStringLiteral("<br><br><b>%1</b>")
+             .arg(tr("Prediction (on the model, before applying) "
+                     "against measurement"));
+    h += QStringLiteral(
+             "<table border=\"1\" cellpadding=\"3\" cellspacing=\"0\"><tr><th></th>"
+             "<th>%1</th><th>%2</th><th>%3</th><th>%4</th></tr>")
              .arg(tr("overshoot predicted (counts)"), tr("measured"),
                   tr("settling +-1 count predicted (ms)"), tr("measured"));
     h += row(tr("%1 mm step").arg(num(r.measuredStep.stepMm, 0)), r.predictedStep, r.measuredStep);
@@ -151,10 +156,11 @@ void ModelView::showAutotune(const AutotuneResult& r) {
         h += row(tr("%1 mm move").arg(num(r.measuredLong.stepMm, 0)), r.predictedLong,
                  r.measuredLong);
     h += QStringLiteral("</table>");
-    h += QStringLiteral("<br>") + tr("Machine time of the whole autotune: %1 s").arg(num(r.machineTimeS, 2));
+    h += QStringLiteral("<br>") +
+         tr("Machine time of the whole autotune: %1 s").arg(num(r.machineTimeS, 2));
     h += QStringLiteral("<br>") + (r.ok ? tr("<b>Autotune passed</b>: the tuned gains are in the "
-                                             "step test's boxes; File > Save tuned profile... "
-                                             "keeps them.")
+                                             "step test's boxes; Save tuned profile... keeps "
+                                             "them in a profile.")
                                         : QStringLiteral("<font color=\"#c00000\"><b>%1</b></font>")
                                               .arg(tr("Autotune failed: %1").arg(r.error)));
     summary_->setText(h);

@@ -1,21 +1,20 @@
 #include "ui/workbench/run_overlay.h"
 
+#include <qcustomplot.h>
 #include <QEvent>
 #include <QHeaderView>
 #include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <cmath>
-#include <qcustomplot.h>
 
 namespace trilho {
 namespace ui {
 
 QColor workbenchColor(int index) {
-    static const QColor colours[] = {QColor(31, 119, 180), QColor(214, 39, 40),
-                                     QColor(44, 160, 44),  QColor(255, 127, 14),
-                                     QColor(148, 103, 189), QColor(140, 86, 75),
-                                     QColor(227, 119, 194), QColor(23, 190, 207)};
+    static const QColor colours[] = {
+        QColor(31, 119, 180),  QColor(214, 39, 40), QColor(44, 160, 44),   QColor(255, 127, 14),
+        QColor(148, 103, 189), QColor(140, 86, 75), QColor(227, 119, 194), QColor(23, 190, 207)};
     return colours[static_cast<std::size_t>(index) % std::size(colours)];
 }
 
@@ -125,8 +124,8 @@ void RunOverlay::rebuild() {
         if (!run->shown) continue;
         const RunChannels& c = run->record.channels;
         const double t0 = run->metrics.ok ? run->metrics.stepTimeS : (c.size() ? c.timeS[0] : 0.0);
-        const double y0 = run->metrics.ok ? run->metrics.startMm
-                                          : (c.size() ? c.setpointMm[0] : 0.0);
+        const double y0 =
+            run->metrics.ok ? run->metrics.startMm : (c.size() ? c.setpointMm[0] : 0.0);
         QVector<double> t(static_cast<qsizetype>(c.size())), y(t.size()), sp(t.size());
         for (std::size_t i = 0; i < c.size(); ++i) {
             const auto k = static_cast<qsizetype>(i);
@@ -162,9 +161,9 @@ void RunOverlay::rebuild() {
         table_->setHorizontalHeaderItem(static_cast<int>(col), header);
         for (int row = 0; row < kMetricRows; ++row)
             table_->setItem(row, static_cast<int>(col), new QTableWidgetItem(metricText(run, row)));
-        table_->setItem(kMetricRows, static_cast<int>(col),
-                        new QTableWidgetItem(run.abortReason.isEmpty() ? tr("no")
-                                                                       : run.abortReason));
+        table_->setItem(
+            kMetricRows, static_cast<int>(col),
+            new QTableWidgetItem(run.abortReason.isEmpty() ? tr("no") : run.abortReason));
     }
 }
 

@@ -1,5 +1,6 @@
 #include "ui/workbench/terms_view.h"
 
+#include <qcustomplot.h>
 #include <QDoubleSpinBox>
 #include <QEvent>
 #include <QFormLayout>
@@ -10,7 +11,6 @@
 #include <QSlider>
 #include <QSpinBox>
 #include <QVBoxLayout>
-#include <qcustomplot.h>
 
 namespace trilho {
 namespace ui {
@@ -58,10 +58,10 @@ TermsView::TermsView(QWidget* parent) : QWidget(parent) {
     auto spin = [this](const char* name) {
         auto* s = new QDoubleSpinBox(this);
         s->setObjectName(QString::fromLatin1(name));
-        s->setDecimals(4);
+        s->setDecimals(6);  // a recorded gain, as it ran: "what if" with it is the same run
         s->setRange(0.0, 1000.0);
         s->setSingleStep(0.1);
-        s->setMinimumWidth(s->fontMetrics().horizontalAdvance(QStringLiteral("0000.00000")) + 24);
+        s->setMinimumWidth(s->fontMetrics().horizontalAdvance(QStringLiteral("0000.0000000")) + 24);
         return s;
     };
     kp_ = spin("whatIfKp");
@@ -91,8 +91,7 @@ TermsView::TermsView(QWidget* parent) : QWidget(parent) {
 
     connect(slider_, &QSlider::valueChanged, this, &TermsView::setTick);
     connect(tickBox_, &QSpinBox::valueChanged, this, &TermsView::setTick);
-    connect(whatIf_, &QPushButton::clicked, this,
-            [this] { emit whatIfRequested(whatIfGains()); });
+    connect(whatIf_, &QPushButton::clicked, this, [this] { emit whatIfRequested(whatIfGains()); });
     retranslate();
     setRun(nullptr);
 }
@@ -104,8 +103,9 @@ void TermsView::retranslate() {
     kiLabel_->setText(tr("Ki"));
     kdLabel_->setText(table ? tr("Kff") : tr("Kd"));
     whatIf_->setText(tr("Re-simulate"));
-    whatIf_->setToolTip(tr("Runs the recorded test again from the same start with these gains "
-                           "and adds it to the overlay"));
+    whatIf_->setToolTip(
+        tr("Runs the recorded test again from the same start with these gains "
+           "and adds it to the overlay"));
     plot_->xAxis->setLabel(tr("time (s)"));
     plot_->yAxis->setLabel(table ? tr("PWM (%)") : tr("DAC codes from 128"));
     showTick();
@@ -221,12 +221,12 @@ QString TermsView::equationHtml(const RunRecord& r, std::size_t k) {
                  ff = at(c.ffCodes, k), sum = at(c.sumCodes, k), cmd = at(c.commandCodes, k),
                  drive = at(c.drive, k);
     const bool saturated = k < c.saturated.size() && c.saturated[k];
-    QString h = tr("<b>Tick %1</b>, t = %2 s, period T = %3 ms").arg(k).arg(num(at(c.timeS, k), 4),
-                                                                         num(periodMs, 1));
-    h += QStringLiteral("<br>") +
-         tr("e[k] = r[k] - y[k] = %1 - %2 = <b>%3 mm</b> (%4 counts)")
-             .arg(num(at(c.setpointMm, k)), num(at(c.positionMm, k)), num(e, 4),
-                  num(e * r.conditions.countsPerMm, 1));
+    QString h = tr("<b>Tick %1</b>, t = %2 s, period T = %3 ms")
+                    .arg(k)
+                    .arg(num(at(c.timeS, k), 4), num(periodMs, 1));
+    h += QStringLiteral("<br>") + tr("e[k] = r[k] - y[k] = %1 - %2 = <b>%3 mm</b> (%4 counts)")
+                                      .arg(num(at(c.setpointMm, k)), num(at(c.positionMm, k)),
+                                           num(e, 4), num(e * r.conditions.countsPerMm, 1));
     if (isTable(r)) {
         h += QStringLiteral("<br>") +
              tr("P = Kp e = %1 x %2 = %3 %; I = %4 %; FF = Kff v_ref = %5 %")
@@ -241,14 +241,13 @@ QString TermsView::equationHtml(const RunRecord& r, std::size_t k) {
         h += QStringLiteral("<br>") +
              tr("Kp e = %1 x %2 = %3; (Kd / T) (e[k] - e[k-1]) = (%4 / %5) x (%6 - %7) = %8; Ki "
                 "sum(e) = %9")
-                 .arg(num(g.kp, 4), num(e, 4), num(p, 3), num(g.kd, 4), num(periodMs, 1),
-                      num(e, 4), num(ePrev, 4), num(d, 3), num(i, 3));
-        h += QStringLiteral("<br>") +
-             tr("V = floor(128 + %1 + 0.5) = %2 -> written <b>%3</b>%4")
-                 .arg(num(sum, 3))
-                 .arg(std::floor(128.0 + sum + 0.5))
-                 .arg(drive, 0, 'f', 0)
-                 .arg(saturated ? tr(" (clamped: saturated)") : QString());
+                 .arg(num(g.kp, 4), num(e, 4), num(p, 3), num(g.kd, 4), num(periodMs, 1), num(e, 4),
+                      num(ePrev, 4), num(d, 3), num(i, 3));
+        h += QStringLiteral("<br>") + tr("V = floor(128 + %1 + 0.5) = %2 -> written <b>%3</b>%4")
+                                          .arg(num(sum, 3))
+                                          .arg(std::floor(128.0 + sum + 0.5))
+                                          .arg(drive, 0, 'f', 0)
+                                          .arg(saturated ? tr(" (clamped: saturated)") : QString());
     } else {
         h += QStringLiteral("<br>") +
              tr("P = Kp e = %1 x %2 = %3 codes").arg(num(g.kp, 4), num(e, 4), num(p, 3));

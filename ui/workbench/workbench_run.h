@@ -14,7 +14,7 @@ namespace ui {
 struct WorkbenchRun {
     RunRecord record;
     StepMetrics metrics;
-    QString name;  ///< "1: engineered kp 1.2 ki 0.5 kd 0.02, 10 mm"
+    QString name;         ///< "1: engineered kp 1.2 ki 0.5 kd 0.02, 10 mm"
     QString abortReason;  ///< empty when the test ran to its end
     QColor color;
     bool shown = true;

@@ -15,6 +15,7 @@
 #include <QPushButton>
 #include <QSaveFile>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSpinBox>
 #include <QSplitter>
 #include <QStatusBar>
@@ -101,9 +102,10 @@ void WorkbenchWindow::build() {
     kpLabel_ = new QLabel(testBox_);
     kiLabel_ = new QLabel(testBox_);
     kdLabel_ = new QLabel(testBox_);
-    kp_ = spinBox(testBox_, "kp", 0.0, 1000.0, 4, 0.1);
-    ki_ = spinBox(testBox_, "ki", 0.0, 1000.0, 4, 0.1);
-    kd_ = spinBox(testBox_, "kd", 0.0, 1000.0, 4, 0.01);
+    // Six decimals: an autotuned gain shows (and runs) as designed, not rounded.
+    kp_ = spinBox(testBox_, "kp", 0.0, 1000.0, 6, 0.1);
+    ki_ = spinBox(testBox_, "ki", 0.0, 1000.0, 6, 0.1);
+    kd_ = spinBox(testBox_, "kd", 0.0, 1000.0, 6, 0.01);
     massLabel_ = new QLabel(testBox_);
     mass_ = spinBox(testBox_, "massFactor", 0.1, 10.0, 2, 0.5);
     mass_->setValue(1.0);
@@ -178,7 +180,10 @@ void WorkbenchWindow::build() {
     scroll->setWidget(form);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setMinimumWidth(260);
+    // Wide enough for the form: the boxes are never cut, the runs' list scrolls instead.
+    scroll->setMinimumWidth(form->sizeHint().width() +
+                            scroll->verticalScrollBar()->sizeHint().width() + 8);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
 
     overlay_ = new RunOverlay;
     terms_ = new TermsView;
@@ -236,30 +241,37 @@ void WorkbenchWindow::retranslate() {
     setWindowTitle(tr("Tuning workbench: %1").arg(profile_.name));
     testBox_->setTitle(tr("Step test (simulated plant, virtual time)"));
     axisLabel_->setText(tr("Axis"));
-    amplitudeLabel_->setText(tr("Amplitude (mm, sign = direction)"));
-    speedLabel_->setText(tr("Speed (% of rapid; below 100: a ramp)"));
+    amplitudeLabel_->setText(tr("Amplitude (mm)"));
+    amplitude_->setToolTip(tr("The sign is the direction"));
+    speedLabel_->setText(tr("Speed (% of rapid)"));
+    speed_->setToolTip(tr("100 %: a step at the rapid speed; below: a ramp"));
     lawLabel_->setText(tr("Control law"));
     law_->setItemText(0, tr("Engineered"));
     law_->setItemText(1, tr("Classic (1996)"));
     periodLabel_->setText(tr("Period (ms)"));
-    period_->setToolTip(tr("The 1996 law ran at 10 ms: its gains are per tick, so at 1 ms they "
-                           "act ten times harder (a lesson, not a setting)"));
+    period_->setToolTip(
+        tr("The 1996 law ran at 10 ms: its gains are per tick, so at 1 ms they "
+           "act ten times harder (a lesson, not a setting)"));
     kpLabel_->setText(tr("Kp"));
     kiLabel_->setText(tr("Ki"));
     kdLabel_->setText(rail_ ? tr("Kd") : tr("Kff"));
-    massLabel_->setText(tr("Mass factor (the loop is not told)"));
+    massLabel_->setText(tr("Mass factor"));
+    mass_->setToolTip(tr("The plant's moving mass times this; the loop is not told"));
     seedLabel_->setText(tr("Seed"));
     run_->setText(tr("Run step"));
     compare_->setText(tr("1996 law against engineered"));
-    compare_->setToolTip(tr("The same move with the 1996 law at its 10 ms and its gains, and "
-                            "with the engineered law"));
+    compare_->setToolTip(
+        tr("The same move with the 1996 law at its 10 ms and its gains, and "
+           "with the engineered law"));
     tuneBox_->setTitle(tr("Identification and autotune"));
     identify_->setText(tr("Identify the plant"));
-    identify_->setToolTip(tr("At most 3 s of machine time, within 100 mm, back to the start "
-                             "within a count"));
+    identify_->setToolTip(
+        tr("At most 3 s of machine time, within 100 mm, back to the start "
+           "within a count"));
     autotune_->setText(tr("Autotune"));
-    autotune_->setToolTip(tr("Identify, design (SIMC), predict, then verify with a 10 mm step "
-                             "and a 1000 mm move"));
+    autotune_->setToolTip(
+        tr("Identify, design (SIMC), predict, then verify with a 10 mm step "
+           "and a 1000 mm move"));
     saveTuned_->setText(tr("Save tuned profile..."));
     runsBox_->setTitle(tr("Runs"));
     saveRun_->setText(tr("Save run..."));
@@ -348,9 +360,8 @@ void WorkbenchWindow::setBusy(bool busy) {
 void WorkbenchWindow::addRun(StepTestResult result, const QString& label) {
     auto run = std::make_shared<WorkbenchRun>();
     const int number = nextNumber_++;
-    run->name = QStringLiteral("%1: %2").arg(number).arg(label.isEmpty()
-                                                             ? runLabel(result.record.conditions)
-                                                             : label);
+    run->name = QStringLiteral("%1: %2").arg(number).arg(
+        label.isEmpty() ? runLabel(result.record.conditions) : label);
     run->abortReason = result.abortReason;
     run->metrics = result.metrics;
     run->record = std::move(result.record);
@@ -421,14 +432,13 @@ void WorkbenchWindow::whatIfRun(const TuningGains& gains) {
     const int index = selected_;
     if (busy_ || index < 0 || index >= static_cast<int>(runs_.size())) return;
     const RunConditions conditions = runs_[static_cast<std::size_t>(index)]->record.conditions;
-    inBackground<StepTestResult>([conditions, gains] { return whatIf(conditions, gains); },
-                                 [this, index](StepTestResult r) {
-                                     const QString label =
-                                         tr("what if (from run %1): %2")
-                                             .arg(index + 1)
-                                             .arg(runLabel(r.record.conditions));
-                                     addRun(std::move(r), label);
-                                 });
+    inBackground<StepTestResult>(
+        [conditions, gains] { return whatIf(conditions, gains); },
+        [this, index](StepTestResult r) {
+            const QString label =
+                tr("what if (from run %1): %2").arg(index + 1).arg(runLabel(r.record.conditions));
+            addRun(std::move(r), label);
+        });
 }
 
 void WorkbenchWindow::identify() {
@@ -447,18 +457,18 @@ void WorkbenchWindow::identify() {
             Out o;
             o.id = identifyRail(rec, profile);
             if (!rec.error.isEmpty() && o.id.error.isEmpty()) o.id.error = rec.error;
-            o.frequency = railFrequencyView(o.id.model, profile.loop.engineered,
-                                            profile.loop.samplePeriodS);
+            o.frequency =
+                railFrequencyView(o.id.model, profile.loop.engineered, profile.loop.samplePeriodS);
             return o;
         },
         [this, profile](Out o) {
             model_->showIdentification(o.id, o.frequency, profile.loop.engineered);
             tabs_->setCurrentWidget(model_);
-            statusBar()->showMessage(
-                o.id.accepted ? tr("Identified: fit %1 % on held-out velocity.")
-                                    .arg(o.id.fitVelocityPct, 0, 'f', 1)
-                              : tr("Model refused: %1").arg(o.id.error),
-                10000);
+            statusBar()->showMessage(o.id.accepted
+                                         ? tr("Identified: fit %1 % on held-out velocity.")
+                                               .arg(o.id.fitVelocityPct, 0, 'f', 1)
+                                         : tr("Model refused: %1").arg(o.id.error),
+                                     10000);
         });
 }
 
@@ -487,10 +497,10 @@ void WorkbenchWindow::autotune() {
                 profile_.motion = r.tuned.motion;  // the planning acceleration it chose
                 profile_.loop.engineered = r.design.gains;
             }
-            statusBar()->showMessage(r.ok ? tr("Autotune passed in %1 s of machine time.")
-                                                .arg(r.machineTimeS, 0, 'f', 2)
-                                          : tr("Autotune failed: %1").arg(r.error),
-                                     10000);
+            statusBar()->showMessage(
+                r.ok ? tr("Autotune passed in %1 s of machine time.").arg(r.machineTimeS, 0, 'f', 2)
+                     : tr("Autotune failed: %1").arg(r.error),
+                10000);
         });
 }
 
@@ -531,8 +541,8 @@ void WorkbenchWindow::saveSelectedRun() {
         statusBar()->showMessage(tr("No run is selected."), 8000);
         return;
     }
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save run"), QString(),
-                                                      tr("Run records (*.csv)"));
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Save run"), QString(), tr("Run records (*.csv)"));
     if (path.isEmpty()) return;
     QString error;
     if (!saveRun(index, path, &error))
