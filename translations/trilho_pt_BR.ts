@@ -1,5 +1,4 @@
-<?xml version="1.0" encoding="utf-8"?>
-<!DOCTYPE TS>
+<?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="pt_BR">
 <context>
     <name>Controller</name>
@@ -28,7 +27,7 @@
         <translation>%1: Mudança do zero do sistema para x=%2.</translation>
     </message>
     <message>
-        <source>%1: Return to the rail&apos;s absolute zero.</source>
+        <source>%1: Return to the rail's absolute zero.</source>
         <translation>%1: Retorno para zero absoluto do trilho.</translation>
     </message>
     <message>
@@ -284,14 +283,14 @@
         <translation>Referência concluída: na origem.</translation>
     </message>
     <message>
-        <source>%1: Return to the machine&apos;s absolute zero.</source>
+        <source>%1: Return to the machine's absolute zero.</source>
         <translation>%1: Retorno ao zero absoluto da máquina.</translation>
     </message>
 </context>
 <context>
     <name>Diagnostic</name>
     <message>
-        <source>every line must start with n (found &apos;%2&apos;)</source>
+        <source>every line must start with n (found '%2')</source>
         <translation>Erro: Toda linha deve iniciar com n.</translation>
     </message>
     <message>
@@ -303,7 +302,7 @@
         <translation>Erro: Seqüência n sozinha %1</translation>
     </message>
     <message>
-        <source>separating spaces required %1 (found &apos;%2&apos;)</source>
+        <source>separating spaces required %1 (found '%2')</source>
         <translation>Erro: Espaços para separação requeridos %1</translation>
     </message>
     <message>
@@ -363,36 +362,36 @@
         <translation>Erro: Caracter inválido ou g00 não requer f %1</translation>
     </message>
     <message>
-        <source>invalid character %1: &apos;%2&apos;</source>
-        <translation>Erro: Caracter inválido %1 (&apos;%2&apos;)</translation>
+        <source>invalid character %1: '%2'</source>
+        <translation>Erro: Caracter inválido %1 ('%2')</translation>
     </message>
     <message>
-        <source>invalid character %1: malformed number &apos;%2&apos;</source>
-        <translation>Erro: Caracter inválido %1 (número malformado &apos;%2&apos;)</translation>
+        <source>invalid character %1: malformed number '%2'</source>
+        <translation>Erro: Caracter inválido %1 (número malformado '%2')</translation>
     </message>
     <message>
-        <source>invalid character %1: &apos;%2&apos; must have exactly %3 digits</source>
-        <translation>Erro: Caracter inválido %1 (&apos;%2&apos; deve ter %3 dígitos)</translation>
+        <source>invalid character %1: '%2' must have exactly %3 digits</source>
+        <translation>Erro: Caracter inválido %1 ('%2' deve ter %3 dígitos)</translation>
     </message>
     <message>
         <source>invalid character %1: comment not closed</source>
         <translation>Erro: Caracter inválido %1 (comentário não fechado)</translation>
     </message>
     <message>
-        <source>invalid character %1: word &apos;%2&apos; repeated</source>
-        <translation>Erro: Caracter inválido %1 (comando &apos;%2&apos; repetido)</translation>
+        <source>invalid character %1: word '%2' repeated</source>
+        <translation>Erro: Caracter inválido %1 (comando '%2' repetido)</translation>
     </message>
     <message>
-        <source>invalid character %1: n must be the first word (&apos;%2&apos;)</source>
-        <translation>Erro: Caracter inválido %1 (n deve ser o primeiro comando: &apos;%2&apos;)</translation>
+        <source>invalid character %1: n must be the first word ('%2')</source>
+        <translation>Erro: Caracter inválido %1 (n deve ser o primeiro comando: '%2')</translation>
     </message>
     <message>
-        <source>invalid value after m03 %1: &apos;%2&apos; is not a block number</source>
-        <translation>Erro: Caracter inválido após m03 %1 (&apos;%2&apos;)</translation>
+        <source>invalid value after m03 %1: '%2' is not a block number</source>
+        <translation>Erro: Caracter inválido após m03 %1 ('%2')</translation>
     </message>
     <message>
-        <source>invalid character %1: number &apos;%2&apos; longer than %3 digits</source>
-        <translation>Erro: Caracter inválido %1 (número &apos;%2&apos; com mais de %3 dígitos)</translation>
+        <source>invalid character %1: number '%2' longer than %3 digits</source>
+        <translation>Erro: Caracter inválido %1 (número '%2' com mais de %3 dígitos)</translation>
     </message>
     <message>
         <source>program requires m02 (END) at the end</source>
@@ -415,12 +414,12 @@
         <translation>Erro: Eixo %2 %1 não existe nesta máquina</translation>
     </message>
     <message>
-        <source>block number &apos;%2&apos; too large %1: at most %3</source>
-        <translation>Erro: Número de bloco &apos;%2&apos; grande demais %1 (no máximo %3)</translation>
+        <source>block number '%2' too large %1: at most %3</source>
+        <translation>Erro: Número de bloco '%2' grande demais %1 (no máximo %3)</translation>
     </message>
     <message>
-        <source>value &apos;%2&apos; too large %1: at most %3 in magnitude</source>
-        <translation>Erro: Valor &apos;%2&apos; grande demais %1 (no máximo %3 em módulo)</translation>
+        <source>value '%2' too large %1: at most %3 in magnitude</source>
+        <translation>Erro: Valor '%2' grande demais %1 (no máximo %3 em módulo)</translation>
     </message>
     <message>
         <source>in block n=%1</source>
@@ -441,6 +440,41 @@
     <message>
         <source>... and %1 more diagnostic(s) not listed</source>
         <translation>... e mais %1 diagnóstico(s) não listado(s)</translation>
+    </message>
+</context>
+<context>
+    <name>trilho</name>
+    <message>
+        <source>the servo refused the drive (a limit or an end switch)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>the servo faulted</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>the platform left the experiment's +-100 mm</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>the platform did not come back within one count of its start (%1 mm away)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>%1 %2 held to %3</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>the verification move with the tuned gains did not end in position</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>the experiment recorded too little</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>the model fits the held-out run at %1 % on velocity, under %2 %</source>
+        <translation type="unfinished" />
     </message>
 </context>
 <context>
@@ -508,19 +542,19 @@
         <translation>Pasta dos programas</translation>
     </message>
     <message>
-        <source>The address &apos;%1&apos; is not an IP address: write a numeric address such as 127.0.0.1 (this computer only), or 0.0.0.0 for every network interface.</source>
-        <translation>O endereço &apos;%1&apos; não é um endereço IP: escreva um endereço numérico como 127.0.0.1 (só este computador) ou 0.0.0.0 para todas as interfaces de rede.</translation>
+        <source>The address '%1' is not an IP address: write a numeric address such as 127.0.0.1 (this computer only), or 0.0.0.0 for every network interface.</source>
+        <translation>O endereço '%1' não é um endereço IP: escreva um endereço numérico como 127.0.0.1 (só este computador) ou 0.0.0.0 para todas as interfaces de rede.</translation>
     </message>
     <message>
-        <source>The port must be a whole number from 1 to 65535 (got &apos;%1&apos;); Modbus TCP&apos;s own is 502, which needs administrator rights: 1502 does not.</source>
-        <translation>A porta deve ser um número inteiro de 1 a 65535 (recebido &apos;%1&apos;); a do Modbus TCP é 502, que exige direitos de administrador: 1502 não.</translation>
+        <source>The port must be a whole number from 1 to 65535 (got '%1'); Modbus TCP's own is 502, which needs administrator rights: 1502 does not.</source>
+        <translation>A porta deve ser um número inteiro de 1 a 65535 (recebido '%1'); a do Modbus TCP é 502, que exige direitos de administrador: 1502 não.</translation>
     </message>
     <message>
         <source>Modbus RTU needs the serial device, e.g. /dev/ttyUSB0 (or turn RTU off).</source>
         <translation>O Modbus RTU precisa do dispositivo serial, p. ex. /dev/ttyUSB0 (ou desligue o RTU).</translation>
     </message>
     <message>
-        <source>Warning: %1 can be reached from other computers. Modbus has no password and no encryption: anyone on that network can read this machine and, while Remote is on, change its gains and run programs. Use 127.0.0.1 unless the cell&apos;s network is closed.</source>
+        <source>Warning: %1 can be reached from other computers. Modbus has no password and no encryption: anyone on that network can read this machine and, while Remote is on, change its gains and run programs. Use 127.0.0.1 unless the cell's network is closed.</source>
         <translation>Atenção: %1 pode ser alcançado de outros computadores. O Modbus não tem senha nem criptografia: qualquer um nessa rede pode ler esta máquina e, com o Remoto ligado, mudar seus ganhos e executar programas. Use 127.0.0.1, a menos que a rede da célula seja fechada.</translation>
     </message>
     <message>
@@ -532,7 +566,7 @@
         <translation>Enlace DNC (Modbus)</translation>
     </message>
     <message>
-        <source>Serve the DNC link (Modbus) for the cell&apos;s supervisor</source>
+        <source>Serve the DNC link (Modbus) for the cell's supervisor</source>
         <translation>Servir o enlace DNC (Modbus) para o supervisor da célula</translation>
     </message>
     <message>
@@ -565,7 +599,7 @@
     </message>
     <message>
         <source>Program library</source>
-        <translation>Biblioteca de programas</translation>
+        <translation>Biblioteca</translation>
     </message>
     <message>
         <source>Folder:</source>
@@ -865,7 +899,7 @@
 <context>
     <name>trilho::ui::MachineLink</name>
     <message>
-        <source>Command not taken: the servo thread&apos;s queue is full. Press again.</source>
+        <source>Command not taken: the servo thread's queue is full. Press again.</source>
         <translation>Comando não aceito: a fila do servo está cheia. Pressione de novo.</translation>
     </message>
     <message>
@@ -992,6 +1026,10 @@
         <translation>&amp;Restaurar disposição</translation>
     </message>
     <message>
+        <source>Tuning &amp;workbench...</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
         <source>&amp;Help</source>
         <translation>Aj&amp;uda</translation>
     </message>
@@ -1005,7 +1043,7 @@
     </message>
     <message>
         <source>Jog</source>
-        <translation>Avanço manual</translation>
+        <translation>Jog</translation>
     </message>
     <message>
         <source>History</source>
@@ -1021,7 +1059,7 @@
     </message>
     <message>
         <source>Program library</source>
-        <translation>Biblioteca de programas</translation>
+        <translation>Biblioteca</translation>
     </message>
     <message>
         <source>&amp;DNC link...</source>
@@ -1032,7 +1070,7 @@
         <translation>&amp;Remoto (DNC)</translation>
     </message>
     <message>
-        <source>Allow the cell&apos;s supervisor to write and command over the DNC link (%1). Off at every start.</source>
+        <source>Allow the cell's supervisor to write and command over the DNC link (%1). Off at every start.</source>
         <translation>Permite ao supervisor da célula escrever e comandar pelo enlace DNC (%1). Desligado a cada início.</translation>
     </message>
     <message>
@@ -1208,7 +1246,7 @@
         <translation>Alarme: leia-o em Alarmes e Reconheça.</translation>
     </message>
     <message>
-        <source>The rail&apos;s position is not known: Execute (or Automatic) homes it first.</source>
+        <source>The rail's position is not known: Execute (or Automatic) homes it first.</source>
         <translation>A posição do trilho não é conhecida: Executar (ou Automático) faz o referenciamento antes.</translation>
     </message>
     <message>
@@ -1246,6 +1284,109 @@
     <message>
         <source>Set in the Simulation dock; Clear all there puts the rail right.</source>
         <translation>Definida no painel Simulação; Limpar tudo lá corrige o trilho.</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::ModelView</name>
+    <message>
+        <source>Identify or autotune the rail to see its model, its fit and its Bode plot.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>&lt;b&gt;Identified model&lt;/b&gt; (G = K / (s (tau s + 1)), acceleration limited, Coulomb friction)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>speed gain K = %1 mm/s per code</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>time constant tau = %1 ms</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>acceleration limit = %1 mm/s2 (mass %2 kg)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Coulomb friction = %1 mm/s2 (%2 N)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>fit on held-out velocity (NRMSE) = &lt;b&gt;%1 %&lt;/b&gt;; on the fitted part %2 %; on position %3 % (flattering: position integrates)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>experiment: %1 s of machine time, at most %2 mm from the start, back within %3 counts</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Model refused: %1</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>&lt;b&gt;Margins&lt;/b&gt;: gain %1 dB at %2 rad/s; phase %3 deg at %4 rad/s</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>infinite</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>|L| (dB)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>phase (deg)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>frequency (rad/s)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Open loop with the profile's engineered gains (Kp %1, Ki %2, Kd %3):</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>&lt;b&gt;Design&lt;/b&gt; (SIMC, closed-loop time constant %1 ms, delay %2 ms): Kp %3, Ki %4, Kd %5; planning acceleration %6 mm/s2</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Prediction (on the model, before applying) against measurement</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>overshoot predicted (counts)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>measured</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>settling +-1 count predicted (ms)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>%1 mm step</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>%1 mm move</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Machine time of the whole autotune: %1 s</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>&lt;b&gt;Autotune passed&lt;/b&gt;: the tuned gains are in the step test's boxes; Save tuned profile... keeps them in a profile.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Autotune failed: %1</source>
+        <translation type="unfinished" />
     </message>
 </context>
 <context>
@@ -1408,8 +1549,8 @@
         <translation>Nenhum programa selecionado: não há arquivo onde salvar.</translation>
     </message>
     <message>
-        <source>cannot save &apos;%1&apos;: %2</source>
-        <translation>não foi possível salvar &apos;%1&apos;: %2</translation>
+        <source>cannot save '%1': %2</source>
+        <translation>não foi possível salvar '%1': %2</translation>
     </message>
 </context>
 <context>
@@ -1464,6 +1605,85 @@
     <message>
         <source>Feed override %1 %</source>
         <translation>Correção de avanço %1 %</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::RunOverlay</name>
+    <message>
+        <source>Rise time 10-90 % (ms)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Settling time 2 % (ms)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Settling time +-1 count (ms)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Overshoot (%)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Peak (mm)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Peak time (ms)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Steady-state error (counts)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>IAE (mm.s)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>ITAE (mm.s2)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>ISE (mm2.s)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Following error max (mm)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Following error RMS (mm)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Time saturated (ms)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>no step</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>not reached</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>time from the step (s)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>displacement (mm)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Parado</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation type="unfinished" />
     </message>
 </context>
 <context>
@@ -1571,7 +1791,7 @@
         <translation>Escola Politécnica</translation>
     </message>
     <message>
-        <source>Numerical Control for the robot&apos;s rail</source>
+        <source>Numerical Control for the robot's rail</source>
         <translation>Comando Numérico para trilho de comando do robô</translation>
     </message>
     <message>
@@ -1597,6 +1817,372 @@
     <message>
         <source>Stepper XY plotter</source>
         <translation>Plotter XY com motores de passo</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::TermsView</name>
+    <message>
+        <source>What if: the same run with other gains</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Kp</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Ki</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Kff</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Kd</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Re-simulate</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Runs the recorded test again from the same start with these gains and adds it to the overlay</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>PWM (%)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>DAC codes from 128</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>This run has no loop terms (a trace of a program): record a step test to see them.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Run a step test, then choose its column in the table.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>P</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>I</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>D</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>FF</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>sum before the clamp</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>drive written</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>&lt;b&gt;Tick %1&lt;/b&gt;, t = %2 s, period T = %3 ms</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>e[k] = r[k] - y[k] = %1 - %2 = &lt;b&gt;%3 mm&lt;/b&gt; (%4 counts)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>P = Kp e = %1 x %2 = %3 %; I = %4 %; FF = Kff v_ref = %5 %</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>u = P + I + FF = &lt;b&gt;%1 %&lt;/b&gt; -&gt; clamp -&gt; %2 % -&gt; PWM written %3 %</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>The 1996 law: V[k] = floor(128 + Kp e[k] + (Kd / T) (e[k] - e[k-1]) + Ki sum(e) + 0.5), T in ms, clamped by M = F / 100</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Kp e = %1 x %2 = %3; (Kd / T) (e[k] - e[k-1]) = (%4 / %5) x (%6 - %7) = %8; Ki sum(e) = %9</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>V = floor(128 + %1 + 0.5) = %2 -&gt; written &lt;b&gt;%3&lt;/b&gt;%4</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source> (clamped: saturated)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>P = Kp e = %1 x %2 = %3 codes</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>I[k] = I[k-1] + Ki T e[k] = %1 codes (Ki = %2; held while the output is saturated: anti-windup)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>D = -Kd dy/dt (on the measurement, filtered: no kick when the setpoint jumps) = -%1 x %2 = %3 codes</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>FF = (v_ref + tau a_ref) x 127 / v_max + Kd v_ref = %1 codes (v_ref = %2 mm/s)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>u = P + I + D + FF = &lt;b&gt;%1 codes&lt;/b&gt; -&gt; clamp and slew limit -&gt; %2 -&gt; DAC = round(128 + u + carried fraction) = &lt;b&gt;%3&lt;/b&gt;%4</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source> (saturated)</source>
+        <translation type="unfinished" />
+    </message>
+</context>
+<context>
+    <name>trilho::ui::WorkbenchWindow</name>
+    <message>
+        <source>Tuning workbench: %1</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Step test (simulated plant, virtual time)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Amplitude (mm)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>The sign is the direction</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Speed (% of rapid)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>100 %: a step at the rapid speed; below: a ramp</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Control law</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Engineered</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Classic (1996)</source>
+        <translation>Clássico (1996)</translation>
+    </message>
+    <message>
+        <source>Period (ms)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>The 1996 law ran at 10 ms: its gains are per tick, so at 1 ms they act ten times harder (a lesson, not a setting)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Kp</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Ki</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Kd</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Kff</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Mass factor</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>The plant's moving mass times this; the loop is not told</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Run step</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>1996 law against engineered</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>The same move with the 1996 law at its 10 ms and its gains, and with the engineered law</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Identification and autotune</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Identify the plant</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>At most 3 s of machine time, within 100 mm, back to the start within a count</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Autotune</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Identify, design (SIMC), predict, then verify with a 10 mm step and a 1000 mm move</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Save tuned profile...</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Runs</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Save run...</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Load run...</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Responses</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>P, I, D terms</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Model</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>1996</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>engineered</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>%1 %2, %3 mm at %4 ms, mass x%5</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Running in virtual time...</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Run %1 done.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Run %1 stopped: %2</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>what if (from run %1): %2</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Identified: fit %1 % on held-out velocity.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Model refused: %1</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Autotune passed in %1 s of machine time.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Autotune failed: %1</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>%1: the run has no samples</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>No run is selected.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Save run</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Run records (*.csv)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Saved %1 and %2.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Load run</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Run records and traces (*.csv)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Save tuned profile</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>Machine profiles (*.json)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>cannot save '%1': %2</source>
+        <translation>não foi possível salvar '%1': %2</translation>
+    </message>
+    <message>
+        <source>Saved %1: trilho-cli run --machine %1 uses it.</source>
+        <translation type="unfinished" />
     </message>
 </context>
 <context>
@@ -1702,7 +2288,7 @@
         <translation>Início de ciclo</translation>
     </message>
     <message>
-        <source>Run %1? %2The machine travels at full speed from (%3, %4) mm to the program&apos;s start, then runs it.</source>
+        <source>Run %1? %2The machine travels at full speed from (%3, %4) mm to the program's start, then runs it.</source>
         <translation>Executar %1? %2A máquina vai em velocidade máxima de (%3, %4) mm até o início do programa, e então o executa.</translation>
     </message>
     <message>

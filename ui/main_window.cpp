@@ -50,6 +50,7 @@
 #include "ui/run_controls.h"
 #include "ui/select_file_dialog.h"
 #include "ui/simulation_panel.h"
+#include "ui/workbench/workbench_window.h"
 
 namespace trilho {
 namespace ui {
@@ -251,6 +252,9 @@ void MainWindow::buildMenus() {
     connect(remote_, &QAction::toggled, dnc_, &DncLink::setRemote);
     viewMenu_ = menuBar()->addMenu(QString());
     resetLayout_ = viewMenu_->addAction(QString(), this, &MainWindow::resetLayout);
+    workbench_ = viewMenu_->addAction(QString(), this, &MainWindow::openWorkbench);
+    workbench_->setObjectName(QStringLiteral("workbenchAction"));
+    workbench_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_W));
     viewMenu_->addSeparator();
     helpMenu_ = menuBar()->addMenu(QString());
     keys_ = helpMenu_->addAction(QString(), this, [this] {
@@ -434,6 +438,7 @@ void MainWindow::retranslate() {
     classicDialect_->setText(tr("Classic (1996)"));
     viewMenu_->setTitle(tr("&Windows"));
     resetLayout_->setText(tr("&Reset layout"));
+    workbench_->setText(tr("Tuning &workbench..."));
     helpMenu_->setTitle(tr("&Help"));
     keys_->setText(tr("&Keys"));
     showProgramName();
@@ -678,6 +683,18 @@ void MainWindow::showProgramName() {
     if (!selectedFile_.isEmpty())
         panel_->setProgramName(QFileInfo(selectedFile_).fileName() + mark);
     programDock_->setWindowTitle(tr("Program") + mark);
+}
+
+void MainWindow::openWorkbench() {
+    // A window of its own, on a copy of the machine's profile: its tests run on a simulated
+    // plant in virtual time and never move the machine.
+    if (!workbenchWindow_) {
+        workbenchWindow_ = new WorkbenchWindow(link_.profile(), this);
+        workbenchWindow_->setWindowFlag(Qt::Window);
+    }
+    workbenchWindow_->show();
+    workbenchWindow_->raise();
+    workbenchWindow_->activateWindow();
 }
 
 void MainWindow::resetLayout() {

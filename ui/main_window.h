@@ -36,6 +36,7 @@ class ProgramLibraryPanel;
 class ProgramPanel;
 class RailView;
 class SimulationPanel;
+class WorkbenchWindow;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -74,6 +75,9 @@ class MainWindow : public QMainWindow {
     QLabel* estopBanner() const { return estopBanner_; }
     QAction* keysAction() const { return keys_; }
     QAction* resetLayoutAction() const { return resetLayout_; }
+    QAction* workbenchAction() const { return workbench_; }
+    WorkbenchWindow* workbench() const { return workbenchWindow_; }
+    void openWorkbench();
     QMenu* fileMenu() const { return fileMenu_; }
     /// The status bar's next step after an alarm or a lost reference (empty when none).
     QString nextStepText() const;
@@ -167,6 +171,8 @@ class MainWindow : public QMainWindow {
     QMenu *fileMenu_, *commandMenu_, *optionsMenu_, *languageMenu_, *themeMenu_, *lawMenu_,
         *dialectMenu_, *viewMenu_, *helpMenu_;
     QAction *select_, *exit_, *manual_, *automatic_, *compile_, *execute_, *keys_, *resetLayout_;
+    QAction* workbench_ = nullptr;
+    WorkbenchWindow* workbenchWindow_ = nullptr;
     QAction *classicTheme_, *systemTheme_, *classicLaw_, *engineeredLaw_, *standardDialect_,
         *classicDialect_;
     QActionGroup* languages_;

@@ -19,11 +19,13 @@
 #include "ui/main_window.h"
 #include "ui/start_screen.h"
 #include "ui/theme.h"
+#include "ui/workbench/workbench_window.h"
 #include "ui/xy/xy_main_window.h"
 #include "ui/xy/xy_session_runnable.h"
 
 #include <functional>
 #include <string_view>
+#include <utility>
 
 using namespace trilho;
 
@@ -65,6 +67,11 @@ struct Options {
         QStringLiteral("port"),
         QStringLiteral("An XY machine's board on this serial port (default: simulated)."),
         QStringLiteral("DEV")};
+    QCommandLineOption workbench{
+        QStringLiteral("workbench"),
+        QStringLiteral("Open the rail's tuning workbench and run in it the 1996 law against the "
+                       "engineered one and an autotune (a class demonstration; with "
+                       "--screenshot the workbench is saved).")};
     QCommandLineOption baud{QStringLiteral("baud"),
                             QStringLiteral("Bit rate of --port (default: the board's)."),
                             QStringLiteral("N")};
@@ -77,7 +84,7 @@ struct Options {
         parser.addHelpOption();
         parser.addVersionOption();
         parser.addOptions({lang, theme, program, noStart, settings, size, automatic, run, shot,
-                           shotAfter, quit, machine, port, baud});
+                           shotAfter, quit, machine, port, baud, workbench});
     }
 };
 
@@ -306,6 +313,16 @@ int main(int argc, char* argv[]) {
             return;
         }
         ui::MachineLink& link = *railLink;
+        if (parser.isSet(options.workbench)) {
+            railWindow->openWorkbench();
+            ui::WorkbenchWindow* bench = railWindow->workbench();
+            if (parser.isSet(sizeOpt)) bench->resize(window->size());
+            bench->compareLaws();
+            QObject::connect(bench, &ui::WorkbenchWindow::runFinished, bench, [bench] {
+                static bool tuned = false;
+                if (!std::exchange(tuned, true)) bench->autotune();
+            });
+        }
         if (parser.isSet(autoOpt) || parser.isSet(runOpt)) link.selectAutomatic();
         if (parser.isSet(runOpt)) {
             auto* waiter = new QTimer(window);
@@ -324,7 +341,9 @@ int main(int argc, char* argv[]) {
         if (parser.isSet(shotOpt)) {
             const int ms = static_cast<int>(parser.value(shotAfterOpt).toDouble() * 1000);
             QTimer::singleShot(ms, window, [&] {
-                const bool ok = window->grab().save(parser.value(shotOpt));
+                QWidget* shown = window;
+                if (railWindow && railWindow->workbench()) shown = railWindow->workbench();
+                const bool ok = shown->grab().save(parser.value(shotOpt));
                 if (!ok)
                     std::fprintf(stderr, "trilho: cannot write %s\n",
                                  qPrintable(parser.value(shotOpt)));

@@ -1,0 +1,31 @@
+#pragma once
+// A verification move and what it measured: a positioned move through the servo, watched
+// until it is in position and for a short hold after, with the figures a commissioning
+// engineer checks: overshoot (counts and % of the step, python-control step_info's definition
+// against the target), settling to +-1 count (the last time the position was outside the band,
+// from the command), the servo's in-position time and the final error. The workbench's full
+// step metrics (core/tuning/step_metrics, issue 21 item 2) measure the same record when merged.
+#include "core/tuning/rail_rig.h"
+
+namespace trilho {
+
+struct MoveResult {
+    double stepMm = 0.0;            ///< target - start
+    double overshootCounts = 0.0;   ///< beyond the target, in the direction of the move
+    double overshootPct = 0.0;      ///< of the step
+    double settlingTimeS = 0.0;     ///< to +-1 count of the target, from the command
+    double inPositionTimeS = 0.0;   ///< the servo's in-position flag (window held 50 ms)
+    double finalErrorCounts = 0.0;  ///< |position - target| at the end of the hold
+    double maxFollowingErrorMm = 0.0;
+    double machineTimeS = 0.0;
+    bool inPosition = false;
+    bool faulted = false;
+    ServoFault fault = ServoFault::None;
+};
+
+/// Moves to target at the rapid speed, waits (at most timeoutS) for in position, then holds
+/// holdS more while measuring.
+MoveResult runVerificationMove(RailRig& rig, double targetMm, double timeoutS = 8.0,
+                               double holdS = 0.1);
+
+}  // namespace trilho

@@ -1,0 +1,232 @@
+// Issue 21 at the screens: the tuning workbench. Step tests, the overlay and its metrics table,
+// the teaching view's equation and "what if", saved and loaded runs, autotune, and the same
+// numbers as `trilho-cli tune step --json` to the digit.
+#include <qcustomplot.h>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLabel>
+#include <QProcess>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "translations/i18n.h"
+#include "ui/workbench/model_view.h"
+#include "ui/workbench/run_overlay.h"
+#include "ui/workbench/terms_view.h"
+#include "ui/workbench/workbench_window.h"
+
+using namespace trilho;
+using namespace trilho::ui;
+
+class WorkbenchTest : public QObject {
+    Q_OBJECT
+
+    static bool waitRun(WorkbenchWindow& w) {
+        QSignalSpy done(&w, &WorkbenchWindow::runFinished);
+        return done.wait(60000);
+    }
+    static QJsonObject cli(const QStringList& args) {
+        QProcess p;
+        p.start(QStringLiteral(TRILHO_CLI), args);
+        if (!p.waitForFinished(60000)) return {};
+        return QJsonDocument::fromJson(p.readAllStandardOutput()).object();
+    }
+
+  private slots:
+    void initTestCase() { installLanguage(QStringLiteral("en")); }
+
+    // A run at the screens has the numbers the CLI prints for the same test.
+    void aStepRunShowsTheCliNumbers() {
+        WorkbenchWindow w(MachineProfile::rail());
+        w.show();
+        w.runStep();
+        QVERIFY(w.busy());  // on a worker thread
+        QVERIFY(waitRun(w));
+        QCOMPARE(w.runs().size(), std::size_t(1));
+        const StepMetrics& m = w.runs()[0]->metrics;
+        QVERIFY(m.ok);
+        QVERIFY(w.runs()[0]->abortReason.isEmpty());
+        const QJsonObject json =
+            cli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--machine"),
+                 QStringLiteral("rail"), QStringLiteral("--amplitude"), QStringLiteral("10"),
+                 QStringLiteral("--json")});
+        QVERIFY2(!json.isEmpty(), "trilho-cli tune step printed no JSON");
+        const QJsonObject metrics = json.contains(QStringLiteral("metrics"))
+                                        ? json[QStringLiteral("metrics")].toObject()
+                                        : json;
+        QCOMPARE(metrics[QStringLiteral("rise_time_s")].toDouble(), m.riseTimeS);
+        QCOMPARE(metrics[QStringLiteral("overshoot_pct")].toDouble(), m.overshootPct);
+        QCOMPARE(metrics[QStringLiteral("settling_time_1count_s")].toDouble(),
+                 m.settlingTime1CountS);
+        QCOMPARE(metrics[QStringLiteral("iae")].toDouble(), m.iae);
+        // The table shows them, in ms, in the run's column.
+        QTableWidget* table = w.overlay()->table();
+        QCOMPARE(table->columnCount(), 1);
+        QCOMPARE(table->item(0, 0)->text(), QString::number(m.riseTimeS * 1e3, 'f', 1));
+        QCOMPARE(w.overlay()->plot()->graphCount(), 2);  // response and its setpoint
+    }
+
+    // Eight runs and more overlay, each its own column and colour.
+    void eightRunsOverlayWithTheirMetricsSideBySide() {
+        WorkbenchWindow w(MachineProfile::rail());
+        auto* kp = w.findChild<QDoubleSpinBox*>(QStringLiteral("kp"));
+        for (int i = 0; i < 8; ++i) {
+            kp->setValue(0.6 + 0.2 * i);
+            w.runStep();
+            QVERIFY(waitRun(w));
+        }
+        QCOMPARE(w.runs().size(), std::size_t(8));
+        QCOMPARE(w.overlay()->table()->columnCount(), 8);
+        QCOMPARE(w.overlay()->plot()->graphCount(), 16);
+        QVERIFY(w.runs()[0]->color != w.runs()[1]->color);
+        // On a planned move a higher Kp follows closer (the P/I/D effect table, measured): the
+        // rise is the profile's, the following error is the loop's.
+        QVERIFY2(
+            w.runs()[7]->metrics.followingErrorRmsMm < w.runs()[0]->metrics.followingErrorRmsMm,
+            qPrintable(QStringLiteral("%1 vs %2")
+                           .arg(w.runs()[7]->metrics.followingErrorRmsMm)
+                           .arg(w.runs()[0]->metrics.followingErrorRmsMm)));
+    }
+
+    // One click: the 1996 law at its 10 ms period against the engineered law at 1 ms.
+    void theLawsCompareInOneClick() {
+        WorkbenchWindow w(MachineProfile::rail());
+        w.compareLaws();
+        QVERIFY(waitRun(w));
+        QCOMPARE(w.runs().size(), std::size_t(2));
+        const RunConditions& classic = w.runs()[0]->record.conditions;
+        const RunConditions& engineered = w.runs()[1]->record.conditions;
+        QCOMPARE(classic.law, LoopLaw::Classic);
+        QCOMPARE(classic.periodS, 0.010);
+        QCOMPARE(classic.gains.kp, MachineProfile::rail().loop.classic.kp);
+        QCOMPARE(engineered.law, LoopLaw::Engineered);
+        QCOMPARE(engineered.periodS, MachineProfile::rail().loop.samplePeriodS);
+        QCOMPARE(classic.amplitudeMm, engineered.amplitudeMm);
+    }
+
+    // The teaching view: the tick's terms substituted in the law's equation; "what if" with
+    // the same gains reproduces the recorded run, other gains give another run.
+    void theTermsViewSubstitutesTheTickAndWhatIfReSimulates() {
+        WorkbenchWindow w(MachineProfile::rail());
+        w.runStep();
+        QVERIFY(waitRun(w));
+        TermsView* terms = w.terms();
+        QVERIFY(terms->run());
+        const RunChannels& c = terms->run()->record.channels;
+        QVERIFY(c.hasLoopTerms);
+        const int k = terms->tick();
+        QVERIFY(k > 0);  // starts at the step
+        const QString eq = terms->equation()->text();
+        QVERIFY2(eq.contains(QStringLiteral("Tick %1").arg(k)), qPrintable(eq));
+        QVERIFY2(eq.contains(QString::number(c.pCodes[static_cast<std::size_t>(k)], 'f', 3)),
+                 qPrintable(eq));
+        QVERIFY(eq.contains(QStringLiteral("D = -Kd dy/dt")));
+        terms->setTick(k + 5);
+        QVERIFY(terms->equation()->text().contains(QStringLiteral("Tick %1").arg(k + 5)));
+        QVERIFY(terms->plot()->graphCount() >= 5);
+
+        terms->whatIfButton()->click();  // the same gains
+        QVERIFY(waitRun(w));
+        QCOMPARE(w.runs().size(), std::size_t(2));
+        QCOMPARE(w.runs()[1]->record.channels.positionMm, c.positionMm);
+        auto* kp = terms->findChild<QDoubleSpinBox*>(QStringLiteral("whatIfKp"));
+        kp->setValue(kp->value() * 3);
+        terms->whatIfButton()->click();
+        QVERIFY(waitRun(w));
+        QCOMPARE(w.runs().size(), std::size_t(3));
+        QVERIFY(w.runs()[2]->record.channels.positionMm != c.positionMm);
+        QVERIFY(w.runs()[2]->name.contains(QStringLiteral("what if")));
+    }
+
+    void theClassicEquationIsThe1996One() {
+        WorkbenchWindow w(MachineProfile::rail());
+        auto* law = w.findChild<QComboBox*>(QStringLiteral("law"));
+        law->setCurrentIndex(1);
+        QCOMPARE(w.findChild<QDoubleSpinBox*>(QStringLiteral("period"))->value(), 10.0);
+        QCOMPARE(w.findChild<QDoubleSpinBox*>(QStringLiteral("kp"))->value(),
+                 MachineProfile::rail().loop.classic.kp);
+        w.runStep();
+        QVERIFY(waitRun(w));
+        const QString eq = w.terms()->equation()->text();
+        QVERIFY2(eq.contains(QStringLiteral("floor(128")), qPrintable(eq));
+    }
+
+    // A run saved (CSV + JSON sidecar) and loaded back has the same channels and metrics.
+    void aRunSavedLoadsBackTheSame() {
+        QTemporaryDir dir;
+        WorkbenchWindow w(MachineProfile::rail());
+        w.runStep();
+        QVERIFY(waitRun(w));
+        const QString path = dir.filePath(QStringLiteral("run.csv"));
+        QString error;
+        QVERIFY2(w.saveRun(0, path, &error), qPrintable(error));
+        QVERIFY(QFile::exists(dir.filePath(QStringLiteral("run.json"))));
+        QVERIFY2(w.loadRun(path, &error), qPrintable(error));
+        QCOMPARE(w.runs().size(), std::size_t(2));
+        const WorkbenchRun& a = *w.runs()[0];
+        const WorkbenchRun& b = *w.runs()[1];
+        QCOMPARE(b.record.channels.size(), a.record.channels.size());
+        QVERIFY(b.record.hasConditions);
+        QCOMPARE(b.record.conditions.gains.kp, a.record.conditions.gains.kp);
+        QCOMPARE(b.metrics.riseTimeS, a.metrics.riseTimeS);
+        QCOMPARE(b.metrics.overshootPct, a.metrics.overshootPct);
+        // A file that is not a run is refused with its place, and nothing is added.
+        QFile bad(dir.filePath(QStringLiteral("bad.csv")));
+        QVERIFY(bad.open(QIODevice::WriteOnly));
+        bad.write("this,is\nnot,a run\n");
+        bad.close();
+        QVERIFY(!w.loadRun(bad.fileName(), &error));
+        QVERIFY2(error.contains(QStringLiteral("bad.csv")), qPrintable(error));
+        QCOMPARE(w.runs().size(), std::size_t(2));
+    }
+
+    // Autotune from the screens: the model page shows the fit, the design and prediction
+    // against measurement; the tuned gains fill the boxes.
+    void autotuneFillsTheGainsAndShowsPredictionAgainstMeasurement() {
+        WorkbenchWindow w(MachineProfile::rail());
+        w.autotune();
+        QVERIFY(waitRun(w));
+        QVERIFY2(w.tunedProfile().has_value(), qPrintable(w.model()->summary()->text()));
+        const QString text = w.model()->summary()->text();
+        QVERIFY(text.contains(QStringLiteral("Autotune passed")));
+        QVERIFY(text.contains(QStringLiteral("fit on held-out velocity")));
+        QVERIFY(std::abs(w.findChild<QDoubleSpinBox*>(QStringLiteral("kp"))->value() -
+                         w.tunedProfile()->loop.engineered.kp) < 1e-6);
+        QVERIFY(w.model()->bode()->graphCount() == 2);
+        QCOMPARE(w.tabs()->currentWidget(), static_cast<QWidget*>(w.model()));
+        // TRILHO_WORKBENCH_SHOTS=DIR: each page saved, to look at (not an assertion).
+        if (const QString dir = qEnvironmentVariable("TRILHO_WORKBENCH_SHOTS"); !dir.isEmpty()) {
+            w.resize(1366, 738);
+            w.show();
+            w.compareLaws();
+            QVERIFY(waitRun(w));
+            for (int i = 0; i < w.tabs()->count(); ++i) {
+                w.tabs()->setCurrentIndex(i);
+                QTest::qWait(50);
+                w.grab().save(QStringLiteral("%1/workbench_%2.png").arg(dir).arg(i));
+            }
+        }
+    }
+
+    // The DC table: per axis; no autotune page (the rail's model only, for now).
+    void theDcTableStepsEachAxis() {
+        WorkbenchWindow w(MachineProfile::xyDcTable());
+        auto* axis = w.findChild<QComboBox*>(QStringLiteral("axis"));
+        QVERIFY(axis);
+        axis->setCurrentIndex(1);
+        w.runStep();
+        QVERIFY(waitRun(w));
+        QCOMPARE(w.runs().size(), std::size_t(1));
+        QCOMPARE(w.runs()[0]->record.conditions.axis, 'y');
+        QVERIFY2(w.runs()[0]->metrics.ok, w.runs()[0]->metrics.problem.c_str());
+        QCOMPARE(w.tabs()->count(), 2);
+    }
+};
+
+QTEST_MAIN(WorkbenchTest)
+#include "workbench_test.moc"

@@ -1,0 +1,38 @@
+#pragma once
+// The workbench's model page (issue 21 items 5-7): the identified model of the rail and its
+// fit (MATLAB compare's NRMSE on held-out velocity), the loop designed from it, the prediction
+// of the verification moves against what they measured, and the Bode plot of the identified
+// open loop with its margins.
+#include <QWidget>
+
+#include "core/tuning/frequency_response.h"
+#include "core/tuning/rail_autotune.h"
+#include "core/tuning/rail_identification.h"
+
+class QCustomPlot;
+class QLabel;
+
+namespace trilho {
+namespace ui {
+
+class ModelView : public QWidget {
+    Q_OBJECT
+  public:
+    explicit ModelView(QWidget* parent = nullptr);
+    void showIdentification(const RailIdentification& id, const FrequencyView& frequency,
+                            const LoopGains& gains);
+    void showAutotune(const AutotuneResult& result);
+    void showMessage(const QString& text);
+    QLabel* summary() const { return summary_; }
+    QCustomPlot* bode() const { return bode_; }
+
+  private:
+    void plotBode(const FrequencyView& frequency);
+    QString identificationHtml(const RailIdentification& id) const;
+    QString marginsHtml(const FrequencyView& frequency) const;
+    QLabel* summary_;
+    QCustomPlot* bode_;
+};
+
+}  // namespace ui
+}  // namespace trilho

@@ -1,0 +1,43 @@
+#pragma once
+// The workbench's overlay (issue 21 item 3): every shown run's response on one plot, aligned on
+// its step (t = 0 at the step, displacement from the start), its setpoint dashed in the same
+// colour, and below a table of the runs' metrics side by side, one column per run. Clicking a
+// column selects the run (the teaching view shows it).
+#include <QWidget>
+#include <vector>
+
+#include "ui/workbench/workbench_run.h"
+
+class QCustomPlot;
+class QTableWidget;
+
+namespace trilho {
+namespace ui {
+
+class RunOverlay : public QWidget {
+    Q_OBJECT
+  public:
+    explicit RunOverlay(QWidget* parent = nullptr);
+    void setRuns(const std::vector<WorkbenchRunPtr>& runs);
+    QCustomPlot* plot() const { return plot_; }
+    QTableWidget* table() const { return table_; }
+    /// The metric rows' labels, in order (for tests and the CSV of the table).
+    static QStringList metricNames();
+    /// The table's text for one metric row of one run ("12.3" or "not reached").
+    static QString metricText(const WorkbenchRun& run, int row);
+
+  signals:
+    void runSelected(int index);
+
+  protected:
+    void changeEvent(QEvent* e) override;
+
+  private:
+    void rebuild();
+    QCustomPlot* plot_;
+    QTableWidget* table_;
+    std::vector<WorkbenchRunPtr> runs_;
+};
+
+}  // namespace ui
+}  // namespace trilho

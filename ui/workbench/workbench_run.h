@@ -1,0 +1,29 @@
+#pragma once
+// One run in the workbench: a recorded step test (or a loaded record) with its metrics, the
+// name the table and the legend show, and its colour in the overlay.
+#include <QColor>
+#include <QString>
+#include <memory>
+
+#include "core/tuning/run_record.h"
+#include "core/tuning/step_metrics.h"
+
+namespace trilho {
+namespace ui {
+
+struct WorkbenchRun {
+    RunRecord record;
+    StepMetrics metrics;
+    QString name;         ///< "1: engineered kp 1.2 ki 0.5 kd 0.02, 10 mm"
+    QString abortReason;  ///< empty when the test ran to its end
+    QColor color;
+    bool shown = true;
+};
+
+using WorkbenchRunPtr = std::shared_ptr<const WorkbenchRun>;
+
+/// The overlay's colours, in order: distinct on white and in grey print (8 and then repeats).
+QColor workbenchColor(int index);
+
+}  // namespace ui
+}  // namespace trilho

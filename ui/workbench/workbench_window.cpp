@@ -1,0 +1,578 @@
+#include "ui/workbench/workbench_window.h"
+
+#include <QComboBox>
+#include <QDateTime>
+#include <QDoubleSpinBox>
+#include <QEvent>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QFutureWatcher>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSaveFile>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include "core/tuning/frequency_response.h"
+#include "core/tuning/identification_experiment.h"
+#include "core/tuning/rail_autotune.h"
+#include "core/tuning/rail_identification.h"
+#include "host/session/sim_rail_rig.h"
+#include "ui/workbench/model_view.h"
+#include "ui/workbench/run_overlay.h"
+#include "ui/workbench/terms_view.h"
+
+namespace trilho {
+namespace ui {
+
+namespace {
+
+// The 1996 law's own period (the VB's `Amostragem Interval=10`, `periodo=10`): the workbench
+// runs it there unless the teacher sets another period on purpose.
+constexpr double kClassicPeriodMs = 10.0;
+
+QDoubleSpinBox* spinBox(QWidget* parent, const char* name, double lo, double hi, int decimals,
+                        double step) {
+    auto* s = new QDoubleSpinBox(parent);
+    s->setObjectName(QString::fromLatin1(name));
+    s->setRange(lo, hi);
+    s->setDecimals(decimals);
+    s->setSingleStep(step);
+    s->setKeyboardTracking(false);
+    return s;
+}
+
+}  // namespace
+
+template <typename T>
+void WorkbenchWindow::inBackground(std::function<T()> work, std::function<void(T)> done) {
+    setBusy(true);
+    auto* watcher = new QFutureWatcher<T>(this);
+    connect(watcher, &QFutureWatcher<T>::finished, this, [this, watcher, done] {
+        watcher->deleteLater();
+        setBusy(false);
+        done(watcher->result());
+        emit runFinished();
+    });
+    watcher->setFuture(QtConcurrent::run(std::move(work)));
+}
+
+WorkbenchWindow::WorkbenchWindow(const MachineProfile& profile, QWidget* parent)
+    : QMainWindow(parent), profile_(profile), rail_(profile.kind == MachineKind::Rail) {
+    setObjectName(QStringLiteral("workbench"));
+    setAttribute(Qt::WA_DeleteOnClose, false);
+    build();
+    retranslate();
+    lawChanged();
+    resize(1280, 720);
+}
+
+void WorkbenchWindow::build() {
+    auto* form = new QWidget;
+    testBox_ = new QGroupBox(form);
+    auto* f = new QFormLayout(testBox_);
+    axisLabel_ = new QLabel(testBox_);
+    axis_ = new QComboBox(testBox_);
+    axis_->setObjectName(QStringLiteral("axis"));
+    axis_->addItem(QStringLiteral("X"), QVariant::fromValue(int('x')));
+    axis_->addItem(QStringLiteral("Y"), QVariant::fromValue(int('y')));
+    amplitudeLabel_ = new QLabel(testBox_);
+    amplitude_ = spinBox(testBox_, "amplitude", -1000.0, 1000.0, 2, 1.0);
+    amplitude_->setValue(10.0);
+    speedLabel_ = new QLabel(testBox_);
+    speed_ = spinBox(testBox_, "speed", 1.0, 100.0, 0, 5.0);
+    speed_->setValue(100.0);
+    lawLabel_ = new QLabel(testBox_);
+    law_ = new QComboBox(testBox_);
+    law_->setObjectName(QStringLiteral("law"));
+    law_->addItem(QString(), QVariant::fromValue(int(LoopLaw::Engineered)));
+    law_->addItem(QString(), QVariant::fromValue(int(LoopLaw::Classic)));
+    periodLabel_ = new QLabel(testBox_);
+    period_ = spinBox(testBox_, "period", 0.5, 10.0, 1, 0.5);
+    kpLabel_ = new QLabel(testBox_);
+    kiLabel_ = new QLabel(testBox_);
+    kdLabel_ = new QLabel(testBox_);
+    // Six decimals: an autotuned gain shows (and runs) as designed, not rounded.
+    kp_ = spinBox(testBox_, "kp", 0.0, 1000.0, 6, 0.1);
+    ki_ = spinBox(testBox_, "ki", 0.0, 1000.0, 6, 0.1);
+    kd_ = spinBox(testBox_, "kd", 0.0, 1000.0, 6, 0.01);
+    massLabel_ = new QLabel(testBox_);
+    mass_ = spinBox(testBox_, "massFactor", 0.1, 10.0, 2, 0.5);
+    mass_->setValue(1.0);
+    seedLabel_ = new QLabel(testBox_);
+    seed_ = new QSpinBox(testBox_);
+    seed_->setObjectName(QStringLiteral("seed"));
+    seed_->setRange(1, 1000000);
+    if (rail_) {
+        axisLabel_->hide();
+        axis_->hide();
+    } else {
+        f->addRow(axisLabel_, axis_);
+    }
+    f->addRow(amplitudeLabel_, amplitude_);
+    f->addRow(speedLabel_, speed_);
+    f->addRow(lawLabel_, law_);
+    f->addRow(periodLabel_, period_);
+    f->addRow(kpLabel_, kp_);
+    f->addRow(kiLabel_, ki_);
+    f->addRow(kdLabel_, kd_);
+    f->addRow(massLabel_, mass_);
+    f->addRow(seedLabel_, seed_);
+    run_ = new QPushButton(testBox_);
+    run_->setObjectName(QStringLiteral("runStep"));
+    compare_ = new QPushButton(testBox_);
+    compare_->setObjectName(QStringLiteral("compareLaws"));
+    f->addRow(run_);
+    f->addRow(compare_);
+    if (!rail_) {
+        // The table's classic law has other gains (b0, b1): the boxes are the engineered law's.
+        law_->setEnabled(false);
+        period_->setEnabled(false);
+        compare_->hide();
+    }
+
+    tuneBox_ = new QGroupBox(form);
+    auto* t = new QVBoxLayout(tuneBox_);
+    identify_ = new QPushButton(tuneBox_);
+    identify_->setObjectName(QStringLiteral("identify"));
+    autotune_ = new QPushButton(tuneBox_);
+    autotune_->setObjectName(QStringLiteral("autotune"));
+    saveTuned_ = new QPushButton(tuneBox_);
+    saveTuned_->setObjectName(QStringLiteral("saveTuned"));
+    saveTuned_->setEnabled(false);
+    t->addWidget(identify_);
+    t->addWidget(autotune_);
+    t->addWidget(saveTuned_);
+    tuneBox_->setVisible(rail_);
+
+    runsBox_ = new QGroupBox(form);
+    auto* r = new QVBoxLayout(runsBox_);
+    runList_ = new QListWidget(runsBox_);
+    runList_->setObjectName(QStringLiteral("runList"));
+    runList_->setMinimumHeight(90);
+    saveRun_ = new QPushButton(runsBox_);
+    loadRun_ = new QPushButton(runsBox_);
+    removeRun_ = new QPushButton(runsBox_);
+    clearRuns_ = new QPushButton(runsBox_);
+    auto* rb = new QGridLayout;
+    rb->addWidget(saveRun_, 0, 0);
+    rb->addWidget(loadRun_, 0, 1);
+    rb->addWidget(removeRun_, 1, 0);
+    rb->addWidget(clearRuns_, 1, 1);
+    r->addWidget(runList_);
+    r->addLayout(rb);
+
+    auto* fv = new QVBoxLayout(form);
+    fv->addWidget(testBox_);
+    fv->addWidget(tuneBox_);
+    fv->addWidget(runsBox_, 1);
+    auto* scroll = new QScrollArea;
+    scroll->setWidget(form);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    // Wide enough for the form: the boxes are never cut, the runs' list scrolls instead.
+    scroll->setMinimumWidth(form->sizeHint().width() +
+                            scroll->verticalScrollBar()->sizeHint().width() + 8);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+
+    overlay_ = new RunOverlay;
+    terms_ = new TermsView;
+    model_ = new ModelView;
+    tabs_ = new QTabWidget;
+    tabs_->addTab(overlay_, QString());
+    tabs_->addTab(terms_, QString());
+    if (rail_)
+        tabs_->addTab(model_, QString());
+    else
+        model_->hide();
+    auto* split = new QSplitter(Qt::Horizontal);
+    split->addWidget(scroll);
+    split->addWidget(tabs_);
+    split->setStretchFactor(0, 0);
+    split->setStretchFactor(1, 1);
+    setCentralWidget(split);
+    statusBar();
+
+    connect(law_, &QComboBox::currentIndexChanged, this, &WorkbenchWindow::lawChanged);
+    connect(axis_, &QComboBox::currentIndexChanged, this, &WorkbenchWindow::lawChanged);
+    connect(run_, &QPushButton::clicked, this, &WorkbenchWindow::runStep);
+    connect(compare_, &QPushButton::clicked, this, &WorkbenchWindow::compareLaws);
+    connect(identify_, &QPushButton::clicked, this, &WorkbenchWindow::identify);
+    connect(autotune_, &QPushButton::clicked, this, &WorkbenchWindow::autotune);
+    connect(saveTuned_, &QPushButton::clicked, this, &WorkbenchWindow::saveTunedProfile);
+    connect(overlay_, &RunOverlay::runSelected, this, &WorkbenchWindow::selectRun);
+    connect(terms_, &TermsView::whatIfRequested, this, &WorkbenchWindow::whatIfRun);
+    connect(runList_, &QListWidget::currentRowChanged, this, &WorkbenchWindow::selectRun);
+    connect(runList_, &QListWidget::itemChanged, this, [this](QListWidgetItem* item) {
+        const int row = runList_->row(item);
+        if (row < 0 || row >= static_cast<int>(runs_.size())) return;
+        const bool shown = item->checkState() == Qt::Checked;
+        if (runs_[static_cast<std::size_t>(row)]->shown == shown) return;
+        auto copy = std::make_shared<WorkbenchRun>(*runs_[static_cast<std::size_t>(row)]);
+        copy->shown = shown;
+        runs_[static_cast<std::size_t>(row)] = copy;
+        overlay_->setRuns(runs_);
+    });
+    connect(saveRun_, &QPushButton::clicked, this, &WorkbenchWindow::saveSelectedRun);
+    connect(loadRun_, &QPushButton::clicked, this, &WorkbenchWindow::loadRunFromFile);
+    connect(removeRun_, &QPushButton::clicked, this, [this] {
+        const int row = runList_->currentRow();
+        if (row < 0 || row >= static_cast<int>(runs_.size())) return;
+        runs_.erase(runs_.begin() + row);
+        refreshRuns();
+    });
+    connect(clearRuns_, &QPushButton::clicked, this, [this] {
+        runs_.clear();
+        refreshRuns();
+    });
+}
+
+void WorkbenchWindow::retranslate() {
+    setWindowTitle(tr("Tuning workbench: %1").arg(profile_.name));
+    testBox_->setTitle(tr("Step test (simulated plant, virtual time)"));
+    axisLabel_->setText(tr("Axis"));
+    amplitudeLabel_->setText(tr("Amplitude (mm)"));
+    amplitude_->setToolTip(tr("The sign is the direction"));
+    speedLabel_->setText(tr("Speed (% of rapid)"));
+    speed_->setToolTip(tr("100 %: a step at the rapid speed; below: a ramp"));
+    lawLabel_->setText(tr("Control law"));
+    law_->setItemText(0, tr("Engineered"));
+    law_->setItemText(1, tr("Classic (1996)"));
+    periodLabel_->setText(tr("Period (ms)"));
+    period_->setToolTip(
+        tr("The 1996 law ran at 10 ms: its gains are per tick, so at 1 ms they "
+           "act ten times harder (a lesson, not a setting)"));
+    kpLabel_->setText(tr("Kp"));
+    kiLabel_->setText(tr("Ki"));
+    kdLabel_->setText(rail_ ? tr("Kd") : tr("Kff"));
+    massLabel_->setText(tr("Mass factor"));
+    mass_->setToolTip(tr("The plant's moving mass times this; the loop is not told"));
+    seedLabel_->setText(tr("Seed"));
+    run_->setText(tr("Run step"));
+    compare_->setText(tr("1996 law against engineered"));
+    compare_->setToolTip(
+        tr("The same move with the 1996 law at its 10 ms and its gains, and "
+           "with the engineered law"));
+    tuneBox_->setTitle(tr("Identification and autotune"));
+    identify_->setText(tr("Identify the plant"));
+    identify_->setToolTip(
+        tr("At most 3 s of machine time, within 100 mm, back to the start "
+           "within a count"));
+    autotune_->setText(tr("Autotune"));
+    autotune_->setToolTip(
+        tr("Identify, design (SIMC), predict, then verify with a 10 mm step "
+           "and a 1000 mm move"));
+    saveTuned_->setText(tr("Save tuned profile..."));
+    runsBox_->setTitle(tr("Runs"));
+    saveRun_->setText(tr("Save run..."));
+    loadRun_->setText(tr("Load run..."));
+    removeRun_->setText(tr("Remove"));
+    clearRuns_->setText(tr("Clear"));
+    tabs_->setTabText(0, tr("Responses"));
+    tabs_->setTabText(1, tr("P, I, D terms"));
+    if (rail_) tabs_->setTabText(2, tr("Model"));
+}
+
+void WorkbenchWindow::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::LanguageChange) retranslate();
+    QMainWindow::changeEvent(e);
+}
+
+void WorkbenchWindow::lawChanged() {
+    const auto law = static_cast<LoopLaw>(law_->currentData().toInt());
+    const char axis = rail_ ? char(0) : static_cast<char>(axis_->currentData().toInt());
+    const TuningGains g = profileGains(profile_, axis, rail_ ? law : profile_.dcTable.law);
+    kp_->setValue(g.kp);
+    ki_->setValue(g.ki);
+    kd_->setValue(rail_ ? g.kd : g.kff);
+    if (rail_)
+        period_->setValue(law == LoopLaw::Classic ? kClassicPeriodMs
+                                                  : profile_.loop.samplePeriodS * 1e3);
+    else
+        period_->setValue(profile_.dcTable.samplePeriodS * 1e3);
+}
+
+StepTestSpec WorkbenchWindow::currentSpec() const {
+    StepTestSpec s;
+    s.profile = profile_;
+    s.axis = rail_ ? char(0) : static_cast<char>(axis_->currentData().toInt());
+    s.amplitudeMm = amplitude_->value();
+    s.speedFraction = speed_->value() / 100.0;
+    s.massFactor = mass_->value();
+    s.seed = static_cast<std::uint64_t>(seed_->value());
+    if (rail_) {
+        const auto law = static_cast<LoopLaw>(law_->currentData().toInt());
+        s.law = law;
+        s.profile.loop.law = law;
+        s.profile.loop.samplePeriodS = period_->value() / 1e3;
+        TuningGains g = profileGains(profile_, 0, law);
+        g.kp = kp_->value();
+        g.ki = ki_->value();
+        g.kd = kd_->value();
+        s.gains = g;
+    } else if (profile_.dcTable.law == LoopLaw::Engineered) {
+        TuningGains g = profileGains(profile_, s.axis, LoopLaw::Engineered);
+        g.kp = kp_->value();
+        g.ki = ki_->value();
+        g.kff = kd_->value();
+        s.gains = g;
+    }
+    return s;
+}
+
+QString WorkbenchWindow::runLabel(const RunConditions& c) const {
+    const QString law = c.law == LoopLaw::Classic ? tr("1996") : tr("engineered");
+    const QString gains = rail_ ? QStringLiteral("Kp %1 Ki %2 Kd %3")
+                                      .arg(c.gains.kp, 0, 'g', 4)
+                                      .arg(c.gains.ki, 0, 'g', 4)
+                                      .arg(c.gains.kd, 0, 'g', 4)
+                                : QStringLiteral("Kp %1 Ki %2 Kff %3")
+                                      .arg(c.gains.kp, 0, 'g', 4)
+                                      .arg(c.gains.ki, 0, 'g', 4)
+                                      .arg(c.gains.kff, 0, 'g', 4);
+    QString text = tr("%1 %2, %3 mm at %4 ms, mass x%5")
+                       .arg(law, gains)
+                       .arg(c.amplitudeMm, 0, 'g', 5)
+                       .arg(c.periodS * 1e3, 0, 'g', 3)
+                       .arg(c.massFactor, 0, 'g', 3);
+    if (c.axis) text = QStringLiteral("%1: ").arg(QChar::fromLatin1(c.axis).toUpper()) + text;
+    return text;
+}
+
+void WorkbenchWindow::setBusy(bool busy) {
+    busy_ = busy;
+    for (QWidget* w : std::initializer_list<QWidget*>{run_, compare_, identify_, autotune_,
+                                                      terms_->whatIfButton()})
+        w->setEnabled(!busy);
+    if (busy) statusBar()->showMessage(tr("Running in virtual time..."));
+}
+
+void WorkbenchWindow::addRun(StepTestResult result, const QString& label) {
+    auto run = std::make_shared<WorkbenchRun>();
+    const int number = nextNumber_++;
+    run->name = QStringLiteral("%1: %2").arg(number).arg(
+        label.isEmpty() ? runLabel(result.record.conditions) : label);
+    run->abortReason = result.abortReason;
+    run->metrics = result.metrics;
+    run->record = std::move(result.record);
+    run->color = workbenchColor(number - 1);
+    runs_.push_back(run);
+    refreshRuns();
+    selectRun(static_cast<int>(runs_.size()) - 1);
+    statusBar()->showMessage(run->abortReason.isEmpty()
+                                 ? tr("Run %1 done.").arg(number)
+                                 : tr("Run %1 stopped: %2").arg(number).arg(run->abortReason),
+                             10000);
+}
+
+void WorkbenchWindow::refreshRuns() {
+    runList_->blockSignals(true);
+    runList_->clear();
+    for (const WorkbenchRunPtr& r : runs_) {
+        auto* item = new QListWidgetItem(r->name, runList_);
+        item->setForeground(r->color);
+        item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+        item->setCheckState(r->shown ? Qt::Checked : Qt::Unchecked);
+        if (!r->abortReason.isEmpty()) item->setToolTip(r->abortReason);
+    }
+    runList_->blockSignals(false);
+    overlay_->setRuns(runs_);
+    if (selected_ >= static_cast<int>(runs_.size())) selected_ = -1;
+    terms_->setRun(selected_ >= 0 ? runs_[static_cast<std::size_t>(selected_)] : nullptr);
+}
+
+void WorkbenchWindow::selectRun(int index) {
+    if (index < 0 || index >= static_cast<int>(runs_.size())) return;
+    selected_ = index;
+    runList_->blockSignals(true);
+    runList_->setCurrentRow(index);
+    runList_->blockSignals(false);
+    terms_->setRun(runs_[static_cast<std::size_t>(index)]);
+}
+
+void WorkbenchWindow::runStep() {
+    if (busy_) return;
+    const StepTestSpec spec = currentSpec();
+    inBackground<StepTestResult>([spec] { return runStepTest(spec); },
+                                 [this](StepTestResult r) { addRun(std::move(r), QString()); });
+}
+
+void WorkbenchWindow::compareLaws() {
+    if (busy_ || !rail_) return;
+    StepTestSpec classic = currentSpec();
+    classic.law = LoopLaw::Classic;
+    classic.profile.loop.law = LoopLaw::Classic;
+    classic.profile.loop.samplePeriodS = kClassicPeriodMs / 1e3;
+    classic.gains = profileGains(profile_, 0, LoopLaw::Classic);
+    StepTestSpec engineered = currentSpec();
+    engineered.law = LoopLaw::Engineered;
+    engineered.profile.loop.law = LoopLaw::Engineered;
+    engineered.profile.loop.samplePeriodS = profile_.loop.samplePeriodS;
+    engineered.gains = profileGains(profile_, 0, LoopLaw::Engineered);
+    using Pair = std::pair<StepTestResult, StepTestResult>;
+    inBackground<Pair>(
+        [classic, engineered] { return Pair(runStepTest(classic), runStepTest(engineered)); },
+        [this](Pair r) {
+            addRun(std::move(r.first), QString());
+            addRun(std::move(r.second), QString());
+        });
+}
+
+void WorkbenchWindow::whatIfRun(const TuningGains& gains) {
+    const int index = selected_;
+    if (busy_ || index < 0 || index >= static_cast<int>(runs_.size())) return;
+    const RunConditions conditions = runs_[static_cast<std::size_t>(index)]->record.conditions;
+    inBackground<StepTestResult>(
+        [conditions, gains] { return whatIf(conditions, gains); },
+        [this, index](StepTestResult r) {
+            const QString label =
+                tr("what if (from run %1): %2").arg(index + 1).arg(runLabel(r.record.conditions));
+            addRun(std::move(r), label);
+        });
+}
+
+void WorkbenchWindow::identify() {
+    if (busy_ || !rail_) return;
+    const MachineProfile profile = currentSpec().profile;
+    const auto seed = static_cast<std::uint64_t>(seed_->value());
+    const double mass = mass_->value();
+    struct Out {
+        RailIdentification id;
+        FrequencyView frequency;
+    };
+    inBackground<Out>(
+        [profile, seed, mass] {
+            SimRailRig rig(profile, seed, 0.0, mass);
+            const IdentificationRecord rec = runIdentificationExperiment(rig);
+            Out o;
+            o.id = identifyRail(rec, profile);
+            if (!rec.error.isEmpty() && o.id.error.isEmpty()) o.id.error = rec.error;
+            o.frequency =
+                railFrequencyView(o.id.model, profile.loop.engineered, profile.loop.samplePeriodS);
+            return o;
+        },
+        [this, profile](Out o) {
+            model_->showIdentification(o.id, o.frequency, profile.loop.engineered);
+            tabs_->setCurrentWidget(model_);
+            statusBar()->showMessage(o.id.accepted
+                                         ? tr("Identified: fit %1 % on held-out velocity.")
+                                               .arg(o.id.fitVelocityPct, 0, 'f', 1)
+                                         : tr("Model refused: %1").arg(o.id.error),
+                                     10000);
+        });
+}
+
+void WorkbenchWindow::autotune() {
+    if (busy_ || !rail_) return;
+    MachineProfile profile = currentSpec().profile;
+    profile.loop.law = LoopLaw::Engineered;
+    profile.loop.samplePeriodS = profile_.loop.samplePeriodS;
+    const auto seed = static_cast<std::uint64_t>(seed_->value());
+    const double mass = mass_->value();
+    inBackground<AutotuneResult>(
+        [profile, seed, mass] {
+            SimRailRig rig(profile, seed, 0.0, mass);
+            return autotuneRail(rig, profile);
+        },
+        [this](AutotuneResult r) {
+            model_->showAutotune(r);
+            tabs_->setCurrentWidget(model_);
+            if (r.ok) {
+                tuned_ = r.tuned;
+                saveTuned_->setEnabled(true);
+                law_->setCurrentIndex(0);  // engineered
+                kp_->setValue(r.design.gains.kp);
+                ki_->setValue(r.design.gains.ki);
+                kd_->setValue(r.design.gains.kd);
+                profile_.motion = r.tuned.motion;  // the planning acceleration it chose
+                profile_.loop.engineered = r.design.gains;
+            }
+            statusBar()->showMessage(
+                r.ok ? tr("Autotune passed in %1 s of machine time.").arg(r.machineTimeS, 0, 'f', 2)
+                     : tr("Autotune failed: %1").arg(r.error),
+                10000);
+        });
+}
+
+bool WorkbenchWindow::addRecord(RunRecord record, const QString& name, QString* error) {
+    if (record.channels.size() == 0) {
+        if (error) *error = tr("%1: the run has no samples").arg(name);
+        return false;
+    }
+    StepTestResult r;
+    r.metrics = measureRun(record.channels, record.conditions.countsPerMm);
+    r.abortReason = record.conditions.abortReason;
+    r.record = std::move(record);
+    addRun(std::move(r), name);
+    return true;
+}
+
+bool WorkbenchWindow::saveRun(int index, const QString& csvPath, QString* error) {
+    if (index < 0 || index >= static_cast<int>(runs_.size())) {
+        if (error) *error = tr("No run is selected.");
+        return false;
+    }
+    const WorkbenchRun& run = *runs_[static_cast<std::size_t>(index)];
+    return saveRunRecord(run.record, csvPath, &run.metrics, error);
+}
+
+bool WorkbenchWindow::loadRun(const QString& csvPath, QString* error) {
+    RunLoad load = loadRunRecord(csvPath);
+    if (!load.record) {
+        if (error) *error = load.error;
+        return false;
+    }
+    return addRecord(std::move(*load.record), QFileInfo(csvPath).fileName(), error);
+}
+
+void WorkbenchWindow::saveSelectedRun() {
+    const int index = runList_->currentRow();
+    if (index < 0) {
+        statusBar()->showMessage(tr("No run is selected."), 8000);
+        return;
+    }
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Save run"), QString(), tr("Run records (*.csv)"));
+    if (path.isEmpty()) return;
+    QString error;
+    if (!saveRun(index, path, &error))
+        QMessageBox::warning(this, tr("Save run"), error);
+    else
+        statusBar()->showMessage(tr("Saved %1 and %2.").arg(path, runSidecarPath(path)), 10000);
+}
+
+void WorkbenchWindow::loadRunFromFile() {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Load run"), QString(),
+                                                      tr("Run records and traces (*.csv)"));
+    if (path.isEmpty()) return;
+    QString error;
+    if (!loadRun(path, &error)) QMessageBox::warning(this, tr("Load run"), error);
+}
+
+void WorkbenchWindow::saveTunedProfile() {
+    if (!tuned_) return;
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save tuned profile"), QString(),
+                                                      tr("Machine profiles (*.json)"));
+    if (path.isEmpty()) return;
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly) || f.write(machineProfileToJson(*tuned_)) < 0 ||
+        !f.commit()) {
+        QMessageBox::warning(this, tr("Save tuned profile"),
+                             tr("cannot save '%1': %2").arg(path, f.errorString()));
+        return;
+    }
+    statusBar()->showMessage(tr("Saved %1: trilho-cli run --machine %1 uses it.").arg(path), 10000);
+}
+
+}  // namespace ui
+}  // namespace trilho

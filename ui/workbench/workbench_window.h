@@ -1,0 +1,108 @@
+#pragma once
+// The tuning and teaching workbench (issue 21): step and ramp tests without G-code on the
+// machine's simulated plant in virtual time, their metrics, an overlay of every run with a
+// table of metrics side by side, the P/I/D terms of a run tick by tick with the equation
+// substituted and "what if" re-simulation, and on the rail identification, autotune and the
+// Bode plot. Every figure comes from core/tuning and host/tuning, the same code
+// `trilho-cli tune` prints, so the screens and the CLI agree to the digit.
+#include <QMainWindow>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "core/machine/machine_profile.h"
+#include "host/tuning/step_test.h"
+#include "ui/workbench/workbench_run.h"
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QGroupBox;
+class QLabel;
+class QListWidget;
+class QPushButton;
+class QSpinBox;
+class QTabWidget;
+
+namespace trilho {
+namespace ui {
+
+class ModelView;
+class RunOverlay;
+class TermsView;
+
+class WorkbenchWindow : public QMainWindow {
+    Q_OBJECT
+  public:
+    explicit WorkbenchWindow(const MachineProfile& profile, QWidget* parent = nullptr);
+
+    /// The test the form describes now.
+    StepTestSpec currentSpec() const;
+    /// Runs the form's test (on a worker thread); the run is added when it ends.
+    void runStep();
+    /// The same move with the 1996 law (at its 10 ms period, its own gains) and with the
+    /// engineered law (the profile's period and gains): two runs.
+    void compareLaws();
+    void identify();
+    void autotune();
+    bool busy() const { return busy_; }
+    const std::vector<WorkbenchRunPtr>& runs() const { return runs_; }
+    bool addRecord(RunRecord record, const QString& name, QString* error = nullptr);
+    bool saveRun(int index, const QString& csvPath, QString* error);
+    bool loadRun(const QString& csvPath, QString* error);
+    /// The profile with the last autotune's gains, if one passed.
+    const std::optional<MachineProfile>& tunedProfile() const { return tuned_; }
+
+    RunOverlay* overlay() const { return overlay_; }
+    TermsView* terms() const { return terms_; }
+    ModelView* model() const { return model_; }
+    QTabWidget* tabs() const { return tabs_; }
+
+  signals:
+    void runFinished();
+
+  protected:
+    void changeEvent(QEvent* e) override;
+
+  private:
+    void build();
+    void retranslate();
+    void lawChanged();
+    void setBusy(bool busy);
+    void addRun(StepTestResult result, const QString& label);
+    void refreshRuns();
+    void selectRun(int index);
+    void whatIfRun(const TuningGains& gains);
+    void saveSelectedRun();
+    void loadRunFromFile();
+    void saveTunedProfile();
+    QString runLabel(const RunConditions& c) const;
+    /// Runs work on a worker thread, then done(result) on this thread.
+    template <typename T>
+    void inBackground(std::function<T()> work, std::function<void(T)> done);
+
+    MachineProfile profile_;
+    bool rail_;
+    bool busy_ = false;
+    std::vector<WorkbenchRunPtr> runs_;
+    int selected_ = -1;
+    int nextNumber_ = 1;
+    std::optional<MachineProfile> tuned_;
+
+    QTabWidget* tabs_;
+    RunOverlay* overlay_;
+    TermsView* terms_;
+    ModelView* model_;
+    QGroupBox *testBox_, *tuneBox_, *runsBox_;
+    QLabel *axisLabel_, *amplitudeLabel_, *speedLabel_, *lawLabel_, *periodLabel_, *kpLabel_,
+        *kiLabel_, *kdLabel_, *massLabel_, *seedLabel_;
+    QComboBox *axis_, *law_;
+    QDoubleSpinBox *amplitude_, *speed_, *period_, *kp_, *ki_, *kd_, *mass_;
+    QSpinBox* seed_;
+    QPushButton *run_, *compare_, *identify_, *autotune_, *saveTuned_;
+    QListWidget* runList_;
+    QPushButton *saveRun_, *loadRun_, *removeRun_, *clearRuns_;
+};
+
+}  // namespace ui
+}  // namespace trilho
