@@ -10,5 +10,7 @@ int profileCommand(const QStringList& args);
 int runCommand(const QStringList& args);
 int latencyCommand(const QStringList& args);
 int serveCommand(const QStringList& args);
+/// tune identify | auto (tune_command.cpp; the step-test subcommands join it there).
+int tuneCommand(const QStringList& args);
 
 }  // namespace trilho::cli
