@@ -1,0 +1,569 @@
+#include "core/tuning/run_record.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <string_view>
+
+#include "core/tuning/trace_writer.h"
+
+namespace trilho {
+
+namespace {
+
+constexpr int kDecimals = 6;  // every double channel: 1 nm, 1 us, 1e-6 code
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+QJsonValue number(double v) {
+    return std::isfinite(v) ? QJsonValue(v) : QJsonValue(QJsonValue::Null);
+}
+
+QString lawName(LoopLaw law) {
+    return law == LoopLaw::Classic ? QStringLiteral("classic") : QStringLiteral("engineered");
+}
+
+}  // namespace
+
+void RunChannels::reserve(std::size_t n) {
+    for (auto* v :
+         {&timeS, &setpointMm, &positionMm, &errorMm, &velocityMmS, &drive, &setpointVelocityMmS,
+          &pCodes, &iCodes, &dCodes, &ffCodes, &sumCodes, &commandCodes})
+        v->reserve(n);
+    blockN.reserve(n);
+    saturated.reserve(n);
+}
+
+const char* runCsvHeader() {
+    return "t_s,block_n,setpoint_mm,position_mm,error_mm,velocity_mm_s,drive,"
+           "setpoint_velocity_mm_s,p_codes,i_codes,d_codes,ff_codes,sum_codes,command_codes,"
+           "saturated";
+}
+
+QString runSidecarPath(const QString& csvPath) {
+    if (csvPath.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive))
+        return csvPath.left(csvPath.size() - 4) + QStringLiteral(".json");
+    return csvPath + QStringLiteral(".json");
+}
+
+StepMetrics measureRun(const RunChannels& c, double countsPerMm) {
+    StepSignals s;
+    s.timeS = c.timeS;
+    s.setpointMm = c.setpointMm;
+    s.positionMm = c.positionMm;
+    if (c.hasSaturation) s.saturated = c.saturated;
+    s.countsPerMm = countsPerMm;
+    return measureStep(s);
+}
+
+QJsonObject stepMetricsToJson(const StepMetrics& m) {
+    QJsonObject o;
+    o[QStringLiteral("ok")] = m.ok;
+    if (!m.ok) o[QStringLiteral("problem")] = QString::fromStdString(m.problem);
+    o[QStringLiteral("samples")] = static_cast<double>(m.samples);
+    o[QStringLiteral("step_time_s")] = number(m.stepTimeS);
+    o[QStringLiteral("start_mm")] = number(m.startMm);
+    o[QStringLiteral("target_mm")] = number(m.targetMm);
+    o[QStringLiteral("amplitude_mm")] = number(m.amplitudeMm);
+    o[QStringLiteral("duration_s")] = number(m.durationS);
+    o[QStringLiteral("rise_time_s")] = number(m.riseTimeS);
+    o[QStringLiteral("settling_time_s")] = number(m.settlingTimeS);
+    o[QStringLiteral("settling_time_1count_s")] = number(m.settlingTime1CountS);
+    o[QStringLiteral("settling_min_mm")] = number(m.settlingMinMm);
+    o[QStringLiteral("settling_max_mm")] = number(m.settlingMaxMm);
+    o[QStringLiteral("overshoot_pct")] = number(m.overshootPct);
+    o[QStringLiteral("undershoot_pct")] = number(m.undershootPct);
+    o[QStringLiteral("peak_mm")] = number(m.peakMm);
+    o[QStringLiteral("peak_time_s")] = number(m.peakTimeS);
+    o[QStringLiteral("steady_state_error_counts")] = number(m.steadyStateErrorCounts);
+    o[QStringLiteral("iae")] = number(m.iae);
+    o[QStringLiteral("itae")] = number(m.itae);
+    o[QStringLiteral("ise")] = number(m.ise);
+    o[QStringLiteral("following_error_max_mm")] = number(m.followingErrorMaxMm);
+    o[QStringLiteral("following_error_rms_mm")] = number(m.followingErrorRmsMm);
+    o[QStringLiteral("saturated_time_s")] =
+        m.saturationKnown ? number(m.saturatedTimeS) : QJsonValue(QJsonValue::Null);
+    o[QStringLiteral("longest_saturation_s")] =
+        m.saturationKnown ? number(m.longestSaturationS) : QJsonValue(QJsonValue::Null);
+    return o;
+}
+
+QJsonObject tuningGainsToJson(const TuningGains& g, MachineKind kind, LoopLaw law) {
+    QJsonObject o;
+    if (kind == MachineKind::DcTable && law == LoopLaw::Classic) {
+        o[QStringLiteral("b0")] = g.b0;
+        o[QStringLiteral("b1")] = g.b1;
+    } else if (kind == MachineKind::DcTable) {
+        o[QStringLiteral("kp")] = g.kp;
+        o[QStringLiteral("ki")] = g.ki;
+        o[QStringLiteral("kff")] = g.kff;
+    } else {
+        o[QStringLiteral("kp")] = g.kp;
+        o[QStringLiteral("ki")] = g.ki;
+        o[QStringLiteral("kd")] = g.kd;
+    }
+    return o;
+}
+
+QByteArray runConditionsToJson(const RunConditions& c, const StepMetrics* metrics) {
+    QJsonObject o;
+    o[QStringLiteral("format")] = QStringLiteral("trilho-run/1");
+    o[QStringLiteral("machine")] = c.profile.name;
+    o[QStringLiteral("kind")] = QString::fromLatin1(machineKindName(c.profile.kind).data());
+    o[QStringLiteral("axis")] =
+        c.axis ? QJsonValue(QString(QLatin1Char(c.axis))) : QJsonValue(QJsonValue::Null);
+    o[QStringLiteral("law")] = lawName(c.law);
+    o[QStringLiteral("gains")] = tuningGainsToJson(c.gains, c.profile.kind, c.law);
+    o[QStringLiteral("period_s")] = c.periodS;
+    o[QStringLiteral("mass_factor")] = c.massFactor;
+    o[QStringLiteral("test")] = c.test;
+    o[QStringLiteral("date")] = c.date;
+    // A seed above 2^53 would lose digits as a JSON number: it is written as text.
+    o[QStringLiteral("seed")] = QString::number(c.seed);
+    o[QStringLiteral("start_mm")] = c.startMm;
+    o[QStringLiteral("amplitude_mm")] = c.amplitudeMm;
+    o[QStringLiteral("speed_fraction")] = c.speedFraction;
+    o[QStringLiteral("settle_s")] = c.settleS;
+    o[QStringLiteral("pre_roll_s")] = c.preRollS;
+    o[QStringLiteral("max_duration_s")] = c.maxDurationS;
+    o[QStringLiteral("counts_per_mm")] = c.countsPerMm;
+    o[QStringLiteral("abort_reason")] = c.abortReason;
+    o[QStringLiteral("profile")] =
+        QJsonDocument::fromJson(machineProfileToJson(c.profile)).object();
+    if (metrics) o[QStringLiteral("metrics")] = stepMetricsToJson(*metrics);
+    return QJsonDocument(o).toJson(QJsonDocument::Indented);
+}
+
+namespace {
+
+bool writeAtomically(const QString& path, const QByteArray& head, const RunChannels* rows,
+                     bool integerDrive, QString* error) {
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly)) {
+        *error = QStringLiteral("cannot write '%1': %2").arg(path, f.errorString());
+        return false;
+    }
+    QByteArray buffer = head;
+    if (rows) {
+        const RunChannels& c = *rows;
+        const std::size_t n = c.size();
+        auto at = [](const std::vector<double>& v, std::size_t k) {
+            return k < v.size() ? v[k] : kNaN;
+        };
+        CsvRow row;
+        buffer.reserve(1 << 20);
+        for (std::size_t k = 0; k < n; ++k) {
+            row.clear();
+            row.num(c.timeS[k], kDecimals)
+                .integer(k < c.blockN.size() ? c.blockN[k] : -1)
+                .num(at(c.setpointMm, k), kDecimals)
+                .num(at(c.positionMm, k), kDecimals)
+                .num(at(c.errorMm, k), kDecimals)
+                .num(at(c.velocityMmS, k), kDecimals);
+            const double d = at(c.drive, k);
+            row.num(d, integerDrive && d == std::floor(d) ? 0 : kDecimals)
+                .num(at(c.setpointVelocityMmS, k), kDecimals)
+                .num(at(c.pCodes, k), kDecimals)
+                .num(at(c.iCodes, k), kDecimals)
+                .num(at(c.dCodes, k), kDecimals)
+                .num(at(c.ffCodes, k), kDecimals)
+                .num(at(c.sumCodes, k), kDecimals)
+                .num(at(c.commandCodes, k), kDecimals);
+            if (k < c.saturated.size())
+                row.integer(c.saturated[k] ? 1 : 0);
+            else
+                row.empty();
+            row.end();
+            buffer.append(row.data(), static_cast<qsizetype>(row.size()));
+            if (buffer.size() > (1 << 20)) {
+                if (f.write(buffer) != buffer.size()) break;
+                buffer.clear();
+            }
+        }
+    }
+    if (f.write(buffer) != buffer.size() || !f.commit()) {
+        *error = QStringLiteral("cannot write '%1': %2").arg(path, f.errorString());
+        f.cancelWriting();
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+bool saveRunRecord(const RunRecord& r, const QString& csvPath, const StepMetrics* metrics,
+                   QString* error) {
+    const QByteArray head = QByteArray(runCsvHeader()) + '\n';
+    if (!writeAtomically(csvPath, head, &r.channels, true, error)) return false;
+    return writeAtomically(runSidecarPath(csvPath), runConditionsToJson(r.conditions, metrics),
+                           nullptr, false, error);
+}
+
+// ---------------------------------------------------------------------------------- reading
+
+namespace {
+
+/// The columns a reader knows; -1 when absent.
+struct Columns {
+    int t = -1, block = -1, sp = -1, pos = -1, err = -1, vel = -1, drive = -1, spVel = -1, p = -1,
+        i = -1, d = -1, ff = -1, sum = -1, cmd = -1, sat = -1;
+};
+
+QString shown(std::string_view v) {
+    QString s = QString::fromUtf8(v.data(), static_cast<qsizetype>(v.size()));
+    if (s.size() > 40) s = s.left(40) + QStringLiteral("...");
+    return s;
+}
+
+}  // namespace
+
+RunLoad runRecordFromCsv(const QByteArray& csv, const QString& origin, char axis) {
+    RunLoad out;
+    const std::string_view text(csv.constData(), static_cast<std::size_t>(csv.size()));
+    auto fail = [&](std::size_t line, std::size_t col, const QString& what) {
+        out.error = QStringLiteral("%1:%2:%3: %4").arg(origin).arg(line).arg(col).arg(what);
+        return out;
+    };
+    if (text.empty()) return fail(1, 1, QStringLiteral("empty file: expected a CSV header"));
+    if (text.find('\0') != std::string_view::npos)
+        return fail(1, 1, QStringLiteral("binary data: not a CSV trace"));
+    // Header.
+    std::size_t eol = text.find('\n');
+    std::string_view header = text.substr(0, eol);
+    if (!header.empty() && header.back() == '\r') header.remove_suffix(1);
+    std::vector<std::string_view> names;
+    for (std::size_t p = 0;;) {
+        const std::size_t c = header.find(',', p);
+        names.push_back(header.substr(p, c == std::string_view::npos ? c : c - p));
+        if (c == std::string_view::npos) break;
+        p = c + 1;
+    }
+    Columns col;
+    const bool twoAxes = std::find(names.begin(), names.end(), "x_setpoint_mm") != names.end();
+    if (twoAxes && axis != 'x' && axis != 'y')
+        return fail(1, 1,
+                    QStringLiteral("a trace of two axes (x_setpoint_mm, y_setpoint_mm): "
+                                   "choose one with --axis x or y"));
+    if (!twoAxes && axis != 0 &&
+        std::find(names.begin(), names.end(), "setpoint_mm") != names.end())
+        axis = 0;  // a single-axis record already holds the axis it was taken on
+    const std::string prefix = twoAxes ? std::string(1, axis) + "_" : std::string();
+    for (std::size_t k = 0; k < names.size(); ++k) {
+        const std::string_view n = names[k];
+        const int i = static_cast<int>(k);
+        auto is = [&](const char* base) { return n == prefix + base; };
+        if (n == "t_s")
+            col.t = i;
+        else if (n == "block_n")
+            col.block = i;
+        else if (is("setpoint_mm"))
+            col.sp = i;
+        else if (is("position_mm"))
+            col.pos = i;
+        else if (n == "error_mm")
+            col.err = i;
+        else if (is("velocity_mm_s"))
+            col.vel = i;
+        else if (is("drive"))
+            col.drive = i;
+        else if (n == "setpoint_velocity_mm_s")
+            col.spVel = i;
+        else if (n == "p_codes")
+            col.p = i;
+        else if (n == "i_codes")
+            col.i = i;
+        else if (n == "d_codes")
+            col.d = i;
+        else if (n == "ff_codes")
+            col.ff = i;
+        else if (n == "sum_codes")
+            col.sum = i;
+        else if (n == "command_codes")
+            col.cmd = i;
+        else if (n == "saturated")
+            col.sat = i;
+    }
+    auto need = [&](int c, const std::string& name) -> bool {
+        if (c >= 0) return true;
+        fail(1, 1,
+             QStringLiteral("no column '%1' in the header (got '%2')")
+                 .arg(QString::fromStdString(name), shown(header)));
+        return false;
+    };
+    if (!need(col.t, "t_s") || !need(col.sp, prefix + "setpoint_mm") ||
+        !need(col.pos, prefix + "position_mm"))
+        return out;
+    RunRecord rec;
+    RunChannels& c = rec.channels;
+    c.hasLoopTerms = col.p >= 0 && col.i >= 0 && col.d >= 0 && col.ff >= 0;
+    c.hasSaturation = col.sat >= 0;
+    const std::size_t nCols = names.size();
+    std::vector<std::string_view> fields(nCols);
+    std::size_t line = 1;
+    std::size_t pos = eol == std::string_view::npos ? text.size() : eol + 1;
+    double lastT = -std::numeric_limits<double>::infinity();
+    while (pos < text.size()) {
+        ++line;
+        std::size_t end = text.find('\n', pos);
+        if (end == std::string_view::npos) end = text.size();
+        std::string_view row = text.substr(pos, end - pos);
+        const std::size_t rowStart = pos;
+        pos = end + 1;
+        if (!row.empty() && row.back() == '\r') row.remove_suffix(1);
+        if (row.empty()) continue;
+        if (c.size() >= kMaxRunRows)
+            return fail(line, 1,
+                        QStringLiteral("more than %1 rows: too long a trace").arg(kMaxRunRows));
+        std::size_t nf = 0;
+        for (std::size_t p = 0;;) {
+            const std::size_t comma = row.find(',', p);
+            if (nf < nCols)
+                fields[nf] = row.substr(p, comma == std::string_view::npos ? comma : comma - p);
+            ++nf;
+            if (comma == std::string_view::npos) break;
+            p = comma + 1;
+        }
+        if (nf != nCols)
+            return fail(line, 1, QStringLiteral("%1 fields, the header has %2").arg(nf).arg(nCols));
+        bool bad = false;
+        auto field = [&](int k, bool required, const char* name) -> double {
+            if (k < 0 || bad) return kNaN;
+            const std::string_view f = fields[static_cast<std::size_t>(k)];
+            const std::size_t column =
+                static_cast<std::size_t>(f.data() - text.data()) - rowStart + 1;
+            if (f.empty()) {
+                if (required) {
+                    fail(line, column,
+                         QStringLiteral("%1: empty, a number is needed").arg(QLatin1String(name)));
+                    bad = true;
+                }
+                return kNaN;
+            }
+            double v = 0.0;
+            const auto r = std::from_chars(f.data(), f.data() + f.size(), v);
+            if (r.ec != std::errc{} || r.ptr != f.data() + f.size() || !std::isfinite(v)) {
+                fail(line, column,
+                     QStringLiteral("%1: not a finite number (got '%2')")
+                         .arg(QLatin1String(name), shown(f)));
+                bad = true;
+                return kNaN;
+            }
+            return v;
+        };
+        const double t = field(col.t, true, "t_s");
+        const double sp = field(col.sp, true, "setpoint_mm");
+        const double x = field(col.pos, true, "position_mm");
+        if (bad) return out;
+        if (!(t > lastT)) {
+            const std::string_view f = fields[static_cast<std::size_t>(col.t)];
+            return fail(line, static_cast<std::size_t>(f.data() - text.data()) - rowStart + 1,
+                        QStringLiteral("t_s: time does not increase (got '%1' after %2)")
+                            .arg(shown(f))
+                            .arg(lastT));
+        }
+        lastT = t;
+        c.timeS.push_back(t);
+        c.setpointMm.push_back(sp);
+        c.positionMm.push_back(x);
+        const double b = field(col.block, false, "block_n");
+        c.blockN.push_back(std::isfinite(b) ? static_cast<int>(b) : -1);
+        const double e = field(col.err, false, "error_mm");
+        c.errorMm.push_back(std::isfinite(e) ? e : sp - x);
+        c.velocityMmS.push_back(field(col.vel, false, "velocity_mm_s"));
+        c.drive.push_back(field(col.drive, false, "drive"));
+        c.setpointVelocityMmS.push_back(field(col.spVel, false, "setpoint_velocity_mm_s"));
+        c.pCodes.push_back(field(col.p, false, "p_codes"));
+        c.iCodes.push_back(field(col.i, false, "i_codes"));
+        c.dCodes.push_back(field(col.d, false, "d_codes"));
+        c.ffCodes.push_back(field(col.ff, false, "ff_codes"));
+        c.sumCodes.push_back(field(col.sum, false, "sum_codes"));
+        c.commandCodes.push_back(field(col.cmd, false, "command_codes"));
+        const double s = field(col.sat, false, "saturated");
+        if (bad) return out;
+        if (col.sat >= 0 && std::isfinite(s) && s != 0.0 && s != 1.0) {
+            const std::string_view f = fields[static_cast<std::size_t>(col.sat)];
+            return fail(line, static_cast<std::size_t>(f.data() - text.data()) - rowStart + 1,
+                        QStringLiteral("saturated: must be 0 or 1 (got '%1')").arg(shown(f)));
+        }
+        c.saturated.push_back(s == 1.0 ? 1 : 0);
+    }
+    if (c.size() == 0) return fail(line, 1, QStringLiteral("no rows after the header"));
+    out.record = std::move(rec);
+    return out;
+}
+
+std::optional<RunConditions> runConditionsFromJson(const QByteArray& json, const QString& origin,
+                                                   QString* error) {
+    QJsonParseError pe;
+    const QJsonDocument doc = QJsonDocument::fromJson(json, &pe);
+    if (pe.error != QJsonParseError::NoError || !doc.isObject()) {
+        // Line and column of the parser's offset.
+        int line = 1, column = 1;
+        for (int k = 0; k < pe.offset && k < json.size(); ++k)
+            json[k] == '\n' ? (++line, column = 1) : ++column;
+        *error =
+            QStringLiteral("%1:%2:%3: %4")
+                .arg(origin)
+                .arg(line)
+                .arg(column)
+                .arg(pe.error != QJsonParseError::NoError ? pe.errorString()
+                                                          : QStringLiteral("not a JSON object"));
+        return std::nullopt;
+    }
+    const QJsonObject o = doc.object();
+    auto bad = [&](const QString& key, const QString& what) {
+        *error = QStringLiteral("%1: %2: %3").arg(origin, key, what);
+        return std::nullopt;
+    };
+    if (o.value(QStringLiteral("format")).toString() != QLatin1String("trilho-run/1"))
+        return bad(QStringLiteral("format"),
+                   QStringLiteral("expected \"trilho-run/1\" (got '%1')")
+                       .arg(o.value(QStringLiteral("format")).toVariant().toString()));
+    RunConditions c;
+    const QJsonValue prof = o.value(QStringLiteral("profile"));
+    if (!prof.isObject())
+        return bad(QStringLiteral("profile"), QStringLiteral("missing or not an object"));
+    const ProfileLoad pl = machineProfileFromJson(QJsonDocument(prof.toObject()).toJson(),
+                                                  origin + QStringLiteral(": profile"));
+    if (!pl.profile) {
+        *error = pl.error;
+        return std::nullopt;
+    }
+    c.profile = *pl.profile;
+    auto num = [&](const char* key, double lo, double hi, double& into) -> bool {
+        const QJsonValue v = o.value(QLatin1String(key));
+        if (v.isUndefined()) return true;
+        if (!v.isDouble() || !std::isfinite(v.toDouble()) || v.toDouble() < lo ||
+            v.toDouble() > hi) {
+            *error = QStringLiteral("%1: %2: must be a number from %3 to %4 (got '%5')")
+                         .arg(origin, QLatin1String(key))
+                         .arg(lo)
+                         .arg(hi)
+                         .arg(QString::fromUtf8(
+                             QJsonDocument(QJsonArray{v}).toJson(QJsonDocument::Compact)));
+            return false;
+        }
+        into = v.toDouble();
+        return true;
+    };
+    const QString axis = o.value(QStringLiteral("axis")).toString();
+    if (axis == QLatin1String("x") || axis == QLatin1String("y"))
+        c.axis = axis.at(0).toLatin1();
+    else if (!o.value(QStringLiteral("axis")).isNull() &&
+             !o.value(QStringLiteral("axis")).isUndefined())
+        return bad(QStringLiteral("axis"),
+                   QStringLiteral("must be \"x\", \"y\" or null (got '%1')").arg(axis));
+    const QString law = o.value(QStringLiteral("law")).toString();
+    if (law == QLatin1String("classic"))
+        c.law = LoopLaw::Classic;
+    else if (law == QLatin1String("engineered"))
+        c.law = LoopLaw::Engineered;
+    else
+        return bad(QStringLiteral("law"),
+                   QStringLiteral("must be \"classic\" or \"engineered\" (got '%1')").arg(law));
+    const QJsonObject g = o.value(QStringLiteral("gains")).toObject();
+    for (const auto& [key, into] : {std::pair{"kp", &c.gains.kp},
+                                    {"ki", &c.gains.ki},
+                                    {"kd", &c.gains.kd},
+                                    {"kff", &c.gains.kff},
+                                    {"b0", &c.gains.b0},
+                                    {"b1", &c.gains.b1}}) {
+        const QJsonValue v = g.value(QLatin1String(key));
+        if (v.isUndefined()) continue;
+        if (!v.isDouble() || !std::isfinite(v.toDouble()))
+            return bad(QStringLiteral("gains.%1").arg(QLatin1String(key)),
+                       QStringLiteral("not a number"));
+        *into = v.toDouble();
+    }
+    if (!num("period_s", 1e-5, 1.0, c.periodS) || !num("mass_factor", 0.1, 20.0, c.massFactor) ||
+        !num("start_mm", -1e5, 1e5, c.startMm) || !num("amplitude_mm", -1e5, 1e5, c.amplitudeMm) ||
+        !num("speed_fraction", 1e-3, 1.0, c.speedFraction) ||
+        !num("settle_s", 0.0, 600.0, c.settleS) || !num("pre_roll_s", 0.0, 600.0, c.preRollS) ||
+        !num("max_duration_s", 0.0, 3600.0, c.maxDurationS) ||
+        !num("counts_per_mm", 1e-3, 1e6, c.countsPerMm))
+        return std::nullopt;
+    const QJsonValue seed = o.value(QStringLiteral("seed"));
+    if (seed.isString()) {
+        bool ok = false;
+        c.seed = seed.toString().toULongLong(&ok);
+        if (!ok)
+            return bad(QStringLiteral("seed"),
+                       QStringLiteral("not a whole number (got '%1')").arg(seed.toString()));
+    } else if (seed.isDouble() && seed.toDouble() >= 0 && seed.toDouble() < 9007199254740992.0) {
+        c.seed = static_cast<std::uint64_t>(seed.toDouble());
+    } else if (!seed.isUndefined()) {
+        return bad(QStringLiteral("seed"), QStringLiteral("not a whole number"));
+    }
+    c.test = o.value(QStringLiteral("test")).toString();
+    c.date = o.value(QStringLiteral("date")).toString();
+    c.abortReason = o.value(QStringLiteral("abort_reason")).toString();
+    return c;
+}
+
+namespace {
+
+bool readBounded(const QString& path, long long maxBytes, QByteArray* into, QString* error) {
+    const QFileInfo info(path);
+    if (!info.exists()) {
+        *error = QStringLiteral("%1: no such file").arg(path);
+        return false;
+    }
+    // Only regular files: a FIFO or a device could block or never end.
+    if (!info.isFile()) {
+        *error = QStringLiteral("%1: not a regular file").arg(path);
+        return false;
+    }
+    if (info.size() > maxBytes) {
+        *error = QStringLiteral("%1: %2 bytes, more than the %3 a run may have")
+                     .arg(path)
+                     .arg(info.size())
+                     .arg(maxBytes);
+        return false;
+    }
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) {
+        *error = QStringLiteral("%1: %2").arg(path, f.errorString());
+        return false;
+    }
+    *into = f.read(maxBytes + 1);
+    if (into->size() > maxBytes) {
+        *error = QStringLiteral("%1: more than %2 bytes").arg(path).arg(maxBytes);
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+RunLoad loadRunRecord(const QString& csvPath, char axis) {
+    RunLoad out;
+    QByteArray csv;
+    if (!readBounded(csvPath, kMaxRunCsvBytes, &csv, &out.error)) return out;
+    out = runRecordFromCsv(csv, csvPath, axis);
+    if (!out.record) return out;
+    const QString sidecar = runSidecarPath(csvPath);
+    if (QFileInfo::exists(sidecar)) {
+        QByteArray json;
+        if (!readBounded(sidecar, kMaxRunJsonBytes, &json, &out.error)) {
+            out.record.reset();
+            return out;
+        }
+        auto c = runConditionsFromJson(json, sidecar, &out.error);
+        if (!c) {
+            out.record.reset();
+            return out;
+        }
+        out.record->conditions = std::move(*c);
+        out.record->hasConditions = true;
+    }
+    return out;
+}
+
+}  // namespace trilho

@@ -1,0 +1,112 @@
+#pragma once
+// One recorded run: the conditions it ran under and every channel of every tick. Saved as a
+// CSV (one row per tick) with a JSON sidecar (the conditions, the full machine profile and the
+// metrics), both written atomically (a temporary file renamed over the old one), and read back
+// with errors that name the file, line, column and value. The CSV's first seven columns are
+// those of `trilho-cli run --trace` on the rail, so one reader takes both.
+#include <QJsonObject>
+#include <QString>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "core/machine/machine_profile.h"
+#include "core/tuning/step_metrics.h"
+
+namespace trilho {
+
+/// The gains of a run, whichever law and machine (unused fields stay 0): the rail's kp, ki, kd
+/// (machine_profile.h units of the law), the DC table's engineered kp, ki, kff, its classic b0,
+/// b1.
+struct TuningGains {
+    double kp = 0.0, ki = 0.0, kd = 0.0;
+    double kff = 0.0;
+    double b0 = 0.0, b1 = 0.0;
+};
+
+/// What was run. axis: 0 on the rail, 'x' or 'y' on an XY table.
+struct RunConditions {
+    MachineProfile profile;  ///< the machine's profile; massFactor multiplies its plant's mass
+    char axis = 0;
+    LoopLaw law = LoopLaw::Engineered;
+    TuningGains gains;
+    double periodS = 0.001;
+    double massFactor = 1.0;
+    QString test;  ///< "step", "ramp", or the program's file for `run`
+    QString date;  ///< ISO 8601 UTC, when it ran (not part of the simulation)
+    std::uint64_t seed = 1;
+    double startMm = 0.0;
+    double amplitudeMm = 0.0;
+    double speedFraction = 1.0;  ///< of the machine's rapid speed
+    double settleS = 0.5;        ///< recorded after in position
+    double preRollS = 0.01;      ///< recorded at rest before the step
+    double maxDurationS = 0.0;   ///< 0: automatic
+    double countsPerMm = 22.8;
+    QString abortReason;  ///< empty when the test ran to its end
+};
+
+/// Per tick, all the same length. Loop terms in DAC codes around 128 (rail) or PWM percent
+/// (DC table; p, i and ff only). sumCodes = p + i + d + ff before the clamp; commandCodes the
+/// loop's command (engineered: after the clamp and slew limit; classic: the unclamped sum);
+/// drive the value written (rail: the DAC code after clamp and rounding; table: signed PWM %).
+struct RunChannels {
+    std::vector<double> timeS;
+    std::vector<int> blockN;
+    std::vector<double> setpointMm, positionMm, errorMm, velocityMmS, drive;
+    std::vector<double> setpointVelocityMmS;
+    std::vector<double> pCodes, iCodes, dCodes, ffCodes, sumCodes, commandCodes;
+    std::vector<std::uint8_t> saturated;
+    /// Columns found in a loaded CSV: false for a `run` trace that lacks them.
+    bool hasLoopTerms = false;
+    bool hasSaturation = false;
+    std::size_t size() const { return timeS.size(); }
+    void reserve(std::size_t n);
+};
+
+struct RunRecord {
+    RunConditions conditions;
+    RunChannels channels;
+    bool hasConditions = false;  ///< a sidecar was read (a bare trace has none)
+};
+
+/// Limits of what the reader accepts: 10 minutes at 2 kHz fit with room.
+inline constexpr long long kMaxRunCsvBytes = 512LL * 1024 * 1024;
+inline constexpr long long kMaxRunJsonBytes = 16LL * 1024 * 1024;
+inline constexpr std::size_t kMaxRunRows = 5'000'000;
+
+/// The CSV header of a record (no newline).
+const char* runCsvHeader();
+/// The sidecar's path for a CSV path: "run.csv" -> "run.json", "run" -> "run.json".
+QString runSidecarPath(const QString& csvPath);
+
+/// The metrics as JSON, snake case with units in the keys (rise_time_s, overshoot_pct...); NaN
+/// (not reached) is null. The CLI and the sidecar print exactly this.
+QJsonObject stepMetricsToJson(const StepMetrics& m);
+/// The gains that apply to the machine and law: kp, ki, kd (rail), kp, ki, kff (DC table,
+/// engineered), b0, b1 (DC table, classic).
+QJsonObject tuningGainsToJson(const TuningGains& g, MachineKind kind, LoopLaw law);
+
+/// The metrics of a record's channels.
+StepMetrics measureRun(const RunChannels& c, double countsPerMm);
+
+/// Writes csvPath and its sidecar atomically; the sidecar also holds metrics when given.
+bool saveRunRecord(const RunRecord& r, const QString& csvPath, const StepMetrics* metrics,
+                   QString* error);
+QByteArray runConditionsToJson(const RunConditions& c, const StepMetrics* metrics);
+
+struct RunLoad {
+    std::optional<RunRecord> record;
+    QString error;  ///< "run.csv:12:3: position_mm: not a number (got 'x')"
+};
+
+/// Which columns to take from a trace with two axes (x_setpoint_mm ...); 0 for a single axis.
+/// Reads the CSV and, when it exists, its sidecar. A `run --trace` file of the rail or of an
+/// XY machine (with axis) is accepted: its missing channels are left empty.
+RunLoad loadRunRecord(const QString& csvPath, char axis = 0);
+/// Parses CSV text already in memory (origin names it in errors).
+RunLoad runRecordFromCsv(const QByteArray& csv, const QString& origin, char axis = 0);
+/// Parses a sidecar into conditions (origin names it in errors).
+std::optional<RunConditions> runConditionsFromJson(const QByteArray& json, const QString& origin,
+                                                   QString* error);
+
+}  // namespace trilho

@@ -1,0 +1,71 @@
+#pragma once
+// Step and ramp tests without G-code (issue 21 item 1), on the simulated plant in virtual
+// time: the rail (RailServo on SimRail) or one axis of the DC table (DcTableMotion on
+// SimDcTable). The test holds still for preRollS, moves by amplitudeMm through the machine's
+// own servo (a setpoint step in the classic rail law, the planned profile in the engineered
+// one; a ramp is the same move at speedFraction of rapid), and records every tick until it
+// has been in position settleS, or maxDurationS.
+// Safety: the target must lie inside the soft limits (refused otherwise, nothing runs); the
+// profile's following-error limit is used as it is (never loosened); the test is aborted
+// (drive to 0 V) on a servo fault (following error among them), on more than 200 ms of
+// continuous saturation, or when the position leaves the envelope [start, target] widened by
+// envelopeMarginMm. Deterministic: the same spec gives the same record, bit for bit.
+#include <QString>
+#include <cstdint>
+#include <optional>
+
+#include "core/machine/machine_profile.h"
+#include "core/tuning/run_record.h"
+#include "core/tuning/step_metrics.h"
+
+namespace trilho {
+
+/// Continuous saturation longer than this aborts a test, s.
+inline constexpr double kMaxSaturationS = 0.2;
+
+struct StepTestSpec {
+    MachineProfile profile = MachineProfile::rail();  ///< rail or DC table
+    char axis = 0;                                    ///< DC table: 'x' or 'y'; rail: 0
+    double amplitudeMm = 10.0;                        ///< signed: the sign is the direction
+    std::optional<double> startMm;     ///< default: rail centre; table: the middle of the axis
+    std::optional<LoopLaw> law;        ///< default: the profile's
+    std::optional<TuningGains> gains;  ///< default: the profile's for the law
+    double massFactor = 1.0;           ///< multiplies the profile's (the loop is not told)
+    std::uint64_t seed = 1;
+    double speedFraction = 1.0;  ///< 1: a step at rapid; below: a ramp at that fraction
+    double preRollS = 0.01;
+    double settleS = 0.5;
+    double maxDurationS = 0.0;  ///< 0: automatic (the move's time plus 3 s; classic rail 60 s)
+    /// The envelope beyond start and target, mm; 0: automatic (max(2 mm, 50 % of |amplitude|)).
+    double envelopeMarginMm = 0.0;
+};
+
+enum class StepAbort : std::uint8_t {
+    None,
+    Refused,     ///< not started: the spec is invalid or outside the soft limits
+    ServoFault,  ///< following error, soft limit, encoder... (the servo's own alarm)
+    Saturation,  ///< more than kMaxSaturationS of continuous saturation
+    Envelope,    ///< the position left the test's envelope
+};
+
+struct StepTestResult {
+    RunRecord record;
+    StepMetrics metrics;
+    StepAbort abort = StepAbort::None;
+    QString abortReason;  ///< human text, empty when None
+    bool ok() const { return abort == StepAbort::None; }
+};
+
+/// The profile's gains for a law (and axis on the DC table).
+TuningGains profileGains(const MachineProfile& profile, char axis, LoopLaw law);
+
+StepTestResult runStepTest(const StepTestSpec& spec);
+
+/// The spec that reproduces a recorded test (its conditions).
+StepTestSpec specFromConditions(const RunConditions& c);
+
+/// "What if": re-runs a recorded test from the same start state with other gains (the same
+/// gains reproduce the record exactly).
+StepTestResult whatIf(const RunConditions& recorded, const TuningGains& gains);
+
+}  // namespace trilho
