@@ -66,15 +66,27 @@ QJsonObject modelJson(const RailIdentification& id) {
     return o;
 }
 
+/// A number, or null when it was not reached (NaN: step_info's "never").
+QJsonValue number(double v) {
+    return std::isfinite(v) ? QJsonValue(v) : QJsonValue();
+}
+
 QJsonObject moveJson(const MoveResult& m) {
+    const StepMetrics& s = m.metrics;
     QJsonObject o;
     o[QStringLiteral("step_mm")] = m.stepMm;
-    o[QStringLiteral("overshoot_counts")] = m.overshootCounts;
+    o[QStringLiteral("rise_time_s")] = number(s.riseTimeS);
+    o[QStringLiteral("settling_time_s")] = number(s.settlingTimeS);
+    o[QStringLiteral("settling_time_1count_s")] = number(m.settlingTimeS);
     o[QStringLiteral("overshoot_pct")] = m.overshootPct;
-    o[QStringLiteral("settling_time_s")] = m.settlingTimeS;
-    o[QStringLiteral("settling_time_1count_s")] = m.settlingTimeS;
+    o[QStringLiteral("overshoot_counts")] = m.overshootCounts;
+    o[QStringLiteral("peak_mm")] = s.peakMm;
+    o[QStringLiteral("peak_time_s")] = s.peakTimeS;
     o[QStringLiteral("in_position_time_s")] = m.inPositionTimeS;
     o[QStringLiteral("steady_state_error_counts")] = m.finalErrorCounts;
+    o[QStringLiteral("iae")] = s.iae;
+    o[QStringLiteral("itae")] = s.itae;
+    o[QStringLiteral("ise")] = s.ise;
     o[QStringLiteral("max_following_error_mm")] = m.maxFollowingErrorMm;
     o[QStringLiteral("in_position")] = m.inPosition;
     o[QStringLiteral("faulted")] = m.faulted;
