@@ -52,6 +52,8 @@ QJsonObject modelJson(const RailIdentification& id) {
     o[QStringLiteral("experiment_time_s")] = id.experimentTimeS;
     o[QStringLiteral("max_excursion_mm")] = id.maxExcursionMm;
     o[QStringLiteral("return_error_counts")] = id.returnErrorCounts;
+    if (!id.error.isEmpty()) o[QStringLiteral("error")] = id.error;
+    if (id.iterations == 0) return o;  // stopped before there was anything to fit
     o[QStringLiteral("speed_gain_mm_s_per_code")] = id.model.speedGainMmSPerCode;
     o[QStringLiteral("time_constant_s")] = id.model.timeConstantS;
     o[QStringLiteral("acceleration_limit_mm_s2")] = id.model.accelerationLimitMmS2;
@@ -62,7 +64,6 @@ QJsonObject modelJson(const RailIdentification& id) {
     o[QStringLiteral("fit_velocity_train_pct")] = id.fitVelocityTrainPct;
     o[QStringLiteral("fit_position_pct")] = id.fitPositionPct;
     o[QStringLiteral("iterations")] = id.iterations;
-    if (!id.error.isEmpty()) o[QStringLiteral("error")] = id.error;
     return o;
 }
 
@@ -94,6 +95,10 @@ QJsonObject moveJson(const MoveResult& m) {
 }
 
 QString modelText(const RailIdentification& id) {
+    if (id.iterations == 0)  // stopped before there was anything to fit
+        return QStringLiteral("experiment: %1 s, within %2 mm of its start; no model\n")
+            .arg(id.experimentTimeS, 0, 'f', 3)
+            .arg(id.maxExcursionMm, 0, 'f', 1);
     return QStringLiteral(
                "experiment: %1 s, within %2 mm of its start, back within %3 counts\n"
                "speed gain: %4 mm/s per code\n"
@@ -322,7 +327,8 @@ int tuneRail(const QStringList& args, bool autotune) {
 
 int tuneCommand(const QStringList& args) {
     if (args.size() < 2) {
-        err(QString::fromLatin1(kTuneUsage));
+        err(QStringLiteral("trilho-cli tune: a subcommand is needed (identify or auto)\n") +
+            QString::fromLatin1(kTuneUsage));
         return kUsage;
     }
     const QString sub = args.at(1);

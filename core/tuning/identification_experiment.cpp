@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/tuning/servo_fault_name.h"
+
 namespace trilho {
 
 namespace {
@@ -55,7 +57,9 @@ IdentificationRecord runIdentificationExperiment(RailRig& rig) {
                 const ServoSample& s = servo.sample();
                 if (s.mode == ServoMode::Fault) {
                     rec.faulted = true;
-                    rec.error = QCoreApplication::translate("trilho", "the servo faulted");
+                    rec.error = QCoreApplication::translate(
+                                    "trilho", "the experiment was stopped by an alarm: %1")
+                                    .arg(servoFaultName(s.fault));
                     return false;
                 }
                 out.push_back({tickTime, s.positionMm, static_cast<double>(s.loop.code) - 128.0});
@@ -82,7 +86,9 @@ IdentificationRecord runIdentificationExperiment(RailRig& rig) {
             if (s.mode == ServoMode::Fault) {
                 rec.faulted = true;
                 if (rec.error.isEmpty())
-                    rec.error = QCoreApplication::translate("trilho", "the servo faulted");
+                    rec.error = QCoreApplication::translate(
+                                    "trilho", "the return to the start was stopped by an alarm: %1")
+                                    .arg(servoFaultName(s.fault));
                 ok = false;
                 break;
             }
