@@ -449,11 +449,15 @@
         <translation type="unfinished" />
     </message>
     <message>
-        <source>the servo faulted</source>
+        <source>the experiment was stopped by an alarm: %1</source>
         <translation type="unfinished" />
     </message>
     <message>
         <source>the platform left the experiment's +-100 mm</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>the return to the start was stopped by an alarm: %1</source>
         <translation type="unfinished" />
     </message>
     <message>
@@ -465,7 +469,11 @@
         <translation type="unfinished" />
     </message>
     <message>
-        <source>the verification move with the tuned gains did not end in position</source>
+        <source>a verification move with the tuned gains was stopped by an alarm: %1</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>a verification move with the tuned gains did not end in position</source>
         <translation type="unfinished" />
     </message>
     <message>
@@ -474,6 +482,66 @@
     </message>
     <message>
         <source>the model fits the held-out run at %1 % on velocity, under %2 %</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>the relay cycle left the experiment's +-100 mm</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>the relay did not oscillate (%1 switches in %2 s)</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>the relay cycle was too short to time</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>the relay cycle had no amplitude</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>no fault</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>following error</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>left end switch</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>right end switch</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>amplifier fault</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>hard stop</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>soft limit</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>encoder stalled</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>in-position timeout</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>counts lost</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>unknown fault</source>
         <translation type="unfinished" />
     </message>
 </context>
@@ -1675,7 +1743,7 @@
     </message>
     <message>
         <source>displacement (mm)</source>
-        <translation type="unfinished" />
+        <translation>deslocamento (mm)</translation>
     </message>
     <message>
         <source>Stopped</source>
@@ -1851,7 +1919,7 @@
     </message>
     <message>
         <source>time (s)</source>
-        <translation type="unfinished" />
+        <translation>tempo (s)</translation>
     </message>
     <message>
         <source>PWM (%)</source>
@@ -2174,7 +2242,7 @@
     </message>
     <message>
         <source>Machine profiles (*.json)</source>
-        <translation type="unfinished" />
+        <translation>Perfis de máquina (*.json)</translation>
     </message>
     <message>
         <source>cannot save '%1': %2</source>

@@ -10,6 +10,8 @@ int profileCommand(const QStringList& args);
 int runCommand(const QStringList& args);
 int latencyCommand(const QStringList& args);
 int serveCommand(const QStringList& args);
+/// tune step | metrics (tune_command.cpp) | identify | auto (tune_model_command.cpp).
 int tuneCommand(const QStringList& args);
+int tuneModelCommand(const QStringList& args, bool autotune);
 
 }  // namespace trilho::cli

@@ -16,7 +16,7 @@ const char* kUsage =
     "  latency   measure the servo loop's wake-up latency and body time\n"
     "  profile   check a machine profile (JSON) and print it in full\n"
     "  serve     run the rail headless with the DNC link (Modbus TCP/RTU)\n"
-    "  tune      step tests and metrics of runs (tune step, tune metrics)\n"
+    "  tune      step tests, metrics of runs, identification and autotune\n"
     "\n"
     "Options:\n"
     "  -h, --help  print this help\n"

@@ -25,6 +25,11 @@ const char* kTuneUsage =
     "Subcommands:\n"
     "  step      run a step (or ramp) test on the simulated machine and measure it\n"
     "  metrics   measure a trace written by 'run --trace' or 'tune step --trace'\n"
+    "  identify  identify the plant's model from a bounded experiment (at most 3 s, within\n"
+    "            +-100 mm, back at its start within a count) and judge it on a held-out run\n"
+    "  auto      identify, design the gains (SIMC), predict the verification moves on the\n"
+    "            model, run them with the tuned gains, and report prediction against\n"
+    "            measurement\n"
     "\n"
     "Run 'trilho-cli tune <subcommand> --help' for its options.\n";
 
@@ -414,7 +419,11 @@ int tuneCommand(const QStringList& args) {
     rest[0] = QStringLiteral("trilho-cli tune ") + sub;
     if (sub == QLatin1String("step")) return stepCommand(rest);
     if (sub == QLatin1String("metrics")) return metricsCommand(rest);
-    return usageError("tune", QStringLiteral("unknown subcommand '%1' (step or metrics)").arg(sub));
+    if (sub == QLatin1String("identify")) return tuneModelCommand(rest, false);
+    if (sub == QLatin1String("auto")) return tuneModelCommand(rest, true);
+    return usageError(
+        "tune",
+        QStringLiteral("unknown subcommand '%1' (step, metrics, identify or auto)").arg(sub));
 }
 
 }  // namespace trilho::cli

@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/tuning/rail_identification.h"
+#include "core/tuning/servo_fault_name.h"
+
 namespace trilho {
 
 namespace {
@@ -23,6 +26,23 @@ constexpr Segment kFitPart[] = {{2, 0.08},  {-2, 0.16}, {2, 0.08}, {14, 0.15},
 constexpr Segment kValidatePart[] = {{6, 0.12}, {-10, 0.2}, {8, 0.16}, {0, 0.08}};
 /// The return: a fifth of the rapid speed, the profile's own loop.
 constexpr double kReturnSpeedFraction = 0.2;
+
+/// Half the largest acceleration the platform showed in the fitted part, mm/s2: the return
+/// plans with it, so a payload far heavier than the profile's (whose acceleration the current
+/// cannot give) comes back without a following error.
+double returnAcceleration(const IdentificationRecord& rec) {
+    std::vector<double> p;
+    p.reserve(rec.fit.size());
+    for (const IdentificationTick& t : rec.fit)
+        p.push_back(t.positionMm);
+    const int w = std::max(1, static_cast<int>(std::lround(0.005 / rec.periodS)));
+    const std::vector<double> v = windowedVelocity(p, rec.periodS, w);
+    double peak = 0.0;
+    for (std::size_t k = static_cast<std::size_t>(2 * w); k < v.size(); ++k)
+        peak = std::max(peak, std::abs(v[k] - v[k - static_cast<std::size_t>(2 * w)]) /
+                                  (2.0 * w * rec.periodS));
+    return 0.5 * peak;
+}
 
 double excursion(const RailRig& rig, double startMm, RailServo& servo) {
     (void)rig;
@@ -55,7 +75,9 @@ IdentificationRecord runIdentificationExperiment(RailRig& rig) {
                 const ServoSample& s = servo.sample();
                 if (s.mode == ServoMode::Fault) {
                     rec.faulted = true;
-                    rec.error = QCoreApplication::translate("trilho", "the servo faulted");
+                    rec.error = QCoreApplication::translate(
+                                    "trilho", "the experiment was stopped by an alarm: %1")
+                                    .arg(servoFaultName(s.fault));
                     return false;
                 }
                 out.push_back({tickTime, s.positionMm, static_cast<double>(s.loop.code) - 128.0});
@@ -74,24 +96,36 @@ IdentificationRecord runIdentificationExperiment(RailRig& rig) {
     bool ok = runPart(kFitPart, rec.fit) && runPart(kValidatePart, rec.validate);
     if (servo.sample().mode != ServoMode::Fault) {
         servo.release();
-        servo.moveTo(rec.startMm, kReturnSpeedFraction, false);
+        const MachineProfile& base = servo.profile();
+        const double gentle = returnAcceleration(rec);
+        if (gentle > 0.0 && gentle < base.motion.accelerationMmS2) {
+            MachineProfile p = base;
+            p.motion.accelerationMmS2 = std::max(gentle, 100.0);
+            p.motion.minAccelerationMmS2 =
+                std::min(p.motion.minAccelerationMmS2, p.motion.accelerationMmS2);
+            rig.reloadProfile(p);
+        }
+        RailServo& back = rig.servo();
+        back.moveTo(rec.startMm, kReturnSpeedFraction, false);
         // The return ends in position (the servo's own window, one count) or at the time bound.
         while (rig.elapsedS() - t0 < kIdentificationMaxTimeS - rec.periodS) {
             rig.tick();
-            const ServoSample& s = servo.sample();
+            const ServoSample& s = back.sample();
             if (s.mode == ServoMode::Fault) {
                 rec.faulted = true;
                 if (rec.error.isEmpty())
-                    rec.error = QCoreApplication::translate("trilho", "the servo faulted");
+                    rec.error = QCoreApplication::translate(
+                                    "trilho", "the return to the start was stopped by an alarm: %1")
+                                    .arg(servoFaultName(s.fault));
                 ok = false;
                 break;
             }
             if (s.inPosition && std::abs(s.positionMm - rec.startMm) <= countMm * (1.0 + 1e-6))
                 break;
         }
-        servo.hold();
+        back.hold();
     }
-    rec.endMm = servo.sample().positionMm;
+    rec.endMm = rig.servo().sample().positionMm;
     rec.experimentTimeS = rig.elapsedS() - t0;
     if (ok && std::abs(rec.endMm - rec.startMm) > countMm * (1.0 + 1e-6))
         rec.error = QCoreApplication::translate(

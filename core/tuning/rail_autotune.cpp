@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/tuning/model_rail.h"
+#include "core/tuning/servo_fault_name.h"
 
 namespace trilho {
 
@@ -67,8 +68,19 @@ AutotuneResult autotuneRail(RailRig& rig, const MachineProfile& profile,
     const bool longOk =
         !(options.longMoveMm > 0.0) || (passed(measured.longMove) && passed(measured.longBack));
     if (!passed(measured.step) || !passed(measured.stepBack) || !longOk) {
-        r.error = QCoreApplication::translate(
-            "trilho", "the verification move with the tuned gains did not end in position");
+        ServoFault fault = ServoFault::None;
+        for (const MoveResult* m :
+             {&measured.step, &measured.stepBack, &measured.longMove, &measured.longBack})
+            if (m->faulted) fault = m->fault;
+        r.error =
+            fault != ServoFault::None
+                ? QCoreApplication::translate(
+                      "trilho",
+                      "a verification move with the tuned gains was stopped by an "
+                      "alarm: %1")
+                      .arg(servoFaultName(fault))
+                : QCoreApplication::translate(
+                      "trilho", "a verification move with the tuned gains did not end in position");
         return r;
     }
     r.ok = true;

@@ -1,11 +1,12 @@
 #pragma once
 // A verification move and what it measured: a positioned move through the servo, watched
-// until it is in position and for a short hold after, with the figures a commissioning
-// engineer checks: overshoot (counts and % of the step, python-control step_info's definition
-// against the target), settling to +-1 count (the last time the position was outside the band,
-// from the command), the servo's in-position time and the final error. The workbench's full
-// step metrics (core/tuning/step_metrics, issue 21 item 2) measure the same record when merged.
+// until it is in position and for a short hold after, measured by the workbench's step metrics
+// (core/tuning/step_metrics, python-control step_info) against the move's target taken as the
+// step (a commissioning engineer asks where the platform is against where it was sent, not
+// against the profile's moving setpoint): overshoot (counts and % of the step), settling to
+// +-1 count from the command, the servo's own in-position time and the final error.
 #include "core/tuning/rail_rig.h"
+#include "core/tuning/step_metrics.h"
 
 namespace trilho {
 
@@ -21,6 +22,7 @@ struct MoveResult {
     bool inPosition = false;
     bool faulted = false;
     ServoFault fault = ServoFault::None;
+    StepMetrics metrics;  ///< the full step_info figures of the move against its target
 };
 
 /// Moves to target at the rapid speed, waits (at most timeoutS) for in position, then holds

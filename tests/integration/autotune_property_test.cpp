@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/tuning/rail_autotune.h"
+#include "core/tuning/relay_experiment.h"
 #include "host/session/sim_rail_rig.h"
 
 namespace trilho {
@@ -127,6 +128,29 @@ TEST(AutotuneProperty, FrequencyViewHasMargins) {
     ASSERT_FALSE(r.frequency.openLoop.empty());
     std::printf("margins: GM %.1f dB at %.1f rad/s, PM %.1f deg at %.1f rad/s\n", m.gainMarginDb,
                 m.phaseCrossoverRadS, m.phaseMarginDeg, m.gainCrossoverRadS);
+}
+
+// The relay experiment is offered to teach with, beside the model-based result: it must stay
+// bounded and come back, and its Ziegler-Nichols gains are finite; they are not asserted to be
+// good (on this plant the quantization and friction shape the cycle).
+TEST(RelayExperiment, OscillatesWithinBoundsAndComesBack) {
+    const MachineProfile profile = MachineProfile::rail();
+    for (const MassCase& mc : kMasses) {
+        SCOPED_TRACE(testing::Message() << "mass x" << mc.factor);
+        SimRailRig rig(profile, 1, kStartMm, mc.factor);
+        const RelayResult r = runRelayExperiment(rig);
+        ASSERT_TRUE(r.ok) << r.error.toStdString();
+        EXPECT_GT(r.amplitudeMm, 0.0);
+        EXPECT_LT(r.amplitudeMm, 100.0);
+        EXPECT_GT(r.periodS, 0.0);
+        EXPECT_LE(r.experimentTimeS, 3.0);
+        EXPECT_LE(r.returnErrorCounts, 1.0);
+        std::printf(
+            "relay x%.1f: a %.3f mm, Tu %.4f s, Ku %.2f code/mm -> ZN kp %.3f ki %.3f kd "
+            "%.4f\n",
+            mc.factor, r.amplitudeMm, r.periodS, r.ultimateGain, r.zieglerNichols.kp,
+            r.zieglerNichols.ki, r.zieglerNichols.kd);
+    }
 }
 
 }  // namespace

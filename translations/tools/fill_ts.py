@@ -2,7 +2,7 @@
 """Fills unfinished entries of the .ts files from ui_texts.tsv (source<TAB>pt_BR<TAB>es).
 
 Run after lupdate has added new source texts (translations/tools/update.sh does all of it):
-  /usr/lib/qt6/bin/lupdate -I . -no-obsolete -locations none core ui app -ts translations/trilho_*.ts
+  /usr/lib/qt6/bin/lupdate -I . -no-obsolete -locations none core ui app hal host -ts translations/trilho_*.ts
   python3 translations/tools/fill_ts.py
 A trilho_LANG.ts.old beside a file (a copy from before regenerating it) also supplies texts.
 Entries with no row in the table stay unfinished and are listed, so nothing is missed quietly.

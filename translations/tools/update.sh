@@ -6,6 +6,6 @@ cd "$(dirname "$0")/../.."
 LUPDATE=/usr/lib/qt6/bin/lupdate
 for lang in pt_BR es; do mv "translations/trilho_$lang.ts" "translations/trilho_$lang.ts.old"; done
 trap 'rm -f translations/*.ts.old' EXIT
-"$LUPDATE" -I . -no-obsolete -locations none core ui app hal -ts translations/trilho_pt_BR.ts translations/trilho_es.ts
+"$LUPDATE" -I . -no-obsolete -locations none core ui app hal host -ts translations/trilho_pt_BR.ts translations/trilho_es.ts
 python3 translations/tools/fill_ts.py
-"$LUPDATE" -I . -no-obsolete -locations none core ui app hal -ts translations/trilho_pt_BR.ts translations/trilho_es.ts >/dev/null
+"$LUPDATE" -I . -no-obsolete -locations none core ui app hal host -ts translations/trilho_pt_BR.ts translations/trilho_es.ts >/dev/null

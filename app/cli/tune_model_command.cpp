@@ -1,0 +1,319 @@
+// trilho-cli tune identify|auto --machine P [--axis x|y] [--mass-factor F] [--seed N] [--json]
+//   [--write-profile OUT.json] (auto only)
+// Issue 21 items 5-8: identification of the plant and autotune, on the simulated machine in
+// virtual time. `tune` dispatches here (tune_command.cpp) for identify and auto.
+#include <QCommandLineParser>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <cmath>
+
+#include "app/cli/cli_output.h"
+#include "app/cli/commands.h"
+#include "core/tuning/rail_autotune.h"
+#include "host/common/data_paths.h"
+#include "host/session/sim_rail_rig.h"
+
+namespace trilho::cli {
+
+namespace {
+
+/// The rail starts at rest here, as if homed: 500 mm left of the centre, so the 1000 mm
+/// verification move ends 500 mm right of it, crossing the centre mark as a real move does.
+constexpr double kTuneStartMm = -500.0;
+
+QString tuneExitHelp() {
+    return QStringLiteral(
+        "Exit status:\n"
+        "  0  identified (auto: tuned, verified in position; the profile written)\n"
+        "  2  usage error, a profile that cannot be read or written, a machine that cannot\n"
+        "     be tuned yet, or out of memory\n"
+        "  3  an alarm stopped the experiment, the model fits the held-out run under 90 %,\n"
+        "     or the verification move did not end in position\n");
+}
+
+QJsonObject modelJson(const RailIdentification& id) {
+    QJsonObject o;
+    o[QStringLiteral("accepted")] = id.accepted;
+    o[QStringLiteral("experiment_time_s")] = id.experimentTimeS;
+    o[QStringLiteral("max_excursion_mm")] = id.maxExcursionMm;
+    o[QStringLiteral("return_error_counts")] = id.returnErrorCounts;
+    if (!id.error.isEmpty()) o[QStringLiteral("error")] = id.error;
+    if (id.iterations == 0) return o;  // stopped before there was anything to fit
+    o[QStringLiteral("speed_gain_mm_s_per_code")] = id.model.speedGainMmSPerCode;
+    o[QStringLiteral("time_constant_s")] = id.model.timeConstantS;
+    o[QStringLiteral("acceleration_limit_mm_s2")] = id.model.accelerationLimitMmS2;
+    o[QStringLiteral("coulomb_friction_mm_s2")] = id.model.coulombMmS2;
+    o[QStringLiteral("coulomb_friction_n")] = id.coulombN;
+    o[QStringLiteral("mass_kg")] = id.massKg;
+    o[QStringLiteral("fit_velocity_pct")] = id.fitVelocityPct;
+    o[QStringLiteral("fit_velocity_train_pct")] = id.fitVelocityTrainPct;
+    o[QStringLiteral("fit_position_pct")] = id.fitPositionPct;
+    o[QStringLiteral("iterations")] = id.iterations;
+    return o;
+}
+
+/// A number, or null when it was not reached (NaN: step_info's "never").
+QJsonValue number(double v) {
+    return std::isfinite(v) ? QJsonValue(v) : QJsonValue();
+}
+
+QJsonObject moveJson(const MoveResult& m) {
+    const StepMetrics& s = m.metrics;
+    QJsonObject o;
+    o[QStringLiteral("step_mm")] = m.stepMm;
+    o[QStringLiteral("rise_time_s")] = number(s.riseTimeS);
+    o[QStringLiteral("settling_time_s")] = number(s.settlingTimeS);
+    o[QStringLiteral("settling_time_1count_s")] = number(m.settlingTimeS);
+    o[QStringLiteral("overshoot_pct")] = m.overshootPct;
+    o[QStringLiteral("overshoot_counts")] = m.overshootCounts;
+    o[QStringLiteral("peak_mm")] = s.peakMm;
+    o[QStringLiteral("peak_time_s")] = s.peakTimeS;
+    o[QStringLiteral("in_position_time_s")] = m.inPositionTimeS;
+    o[QStringLiteral("steady_state_error_counts")] = m.finalErrorCounts;
+    o[QStringLiteral("iae")] = s.iae;
+    o[QStringLiteral("itae")] = s.itae;
+    o[QStringLiteral("ise")] = s.ise;
+    o[QStringLiteral("max_following_error_mm")] = m.maxFollowingErrorMm;
+    o[QStringLiteral("in_position")] = m.inPosition;
+    o[QStringLiteral("faulted")] = m.faulted;
+    return o;
+}
+
+QString modelText(const RailIdentification& id) {
+    if (id.iterations == 0)  // stopped before there was anything to fit
+        return QStringLiteral("experiment: %1 s, within %2 mm of its start; no model\n")
+            .arg(id.experimentTimeS, 0, 'f', 3)
+            .arg(id.maxExcursionMm, 0, 'f', 1);
+    return QStringLiteral(
+               "experiment: %1 s, within %2 mm of its start, back within %3 counts\n"
+               "speed gain: %4 mm/s per code\n"
+               "time constant: %5 s\n"
+               "acceleration limit: %6 mm/s2 (mass %7 kg at the profile's peak force)\n"
+               "Coulomb friction: %8 mm/s2 (%9 N)\n"
+               "fit on the held-out run, velocity: %10 % (position %11 %; fitted part %12 %)\n")
+        .arg(id.experimentTimeS, 0, 'f', 3)
+        .arg(id.maxExcursionMm, 0, 'f', 1)
+        .arg(id.returnErrorCounts, 0, 'f', 0)
+        .arg(id.model.speedGainMmSPerCode, 0, 'f', 3)
+        .arg(id.model.timeConstantS, 0, 'f', 4)
+        .arg(id.model.accelerationLimitMmS2, 0, 'f', 0)
+        .arg(id.massKg, 0, 'f', 1)
+        .arg(id.model.coulombMmS2, 0, 'f', 0)
+        .arg(id.coulombN, 0, 'f', 1)
+        .arg(id.fitVelocityPct, 0, 'f', 1)
+        .arg(id.fitPositionPct, 0, 'f', 1)
+        .arg(id.fitVelocityTrainPct, 0, 'f', 1);
+}
+
+QString moveText(const char* name, const MoveResult& p, const MoveResult& m) {
+    return QStringLiteral(
+               "%1 (%2 mm): overshoot %3 / %4 counts, settling to 1 count %5 / %6 s, in position "
+               "%7 / %8 s, final error %9 / %10 counts (predicted / measured)\n")
+        .arg(QString::fromLatin1(name))
+        .arg(m.stepMm, 0, 'f', 1)
+        .arg(p.overshootCounts, 0, 'f', 0)
+        .arg(m.overshootCounts, 0, 'f', 0)
+        .arg(p.settlingTimeS, 0, 'f', 3)
+        .arg(m.settlingTimeS, 0, 'f', 3)
+        .arg(p.inPositionTimeS, 0, 'f', 3)
+        .arg(m.inPositionTimeS, 0, 'f', 3)
+        .arg(p.finalErrorCounts, 0, 'f', 0)
+        .arg(m.finalErrorCounts, 0, 'f', 0);
+}
+
+int tuneRail(const QStringList& args, bool autotune) {
+    const char* name = autotune ? "tune auto" : "tune identify";
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        autotune ? QStringLiteral("Identify the rail's model, design its gains (SIMC on the "
+                                  "identified integrator-plus-lag), predict and verify a 10 mm "
+                                  "step and a 1000 mm move. Simulated machine, virtual time; "
+                                  "the rail starts at rest at -500 mm.")
+                 : QStringLiteral("Identify the rail's model (speed gain, amplifier time "
+                                  "constant, acceleration limit, Coulomb friction) from a "
+                                  "bounded experiment. Simulated machine, virtual time; the "
+                                  "rail starts at rest at -500 mm."));
+    const QCommandLineOption machineOpt(
+        QStringLiteral("machine"),
+        QStringLiteral("Machine profile: a file, or the name of a shipped one (default: rail)."),
+        QStringLiteral("PROFILE"));
+    const QCommandLineOption axisOpt(QStringLiteral("axis"),
+                                     QStringLiteral("The axis to tune: x (the rail has only x)."),
+                                     QStringLiteral("x|y"), QStringLiteral("x"));
+    const QCommandLineOption massOpt(
+        QStringLiteral("mass-factor"),
+        QStringLiteral("Multiply the simulated moving mass (the tuning is not told)."),
+        QStringLiteral("F"), QStringLiteral("1"));
+    const QCommandLineOption seedOpt(QStringLiteral("seed"),
+                                     QStringLiteral("Seed of the simulation's randomness."),
+                                     QStringLiteral("N"));
+    const QCommandLineOption jsonOpt(QStringLiteral("json"),
+                                     QStringLiteral("Print one JSON object."));
+    const QCommandLineOption writeOpt(
+        QStringLiteral("write-profile"),
+        QStringLiteral("Write the tuned profile (complete; `run --machine` takes it), atomically."),
+        QStringLiteral("OUT.json"));
+    parser.addOptions({machineOpt, axisOpt, massOpt, seedOpt, jsonOpt});
+    if (autotune) parser.addOption(writeOpt);
+    auto usage = [&](const QString& message) { return usageError(name, message); };
+    parser.addHelpOption();
+    if (!parser.parse(args)) return usage(parser.errorText());
+    if (parser.isSet(QStringLiteral("help"))) {
+        out(parser.helpText() + QLatin1Char('\n') + tuneExitHelp());
+        return kOk;
+    }
+    if (!parser.positionalArguments().isEmpty())
+        return usage(
+            QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().front()));
+    double massFactor = 1.0;
+    if (parser.isSet(massOpt)) {
+        bool ok = false;
+        massFactor = parser.value(massOpt).toDouble(&ok);
+        if (!ok || !std::isfinite(massFactor) || massFactor < 0.1 || massFactor > 20.0)
+            return usage(QStringLiteral("--mass-factor must be a number from 0.1 to 20 (got '%1')")
+                             .arg(parser.value(massOpt)));
+    }
+    std::uint64_t seed = 1;
+    if (parser.isSet(seedOpt)) {
+        bool ok = false;
+        seed = parser.value(seedOpt).toULongLong(&ok);
+        if (!ok)
+            return usage(
+                QStringLiteral("--seed must be a whole number from 0 to 18446744073709551615 (got "
+                               "'%1')")
+                    .arg(parser.value(seedOpt)));
+    }
+    const QString axis = parser.value(axisOpt);
+    if (axis != QLatin1String("x") && axis != QLatin1String("y"))
+        return usage(QStringLiteral("--axis must be x or y (got '%1')").arg(axis));
+    const ProfileLoad load = loadNamedMachineProfile(parser.value(machineOpt));
+    if (!load.profile) return usage(load.error);
+    const MachineProfile& profile = *load.profile;
+    if (profile.kind != MachineKind::Rail)
+        return usage(QStringLiteral("only the rail can be identified and tuned yet (the profile "
+                                    "'%1' is not a rail)")
+                         .arg(profile.name));
+    if (axis == QLatin1String("y"))
+        return usage(QStringLiteral("--axis y: the rail has only the x axis"));
+    const bool json = parser.isSet(jsonOpt);
+    QString outPath;
+    if (autotune && parser.isSet(writeOpt)) {
+        outPath = parser.value(writeOpt);
+        if (outPath.isEmpty()) return usage(QStringLiteral("--write-profile needs a file name"));
+        const QString in = machineProfilePath(parser.value(machineOpt));
+        const QString canonical = QFileInfo(outPath).canonicalFilePath();
+        if (!canonical.isEmpty() && canonical == QFileInfo(in).canonicalFilePath())
+            return usage(QStringLiteral(
+                "--write-profile must not name the profile being tuned (write a new file)"));
+    }
+
+    SimRailRig rig(profile, seed, kTuneStartMm, profile.plant.massFactor * massFactor);
+    QJsonObject o;
+    o[QStringLiteral("machine")] = profile.name;
+    o[QStringLiteral("axis")] = axis;
+    o[QStringLiteral("mass_factor")] = massFactor;
+    o[QStringLiteral("seed")] = QString::number(seed);
+    o[QStringLiteral("sample_period_s")] = profile.loop.samplePeriodS;
+    QString text;
+    int status = kOk;
+    if (!autotune) {
+        const IdentificationRecord rec = runIdentificationExperiment(rig);
+        const RailIdentification id = identifyRail(rec, profile);
+        o[QStringLiteral("ok")] = id.accepted;
+        const QJsonObject model = modelJson(id);
+        for (auto it = model.begin(); it != model.end(); ++it)
+            o[it.key()] = it.value();
+        text = modelText(id);
+        if (!id.accepted) {
+            text += QStringLiteral("model refused: %1\n").arg(id.error);
+            status = kAlarm;
+        }
+    } else {
+        const AutotuneResult r = autotuneRail(rig, profile);
+        o[QStringLiteral("ok")] = r.ok;
+        o[QStringLiteral("identification")] = modelJson(r.identification);
+        text = modelText(r.identification);
+        if (r.identification.accepted) {
+            const LoopDesign& d = r.design;
+            o[QStringLiteral("gains")] =
+                QJsonObject{{QStringLiteral("law"), QStringLiteral("engineered")},
+                            {QStringLiteral("kp_code_per_mm"), d.gains.kp},
+                            {QStringLiteral("ki_code_per_mm_s"), d.gains.ki},
+                            {QStringLiteral("kd_code_per_mm_s"), d.gains.kd}};
+            o[QStringLiteral("design")] = QJsonObject{
+                {QStringLiteral("rule"), QStringLiteral("SIMC, integrating process with lag")},
+                {QStringLiteral("closed_loop_time_constant_s"), d.tauC},
+                {QStringLiteral("delay_s"), d.thetaS},
+                {QStringLiteral("integral_time_s"), d.tauI},
+                {QStringLiteral("derivative_time_s"), d.tauD},
+                {QStringLiteral("acceleration_mm_s2"), d.accelerationMmS2},
+                {QStringLiteral("max_deceleration_mm_s2"), d.maxDecelerationMmS2},
+                {QStringLiteral("clamped"), d.note}};
+            const LoopMargins& m = r.frequency.margins;
+            QJsonArray bode;
+            for (const BodePoint& b : r.frequency.openLoop)
+                bode.append(QJsonArray{b.frequencyRadS, b.magnitudeDb, b.phaseDeg});
+            o[QStringLiteral("frequency")] = QJsonObject{
+                {QStringLiteral("gain_margin_db"),
+                 m.hasGainMargin ? QJsonValue(m.gainMarginDb) : QJsonValue()},
+                {QStringLiteral("phase_crossover_rad_s"), m.phaseCrossoverRadS},
+                {QStringLiteral("phase_margin_deg"), m.phaseMarginDeg},
+                {QStringLiteral("gain_crossover_rad_s"), m.gainCrossoverRadS},
+                {QStringLiteral("bode_columns"),
+                 QJsonArray{QStringLiteral("frequency_rad_s"), QStringLiteral("magnitude_db"),
+                            QStringLiteral("phase_deg")}},
+                {QStringLiteral("bode"), bode}};
+            o[QStringLiteral("predicted")] =
+                QJsonObject{{QStringLiteral("step"), moveJson(r.predictedStep)},
+                            {QStringLiteral("long_move"), moveJson(r.predictedLong)}};
+            o[QStringLiteral("measured")] =
+                QJsonObject{{QStringLiteral("step"), moveJson(r.measuredStep)},
+                            {QStringLiteral("long_move"), moveJson(r.measuredLong)}};
+            text += QStringLiteral(
+                        "gains: kp %1 code/mm, ki %2 code/(mm.s), kd %3 code/(mm/s); "
+                        "acceleration %4 mm/s2\n")
+                        .arg(d.gains.kp, 0, 'f', 4)
+                        .arg(d.gains.ki, 0, 'f', 4)
+                        .arg(d.gains.kd, 0, 'f', 5)
+                        .arg(d.accelerationMmS2, 0, 'f', 0);
+            text += QStringLiteral("margins: gain %1 dB at %2 rad/s, phase %3 deg at %4 rad/s\n")
+                        .arg(m.gainMarginDb, 0, 'f', 1)
+                        .arg(m.phaseCrossoverRadS, 0, 'f', 1)
+                        .arg(m.phaseMarginDeg, 0, 'f', 1)
+                        .arg(m.gainCrossoverRadS, 0, 'f', 1);
+            text += moveText("step", r.predictedStep, r.measuredStep);
+            text += moveText("long move", r.predictedLong, r.measuredLong);
+        }
+        o[QStringLiteral("machine_time_s")] = r.machineTimeS;
+        text += QStringLiteral("machine time: %1 s\n").arg(r.machineTimeS, 0, 'f', 3);
+        if (!r.ok) {
+            o[QStringLiteral("error")] = r.error;
+            text += QStringLiteral("autotune failed: %1\n").arg(r.error);
+            status = kAlarm;
+        } else if (!outPath.isEmpty()) {
+            QString error;
+            if (!saveMachineProfile(r.tuned, outPath, &error)) {
+                err(QStringLiteral("trilho-cli tune auto: %1\n").arg(error));
+                status = kUsage;
+            } else {
+                o[QStringLiteral("profile_written")] = outPath;
+                text += QStringLiteral("tuned profile written to %1\n").arg(outPath);
+            }
+        }
+    }
+    if (json)
+        out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
+    else
+        out(text);
+    return status;
+}
+
+}  // namespace
+
+int tuneModelCommand(const QStringList& args, bool autotune) {
+    return tuneRail(args, autotune);
+}
+
+}  // namespace trilho::cli

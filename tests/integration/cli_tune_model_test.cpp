@@ -1,0 +1,126 @@
+// Issue 21 item 8: `trilho-cli tune identify` and `tune auto` headless, in virtual time: the
+// exit statuses their --help lists happen as it says, the JSON carries the keys the issue
+// names, and the profile --write-profile writes is one `run --machine` takes.
+#include <gtest/gtest.h>
+
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+
+#include "tests/integration/cli_process.h"
+
+namespace {
+
+using trilho::test::CliResult;
+using trilho::test::runCli;
+
+QStringList tune(const char* sub, QStringList more = {}) {
+    QStringList args{QStringLiteral("tune"), QString::fromLatin1(sub)};
+    args += more;
+    return args;
+}
+
+QJsonObject jsonOf(const CliResult& r) {
+    QJsonParseError e{};
+    const QJsonDocument d = QJsonDocument::fromJson(r.out.toUtf8(), &e);
+    EXPECT_EQ(e.error, QJsonParseError::NoError) << r.out.toStdString();
+    return d.object();
+}
+
+TEST(CliTuneModel, HelpListsZeroTwoThree) {
+    for (const char* sub : {"identify", "auto"}) {
+        const CliResult r = runCli(tune(sub, {QStringLiteral("--help")}));
+        EXPECT_EQ(r.exit, 0) << sub;
+        for (const char* row : {"\n  0  ", "\n  2  ", "\n  3  "})
+            EXPECT_TRUE(r.out.contains(QString::fromLatin1(row))) << sub << r.out.toStdString();
+        EXPECT_FALSE(r.out.contains(QStringLiteral("\n  1  "))) << sub;
+    }
+    const CliResult top = runCli({QStringLiteral("--help")});
+    EXPECT_TRUE(top.out.contains(QStringLiteral("tune"))) << top.out.toStdString();
+}
+
+TEST(CliTuneModel, IdentifyJsonHasTheModelWithUnits) {
+    const CliResult r =
+        runCli(tune("identify", {QStringLiteral("--machine"), QStringLiteral("rail"),
+                                 QStringLiteral("--json")}));
+    ASSERT_EQ(r.exit, 0) << r.err.toStdString();
+    const QJsonObject o = jsonOf(r);
+    EXPECT_TRUE(o[QStringLiteral("ok")].toBool());
+    EXPECT_NEAR(o[QStringLiteral("speed_gain_mm_s_per_code")].toDouble(), 1884.96 / 127.0,
+                0.03 * 1884.96 / 127.0);
+    EXPECT_NEAR(o[QStringLiteral("time_constant_s")].toDouble(), 0.015, 0.003);
+    EXPECT_GT(o[QStringLiteral("acceleration_limit_mm_s2")].toDouble(), 3000.0);
+    EXPECT_GE(o[QStringLiteral("fit_velocity_pct")].toDouble(), 90.0);
+    EXPECT_LE(o[QStringLiteral("experiment_time_s")].toDouble(), 3.0);
+}
+
+TEST(CliTuneModel, SameNumbersForTheSameSeed) {
+    const QStringList args =
+        tune("auto", {QStringLiteral("--mass-factor"), QStringLiteral("3"),
+                      QStringLiteral("--seed"), QStringLiteral("7"), QStringLiteral("--json")});
+    const CliResult a = runCli(args), b = runCli(args);
+    EXPECT_EQ(a.exit, 0);
+    EXPECT_EQ(a.out, b.out);
+}
+
+TEST(CliTuneModel, AutoWritesAProfileThatRunTakes) {
+    QTemporaryDir dir;
+    const QString out = dir.filePath(QStringLiteral("tuned.json"));
+    const CliResult r =
+        runCli(tune("auto", {QStringLiteral("--mass-factor"), QStringLiteral("3"),
+                             QStringLiteral("--json"), QStringLiteral("--write-profile"), out}));
+    ASSERT_EQ(r.exit, 0) << r.err.toStdString() << r.out.toStdString();
+    const QJsonObject o = jsonOf(r);
+    for (const char* key : {"gains", "predicted", "measured", "identification", "frequency"})
+        EXPECT_TRUE(o.contains(QString::fromLatin1(key))) << key;
+    const QJsonObject step =
+        o[QStringLiteral("measured")].toObject()[QStringLiteral("step")].toObject();
+    for (const char* key : {"overshoot_pct", "settling_time_s", "settling_time_1count_s",
+                            "rise_time_s", "steady_state_error_counts", "iae", "itae"})
+        EXPECT_TRUE(step.contains(QString::fromLatin1(key))) << key;
+    const CliResult check = runCli({QStringLiteral("profile"), out});
+    EXPECT_EQ(check.exit, 0) << check.err.toStdString();
+    EXPECT_TRUE(check.out.contains(QStringLiteral("engineered")));
+    const CliResult run = runCli(
+        {QStringLiteral("run"), QStringLiteral("--virtual-time"), QStringLiteral("--mass-factor"),
+         QStringLiteral("3"), QStringLiteral("--continue-after"), QStringLiteral("0.5"),
+         QStringLiteral("--machine"), out,
+         QStringLiteral(TRILHO_PROGRAMS_DIR) + QStringLiteral("/ciclo_carga.G")});
+    EXPECT_EQ(run.exit, 0) << run.out.toStdString() << run.err.toStdString();
+}
+
+TEST(CliTuneModel, BadInputIsAUsageErrorInOneLine) {
+    const QStringList bad[] = {
+        tune("identify", {QStringLiteral("--bogus")}),
+        tune("identify", {QStringLiteral("--mass-factor"), QStringLiteral("abc")}),
+        tune("identify", {QStringLiteral("--mass-factor"), QStringLiteral("0")}),
+        tune("identify", {QStringLiteral("--seed"), QStringLiteral("-1")}),
+        tune("identify", {QStringLiteral("--axis"), QStringLiteral("z")}),
+        tune("identify", {QStringLiteral("--axis"), QStringLiteral("y")}),
+        tune("auto", {QStringLiteral("--machine"), QStringLiteral("/nonexistent/p.json")}),
+        tune("auto", {QStringLiteral("--machine"), QStringLiteral("xy_plotter")}),
+        tune("auto", {QStringLiteral("--write-profile"), QStringLiteral("/nonexistent/d/o.json")}),
+        tune("identify", {QStringLiteral("extra")}),
+        {QStringLiteral("tune")},
+        {QStringLiteral("tune"), QStringLiteral("nope")},
+    };
+    for (const QStringList& args : bad) {
+        const CliResult r = runCli(args);
+        EXPECT_EQ(r.exit, 2) << args.join(QLatin1Char(' ')).toStdString();
+        EXPECT_TRUE(r.err.startsWith(QStringLiteral("trilho-cli tune")))
+            << args.join(QLatin1Char(' ')).toStdString() << ": " << r.err.toStdString();
+    }
+}
+
+TEST(CliTuneModel, AnExperimentStoppedByAnAlarmIsThree) {
+    // x20 the mass: the platform cannot follow the experiment's drive and the servo stops it.
+    const CliResult r =
+        runCli(tune("identify", {QStringLiteral("--mass-factor"), QStringLiteral("20")}));
+    EXPECT_EQ(r.exit, 3) << r.out.toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral("refused")) ||
+                r.out.contains(QStringLiteral("stopped")))
+        << r.out.toStdString();
+}
+
+}  // namespace
