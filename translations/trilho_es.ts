@@ -1111,7 +1111,7 @@
     </message>
     <message>
         <source>Jog</source>
-        <translation>Jog</translation>
+        <translation>Manual</translation>
     </message>
     <message>
         <source>History</source>
