@@ -287,6 +287,50 @@
         <source>%1: Return to the machine&apos;s absolute zero.</source>
         <translation>%1: Regreso al cero absoluto de la máquina.</translation>
     </message>
+    <message>
+        <source>Lower end of travel of the table reached ! An end switch cut the drives. Acknowledge, then in Manual drive the table back inside the limits.</source>
+        <translation>¡Fin de carrera inferior de la mesa alcanzado! Un final de carrera cortó los accionamientos. Reconozca y, en Manual, lleve la mesa de vuelta dentro de los límites.</translation>
+    </message>
+    <message>
+        <source>Upper end of travel of the table reached ! An end switch cut the drives. Acknowledge, then in Manual drive the table back inside the limits.</source>
+        <translation>¡Fin de carrera superior de la mesa alcanzado! Un final de carrera cortó los accionamientos. Reconozca y, en Manual, lleve la mesa de vuelta dentro de los límites.</translation>
+    </message>
+    <message>
+        <source>Following error: an axis of the table (x or y) was %1 mm behind the command (a jam, too heavy a load or a broken encoder cable) and both drives were cut. Free the table, acknowledge, then home again.</source>
+        <translation>Error de seguimiento: un eje de la mesa (x o y) quedó %1 mm detrás de la orden (un atasco, una carga demasiado pesada o un cable del encoder roto) y se cortaron ambos accionamientos. Libere la mesa, reconozca y vuelva a referenciar.</translation>
+    </message>
+    <message>
+        <source>Soft limit: the target is outside the table&apos;s travel, so the table stopped at its limit. Move it back the other way, inside the limits.</source>
+        <translation>Límite de software: el destino está fuera del recorrido de la mesa, y la mesa se detuvo en su límite. Llévela de vuelta en el sentido opuesto, dentro de los límites.</translation>
+    </message>
+    <message>
+        <source>Homing failed: the table&apos;s origin was not found. Check its sensor and cable, acknowledge, then home again.</source>
+        <translation>Referenciado fallido: no se encontró el origen de la mesa. Revise el sensor y su cable, reconozca y vuelva a referenciar.</translation>
+    </message>
+    <message>
+        <source>Soft limit: the table would have passed the soft limit of its x or y axis at %1 mm and was stopped. Acknowledge, then move it back inside the limits.</source>
+        <translation>Límite de software: la mesa habría pasado el límite de software de su eje x o y en %1 mm y se detuvo. Reconozca y llévela de vuelta dentro de los límites.</translation>
+    </message>
+    <message>
+        <source>Not in position: the table did not settle on its target (%1 mm off on its x or y axis). Check the payload and the gains, acknowledge, then run again.</source>
+        <translation>Fuera de posición: la mesa no se asentó en su destino (a %1 mm en el eje x o y). Revise la carga y las ganancias, reconozca y ejecute de nuevo.</translation>
+    </message>
+    <message>
+        <source>The program ended with the table %1 mm from its last target on its x or y axis, outside the final-position window. Check the payload and the gains, then run it again.</source>
+        <translation>El programa terminó con la mesa a %1 mm de su último destino en el eje x o y, fuera de la ventana de posición final. Revise la carga y las ganancias y ejecútelo de nuevo.</translation>
+    </message>
+    <message>
+        <source>A reference mark corrected the table&apos;s position by %1 mm: counts were lost or a belt slipped. The position is right again; if this repeats, check the encoders and their cables.</source>
+        <translation>Una marca de referencia corrigió la posición de la mesa en %1 mm: se perdieron cuentas o una correa patinó. La posición vuelve a ser correcta; si se repite, revise los encoders y sus cables.</translation>
+    </message>
+    <message>
+        <source>Encoder stalled: a drive of the table (x or y axis) ran %1 mm without a single count and both drives were cut. Check the encoder and its cable, acknowledge, then home again.</source>
+        <translation>Encoder detenido: un accionamiento de la mesa (eje x o y) recorrió %1 mm sin una sola cuenta y se cortaron los accionamientos. Revise el encoder y su cable, reconozca y vuelva a referenciar.</translation>
+    </message>
+    <message>
+        <source>Over-current: a motor of the table (x or y axis) drew too much current at %1 % PWM and the drives were cut. Free the axis, acknowledge, then home again.</source>
+        <translation>Sobrecorriente: un motor de la mesa (eje x o y) consumió demasiada corriente a %1 % de PWM y se cortaron los accionamientos. Libere el eje, reconozca y vuelva a referenciar.</translation>
+    </message>
 </context>
 <context>
     <name>Diagnostic</name>

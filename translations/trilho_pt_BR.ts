@@ -287,6 +287,50 @@
         <source>%1: Return to the machine&apos;s absolute zero.</source>
         <translation>%1: Retorno ao zero absoluto da máquina.</translation>
     </message>
+    <message>
+        <source>Lower end of travel of the table reached ! An end switch cut the drives. Acknowledge, then in Manual drive the table back inside the limits.</source>
+        <translation>Fim de curso inferior da mesa atingido ! Uma chave de fim de curso cortou os acionamentos. Reconheça e, em Manual, leve a mesa de volta para dentro dos limites.</translation>
+    </message>
+    <message>
+        <source>Upper end of travel of the table reached ! An end switch cut the drives. Acknowledge, then in Manual drive the table back inside the limits.</source>
+        <translation>Fim de curso superior da mesa atingido ! Uma chave de fim de curso cortou os acionamentos. Reconheça e, em Manual, leve a mesa de volta para dentro dos limites.</translation>
+    </message>
+    <message>
+        <source>Following error: an axis of the table (x or y) was %1 mm behind the command (a jam, too heavy a load or a broken encoder cable) and both drives were cut. Free the table, acknowledge, then home again.</source>
+        <translation>Erro de seguimento: um eixo da mesa (x ou y) ficou %1 mm atrás do comando (travamento, carga pesada demais ou cabo do encoder rompido) e os dois acionamentos foram cortados. Libere a mesa, reconheça e refaça o referenciamento.</translation>
+    </message>
+    <message>
+        <source>Soft limit: the target is outside the table&apos;s travel, so the table stopped at its limit. Move it back the other way, inside the limits.</source>
+        <translation>Limite de software: o alvo está fora do curso da mesa, e a mesa parou no limite. Leve-a de volta no sentido oposto, para dentro dos limites.</translation>
+    </message>
+    <message>
+        <source>Homing failed: the table&apos;s origin was not found. Check its sensor and cable, acknowledge, then home again.</source>
+        <translation>Falha no referenciamento: a origem da mesa não foi encontrada. Verifique o sensor e o cabo, reconheça e refaça o referenciamento.</translation>
+    </message>
+    <message>
+        <source>Soft limit: the table would have passed the soft limit of its x or y axis at %1 mm and was stopped. Acknowledge, then move it back inside the limits.</source>
+        <translation>Limite de software: a mesa passaria do limite de software do eixo x ou y em %1 mm e foi parada. Reconheça e leve-a de volta para dentro dos limites.</translation>
+    </message>
+    <message>
+        <source>Not in position: the table did not settle on its target (%1 mm off on its x or y axis). Check the payload and the gains, acknowledge, then run again.</source>
+        <translation>Fora de posição: a mesa não se assentou no alvo (a %1 mm no eixo x ou y). Verifique a carga e os ganhos, reconheça e execute de novo.</translation>
+    </message>
+    <message>
+        <source>The program ended with the table %1 mm from its last target on its x or y axis, outside the final-position window. Check the payload and the gains, then run it again.</source>
+        <translation>O programa terminou com a mesa a %1 mm do último alvo no eixo x ou y, fora da janela de posição final. Verifique a carga e os ganhos e execute de novo.</translation>
+    </message>
+    <message>
+        <source>A reference mark corrected the table&apos;s position by %1 mm: counts were lost or a belt slipped. The position is right again; if this repeats, check the encoders and their cables.</source>
+        <translation>Uma marca de referência corrigiu a posição da mesa em %1 mm: houve perda de contagens ou uma correia escorregou. A posição está certa de novo; se isso se repetir, verifique os encoders e os cabos.</translation>
+    </message>
+    <message>
+        <source>Encoder stalled: a drive of the table (x or y axis) ran %1 mm without a single count and both drives were cut. Check the encoder and its cable, acknowledge, then home again.</source>
+        <translation>Encoder parado: um acionamento da mesa (eixo x ou y) andou %1 mm sem uma única contagem e os acionamentos foram cortados. Verifique o encoder e o cabo, reconheça e refaça o referenciamento.</translation>
+    </message>
+    <message>
+        <source>Over-current: a motor of the table (x or y axis) drew too much current at %1 % PWM and the drives were cut. Free the axis, acknowledge, then home again.</source>
+        <translation>Sobrecorrente: um motor da mesa (eixo x ou y) puxou corrente demais a %1 % de PWM e os acionamentos foram cortados. Libere o eixo, reconheça e refaça o referenciamento.</translation>
+    </message>
 </context>
 <context>
     <name>Diagnostic</name>
