@@ -71,6 +71,14 @@ QString exitStatusHelp(const char* command) {
     } else if (c == "profile") {
         line(kOk, "the profile is valid (printed in full)");
         line(kUsage, "usage error, or a profile that cannot be read or is invalid (named)");
+    } else if (c == "calibrate") {
+        line(kOk, "calibrated (printed; the profile written with --write-profile)");
+        line(kUsage,
+             "usage error, a profile that cannot be read or is not a DC table's, a port that "
+             "cannot be opened, or a profile that cannot be written");
+        line(kAlarm,
+             "the board sent no usable stream: no count before --timeout, the line lost, or "
+             "counts that measure nothing (named)");
     } else if (c == "latency") {
         line(kOk, "measured (printed)");
         line(kUsage, "usage error");

@@ -10,5 +10,6 @@ int profileCommand(const QStringList& args);
 int runCommand(const QStringList& args);
 int latencyCommand(const QStringList& args);
 int serveCommand(const QStringList& args);
+int calibrateCommand(const QStringList& args);
 
 }  // namespace trilho::cli

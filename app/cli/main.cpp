@@ -16,6 +16,7 @@ const char* kUsage =
     "  latency   measure the servo loop's wake-up latency and body time\n"
     "  profile   check a machine profile (JSON) and print it in full\n"
     "  serve     run the rail headless with the DNC link (Modbus TCP/RTU)\n"
+    "  calibrate measure an axis of the DC table from its board's calibration stream\n"
     "\n"
     "Options:\n"
     "  -h, --help  print this help\n"
@@ -41,6 +42,7 @@ static int dispatch(int argc, char* argv[]) {
     if (command == QLatin1String("run")) return trilho::cli::runCommand(args);
     if (command == QLatin1String("latency")) return trilho::cli::latencyCommand(args);
     if (command == QLatin1String("serve")) return trilho::cli::serveCommand(args);
+    if (command == QLatin1String("calibrate")) return trilho::cli::calibrateCommand(args);
     if (command == QLatin1String("--help") || command == QLatin1String("-h")) {
         trilho::cli::out(QString::fromLatin1(kUsage) + QLatin1Char('\n') +
                          trilho::cli::exitStatusHelp(nullptr));

@@ -115,11 +115,9 @@ TEST_F(CliExitStatus, EveryCommandListsWhatItReturns) {
         const char* command;
         std::vector<int> statuses;
     };
-    const Expect commands[] = {{"compile", {0, 1, 2}},
-                               {"run", {0, 1, 2, 3, 4}},
-                               {"serve", {0, 2}},
-                               {"profile", {0, 2}},
-                               {"latency", {0, 2}}};
+    const Expect commands[] = {{"compile", {0, 1, 2}}, {"run", {0, 1, 2, 3, 4}},
+                               {"serve", {0, 2}},      {"profile", {0, 2}},
+                               {"latency", {0, 2}},    {"calibrate", {0, 2, 3}}};
     for (const Expect& e : commands) {
         const CliResult r = runCli({QString::fromLatin1(e.command), QStringLiteral("--help")});
         EXPECT_EQ(r.exit, 0) << e.command;
