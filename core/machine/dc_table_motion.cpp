@@ -67,8 +67,10 @@ void DcTableMotion::plan(XyPoint from, XyPoint to) {
         // bits_de_giro: forward (bit 0) when the set point is greater than the one before.
         loops_[0].setDirection(to.x > from.x ? 1 : -1);
         loops_[1].setDirection(to.y > from.y ? 1 : -1);
+        // error_ant_x = error_ant_y = 0; both PWM at 0 (each went to 0 when its loop ended;
+        // a move that follows one at once, with no idle period between, starts from there too).
         for (DcAxisLoop& l : loops_)
-            l.clearPreviousError();  // error_ant_x = error_ant_y = 0
+            l.reset();
     }
 }
 
