@@ -503,6 +503,93 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::CalibrationDialog</name>
+    <message>
+        <source>Calibration of the table</source>
+        <translation>Calibración de la mesa</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>no medido</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Iniciar</translation>
+    </message>
+    <message>
+        <source>Compute</source>
+        <translation>Calcular</translation>
+    </message>
+    <message>
+        <source>Save profile...</source>
+        <translation>Guardar perfil...</translation>
+    </message>
+    <message>
+        <source>Run the board&apos;s calibration program, then press Start.</source>
+        <translation>Ejecute el programa de calibración de la placa y pulse Iniciar.</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>tiempo (s)</translation>
+    </message>
+    <message>
+        <source>pulses</source>
+        <translation>pulsos</translation>
+    </message>
+    <message>
+        <source>displacement (mm)</source>
+        <translation>desplazamiento (mm)</translation>
+    </message>
+    <message>
+        <source>Serial port:</source>
+        <translation>Puerto serie:</translation>
+    </message>
+    <message>
+        <source>Bit rate:</source>
+        <translation>Velocidad:</translation>
+    </message>
+    <message>
+        <source>Axis:</source>
+        <translation>Eje:</translation>
+    </message>
+    <message>
+        <source>Travel measured:</source>
+        <translation>Desplazamiento medido:</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Detener</translation>
+    </message>
+    <message>
+        <source>Receiving the counts on %1...</source>
+        <translation>Recibiendo las cuentas en %1...</translation>
+    </message>
+    <message>
+        <source>%1 counts, %2 pulses/s; the board stopped at about %3 pulses. %4 mm per pulse, %5 mm per turn (the profile has %6).</source>
+        <translation>%1 cuentas, %2 pulsos/s; la placa se detuvo en unos %3 pulsos. %4 mm por pulso, %5 mm por vuelta (el perfil tiene %6).</translation>
+    </message>
+    <message>
+        <source>%1 counts, %2 pulses/s; the board stopped at about %3 pulses. Enter the travel measured for mm per pulse.</source>
+        <translation>%1 cuentas, %2 pulsos/s; la placa se detuvo en unos %3 pulsos. Ingrese el desplazamiento medido para obtener mm por pulso.</translation>
+    </message>
+    <message>
+        <source>Save profile</source>
+        <translation>Guardar perfil</translation>
+    </message>
+    <message>
+        <source>Machine profiles (*.json)</source>
+        <translation>Perfiles de máquina (*.json)</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>No se puede escribir %1: %2</translation>
+    </message>
+    <message>
+        <source>Saved: %1</source>
+        <translation>Guardado: %1</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::DcTablePanel</name>
     <message>
         <source>Set point</source>
@@ -1696,6 +1783,10 @@
     <message>
         <source>&amp;Connection...</source>
         <translation>&amp;Conexión...</translation>
+    </message>
+    <message>
+        <source>Ca&amp;libration...</source>
+        <translation>Ca&amp;libración...</translation>
     </message>
     <message>
         <source>the pen lifts and the carriage runs to the origin sensors, where both axes are zeroed (0, 0).</source>

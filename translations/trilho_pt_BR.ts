@@ -503,6 +503,93 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::CalibrationDialog</name>
+    <message>
+        <source>Calibration of the table</source>
+        <translation>Calibração da mesa</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>não medido</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Iniciar</translation>
+    </message>
+    <message>
+        <source>Compute</source>
+        <translation>Calcular</translation>
+    </message>
+    <message>
+        <source>Save profile...</source>
+        <translation>Salvar perfil...</translation>
+    </message>
+    <message>
+        <source>Run the board&apos;s calibration program, then press Start.</source>
+        <translation>Rode o programa de calibração da placa e pressione Iniciar.</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>tempo (s)</translation>
+    </message>
+    <message>
+        <source>pulses</source>
+        <translation>pulsos</translation>
+    </message>
+    <message>
+        <source>displacement (mm)</source>
+        <translation>deslocamento (mm)</translation>
+    </message>
+    <message>
+        <source>Serial port:</source>
+        <translation>Porta serial:</translation>
+    </message>
+    <message>
+        <source>Bit rate:</source>
+        <translation>Velocidade:</translation>
+    </message>
+    <message>
+        <source>Axis:</source>
+        <translation>Eixo:</translation>
+    </message>
+    <message>
+        <source>Travel measured:</source>
+        <translation>Deslocamento medido:</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Parar</translation>
+    </message>
+    <message>
+        <source>Receiving the counts on %1...</source>
+        <translation>Recebendo as contagens em %1...</translation>
+    </message>
+    <message>
+        <source>%1 counts, %2 pulses/s; the board stopped at about %3 pulses. %4 mm per pulse, %5 mm per turn (the profile has %6).</source>
+        <translation>%1 contagens, %2 pulsos/s; a placa parou em cerca de %3 pulsos. %4 mm por pulso, %5 mm por volta (o perfil tem %6).</translation>
+    </message>
+    <message>
+        <source>%1 counts, %2 pulses/s; the board stopped at about %3 pulses. Enter the travel measured for mm per pulse.</source>
+        <translation>%1 contagens, %2 pulsos/s; a placa parou em cerca de %3 pulsos. Informe o deslocamento medido para obter mm por pulso.</translation>
+    </message>
+    <message>
+        <source>Save profile</source>
+        <translation>Salvar perfil</translation>
+    </message>
+    <message>
+        <source>Machine profiles (*.json)</source>
+        <translation>Perfis de máquina (*.json)</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Não foi possível gravar %1: %2</translation>
+    </message>
+    <message>
+        <source>Saved: %1</source>
+        <translation>Salvo: %1</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::DcTablePanel</name>
     <message>
         <source>Set point</source>
@@ -1696,6 +1783,10 @@
     <message>
         <source>&amp;Connection...</source>
         <translation>&amp;Conexão...</translation>
+    </message>
+    <message>
+        <source>Ca&amp;libration...</source>
+        <translation>Ca&amp;libração...</translation>
     </message>
     <message>
         <source>the pen lifts and the carriage runs to the origin sensors, where both axes are zeroed (0, 0).</source>
