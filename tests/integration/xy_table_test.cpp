@@ -79,6 +79,20 @@ TEST(XyTableMoves, ClassicLawFigures) {
     }
 }
 
+/// The seed's law on the plant of resources/machines/xy_dc_table_seed.json
+/// (docs/seeds-dc-table.md): the seed's gains are PD laws u = Kp e + Kd (e - e_prev) / T whose
+/// zero Kp / Kd cancels the motor's pole (tau = Kd / Kp: 50 ms on X, 30 ms on Y) and whose Kp Km
+/// puts the closed loop's pole there too (Km = 1 / (tau Kp): 375 mm/s on X and 1768 mm/s on Y
+/// at 100 % PWM).
+MachineProfile seedMatchedProfile() {
+    MachineProfile profile = test::tableProfileForMoves(DcLaw::Seed);
+    profile.dcTable.x.timeConstantS = 0.05;
+    profile.dcTable.y.timeConstantS = 0.03;
+    profile.dcTable.x.noLoadSpeedMmS = 375.0;
+    profile.dcTable.y.noLoadSpeedMmS = 1768.0;
+    return profile;
+}
+
 // Issue 22 item 5. Seed 004, annex 7, "Programa principal": bits_de_giro fixes each axis'
 // direction bit, then "EJE X" runs its loop over the whole trajectory (for contador < long3,
 // 5 ms each) and only then "EJE Y" over its own; OCR1A/OCR1B keep their last values.
@@ -126,15 +140,7 @@ TEST(XyTableSeedLaw, RunsTheXLoopThenTheYLoop) {
 // whose motors have the time constants the seed's gains were designed for (docs/seeds-dc-table.md):
 // each ends at its target and stays there, with no alarm.
 TEST(XyTableSeedLaw, TheExampleMovesEndAtTheirTargets) {
-    MachineProfile profile = test::tableProfileForMoves(DcLaw::Seed);
-    // The plant of resources/machines/xy_dc_table_seed.json (docs/seeds-dc-table.md): the seed's
-    // gains are PD laws u = Kp e + Kd (e - e_prev) / T whose zero Kp / Kd cancels the motor's
-    // pole (tau = Kd / Kp: 50 ms on X, 30 ms on Y) and whose Kp Km puts the closed loop's pole
-    // there too (Km = 1 / (tau Kp): 375 mm/s on X and 1768 mm/s on Y at 100 % PWM).
-    profile.dcTable.x.timeConstantS = 0.05;
-    profile.dcTable.y.timeConstantS = 0.03;
-    profile.dcTable.x.noLoadSpeedMmS = 375.0;
-    profile.dcTable.y.noLoadSpeedMmS = 1768.0;
+    const MachineProfile profile = seedMatchedProfile();
     std::vector<Move> moves{{{0, 0}, {180, 120}}};
     for (const Move& m : kMoves)
         moves.push_back(m);
@@ -154,6 +160,44 @@ TEST(XyTableSeedLaw, TheExampleMovesEndAtTheirTargets) {
         EXPECT_LE(std::abs(ex), kSeedToleranceMm);
         EXPECT_LE(std::abs(ey), kSeedToleranceMm);
     }
+}
+
+// The seed has no hold: under its law hold cuts both PWM to 0, the table coasts to rest with
+// no alarm, and resume replans from where it stands (docs/seeds-dc-table.md).
+TEST(XyTableSeedLaw, HoldCoastsToRestAndResumeReachesTheTarget) {
+    const MachineProfile p = seedMatchedProfile();
+    SimDcTable table(p.dcTable, 1);
+    DcTableMotion m(p, table);
+    const double dt = p.dcTable.samplePeriodS;
+    auto run = [&](double s) {
+        for (double t = 0; t < s - 1e-9; t += dt) {
+            m.tick(dt);
+            table.step(dt);
+        }
+    };
+    m.beginMove({180, 120}, XyMove::Travel, 1.0);
+    run(0.8);  // the X loop at its cruise
+    m.hold();
+    run(dt);
+    EXPECT_EQ(table.axis(0).state().drivePercent, 0.0);
+    EXPECT_EQ(table.axis(1).state().drivePercent, 0.0);
+    run(1.0);
+    EXPECT_EQ(table.velocityMmS(0), 0.0);
+    EXPECT_FALSE(m.busy());
+    EXPECT_EQ(m.fault(), AlarmCode::None);
+    const double heldAt = table.positionMm(0);
+    EXPECT_GT(heldAt, 50.0);
+    EXPECT_LT(heldAt, 150.0);
+    m.resume();
+    EXPECT_TRUE(m.busy());
+    for (int i = 0; i < 4000 && m.busy(); ++i)
+        run(dt);
+    EXPECT_FALSE(m.busy());
+    EXPECT_EQ(m.fault(), AlarmCode::None);
+    EXPECT_NEAR(table.positionMm(0), 180.0, kSeedToleranceMm);
+    EXPECT_NEAR(table.positionMm(1), 120.0, kSeedToleranceMm);
+    std::printf("seed law held at x %.2f mm, resumed to (%.3f, %.3f)\n", heldAt,
+                table.positionMm(0), table.positionMm(1));
 }
 
 TEST(XyTableFaults, JammedAxisRaisesAndCutsBothDrives) {
