@@ -286,6 +286,50 @@
         <source>%1: Return to the machine's absolute zero.</source>
         <translation>%1: Regreso al cero absoluto de la máquina.</translation>
     </message>
+    <message>
+        <source>Lower end of travel of the table reached ! An end switch cut the drives. Acknowledge, then in Manual drive the table back inside the limits.</source>
+        <translation>¡Fin de carrera inferior de la mesa alcanzado! Un final de carrera cortó los accionamientos. Reconozca y, en Manual, lleve la mesa de vuelta dentro de los límites.</translation>
+    </message>
+    <message>
+        <source>Upper end of travel of the table reached ! An end switch cut the drives. Acknowledge, then in Manual drive the table back inside the limits.</source>
+        <translation>¡Fin de carrera superior de la mesa alcanzado! Un final de carrera cortó los accionamientos. Reconozca y, en Manual, lleve la mesa de vuelta dentro de los límites.</translation>
+    </message>
+    <message>
+        <source>Following error: an axis of the table (x or y) was %1 mm behind the command (a jam, too heavy a load or a broken encoder cable) and both drives were cut. Free the table, acknowledge, then home again.</source>
+        <translation>Error de seguimiento: un eje de la mesa (x o y) quedó %1 mm detrás de la orden (un atasco, una carga demasiado pesada o un cable del encoder roto) y se cortaron ambos accionamientos. Libere la mesa, reconozca y vuelva a referenciar.</translation>
+    </message>
+    <message>
+        <source>Soft limit: the target is outside the table's travel, so the table stopped at its limit. Move it back the other way, inside the limits.</source>
+        <translation>Límite de software: el destino está fuera del recorrido de la mesa, y la mesa se detuvo en su límite. Llévela de vuelta en el sentido opuesto, dentro de los límites.</translation>
+    </message>
+    <message>
+        <source>Homing failed: the table's origin was not found. Check its sensor and cable, acknowledge, then home again.</source>
+        <translation>Referenciado fallido: no se encontró el origen de la mesa. Revise el sensor y su cable, reconozca y vuelva a referenciar.</translation>
+    </message>
+    <message>
+        <source>Soft limit: the table would have passed the soft limit of its x or y axis at %1 mm and was stopped. Acknowledge, then move it back inside the limits.</source>
+        <translation>Límite de software: la mesa habría pasado el límite de software de su eje x o y en %1 mm y se detuvo. Reconozca y llévela de vuelta dentro de los límites.</translation>
+    </message>
+    <message>
+        <source>Not in position: the table did not settle on its target (%1 mm off on its x or y axis). Check the payload and the gains, acknowledge, then run again.</source>
+        <translation>Fuera de posición: la mesa no se asentó en su destino (a %1 mm en el eje x o y). Revise la carga y las ganancias, reconozca y ejecute de nuevo.</translation>
+    </message>
+    <message>
+        <source>The program ended with the table %1 mm from its last target on its x or y axis, outside the final-position window. Check the payload and the gains, then run it again.</source>
+        <translation>El programa terminó con la mesa a %1 mm de su último destino en el eje x o y, fuera de la ventana de posición final. Revise la carga y las ganancias y ejecútelo de nuevo.</translation>
+    </message>
+    <message>
+        <source>A reference mark corrected the table's position by %1 mm: counts were lost or a belt slipped. The position is right again; if this repeats, check the encoders and their cables.</source>
+        <translation>Una marca de referencia corrigió la posición de la mesa en %1 mm: se perdieron cuentas o una correa patinó. La posición vuelve a ser correcta; si se repite, revise los encoders y sus cables.</translation>
+    </message>
+    <message>
+        <source>Encoder stalled: a drive of the table (x or y axis) ran %1 mm without a single count and both drives were cut. Check the encoder and its cable, acknowledge, then home again.</source>
+        <translation>Encoder detenido: un accionamiento de la mesa (eje x o y) recorrió %1 mm sin una sola cuenta y se cortaron los accionamientos. Revise el encoder y su cable, reconozca y vuelva a referenciar.</translation>
+    </message>
+    <message>
+        <source>Over-current: a motor of the table (x or y axis) drew too much current at %1 % PWM and the drives were cut. Free the axis, acknowledge, then home again.</source>
+        <translation>Sobrecorriente: un motor de la mesa (eje x o y) consumió demasiada corriente a %1 % de PWM y se cortaron los accionamientos. Libere el eje, reconozca y vuelva a referenciar.</translation>
+    </message>
 </context>
 <context>
     <name>Diagnostic</name>
@@ -558,6 +602,93 @@
     <message>
         <source>cannot set %1 bit/s 8N1 on serial port %2: %3</source>
         <translation>no se puede configurar %1 bit/s 8N1 en el puerto serie %2: %3</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::CalibrationDialog</name>
+    <message>
+        <source>Calibration of the table</source>
+        <translation>Calibración de la mesa</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>no medido</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Iniciar</translation>
+    </message>
+    <message>
+        <source>Compute</source>
+        <translation>Calcular</translation>
+    </message>
+    <message>
+        <source>Save profile...</source>
+        <translation>Guardar perfil...</translation>
+    </message>
+    <message>
+        <source>Run the board's calibration program, then press Start.</source>
+        <translation>Ejecute el programa de calibración de la placa y pulse Iniciar.</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>tiempo (s)</translation>
+    </message>
+    <message>
+        <source>pulses</source>
+        <translation>pulsos</translation>
+    </message>
+    <message>
+        <source>displacement (mm)</source>
+        <translation>desplazamiento (mm)</translation>
+    </message>
+    <message>
+        <source>Serial port:</source>
+        <translation>Puerto serie:</translation>
+    </message>
+    <message>
+        <source>Bit rate:</source>
+        <translation>Velocidad:</translation>
+    </message>
+    <message>
+        <source>Axis:</source>
+        <translation>Eje:</translation>
+    </message>
+    <message>
+        <source>Travel measured:</source>
+        <translation>Desplazamiento medido:</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Detener</translation>
+    </message>
+    <message>
+        <source>Receiving the counts on %1...</source>
+        <translation>Recibiendo las cuentas en %1...</translation>
+    </message>
+    <message>
+        <source>%1 counts, %2 pulses/s; the board stopped at about %3 pulses. %4 mm per pulse, %5 mm per turn (the profile has %6).</source>
+        <translation>%1 cuentas, %2 pulsos/s; la placa se detuvo en unos %3 pulsos. %4 mm por pulso, %5 mm por vuelta (el perfil tiene %6).</translation>
+    </message>
+    <message>
+        <source>%1 counts, %2 pulses/s; the board stopped at about %3 pulses. Enter the travel measured for mm per pulse.</source>
+        <translation>%1 cuentas, %2 pulsos/s; la placa se detuvo en unos %3 pulsos. Ingrese el desplazamiento medido para obtener mm por pulso.</translation>
+    </message>
+    <message>
+        <source>Save profile</source>
+        <translation>Guardar perfil</translation>
+    </message>
+    <message>
+        <source>Machine profiles (*.json)</source>
+        <translation>Perfiles de máquina (*.json)</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>No se puede escribir %1: %2</translation>
+    </message>
+    <message>
+        <source>Saved: %1</source>
+        <translation>Guardado: %1</translation>
     </message>
 </context>
 <context>
@@ -2322,6 +2453,10 @@
     <message>
         <source>&amp;Connection...</source>
         <translation>&amp;Conexión...</translation>
+    </message>
+    <message>
+        <source>Ca&amp;libration...</source>
+        <translation>Ca&amp;libración...</translation>
     </message>
     <message>
         <source>the pen lifts and the carriage runs to the origin sensors, where both axes are zeroed (0, 0).</source>

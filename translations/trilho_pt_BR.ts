@@ -286,6 +286,50 @@
         <source>%1: Return to the machine's absolute zero.</source>
         <translation>%1: Retorno ao zero absoluto da máquina.</translation>
     </message>
+    <message>
+        <source>Lower end of travel of the table reached ! An end switch cut the drives. Acknowledge, then in Manual drive the table back inside the limits.</source>
+        <translation>Fim de curso inferior da mesa atingido ! Uma chave de fim de curso cortou os acionamentos. Reconheça e, em Manual, leve a mesa de volta para dentro dos limites.</translation>
+    </message>
+    <message>
+        <source>Upper end of travel of the table reached ! An end switch cut the drives. Acknowledge, then in Manual drive the table back inside the limits.</source>
+        <translation>Fim de curso superior da mesa atingido ! Uma chave de fim de curso cortou os acionamentos. Reconheça e, em Manual, leve a mesa de volta para dentro dos limites.</translation>
+    </message>
+    <message>
+        <source>Following error: an axis of the table (x or y) was %1 mm behind the command (a jam, too heavy a load or a broken encoder cable) and both drives were cut. Free the table, acknowledge, then home again.</source>
+        <translation>Erro de seguimento: um eixo da mesa (x ou y) ficou %1 mm atrás do comando (travamento, carga pesada demais ou cabo do encoder rompido) e os dois acionamentos foram cortados. Libere a mesa, reconheça e refaça o referenciamento.</translation>
+    </message>
+    <message>
+        <source>Soft limit: the target is outside the table's travel, so the table stopped at its limit. Move it back the other way, inside the limits.</source>
+        <translation>Limite de software: o alvo está fora do curso da mesa, e a mesa parou no limite. Leve-a de volta no sentido oposto, para dentro dos limites.</translation>
+    </message>
+    <message>
+        <source>Homing failed: the table's origin was not found. Check its sensor and cable, acknowledge, then home again.</source>
+        <translation>Falha no referenciamento: a origem da mesa não foi encontrada. Verifique o sensor e o cabo, reconheça e refaça o referenciamento.</translation>
+    </message>
+    <message>
+        <source>Soft limit: the table would have passed the soft limit of its x or y axis at %1 mm and was stopped. Acknowledge, then move it back inside the limits.</source>
+        <translation>Limite de software: a mesa passaria do limite de software do eixo x ou y em %1 mm e foi parada. Reconheça e leve-a de volta para dentro dos limites.</translation>
+    </message>
+    <message>
+        <source>Not in position: the table did not settle on its target (%1 mm off on its x or y axis). Check the payload and the gains, acknowledge, then run again.</source>
+        <translation>Fora de posição: a mesa não se assentou no alvo (a %1 mm no eixo x ou y). Verifique a carga e os ganhos, reconheça e execute de novo.</translation>
+    </message>
+    <message>
+        <source>The program ended with the table %1 mm from its last target on its x or y axis, outside the final-position window. Check the payload and the gains, then run it again.</source>
+        <translation>O programa terminou com a mesa a %1 mm do último alvo no eixo x ou y, fora da janela de posição final. Verifique a carga e os ganhos e execute de novo.</translation>
+    </message>
+    <message>
+        <source>A reference mark corrected the table's position by %1 mm: counts were lost or a belt slipped. The position is right again; if this repeats, check the encoders and their cables.</source>
+        <translation>Uma marca de referência corrigiu a posição da mesa em %1 mm: houve perda de contagens ou uma correia escorregou. A posição está certa de novo; se isso se repetir, verifique os encoders e os cabos.</translation>
+    </message>
+    <message>
+        <source>Encoder stalled: a drive of the table (x or y axis) ran %1 mm without a single count and both drives were cut. Check the encoder and its cable, acknowledge, then home again.</source>
+        <translation>Encoder parado: um acionamento da mesa (eixo x ou y) andou %1 mm sem uma única contagem e os acionamentos foram cortados. Verifique o encoder e o cabo, reconheça e refaça o referenciamento.</translation>
+    </message>
+    <message>
+        <source>Over-current: a motor of the table (x or y axis) drew too much current at %1 % PWM and the drives were cut. Free the axis, acknowledge, then home again.</source>
+        <translation>Sobrecorrente: um motor da mesa (eixo x ou y) puxou corrente demais a %1 % de PWM e os acionamentos foram cortados. Libere o eixo, reconheça e refaça o referenciamento.</translation>
+    </message>
 </context>
 <context>
     <name>Diagnostic</name>
@@ -558,6 +602,93 @@
     <message>
         <source>cannot set %1 bit/s 8N1 on serial port %2: %3</source>
         <translation>não foi possível configurar %1 bit/s 8N1 na porta serial %2: %3</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::CalibrationDialog</name>
+    <message>
+        <source>Calibration of the table</source>
+        <translation>Calibração da mesa</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>não medido</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Iniciar</translation>
+    </message>
+    <message>
+        <source>Compute</source>
+        <translation>Calcular</translation>
+    </message>
+    <message>
+        <source>Save profile...</source>
+        <translation>Salvar perfil...</translation>
+    </message>
+    <message>
+        <source>Run the board's calibration program, then press Start.</source>
+        <translation>Rode o programa de calibração da placa e pressione Iniciar.</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>tempo (s)</translation>
+    </message>
+    <message>
+        <source>pulses</source>
+        <translation>pulsos</translation>
+    </message>
+    <message>
+        <source>displacement (mm)</source>
+        <translation>deslocamento (mm)</translation>
+    </message>
+    <message>
+        <source>Serial port:</source>
+        <translation>Porta serial:</translation>
+    </message>
+    <message>
+        <source>Bit rate:</source>
+        <translation>Velocidade:</translation>
+    </message>
+    <message>
+        <source>Axis:</source>
+        <translation>Eixo:</translation>
+    </message>
+    <message>
+        <source>Travel measured:</source>
+        <translation>Deslocamento medido:</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Parar</translation>
+    </message>
+    <message>
+        <source>Receiving the counts on %1...</source>
+        <translation>Recebendo as contagens em %1...</translation>
+    </message>
+    <message>
+        <source>%1 counts, %2 pulses/s; the board stopped at about %3 pulses. %4 mm per pulse, %5 mm per turn (the profile has %6).</source>
+        <translation>%1 contagens, %2 pulsos/s; a placa parou em cerca de %3 pulsos. %4 mm por pulso, %5 mm por volta (o perfil tem %6).</translation>
+    </message>
+    <message>
+        <source>%1 counts, %2 pulses/s; the board stopped at about %3 pulses. Enter the travel measured for mm per pulse.</source>
+        <translation>%1 contagens, %2 pulsos/s; a placa parou em cerca de %3 pulsos. Informe o deslocamento medido para obter mm por pulso.</translation>
+    </message>
+    <message>
+        <source>Save profile</source>
+        <translation>Salvar perfil</translation>
+    </message>
+    <message>
+        <source>Machine profiles (*.json)</source>
+        <translation>Perfis de máquina (*.json)</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Não foi possível gravar %1: %2</translation>
+    </message>
+    <message>
+        <source>Saved: %1</source>
+        <translation>Salvo: %1</translation>
     </message>
 </context>
 <context>
@@ -2322,6 +2453,10 @@
     <message>
         <source>&amp;Connection...</source>
         <translation>&amp;Conexão...</translation>
+    </message>
+    <message>
+        <source>Ca&amp;libration...</source>
+        <translation>Ca&amp;libração...</translation>
     </message>
     <message>
         <source>the pen lifts and the carriage runs to the origin sensors, where both axes are zeroed (0, 0).</source>

@@ -85,6 +85,14 @@ QString exitStatusHelp(const char* command) {
                  "step: the test was aborted (a servo alarm such as a following error, more "
                  "than 200 ms of continuous saturation, or leaving the test's envelope); what "
                  "ran is still measured and traced");
+    } else if (c == "calibrate") {
+        line(kOk, "calibrated (printed; the profile written with --write-profile)");
+        line(kUsage,
+             "usage error, a profile that cannot be read or is not a DC table's, a port that "
+             "cannot be opened, or a profile that cannot be written");
+        line(kAlarm,
+             "the board sent no usable stream: no count before --timeout, the line lost, or "
+             "counts that measure nothing (named)");
     } else if (c == "latency") {
         line(kOk, "measured (printed)");
         line(kUsage, "usage error");

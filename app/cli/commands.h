@@ -13,5 +13,6 @@ int serveCommand(const QStringList& args);
 /// tune step | metrics (tune_command.cpp) | identify | auto (tune_model_command.cpp).
 int tuneCommand(const QStringList& args);
 int tuneModelCommand(const QStringList& args, bool autotune);
+int calibrateCommand(const QStringList& args);
 
 }  // namespace trilho::cli

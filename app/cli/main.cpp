@@ -17,6 +17,7 @@ const char* kUsage =
     "  profile   check a machine profile (JSON) and print it in full\n"
     "  serve     run the rail headless with the DNC link (Modbus TCP/RTU)\n"
     "  tune      step tests, metrics of runs, identification and autotune\n"
+    "  calibrate measure an axis of the DC table from its board's calibration stream\n"
     "\n"
     "Options:\n"
     "  -h, --help  print this help\n"
@@ -43,6 +44,7 @@ static int dispatch(int argc, char* argv[]) {
     if (command == QLatin1String("latency")) return trilho::cli::latencyCommand(args);
     if (command == QLatin1String("serve")) return trilho::cli::serveCommand(args);
     if (command == QLatin1String("tune")) return trilho::cli::tuneCommand(args);
+    if (command == QLatin1String("calibrate")) return trilho::cli::calibrateCommand(args);
     if (command == QLatin1String("--help") || command == QLatin1String("-h")) {
         trilho::cli::out(QString::fromLatin1(kUsage) + QLatin1Char('\n') +
                          trilho::cli::exitStatusHelp(nullptr));

@@ -63,7 +63,8 @@ struct Report {
         if (e.kind == EventKind::AlarmRaised && alarms.size() < kKeptLines) {
             QJsonObject a;
             a[QStringLiteral("code")] = static_cast<int>(e.alarm);
-            a[QStringLiteral("text")] = alarmText(e.alarm, e.value);
+            a[QStringLiteral("text")] =
+                xy ? xyAlarmText(e.alarm, e.value) : alarmText(e.alarm, e.value);
             a[QStringLiteral("severity")] = alarmSeverity(e.alarm) == AlarmSeverity::Warning
                                                 ? QStringLiteral("warning")
                                                 : QStringLiteral("alarm");

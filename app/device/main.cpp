@@ -4,7 +4,8 @@
 //                 [--corrupt-every N] [--duplicate P] [--delay-ms N] [--out-corrupt P]
 //                 [--out-drop P] [--out-duplicate P] [--out-delay-ms N] [--seed N] [--unpaced]
 //                 [--machine PROFILE]
-//                 [--calibration] (table: seed 004's open-loop calibration program)
+//                 [--calibration [--calibration-axis x|y] [--calibration-percent P]]
+//                 (table: seed 004's open-loop calibration program)
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QSerialPort>
@@ -93,9 +94,18 @@ int main(int argc, char* argv[]) {
         QStringLiteral("calibration"),
         QStringLiteral("table: run the open-loop calibration program (x at a fixed PWM, the "
                        "encoder count sent LSB then MSB every 32 ms until 1300 pulses)."));
+    const QCommandLineOption calibrationAxisOpt(
+        QStringLiteral("calibration-axis"),
+        QStringLiteral("table --calibration: the axis the program drives, x (the seed's wiring, "
+                       "default) or y."),
+        QStringLiteral("AXIS"));
+    const QCommandLineOption calibrationPercentOpt(
+        QStringLiteral("calibration-percent"),
+        QStringLiteral("table --calibration: its fixed PWM, percent (default 25)."),
+        QStringLiteral("P"));
     parser.addOptions({ptyOpt, portOpt, baudOpt, corruptOpt, everyOpt, dropOpt, delayOpt, dupOpt,
                        outCorruptOpt, outDropOpt, outDupOpt, outDelayOpt, seedOpt, unpacedOpt,
-                       machineOpt, calibrationOpt});
+                       machineOpt, calibrationOpt, calibrationAxisOpt, calibrationPercentOpt});
     parser.process(app);
 
     const QStringList args = parser.positionalArguments();
@@ -105,6 +115,16 @@ int main(int argc, char* argv[]) {
         return usage(QStringLiteral("unknown board '%1' (plotter or table)").arg(board));
     if (parser.isSet(calibrationOpt) && board != QLatin1String("table"))
         return usage(QStringLiteral("--calibration is the table's program"));
+    if ((parser.isSet(calibrationAxisOpt) || parser.isSet(calibrationPercentOpt)) &&
+        !parser.isSet(calibrationOpt))
+        return usage(
+            QStringLiteral("--calibration-axis and --calibration-percent go with "
+                           "--calibration"));
+    const QString calibrationAxis = parser.value(calibrationAxisOpt);
+    if (parser.isSet(calibrationAxisOpt) && calibrationAxis != QLatin1String("x") &&
+        calibrationAxis != QLatin1String("y"))
+        return usage(
+            QStringLiteral("--calibration-axis: must be x or y (got %1)").arg(calibrationAxis));
     if (parser.isSet(ptyOpt) && parser.isSet(portOpt))
         return usage(QStringLiteral("--pty and --port exclude each other"));
 
@@ -126,6 +146,7 @@ int main(int argc, char* argv[]) {
         return true;
     };
     double baud = settings.baud, every = 0, delayMs = 0, outDelayMs = 0, seed = 1;
+    double calibrationPercent = TableFirmware::kCalibrationPercent;
     if (!number(baudOpt, 50, 4000000, baud) ||
         !number(corruptOpt, 0, 1, settings.faults.corruptP) ||
         !number(dropOpt, 0, 1, settings.faults.dropP) || !number(everyOpt, 0, 1e9, every) ||
@@ -133,7 +154,8 @@ int main(int argc, char* argv[]) {
         !number(outCorruptOpt, 0, 1, settings.outFaults.corruptP) ||
         !number(outDropOpt, 0, 1, settings.outFaults.dropP) ||
         !number(outDupOpt, 0, 1, settings.outFaults.duplicateP) ||
-        !number(outDelayOpt, 0, 60000, outDelayMs) || !number(seedOpt, 0, 9e15, seed))
+        !number(outDelayOpt, 0, 60000, outDelayMs) || !number(seedOpt, 0, 9e15, seed) ||
+        !number(calibrationPercentOpt, 0.5, 100, calibrationPercent))
         return 2;
     settings.baud = static_cast<int>(baud);
     settings.faults.corruptEvery = static_cast<unsigned>(every);
@@ -159,10 +181,11 @@ int main(int argc, char* argv[]) {
     } else {
         if (profile.kind != MachineKind::DcTable)
             return usage(QStringLiteral("the table needs an xy-dc-table profile"));
-        firmware = std::make_unique<TableFirmware>(profile, settings.faults.seed,
-                                                   parser.isSet(calibrationOpt)
-                                                       ? TableFirmware::Mode::Calibration
-                                                       : TableFirmware::Mode::SetPoints);
+        firmware = std::make_unique<TableFirmware>(
+            profile, settings.faults.seed,
+            parser.isSet(calibrationOpt) ? TableFirmware::Mode::Calibration
+                                         : TableFirmware::Mode::SetPoints,
+            calibrationPercent, calibrationAxis == QLatin1String("y") ? 1 : 0);
     }
 
     PtyEndpoint pty;

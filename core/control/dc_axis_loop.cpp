@@ -11,7 +11,7 @@ namespace {
 constexpr double kSettleIntegralBoost = 4.0;
 }  // namespace
 
-DcAxisLoop::DcAxisLoop(const DcAxisParams& axis, double clampPercent, LoopLaw law)
+DcAxisLoop::DcAxisLoop(const DcAxisParams& axis, double clampPercent, DcLaw law)
     : axis_(axis), clamp_(clampPercent), law_(law) {}
 
 void DcAxisLoop::reset() {
@@ -23,8 +23,18 @@ void DcAxisLoop::reset() {
 double DcAxisLoop::update(double setpointMm, double velocityMmS, double accelMmS2,
                           double positionMm, double dtS) {
     const double eMm = setpointMm - positionMm;
-    if (law_ == LoopLaw::Classic) {
-        // Seed 004: error_act = arr_sp - 0.314 pulsos (rad); salida = (b0 e + b1 e_ant) x 100.
+    if (law_ == DcLaw::Seed) {
+        // Seed 004: error_act_x = fabs(arr_sp1[contador] - 0.314 pulsos_x) (rad);
+        // salida_x = (0.198 error_act_x - 0.179982 error_ant_x) x 100, limited to min..max
+        // (0..50 %); the direction is the bit bits_de_giro set for the whole move.
+        const double eRad = std::abs(eMm) * 2.0 * std::numbers::pi / axis_.mmPerTurn;
+        const double u = 100.0 * (axis_.classic.b0 * eRad + axis_.classic.b1 * ePrevRad_);
+        ePrevRad_ = eRad;
+        u_ = direction_ * std::clamp(u, 0.0, clamp_);
+        return u_;
+    }
+    if (law_ == DcLaw::SeedSigned) {
+        // The seed's equation on the signed error: error_act = arr_sp - 0.314 pulsos (rad).
         const double eRad = eMm * 2.0 * std::numbers::pi / axis_.mmPerTurn;
         const double u = 100.0 * (axis_.classic.b0 * eRad + axis_.classic.b1 * ePrevRad_);
         ePrevRad_ = eRad;

@@ -2,31 +2,39 @@
 // The position loop of one DC table axis (xy.md B), run every dcTable.samplePeriodS (5 ms).
 // Output: signed PWM percent, magnitude clamped to 0..pwmClampPercent; the sign becomes the
 // direction bit (core/io/dc_table_io.h: positive = forward = bit 0, negative = reverse = bit 1).
-//  - Classic: seed 004's difference equation, u = 100 (b0 e + b1 e_prev), e the error in
-//    radians of the motor (mm x 2 pi / mmPerTurn), u in percent PWM. The seed applies it to
-//    |e| with the direction bit fixed for the whole move; here it runs on the signed error and
-//    the sign of u sets the bit, which is the same while the error keeps the move's sign and
-//    drives back (instead of on) after an overshoot.
+//  - Seed (seed 004's main program, "ALGORITMO PID"): u = 100 (b0 |e| + b1 |e_prev|), e the
+//    error in radians of the motor (mm x 2 pi / mmPerTurn), u in percent PWM clamped to
+//    0..pwmClampPercent (uint8_t min=0, max=50), the direction bit fixed for the move
+//    (bits_de_giro, setDirection): after an overshoot |e| grows and the axis is driven on.
+//  - SeedSigned: the same equation on the signed error, clamped to +-pwmClampPercent; the sign
+//    of u sets the bit, so it drives back (instead of on) after an overshoot.
 //  - Engineered (default): u = kff (v_cmd + tau a_cmd) + coulomb sign(v_cmd) + kp e
 //    + ki integral(e), e in mm: the feed-forward runs the profile through the motor's lag (tau,
 //    timeConstantS) and its friction (coulombPercent), both the profile's figures of the axis,
 //    so the feedback only corrects what the model misses; the integral stops while the output
 //    is clamped and pushing further into the clamp (anti-windup).
-#include "core/control/loop_law.h"
+#include "core/control/dc_law.h"
 #include "core/machine/dc_table_params.h"
 
 namespace trilho {
 
 class DcAxisLoop {
   public:
-    DcAxisLoop(const DcAxisParams& axis, double clampPercent, LoopLaw law);
+    DcAxisLoop(const DcAxisParams& axis, double clampPercent, DcLaw law);
 
     /// One period: setpoint, commanded velocity and acceleration (mm, mm/s, mm/s2), measured
     /// position (mm). Returns the signed PWM percent.
     double update(double setpointMm, double velocityMmS, double accelMmS2, double positionMm,
                   double dtS);
-    /// Forgets the past (e_prev, the integral): after a cut, before a fresh start.
+    /// Forgets the past (e_prev, the integral): after a cut, before a fresh start (the seed
+    /// sets error_ant_x = error_ant_y = 0 before each move's loops).
     void reset();
+    /// Seed law: the move's direction bit, +1 forward (bit 0) or -1 reverse (bit 1): seed 004
+    /// bits_de_giro, forward when the set point is greater than the one before.
+    void setDirection(int sign) { direction_ = sign < 0 ? -1.0 : 1.0; }
+    /// Seed law, at a new move: error_ant = 0, while the PWM keeps its last value until this
+    /// axis' loop runs again (the seed rewrites OCR1x only inside its loop).
+    void clearPreviousError() { ePrevRad_ = 0.0; }
     /// Where the axis is (engineered law; the classic law ignores it).
     enum class Phase : unsigned char {
         Tracking,    ///< following a profile
@@ -38,15 +46,16 @@ class DcAxisLoop {
                      ///< to jump the axis a count past its target (a limit cycle)
     };
     void setPhase(Phase p) { phase_ = p; }
-    LoopLaw law() const { return law_; }
+    DcLaw law() const { return law_; }
     double output() const { return u_; }
 
   private:
     DcAxisParams axis_;
     double clamp_;
-    LoopLaw law_;
-    double ePrevRad_ = 0.0;  ///< classic: the last error, rad
-    double integral_ = 0.0;  ///< engineered: integral of e, mm.s
+    DcLaw law_;
+    double ePrevRad_ = 0.0;   ///< seed laws: the last error, rad (|e| under Seed)
+    double direction_ = 1.0;  ///< seed law: the move's direction bit as a sign
+    double integral_ = 0.0;   ///< engineered: integral of e, mm.s
     double u_ = 0.0;
     Phase phase_ = Phase::Tracking;
 };

@@ -62,6 +62,16 @@ void DcTableMotion::plan(XyPoint from, XyPoint to) {
     planTimeS_ = 0.0;
     settleS_ = settlingForS_ = 0.0;
     phase_ = Phase::Moving;
+    coasting_ = false;
+    if (params_.law == DcLaw::Seed) {
+        // bits_de_giro: forward (bit 0) when the set point is greater than the one before.
+        loops_[0].setDirection(to.x > from.x ? 1 : -1);
+        loops_[1].setDirection(to.y > from.y ? 1 : -1);
+        // error_ant_x = error_ant_y = 0; both PWM at 0 (each went to 0 when its loop ended;
+        // a move that follows one at once, with no idle period between, starts from there too).
+        for (DcAxisLoop& l : loops_)
+            l.reset();
+    }
 }
 
 void DcTableMotion::beginMove(XyPoint target, XyMove, double speedFraction) {
@@ -79,6 +89,15 @@ void DcTableMotion::beginHoming() {
 void DcTableMotion::hold() {
     if (phase_ != Phase::Moving) return;
     held_ = true;
+    if (params_.law == DcLaw::Seed) {
+        // The seed has no hold: both PWM to 0, the table coasts to rest; resume replans from
+        // where it stands.
+        phase_ = Phase::Idle;
+        coasting_ = true;
+        for (DcAxisLoop& l : loops_)
+            l.reset();
+        return;
+    }
     plan_ = plan_.stoppedFrom(planTimeS_);
     planTimeS_ = 0.0;
 }
@@ -91,6 +110,16 @@ void DcTableMotion::resume() {
 
 void DcTableMotion::stop() {
     held_ = false;
+    if (params_.law == DcLaw::Seed) {
+        if (phase_ == Phase::Moving) {
+            phase_ = Phase::Idle;
+            coasting_ = true;
+            for (DcAxisLoop& l : loops_)
+                l.reset();
+        }
+        target_ = commanded_;
+        return;
+    }
     if (phase_ == Phase::Moving) {
         plan_ = plan_.stoppedFrom(planTimeS_);
         planTimeS_ = 0.0;
@@ -159,6 +188,43 @@ bool DcTableMotion::checkEncoder(std::size_t k, bool counted, double dtS) {
     return false;
 }
 
+void DcTableMotion::tickSeed(double dtS) {
+    if (phase_ == Phase::Moving) {
+        planTimeS_ += dtS;
+        // The seed's arrays: arr_sp of the X loop at its own times, then the Y loop's from its
+        // start, each as long as the synchronized profile (the same long3 samples of 5 ms).
+        const double T = plan_.duration();
+        const bool xLoop = planTimeS_ <= T + 1e-9;
+        const SyncSample sx = plan_.at(std::min(planTimeS_, T));
+        const SyncSample sy = plan_.at(std::clamp(planTimeS_ - T, 0.0, T));
+        commanded_ = {sx.position[0], sy.position[1]};
+        commandedVelocity_ = {xLoop ? sx.velocity[0] : 0.0, xLoop ? 0.0 : sy.velocity[1]};
+        commandedAccel_ = {xLoop ? sx.acceleration[0] : 0.0, xLoop ? 0.0 : sy.acceleration[1]};
+        // Deliberate difference (docs/seeds-dc-table.md): the seed leaves OCR1A at the X loop's
+        // last value while the Y loop runs, and both after it; on a plant whose friction does
+        // not hold that value the axis runs on past its target. Each PWM goes to 0 when its
+        // loop ends, as the seed's author evidently meant the table to stop there.
+        if (!xLoop) loops_[0].reset();
+        const std::size_t k = xLoop ? 0 : 1;
+        const std::array<double, 2> sp{commanded_.x, commanded_.y};
+        loops_[k].update(sp[k], 0.0, 0.0, measuredMm_[k], dtS);
+        if (planTimeS_ >= 2.0 * T - 1e-9) {
+            // The Y loop's last sample: the seed goes back to wait for a set point (the PWM go
+            // to 0 next period, see above).
+            phase_ = Phase::Idle;
+            commandedVelocity_ = commandedAccel_ = {};
+        }
+    } else {
+        for (DcAxisLoop& l : loops_)
+            l.reset();  // the Y loop ended (or hold, stop): both PWM at 0
+        if (coasting_) commanded_ = {measuredMm_[0], measuredMm_[1]};
+    }
+    const double worst =
+        std::max(std::abs(commanded_.x - measuredMm_[0]), std::abs(commanded_.y - measuredMm_[1]));
+    if (worst > params_.seedFollowingErrorLimitMm) return raise(AlarmCode::FollowingError, worst);
+    writeDrives({loops_[0].output(), loops_[1].output()});
+}
+
 void DcTableMotion::tick(double dtS) {
     const std::array<std::int64_t, 2> before = counts_;
     readEncoders();
@@ -168,7 +234,9 @@ void DcTableMotion::tick(double dtS) {
     for (int i = 0; i < 2; ++i)
         if (drivesOn_ && io_.readOverCurrent(i))
             raise(AlarmCode::OverCurrent, std::abs(drivePercent_[static_cast<std::size_t>(i)]));
-    if (drivesOn_) {
+    if (drivesOn_ && params_.law == DcLaw::Seed) {
+        tickSeed(dtS);
+    } else if (drivesOn_) {
         if (phase_ == Phase::Moving) {
             planTimeS_ += dtS;
             const SyncSample s = plan_.at(planTimeS_);
@@ -208,8 +276,8 @@ void DcTableMotion::tick(double dtS) {
             settleS_ = inWindow ? settleS_ + dtS : 0.0;
             if (settleS_ >= kInPositionTimeS - 1e-12) {
                 phase_ = Phase::Idle;
-            } else if (settlingForS_ > (params_.law == LoopLaw::Classic ? kClassicSettleTimeoutS
-                                                                        : kSettleTimeoutS)) {
+            } else if (settlingForS_ > (params_.law == DcLaw::SeedSigned ? kClassicSettleTimeoutS
+                                                                         : kSettleTimeoutS)) {
                 return raise(AlarmCode::InPositionTimeout, worst);
             }
         }

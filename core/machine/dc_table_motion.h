@@ -5,10 +5,15 @@
 // Faults: following error (alarm 3, the larger axis error in mm), an over-current input
 // (alarm 17, the axis' PWM percent when it fired), a move that never settles (alarm 12), an
 // encoder that does not count while the drive runs its axis (alarm 16, the mm it ran).
-// Hold and stop brake along the line. Homing: the seed has no origin sensor; its firmware
-// starts with both counts at zero, so the origin is where the table stood at power-on (the
-// operator puts it in the origin corner first). beginHoming() accepts that zero and does not
-// move; the counts are never cleared afterwards, so an alarm does not lose the origin.
+// Hold and stop brake along the line. Under the seed's law (DcLaw::Seed) a move runs as seed
+// 004's main program does: the X loop over the whole trajectory, then the Y loop over its own
+// (each axis' set points in turn; the other axis' PWM at 0 once its loop ended: the seed keeps
+// its last value, docs/seeds-dc-table.md), no in-position check; hold and stop cut both PWM to
+// 0 (the seed has neither) and the table coasts to rest.
+// Homing: the seed has no origin sensor; its firmware starts with both counts at zero, so the
+// origin is where the table stood at power-on (the operator puts it in the origin corner first).
+// beginHoming() accepts that zero and does not move; the counts are never cleared afterwards, so an
+// alarm does not lose the origin.
 #include <array>
 #include <cstdint>
 
@@ -50,6 +55,8 @@ class DcTableMotion final : public XyMotion {
     enum class Phase : std::uint8_t { Idle, Moving, Settling };
 
     void plan(XyPoint from, XyPoint to);
+    /// The seed's law: one period of the X loop, then of the Y loop (see the header comment).
+    void tickSeed(double dtS);
     void readEncoders();
     void raise(AlarmCode code, double value);
     void writeDrives(const std::array<double, 2>& percent);
@@ -76,7 +83,9 @@ class DcTableMotion final : public XyMotion {
     XyPoint commandedVelocity_;  ///< mm/s
     XyPoint commandedAccel_;     ///< mm/s2
     double speedFraction_ = 1.0;
-    bool held_ = false;  ///< hold(): braking or stopped on the path, the target kept
+    bool held_ = false;      ///< hold(): braking or stopped on the path, the target kept
+    bool coasting_ = false;  ///< seed law after hold or stop: the drives are off, the set point
+                             ///< follows the table to rest
     bool drivesOn_ = true;
     bool homed_ = false;
     AlarmCode fault_ = AlarmCode::None;

@@ -1,7 +1,7 @@
 #pragma once
 // The DC-motor XY table of xy.md B (seed 004): per-axis mechanics, drive and both loop laws.
 // Every figure says where it comes from: "seed 004 <section>" or "chosen".
-#include "core/control/loop_law.h"
+#include "core/control/dc_law.h"
 
 namespace trilho {
 
@@ -32,12 +32,16 @@ struct DcAxisParams {
 };
 
 struct DcTableParams {
-    LoopLaw law = LoopLaw::Engineered;  ///< "dcTable.law": "classic" is seed 004's law
+    DcLaw law = DcLaw::Engineered;  ///< "dcTable.law": "seed", "seed-signed" or "engineered"
     double samplePeriodS =
         0.005;  ///< seed 004 annex 7: N_total = tf/0.005; _delay_loop_2(10000) = 5 ms
     double pwmClampPercent = 50.0;  ///< seed 004 main program: uint8_t min=0,max=50 (percent)
     double pwmDutyMax = 247.0;      ///< seed 004 config_pwm: ICR1 = 247, OCR1x = floor(u / 0.405)
     double followingErrorLimitMm = 5.0;  ///< chosen
+    /// Under the seed's law (DcLaw::Seed), mm. Chosen: its steady gain, 100 (b0 + b1) = 1.8 %/rad
+    /// on X and 0.6 %/rad on Y, lags 5-15 mm at the seed's speeds (the seed checks nothing);
+    /// 25 mm still cuts a jam or a drive left running past its target.
+    double seedFollowingErrorLimitMm = 25.0;
     /// Chosen: half a count of Y (0.1 mm per count). The loop measures the centre of the count, so
     /// in the window the table is within one count of its target; DcTableMotion never uses a
     /// window narrower than half a count of the axis (0.053 mm on X).
@@ -65,6 +69,7 @@ void forEachDcTableNumber(P& t, F&& f) {
     f("dcTable.pwmClampPercent", t.pwmClampPercent, 1.0, 100.0);
     f("dcTable.pwmDutyMax", t.pwmDutyMax, 1.0, 65535.0);
     f("dcTable.followingErrorLimitMm", t.followingErrorLimitMm, 0.01, 1000.0);
+    f("dcTable.seedFollowingErrorLimitMm", t.seedFollowingErrorLimitMm, 0.01, 1000.0);
     f("dcTable.inPositionWindowMm", t.inPositionWindowMm, 0.0001, 10.0);
     auto axis = [&](DcAxisParams& a, const char* mm, const char* rad, const char* v,
                     const char* tau, const char* coul, const char* oc, const char* b0,

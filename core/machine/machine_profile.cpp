@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 #include "core/gcode/source_file.h"
@@ -457,16 +458,18 @@ ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin
     }
     const QJsonValue tableLaw = lookup(root, QStringLiteral("dcTable.law"));
     if (!tableLaw.isUndefined()) {
-        if (tableLaw.toString() == QLatin1String("classic"))
-            p.dcTable.law = LoopLaw::Classic;
-        else if (tableLaw.toString() == QLatin1String("engineered"))
-            p.dcTable.law = LoopLaw::Engineered;
-        else {
-            result.error =
-                QStringLiteral("%1: dcTable.law: must be \"classic\" or \"engineered\" (got %2)")
-                    .arg(origin, jsonText(tableLaw));
+        // Issue 22 item 5: "classic" named the signed reading of seed 004's law, which is not
+        // the seed's as written; it is refused with both names rather than guessed.
+        const std::optional<DcLaw> parsed = dcLawFromName(tableLaw.toString().toStdString());
+        if (!parsed) {
+            result.error = QStringLiteral(
+                               "%1: dcTable.law: must be \"seed\" (seed 004's law as written), "
+                               "\"seed-signed\" (its gains on the signed error, both axes "
+                               "together; \"classic\" before issue 22) or \"engineered\" (got %2)")
+                               .arg(origin, jsonText(tableLaw));
             return result;
         }
+        p.dcTable.law = *parsed;
     }
     QString error;
     forEachNumber(p, [&](const char* key, double& value, double lo, double hi) {
@@ -522,7 +525,9 @@ QByteArray machineProfileToJson(const MachineProfile& profile) {
     if (p.kind == MachineKind::Rail)
         insert(root, {QStringLiteral("loop"), QStringLiteral("law")}, 0, lawName(p.loop.law));
     if (p.kind == MachineKind::DcTable)
-        insert(root, {QStringLiteral("dcTable"), QStringLiteral("law")}, 0, lawName(p.dcTable.law));
+        insert(root, {QStringLiteral("dcTable"), QStringLiteral("law")}, 0,
+               QString::fromLatin1(dcLawName(p.dcTable.law).data(),
+                                   static_cast<qsizetype>(dcLawName(p.dcTable.law).size())));
     forEachNumber(p, [&](const char* key, double& value, double, double) {
         insert(root, QString::fromLatin1(key).split(QLatin1Char('.')), 0, value);
     });

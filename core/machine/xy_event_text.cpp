@@ -20,6 +20,61 @@ constexpr const char* kHomed = QT_TRANSLATE_NOOP("Controller", "Homing done: at 
 constexpr const char* kResetZero =
     QT_TRANSLATE_NOOP("Controller", "%1: Return to the machine's absolute zero.");
 
+// Issue 22 item 9: the alarms whose rail text names the platform, the rail or its centre, and
+// the drive faults, said of the table and its axes. Indexed by AlarmCode; nullptr: the rail's.
+constexpr const char* kXyAlarm[static_cast<int>(AlarmCode::Count_)] = {
+    nullptr,
+    QT_TRANSLATE_NOOP("Controller",
+                      "Lower end of travel of the table reached ! An end switch cut the drives. "
+                      "Acknowledge, then in Manual drive the table back inside the limits."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Upper end of travel of the table reached ! An end switch cut the drives. "
+                      "Acknowledge, then in Manual drive the table back inside the limits."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Following error: an axis of the table (x or y) was %1 mm behind the command "
+                      "(a jam, too heavy a load or a broken encoder cable) and both drives were "
+                      "cut. Free the table, acknowledge, then home again."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Soft limit: the target is outside the table's travel, so the table stopped "
+                      "at its limit. Move it back the other way, inside the limits."),
+    nullptr,
+    nullptr,
+    nullptr,
+    nullptr,
+    nullptr,
+    QT_TRANSLATE_NOOP("Controller",
+                      "Homing failed: the table's origin was not found. Check its sensor and "
+                      "cable, acknowledge, then home again."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Soft limit: the table would have passed the soft limit of its x or y axis "
+                      "at %1 mm and was stopped. Acknowledge, then move it back inside the "
+                      "limits."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Not in position: the table did not settle on its target (%1 mm off on its x "
+                      "or y axis). Check the payload and the gains, acknowledge, then run again."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "The program ended with the table %1 mm from its last target on its x or y "
+                      "axis, outside the final-position window. Check the payload and the gains, "
+                      "then run it again."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "A reference mark corrected the table's position by %1 mm: counts were lost "
+                      "or a belt slipped. The position is right again; if this repeats, check the "
+                      "encoders and their cables."),
+    nullptr,
+    QT_TRANSLATE_NOOP("Controller",
+                      "Encoder stalled: a drive of the table (x or y axis) ran %1 mm without a "
+                      "single count and both drives were cut. Check the encoder and its cable, "
+                      "acknowledge, then home again."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Over-current: a motor of the table (x or y axis) drew too much current at "
+                      "%1 % PWM and the drives were cut. Free the axis, acknowledge, then home "
+                      "again."),
+    nullptr,
+    nullptr,
+    nullptr,
+    nullptr,
+};
+
 QString number(double v) {
     const double r = std::round(v * 1000.0) / 1000.0;
     if (r == std::floor(r) && std::abs(r) < 1e15) return QString::number(static_cast<qint64>(r));
@@ -45,6 +100,14 @@ QString xyHistoryLine(const ControllerEvent& e) {
         case EventKind::ResetZero:
             source = kResetZero;
             break;
+        case EventKind::AlarmRaised: {
+            // The rail's line with the table's text in place of the rail's (same frame:
+            // "Alarm 3: ..." or "Warning 13: ...").
+            QString line = historyLine(e);
+            const QString rail = alarmText(e.alarm, e.value);
+            if (!rail.isEmpty()) line.replace(rail, xyAlarmText(e.alarm, e.value));
+            return line;
+        }
         default:
             return historyLine(e);
     }
@@ -53,6 +116,19 @@ QString xyHistoryLine(const ControllerEvent& e) {
     if (e.n < 0 && text.startsWith(QLatin1String("%1: "))) text = text.mid(4);
     const QString n = e.n >= 0 ? QStringLiteral("%1").arg(e.n, 4, 10, QLatin1Char('0')) : QString();
     return substitute(text, {n, number(e.x), number(e.feed), number(e.value)});
+}
+
+const char* xyAlarmSource(AlarmCode code) {
+    if (code == AlarmCode::None || code >= AlarmCode::Count_) return nullptr;
+    return kXyAlarm[static_cast<int>(code)];
+}
+
+QString xyAlarmText(AlarmCode code, double value) {
+    const char* source = xyAlarmSource(code);
+    if (!source) return alarmText(code, value);
+    // As alarmText: the figure to 0.01.
+    return substitute(QCoreApplication::translate(kContext, source),
+                      {number(std::round(value * 100.0) / 100.0)});
 }
 
 }  // namespace trilho

@@ -2,23 +2,25 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace trilho {
 
 TableFirmware::TableFirmware(const MachineProfile& profile, std::uint64_t seed, Mode mode,
-                             double calibrationPercent)
+                             double calibrationPercent, int calibrationAxis)
     : profile_(profile),
       mode_(mode),
       table_(profile.dcTable, seed),
       motion_(profile, table_),
-      loopPeriodS_(profile.dcTable.samplePeriodS) {
+      loopPeriodS_(profile.dcTable.samplePeriodS),
+      calibrationAxis_(calibrationAxis == 1 ? 1 : 0) {
     if (mode_ == Mode::Calibration) {
         // Seed 004, config_pwm: OCR1A = floor(percent / (100 / ICR1)); forward (PB0 = 0).
         const double percent = std::clamp(calibrationPercent, 0.0, 100.0);
         calibrationDuty_ = std::floor(percent * profile.dcTable.pwmDutyMax / 100.0);
-        startRaw_ = table_.readEncoder(kCalibrationAxis);
-        table_.writePwm(kCalibrationAxis, static_cast<std::uint16_t>(calibrationDuty_), false);
+        startRaw_ = table_.readEncoder(calibrationAxis_);
+        table_.writePwm(calibrationAxis_, static_cast<std::uint16_t>(calibrationDuty_), false);
     }
 }
 
@@ -100,7 +102,7 @@ void TableFirmware::loopTick() {
 
 void TableFirmware::calibrationTick() {
     // pulsos counts every encoder edge (INT4), whichever way the axis turns.
-    const std::uint16_t raw = table_.readEncoder(kCalibrationAxis);
+    const std::uint16_t raw = table_.readEncoder(calibrationAxis_);
     const auto delta = static_cast<std::int16_t>(static_cast<std::uint16_t>(raw - startRaw_));
     startRaw_ = raw;
     pulses_ = static_cast<std::uint16_t>(pulses_ + std::abs(delta));
@@ -113,7 +115,7 @@ void TableFirmware::calibrationTick() {
         return;
     }
     calibrationDone_ = true;
-    table_.writePwm(kCalibrationAxis, 0, false);
+    table_.writePwm(calibrationAxis_, 0, false);
 }
 
 void TableFirmware::step(double dtS, double) {
@@ -151,9 +153,15 @@ std::vector<std::uint8_t> TableFirmware::takeOutput() {
 }
 
 std::string TableFirmware::summary() const {
-    if (mode_ == Mode::Calibration)
+    if (mode_ == Mode::Calibration) {
+        // The travel is the plant's truth: what the seed's operator measured with a ruler.
+        char travel[64];
+        std::snprintf(travel, sizeof travel, ", axis %c, travel %.3f mm",
+                      calibrationAxis_ == 0 ? 'x' : 'y', table_.positionMm(calibrationAxis_));
         return "calibration: counts sent " + std::to_string(stats_.countsSent) + ", pulses " +
-               std::to_string(pulses_) + (calibrationDone_ ? ", stopped at 1300" : ", running");
+               std::to_string(pulses_) + (calibrationDone_ ? ", stopped at 1300" : ", running") +
+               travel;
+    }
     return "set points " + std::to_string(stats_.setPoints) + ", ACK " +
            std::to_string(stats_.reached) + ", NAK " + std::to_string(stats_.refused) + ", CAN " +
            std::to_string(stats_.cut) + ", stale partials " + std::to_string(stats_.staleBytes) +

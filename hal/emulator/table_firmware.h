@@ -54,9 +54,12 @@ class TableFirmware final : public DeviceFirmware {
     /// their own exact instants inside it.
     static constexpr double kTickS = 0.001;
 
+    /// calibrationAxis: 0 x (the seed's wiring), 1 y (the same program wired to the y axis'
+    /// channel and encoder: the seed gives mm per turn for both axes, issue 22 item 8).
     explicit TableFirmware(const MachineProfile& profile, std::uint64_t seed = 1,
                            Mode mode = Mode::SetPoints,
-                           double calibrationPercent = kCalibrationPercent);
+                           double calibrationPercent = kCalibrationPercent,
+                           int calibrationAxis = kCalibrationAxis);
 
     void receive(std::uint8_t byte, double nowS) override;
     /// Runs dtS of the board's time (the 5 ms loop, the calibration's 32 ms stream).
@@ -105,6 +108,7 @@ class TableFirmware final : public DeviceFirmware {
     double loopPeriodS_;
     // Calibration.
     double calibrationDuty_ = 0.0;  ///< OCR1A, 0..pwmDutyMax
+    int calibrationAxis_ = kCalibrationAxis;
     std::uint16_t startRaw_ = 0;
     std::uint16_t pulses_ = 0;
     bool calibrationDone_ = false;

@@ -11,7 +11,7 @@ double mmPerCount(const MachineProfile& profile, int axis) {
     return a.mmPerTurn * a.radPerCount / (2.0 * std::numbers::pi);
 }
 
-MachineProfile tableProfileForMoves(LoopLaw law) {
+MachineProfile tableProfileForMoves(DcLaw law) {
     MachineProfile p = MachineProfile::xyDcTable();
     p.motion.jogMaxFraction = 1.0;
     p.dcTable.law = law;

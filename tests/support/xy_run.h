@@ -29,7 +29,7 @@ XyMoveFigures measureMove(XySession& session, XyPoint to, double speedFraction =
 double mmPerCount(const MachineProfile& profile, int axis);
 
 /// The DC table profile with the jog cap lifted (moves run at the full speed asked).
-MachineProfile tableProfileForMoves(LoopLaw law = LoopLaw::Engineered);
+MachineProfile tableProfileForMoves(DcLaw law = DcLaw::Engineered);
 
 std::string describe(const XyMoveFigures& f);
 

@@ -14,7 +14,7 @@ namespace {
 
 TEST(DcAxisLoop, ClassicIsTheSeedsDifferenceEquation) {
     const DcTableParams t;
-    DcAxisLoop loop(t.x, t.pwmClampPercent, LoopLaw::Classic);
+    DcAxisLoop loop(t.x, t.pwmClampPercent, DcLaw::SeedSigned);
     // e = 0.5 mm on X = pi / 2.12 rad; first period e_prev = 0.
     const double e1 = std::numbers::pi / 2.12;
     EXPECT_NEAR(loop.update(0.5, 0.0, 0.0, 0.0, 0.005), 100.0 * 0.198 * e1, 1e-9);
@@ -26,14 +26,43 @@ TEST(DcAxisLoop, ClassicIsTheSeedsDifferenceEquation) {
     EXPECT_EQ(loop.update(-10.0, 0.0, 0.0, 0.0, 0.005), -50.0);
 }
 
+// Issue 22 item 5. Seed 004, annex 7, "Programa principal", ALGORITMO PID (EJE X):
+//   error_act_x = fabs(arr_sp1[contador] - 0.314 pulsos_x);
+//   salida_x = (0.198 error_act_x - 0.179982 error_ant_x) x 100, limited to min = 0, max = 50;
+//   the direction is the bit bits_de_giro set before the loops, fixed for the move.
+TEST(DcAxisLoop, SeedLawIsTheMainProgramsAsWritten) {
+    const DcTableParams t;
+    DcAxisLoop loop(t.x, t.pwmClampPercent, DcLaw::Seed);
+    loop.setDirection(+1);
+    const double e1 = std::numbers::pi / 2.12;  // 0.5 mm on X, rad
+    EXPECT_NEAR(loop.update(0.5, 0.0, 0.0, 0.0, 0.005), 100.0 * 0.198 * e1, 1e-9);
+    // Past the set point (an overshoot of 0.25 mm): |e| drives on, forward, not back.
+    const double e2 = e1 / 2.0;
+    EXPECT_EQ(loop.update(0.0, 0.0, 0.0, 0.25, 0.005), 0.0);  // 0.198 e2 < 0.179982 e1: min 0
+    EXPECT_NEAR(loop.update(0.0, 0.0, 0.0, 0.25, 0.005), 100.0 * (0.198 - 0.179982) * e2, 1e-9);
+    EXPECT_GT(loop.output(), 0.0);
+    // Clamped to max = 50 %, never below min = 0.
+    EXPECT_EQ(loop.update(40.0, 0.0, 0.0, 0.0, 0.005), 50.0);
+    // A reverse move (bit 1): the same magnitude, backwards.
+    DcAxisLoop back(t.y, t.pwmClampPercent, DcLaw::Seed);
+    back.setDirection(-1);
+    const double ey = std::numbers::pi / 2.0;  // 0.5 mm on Y, rad
+    EXPECT_NEAR(back.update(-0.5, 0.0, 0.0, 0.0, 0.005), -100.0 * 0.042 * ey, 1e-9);
+    // error_ant = 0 at a new move; the PWM keeps its value until the loop runs again.
+    const double held = back.output();
+    back.clearPreviousError();
+    EXPECT_EQ(back.output(), held);
+    EXPECT_NEAR(back.update(-0.5, 0.0, 0.0, 0.0, 0.005), -100.0 * 0.042 * ey, 1e-9);
+}
+
 TEST(DcAxisLoop, EngineeredFeedForwardAndAntiWindup) {
     const DcTableParams t;
-    DcAxisLoop loop(t.y, t.pwmClampPercent, LoopLaw::Engineered);
+    DcAxisLoop loop(t.y, t.pwmClampPercent, DcLaw::Engineered);
     // On the setpoint at 100 mm/s, no acceleration: feed-forward only (kff v + friction).
     EXPECT_NEAR(loop.update(5.0, 100.0, 0.0, 5.0, 0.005),
                 t.y.engineered.kff * 100.0 + t.y.coulombPercent, 1e-9);
     // A large error clamps; the integral does not wind meanwhile.
-    DcAxisLoop held(t.y, t.pwmClampPercent, LoopLaw::Engineered);
+    DcAxisLoop held(t.y, t.pwmClampPercent, DcLaw::Engineered);
     for (int i = 0; i < 1000; ++i)
         EXPECT_EQ(held.update(50.0, 0.0, 0.0, 0.0, 0.005), 50.0);
     // Back on the setpoint the output is only what the integral gathered before clamping.

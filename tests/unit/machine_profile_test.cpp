@@ -193,6 +193,44 @@ TEST(MachineProfileStrict, BadDcTableFieldNamesTheField) {
               std::string::npos);
 }
 
+// Issue 22 item 5: the table's laws by name; "classic" (the signed reading, called the seed's
+// "exactly") is refused with the names that replace it.
+TEST(MachineProfileStrict, DcTableLawsByName) {
+    auto load = [](const char* law) {
+        const std::string json =
+            std::string(R"({"kind": "xy-dc-table", "dcTable": {"law": ")") + law + "\"}}";
+        return machineProfileFromJson(QByteArray::fromStdString(json), QStringLiteral("t.json"));
+    };
+    ASSERT_TRUE(load("seed").profile);
+    EXPECT_EQ(load("seed").profile->dcTable.law, DcLaw::Seed);
+    EXPECT_EQ(load("seed-signed").profile->dcTable.law, DcLaw::SeedSigned);
+    EXPECT_EQ(load("engineered").profile->dcTable.law, DcLaw::Engineered);
+    const std::string e = load("classic").error.toStdString();
+    EXPECT_NE(e.find("t.json: dcTable.law: must be \"seed\""), std::string::npos) << e;
+    EXPECT_NE(e.find("\"seed-signed\""), std::string::npos) << e;
+    // Written back under the same name.
+    MachineProfile p = *load("seed").profile;
+    EXPECT_NE(machineProfileToJson(p).indexOf("\"law\": \"seed\""), -1);
+}
+
+// Issue 22 item 6: the shipped profile of the seed's law on the plant its gains were designed
+// for (the figures XyTableSeedLaw.TheExampleMovesEndAtTheirTargets runs).
+TEST(MachineProfileStrict, SeedTableProfileCarriesTheSeedsPlant) {
+    const ProfileLoad load =
+        loadMachineProfile(QStringLiteral(TRILHO_RESOURCES_DIR "/machines/xy_dc_table_seed.json"));
+    ASSERT_TRUE(load.profile) << load.error.toStdString();
+    const DcTableParams& t = load.profile->dcTable;
+    EXPECT_EQ(t.law, DcLaw::Seed);
+    EXPECT_EQ(t.x.timeConstantS, 0.05);
+    EXPECT_EQ(t.y.timeConstantS, 0.03);
+    EXPECT_EQ(t.x.noLoadSpeedMmS, 375.0);
+    EXPECT_EQ(t.y.noLoadSpeedMmS, 1768.0);
+    EXPECT_EQ(t.seedFollowingErrorLimitMm, 25.0);
+    // tau = Kd / Kp of the seed's gains: Kd = -b1 T, Kp = b0 + b1.
+    EXPECT_NEAR(-t.x.classic.b1 * 0.005 / (t.x.classic.b0 + t.x.classic.b1), 0.05, 1e-4);
+    EXPECT_NEAR(-t.y.classic.b1 * 0.005 / (t.y.classic.b0 + t.y.classic.b1), 0.03, 1e-4);
+}
+
 TEST(MachineProfileStrict, OnlyRegularFilesOfAtMostOneMegabyteAreRead) {
     const ProfileLoad zero = loadMachineProfile(QStringLiteral("/dev/zero"));
     EXPECT_EQ(zero.error.toStdString(),

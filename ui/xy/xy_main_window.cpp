@@ -40,6 +40,7 @@
 #include "core/machine/xy_event_text.h"
 #include "host/common/data_paths.h"
 #include "ui/confirm_box.h"
+#include "ui/xy/calibration_dialog.h"
 #include "ui/xy/dc_table_panel.h"
 #include "ui/xy/plotter_panel.h"
 #include "ui/xy/work_area_view.h"
@@ -259,6 +260,10 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     home_->setShortcutContext(Qt::ApplicationShortcut);
     auto* options = menuBar()->addMenu(tr("&Options"));
     options->addAction(tr("&Connection..."), this, &XyMainWindow::chooseConnection);
+    if (link_.profile().kind == MachineKind::DcTable)  // issue 22 item 8
+        options->addAction(tr("Ca&libration..."), this, [this] {
+            CalibrationDialog(link_.profile(), port_, baud_, this).exec();
+        });
 
     linkLabel_ = new QLabel(this);
     linkLabel_->setObjectName(QStringLiteral("xyLink"));
