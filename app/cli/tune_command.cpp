@@ -224,7 +224,8 @@ int stepCommand(const QStringList& args) {
             return usage(QStringLiteral("--law must be classic or engineered (got '%1')").arg(l));
     }
     const LoopLaw law =
-        spec.law ? *spec.law : (table ? spec.profile.dcTable.law : spec.profile.loop.law);
+        spec.law ? *spec.law
+                 : (table ? tableStepLaw(spec.profile.dcTable.law) : spec.profile.loop.law);
     TuningGains g = profileGains(spec.profile, spec.axis, law);
     const bool dcClassic = table && law == LoopLaw::Classic;
     struct GainOpt {

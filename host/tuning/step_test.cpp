@@ -174,7 +174,7 @@ StepTestResult runTable(const StepTestSpec& spec, StepTestResult r) {
     RunConditions& c = r.record.conditions;
     MachineProfile profile = c.profile;
     profile.dcTable.massFactor *= spec.massFactor;
-    profile.dcTable.law = c.law;
+    profile.dcTable.law = tableDcLaw(c.law);
     DcAxisParams& ax = c.axis == 'x' ? profile.dcTable.x : profile.dcTable.y;
     if (c.law == LoopLaw::Classic)
         ax.classic = {c.gains.b0, c.gains.b1};
@@ -302,7 +302,8 @@ StepTestResult runStepTest(const StepTestSpec& spec) {
         !(spec.settleS >= 0.0 && spec.settleS <= 60.0) ||
         !(spec.maxDurationS >= 0.0 && spec.maxDurationS <= 600.0))
         return refuse(std::move(r), QStringLiteral("pre-roll, settle and duration out of range"));
-    c.law = spec.law ? *spec.law : (table ? spec.profile.dcTable.law : spec.profile.loop.law);
+    c.law = spec.law ? *spec.law
+                     : (table ? tableStepLaw(spec.profile.dcTable.law) : spec.profile.loop.law);
     c.gains = spec.gains ? *spec.gains : profileGains(spec.profile, spec.axis, c.law);
     c.periodS = spec.periodS ? *spec.periodS
                              : (table ? spec.profile.dcTable.samplePeriodS

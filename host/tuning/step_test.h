@@ -20,6 +20,17 @@
 
 namespace trilho {
 
+/// The table's laws as a step test names them (a run record has one law field, the rail's two):
+/// "classic" is seed 004's law on the signed error (DcLaw::SeedSigned), the reading a single-axis
+/// step can run; the seed's law as written runs the X loop and then the Y loop over a whole
+/// program, which is a program's test, not an axis step's.
+inline LoopLaw tableStepLaw(DcLaw law) {
+    return law == DcLaw::Engineered ? LoopLaw::Engineered : LoopLaw::Classic;
+}
+inline DcLaw tableDcLaw(LoopLaw law) {
+    return law == LoopLaw::Engineered ? DcLaw::Engineered : DcLaw::SeedSigned;
+}
+
 /// Continuous saturation longer than this aborts a test, s.
 inline constexpr double kMaxSaturationS = 0.2;
 

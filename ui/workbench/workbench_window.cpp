@@ -291,7 +291,8 @@ void WorkbenchWindow::changeEvent(QEvent* e) {
 void WorkbenchWindow::lawChanged() {
     const auto law = static_cast<LoopLaw>(law_->currentData().toInt());
     const char axis = rail_ ? char(0) : static_cast<char>(axis_->currentData().toInt());
-    const TuningGains g = profileGains(profile_, axis, rail_ ? law : profile_.dcTable.law);
+    const TuningGains g =
+        profileGains(profile_, axis, rail_ ? law : tableStepLaw(profile_.dcTable.law));
     kp_->setValue(g.kp);
     ki_->setValue(g.ki);
     kd_->setValue(rail_ ? g.kd : g.kff);
@@ -320,7 +321,7 @@ StepTestSpec WorkbenchWindow::currentSpec() const {
         g.ki = ki_->value();
         g.kd = kd_->value();
         s.gains = g;
-    } else if (profile_.dcTable.law == LoopLaw::Engineered) {
+    } else if (profile_.dcTable.law == DcLaw::Engineered) {
         TuningGains g = profileGains(profile_, s.axis, LoopLaw::Engineered);
         g.kp = kp_->value();
         g.ki = ki_->value();
