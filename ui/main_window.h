@@ -97,6 +97,13 @@ class MainWindow : public QMainWindow {
     QToolButton* remoteButton() const { return remoteButton_; }
     QLabel* dncLabel() const { return dncLabel_; }
     ProgramLibraryPanel* library() const { return library_; }
+    /// File > Machine... (issue 19, one frame).
+    QAction* machineAction() const { return machine_; }
+
+  signals:
+    /// File > Machine... chose another machine (its shipped profile's name); the rail was
+    /// stopped first when it moved. main() opens that machine's screen.
+    void machineChosen(const QString& profileName);
 
   protected:
     void closeEvent(QCloseEvent* e) override;
@@ -165,7 +172,9 @@ class MainWindow : public QMainWindow {
         *libraryDock_;
     QMenu *fileMenu_, *commandMenu_, *optionsMenu_, *languageMenu_, *themeMenu_, *lawMenu_,
         *dialectMenu_, *viewMenu_, *helpMenu_;
-    QAction *select_, *exit_, *manual_, *automatic_, *compile_, *execute_, *keys_, *resetLayout_;
+    QAction *select_, *exit_, *manual_, *automatic_, *compile_, *execute_, *keys_, *resetLayout_,
+        *machine_;
+    void requestMachine();
     QAction *classicTheme_, *systemTheme_, *classicLaw_, *engineeredLaw_, *standardDialect_,
         *classicDialect_;
     QActionGroup* languages_;

@@ -24,6 +24,7 @@
 
 #include <functional>
 #include <string_view>
+#include <type_traits>
 
 using namespace trilho;
 
@@ -232,6 +233,7 @@ int main(int argc, char* argv[]) {
         xyLink = std::make_unique<ui::XyLink>(
             std::move(runnable), device ? ui::XyLink::Drive::EventLoop : ui::XyLink::Drive::Thread);
         xyWindow = std::make_unique<ui::XyMainWindow>(*xyLink, *settings);
+        xyWindow->setLanguage(lang);
         if (device)
             xyWindow->setDeviceLink(
                 device, port,
@@ -251,7 +253,19 @@ int main(int argc, char* argv[]) {
         return true;
     };
 
+    // File > Machine... on either screen: the chosen machine's screen replaces this one (the
+    // window stopped its machine first); the command line's program and --run were for the
+    // first machine only.
+    bool switched = false;
+    std::function<void(const QString&)> switchMachine;
     auto openMachine = [&](const MachineProfile& machine) -> bool {
+        const auto connectSwitch = [&](auto* w) {
+            QObject::connect(w, &std::remove_pointer_t<decltype(w)>::machineChosen, &app,
+                             [&](const QString& name) {
+                                 // After the signal returns: its sender goes with the switch.
+                                 QTimer::singleShot(0, &app, [&, name] { switchMachine(name); });
+                             });
+        };
         if (machine.kind == MachineKind::Rail) {
             railLink = std::make_unique<ui::MachineLink>(machine);
             const QString dataDir =
@@ -265,15 +279,18 @@ int main(int argc, char* argv[]) {
             railWindow->setLanguage(lang);
             railWindow->setTheme(theme);
             if (!journalError.isEmpty()) railWindow->reportJournalProblem(journalError);
-            if (parser.isSet(programOpt) && !railWindow->selectProgram(parser.value(programOpt))) {
+            connectSwitch(railWindow.get());
+            if (!switched && parser.isSet(programOpt) &&
+                !railWindow->selectProgram(parser.value(programOpt))) {
                 std::fprintf(stderr, "trilho: cannot open program '%s'\n",
                              qPrintable(parser.value(programOpt)));
                 return false;
             }
             window = railWindow.get();
         } else {
-            if (!openXy(machine, xyPort, xyBaud)) return false;
-            if (parser.isSet(programOpt) && !xyWindow->selectProgram(parser.value(programOpt))) {
+            if (!openXy(machine, switched ? QString() : xyPort, xyBaud)) return false;
+            if (!switched && parser.isSet(programOpt) &&
+                !xyWindow->selectProgram(parser.value(programOpt))) {
                 std::fprintf(stderr, "trilho: cannot open program '%s'\n",
                              qPrintable(parser.value(programOpt)));
                 return false;
@@ -319,6 +336,31 @@ int main(int argc, char* argv[]) {
             });
             waiter->start();
         }
+    };
+    switchMachine = [&](const QString& name) {
+        ProfileLoad load = loadNamedMachineProfile(name);
+        if (!load.profile) {
+            QMessageBox::warning(window, QStringLiteral("trilho"), load.error);
+            return;
+        }
+        const QByteArray geometry = window ? window->saveGeometry() : QByteArray();
+        // The language the operator chose last, on either screen (each keeps it in settings).
+        lang = settings->value(QStringLiteral("language"), lang).toString();
+        // The screens go before their links (the windows hold references to them).
+        railWindow.reset();
+        xyWindow.reset();
+        railLink.reset();
+        xyLink.reset();
+        window = nullptr;
+        switched = true;
+        machineName = name;
+        settings->setValue(QStringLiteral("machine"), machineName);
+        if (!openMachine(*load.profile)) {
+            app.exit(2);
+            return;
+        }
+        if (!geometry.isEmpty()) window->restoreGeometry(geometry);
+        window->show();
     };
     auto armExit = [&] {
         if (parser.isSet(shotOpt)) {

@@ -1,21 +1,29 @@
 // The XY machines' screens (issue 11), offscreen, in virtual time: the link runs without its
 // thread and each test advances the machine itself, so every figure is repeatable.
+#include <QAction>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QFileInfo>
 #include <QLabel>
 #include <QListWidget>
+#include <QMap>
 #include <QProcess>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QToolButton>
+#include <cmath>
 
 #include "core/gcode/compiler.h"
 #include "core/machine/machine_profile.h"
+#include "ui/machine_link.h"
+#include "ui/main_window.h"
 #include "ui/start_screen.h"
 #include "ui/xy/dc_table_panel.h"
 #include "ui/xy/plotter_panel.h"
@@ -56,6 +64,125 @@ bool advanceUntil(XyLink& link, F done, double maxS) {
 class XyScreensTest : public QObject {
     Q_OBJECT
   private slots:
+
+    void frameParityOnAllThreeMachines() {
+        // Issue 19, one frame: the rail's and both XY screens offer the same actions, by name,
+        // with the same keys.
+        const QStringList frame{QStringLiteral("selectProgram"), QStringLiteral("machine"),
+                                QStringLiteral("exit"),          QStringLiteral("manual"),
+                                QStringLiteral("automatic"),     QStringLiteral("home"),
+                                QStringLiteral("cycleStart"),    QStringLiteral("feedHold"),
+                                QStringLiteral("continue"),      QStringLiteral("stop"),
+                                QStringLiteral("singleBlock"),   QStringLiteral("overrideDown"),
+                                QStringLiteral("overrideUp"),    QStringLiteral("overrideReset"),
+                                QStringLiteral("language_en"),   QStringLiteral("language_pt_BR"),
+                                QStringLiteral("language_es"),   QStringLiteral("resetLayout"),
+                                QStringLiteral("keys")};
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        MachineLink railLink(MachineProfile::rail());
+        MainWindow rail(railLink, settings);
+        rail.setConfirmer([](const QString&, const QString&) { return false; });
+        auto keysOf = [&](QWidget& w) {
+            QMap<QString, QKeySequence> keys;
+            for (const QString& name : frame) {
+                const QList<QAction*> found = w.findChildren<QAction*>(name);
+                if (found.size() != 1) {
+                    qWarning("%s: %lld actions named %s", w.metaObject()->className(),
+                             static_cast<long long>(found.size()), qPrintable(name));
+                    continue;
+                }
+                keys[name] = found.front()->shortcut();
+            }
+            return keys;
+        };
+        const QMap<QString, QKeySequence> railKeys = keysOf(rail);
+        QCOMPARE(railKeys.size(), frame.size());
+        QCOMPARE(railKeys[QStringLiteral("cycleStart")], QKeySequence(Qt::Key_F5));
+        QCOMPARE(railKeys[QStringLiteral("home")], QKeySequence(Qt::CTRL | Qt::Key_Home));
+        for (const char* machine : {"xy_dc_table.json", "xy_plotter.json"}) {
+            auto link = virtualLink(shipped(machine));
+            XyMainWindow w(*link, settings);
+            w.setConfirmer([](const QString&, const QString&) { return false; });
+            const QMap<QString, QKeySequence> keys = keysOf(w);
+            for (const QString& name : frame)
+                QVERIFY2(
+                    keys.contains(name) && keys[name] == railKeys[name],
+                    qPrintable(QStringLiteral("%1: %2 is %3, the rail's %4")
+                                   .arg(QLatin1String(machine), name, keys.value(name).toString(),
+                                        railKeys[name].toString())));
+            // The keys page lists the run keys and Home, as the rail's.
+            QList<QKeySequence> listed;
+            for (QAction* a : w.keyedActions())
+                listed << a->shortcut();
+            for (const char* name : {"cycleStart", "feedHold", "continue", "stop", "singleBlock",
+                                     "overrideDown", "overrideUp", "overrideReset", "home"})
+                QVERIFY(listed.contains(railKeys[QString::fromLatin1(name)]));
+        }
+    }
+
+    void xyFeedOverrideKeysAndSingleBlockReachTheMachine() {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        w.setConfirmer([](const QString&, const QString&) { return true; });
+        w.findChild<QAction*>(QStringLiteral("overrideDown"))->trigger();
+        w.findChild<QAction*>(QStringLiteral("overrideDown"))->trigger();
+        link->advance(0.05);
+        QCOMPARE(link->status().feedOverride, 0.8);
+        QVERIFY(w.overrideLabel()->text().contains(QStringLiteral("80")));
+        w.findChild<QAction*>(QStringLiteral("overrideReset"))->trigger();
+        w.singleBlockAction()->trigger();
+        link->advance(0.05);
+        QCOMPARE(link->status().feedOverride, 1.0);
+        QVERIFY(link->status().singleBlock);
+    }
+
+    void workAreaPaintsOnlyTheNewSegment() {
+        // Issue 19, the cost: the followed path was redrawn whole (up to 100,000 lines) at
+        // 50 Hz; now a new point paints one segment into the cached picture.
+        WorkAreaView v;
+        v.resize(500, 500);
+        v.setArea(QRectF(0, 0, 300, 300), {0, 0});
+        v.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&v));
+        for (int i = 0; i < 5000; ++i)
+            v.addFollowed({150 + 100 * std::cos(i * 0.01), 150 + 100 * std::sin(i * 0.01)}, true);
+        v.grab();
+        const int rebuilds = v.cacheRebuilds();
+        const std::size_t painted = v.segmentsPainted();
+        QVERIFY(v.followedCount() > 1000);
+        QCOMPARE(painted, v.followedCount() - 1);
+        v.addFollowed({10, 10}, true);
+        v.setTool({10, 10}, PenState::Down);
+        v.grab();
+        QCOMPARE(v.segmentsPainted(), painted + 1);
+        QCOMPARE(v.cacheRebuilds(), rebuilds);
+        v.resize(600, 500);  // a new size draws the picture again, once
+        v.grab();
+        QCOMPARE(v.cacheRebuilds(), rebuilds + 1);
+    }
+
+    void plotsDoNotRedrawWhileNothingMoves() {
+        XyPlots plots;
+        XySample s;
+        s.x.positionMm = 10;
+        s.y.positionMm = 20;
+        double t = 0;
+        for (; t < 1.0; t += 0.005)
+            plots.addSample(t, s);
+        const int drawn = plots.replotCount();
+        QVERIFY(drawn <= 1);
+        for (; t < 30.0; t += 0.005)
+            plots.addSample(t, s);  // half a minute at rest
+        QCOMPARE(plots.replotCount(), drawn);
+        QVERIFY(plots.pointCount() < 20.5 / 0.005);  // the window's bound holds at rest too
+        s.x.positionMm = 11;                         // it moves: drawn at the next 25 Hz tick
+        plots.addSample(t, s);
+        plots.addSample(t + 0.05, s);
+        QCOMPARE(plots.replotCount(), drawn + 1);
+    }
     void planSplitsTravelFromDrawing() {
         CompileOptions o;
         o.machine = MachineProfile::xyDcTable().limits;
@@ -88,6 +215,59 @@ class XyScreensTest : public QObject {
         QVERIFY(v.followedCount() > WorkAreaView::kMaxFollowed / 2);
     }
 
+    void dcTablePanelSendsXAndYByTheirOwnButtonsAndTheLampStartsAndStops() {
+        // Issue 22 item 7, the seed's LabVIEW panel: X and Y by their own buttons, the move
+        // once both were sent; the lamp red stopped, green running, a click stops or starts.
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        w.setConfirmer([](const QString&, const QString&) { return true; });
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        DcTablePanel* panel = w.tablePanel();
+        QVERIFY(!panel->running());
+        QVERIFY(panel->runIndicator()->styleSheet().contains(QStringLiteral("#d0202a")));  // red
+        // The counter left of the box steps it by 1 mm.
+        panel->xBox()->setValue(59);
+        panel->counter(0, true)->click();
+        QCOMPARE(panel->xBox()->value(), 60.0);
+        QVERIFY(panel->xBox()->x() > panel->counter(0, true)->x());
+        panel->yBox()->setValue(40);
+        panel->sendXButton()->click();
+        link->advance(2.0);  // the operator takes seconds to type y
+        QVERIFY(!link->status().motionBusy);
+        QVERIFY(panel->pendingLabel()->isVisibleTo(panel));
+        panel->sendYButton()->click();
+        link->advance(0.1);
+        QVERIFY(link->status().motionBusy);
+        QVERIFY(panel->running());
+        QVERIFY(panel->runIndicator()->styleSheet().contains(QStringLiteral("#1fbf3f")));  // green
+        QVERIFY(advanceUntil(
+            *link, [&] { return !link->status().motionBusy; }, 30.0));
+        QVERIFY(std::abs(link->status().sample.x.positionMm - 60.0) < 0.5);
+        QVERIFY(std::abs(link->status().sample.y.positionMm - 40.0) < 0.5);
+        // The lamp starts the table towards the boxes' set point, and stops it.
+        panel->xBox()->setValue(250);
+        panel->yBox()->setValue(250);
+        panel->runIndicator()->click();
+        link->advance(0.5);
+        QVERIFY(link->status().motionBusy);
+        panel->runIndicator()->click();
+        QVERIFY(advanceUntil(
+            *link, [&] { return !link->status().motionBusy; }, 5.0));
+        QVERIFY(link->status().sample.x.positionMm < 200.0);
+        QCOMPARE(link->status().state, ControllerState::Manual);
+        // The serial settings are editable: Connect asks for that port and speed.
+        QSignalSpy chosen(&w, &XyMainWindow::connectionChosen);
+        panel->portBox()->setEditText(QStringLiteral("/dev/ttyUSB7"));
+        panel->baudBox()->setCurrentIndex(panel->baudBox()->findData(19200));
+        panel->connectButton()->click();
+        QCOMPARE(chosen.size(), 1);
+        QCOMPARE(chosen.at(0).at(0).toString(), QStringLiteral("/dev/ttyUSB7"));
+        QCOMPARE(chosen.at(0).at(1).toInt(), 19200);
+    }
+
     void dcTableRunsAProgramAndDrawsWhatItFollowed() {
         QTemporaryDir dir;
         QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
@@ -98,7 +278,7 @@ class XyScreensTest : public QObject {
         w.show();
         QVERIFY(w.tablePanel() != nullptr);
         QVERIFY(w.plotterPanel() == nullptr);
-        QVERIFY(!w.tablePanel()->serialBox()->isEnabled());  // no serial backend yet
+        QVERIFY(w.tablePanel()->serialBox()->isEnabled());  // port and speed editable
         QVERIFY(w.selectProgram(QStringLiteral(TRILHO_PROGRAMS_DIR "/mesa_xy_quadrado.G")));
         QVERIFY(!w.workArea()->plannedPath().empty());
         QVERIFY(w.startButton()->isEnabled());

@@ -14,7 +14,11 @@ class QLabel;
 class QListWidget;
 class QPushButton;
 class QAction;
+class QActionGroup;
+class QMenu;
 class QSettings;
+class QSplitter;
+class QDockWidget;
 
 namespace trilho {
 class SerialLinkMotion;
@@ -24,6 +28,7 @@ class WorkAreaView;
 class XyPlots;
 class DcTablePanel;
 class PlotterPanel;
+class XySimulationPanel;
 
 class XyMainWindow : public QMainWindow {
     Q_OBJECT
@@ -42,6 +47,23 @@ class XyMainWindow : public QMainWindow {
     }
     QAction* homeAction() const { return home_; }
     QAction* manualAction() const { return manual_; }
+    /// The frame shared with the rail's screen (issue 19, one frame): the same actions, named
+    /// as the rail's (cycleStart, feedHold, continue, stop, singleBlock, override*, home, keys,
+    /// resetLayout, machine, language_*), with the same keys.
+    QAction* keysAction() const { return keys_; }
+    QAction* resetLayoutAction() const { return resetLayout_; }
+    QAction* machineAction() const { return machine_; }
+    QAction* singleBlockAction() const { return single_; }
+    /// Every action with a key, as Help > Keys lists them.
+    QList<QAction*> keyedActions() const;
+    void setLanguage(const QString& lang);
+    QString language() const { return language_; }
+    /// Windows > Reset layout: the work area, side column and plots at their first sizes.
+    void resetLayout();
+    QLabel* overrideLabel() const { return override_; }
+    XySimulationPanel* simulation() const { return simulation_; }
+    /// The safety bar's "Simulated fault armed" label (hidden when none is).
+    QLabel* faultArmedLabel() const { return faultArmed_; }
     /// The machine is a board on this serial port (its link's state in the status bar); none:
     /// the simulated machine.
     void setDeviceLink(SerialLinkMotion* link, const QString& port, int baud);
@@ -62,6 +84,9 @@ class XyMainWindow : public QMainWindow {
   signals:
     /// Options > Connection chose another backend: port empty for the simulated machine.
     void connectionChosen(const QString& port, int baud);
+    /// File > Machine... chose another machine (its shipped profile's name); this one was
+    /// stopped first. main() opens that machine's screen.
+    void machineChosen(const QString& profileName);
 
   protected:
     void changeEvent(QEvent* e) override;
@@ -69,6 +94,8 @@ class XyMainWindow : public QMainWindow {
     /// no menu or dialog is open (Space types a space in a text field).
     bool eventFilter(QObject* watched, QEvent* event) override;
     void closeEvent(QCloseEvent* e) override;
+    /// The first show gives the plots' dock its default height (the window has its size then).
+    void showEvent(QShowEvent* e) override;
 
   private:
     bool confirm(const QString& title, const QString& text);
@@ -76,6 +103,9 @@ class XyMainWindow : public QMainWindow {
     QString homingText() const;
     void requestAutomatic();
     void requestHome();
+    void requestMachine();
+    void buildMenus();
+    void setOverride(int percent);
     std::function<bool(const QString&, const QString&)> confirmer_;
     QAction *home_ = nullptr, *manual_ = nullptr;
     void onUpdate(const std::vector<XyTraceRow>& rows, const std::vector<ControllerEvent>& events,
@@ -103,6 +133,23 @@ class XyMainWindow : public QMainWindow {
     QString port_;
     int baud_ = 0;
     XyStatus last_;
+    QMenu *fileMenu_, *commandMenu_, *optionsMenu_, *languageMenu_, *windowsMenu_, *helpMenu_;
+    QAction *open_action_, *machine_, *exit_, *automatic_action_, *connection_, *resetLayout_,
+        *keys_;
+    QAction *cycleStart_, *feedHold_, *continue_, *stop_action_, *single_, *overrideDown_,
+        *overrideUp_, *overrideReset_;
+    QPushButton* singleButton_;
+    QLabel* override_;
+    int overridePercent_ = 100;
+    QActionGroup* languages_;
+    QString language_ = QStringLiteral("en");
+    QSplitter* split_;
+    QDockWidget *plotDock_, *historyDock_, *simulationDock_;
+    XySimulationPanel* simulation_;
+    QLabel* faultArmed_;
+    QByteArray defaultLayout_;
+    bool shown_ = false;
+    void showArmedFaults(const QString& text);
 };
 
 }  // namespace ui
