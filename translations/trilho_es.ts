@@ -1737,6 +1737,14 @@
         <translation>Programas G (*.G *.g)</translation>
     </message>
     <message>
+        <source>The history could not be written: %1</source>
+        <translation>No se pudo escribir el historial: %1</translation>
+    </message>
+    <message>
+        <source>E-STOP (Pause, F1)</source>
+        <translation>EMERGENCIA (Pausa, F1)</translation>
+    </message>
+    <message>
         <source>Block N%1, line %2</source>
         <translation>Bloque N%1, línea %2</translation>
     </message>
@@ -1885,6 +1893,18 @@
         <translation>&amp;Conexión...</translation>
     </message>
     <message>
+        <source>&amp;DNC link...</source>
+        <translation>Enlace &amp;DNC...</translation>
+    </message>
+    <message>
+        <source>&amp;Remote (DNC)</source>
+        <translation>&amp;Remoto (DNC)</translation>
+    </message>
+    <message>
+        <source>Allow the cell&apos;s supervisor to write and command over the DNC link (%1). Off at every start.</source>
+        <translation>Permite al supervisor de la célula escribir y mandar por el enlace DNC (%1). Desactivado en cada inicio.</translation>
+    </message>
+    <message>
         <source>&amp;Windows</source>
         <translation>&amp;Ventanas</translation>
     </message>
@@ -1913,8 +1933,12 @@
         <translation>Simulación</translation>
     </message>
     <message>
-        <source>E-STOP (Pause, F1)</source>
-        <translation>EMERGENCIA (Pausa, F1)</translation>
+        <source>Home (Ctrl+Home)</source>
+        <translation>Referenciar (Ctrl+Inicio)</translation>
+    </message>
+    <message>
+        <source>Safety</source>
+        <translation>Seguridad</translation>
     </message>
     <message>
         <source>Reset E-stop</source>

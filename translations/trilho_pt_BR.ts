@@ -1737,6 +1737,14 @@
         <translation>Programas G (*.G *.g)</translation>
     </message>
     <message>
+        <source>The history could not be written: %1</source>
+        <translation>O histórico não pôde ser gravado: %1</translation>
+    </message>
+    <message>
+        <source>E-STOP (Pause, F1)</source>
+        <translation>EMERGÊNCIA (Pause, F1)</translation>
+    </message>
+    <message>
         <source>Block N%1, line %2</source>
         <translation>Bloco N%1, linha %2</translation>
     </message>
@@ -1885,6 +1893,18 @@
         <translation>&amp;Conexão...</translation>
     </message>
     <message>
+        <source>&amp;DNC link...</source>
+        <translation>Enlace &amp;DNC...</translation>
+    </message>
+    <message>
+        <source>&amp;Remote (DNC)</source>
+        <translation>&amp;Remoto (DNC)</translation>
+    </message>
+    <message>
+        <source>Allow the cell&apos;s supervisor to write and command over the DNC link (%1). Off at every start.</source>
+        <translation>Permite ao supervisor da célula escrever e comandar pelo enlace DNC (%1). Desligado a cada início.</translation>
+    </message>
+    <message>
         <source>&amp;Windows</source>
         <translation>&amp;Janelas</translation>
     </message>
@@ -1913,8 +1933,12 @@
         <translation>Simulação</translation>
     </message>
     <message>
-        <source>E-STOP (Pause, F1)</source>
-        <translation>EMERGÊNCIA (Pause, F1)</translation>
+        <source>Home (Ctrl+Home)</source>
+        <translation>Referenciar (Ctrl+Home)</translation>
+    </message>
+    <message>
+        <source>Safety</source>
+        <translation>Segurança</translation>
     </message>
     <message>
         <source>Reset E-stop</source>

@@ -166,6 +166,9 @@ int main(int argc, char* argv[]) {
         std::fprintf(stderr, "trilho: unknown language '%s' (en, pt_BR or es)\n", qPrintable(lang));
         return 2;
     }
+    // Remembered at once (the rail's screen did it on its own): a later reconnection or
+    // machine switch reopens a screen in the language last chosen, here or in a menu.
+    settings->setValue(QStringLiteral("language"), lang);
     const ui::Theme theme = ui::themeFromName(
         parser.isSet(themeOpt)
             ? parser.value(themeOpt)
@@ -233,7 +236,22 @@ int main(int argc, char* argv[]) {
         xyLink = std::make_unique<ui::XyLink>(
             std::move(runnable), device ? ui::XyLink::Drive::EventLoop : ui::XyLink::Drive::Thread);
         xyWindow = std::make_unique<ui::XyMainWindow>(*xyLink, *settings);
-        xyWindow->setLanguage(lang);
+        {
+            // Each XY machine keeps its own journal beside the rail's history.log.
+            const QString dataDir =
+                QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
+            QDir().mkpath(dataDir);
+            QString journalError;
+            const QString name = machine.kind == MachineKind::Plotter
+                                     ? QStringLiteral("xy_plotter")
+                                     : QStringLiteral("xy_dc_table");
+            if (!xyWindow->openJournal(dataDir + QStringLiteral("/history-%1.log").arg(name),
+                                       &journalError))
+                std::fprintf(stderr, "trilho: %s (history is not kept)\n",
+                             qPrintable(journalError));
+        }
+        // The language the operator chose last (on this screen before a reconnection too).
+        xyWindow->setLanguage(settings->value(QStringLiteral("language"), lang).toString());
         if (device)
             xyWindow->setDeviceLink(
                 device, port,

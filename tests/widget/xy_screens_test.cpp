@@ -1,27 +1,39 @@
 // The XY machines' screens (issue 11), offscreen, in virtual time: the link runs without its
 // thread and each test advances the machine itself, so every figure is repeatable.
 #include <QAction>
+#include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QFileInfo>
 #include <QLabel>
 #include <QListWidget>
 #include <QMap>
+#include <QModbusReply>
+#include <QModbusTcpClient>
 #include <QProcess>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolButton>
+#include <QWheelEvent>
 #include <cmath>
 
+#include "core/dnc/register_map.h"
 #include "core/gcode/compiler.h"
 #include "core/machine/machine_profile.h"
+#include "host/dnc/dnc_server.h"
+#include "host/dnc/modbus_tcp_listener.h"
+#include "ui/dnc_link.h"
+#include "ui/dnc_settings.h"
 #include "ui/machine_link.h"
 #include "ui/main_window.h"
 #include "ui/start_screen.h"
@@ -31,6 +43,7 @@
 #include "ui/xy/xy_main_window.h"
 #include "ui/xy/xy_plots.h"
 #include "ui/xy/xy_session_runnable.h"
+#include "ui/xy/xy_simulation_panel.h"
 
 using namespace trilho;
 using namespace trilho::ui;
@@ -65,6 +78,111 @@ class XyScreensTest : public QObject {
     Q_OBJECT
   private slots:
 
+    void xySimulationDockArmsThePlantsFaultsAndTheSafetyBarSaysSo() {
+        // Issue 19, one frame (and item 5): each XY plant's faults in a Simulation dock; a
+        // value changes only by deliberate input, and an armed fault shows on the safety bar.
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        w.setConfirmer([](const QString&, const QString&) { return true; });
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(!w.faultArmedShown());
+        w.simulation()->jamX()->click();
+        QVERIFY(w.faultArmedShown());
+        QVERIFY(w.faultArmedLabel()->toolTip().contains(QStringLiteral("x axis jammed")));
+        w.tablePanel()->xBox()->setValue(100);
+        w.tablePanel()->yBox()->setValue(0);
+        w.tablePanel()->sendButton()->click();
+        // The jammed axis does not follow: the controller says so with an alarm.
+        QVERIFY(advanceUntil(
+            *link, [&] { return link->status().activeAlarms != 0; }, 30.0));
+        QVERIFY2(link->status().sample.x.positionMm < 5.0,
+                 qPrintable(QString::number(link->status().sample.x.positionMm)));
+        w.simulation()->clearAll()->click();
+        QVERIFY(!w.faultArmedShown());
+
+        // The plotter's number box: a wheel over it without the focus changes nothing.
+        auto plotterLink = virtualLink(shipped("xy_plotter.json"));
+        XyMainWindow p(*plotterLink, settings);
+        QSpinBox* lost = p.simulation()->lostStepsAbove();
+        QVERIFY(lost != nullptr);
+        QWheelEvent wheel(QPointF(5, 5), QPointF(5, 5), QPoint(), QPoint(0, 240), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(lost, &wheel);
+        QCOMPARE(lost->value(), 0);
+        QVERIFY(!p.faultArmedShown());
+        lost->setValue(300);  // typed and confirmed
+        QVERIFY(p.faultArmedShown());
+    }
+
+    void xyHistoryIsKeptInAJournal() {
+        // Issue 19, one frame: the XY screens' history is journalled as the rail's.
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        const QString path = dir.filePath(QStringLiteral("history-xy_dc_table.log"));
+        QVERIFY(w.openJournal(path));
+        w.estopButton()->click();
+        link->advance(0.1);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray text = f.readAll();
+        QVERIFY2(text.contains("\talarm\t9\t"), text.constData());
+    }
+
+    void xyScreenServesTheDncLinkWithItsYAxis() {
+        // Issue 19, one frame: Options > DNC on an XY screen serves the same link as the
+        // rail's, over the screen's own machine; a Modbus client reads the machine and its Y.
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        w.setConfirmer([](const QString&, const QString&) { return true; });
+        QVERIFY(!w.remoteAction()->isEnabled());
+        DncSettings s;
+        s.port = 0;  // any free port
+        s.programsDir = dir.filePath(QStringLiteral("programs"));
+        QString error;
+        QVERIFY2(w.dncLink()->start(s, &error), qPrintable(error));
+        QVERIFY(w.remoteAction()->isEnabled());
+        QVERIFY(!w.remoteAction()->isChecked());  // consent is given anew
+        w.tablePanel()->xBox()->setValue(30);
+        w.tablePanel()->yBox()->setValue(70);
+        w.tablePanel()->sendButton()->click();
+        link->advance(0.1);  // the command reaches the machine
+        QVERIFY(link->status().motionBusy);
+        QVERIFY(advanceUntil(
+            *link, [&] { return !link->status().motionBusy; }, 30.0));
+        QModbusTcpClient client;
+        client.setConnectionParameter(QModbusDevice::NetworkAddressParameter,
+                                      QStringLiteral("127.0.0.1"));
+        client.setConnectionParameter(QModbusDevice::NetworkPortParameter,
+                                      w.dncLink()->server()->tcpListener()->port());
+        client.setTimeout(3000);
+        client.setNumberOfRetries(0);
+        QVERIFY(client.connectDevice());
+        QTRY_COMPARE_WITH_TIMEOUT(client.state(), QModbusDevice::ConnectedState, 5000);
+        std::unique_ptr<QModbusReply> r(client.sendReadRequest(
+            QModbusDataUnit(QModbusDataUnit::InputRegisters, 0, dnc::in::kCount), 1));
+        QVERIFY(r != nullptr);
+        QTRY_VERIFY_WITH_TIMEOUT(r->isFinished(), 5000);
+        QCOMPARE(r->error(), QModbusDevice::NoError);
+        const QModbusDataUnit u = r->result();
+        QCOMPARE(u.value(dnc::in::kMachine), quint16(1));
+        QCOMPARE(u.value(dnc::in::kAxes), quint16(2));
+        const auto at = [&u](std::uint16_t a) {
+            return dnc::joinFloat(u.value(a), u.value(a + 1));
+        };
+        QVERIFY(std::abs(at(dnc::in::kPosition) - 30.0f) < 0.5f);
+        QVERIFY(std::abs(at(dnc::in::kYPosition) - 70.0f) < 0.5f);
+        client.disconnectDevice();
+        w.dncLink()->stop();
+        QVERIFY(!w.remoteAction()->isEnabled());
+    }
+
     void frameParityOnAllThreeMachines() {
         // Issue 19, one frame: the rail's and both XY screens offer the same actions, by name,
         // with the same keys.
@@ -77,7 +195,8 @@ class XyScreensTest : public QObject {
                                 QStringLiteral("overrideUp"),    QStringLiteral("overrideReset"),
                                 QStringLiteral("language_en"),   QStringLiteral("language_pt_BR"),
                                 QStringLiteral("language_es"),   QStringLiteral("resetLayout"),
-                                QStringLiteral("keys")};
+                                QStringLiteral("keys"),          QStringLiteral("dnc"),
+                                QStringLiteral("remote")};
         QTemporaryDir dir;
         QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
         MachineLink railLink(MachineProfile::rail());
@@ -115,8 +234,9 @@ class XyScreensTest : public QObject {
             QList<QKeySequence> listed;
             for (QAction* a : w.keyedActions())
                 listed << a->shortcut();
-            for (const char* name : {"cycleStart", "feedHold", "continue", "stop", "singleBlock",
-                                     "overrideDown", "overrideUp", "overrideReset", "home"})
+            for (const char* name :
+                 {"cycleStart", "feedHold", "continue", "stop", "singleBlock", "overrideDown",
+                  "overrideUp", "overrideReset", "home", "remote"})
                 QVERIFY(listed.contains(railKeys[QString::fromLatin1(name)]));
         }
     }

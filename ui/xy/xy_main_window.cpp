@@ -4,6 +4,7 @@
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDateTime>
 #include <QDockWidget>
 #include <QEvent>
 #include <QFileDialog>
@@ -25,6 +26,8 @@
 #include <QShowEvent>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QToolBar>
+#include <QToolButton>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -40,17 +43,22 @@
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/source_file.h"
 #include "core/machine/event_text.h"
+#include "core/machine/journal.h"
 #include "core/machine/serial_link_motion.h"
 #include "core/machine/xy_event_text.h"
 #include "host/common/data_paths.h"
 #include "translations/i18n.h"
 #include "ui/confirm_box.h"
+#include "ui/dnc_dialog.h"
+#include "ui/dnc_link.h"
+#include "ui/dnc_settings.h"
 #include "ui/keys_dialog.h"
 #include "ui/language_menu.h"
 #include "ui/machine_choice.h"
 #include "ui/xy/dc_table_panel.h"
 #include "ui/xy/plotter_panel.h"
 #include "ui/xy/work_area_view.h"
+#include "ui/xy/xy_dnc_machine.h"
 #include "ui/xy/xy_plots.h"
 #include "ui/xy/xy_simulation_panel.h"
 
@@ -139,34 +147,53 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     estop_ = button("xyEStop");
     reset_ = button("xyReset");
     ack_ = button("xyAck");
-    estop_->setStyleSheet(QStringLiteral(
-        "QPushButton{background:#c0161b;color:white;font-weight:bold;padding:4px 10px;}"));
+    // The rail's E-stop look: red, bold, always live.
+    estop_->setStyleSheet(
+        QStringLiteral("QPushButton#xyEStop { background: rgb(200,0,0); color: white; "
+                       "font-weight: bold; padding: 6px 14px; border: 2px solid rgb(120,0,0); "
+                       "border-radius: 4px; }"));
     singleButton_ = button("xySingleBlock");
     singleButton_->setCheckable(true);
     override_ = new QLabel(this);
     override_->setObjectName(QStringLiteral("xyOverride"));
-    // An armed fault of the Simulation dock is said here, beside the E-stop, until cleared.
+    homeButton_ = button("homeButton");
+    connect(homeButton_, &QPushButton::clicked, this, &XyMainWindow::requestHome);
+    // An armed fault of the Simulation dock is said on the safety bar, until cleared.
     faultArmed_ = new QLabel(this);
     faultArmed_->setObjectName(QStringLiteral("faultArmed"));
     faultArmed_->setStyleSheet(
         QStringLiteral("QLabel#faultArmed { background: rgb(255,170,0); color: black; "
                        "font-weight: bold; border: 2px solid rgb(160,90,0); border-radius: 4px; "
                        "padding: 4px 10px; }"));
-    faultArmed_->setVisible(false);
-    // Two rows, the E-stop at the right of both: one row of nine buttons was 1039 px wide in
+    // The safety bar as the rail's, in the same place (issue 19, one frame): E-stop, Reset
+    // E-stop, Acknowledge, Home, Remote and an armed fault, never hidden.
+    safetyBar_ = addToolBar(QString());
+    safetyBar_->setObjectName(QStringLiteral("safetyBar"));
+    safetyBar_->setMovable(false);
+    safetyBar_->toggleViewAction()->setEnabled(false);
+    for (QPushButton* b : {estop_, reset_, ack_, homeButton_})
+        safetyBar_->addWidget(b);
+    safetyBar_->addSeparator();
+    remoteButton_ = new QToolButton(safetyBar_);
+    remoteButton_->setObjectName(QStringLiteral("remoteButton"));
+    remoteButton_->setStyleSheet(
+        QStringLiteral("QToolButton#remoteButton:checked { background: rgb(255,170,0); "
+                       "color: black; font-weight: bold; border: 2px solid rgb(160,90,0); "
+                       "border-radius: 4px; padding: 4px 10px; }"));
+    safetyBar_->addWidget(remoteButton_);
+    faultArmedAction_ = safetyBar_->addWidget(faultArmed_);
+    faultArmedAction_->setVisible(false);
+    // The run controls in two rows under it: one row of nine buttons was 1039 px wide in
     // pt_BR, wider than a 1024-px screen (issue 19, the fit).
     auto* controls = new QGridLayout;
     int column = 0;
-    for (QPushButton* b : {open_, automatic_, reset_, ack_})
+    for (QPushButton* b : {open_, automatic_})
         controls->addWidget(b, 0, column++);
-    controls->addWidget(override_, 0, column);
+    controls->addWidget(override_, 0, column, 1, 3);
     column = 0;
     for (QPushButton* b : {start_, hold_, resume_, stop_, singleButton_})
         controls->addWidget(b, 1, column++);
-    controls->addWidget(faultArmed_, 1, 5, Qt::AlignRight);
     controls->setColumnStretch(5, 1);
-    estop_->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Expanding);
-    controls->addWidget(estop_, 0, 6, 2, 1);
 
     connect(open_, &QPushButton::clicked, this, &XyMainWindow::chooseFile);
     connect(automatic_, &QPushButton::clicked, this, &XyMainWindow::requestAutomatic);
@@ -295,7 +322,18 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     setCentralWidget(central);
 
     split_ = split;
+    // The DNC link: the same server as the rail's, over this screen's own link (issue 19).
+    dnc_ = new DncLink(
+        link_.profile(),
+        [this] {
+            auto m = std::make_unique<XyDncMachine>(link_);
+            XyDncMachine* raw = m.get();
+            return DncMachineMade{std::move(m),
+                                  [raw](const ControllerEvent& e) { raw->noteEvent(e); }};
+        },
+        this);
     buildMenus();
+    remoteButton_->setDefaultAction(remote_);
     // The docks as the rail's (issue 19, one frame): plots, history and simulation in tabs
     // under the work area, the plots in front; each can be moved, and Windows > Reset layout
     // puts them back.
@@ -332,8 +370,17 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
 
     linkLabel_ = new QLabel(this);
     linkLabel_->setObjectName(QStringLiteral("xyLink"));
+    dncLabel_ = new QLabel(this);
+    dncLabel_->setObjectName(QStringLiteral("dncState"));
+    statusBar()->addPermanentWidget(dncLabel_);
     statusBar()->addPermanentWidget(linkLabel_);
 
+    // Served again at start when it was on, always with Remote off (consent is given anew).
+    connect(dnc_, &DncLink::stateChanged, this, &XyMainWindow::showDncState);
+    connect(dnc_, &DncLink::historyLine, this, [this](const QString& l) { addHistory(l, false); });
+    const DncSettings dncSettings = DncSettings::load(settings_);
+    if (dncSettings.enabled) dnc_->start(dncSettings, nullptr);  // a failure: the status bar
+    showDncState();
     connect(&link_, &XyLink::updated, this, &XyMainWindow::onUpdate);
     last_ = link_.status();
     language_ = settings_.value(QStringLiteral("language"), language_).toString();
@@ -370,6 +417,16 @@ void XyMainWindow::buildMenus() {
     languages_ = addLanguageActions(languageMenu_, [this](const QString& c) { setLanguage(c); });
     connection_ = optionsMenu_->addAction(QString(), this, &XyMainWindow::chooseConnection);
     connection_->setObjectName(QStringLiteral("connection"));
+    optionsMenu_->addSeparator();
+    dncAction_ = optionsMenu_->addAction(QString(), this, [this] { openDncDialog(); });
+    dncAction_->setObjectName(QStringLiteral("dnc"));
+    remote_ = optionsMenu_->addAction(QString());
+    remote_->setObjectName(QStringLiteral("remote"));
+    remote_->setCheckable(true);
+    remote_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+    remote_->setShortcutContext(Qt::WindowShortcut);
+    remote_->setEnabled(false);  // until the link is served
+    connect(remote_, &QAction::toggled, dnc_, &DncLink::setRemote);
     windowsMenu_ = menuBar()->addMenu(QString());
     resetLayout_ = windowsMenu_->addAction(QString(), this, &XyMainWindow::resetLayout);
     resetLayout_->setObjectName(QStringLiteral("resetLayout"));
@@ -382,8 +439,8 @@ void XyMainWindow::buildMenus() {
 }
 
 QList<QAction*> XyMainWindow::keyedActions() const {
-    return {cycleStart_,   feedHold_,   continue_,      stop_action_, single_,
-            overrideDown_, overrideUp_, overrideReset_, home_,        open_action_};
+    return {cycleStart_, feedHold_,      continue_, stop_action_, single_, overrideDown_,
+            overrideUp_, overrideReset_, home_,     open_action_, remote_};
 }
 
 void XyMainWindow::setOverride(int percent) {
@@ -414,13 +471,17 @@ void XyMainWindow::resetLayout() {
     resizeDocks({plotDock_}, {kPlotDockHeight}, Qt::Vertical);
 }
 
+bool XyMainWindow::faultArmedShown() const {
+    return faultArmedAction_->isVisible();
+}
+
 void XyMainWindow::showArmedFaults(const QString& text) {
     // As the rail's safety bar: at most 320 px, the whole list on hover.
     const QString full = tr("Simulated fault armed: %1").arg(text);
     faultArmed_->setText(faultArmed_->fontMetrics().elidedText(full, Qt::ElideRight, 300));
     faultArmed_->setMaximumWidth(320);
     faultArmed_->setToolTip(full);
-    faultArmed_->setVisible(!text.isEmpty());
+    faultArmedAction_->setVisible(!text.isEmpty());
 }
 
 void XyMainWindow::requestMachine() {
@@ -546,7 +607,31 @@ void XyMainWindow::chooseFile() {
     selectProgram(path);
 }
 
-void XyMainWindow::addHistory(const QString& line, bool alarm) {
+bool XyMainWindow::openJournal(const QString& path, QString* error) {
+    journal_ = std::make_unique<Journal>();
+    journalClock_.start();
+    QString why;
+    if (!journal_->open(path, &why)) {
+        journal_.reset();
+        statusBar()->showMessage(tr("The history could not be written: %1").arg(why), 15000);
+        if (error) *error = why;
+        return false;
+    }
+    journalPath_ = path;
+    return true;
+}
+
+void XyMainWindow::addHistory(const QString& line, bool alarm, int alarmCode) {
+    if (journal_ &&
+        !journal_->append(
+            {QDateTime::currentDateTimeUtc(),
+             alarm ? QStringLiteral("alarm") : QStringLiteral("status"), alarmCode, line},
+            journalClock_.elapsed()) &&
+        !journalWarned_) {
+        journalWarned_ = true;  // said once; the screen's list still has every line
+        statusBar()->showMessage(
+            tr("The history could not be written: %1").arg(journal_->health().error), 15000);
+    }
     auto* item = new QListWidgetItem(line, history_);
     if (alarm) item->setForeground(QColor(190, 0, 0));
     while (history_->count() > 2000)
@@ -563,11 +648,13 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
                            r.sample.pen != PenState::Up);
     }
     for (const ControllerEvent& e : events) {
+        dnc_->noteEvent(e);
         const bool alarm = e.kind == EventKind::AlarmRaised;
         const QString line = xyHistoryLine(e);
-        if (!line.isEmpty()) addHistory(line, alarm);
+        if (!line.isEmpty()) addHistory(line, alarm, alarm ? static_cast<int>(e.alarm) : 0);
     }
     last_ = status;
+    if (journal_) journal_->syncIfDue(journalClock_.elapsed());
     showLinkState();
     const XySample& s = status.sample;
     view_->setTool({s.x.positionMm, s.y.positionMm}, s.pen);
@@ -583,6 +670,8 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
                                              : palette().color(QPalette::Window));
     pal.setColor(QPalette::WindowText, latched ? Qt::white : palette().color(QPalette::WindowText));
     if (pal != state_->palette()) state_->setPalette(pal);
+    const QString estopText = latched ? tr("E-STOP LATCHED") : tr("E-STOP (Pause, F1)");
+    if (estop_->text() != estopText) estop_->setText(estopText);
     block_->setText(status.blockN >= 0
                         ? tr("Block N%1, line %2").arg(status.blockN).arg(status.blockLine)
                     : status.blockLine > 0 ? tr("Line %1").arg(status.blockLine)
@@ -711,6 +800,34 @@ void XyMainWindow::closeEvent(QCloseEvent* e) {
     QMainWindow::closeEvent(e);
 }
 
+XyMainWindow::~XyMainWindow() {
+    qApp->removeEventFilter(this);
+    dnc_->stop();  // its machine refers to the link, which outlives this window only just
+    for (QObject* child : findChildren<QObject*>())
+        disconnect(child, nullptr, this, nullptr);
+    disconnect(&link_, nullptr, this, nullptr);
+}
+
+DncDialog* XyMainWindow::openDncDialog() {
+    if (!dncDialog_) dncDialog_ = new DncDialog(*dnc_, settings_, this);
+    dncDialog_->show();
+    dncDialog_->raise();
+    dncDialog_->activateWindow();
+    return dncDialog_;
+}
+
+void XyMainWindow::showDncState() {
+    const QSignalBlocker block(remote_);  // showing the state is not the operator's toggle
+    remote_->setEnabled(dnc_->running());
+    remote_->setChecked(dnc_->remote());
+    const QString text = dnc_->statusLine();
+    dncLabel_->setText(text);
+    dncLabel_->setToolTip(dnc_->statusText());
+    dncLabel_->setStyleSheet(dnc_->error().isEmpty() ? QString()
+                                                     : QStringLiteral("color: rgb(170,0,0);"));
+    dncLabel_->setVisible(!text.isEmpty());
+}
+
 void XyMainWindow::showEvent(QShowEvent* e) {
     QMainWindow::showEvent(e);
     if (shown_) return;
@@ -759,6 +876,11 @@ void XyMainWindow::retranslate() {
     optionsMenu_->setTitle(tr("&Options"));
     languageMenu_->setTitle(tr("&Language"));
     connection_->setText(tr("&Connection..."));
+    dncAction_->setText(tr("&DNC link..."));
+    remote_->setText(tr("&Remote (DNC)"));
+    remote_->setToolTip(tr("Allow the cell's supervisor to write and command over the DNC "
+                           "link (%1). Off at every start.")
+                            .arg(remote_->shortcut().toString(QKeySequence::NativeText)));
     windowsMenu_->setTitle(tr("&Windows"));
     resetLayout_->setText(tr("&Reset layout"));
     helpMenu_->setTitle(tr("&Help"));
@@ -767,7 +889,10 @@ void XyMainWindow::retranslate() {
     historyDock_->setWindowTitle(tr("History"));
     simulationDock_->setWindowTitle(tr("Simulation"));
     checkLanguage(languages_, language_);
-    estop_->setText(tr("E-STOP (Pause, F1)"));
+    estop_->setText(last_.state == ControllerState::EStop ? tr("E-STOP LATCHED")
+                                                          : tr("E-STOP (Pause, F1)"));
+    homeButton_->setText(tr("Home (Ctrl+Home)"));
+    safetyBar_->setWindowTitle(tr("Safety"));
     reset_->setText(tr("Reset E-stop"));
     ack_->setText(tr("Acknowledge"));
     program_label_->setText(program_ ? tr("Program: %1").arg(programName_)

@@ -3,6 +3,7 @@
 // planned and the followed path, the machine's own panel (seed 004's front panel for the DC
 // table, seed 001's controls for the plotter), per-axis plots, the position readout, the run
 // controls and the history. The rail keeps its own replicated 1996 screen (MainWindow).
+#include <QElapsedTimer>
 #include <QMainWindow>
 #include <functional>
 #include <memory>
@@ -18,9 +19,12 @@ class QActionGroup;
 class QMenu;
 class QSettings;
 class QSplitter;
+class QToolBar;
+class QToolButton;
 class QDockWidget;
 
 namespace trilho {
+class Journal;
 class SerialLinkMotion;
 namespace ui {
 
@@ -29,6 +33,8 @@ class XyPlots;
 class DcTablePanel;
 class PlotterPanel;
 class XySimulationPanel;
+class DncDialog;
+class DncLink;
 
 class XyMainWindow : public QMainWindow {
     Q_OBJECT
@@ -62,12 +68,25 @@ class XyMainWindow : public QMainWindow {
     void resetLayout();
     QLabel* overrideLabel() const { return override_; }
     XySimulationPanel* simulation() const { return simulation_; }
+    // ---- the DNC link, as the rail's (issue 19, one frame) ----
+    DncLink* dncLink() const { return dnc_; }
+    /// Options > DNC (non-modal, one at a time): shown and returned.
+    DncDialog* openDncDialog();
+    QAction* dncAction() const { return dncAction_; }
+    /// Options > Remote: the operator's consent to the link's writes; off at every start.
+    QAction* remoteAction() const { return remote_; }
+    QLabel* dncLabel() const { return dncLabel_; }
     /// The safety bar's "Simulated fault armed" label (hidden when none is).
     QLabel* faultArmedLabel() const { return faultArmed_; }
+    bool faultArmedShown() const;
     /// The machine is a board on this serial port (its link's state in the status bar); none:
     /// the simulated machine.
     void setDeviceLink(SerialLinkMotion* link, const QString& port, int baud);
     QLabel* linkLabel() const { return linkLabel_; }
+    /// Keeps the history in a journal (core/machine/journal.h) at path, as the rail's
+    /// history.log; false with the reason (the screen still works, and says it).
+    bool openJournal(const QString& path, QString* error = nullptr);
+    const QString& journalPath() const { return journalPath_; }
 
     WorkAreaView* workArea() const { return view_; }
     XyPlots* plots() const { return plots_; }
@@ -94,6 +113,11 @@ class XyMainWindow : public QMainWindow {
     /// no menu or dialog is open (Space types a space in a text field).
     bool eventFilter(QObject* watched, QEvent* event) override;
     void closeEvent(QCloseEvent* e) override;
+
+  public:
+    ~XyMainWindow() override;
+
+  protected:
     /// The first show gives the plots' dock its default height (the window has its size then).
     void showEvent(QShowEvent* e) override;
 
@@ -112,7 +136,8 @@ class XyMainWindow : public QMainWindow {
                   const XyStatus& status);
     void chooseFile();
     void retranslate();
-    void addHistory(const QString& line, bool alarm);
+    /// A history line on screen and in the journal (alarmCode: the alarm's, 0 for a status).
+    void addHistory(const QString& line, bool alarm, int alarmCode = 0);
     void chooseConnection();
     void showLinkState();
 
@@ -147,9 +172,22 @@ class XyMainWindow : public QMainWindow {
     QDockWidget *plotDock_, *historyDock_, *simulationDock_;
     XySimulationPanel* simulation_;
     QLabel* faultArmed_;
+    QAction* faultArmedAction_;
+    QToolBar* safetyBar_;
+    QPushButton* homeButton_;
+    QToolButton* remoteButton_;
     QByteArray defaultLayout_;
     bool shown_ = false;
     void showArmedFaults(const QString& text);
+    void showDncState();
+    DncLink* dnc_;
+    std::unique_ptr<Journal> journal_;
+    QString journalPath_;
+    QElapsedTimer journalClock_;
+    bool journalWarned_ = false;
+    DncDialog* dncDialog_ = nullptr;
+    QAction *dncAction_, *remote_;
+    QLabel* dncLabel_;
 };
 
 }  // namespace ui
