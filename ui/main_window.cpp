@@ -465,14 +465,19 @@ void MainWindow::setLanguage(const QString& lang) {
 
 void MainWindow::requestMachine() {
     const std::optional<MachineKind> next = chooseMachine(this, MachineKind::Rail);
-    if (!next) return;
+    if (next) switchTo(*next);
+}
+
+bool MainWindow::switchTo(MachineKind next) {
+    if (next == MachineKind::Rail) return false;
     const ControllerState st = last_.state;
     const bool moving = st == ControllerState::Running || st == ControllerState::Waiting ||
                         st == ControllerState::Homing || st == ControllerState::Paused ||
                         (st == ControllerState::Manual && last_.manualCode != 128);
-    if (moving && !confirm(tr("Machine"), switchQuestion(MachineKind::Rail, *next))) return;
+    if (moving && !confirm(tr("Machine"), switchQuestion(MachineKind::Rail, next))) return false;
     link_.stop();
-    emit machineChosen(shippedProfileName(*next));
+    emit machineChosen(shippedProfileName(next));
+    return true;
 }
 
 void MainWindow::setTheme(Theme theme) {

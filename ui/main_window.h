@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "core/gcode/dialect.h"
+#include "core/machine/machine_kind.h"
 #include "core/machine/rail_controller.h"
 #include "ui/theme.h"
 
@@ -99,6 +100,9 @@ class MainWindow : public QMainWindow {
     ProgramLibraryPanel* library() const { return library_; }
     /// File > Machine... (issue 19, one frame).
     QAction* machineAction() const { return machine_; }
+    /// File > Machine... once chosen: asks first when the rail moves, stops it and emits
+    /// machineChosen; false when the operator said No.
+    bool switchTo(MachineKind next);
 
   signals:
     /// File > Machine... chose another machine (its shipped profile's name); the rail was

@@ -78,6 +78,56 @@ class XyScreensTest : public QObject {
     Q_OBJECT
   private slots:
 
+    void machineSwitchAsksFirstWhenSomethingMoves() {
+        // Issue 19: File > Machine... switches inside the program, asking first when the
+        // machine moves (and stopping it); at rest it asks nothing.
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        QStringList asked;
+        bool answer = false;
+        w.setConfirmer([&](const QString&, const QString& text) {
+            asked << text;
+            return answer;
+        });
+        QSignalSpy chosen(&w, &XyMainWindow::machineChosen);
+        w.tablePanel()->xBox()->setValue(250);
+        w.tablePanel()->yBox()->setValue(250);
+        w.tablePanel()->sendButton()->click();
+        link->advance(0.2);
+        QVERIFY(link->status().motionBusy);
+        QVERIFY(!w.switchTo(MachineKind::Plotter));  // No: nothing changes
+        QCOMPARE(asked.size(), 1);
+        QVERIFY(asked.front().contains(QStringLiteral("DC-motor XY table is moving")));
+        QCOMPARE(chosen.size(), 0);
+        link->advance(0.1);
+        QVERIFY(link->status().motionBusy);
+        answer = true;
+        QVERIFY(w.switchTo(MachineKind::Rail));
+        QCOMPARE(chosen.size(), 1);
+        QCOMPARE(chosen.at(0).at(0).toString(), QStringLiteral("rail"));
+        QVERIFY(advanceUntil(
+            *link, [&] { return !link->status().motionBusy; }, 5.0));
+        QVERIFY(link->status().sample.x.positionMm < 200.0);  // stopped on the way
+        asked.clear();
+        QVERIFY(w.switchTo(MachineKind::Plotter));  // at rest: no question
+        QVERIFY(asked.isEmpty());
+        QCOMPARE(chosen.at(1).at(0).toString(), QStringLiteral("xy_plotter"));
+
+        // The rail's screen the same way: at rest it switches at once.
+        MachineLink railLink(MachineProfile::rail());
+        MainWindow rail(railLink, settings);
+        rail.setConfirmer([&](const QString&, const QString& text) {
+            asked << text;
+            return false;
+        });
+        QSignalSpy railChosen(&rail, &MainWindow::machineChosen);
+        QVERIFY(rail.switchTo(MachineKind::DcTable));
+        QVERIFY(asked.isEmpty());
+        QCOMPARE(railChosen.at(0).at(0).toString(), QStringLiteral("xy_dc_table"));
+    }
+
     void xySimulationDockArmsThePlantsFaultsAndTheSafetyBarSaysSo() {
         // Issue 19, one frame (and item 5): each XY plant's faults in a Simulation dock; a
         // value changes only by deliberate input, and an armed fault shows on the safety bar.

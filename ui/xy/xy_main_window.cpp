@@ -485,14 +485,19 @@ void XyMainWindow::showArmedFaults(const QString& text) {
 }
 
 void XyMainWindow::requestMachine() {
+    const std::optional<MachineKind> next = chooseMachine(this, link_.profile().kind);
+    if (next) switchTo(*next);
+}
+
+bool XyMainWindow::switchTo(MachineKind next) {
     const MachineKind own = link_.profile().kind;
-    const std::optional<MachineKind> next = chooseMachine(this, own);
-    if (!next) return;
+    if (next == own) return false;
     const bool busy =
         moving(last_.state) || last_.state == ControllerState::Paused || last_.motionBusy;
-    if (busy && !confirm(tr("Machine"), switchQuestion(own, *next))) return;
+    if (busy && !confirm(tr("Machine"), switchQuestion(own, next))) return false;
     link_.post([](XyController& c) { c.stop(); });
-    emit machineChosen(shippedProfileName(*next));
+    emit machineChosen(shippedProfileName(next));
+    return true;
 }
 
 bool XyMainWindow::selectProgram(const QString& path) {

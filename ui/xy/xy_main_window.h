@@ -59,6 +59,9 @@ class XyMainWindow : public QMainWindow {
     QAction* keysAction() const { return keys_; }
     QAction* resetLayoutAction() const { return resetLayout_; }
     QAction* machineAction() const { return machine_; }
+    /// File > Machine... once chosen: asks first when this machine moves, stops it and emits
+    /// machineChosen; false when the operator said No (or next is this machine).
+    bool switchTo(MachineKind next);
     QAction* singleBlockAction() const { return single_; }
     /// Every action with a key, as Help > Keys lists them.
     QList<QAction*> keyedActions() const;
