@@ -238,7 +238,7 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     cycleStart_ = key("cycleStart", QKeySequence(Qt::Key_F5), start_);
     feedHold_ = key("feedHold", QKeySequence(Qt::Key_F6), hold_);
     continue_ = key("continue", QKeySequence(Qt::Key_F7), resume_);
-    stop_action_ = key("stop", QKeySequence(Qt::Key_F8), stop_);
+    stopAction_ = key("stop", QKeySequence(Qt::Key_F8), stop_);
     single_ = key("singleBlock", QKeySequence(Qt::Key_F9), singleButton_);
     overrideDown_ = key("overrideDown", QKeySequence(Qt::CTRL | Qt::Key_Minus), nullptr);
     overrideUp_ = key("overrideUp", QKeySequence(Qt::CTRL | Qt::Key_Plus), nullptr);
@@ -391,10 +391,10 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
 void XyMainWindow::buildMenus() {
     // The rail's menus, with the same object names (issue 19, one frame); texts in retranslate().
     fileMenu_ = menuBar()->addMenu(QString());
-    open_action_ = fileMenu_->addAction(QString(), this, &XyMainWindow::chooseFile);
-    open_action_->setObjectName(QStringLiteral("selectProgram"));
-    open_action_->setShortcut(QKeySequence::Open);
-    open_action_->setShortcutContext(Qt::ApplicationShortcut);
+    openAction_ = fileMenu_->addAction(QString(), this, &XyMainWindow::chooseFile);
+    openAction_->setObjectName(QStringLiteral("selectProgram"));
+    openAction_->setShortcut(QKeySequence::Open);
+    openAction_->setShortcutContext(Qt::ApplicationShortcut);
     machine_ = fileMenu_->addAction(QString(), this, &XyMainWindow::requestMachine);
     machine_->setObjectName(QStringLiteral("machine"));
     fileMenu_->addSeparator();
@@ -406,8 +406,8 @@ void XyMainWindow::buildMenus() {
     manual_ = commandMenu_->addAction(
         QString(), this, [this] { link_.post([](XyController& c) { c.selectManual(); }); });
     manual_->setObjectName(QStringLiteral("manual"));
-    automatic_action_ = commandMenu_->addAction(QString(), this, &XyMainWindow::requestAutomatic);
-    automatic_action_->setObjectName(QStringLiteral("automatic"));
+    automaticAction_ = commandMenu_->addAction(QString(), this, &XyMainWindow::requestAutomatic);
+    automaticAction_->setObjectName(QStringLiteral("automatic"));
     home_ = commandMenu_->addAction(QString(), this, &XyMainWindow::requestHome);
     home_->setObjectName(QStringLiteral("home"));
     home_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Home));
@@ -439,8 +439,8 @@ void XyMainWindow::buildMenus() {
 }
 
 QList<QAction*> XyMainWindow::keyedActions() const {
-    return {cycleStart_, feedHold_,      continue_, stop_action_, single_, overrideDown_,
-            overrideUp_, overrideReset_, home_,     open_action_, remote_};
+    return {cycleStart_, feedHold_,      continue_, stopAction_, single_, overrideDown_,
+            overrideUp_, overrideReset_, home_,     openAction_, remote_};
 }
 
 void XyMainWindow::setOverride(int percent) {
@@ -694,7 +694,7 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
     reset_->setEnabled(latched);
     ack_->setEnabled(!latched && alarmed);
     automatic_->setEnabled(idle && !status.automatic);
-    automatic_action_->setEnabled(idle && !status.automatic);
+    automaticAction_->setEnabled(idle && !status.automatic);
     if (singleButton_->isChecked() != status.singleBlock) {
         const QSignalBlocker block(singleButton_);
         singleButton_->setChecked(status.singleBlock);
@@ -837,6 +837,7 @@ void XyMainWindow::showEvent(QShowEvent* e) {
     QMainWindow::showEvent(e);
     if (shown_) return;
     shown_ = true;
+    layout()->activate();  // the docks' current sizes first, or the request is dropped
     resizeDocks({plotDock_}, {kPlotDockHeight}, Qt::Vertical);
 }
 
@@ -864,19 +865,19 @@ void XyMainWindow::retranslate() {
     withKey(cycleStart_, tr("Cycle start"));
     withKey(feedHold_, tr("Feed hold"));
     withKey(continue_, tr("Continue"));
-    withKey(stop_action_, tr("Stop"));
+    withKey(stopAction_, tr("Stop"));
     withKey(single_, tr("Single block"));
     withKey(overrideDown_, tr("Feed override -10 %"));
     withKey(overrideUp_, tr("Feed override +10 %"));
     withKey(overrideReset_, tr("Feed override 100 %"));
     override_->setText(tr("Feed override %1 %").arg(overridePercent_));
     fileMenu_->setTitle(tr("&File"));
-    open_action_->setText(tr("&Open program..."));
+    openAction_->setText(tr("&Open program..."));
     machine_->setText(tr("&Machine..."));
     exit_->setText(tr("E&xit"));
     commandMenu_->setTitle(tr("&Command"));
     manual_->setText(tr("&Manual"));
-    automatic_action_->setText(tr("&Automatic"));
+    automaticAction_->setText(tr("&Automatic"));
     home_->setText(tr("&Home"));
     optionsMenu_->setTitle(tr("&Options"));
     languageMenu_->setTitle(tr("&Language"));

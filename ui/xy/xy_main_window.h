@@ -2,7 +2,8 @@
 // The main screen of an XY machine (xy.md A and B): the work area seen from above with the
 // planned and the followed path, the machine's own panel (seed 004's front panel for the DC
 // table, seed 001's controls for the plotter), per-axis plots, the position readout, the run
-// controls and the history. The rail keeps its own replicated 1996 screen (MainWindow).
+// controls and the history. The rail keeps its own replicated 1996 screen (MainWindow); the
+// frame around both is the same (issue 19): menus, safety bar, run keys, docks, DNC link.
 #include <QElapsedTimer>
 #include <QMainWindow>
 #include <functional>
@@ -40,6 +41,7 @@ class XyMainWindow : public QMainWindow {
     Q_OBJECT
   public:
     XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent = nullptr);
+    ~XyMainWindow() override;
 
     /// Reads and compiles a .G file for this machine; false (and the reason in the status bar
     /// and the history) when it cannot be read or has errors.
@@ -117,10 +119,6 @@ class XyMainWindow : public QMainWindow {
     bool eventFilter(QObject* watched, QEvent* event) override;
     void closeEvent(QCloseEvent* e) override;
 
-  public:
-    ~XyMainWindow() override;
-
-  protected:
     /// The first show gives the plots' dock its default height (the window has its size then).
     void showEvent(QShowEvent* e) override;
 
@@ -162,9 +160,8 @@ class XyMainWindow : public QMainWindow {
     int baud_ = 0;
     XyStatus last_;
     QMenu *fileMenu_, *commandMenu_, *optionsMenu_, *languageMenu_, *windowsMenu_, *helpMenu_;
-    QAction *open_action_, *machine_, *exit_, *automatic_action_, *connection_, *resetLayout_,
-        *keys_;
-    QAction *cycleStart_, *feedHold_, *continue_, *stop_action_, *single_, *overrideDown_,
+    QAction *openAction_, *machine_, *exit_, *automaticAction_, *connection_, *resetLayout_, *keys_;
+    QAction *cycleStart_, *feedHold_, *continue_, *stopAction_, *single_, *overrideDown_,
         *overrideUp_, *overrideReset_;
     QPushButton* singleButton_;
     QLabel* override_;

@@ -63,11 +63,12 @@ void XyPlots::addSample(double tS, const XySample& s) {
     for (QCustomPlot* p : {position_, velocity_})
         for (int i = 0; i < p->graphCount(); ++i)
             p->graph(i)->data()->removeBefore(from);
-    // Nothing moved since the last picture: the flat lines stay as drawn (issue 19, the cost:
-    // the plots redrew at 25 Hz with nothing moving). The time axis catches up with the next
-    // change.
-    if (!changed_) return;
+    // Nothing moved since the last picture: the flat lines are drawn once a second, so the
+    // time axis still moves (issue 19, the cost: the plots redrew at 25 Hz with nothing
+    // moving).
+    if (!changed_ && tS - lastDrawnT_ < kRestPeriodS) return;
     changed_ = false;
+    lastDrawnT_ = tS;
     ++replots_;
     for (QCustomPlot* p : {position_, velocity_}) {
         p->xAxis->setRange(std::max(0.0, from), std::max(kWindowS, tS));
@@ -95,6 +96,7 @@ void XyPlots::clear() {
         p->replot(QCustomPlot::rpQueuedReplot);
     }
     lastReplotT_ = -1.0;
+    lastDrawnT_ = -1.0;
     changed_ = true;
 }
 
