@@ -4,6 +4,7 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QFile>
@@ -21,6 +22,7 @@
 #include <QSpinBox>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolButton>
@@ -34,6 +36,7 @@
 #include "host/dnc/modbus_tcp_listener.h"
 #include "ui/dnc_link.h"
 #include "ui/dnc_settings.h"
+#include "ui/keys_dialog.h"
 #include "ui/machine_link.h"
 #include "ui/main_window.h"
 #include "ui/start_screen.h"
@@ -77,6 +80,37 @@ bool advanceUntil(XyLink& link, F done, double maxS) {
 class XyScreensTest : public QObject {
     Q_OBJECT
   private slots:
+
+    void xyResetLayoutAndKeysPageAsTheRails() {
+        // Windows > Reset layout puts the docks back; Help > Keys lists the XY screen's keys
+        // (F9 and the override too), without the rail's < and >.
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_plotter.json"));
+        XyMainWindow w(*link, settings);
+        w.resize(1024, 738);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto* plots = w.findChild<QDockWidget*>(QStringLiteral("plotDock"));
+        auto* history = w.findChild<QDockWidget*>(QStringLiteral("historyDock"));
+        auto* simulation = w.findChild<QDockWidget*>(QStringLiteral("simulationDock"));
+        QVERIFY(plots && history && simulation);
+        plots->setFloating(true);
+        history->hide();
+        w.resetLayoutAction()->trigger();
+        QVERIFY(!plots->isFloating());
+        QVERIFY(history->isVisibleTo(&w));
+        QVERIFY(simulation->isVisibleTo(&w));
+        QCOMPARE(w.dockWidgetArea(plots), Qt::BottomDockWidgetArea);
+        KeysDialog keys(w.keyedActions(), &w, KeysDialog::Machine::Xy);
+        QStringList listed;
+        for (int r = 0; r < keys.table()->rowCount(); ++r)
+            listed << keys.table()->item(r, 0)->text();
+        QVERIFY(listed.contains(QKeySequence(Qt::Key_F9).toString(QKeySequence::NativeText)));
+        QVERIFY(
+            listed.contains(QKeySequence(Qt::CTRL | Qt::Key_0).toString(QKeySequence::NativeText)));
+        QVERIFY(!listed.contains(QStringLiteral("<  ,")));
+    }
 
     void machineSwitchAsksFirstWhenSomethingMoves() {
         // Issue 19: File > Machine... switches inside the program, asking first when the
