@@ -1,5 +1,5 @@
 /* The reference for the DNC load benchmark (issue 13 item 6): the smallest Modbus TCP server
- * libmodbus makes, with the same map sizes as trilho's (core/dnc/register_map.h: 34 input
+ * libmodbus makes, with the same map sizes as trilho's (core/dnc/register_map.h: 44 input
  * registers, 4114 holding registers), one thread, a select() loop over modbus_receive and
  * modbus_reply for any number of clients. What trilho-cli serve's Qt SerialBus server is
  * compared with; it validates nothing and drives no machine.
@@ -13,7 +13,7 @@
 #include <sys/select.h>
 #include <unistd.h>
 
-enum { kInputRegisters = 34, kHoldingRegisters = 4114 };
+enum { kInputRegisters = 44, kHoldingRegisters = 4114 };
 
 static volatile sig_atomic_t g_quit = 0;
 static void onQuit(int sig) {

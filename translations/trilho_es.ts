@@ -698,16 +698,24 @@
         <translation>Punto de consigna</translation>
     </message>
     <message>
-        <source>X set point</source>
-        <translation>Consigna X</translation>
+        <source>Send &amp;X</source>
+        <translation>Enviar &amp;X</translation>
     </message>
     <message>
-        <source>Y set point</source>
-        <translation>Consigna Y</translation>
+        <source>Send &amp;Y</source>
+        <translation>Enviar &amp;Y</translation>
     </message>
     <message>
-        <source>&amp;Send</source>
-        <translation>&amp;Enviar</translation>
+        <source>&amp;Send X and Y</source>
+        <translation>&amp;Enviar X e Y</translation>
+    </message>
+    <message>
+        <source>X %1 mm sent: send Y to move.</source>
+        <translation>X %1 mm enviado: envíe Y para mover.</translation>
+    </message>
+    <message>
+        <source>Y %1 mm sent: send X to move.</source>
+        <translation>Y %1 mm enviado: envíe X para mover.</translation>
     </message>
     <message>
         <source>Running</source>
@@ -718,12 +726,16 @@
         <translation>Detenido</translation>
     </message>
     <message>
-        <source>Serial port</source>
-        <translation>Puerto serie</translation>
+        <source>Click to stop the table</source>
+        <translation>Haga clic para detener la mesa</translation>
     </message>
     <message>
-        <source>The table runs on the simulated machine; the serial link to the ATmega128 board comes in a later version.</source>
-        <translation>La mesa funciona en la máquina simulada; el enlace serie con la placa ATmega128 llegará en una versión posterior.</translation>
+        <source>Click to start the table towards the set point</source>
+        <translation>Haga clic para arrancar la mesa hacia el punto de consigna</translation>
+    </message>
+    <message>
+        <source>Serial port</source>
+        <translation>Puerto serie</translation>
     </message>
     <message>
         <source>Port</source>
@@ -732,6 +744,14 @@
     <message>
         <source>Bit rate</source>
         <translation>Velocidad (bit/s)</translation>
+    </message>
+    <message>
+        <source>Simulated machine</source>
+        <translation>Máquina simulada</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Conectar</translation>
     </message>
 </context>
 <context>
@@ -1096,6 +1116,33 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::MachineChoice</name>
+    <message>
+        <source>DC-motor XY table</source>
+        <translation>Mesa XY con motores CC</translation>
+    </message>
+    <message>
+        <source>Stepper XY plotter</source>
+        <translation>Plotter XY con motores paso a paso</translation>
+    </message>
+    <message>
+        <source>Robot rail (1996)</source>
+        <translation>Riel del robot (1996)</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Máquina</translation>
+    </message>
+    <message>
+        <source>&amp;Machine:</source>
+        <translation>&amp;Máquina:</translation>
+    </message>
+    <message>
+        <source>%1 is moving. Switching to %2 stops it first (a controlled stop) and closes its screen. Switch?</source>
+        <translation>%1 está en movimiento. Cambiar a %2 lo detiene antes (parada controlada) y cierra su pantalla. ¿Cambiar?</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::MachineLink</name>
     <message>
         <source>Command not taken: the servo thread's queue is full. Press again.</source>
@@ -1143,6 +1190,10 @@
     <message>
         <source>E&amp;xit</source>
         <translation>Sa&amp;lir</translation>
+    </message>
+    <message>
+        <source>&amp;Machine...</source>
+        <translation>&amp;Máquina...</translation>
     </message>
     <message>
         <source>C&amp;ommand</source>
@@ -1295,6 +1346,10 @@
     <message>
         <source>Acknowledge</source>
         <translation>Reconocer</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Máquina</translation>
     </message>
     <message>
         <source>File message</source>
@@ -2419,44 +2474,20 @@
         <translation>EMERGENCIA ACTIVADA</translation>
     </message>
     <message>
-        <source>&amp;File</source>
-        <translation>&amp;Archivo</translation>
+        <source>Stop the machine before changing the connection.</source>
+        <translation>Detenga la máquina antes de cambiar la conexión.</translation>
     </message>
     <message>
-        <source>&amp;Open program...</source>
-        <translation>&amp;Abrir programa...</translation>
+        <source>Feed override %1 %</source>
+        <translation>Corrección de avance %1 %</translation>
     </message>
     <message>
-        <source>E&amp;xit</source>
-        <translation>Sa&amp;lir</translation>
+        <source>Simulated fault armed: %1</source>
+        <translation>Falla simulada activa: %1</translation>
     </message>
     <message>
-        <source>&amp;Command</source>
-        <translation>&amp;Comando</translation>
-    </message>
-    <message>
-        <source>&amp;Manual</source>
-        <translation>&amp;Manual</translation>
-    </message>
-    <message>
-        <source>&amp;Automatic</source>
-        <translation>&amp;Automático</translation>
-    </message>
-    <message>
-        <source>&amp;Home</source>
-        <translation>&amp;Referenciar</translation>
-    </message>
-    <message>
-        <source>&amp;Options</source>
-        <translation>&amp;Opciones</translation>
-    </message>
-    <message>
-        <source>&amp;Connection...</source>
-        <translation>&amp;Conexión...</translation>
-    </message>
-    <message>
-        <source>Ca&amp;libration...</source>
-        <translation>Ca&amp;libración...</translation>
+        <source>Machine</source>
+        <translation>Máquina</translation>
     </message>
     <message>
         <source>the pen lifts and the carriage runs to the origin sensors, where both axes are zeroed (0, 0).</source>
@@ -2507,6 +2538,14 @@
         <translation>Programas G (*.G *.g)</translation>
     </message>
     <message>
+        <source>The history could not be written: %1</source>
+        <translation>No se pudo escribir el historial: %1</translation>
+    </message>
+    <message>
+        <source>E-STOP (Pause, F1)</source>
+        <translation>EMERGENCIA (Pausa, F1)</translation>
+    </message>
+    <message>
         <source>Block N%1, line %2</source>
         <translation>Bloque N%1, línea %2</translation>
     </message>
@@ -2551,10 +2590,6 @@
         <translation>Velocidad (bit/s)</translation>
     </message>
     <message>
-        <source>Stop the machine before changing the connection.</source>
-        <translation>Detenga la máquina antes de cambiar la conexión.</translation>
-    </message>
-    <message>
         <source>trilho - %1</source>
         <translation>trilho - %1</translation>
     </message>
@@ -2568,23 +2603,147 @@
     </message>
     <message>
         <source>Cycle start (F5)</source>
-        <translation>Iniciar ciclo (F5)</translation>
+        <translation>Inicio de ciclo (F5)</translation>
     </message>
     <message>
-        <source>Hold (F6)</source>
-        <translation>Suspender (F6)</translation>
+        <source>Feed hold (F6)</source>
+        <translation>Suspender avance (F6)</translation>
     </message>
     <message>
-        <source>Resume (F7)</source>
-        <translation>Reanudar (F7)</translation>
+        <source>Continue (F7)</source>
+        <translation>Continuar (F7)</translation>
     </message>
     <message>
         <source>Stop (F8)</source>
         <translation>Detener (F8)</translation>
     </message>
     <message>
-        <source>E-STOP (Pause, F1)</source>
-        <translation>EMERGENCIA (Pausa, F1)</translation>
+        <source>Single block (F9)</source>
+        <translation>Bloque a bloque (F9)</translation>
+    </message>
+    <message>
+        <source>Feed hold</source>
+        <translation>Suspender avance</translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation>Continuar</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Detener</translation>
+    </message>
+    <message>
+        <source>Single block</source>
+        <translation>Bloque a bloque</translation>
+    </message>
+    <message>
+        <source>Feed override -10 %</source>
+        <translation>Corrección de avance -10 %</translation>
+    </message>
+    <message>
+        <source>Feed override +10 %</source>
+        <translation>Corrección de avance +10 %</translation>
+    </message>
+    <message>
+        <source>Feed override 100 %</source>
+        <translation>Corrección de avance 100 %</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Archivo</translation>
+    </message>
+    <message>
+        <source>&amp;Open program...</source>
+        <translation>&amp;Abrir programa...</translation>
+    </message>
+    <message>
+        <source>&amp;Machine...</source>
+        <translation>&amp;Máquina...</translation>
+    </message>
+    <message>
+        <source>E&amp;xit</source>
+        <translation>Sa&amp;lir</translation>
+    </message>
+    <message>
+        <source>&amp;Command</source>
+        <translation>&amp;Comando</translation>
+    </message>
+    <message>
+        <source>&amp;Manual</source>
+        <translation>&amp;Manual</translation>
+    </message>
+    <message>
+        <source>&amp;Automatic</source>
+        <translation>&amp;Automático</translation>
+    </message>
+    <message>
+        <source>&amp;Home</source>
+        <translation>&amp;Referenciar</translation>
+    </message>
+    <message>
+        <source>&amp;Options</source>
+        <translation>&amp;Opciones</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Idioma</translation>
+    </message>
+    <message>
+        <source>&amp;Connection...</source>
+        <translation>&amp;Conexión...</translation>
+    </message>
+    <message>
+        <source>Ca&amp;libration...</source>
+        <translation>Ca&amp;libración...</translation>
+    </message>
+    <message>
+        <source>&amp;DNC link...</source>
+        <translation>Enlace &amp;DNC...</translation>
+    </message>
+    <message>
+        <source>&amp;Remote (DNC)</source>
+        <translation>&amp;Remoto (DNC)</translation>
+    </message>
+    <message>
+        <source>Allow the cell's supervisor to write and command over the DNC link (%1). Off at every start.</source>
+        <translation>Permite al supervisor de la célula escribir y mandar por el enlace DNC (%1). Desactivado en cada inicio.</translation>
+    </message>
+    <message>
+        <source>&amp;Windows</source>
+        <translation>&amp;Ventanas</translation>
+    </message>
+    <message>
+        <source>&amp;Reset layout</source>
+        <translation>&amp;Restablecer disposición</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>A&amp;yuda</translation>
+    </message>
+    <message>
+        <source>&amp;Keys</source>
+        <translation>&amp;Teclas</translation>
+    </message>
+    <message>
+        <source>Plots</source>
+        <translation>Gráficos</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>Historial</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulación</translation>
+    </message>
+    <message>
+        <source>Home (Ctrl+Home)</source>
+        <translation>Referenciar (Ctrl+Inicio)</translation>
+    </message>
+    <message>
+        <source>Safety</source>
+        <translation>Seguridad</translation>
     </message>
     <message>
         <source>Reset E-stop</source>
@@ -2636,6 +2795,61 @@
     <message>
         <source>speed (mm/s)</source>
         <translation>velocidad (mm/s)</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::XySimulationPanel</name>
+    <message>
+        <source>%1 axis jammed</source>
+        <translation>eje %1 trabado</translation>
+    </message>
+    <message>
+        <source>%1 encoder stuck</source>
+        <translation>encóder %1 detenido</translation>
+    </message>
+    <message>
+        <source>lost steps above %1 steps/s</source>
+        <translation>pasos perdidos por encima de %1 pasos/s</translation>
+    </message>
+    <message>
+        <source>origin sensors dead</source>
+        <translation>sensores de origen muertos</translation>
+    </message>
+    <message>
+        <source>Faults of the simulated plotter, for teaching and rehearsal. They act at once; Clear all puts the plotter right (home again after lost steps).</source>
+        <translation>Fallas del plotter simulado, para enseñanza y práctica. Actúan al instante; Borrar todo deja el plotter en orden (vuelva a referenciar tras pasos perdidos).</translation>
+    </message>
+    <message>
+        <source>Lost steps above (steps/s, 0 = off):</source>
+        <translation>Pasos perdidos por encima de (pasos/s, 0 = apagado):</translation>
+    </message>
+    <message>
+        <source>Origin sensors dead (homing gives up)</source>
+        <translation>Sensores de origen muertos (la referencia se rinde)</translation>
+    </message>
+    <message>
+        <source>Faults of the simulated table, for teaching and rehearsal. They act at once; Clear all puts the table right (acknowledge any alarm after).</source>
+        <translation>Fallas de la mesa simulada, para enseñanza y práctica. Actúan al instante; Borrar todo deja la mesa en orden (reconozca después cualquier alarma).</translation>
+    </message>
+    <message>
+        <source>X axis jammed</source>
+        <translation>Eje X trabado</translation>
+    </message>
+    <message>
+        <source>Y axis jammed</source>
+        <translation>Eje Y trabado</translation>
+    </message>
+    <message>
+        <source>X encoder stuck</source>
+        <translation>Encóder X detenido</translation>
+    </message>
+    <message>
+        <source>Y encoder stuck</source>
+        <translation>Encóder Y detenido</translation>
+    </message>
+    <message>
+        <source>Clear all</source>
+        <translation>Borrar todo</translation>
     </message>
 </context>
 </TS>

@@ -698,16 +698,24 @@
         <translation>Ponto de ajuste</translation>
     </message>
     <message>
-        <source>X set point</source>
-        <translation>Ponto de ajuste X</translation>
+        <source>Send &amp;X</source>
+        <translation>Enviar &amp;X</translation>
     </message>
     <message>
-        <source>Y set point</source>
-        <translation>Ponto de ajuste Y</translation>
+        <source>Send &amp;Y</source>
+        <translation>Enviar &amp;Y</translation>
     </message>
     <message>
-        <source>&amp;Send</source>
-        <translation>&amp;Enviar</translation>
+        <source>&amp;Send X and Y</source>
+        <translation>&amp;Enviar X e Y</translation>
+    </message>
+    <message>
+        <source>X %1 mm sent: send Y to move.</source>
+        <translation>X %1 mm enviado: envie Y para mover.</translation>
+    </message>
+    <message>
+        <source>Y %1 mm sent: send X to move.</source>
+        <translation>Y %1 mm enviado: envie X para mover.</translation>
     </message>
     <message>
         <source>Running</source>
@@ -718,12 +726,16 @@
         <translation>Parado</translation>
     </message>
     <message>
-        <source>Serial port</source>
-        <translation>Porta serial</translation>
+        <source>Click to stop the table</source>
+        <translation>Clique para parar a mesa</translation>
     </message>
     <message>
-        <source>The table runs on the simulated machine; the serial link to the ATmega128 board comes in a later version.</source>
-        <translation>A mesa roda na máquina simulada; a ligação serial com a placa ATmega128 vem numa versão posterior.</translation>
+        <source>Click to start the table towards the set point</source>
+        <translation>Clique para partir a mesa rumo ao ponto de ajuste</translation>
+    </message>
+    <message>
+        <source>Serial port</source>
+        <translation>Porta serial</translation>
     </message>
     <message>
         <source>Port</source>
@@ -732,6 +744,14 @@
     <message>
         <source>Bit rate</source>
         <translation>Velocidade (bit/s)</translation>
+    </message>
+    <message>
+        <source>Simulated machine</source>
+        <translation>Máquina simulada</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Conectar</translation>
     </message>
 </context>
 <context>
@@ -1096,6 +1116,33 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::MachineChoice</name>
+    <message>
+        <source>DC-motor XY table</source>
+        <translation>Mesa XY com motores CC</translation>
+    </message>
+    <message>
+        <source>Stepper XY plotter</source>
+        <translation>Plotter XY com motores de passo</translation>
+    </message>
+    <message>
+        <source>Robot rail (1996)</source>
+        <translation>Trilho do robô (1996)</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Máquina</translation>
+    </message>
+    <message>
+        <source>&amp;Machine:</source>
+        <translation>&amp;Máquina:</translation>
+    </message>
+    <message>
+        <source>%1 is moving. Switching to %2 stops it first (a controlled stop) and closes its screen. Switch?</source>
+        <translation>%1 está em movimento. Trocar para %2 o para antes (parada controlada) e fecha a sua tela. Trocar?</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::MachineLink</name>
     <message>
         <source>Command not taken: the servo thread's queue is full. Press again.</source>
@@ -1143,6 +1190,10 @@
     <message>
         <source>E&amp;xit</source>
         <translation>Sai&amp;r</translation>
+    </message>
+    <message>
+        <source>&amp;Machine...</source>
+        <translation>&amp;Máquina...</translation>
     </message>
     <message>
         <source>C&amp;ommand</source>
@@ -1295,6 +1346,10 @@
     <message>
         <source>Acknowledge</source>
         <translation>Reconhecer</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Máquina</translation>
     </message>
     <message>
         <source>File message</source>
@@ -2419,44 +2474,20 @@
         <translation>EMERGÊNCIA ACIONADA</translation>
     </message>
     <message>
-        <source>&amp;File</source>
-        <translation>&amp;Arquivo</translation>
+        <source>Stop the machine before changing the connection.</source>
+        <translation>Pare a máquina antes de mudar a conexão.</translation>
     </message>
     <message>
-        <source>&amp;Open program...</source>
-        <translation>&amp;Abrir programa...</translation>
+        <source>Feed override %1 %</source>
+        <translation>Correção de avanço %1 %</translation>
     </message>
     <message>
-        <source>E&amp;xit</source>
-        <translation>Sai&amp;r</translation>
+        <source>Simulated fault armed: %1</source>
+        <translation>Falha simulada ativa: %1</translation>
     </message>
     <message>
-        <source>&amp;Command</source>
-        <translation>&amp;Comando</translation>
-    </message>
-    <message>
-        <source>&amp;Manual</source>
-        <translation>&amp;Manual</translation>
-    </message>
-    <message>
-        <source>&amp;Automatic</source>
-        <translation>&amp;Automático</translation>
-    </message>
-    <message>
-        <source>&amp;Home</source>
-        <translation>&amp;Referenciar</translation>
-    </message>
-    <message>
-        <source>&amp;Options</source>
-        <translation>&amp;Opções</translation>
-    </message>
-    <message>
-        <source>&amp;Connection...</source>
-        <translation>&amp;Conexão...</translation>
-    </message>
-    <message>
-        <source>Ca&amp;libration...</source>
-        <translation>Ca&amp;libração...</translation>
+        <source>Machine</source>
+        <translation>Máquina</translation>
     </message>
     <message>
         <source>the pen lifts and the carriage runs to the origin sensors, where both axes are zeroed (0, 0).</source>
@@ -2507,6 +2538,14 @@
         <translation>Programas G (*.G *.g)</translation>
     </message>
     <message>
+        <source>The history could not be written: %1</source>
+        <translation>O histórico não pôde ser gravado: %1</translation>
+    </message>
+    <message>
+        <source>E-STOP (Pause, F1)</source>
+        <translation>EMERGÊNCIA (Pause, F1)</translation>
+    </message>
+    <message>
         <source>Block N%1, line %2</source>
         <translation>Bloco N%1, linha %2</translation>
     </message>
@@ -2551,10 +2590,6 @@
         <translation>Velocidade (bit/s)</translation>
     </message>
     <message>
-        <source>Stop the machine before changing the connection.</source>
-        <translation>Pare a máquina antes de mudar a conexão.</translation>
-    </message>
-    <message>
         <source>trilho - %1</source>
         <translation>trilho - %1</translation>
     </message>
@@ -2568,23 +2603,147 @@
     </message>
     <message>
         <source>Cycle start (F5)</source>
-        <translation>Iniciar ciclo (F5)</translation>
+        <translation>Início de ciclo (F5)</translation>
     </message>
     <message>
-        <source>Hold (F6)</source>
-        <translation>Suspender (F6)</translation>
+        <source>Feed hold (F6)</source>
+        <translation>Suspender avanço (F6)</translation>
     </message>
     <message>
-        <source>Resume (F7)</source>
-        <translation>Retomar (F7)</translation>
+        <source>Continue (F7)</source>
+        <translation>Continua (F7)</translation>
     </message>
     <message>
         <source>Stop (F8)</source>
         <translation>Parar (F8)</translation>
     </message>
     <message>
-        <source>E-STOP (Pause, F1)</source>
-        <translation>EMERGÊNCIA (Pause, F1)</translation>
+        <source>Single block (F9)</source>
+        <translation>Bloco a bloco (F9)</translation>
+    </message>
+    <message>
+        <source>Feed hold</source>
+        <translation>Suspender avanço</translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation>Continua</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Parar</translation>
+    </message>
+    <message>
+        <source>Single block</source>
+        <translation>Bloco a bloco</translation>
+    </message>
+    <message>
+        <source>Feed override -10 %</source>
+        <translation>Correção de avanço -10 %</translation>
+    </message>
+    <message>
+        <source>Feed override +10 %</source>
+        <translation>Correção de avanço +10 %</translation>
+    </message>
+    <message>
+        <source>Feed override 100 %</source>
+        <translation>Correção de avanço 100 %</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Arquivo</translation>
+    </message>
+    <message>
+        <source>&amp;Open program...</source>
+        <translation>&amp;Abrir programa...</translation>
+    </message>
+    <message>
+        <source>&amp;Machine...</source>
+        <translation>&amp;Máquina...</translation>
+    </message>
+    <message>
+        <source>E&amp;xit</source>
+        <translation>Sai&amp;r</translation>
+    </message>
+    <message>
+        <source>&amp;Command</source>
+        <translation>&amp;Comando</translation>
+    </message>
+    <message>
+        <source>&amp;Manual</source>
+        <translation>&amp;Manual</translation>
+    </message>
+    <message>
+        <source>&amp;Automatic</source>
+        <translation>&amp;Automático</translation>
+    </message>
+    <message>
+        <source>&amp;Home</source>
+        <translation>&amp;Referenciar</translation>
+    </message>
+    <message>
+        <source>&amp;Options</source>
+        <translation>&amp;Opções</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Idioma</translation>
+    </message>
+    <message>
+        <source>&amp;Connection...</source>
+        <translation>&amp;Conexão...</translation>
+    </message>
+    <message>
+        <source>Ca&amp;libration...</source>
+        <translation>Ca&amp;libração...</translation>
+    </message>
+    <message>
+        <source>&amp;DNC link...</source>
+        <translation>Enlace &amp;DNC...</translation>
+    </message>
+    <message>
+        <source>&amp;Remote (DNC)</source>
+        <translation>&amp;Remoto (DNC)</translation>
+    </message>
+    <message>
+        <source>Allow the cell's supervisor to write and command over the DNC link (%1). Off at every start.</source>
+        <translation>Permite ao supervisor da célula escrever e comandar pelo enlace DNC (%1). Desligado a cada início.</translation>
+    </message>
+    <message>
+        <source>&amp;Windows</source>
+        <translation>&amp;Janelas</translation>
+    </message>
+    <message>
+        <source>&amp;Reset layout</source>
+        <translation>&amp;Restaurar disposição</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>Aj&amp;uda</translation>
+    </message>
+    <message>
+        <source>&amp;Keys</source>
+        <translation>&amp;Teclas</translation>
+    </message>
+    <message>
+        <source>Plots</source>
+        <translation>Gráficos</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>Histórico</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulação</translation>
+    </message>
+    <message>
+        <source>Home (Ctrl+Home)</source>
+        <translation>Referenciar (Ctrl+Home)</translation>
+    </message>
+    <message>
+        <source>Safety</source>
+        <translation>Segurança</translation>
     </message>
     <message>
         <source>Reset E-stop</source>
@@ -2636,6 +2795,61 @@
     <message>
         <source>speed (mm/s)</source>
         <translation>velocidade (mm/s)</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::XySimulationPanel</name>
+    <message>
+        <source>%1 axis jammed</source>
+        <translation>eixo %1 travado</translation>
+    </message>
+    <message>
+        <source>%1 encoder stuck</source>
+        <translation>encoder %1 parado</translation>
+    </message>
+    <message>
+        <source>lost steps above %1 steps/s</source>
+        <translation>passos perdidos acima de %1 passos/s</translation>
+    </message>
+    <message>
+        <source>origin sensors dead</source>
+        <translation>sensores de origem mortos</translation>
+    </message>
+    <message>
+        <source>Faults of the simulated plotter, for teaching and rehearsal. They act at once; Clear all puts the plotter right (home again after lost steps).</source>
+        <translation>Falhas do plotter simulado, para ensino e treino. Agem na hora; Limpar tudo deixa o plotter em ordem (referencie de novo depois de passos perdidos).</translation>
+    </message>
+    <message>
+        <source>Lost steps above (steps/s, 0 = off):</source>
+        <translation>Passos perdidos acima de (passos/s, 0 = desligado):</translation>
+    </message>
+    <message>
+        <source>Origin sensors dead (homing gives up)</source>
+        <translation>Sensores de origem mortos (a referência desiste)</translation>
+    </message>
+    <message>
+        <source>Faults of the simulated table, for teaching and rehearsal. They act at once; Clear all puts the table right (acknowledge any alarm after).</source>
+        <translation>Falhas da mesa simulada, para ensino e treino. Agem na hora; Limpar tudo deixa a mesa em ordem (reconheça depois qualquer alarme).</translation>
+    </message>
+    <message>
+        <source>X axis jammed</source>
+        <translation>Eixo X travado</translation>
+    </message>
+    <message>
+        <source>Y axis jammed</source>
+        <translation>Eixo Y travado</translation>
+    </message>
+    <message>
+        <source>X encoder stuck</source>
+        <translation>Encoder X parado</translation>
+    </message>
+    <message>
+        <source>Y encoder stuck</source>
+        <translation>Encoder Y parado</translation>
+    </message>
+    <message>
+        <source>Clear all</source>
+        <translation>Limpar tudo</translation>
     </message>
 </context>
 </TS>

@@ -9,11 +9,26 @@
 namespace trilho {
 namespace ui {
 
-DncLink::DncLink(MachineLink& link, QObject* parent) : QObject(parent), link_(link) {
+DncLink::DncLink(MachineLink& link, QObject* parent)
+    : DncLink(
+          link.profile(),
+          [&link] {
+              auto m = std::make_unique<dnc::SharedWorkerMachine>(link.worker(), link.profile());
+              dnc::SharedWorkerMachine* raw = m.get();
+              return DncMachineMade{std::move(m),
+                                    [raw](const ControllerEvent& e) { raw->noteEvent(e); }};
+          },
+          parent) {
     // The screens drain the worker; the link sees each event too (its alarm counter).
-    connect(&link_, &MachineLink::eventArrived, this, [this](const ControllerEvent& e) {
-        if (machine_) machine_->noteEvent(e);
-    });
+    connect(&link, &MachineLink::eventArrived, this, &DncLink::noteEvent);
+}
+
+DncLink::DncLink(const MachineProfile& profile, std::function<DncMachineMade()> make,
+                 QObject* parent)
+    : QObject(parent), profile_(profile), make_(std::move(make)) {}
+
+void DncLink::noteEvent(const ControllerEvent& e) {
+    if (machine_ && note_) note_(e);
 }
 
 DncLink::~DncLink() {
@@ -23,9 +38,11 @@ DncLink::~DncLink() {
 bool DncLink::start(const DncSettings& settings, QString* error) {
     stop();
     CompileOptions options;  // as trilho-cli serve: the standard dialect, this rail's limits
-    options.machine = link_.profile().limits;
+    options.machine = profile_.limits;
     options.maxDiagnostics = 100;
-    machine_ = std::make_unique<dnc::SharedWorkerMachine>(link_.worker(), link_.profile());
+    DncMachineMade made = make_();
+    machine_ = std::move(made.machine);
+    note_ = std::move(made.noteEvent);
     server_ = std::make_unique<dnc::DncServer>(*machine_,
                                                dnc::ProgramLibrary(settings.programs(), options));
     connect(server_.get(), &dnc::DncServer::historyLine, this, [this](const QString& line) {

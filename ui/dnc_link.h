@@ -3,24 +3,41 @@
 // the screens' own servo worker (SharedWorkerMachine), started and stopped from Options > DNC.
 // Remote (the operator's consent to the supervisor's writes) is off at every start.
 #include <QObject>
+#include <functional>
 #include <memory>
+
+#include "core/machine/controller_event.h"
+#include "core/machine/machine_profile.h"
 
 #include "ui/dnc_settings.h"
 
 namespace trilho {
 namespace dnc {
+class DncMachine;
 class DncServer;
-class SharedWorkerMachine;
 }  // namespace dnc
 
 namespace ui {
 
 class MachineLink;
 
+/// The machine a start serves, and how the screen hands it the events it drained.
+struct DncMachineMade {
+    std::unique_ptr<dnc::DncMachine> machine;
+    std::function<void(const ControllerEvent&)> noteEvent;
+};
+
 class DncLink : public QObject {
     Q_OBJECT
   public:
+    /// The rail's screens: their servo worker.
     explicit DncLink(MachineLink& link, QObject* parent = nullptr);
+    /// Any machine's screens (the XY ones: their XyLink): make builds the machine at each
+    /// start; profile must outlive the link.
+    DncLink(const MachineProfile& profile, std::function<DncMachineMade()> make,
+            QObject* parent = nullptr);
+    /// An event the screen drained from its machine, for the link's alarm counter.
+    void noteEvent(const ControllerEvent& e);
     ~DncLink() override;
 
     /// Stops a running server, then serves `settings` with Remote off. False with a message
@@ -50,11 +67,13 @@ class DncLink : public QObject {
     void historyLine(const QString& line);
 
   private:
-    MachineLink& link_;
+    const MachineProfile& profile_;
+    std::function<DncMachineMade()> make_;
+    std::function<void(const ControllerEvent&)> note_;
     DncSettings settings_;
     QString error_;
     QString shortError_;  ///< the failure for the status bar
-    std::unique_ptr<dnc::SharedWorkerMachine> machine_;
+    std::unique_ptr<dnc::DncMachine> machine_;
     std::unique_ptr<dnc::DncServer> server_;  ///< destroyed before machine_
 };
 

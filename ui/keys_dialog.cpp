@@ -10,21 +10,24 @@
 namespace trilho {
 namespace ui {
 
-QList<std::pair<QString, QString>> KeysDialog::fixedKeys() {
+QList<std::pair<QString, QString>> KeysDialog::fixedKeys(Machine machine) {
     const auto key = [](Qt::Key k) { return QKeySequence(k).toString(QKeySequence::NativeText); };
-    return {
+    QList<std::pair<QString, QString>> keys{
         {key(Qt::Key_Pause) + QStringLiteral(", ") + key(Qt::Key_F1),
          tr("EMERGENCY STOP, in every window, menu and dialog")},
         {key(Qt::Key_Escape),
          tr("Stop (a controlled stop) when no menu, list or dialog is open; otherwise it only "
             "closes it")},
         {key(Qt::Key_Space), tr("STOP: the manual PARA, or Stop in automatic (not in the editor)")},
-        {QStringLiteral("<  ,"), tr("Manual mode: left")},
-        {QStringLiteral(">  ."), tr("Manual mode: right")},
     };
+    if (machine == Machine::Rail)
+        keys << std::pair{QStringLiteral("<  ,"), tr("Manual mode: left")}
+             << std::pair{QStringLiteral(">  ."), tr("Manual mode: right")};
+    return keys;
 }
 
-KeysDialog::KeysDialog(const QList<QAction*>& actions, QWidget* parent) : QDialog(parent) {
+KeysDialog::KeysDialog(const QList<QAction*>& actions, QWidget* parent, Machine machine)
+    : QDialog(parent) {
     setObjectName(QStringLiteral("keysDialog"));
     setWindowTitle(tr("Keys"));
     table_ = new QTableWidget(0, 2, this);
@@ -39,7 +42,7 @@ KeysDialog::KeysDialog(const QList<QAction*>& actions, QWidget* parent) : QDialo
         table_->setItem(row, 0, new QTableWidgetItem(key));
         table_->setItem(row, 1, new QTableWidgetItem(what));
     };
-    for (const auto& [key, what] : fixedKeys())
+    for (const auto& [key, what] : fixedKeys(machine))
         add(key, what);
     for (QAction* a : actions)
         if (!a->shortcut().isEmpty())

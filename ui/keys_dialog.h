@@ -13,10 +13,14 @@ namespace ui {
 class KeysDialog : public QDialog {
     Q_OBJECT
   public:
-    explicit KeysDialog(const QList<QAction*>& actions, QWidget* parent = nullptr);
+    /// Whose screen: the rail's manual mode also answers < and > (the XY machines jog with
+    /// their panel's buttons).
+    enum class Machine { Rail, Xy };
+    explicit KeysDialog(const QList<QAction*>& actions, QWidget* parent = nullptr,
+                        Machine machine = Machine::Rail);
     QTableWidget* table() const { return table_; }
     /// The keys handled outside actions (E-stop, Esc, Space, < >), as "key", "what it does".
-    static QList<std::pair<QString, QString>> fixedKeys();
+    static QList<std::pair<QString, QString>> fixedKeys(Machine machine = Machine::Rail);
 
   private:
     QTableWidget* table_;

@@ -42,6 +42,8 @@
 #include "ui/history_panel.h"
 #include "ui/jog_panel.h"
 #include "ui/keys_dialog.h"
+#include "ui/language_menu.h"
+#include "ui/machine_choice.h"
 #include "ui/machine_link.h"
 #include "ui/plot_panel.h"
 #include "ui/program_library_panel.h"
@@ -174,14 +176,23 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::buildMenus() {
+    // The frame's actions carry the same object names on every machine's screen (issue 19, one
+    // frame; the parity test compares them).
     fileMenu_ = menuBar()->addMenu(QString());
     select_ = fileMenu_->addAction(QString(), this, &MainWindow::chooseFile);
+    select_->setObjectName(QStringLiteral("selectProgram"));
+    select_->setShortcut(QKeySequence::Open);
+    machine_ = fileMenu_->addAction(QString(), this, &MainWindow::requestMachine);
+    machine_->setObjectName(QStringLiteral("machine"));
     fileMenu_->addSeparator();
     exit_ = fileMenu_->addAction(QString(), this, &QWidget::close);
+    exit_->setObjectName(QStringLiteral("exit"));
 
     commandMenu_ = menuBar()->addMenu(QString());
     manual_ = commandMenu_->addAction(QString(), &link_, &MachineLink::selectManual);
     automatic_ = commandMenu_->addAction(QString(), this, &MainWindow::requestAutomatic);
+    manual_->setObjectName(QStringLiteral("manual"));
+    automatic_->setObjectName(QStringLiteral("automatic"));
     manual_->setCheckable(true);
     automatic_->setCheckable(true);
     manual_->setChecked(true);
@@ -198,17 +209,7 @@ void MainWindow::buildMenus() {
 
     optionsMenu_ = menuBar()->addMenu(QString());
     languageMenu_ = optionsMenu_->addMenu(QString());
-    languages_ = new QActionGroup(this);
-    for (const auto& [code, name] :
-         {std::pair{QStringLiteral("en"), QStringLiteral("English")},
-          std::pair{QStringLiteral("pt_BR"), QStringLiteral("Português (Brasil)")},
-          std::pair{QStringLiteral("es"), QStringLiteral("Español")}}) {
-        QAction* a = languageMenu_->addAction(name);
-        a->setCheckable(true);
-        a->setData(code);
-        languages_->addAction(a);
-        connect(a, &QAction::triggered, this, [this, c = code] { setLanguage(c); });
-    }
+    languages_ = addLanguageActions(languageMenu_, [this](const QString& c) { setLanguage(c); });
     themeMenu_ = optionsMenu_->addMenu(QString());
     auto* themes = new QActionGroup(this);
     classicTheme_ = themeMenu_->addAction(QString(), this, [this] { setTheme(Theme::Classic); });
@@ -243,6 +244,7 @@ void MainWindow::buildMenus() {
         a->setCheckable(true), dialects->addAction(a);
     optionsMenu_->addSeparator();
     dncAction_ = optionsMenu_->addAction(QString(), this, [this] { openDncDialog(); });
+    dncAction_->setObjectName(QStringLiteral("dnc"));
     remote_ = optionsMenu_->addAction(QString());
     remote_->setObjectName(QStringLiteral("remote"));
     remote_->setCheckable(true);
@@ -255,12 +257,14 @@ void MainWindow::buildMenus() {
     workbench_ = viewMenu_->addAction(QString(), this, &MainWindow::openWorkbench);
     workbench_->setObjectName(QStringLiteral("workbenchAction"));
     workbench_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_W));
+    resetLayout_->setObjectName(QStringLiteral("resetLayout"));
     viewMenu_->addSeparator();
     helpMenu_ = menuBar()->addMenu(QString());
     keys_ = helpMenu_->addAction(QString(), this, [this] {
-        KeysDialog dialog(runControls_->keyedActions() << home_ << remote_, this);
+        KeysDialog dialog(runControls_->keyedActions() << home_ << select_ << remote_, this);
         dialog.exec();
     });
+    keys_->setObjectName(QStringLiteral("keys"));
 
     // E-stop always visible (key: Esc), with reset and acknowledge beside it.
     QToolBar* bar = addToolBar(QString());
@@ -418,6 +422,7 @@ void MainWindow::retranslate() {
     fileMenu_->setTitle(tr("&File"));
     select_->setText(tr("&Select"));
     exit_->setText(tr("E&xit"));
+    machine_->setText(tr("&Machine..."));
     commandMenu_->setTitle(tr("C&ommand"));
     manual_->setText(tr("&Manual"));
     automatic_->setText(tr("&Automatic"));
@@ -460,8 +465,7 @@ void MainWindow::retranslate() {
     resetEstop_->setText(tr("Reset E-stop"));
     safetyBar_->setWindowTitle(tr("Safety"));
     ack_->setText(tr("Acknowledge"));
-    for (QAction* a : languages_->actions())
-        a->setChecked(a->data().toString() == language_);
+    checkLanguage(languages_, language_);
     refreshOnline();
     onStatus(last_);
 }
@@ -476,6 +480,23 @@ void MainWindow::setLanguage(const QString& lang) {
     language_ = lang;
     settings_.setValue(QStringLiteral("language"), lang);
     retranslate();  // widgets get LanguageChange too; this covers the window itself at once
+}
+
+void MainWindow::requestMachine() {
+    const std::optional<MachineKind> next = chooseMachine(this, MachineKind::Rail);
+    if (next) switchTo(*next);
+}
+
+bool MainWindow::switchTo(MachineKind next) {
+    if (next == MachineKind::Rail) return false;
+    const ControllerState st = last_.state;
+    const bool moving = st == ControllerState::Running || st == ControllerState::Waiting ||
+                        st == ControllerState::Homing || st == ControllerState::Paused ||
+                        (st == ControllerState::Manual && last_.manualCode != 128);
+    if (moving && !confirm(tr("Machine"), switchQuestion(MachineKind::Rail, next))) return false;
+    link_.stop();
+    emit machineChosen(shippedProfileName(next));
+    return true;
 }
 
 void MainWindow::setTheme(Theme theme) {

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "core/gcode/dialect.h"
+#include "core/machine/machine_kind.h"
 #include "core/machine/rail_controller.h"
 #include "ui/theme.h"
 
@@ -101,6 +102,16 @@ class MainWindow : public QMainWindow {
     QToolButton* remoteButton() const { return remoteButton_; }
     QLabel* dncLabel() const { return dncLabel_; }
     ProgramLibraryPanel* library() const { return library_; }
+    /// File > Machine... (issue 19, one frame).
+    QAction* machineAction() const { return machine_; }
+    /// File > Machine... once chosen: asks first when the rail moves, stops it and emits
+    /// machineChosen; false when the operator said No.
+    bool switchTo(MachineKind next);
+
+  signals:
+    /// File > Machine... chose another machine (its shipped profile's name); the rail was
+    /// stopped first when it moved. main() opens that machine's screen.
+    void machineChosen(const QString& profileName);
 
   protected:
     void closeEvent(QCloseEvent* e) override;
@@ -170,7 +181,9 @@ class MainWindow : public QMainWindow {
         *libraryDock_;
     QMenu *fileMenu_, *commandMenu_, *optionsMenu_, *languageMenu_, *themeMenu_, *lawMenu_,
         *dialectMenu_, *viewMenu_, *helpMenu_;
-    QAction *select_, *exit_, *manual_, *automatic_, *compile_, *execute_, *keys_, *resetLayout_;
+    QAction *select_, *exit_, *manual_, *automatic_, *compile_, *execute_, *keys_, *resetLayout_,
+        *machine_;
+    void requestMachine();
     QAction* workbench_ = nullptr;
     WorkbenchWindow* workbenchWindow_ = nullptr;
     QAction *classicTheme_, *systemTheme_, *classicLaw_, *engineeredLaw_, *standardDialect_,

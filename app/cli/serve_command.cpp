@@ -22,6 +22,7 @@
 #include "host/dnc/dnc_server.h"
 #include "host/dnc/virtual_machine.h"
 #include "host/dnc/worker_machine.h"
+#include "host/dnc/xy_virtual_machine.h"
 
 namespace trilho::cli {
 
@@ -204,8 +205,16 @@ int serveCommand(const QStringList& args) {
     if (!load.profile) return usage(load.error);
     if (!load.error.isEmpty()) err(QStringLiteral("trilho-cli serve: %1\n").arg(load.error));
     const MachineProfile profile = *load.profile;
-    if (profile.kind != MachineKind::Rail)
-        return usage(QStringLiteral("serve runs the rail; the XY machines have no DNC link yet"));
+    // The XY machines serve the same map with their Y axis (issue 19), in virtual time: their
+    // real-time worker for the link is still to come.
+    if (profile.kind != MachineKind::Rail && !faults.empty())
+        return usage(
+            QStringLiteral("--fault is for the rail (the XY machines' faults are in "
+                           "the screens' Simulation dock)"));
+    if (profile.kind != MachineKind::Rail && !parser.isSet(virtualOpt))
+        return usage(
+            QStringLiteral("serve runs an XY machine with --virtual-time only (the rail "
+                           "also in real time)"));
 
     CompileOptions compileOptions;
     compileOptions.machine = profile.limits;
@@ -218,7 +227,9 @@ int serveCommand(const QStringList& args) {
     if (!parser.isSet(virtualOpt)) std::signal(SIGUSR1, onReport);
     std::unique_ptr<dnc::DncMachine> machine;
     dnc::WorkerMachine* realTime = nullptr;  // the timing report's source; null in virtual time
-    if (parser.isSet(virtualOpt)) {
+    if (profile.kind != MachineKind::Rail) {
+        machine = std::make_unique<dnc::XyVirtualMachine>(profile, scale);
+    } else if (parser.isSet(virtualOpt)) {
         machine = std::make_unique<dnc::VirtualMachine>(profile, scale, faults);
     } else {
         auto worker = std::make_unique<dnc::WorkerMachine>(profile);

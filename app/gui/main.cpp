@@ -25,6 +25,7 @@
 
 #include <functional>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 
 using namespace trilho;
@@ -172,6 +173,9 @@ int main(int argc, char* argv[]) {
         std::fprintf(stderr, "trilho: unknown language '%s' (en, pt_BR or es)\n", qPrintable(lang));
         return 2;
     }
+    // Remembered at once (the rail's screen did it on its own): a later reconnection or
+    // machine switch reopens a screen in the language last chosen, here or in a menu.
+    settings->setValue(QStringLiteral("language"), lang);
     const ui::Theme theme = ui::themeFromName(
         parser.isSet(themeOpt)
             ? parser.value(themeOpt)
@@ -239,6 +243,22 @@ int main(int argc, char* argv[]) {
         xyLink = std::make_unique<ui::XyLink>(
             std::move(runnable), device ? ui::XyLink::Drive::EventLoop : ui::XyLink::Drive::Thread);
         xyWindow = std::make_unique<ui::XyMainWindow>(*xyLink, *settings);
+        {
+            // Each XY machine keeps its own journal beside the rail's history.log.
+            const QString dataDir =
+                QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
+            QDir().mkpath(dataDir);
+            QString journalError;
+            const QString name = machine.kind == MachineKind::Plotter
+                                     ? QStringLiteral("xy_plotter")
+                                     : QStringLiteral("xy_dc_table");
+            if (!xyWindow->openJournal(dataDir + QStringLiteral("/history-%1.log").arg(name),
+                                       &journalError))
+                std::fprintf(stderr, "trilho: %s (history is not kept)\n",
+                             qPrintable(journalError));
+        }
+        // The language the operator chose last (on this screen before a reconnection too).
+        xyWindow->setLanguage(settings->value(QStringLiteral("language"), lang).toString());
         if (device)
             xyWindow->setDeviceLink(
                 device, port,
@@ -258,7 +278,19 @@ int main(int argc, char* argv[]) {
         return true;
     };
 
+    // File > Machine... on either screen: the chosen machine's screen replaces this one (the
+    // window stopped its machine first); the command line's program and --run were for the
+    // first machine only.
+    bool switched = false;
+    std::function<void(const QString&)> switchMachine;
     auto openMachine = [&](const MachineProfile& machine) -> bool {
+        const auto connectSwitch = [&](auto* w) {
+            QObject::connect(w, &std::remove_pointer_t<decltype(w)>::machineChosen, &app,
+                             [&](const QString& name) {
+                                 // After the signal returns: its sender goes with the switch.
+                                 QTimer::singleShot(0, &app, [&, name] { switchMachine(name); });
+                             });
+        };
         if (machine.kind == MachineKind::Rail) {
             railLink = std::make_unique<ui::MachineLink>(machine);
             const QString dataDir =
@@ -272,15 +304,18 @@ int main(int argc, char* argv[]) {
             railWindow->setLanguage(lang);
             railWindow->setTheme(theme);
             if (!journalError.isEmpty()) railWindow->reportJournalProblem(journalError);
-            if (parser.isSet(programOpt) && !railWindow->selectProgram(parser.value(programOpt))) {
+            connectSwitch(railWindow.get());
+            if (!switched && parser.isSet(programOpt) &&
+                !railWindow->selectProgram(parser.value(programOpt))) {
                 std::fprintf(stderr, "trilho: cannot open program '%s'\n",
                              qPrintable(parser.value(programOpt)));
                 return false;
             }
             window = railWindow.get();
         } else {
-            if (!openXy(machine, xyPort, xyBaud)) return false;
-            if (parser.isSet(programOpt) && !xyWindow->selectProgram(parser.value(programOpt))) {
+            if (!openXy(machine, switched ? QString() : xyPort, xyBaud)) return false;
+            if (!switched && parser.isSet(programOpt) &&
+                !xyWindow->selectProgram(parser.value(programOpt))) {
                 std::fprintf(stderr, "trilho: cannot open program '%s'\n",
                              qPrintable(parser.value(programOpt)));
                 return false;
@@ -336,6 +371,31 @@ int main(int argc, char* argv[]) {
             });
             waiter->start();
         }
+    };
+    switchMachine = [&](const QString& name) {
+        ProfileLoad load = loadNamedMachineProfile(name);
+        if (!load.profile) {
+            QMessageBox::warning(window, QStringLiteral("trilho"), load.error);
+            return;
+        }
+        const QByteArray geometry = window ? window->saveGeometry() : QByteArray();
+        // The language the operator chose last, on either screen (each keeps it in settings).
+        lang = settings->value(QStringLiteral("language"), lang).toString();
+        // The screens go before their links (the windows hold references to them).
+        railWindow.reset();
+        xyWindow.reset();
+        railLink.reset();
+        xyLink.reset();
+        window = nullptr;
+        switched = true;
+        machineName = name;
+        settings->setValue(QStringLiteral("machine"), machineName);
+        if (!openMachine(*load.profile)) {
+            app.exit(2);
+            return;
+        }
+        if (!geometry.isEmpty()) window->restoreGeometry(geometry);
+        window->show();
     };
     auto armExit = [&] {
         if (parser.isSet(shotOpt)) {

@@ -41,12 +41,21 @@ constexpr std::uint16_t kDiagCode = 20;        ///< MessageId + 1 of its first e
 constexpr std::uint16_t kDiagLine = 21;        ///< line of its first error, 0 none
 constexpr std::uint16_t kDiagProgram = 22;     ///< the program number that compile was for
 constexpr std::uint16_t kLaw = 23;             ///< 0 classic, 1 engineered (gains below)
-constexpr std::uint16_t kPosition = 24;        ///< float32 mm, measured
-constexpr std::uint16_t kSetpoint = 26;        ///< float32 mm
-constexpr std::uint16_t kFollowingError = 28;  ///< float32 mm, setpoint - position
-constexpr std::uint16_t kSpeed = 30;           ///< float32 mm/s, measured
+constexpr std::uint16_t kPosition = 24;        ///< float32 mm, measured (the x axis)
+constexpr std::uint16_t kSetpoint = 26;        ///< float32 mm (x)
+constexpr std::uint16_t kFollowingError = 28;  ///< float32 mm, setpoint - position (x)
+constexpr std::uint16_t kSpeed = 30;           ///< float32 mm/s, measured (x)
 constexpr std::uint16_t kFeedOverride = 32;    ///< float32, factor 0..1.5
-constexpr std::uint16_t kCount = 34;
+// The XY machines (issue 19, one frame): the same link, the Y axis after the rail's registers,
+// so that a client written for the rail reads the same addresses on every machine. Added
+// after the last address, no address changed meaning: the version stays 1.
+constexpr std::uint16_t kMachine = 34;          ///< 0 rail, 1 DC XY table, 2 XY plotter
+constexpr std::uint16_t kAxes = 35;             ///< 1 (the rail: x only) or 2 (x and y)
+constexpr std::uint16_t kYPosition = 36;        ///< float32 mm, measured; NaN on the rail
+constexpr std::uint16_t kYSetpoint = 38;        ///< float32 mm; NaN on the rail
+constexpr std::uint16_t kYFollowingError = 40;  ///< float32 mm, setpoint - position; NaN
+constexpr std::uint16_t kYSpeed = 42;           ///< float32 mm/s, measured; NaN on the rail
+constexpr std::uint16_t kCount = 44;
 }  // namespace in
 
 /// Holding registers (functions 03, 06, 16): settings, commands, the download block.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace trilho::dnc {
 
@@ -35,7 +36,8 @@ std::uint32_t mustAcknowledge(std::uint32_t active) {
 
 }  // namespace
 
-void fillInputRegisters(const ControllerStatus& s, const LinkState& link, InputImage& r) {
+void fillInputRegisters(const ControllerStatus& s, const LinkState& link, InputImage& r,
+                        MachineKind machine, const std::optional<YAxisReadout>& y) {
     r.fill(0);
     r[in::kVersion] = kProtocolVersion;
     // 10 ms of controller time per count: it stops when the servo stops.
@@ -66,6 +68,14 @@ void fillInputRegisters(const ControllerStatus& s, const LinkState& link, InputI
     putFloat(&r[in::kFollowingError], s.servo.errorMm);
     putFloat(&r[in::kSpeed], s.servo.velocityMmS);
     putFloat(&r[in::kFeedOverride], s.feedOverride);
+    r[in::kMachine] = static_cast<std::uint16_t>(machine);
+    r[in::kAxes] = y ? 2 : 1;
+    // NaN on the rail: a client that reads Y there gets "no value", never a plausible 0 mm.
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    putFloat(&r[in::kYPosition], y ? y->positionMm : none);
+    putFloat(&r[in::kYSetpoint], y ? y->setpointMm : none);
+    putFloat(&r[in::kYFollowingError], y ? y->setpointMm - y->positionMm : none);
+    putFloat(&r[in::kYSpeed], y ? y->velocityMmS : none);
 }
 
 void fillLiveHolding(const ControllerStatus& s, HoldingImage& r) {

@@ -4,8 +4,11 @@
 // timer and before each read; the tests check the encoding against register_map.h.
 #include <array>
 #include <cstdint>
+#include <optional>
 
 #include "core/dnc/register_map.h"
+#include "core/dnc/y_axis_readout.h"
+#include "core/machine/machine_kind.h"
 #include "core/machine/rail_controller.h"
 
 namespace trilho::dnc {
@@ -26,7 +29,10 @@ struct LinkState {
 using InputImage = std::array<std::uint16_t, in::kCount>;
 using HoldingImage = std::array<std::uint16_t, hold::kCount>;
 
-void fillInputRegisters(const ControllerStatus& s, const LinkState& link, InputImage& out);
+/// machine: in::kMachine's value (MachineKind); y: none on the rail (its Y registers NaN).
+void fillInputRegisters(const ControllerStatus& s, const LinkState& link, InputImage& out,
+                        MachineKind machine = MachineKind::Rail,
+                        const std::optional<YAxisReadout>& y = std::nullopt);
 /// Gains of the active law and the feed override, as the controller has them now.
 void fillLiveHolding(const ControllerStatus& s, HoldingImage& out);
 

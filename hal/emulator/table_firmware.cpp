@@ -26,8 +26,13 @@ TableFirmware::TableFirmware(const MachineProfile& profile, std::uint64_t seed, 
 
 void TableFirmware::receive(std::uint8_t byte, double nowS) {
     if (mode_ == Mode::Calibration) return;  // the open-loop program never reads the UART
-    if (have_ > 0 && nowS - lastByteS_ > kInterByteGapS) {
-        ++stats_.staleBytes;  // a byte of that set point was lost: start again with this one
+    // Inside a coordinate's pair a gap means a lost byte: start again with this one. After a
+    // whole x pair the board waits for y as long as it takes (the panel's own workflow); two
+    // bytes lost in one set point then misalign it, which the answer's echo of the set point
+    // as received tells the host (docs/protocols.md B).
+    const bool midPair = have_ % 2 == 1;
+    if (midPair && nowS - lastByteS_ > kInterByteGapS) {
+        ++stats_.staleBytes;
         have_ = 0;
     }
     lastByteS_ = nowS;

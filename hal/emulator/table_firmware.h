@@ -38,8 +38,11 @@ class TableFirmware final : public DeviceFirmware {
         SetPoints,    ///< the main program (annex 7)
         Calibration,  ///< the open-loop test program (annex 7, "lazo abierto")
     };
-    /// Bytes of one set point must follow each other within this gap, s: at 9600 bit/s four
-    /// bytes take about 4 ms; a longer silence means a byte was lost and the partial is stale.
+    /// The two bytes of one coordinate must follow each other within this gap, s: at 9600
+    /// bit/s they take about 2 ms; a longer silence means a byte was lost and the partial is
+    /// stale. Between the x pair and the y pair any gap is accepted: seed 004's LabVIEW panel
+    /// sends x and y by their own buttons, seconds apart, and its firmware waits for all four
+    /// bytes (issue 22 item 7).
     static constexpr double kInterByteGapS = 0.05;
     /// The calibration stops its motor at this count (seed 004: while (pulsos < 1300)).
     static constexpr std::uint16_t kCalibrationStopCount = 1300;

@@ -1,11 +1,15 @@
 #pragma once
 // The machine behind the DNC server: the rail's controller in real time (a ServoWorker) or in
-// virtual time (a SimSession stepped by the event loop, for tests). The server only reads
-// snapshots, sends commands and waits for their tickets; it never steps anything itself.
+// virtual time (a SimSession stepped by the event loop, for tests), or an XY machine in virtual
+// time (XyVirtualMachine), which it shows with the rail's registers and its Y axis after them. The
+// server only reads snapshots, sends commands and waits for their tickets; it never steps anything
+// itself.
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 
+#include "core/dnc/y_axis_readout.h"
 #include "core/gcode/program.h"
 #include "core/machine/rail_controller.h"
 #include "core/runtime/servo_worker.h"
@@ -39,6 +43,8 @@ class DncMachine {
     virtual bool applied(const Ticket& t) const = 0;
     virtual void drainEvents(const std::function<void(const ControllerEvent&)>& f) = 0;
     virtual const MachineProfile& profile() const = 0;
+    /// The Y axis of an XY machine (input registers 36-43); none on the rail.
+    virtual std::optional<YAxisReadout> yAxis() const { return std::nullopt; }
 };
 
 }  // namespace trilho::dnc

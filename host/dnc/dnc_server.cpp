@@ -265,7 +265,7 @@ void DncServer::refresh() {
         link_.commandResult = pending_->result;
         pending_.reset();
     }
-    fillInputRegisters(s, link_, input_);
+    fillInputRegisters(s, link_, input_, machine_.profile().kind, machine_.yAxis());
     fillLiveHolding(s, holding_);
 }
 

@@ -3,6 +3,7 @@
 `trilho-cli serve --virtual-time` on 127.0.0.1. Usage: dnc_clients.py CLI {pymodbus,mbpoll,
 refused,alarm,files,rtu,frames,bounds}. Exits 77 (ctest SKIP_RETURN_CODE) when the client is not installed.
 Every wait is on a condition with a deadline, never a fixed sleep."""
+import math
 import os
 import shutil
 import socket
@@ -16,7 +17,9 @@ import time
 IN_VERSION, IN_STATE, IN_MODE, IN_HOMED, IN_PAUSE, IN_PROGRAM, IN_FINISHED = 0, 2, 3, 4, 5, 8, 9
 IN_ALARMS, IN_ALARMS_ACK, IN_LAST_ALARM, IN_ALARM_SEQ = 10, 12, 14, 15
 IN_CMD_SEQ, IN_CMD_RESULT, IN_REMOTE, IN_DIAG_ERRORS, IN_DIAG_CODE, IN_DIAG_LINE = 16, 17, 18, 19, 20, 21
-IN_LAW, IN_POSITION, IN_SETPOINT, IN_SPEED, IN_COUNT = 23, 24, 26, 30, 34
+IN_LAW, IN_POSITION, IN_SETPOINT, IN_SPEED, IN_COUNT = 23, 24, 26, 30, 44
+# 34-43: the machine's kind, its axes and the XY machines' Y axis (issue 19); NaN Y on the rail
+IN_MACHINE, IN_AXES, IN_Y_POSITION = 34, 35, 36
 H_KP, H_FEED, H_COMMAND, H_DL_NUMBER, H_DL_LENGTH, H_DL_DATA, H_COUNT = 0, 6, 8, 16, 17, 18, 18 + 4096
 MANUAL, AUTO_IDLE, HOMING, RUNNING, WAITING, PAUSED, ALARM = 0, 1, 2, 3, 4, 5, 6
 START, HOLD, CONTINUE, STOP, ACK, AUTO, MANUAL_CMD, COMMIT = 1, 2, 3, 4, 5, 6, 7, 8
@@ -166,6 +169,8 @@ def run_pymodbus(cli):
                   "input register past the map -> illegal data address")
             check(p.exc(p.write(H_COUNT + 5, [1])) == 2, "holding register past the map -> illegal address")
             check(p.ir(IN_VERSION)[0] == 1, "the server goes on after exceptions")
+            check(p.ir(IN_MACHINE)[0] == 0 and p.ir(IN_AXES)[0] == 1, "the rail: machine 0, one axis")
+            check(math.isnan(f32(*p.ir(IN_Y_POSITION, 2))), "the rail's y position is NaN")
             # feed override
             check(not p.write(H_FEED, regs_of(1.0)).isError(), "feed override 1.0 written")
             # download: a bad program is refused with its diagnostics, nothing saved
@@ -636,8 +641,9 @@ def run_frames(cli):
             # Function 16 whose byte count disagrees with its quantity: exception 03.
             r = exchange(port, mbap(struct.pack(">BHHB", 16, 0, 2, 2) + b"\0\0"))
             check(r is not None and r[7:9] == bytes([0x90, 3]), f"a malformed write: exception 03 ({r!r})")
-            r = exchange(port, mbap(struct.pack(">BHH", 4, 30, 10)))
-            check(r is not None and r[7:9] == bytes([0x84, 2]), "input registers 30..39: exception 02")
+            r = exchange(port, mbap(struct.pack(">BHH", 4, IN_COUNT - 4, 10)))
+            check(r is not None and r[7:9] == bytes([0x84, 2]),
+                  f"input registers {IN_COUNT - 4}..{IN_COUNT + 5}: exception 02")
             r = exchange(port, mbap(struct.pack(">BHH", 4, 0, 200)))
             check(r is not None and r[7:9] == bytes([0x84, 3]), "200 registers at once: exception 03")
             r = exchange(port, mbap(struct.pack(">BHH", 4, 0, 0)))

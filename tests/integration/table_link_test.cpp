@@ -271,3 +271,45 @@ TEST(TableFirmware, AStalePartialIsDroppedAndARepeatDuringAMoveIsAnsweredOnce) {
               (std::vector<std::uint8_t>{table_wire::kAck, 0, 30, 0, 40, 0, 30, 0, 40, 146}));
     EXPECT_LT(t - sent, 0.05);
 }
+
+TEST(TableFirmware, XAndYSentSecondsApartAreOneSetPointAsOnTheSeedsPanel) {
+    // Seed 004's LabVIEW panel sends x and y by their own buttons (issue 22 item 7): the y
+    // pair may come seconds after the x pair, and the board still runs (x, y) and answers.
+    TableFirmware device(MachineProfile::xyDcTable(), 7);
+    double t = 0.0;
+    std::vector<std::uint8_t> out;
+    auto feed = [&](std::uint8_t a, std::uint8_t b) {
+        device.receive(a, t);
+        t += 0.00104;
+        device.receive(b, t);
+        t += 0.00104;
+    };
+    auto run = [&](double s) {
+        for (const double end = t + s; t < end; t += 0.001) {
+            device.step(0.001, t);
+            for (std::uint8_t b : device.takeOutput())
+                out.push_back(b);
+        }
+    };
+    const table_wire::SetPoint sp = table_wire::encodeSetPoint(60, 20);
+    feed(sp[0], sp[1]);  // X button
+    run(3.0);            // the operator types y
+    EXPECT_EQ(device.stats().setPoints, 0u);
+    EXPECT_FALSE(device.moving());
+    feed(sp[2], sp[3]);  // Y button
+    EXPECT_EQ(device.stats().setPoints, 1u);
+    EXPECT_EQ(device.stats().staleBytes, 0u);
+    EXPECT_TRUE(device.moving());
+    run(5.0);
+    EXPECT_EQ(out, (std::vector<std::uint8_t>{table_wire::kAck, 0, 60, 0, 20, 0, 0, 0, 0, 86}));
+    EXPECT_NEAR(device.table().positionMm(0), 60.0, device.table().axis(0).mmPerCount());
+    EXPECT_NEAR(device.table().positionMm(1), 20.0, device.table().axis(1).mmPerCount());
+    // A gap inside a pair is still a lost byte: that partial is dropped.
+    const table_wire::SetPoint next = table_wire::encodeSetPoint(10, 10);
+    device.receive(next[0], t);
+    t += 0.2;
+    feed(next[0], next[1]);
+    feed(next[2], next[3]);
+    EXPECT_EQ(device.stats().staleBytes, 1u);
+    EXPECT_EQ(device.stats().setPoints, 2u);
+}

@@ -1,6 +1,8 @@
 // The DNC register map's encoding and the checks on writes (core/dnc).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/dnc/register_map.h"
 #include "core/dnc/status_registers.h"
 #include "core/dnc/write_check.h"
@@ -80,6 +82,36 @@ TEST(DncRegisters, StatusEncoding) {
     EXPECT_EQ(joinFloat(r[in::kPosition], r[in::kPosition + 1]), -250.5f);
     EXPECT_EQ(joinFloat(r[in::kSpeed], r[in::kSpeed + 1]), 12.25f);
     EXPECT_EQ(joinFloat(r[in::kFeedOverride], r[in::kFeedOverride + 1]), 0.5f);
+}
+
+TEST(DncRegisters, TheYAxisFollowsTheRailsMapOnTheXyMachines) {
+    // Issue 19, one frame: registers 34-43 say the machine and its Y axis; the rail's Y is NaN
+    // (no value), never a plausible 0 mm; nothing below 34 moved.
+    ControllerStatus s;
+    s.servo.positionMm = 120.0;
+    LinkState link;
+    InputImage rail{};
+    fillInputRegisters(s, link, rail);
+    EXPECT_EQ(rail[in::kMachine], 0);
+    EXPECT_EQ(rail[in::kAxes], 1);
+    EXPECT_TRUE(std::isnan(joinFloat(rail[in::kYPosition], rail[in::kYPosition + 1])));
+    EXPECT_TRUE(std::isnan(joinFloat(rail[in::kYSpeed], rail[in::kYSpeed + 1])));
+    InputImage table{};
+    YAxisReadout y;
+    y.positionMm = 80.25;
+    y.setpointMm = 81.0;
+    y.velocityMmS = -3.5;
+    fillInputRegisters(s, link, table, MachineKind::DcTable, y);
+    EXPECT_EQ(table[in::kMachine], 1);
+    EXPECT_EQ(table[in::kAxes], 2);
+    EXPECT_EQ(joinFloat(table[in::kPosition], table[in::kPosition + 1]), 120.0f);
+    EXPECT_EQ(joinFloat(table[in::kYPosition], table[in::kYPosition + 1]), 80.25f);
+    EXPECT_EQ(joinFloat(table[in::kYSetpoint], table[in::kYSetpoint + 1]), 81.0f);
+    EXPECT_EQ(joinFloat(table[in::kYFollowingError], table[in::kYFollowingError + 1]), 0.75f);
+    EXPECT_EQ(joinFloat(table[in::kYSpeed], table[in::kYSpeed + 1]), -3.5f);
+    EXPECT_EQ(in::kYSpeed + 2, in::kCount);
+    for (std::uint16_t i = 0; i < in::kMachine; ++i)
+        EXPECT_EQ(rail[i], table[i]) << "register " << i;
 }
 
 TEST(DncRegisters, GainsInRangeAccepted) {

@@ -1,21 +1,44 @@
 // The XY machines' screens (issue 11), offscreen, in virtual time: the link runs without its
 // thread and each test advances the machine itself, so every figure is repeatable.
+#include <QAction>
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QFileInfo>
 #include <QLabel>
 #include <QListWidget>
+#include <QMap>
+#include <QModbusReply>
+#include <QModbusTcpClient>
 #include <QProcess>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSettings>
+#include <QSignalSpy>
+#include <QSpinBox>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QToolButton>
+#include <QWheelEvent>
+#include <cmath>
 
+#include "core/dnc/register_map.h"
 #include "core/gcode/compiler.h"
 #include "core/machine/machine_profile.h"
+#include "host/dnc/dnc_server.h"
+#include "host/dnc/modbus_tcp_listener.h"
+#include "ui/dnc_link.h"
+#include "ui/dnc_settings.h"
+#include "ui/keys_dialog.h"
+#include "ui/machine_link.h"
+#include "ui/main_window.h"
 #include "ui/start_screen.h"
 #include "ui/xy/dc_table_panel.h"
 #include "ui/xy/plotter_panel.h"
@@ -23,6 +46,7 @@
 #include "ui/xy/xy_main_window.h"
 #include "ui/xy/xy_plots.h"
 #include "ui/xy/xy_session_runnable.h"
+#include "ui/xy/xy_simulation_panel.h"
 
 using namespace trilho;
 using namespace trilho::ui;
@@ -56,6 +80,315 @@ bool advanceUntil(XyLink& link, F done, double maxS) {
 class XyScreensTest : public QObject {
     Q_OBJECT
   private slots:
+
+    void xyResetLayoutAndKeysPageAsTheRails() {
+        // Windows > Reset layout puts the docks back; Help > Keys lists the XY screen's keys
+        // (F9 and the override too), without the rail's < and >.
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_plotter.json"));
+        XyMainWindow w(*link, settings);
+        w.resize(1024, 738);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto* plots = w.findChild<QDockWidget*>(QStringLiteral("plotDock"));
+        auto* history = w.findChild<QDockWidget*>(QStringLiteral("historyDock"));
+        auto* simulation = w.findChild<QDockWidget*>(QStringLiteral("simulationDock"));
+        QVERIFY(plots && history && simulation);
+        plots->setFloating(true);
+        history->hide();
+        w.resetLayoutAction()->trigger();
+        QVERIFY(!plots->isFloating());
+        QVERIFY(history->isVisibleTo(&w));
+        QVERIFY(simulation->isVisibleTo(&w));
+        QCOMPARE(w.dockWidgetArea(plots), Qt::BottomDockWidgetArea);
+        KeysDialog keys(w.keyedActions(), &w, KeysDialog::Machine::Xy);
+        QStringList listed;
+        for (int r = 0; r < keys.table()->rowCount(); ++r)
+            listed << keys.table()->item(r, 0)->text();
+        QVERIFY(listed.contains(QKeySequence(Qt::Key_F9).toString(QKeySequence::NativeText)));
+        QVERIFY(
+            listed.contains(QKeySequence(Qt::CTRL | Qt::Key_0).toString(QKeySequence::NativeText)));
+        QVERIFY(!listed.contains(QStringLiteral("<  ,")));
+    }
+
+    void machineSwitchAsksFirstWhenSomethingMoves() {
+        // Issue 19: File > Machine... switches inside the program, asking first when the
+        // machine moves (and stopping it); at rest it asks nothing.
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        QStringList asked;
+        bool answer = false;
+        w.setConfirmer([&](const QString&, const QString& text) {
+            asked << text;
+            return answer;
+        });
+        QSignalSpy chosen(&w, &XyMainWindow::machineChosen);
+        w.tablePanel()->xBox()->setValue(250);
+        w.tablePanel()->yBox()->setValue(250);
+        w.tablePanel()->sendButton()->click();
+        link->advance(0.2);
+        QVERIFY(link->status().motionBusy);
+        QVERIFY(!w.switchTo(MachineKind::Plotter));  // No: nothing changes
+        QCOMPARE(asked.size(), 1);
+        QVERIFY(asked.front().contains(QStringLiteral("DC-motor XY table is moving")));
+        QCOMPARE(chosen.size(), 0);
+        link->advance(0.1);
+        QVERIFY(link->status().motionBusy);
+        answer = true;
+        QVERIFY(w.switchTo(MachineKind::Rail));
+        QCOMPARE(chosen.size(), 1);
+        QCOMPARE(chosen.at(0).at(0).toString(), QStringLiteral("rail"));
+        QVERIFY(advanceUntil(
+            *link, [&] { return !link->status().motionBusy; }, 5.0));
+        QVERIFY(link->status().sample.x.positionMm < 200.0);  // stopped on the way
+        asked.clear();
+        QVERIFY(w.switchTo(MachineKind::Plotter));  // at rest: no question
+        QVERIFY(asked.isEmpty());
+        QCOMPARE(chosen.at(1).at(0).toString(), QStringLiteral("xy_plotter"));
+
+        // The rail's screen the same way: at rest it switches at once.
+        MachineLink railLink(MachineProfile::rail());
+        MainWindow rail(railLink, settings);
+        rail.setConfirmer([&](const QString&, const QString& text) {
+            asked << text;
+            return false;
+        });
+        QSignalSpy railChosen(&rail, &MainWindow::machineChosen);
+        QVERIFY(rail.switchTo(MachineKind::DcTable));
+        QVERIFY(asked.isEmpty());
+        QCOMPARE(railChosen.at(0).at(0).toString(), QStringLiteral("xy_dc_table"));
+    }
+
+    void xySimulationDockArmsThePlantsFaultsAndTheSafetyBarSaysSo() {
+        // Issue 19, one frame (and item 5): each XY plant's faults in a Simulation dock; a
+        // value changes only by deliberate input, and an armed fault shows on the safety bar.
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        w.setConfirmer([](const QString&, const QString&) { return true; });
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(!w.faultArmedShown());
+        w.simulation()->jamX()->click();
+        QVERIFY(w.faultArmedShown());
+        QVERIFY(w.faultArmedLabel()->toolTip().contains(QStringLiteral("x axis jammed")));
+        w.tablePanel()->xBox()->setValue(100);
+        w.tablePanel()->yBox()->setValue(0);
+        w.tablePanel()->sendButton()->click();
+        // The jammed axis does not follow: the controller says so with an alarm.
+        QVERIFY(advanceUntil(
+            *link, [&] { return link->status().activeAlarms != 0; }, 30.0));
+        QVERIFY2(link->status().sample.x.positionMm < 5.0,
+                 qPrintable(QString::number(link->status().sample.x.positionMm)));
+        w.simulation()->clearAll()->click();
+        QVERIFY(!w.faultArmedShown());
+
+        // The plotter's number box: a wheel over it without the focus changes nothing.
+        auto plotterLink = virtualLink(shipped("xy_plotter.json"));
+        XyMainWindow p(*plotterLink, settings);
+        QSpinBox* lost = p.simulation()->lostStepsAbove();
+        QVERIFY(lost != nullptr);
+        QWheelEvent wheel(QPointF(5, 5), QPointF(5, 5), QPoint(), QPoint(0, 240), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(lost, &wheel);
+        QCOMPARE(lost->value(), 0);
+        QVERIFY(!p.faultArmedShown());
+        lost->setValue(300);  // typed and confirmed
+        QVERIFY(p.faultArmedShown());
+    }
+
+    void xyHistoryIsKeptInAJournal() {
+        // Issue 19, one frame: the XY screens' history is journalled as the rail's.
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        const QString path = dir.filePath(QStringLiteral("history-xy_dc_table.log"));
+        QVERIFY(w.openJournal(path));
+        w.estopButton()->click();
+        link->advance(0.1);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray text = f.readAll();
+        QVERIFY2(text.contains("\talarm\t9\t"), text.constData());
+    }
+
+    void xyScreenServesTheDncLinkWithItsYAxis() {
+        // Issue 19, one frame: Options > DNC on an XY screen serves the same link as the
+        // rail's, over the screen's own machine; a Modbus client reads the machine and its Y.
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        w.setConfirmer([](const QString&, const QString&) { return true; });
+        QVERIFY(!w.remoteAction()->isEnabled());
+        DncSettings s;
+        s.port = 0;  // any free port
+        s.programsDir = dir.filePath(QStringLiteral("programs"));
+        QString error;
+        QVERIFY2(w.dncLink()->start(s, &error), qPrintable(error));
+        QVERIFY(w.remoteAction()->isEnabled());
+        QVERIFY(!w.remoteAction()->isChecked());  // consent is given anew
+        w.tablePanel()->xBox()->setValue(30);
+        w.tablePanel()->yBox()->setValue(70);
+        w.tablePanel()->sendButton()->click();
+        link->advance(0.1);  // the command reaches the machine
+        QVERIFY(link->status().motionBusy);
+        QVERIFY(advanceUntil(
+            *link, [&] { return !link->status().motionBusy; }, 30.0));
+        QModbusTcpClient client;
+        client.setConnectionParameter(QModbusDevice::NetworkAddressParameter,
+                                      QStringLiteral("127.0.0.1"));
+        client.setConnectionParameter(QModbusDevice::NetworkPortParameter,
+                                      w.dncLink()->server()->tcpListener()->port());
+        client.setTimeout(3000);
+        client.setNumberOfRetries(0);
+        QVERIFY(client.connectDevice());
+        QTRY_COMPARE_WITH_TIMEOUT(client.state(), QModbusDevice::ConnectedState, 5000);
+        std::unique_ptr<QModbusReply> r(client.sendReadRequest(
+            QModbusDataUnit(QModbusDataUnit::InputRegisters, 0, dnc::in::kCount), 1));
+        QVERIFY(r != nullptr);
+        QTRY_VERIFY_WITH_TIMEOUT(r->isFinished(), 5000);
+        QCOMPARE(r->error(), QModbusDevice::NoError);
+        const QModbusDataUnit u = r->result();
+        QCOMPARE(u.value(dnc::in::kMachine), quint16(1));
+        QCOMPARE(u.value(dnc::in::kAxes), quint16(2));
+        const auto at = [&u](std::uint16_t a) {
+            return dnc::joinFloat(u.value(a), u.value(a + 1));
+        };
+        QVERIFY(std::abs(at(dnc::in::kPosition) - 30.0f) < 0.5f);
+        QVERIFY(std::abs(at(dnc::in::kYPosition) - 70.0f) < 0.5f);
+        client.disconnectDevice();
+        w.dncLink()->stop();
+        QVERIFY(!w.remoteAction()->isEnabled());
+    }
+
+    void frameParityOnAllThreeMachines() {
+        // Issue 19, one frame: the rail's and both XY screens offer the same actions, by name,
+        // with the same keys.
+        const QStringList frame{QStringLiteral("selectProgram"), QStringLiteral("machine"),
+                                QStringLiteral("exit"),          QStringLiteral("manual"),
+                                QStringLiteral("automatic"),     QStringLiteral("home"),
+                                QStringLiteral("cycleStart"),    QStringLiteral("feedHold"),
+                                QStringLiteral("continue"),      QStringLiteral("stop"),
+                                QStringLiteral("singleBlock"),   QStringLiteral("overrideDown"),
+                                QStringLiteral("overrideUp"),    QStringLiteral("overrideReset"),
+                                QStringLiteral("language_en"),   QStringLiteral("language_pt_BR"),
+                                QStringLiteral("language_es"),   QStringLiteral("resetLayout"),
+                                QStringLiteral("keys"),          QStringLiteral("dnc"),
+                                QStringLiteral("remote")};
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        MachineLink railLink(MachineProfile::rail());
+        MainWindow rail(railLink, settings);
+        rail.setConfirmer([](const QString&, const QString&) { return false; });
+        auto keysOf = [&](QWidget& w) {
+            QMap<QString, QKeySequence> keys;
+            for (const QString& name : frame) {
+                const QList<QAction*> found = w.findChildren<QAction*>(name);
+                if (found.size() != 1) {
+                    qWarning("%s: %lld actions named %s", w.metaObject()->className(),
+                             static_cast<long long>(found.size()), qPrintable(name));
+                    continue;
+                }
+                keys[name] = found.front()->shortcut();
+            }
+            return keys;
+        };
+        const QMap<QString, QKeySequence> railKeys = keysOf(rail);
+        QCOMPARE(railKeys.size(), frame.size());
+        QCOMPARE(railKeys[QStringLiteral("cycleStart")], QKeySequence(Qt::Key_F5));
+        QCOMPARE(railKeys[QStringLiteral("home")], QKeySequence(Qt::CTRL | Qt::Key_Home));
+        for (const char* machine : {"xy_dc_table.json", "xy_plotter.json"}) {
+            auto link = virtualLink(shipped(machine));
+            XyMainWindow w(*link, settings);
+            w.setConfirmer([](const QString&, const QString&) { return false; });
+            const QMap<QString, QKeySequence> keys = keysOf(w);
+            for (const QString& name : frame)
+                QVERIFY2(
+                    keys.contains(name) && keys[name] == railKeys[name],
+                    qPrintable(QStringLiteral("%1: %2 is %3, the rail's %4")
+                                   .arg(QLatin1String(machine), name, keys.value(name).toString(),
+                                        railKeys[name].toString())));
+            // The keys page lists the run keys and Home, as the rail's.
+            QList<QKeySequence> listed;
+            for (QAction* a : w.keyedActions())
+                listed << a->shortcut();
+            for (const char* name :
+                 {"cycleStart", "feedHold", "continue", "stop", "singleBlock", "overrideDown",
+                  "overrideUp", "overrideReset", "home", "remote"})
+                QVERIFY(listed.contains(railKeys[QString::fromLatin1(name)]));
+        }
+    }
+
+    void xyFeedOverrideKeysAndSingleBlockReachTheMachine() {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        w.setConfirmer([](const QString&, const QString&) { return true; });
+        w.findChild<QAction*>(QStringLiteral("overrideDown"))->trigger();
+        w.findChild<QAction*>(QStringLiteral("overrideDown"))->trigger();
+        link->advance(0.05);
+        QCOMPARE(link->status().feedOverride, 0.8);
+        QVERIFY(w.overrideLabel()->text().contains(QStringLiteral("80")));
+        w.findChild<QAction*>(QStringLiteral("overrideReset"))->trigger();
+        w.singleBlockAction()->trigger();
+        link->advance(0.05);
+        QCOMPARE(link->status().feedOverride, 1.0);
+        QVERIFY(link->status().singleBlock);
+    }
+
+    void workAreaPaintsOnlyTheNewSegment() {
+        // Issue 19, the cost: the followed path was redrawn whole (up to 100,000 lines) at
+        // 50 Hz; now a new point paints one segment into the cached picture.
+        WorkAreaView v;
+        v.resize(500, 500);
+        v.setArea(QRectF(0, 0, 300, 300), {0, 0});
+        v.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&v));
+        for (int i = 0; i < 5000; ++i)
+            v.addFollowed({150 + 100 * std::cos(i * 0.01), 150 + 100 * std::sin(i * 0.01)}, true);
+        v.grab();
+        const int rebuilds = v.cacheRebuilds();
+        const std::size_t painted = v.segmentsPainted();
+        QVERIFY(v.followedCount() > 1000);
+        QCOMPARE(painted, v.followedCount() - 1);
+        v.addFollowed({10, 10}, true);
+        v.setTool({10, 10}, PenState::Down);
+        v.grab();
+        QCOMPARE(v.segmentsPainted(), painted + 1);
+        QCOMPARE(v.cacheRebuilds(), rebuilds);
+        v.resize(600, 500);  // a new size draws the picture again, once
+        v.grab();
+        QCOMPARE(v.cacheRebuilds(), rebuilds + 1);
+    }
+
+    void plotsRedrawOnlyOnceASecondWhileNothingMoves() {
+        XyPlots plots;
+        XySample s;
+        s.x.positionMm = 10;
+        s.y.positionMm = 20;
+        double t = 0;
+        for (; t < 1.0; t += 0.005)
+            plots.addSample(t, s);
+        const int drawn = plots.replotCount();
+        QVERIFY(drawn <= 2);
+        for (; t < 30.0; t += 0.005)
+            plots.addSample(t, s);  // half a minute at rest: once a second, not 25 times
+        QVERIFY(plots.replotCount() <= drawn + 30);
+        QVERIFY(plots.replotCount() >= drawn + 28);
+        const int atRest = plots.replotCount();
+        QVERIFY(plots.pointCount() < 20.5 / 0.005);  // the window's bound holds at rest too
+        s.x.positionMm = 11;                         // it moves: drawn at the next 25 Hz tick
+        plots.addSample(t, s);
+        plots.addSample(t + 0.05, s);
+        QCOMPARE(plots.replotCount(), atRest + 1);
+    }
     void planSplitsTravelFromDrawing() {
         CompileOptions o;
         o.machine = MachineProfile::xyDcTable().limits;
@@ -88,6 +421,59 @@ class XyScreensTest : public QObject {
         QVERIFY(v.followedCount() > WorkAreaView::kMaxFollowed / 2);
     }
 
+    void dcTablePanelSendsXAndYByTheirOwnButtonsAndTheLampStartsAndStops() {
+        // Issue 22 item 7, the seed's LabVIEW panel: X and Y by their own buttons, the move
+        // once both were sent; the lamp red stopped, green running, a click stops or starts.
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        w.setConfirmer([](const QString&, const QString&) { return true; });
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        DcTablePanel* panel = w.tablePanel();
+        QVERIFY(!panel->running());
+        QVERIFY(panel->runIndicator()->styleSheet().contains(QStringLiteral("#d0202a")));  // red
+        // The counter left of the box steps it by 1 mm.
+        panel->xBox()->setValue(59);
+        panel->counter(0, true)->click();
+        QCOMPARE(panel->xBox()->value(), 60.0);
+        QVERIFY(panel->xBox()->x() > panel->counter(0, true)->x());
+        panel->yBox()->setValue(40);
+        panel->sendXButton()->click();
+        link->advance(2.0);  // the operator takes seconds to type y
+        QVERIFY(!link->status().motionBusy);
+        QVERIFY(panel->pendingLabel()->isVisibleTo(panel));
+        panel->sendYButton()->click();
+        link->advance(0.1);
+        QVERIFY(link->status().motionBusy);
+        QVERIFY(panel->running());
+        QVERIFY(panel->runIndicator()->styleSheet().contains(QStringLiteral("#1fbf3f")));  // green
+        QVERIFY(advanceUntil(
+            *link, [&] { return !link->status().motionBusy; }, 30.0));
+        QVERIFY(std::abs(link->status().sample.x.positionMm - 60.0) < 0.5);
+        QVERIFY(std::abs(link->status().sample.y.positionMm - 40.0) < 0.5);
+        // The lamp starts the table towards the boxes' set point, and stops it.
+        panel->xBox()->setValue(250);
+        panel->yBox()->setValue(250);
+        panel->runIndicator()->click();
+        link->advance(0.5);
+        QVERIFY(link->status().motionBusy);
+        panel->runIndicator()->click();
+        QVERIFY(advanceUntil(
+            *link, [&] { return !link->status().motionBusy; }, 5.0));
+        QVERIFY(link->status().sample.x.positionMm < 200.0);
+        QCOMPARE(link->status().state, ControllerState::Manual);
+        // The serial settings are editable: Connect asks for that port and speed.
+        QSignalSpy chosen(&w, &XyMainWindow::connectionChosen);
+        panel->portBox()->setEditText(QStringLiteral("/dev/ttyUSB7"));
+        panel->baudBox()->setCurrentIndex(panel->baudBox()->findData(19200));
+        panel->connectButton()->click();
+        QCOMPARE(chosen.size(), 1);
+        QCOMPARE(chosen.at(0).at(0).toString(), QStringLiteral("/dev/ttyUSB7"));
+        QCOMPARE(chosen.at(0).at(1).toInt(), 19200);
+    }
+
     void dcTableRunsAProgramAndDrawsWhatItFollowed() {
         QTemporaryDir dir;
         QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
@@ -98,7 +484,7 @@ class XyScreensTest : public QObject {
         w.show();
         QVERIFY(w.tablePanel() != nullptr);
         QVERIFY(w.plotterPanel() == nullptr);
-        QVERIFY(!w.tablePanel()->serialBox()->isEnabled());  // no serial backend yet
+        QVERIFY(w.tablePanel()->serialBox()->isEnabled());  // port and speed editable
         QVERIFY(w.selectProgram(QStringLiteral(TRILHO_PROGRAMS_DIR "/mesa_xy_quadrado.G")));
         QVERIFY(!w.workArea()->plannedPath().empty());
         QVERIFY(w.startButton()->isEnabled());

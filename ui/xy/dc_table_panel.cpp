@@ -4,9 +4,12 @@
 #include <QDoubleSpinBox>
 #include <QEvent>
 #include <QFormLayout>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QSerialPortInfo>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 namespace trilho {
@@ -15,51 +18,120 @@ namespace ui {
 DcTablePanel::DcTablePanel(QWidget* parent) : QGroupBox(parent) {
     auto makeBox = [this] {
         auto* b = new QDoubleSpinBox(this);
-        b->setDecimals(2);
+        b->setDecimals(0);  // the board takes whole mm (two bytes per axis)
         b->setSuffix(QStringLiteral(" mm"));
         b->setKeyboardTracking(false);
+        // The counter is the panel's own arrows, left of the box (the LabVIEW control's).
+        b->setButtonSymbols(QAbstractSpinBox::NoButtons);
         return b;
     };
     x_ = makeBox();
     y_ = makeBox();
-    xLabel_ = new QLabel(this);
-    yLabel_ = new QLabel(this);
+    x_->setObjectName(QStringLiteral("dcTableX"));
+    y_->setObjectName(QStringLiteral("dcTableY"));
     send_ = new QPushButton(this);
     send_->setObjectName(QStringLiteral("dcTableSend"));
-    run_ = new QLabel(this);
-    run_->setFixedSize(18, 18);
+    sendX_ = new QPushButton(this);
+    sendX_->setObjectName(QStringLiteral("dcTableSendX"));
+    sendY_ = new QPushButton(this);
+    sendY_->setObjectName(QStringLiteral("dcTableSendY"));
+    auto* points = new QGridLayout;
+    QDoubleSpinBox* boxes[2] = {x_, y_};
+    QPushButton* sends[2] = {sendX_, sendY_};
+    for (int axis = 0; axis < 2; ++axis) {
+        auto* arrows = new QVBoxLayout;
+        arrows->setSpacing(0);
+        for (const bool up : {true, false}) {
+            auto* b = new QToolButton(this);
+            b->setArrowType(up ? Qt::UpArrow : Qt::DownArrow);
+            b->setAutoRepeat(true);
+            b->setFixedSize(22, 13);
+            b->setFocusPolicy(Qt::NoFocus);
+            QDoubleSpinBox* box = boxes[axis];
+            connect(b, &QToolButton::clicked, box, [box, up] { box->stepBy(up ? 1 : -1); });
+            counters_[axis][up ? 0 : 1] = b;
+            arrows->addWidget(b);
+        }
+        points->addLayout(arrows, axis, 0);
+        points->addWidget(boxes[axis], axis, 1);
+        points->addWidget(sends[axis], axis, 2);
+    }
+    points->setColumnStretch(1, 1);
+    pending_ = new QLabel(this);
+    pending_->setObjectName(QStringLiteral("dcTablePending"));
+    pending_->setWordWrap(true);
+
+    run_ = new QToolButton(this);
+    run_->setObjectName(QStringLiteral("dcTableLamp"));
+    run_->setFixedSize(22, 22);
+    run_->setCursor(Qt::PointingHandCursor);
     runLabel_ = new QLabel(this);
-    auto* points = new QFormLayout;
-    points->addRow(xLabel_, x_);
-    points->addRow(yLabel_, y_);
     auto* runRow = new QHBoxLayout;
     runRow->addWidget(run_);
     runRow->addWidget(runLabel_, 1);
 
     serial_ = new QGroupBox(this);
     port_ = new QComboBox(serial_);
-    port_->addItem(QStringLiteral("COM1"));
+    port_->setEditable(true);   // a pseudo-terminal of trilho-device is not listed by the system
+    port_->addItem(QString());  // the simulated machine; its text in retranslate()
+    for (const QSerialPortInfo& info : QSerialPortInfo::availablePorts())
+        port_->addItem(info.systemLocation());
     baud_ = new QComboBox(serial_);
-    baud_->addItem(QStringLiteral("9600"));
+    for (int b : {9600, 19200, 38400, 57600, 115200})
+        baud_->addItem(QString::number(b), b);
     portLabel_ = new QLabel(serial_);
     baudLabel_ = new QLabel(serial_);
     frameLabel_ = new QLabel(QStringLiteral("8N1"), serial_);
+    connect_ = new QPushButton(serial_);
+    connect_->setObjectName(QStringLiteral("dcTableConnect"));
     auto* serialForm = new QFormLayout(serial_);
     serialForm->addRow(portLabel_, port_);
     serialForm->addRow(baudLabel_, baud_);
-    serialForm->addRow(QString(), frameLabel_);
-    serial_->setEnabled(false);  // the serial backend comes later; the table is simulated
+    serialForm->addRow(frameLabel_, connect_);
 
     auto* v = new QVBoxLayout(this);
     v->addLayout(points);
+    v->addWidget(pending_);
     v->addWidget(send_);
     v->addLayout(runRow);
     v->addWidget(serial_);
     v->addStretch();
-    connect(send_, &QPushButton::clicked, this,
-            [this] { emit sendRequested(x_->value(), y_->value()); });
-    setRunning(false);
+    connect(send_, &QPushButton::clicked, this, [this] {
+        sentX_.reset(), sentY_.reset();
+        retranslate();
+        emit sendRequested(x_->value(), y_->value());
+    });
+    connect(sendX_, &QPushButton::clicked, this, [this] { sent(0); });
+    connect(sendY_, &QPushButton::clicked, this, [this] { sent(1); });
+    connect(run_, &QToolButton::clicked, this, [this] {
+        if (running_)
+            emit stopRequested();
+        else if (send_->isEnabled())
+            send_->click();  // start: towards the set point in the boxes
+    });
+    connect(connect_, &QPushButton::clicked, this, [this] {
+        const bool simulated =
+            port_->currentIndex() == 0 && port_->currentText() == port_->itemText(0);
+        emit connectRequested(simulated ? QString() : port_->currentText().trimmed(),
+                              baud_->currentData().toInt());
+    });
+    showLamp();
     retranslate();
+}
+
+void DcTablePanel::sent(int axis) {
+    // As the board: it waits for both coordinates, however far apart they come.
+    (axis == 0 ? sentX_ : sentY_) = (axis == 0 ? x_ : y_)->value();
+    if (sentX_ && sentY_) {
+        const double x = *sentX_, y = *sentY_;
+        sentX_.reset(), sentY_.reset();
+        emit sendRequested(x, y);
+    }
+    retranslate();
+}
+
+QToolButton* DcTablePanel::counter(int axis, bool up) const {
+    return counters_[axis == 0 ? 0 : 1][up ? 0 : 1];
 }
 
 void DcTablePanel::setArea(double xMin, double xMax, double yMin, double yMax) {
@@ -68,17 +140,34 @@ void DcTablePanel::setArea(double xMin, double xMax, double yMin, double yMax) {
 }
 
 void DcTablePanel::setRunning(bool running) {
+    // Called 50 times a second: a style sheet set again costs a re-polish (issue 19, the cost).
+    if (lampShown_ && running == running_) return;
     running_ = running;
-    // The LabVIEW panel's round LED: green while the table moves.
-    run_->setStyleSheet(running ? QStringLiteral("background:#1fbf3f;border-radius:9px;"
-                                                 "border:1px solid #0a5a1a;")
-                                : QStringLiteral("background:#5a5a5a;border-radius:9px;"
-                                                 "border:1px solid #202020;"));
+    showLamp();
     retranslate();
 }
 
+void DcTablePanel::showLamp() {
+    lampShown_ = true;
+    // The LabVIEW panel's round LED: green while the table moves, red while it is stopped.
+    run_->setStyleSheet(running_ ? QStringLiteral("QToolButton{background:#1fbf3f;"
+                                                  "border-radius:11px;border:1px solid #0a5a1a;}")
+                                 : QStringLiteral("QToolButton{background:#d0202a;"
+                                                  "border-radius:11px;border:1px solid #5a0a0a;}"));
+}
+
 void DcTablePanel::setSendEnabled(bool on) {
-    send_->setEnabled(on);
+    for (QPushButton* b : {send_, sendX_, sendY_})
+        if (b->isEnabled() != on) b->setEnabled(on);
+}
+
+void DcTablePanel::setSerial(const QString& port, int baud) {
+    if (port.isEmpty())
+        port_->setCurrentIndex(0);
+    else
+        port_->setCurrentText(port);
+    const int at = baud_->findData(baud);
+    if (at >= 0) baud_->setCurrentIndex(at);
 }
 
 void DcTablePanel::changeEvent(QEvent* e) {
@@ -88,16 +177,21 @@ void DcTablePanel::changeEvent(QEvent* e) {
 
 void DcTablePanel::retranslate() {
     setTitle(tr("Set point"));
-    xLabel_->setText(tr("X set point"));
-    yLabel_->setText(tr("Y set point"));
-    send_->setText(tr("&Send"));
+    sendX_->setText(tr("Send &X"));
+    sendY_->setText(tr("Send &Y"));
+    send_->setText(tr("&Send X and Y"));
+    pending_->setText(sentX_   ? tr("X %1 mm sent: send Y to move.").arg(*sentX_, 0, 'f', 0)
+                      : sentY_ ? tr("Y %1 mm sent: send X to move.").arg(*sentY_, 0, 'f', 0)
+                               : QString());
+    pending_->setVisible(sentX_ || sentY_);
     runLabel_->setText(running_ ? tr("Running") : tr("Stopped"));
+    run_->setToolTip(running_ ? tr("Click to stop the table")
+                              : tr("Click to start the table towards the set point"));
     serial_->setTitle(tr("Serial port"));
-    serial_->setToolTip(
-        tr("The table runs on the simulated machine; the serial link to the "
-           "ATmega128 board comes in a later version."));
     portLabel_->setText(tr("Port"));
     baudLabel_->setText(tr("Bit rate"));
+    port_->setItemText(0, tr("Simulated machine"));
+    connect_->setText(tr("Connect"));
 }
 
 }  // namespace ui

@@ -1,13 +1,18 @@
 #pragma once
-// Seed 004's LabVIEW front panel for the DC XY table: X and Y set point boxes with Send, the
-// run indicator, and the serial settings (9600 bit/s 8N1), greyed until a serial backend
-// exists: the table runs on the simulated machine.
+// Seed 004's LabVIEW front panel for the DC XY table, and its workflow (issue 22 item 7): X and
+// Y each sent by its own button, with the entry counter (the panel's up/down arrows) left of
+// each box; the table moves once both were sent, as the board waits for all four bytes. The
+// round lamp is green while the table runs and red while it is stopped, and a click on it stops
+// the table or starts it towards the set point. The serial settings (port, speed) are editable:
+// Connect reopens the table on that port, or on the simulated machine.
 #include <QGroupBox>
+#include <optional>
 
-class QDoubleSpinBox;
-class QPushButton;
-class QLabel;
 class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+class QToolButton;
 
 namespace trilho {
 namespace ui {
@@ -20,26 +25,47 @@ class DcTablePanel : public QGroupBox {
     void setArea(double xMin, double xMax, double yMin, double yMax);
     void setRunning(bool running);
     void setSendEnabled(bool on);
-    QPushButton* sendButton() const { return send_; }
+    /// The connection in use: port empty for the simulated machine.
+    void setSerial(const QString& port, int baud);
+    QPushButton* sendButton() const { return send_; }  ///< X and Y at once
+    QPushButton* sendXButton() const { return sendX_; }
+    QPushButton* sendYButton() const { return sendY_; }
     QDoubleSpinBox* xBox() const { return x_; }
     QDoubleSpinBox* yBox() const { return y_; }
-    QLabel* runIndicator() const { return run_; }
+    /// The entry counter of a box: +1 mm (up) or -1 mm.
+    QToolButton* counter(int axis, bool up) const;
+    /// The lamp: green running, red stopped; clicked, it stops or starts the table.
+    QToolButton* runIndicator() const { return run_; }
+    QLabel* pendingLabel() const { return pending_; }
     QGroupBox* serialBox() const { return serial_; }
+    QComboBox* portBox() const { return port_; }
+    QComboBox* baudBox() const { return baud_; }
+    QPushButton* connectButton() const { return connect_; }
+    bool running() const { return running_; }
 
   signals:
     void sendRequested(double xMm, double yMm);
+    void stopRequested();
+    /// Connect: port empty for the simulated machine.
+    void connectRequested(const QString& port, int baud);
 
   protected:
     void changeEvent(QEvent* e) override;
 
   private:
     void retranslate();
+    void sent(int axis);
+    void showLamp();
     QDoubleSpinBox *x_, *y_;
-    QPushButton* send_;
-    QLabel *xLabel_, *yLabel_, *run_, *runLabel_, *portLabel_, *baudLabel_, *frameLabel_;
+    QToolButton* counters_[2][2] = {};
+    QPushButton *send_, *sendX_, *sendY_, *connect_;
+    QToolButton* run_;
+    QLabel *runLabel_, *pending_, *portLabel_, *baudLabel_, *frameLabel_;
     QGroupBox* serial_;
     QComboBox *port_, *baud_;
+    std::optional<double> sentX_, sentY_;  ///< sent since the last move
     bool running_ = false;
+    bool lampShown_ = false;
 };
 
 }  // namespace ui

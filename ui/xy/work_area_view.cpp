@@ -1,7 +1,10 @@
 #include "ui/xy/work_area_view.h"
 
+#include <QEvent>
+#include <QPaintEvent>
 #include <QPainter>
 #include <QPainterPath>
+#include <QResizeEvent>
 #include <cmath>
 
 #include "core/gcode/program.h"
@@ -21,12 +24,12 @@ WorkAreaView::WorkAreaView(QWidget* parent) : QWidget(parent) {
 void WorkAreaView::setArea(const QRectF& areaMm, const QPointF& originMm) {
     area_ = areaMm.normalized();
     origin_ = originMm;
-    update();
+    invalidate();
 }
 
 void WorkAreaView::setPlannedPath(std::vector<PathSegment> path) {
     planned_ = std::move(path);
-    update();
+    invalidate();
 }
 
 void WorkAreaView::addFollowed(const QPointF& mm, bool penDown) {
@@ -46,21 +49,47 @@ void WorkAreaView::addFollowed(const QPointF& mm, bool penDown) {
         thinned.insert(thinned.end(), followed_.begin() + static_cast<std::ptrdiff_t>(half),
                        followed_.end());
         followed_.swap(thinned);
+        invalidate();  // the indices moved: once in 50,000 points, the picture is redrawn
     }
     followed_.push_back({mm, penDown});
-    update();
+    if (!cacheValid_) return;
+    const QRectF dirty = paintNewSegments();
+    if (!dirty.isEmpty()) update(dirty.toAlignedRect());
 }
 
 void WorkAreaView::clearFollowed() {
     followed_.clear();
-    update();
+    invalidate();
 }
 
 void WorkAreaView::setTool(const QPointF& mm, PenState pen) {
     if (mm == tool_ && pen == pen_) return;
+    const QRectF before = toolRect(tool_);
     tool_ = mm;
     pen_ = pen;
+    // Only where the marker was and where it is: the rest of the picture has not changed.
+    update(before.toAlignedRect());
+    update(toolRect(tool_).toAlignedRect());
+}
+
+QRectF WorkAreaView::toolRect(const QPointF& mm) const {
+    const QPointF t = toPixel(mm);
+    return {t.x() - 12, t.y() - 12, 24, 24};
+}
+
+void WorkAreaView::invalidate() {
+    cacheValid_ = false;
     update();
+}
+
+void WorkAreaView::resizeEvent(QResizeEvent* e) {
+    invalidate();
+    QWidget::resizeEvent(e);
+}
+
+void WorkAreaView::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::PaletteChange || e->type() == QEvent::FontChange) invalidate();
+    QWidget::changeEvent(e);
 }
 
 std::vector<PathSegment> WorkAreaView::plan(const Program& program, QPointF startMm) {
@@ -92,8 +121,15 @@ QPointF WorkAreaView::toPixel(const QPointF& mm) const {
     return {x0 + (mm.x() - area_.left()) * s, y0 - (mm.y() - area_.top()) * s};
 }
 
-void WorkAreaView::paintEvent(QPaintEvent*) {
-    QPainter p(this);
+void WorkAreaView::rebuildCache() {
+    const qreal dpr = devicePixelRatioF();
+    cache_ = QPixmap((QSizeF(size()) * dpr).toSize());
+    cache_.setDevicePixelRatio(dpr);
+    ++cacheRebuilds_;
+    painted_ = 0;
+    segmentsPainted_ = 0;
+    cacheValid_ = true;
+    QPainter p(&cache_);
     p.fillRect(rect(), palette().color(QPalette::Window));
     p.setRenderHint(QPainter::Antialiasing);
     const QRectF table(toPixel({area_.left(), area_.bottom()}),
@@ -142,15 +178,46 @@ void WorkAreaView::paintEvent(QPaintEvent*) {
         p.drawLine(toPixel(seg.from), toPixel(seg.to));
     }
 
-    // Followed path: red where the pen was down (or the table moved), light when up.
-    if (followed_.size() > 1) {
-        QPen down(QColor(210, 30, 30), 2);
-        QPen up(QColor(240, 160, 160), 1);
-        for (std::size_t i = 1; i < followed_.size(); ++i) {
-            p.setPen(followed_[i].penDown && followed_[i - 1].penDown ? down : up);
-            p.drawLine(toPixel(followed_[i - 1].mm), toPixel(followed_[i].mm));
-        }
+    p.end();
+    paintNewSegments();
+}
+
+QRectF WorkAreaView::paintNewSegments() {
+    if (followed_.empty()) return {};
+    if (painted_ == 0) painted_ = 1;  // the first point has no segment
+    if (painted_ >= followed_.size()) return {};
+    QPainter p(&cache_);
+    p.setRenderHint(QPainter::Antialiasing);
+    QRectF dirty;
+    for (; painted_ < followed_.size(); ++painted_) {
+        paintSegment(p, painted_);
+        dirty |= QRectF(toPixel(followed_[painted_ - 1].mm), toPixel(followed_[painted_].mm))
+                     .normalized()
+                     .adjusted(-2, -2, 2, 2);  // the pen's width and the antialiasing
     }
+    return dirty;
+}
+
+void WorkAreaView::paintSegment(QPainter& p, std::size_t i) {
+    // Followed path: red where the pen was down (or the table moved), light when up.
+    static const QPen down(QColor(210, 30, 30), 2);
+    static const QPen up(QColor(240, 160, 160), 1);
+    p.setPen(followed_[i].penDown && followed_[i - 1].penDown ? down : up);
+    p.drawLine(toPixel(followed_[i - 1].mm), toPixel(followed_[i].mm));
+    ++segmentsPainted_;
+}
+
+void WorkAreaView::paintEvent(QPaintEvent* e) {
+    if (!cacheValid_ || cache_.size() != (QSizeF(size()) * devicePixelRatioF()).toSize())
+        rebuildCache();
+    QPainter p(this);
+    p.drawPixmap(e->rect(), cache_,
+                 QRectF(QPointF(e->rect().topLeft()) * devicePixelRatioF(),
+                        QSizeF(e->rect().size()) * devicePixelRatioF()));
+    p.setRenderHint(QPainter::Antialiasing);
+    QFont small = font();
+    small.setPointSizeF(std::max(6.0, small.pointSizeF() * 0.8));
+    p.setFont(small);
 
     // The origin: two short arrows and "0".
     const QPointF o = toPixel(origin_);

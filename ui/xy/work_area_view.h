@@ -2,6 +2,7 @@
 // Top-down view of an XY machine's work area, to scale (xy.md A and B): the planned path of the
 // loaded program (travel dashed, drawing solid), the path the tool actually followed, drawn
 // live, the tool (or pen) marker and the origin. Y grows upwards, as on the table.
+#include <QPixmap>
 #include <QPointF>
 #include <QRectF>
 #include <QWidget>
@@ -45,8 +46,16 @@ class WorkAreaView : public QWidget {
     /// At most this many followed points are kept; the oldest half is thinned when full.
     static constexpr std::size_t kMaxFollowed = 100000;
 
+    /// Followed segments painted so far, all of them since the cache was last rebuilt (tests:
+    /// a new point paints one segment, not the whole path again; issue 19, the cost).
+    std::size_t segmentsPainted() const { return segmentsPainted_; }
+    /// Times the cached picture (grid, planned path, followed path) was rebuilt whole.
+    int cacheRebuilds() const { return cacheRebuilds_; }
+
   protected:
     void paintEvent(QPaintEvent* e) override;
+    void resizeEvent(QResizeEvent* e) override;
+    void changeEvent(QEvent* e) override;
     QSize sizeHint() const override { return {480, 480}; }
     QSize minimumSizeHint() const override { return {200, 200}; }
 
@@ -56,6 +65,20 @@ class WorkAreaView : public QWidget {
         bool penDown;
     };
     double scale() const;  ///< px per mm
+    /// Grid, planned path and the whole followed path into cache_ (size, area, plan changed).
+    void rebuildCache();
+    /// The followed segments not yet in cache_ into it; the rectangle they cover, in pixels.
+    QRectF paintNewSegments();
+    void paintSegment(QPainter& p, std::size_t i);
+    QRectF toolRect(const QPointF& mm) const;
+    void invalidate();
+    // The picture is cached (issue 19, the cost): a new followed point paints one segment into
+    // it and repaints its few pixels, instead of the up to 100,000 lines at 50 Hz it cost.
+    QPixmap cache_;
+    bool cacheValid_ = false;
+    std::size_t painted_ = 0;  ///< followed_ points whose segment is in cache_
+    std::size_t segmentsPainted_ = 0;
+    int cacheRebuilds_ = 0;
     QRectF area_{0, 0, 300, 300};
     QPointF origin_;
     std::vector<PathSegment> planned_;

@@ -12,6 +12,7 @@ XyLink::XyLink(std::unique_ptr<XyRunnable> machine, Drive drive, QObject* parent
       profile_(machine_->controller().profile()),
       drive_(drive) {
     status_ = machine_->controller().status();
+    simulated_ = machine_->plant() != nullptr;
     poll_.setInterval(20);  // 50 Hz, as the rail's screens
     connect(&poll_, &QTimer::timeout, this, &XyLink::poll);
     if (drive_ == Drive::Thread) {
@@ -41,7 +42,14 @@ XyLink::~XyLink() {
 
 void XyLink::post(std::function<void(XyController&)> cmd) {
     std::lock_guard<std::mutex> lock(mutex_);
-    commands_.push_back(std::move(cmd));
+    commands_.push_back([cmd = std::move(cmd)](XyRunnable& r) { cmd(r.controller()); });
+}
+
+void XyLink::postToPlant(std::function<void(XyPlant&)> cmd) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    commands_.push_back([cmd = std::move(cmd)](XyRunnable& r) {
+        if (XyPlant* plant = r.plant()) cmd(*plant);
+    });
 }
 
 XyStatus XyLink::status() const {
@@ -58,14 +66,14 @@ void XyLink::advance(double seconds) {
 }
 
 void XyLink::stepOnce(double dtS) {
-    std::vector<std::function<void(XyController&)>> commands;
+    std::vector<std::function<void(XyRunnable&)>> commands;
     {
         std::lock_guard<std::mutex> lock(mutex_);
         commands.swap(commands_);
     }
     XyController& c = machine_->controller();
     for (auto& cmd : commands)
-        cmd(c);
+        cmd(*machine_);
     machine_->step(dtS);
     timeS_ += dtS;
     std::lock_guard<std::mutex> lock(mutex_);

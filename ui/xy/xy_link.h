@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/machine/xy_controller.h"
+#include "hal/sim/xy_plant.h"
 
 namespace trilho {
 namespace ui {
@@ -28,6 +29,8 @@ class XyRunnable {
     virtual void step(double dtS) = 0;
     virtual XyController& controller() = 0;
     virtual double periodS() const = 0;
+    /// The simulated plant, for the Simulation dock's faults; none for a board on a line.
+    virtual XyPlant* plant() { return nullptr; }
 };
 
 /// One row of the live trace: every period's sample, for the view and the plots.
@@ -50,6 +53,11 @@ class XyLink : public QObject {
     const MachineProfile& profile() const { return profile_; }
     /// Runs cmd on the controller before the next period (thread-safe, never blocks long).
     void post(std::function<void(XyController&)> cmd);
+    /// Runs cmd on the simulated plant before the next period (the Simulation dock's faults);
+    /// nothing when the machine is a board on a line.
+    void postToPlant(std::function<void(XyPlant&)> cmd);
+    /// Whether there is a simulated plant (the Simulation dock is offered only then).
+    bool simulated() const { return simulated_; }
     /// The last published status.
     XyStatus status() const;
     /// Runs seconds of virtual time now (threaded == false only), then publishes.
@@ -76,7 +84,8 @@ class XyLink : public QObject {
     double clockS_ = 0.0;
     QTimer stepTimer_;
     mutable std::mutex mutex_;  ///< guards everything below it
-    std::vector<std::function<void(XyController&)>> commands_;
+    std::vector<std::function<void(XyRunnable&)>> commands_;
+    bool simulated_ = false;
     std::deque<XyTraceRow> rows_;
     std::vector<ControllerEvent> events_;
     XyStatus status_;

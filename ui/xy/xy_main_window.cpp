@@ -1,8 +1,10 @@
 #include "ui/xy/xy_main_window.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDateTime>
 #include <QDockWidget>
 #include <QEvent>
 #include <QFileDialog>
@@ -21,9 +23,14 @@
 #include <QScrollBar>
 #include <QSettings>
 #include <QShortcut>
+#include <QShowEvent>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QToolBar>
+#include <QToolButton>
 #include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
 
 #include <QComboBox>
 #include <QDialog>
@@ -36,15 +43,25 @@
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/source_file.h"
 #include "core/machine/event_text.h"
+#include "core/machine/journal.h"
 #include "core/machine/serial_link_motion.h"
 #include "core/machine/xy_event_text.h"
 #include "host/common/data_paths.h"
+#include "translations/i18n.h"
 #include "ui/confirm_box.h"
+#include "ui/dnc_dialog.h"
+#include "ui/dnc_link.h"
+#include "ui/dnc_settings.h"
+#include "ui/keys_dialog.h"
+#include "ui/language_menu.h"
+#include "ui/machine_choice.h"
 #include "ui/xy/calibration_dialog.h"
 #include "ui/xy/dc_table_panel.h"
 #include "ui/xy/plotter_panel.h"
 #include "ui/xy/work_area_view.h"
+#include "ui/xy/xy_dnc_machine.h"
 #include "ui/xy/xy_plots.h"
+#include "ui/xy/xy_simulation_panel.h"
 
 namespace trilho {
 namespace ui {
@@ -71,6 +88,10 @@ QString stateText(ControllerState s) {
     }
     return {};
 }
+
+/// The plots' dock at first and after Reset layout: the rail's 230 px, so the work area keeps
+/// most of a 768-px screen's height.
+constexpr int kPlotDockHeight = 230;
 
 bool moving(ControllerState s) {
     return s == ControllerState::Running || s == ControllerState::Waiting ||
@@ -127,20 +148,53 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     estop_ = button("xyEStop");
     reset_ = button("xyReset");
     ack_ = button("xyAck");
-    estop_->setStyleSheet(QStringLiteral(
-        "QPushButton{background:#c0161b;color:white;font-weight:bold;padding:4px 10px;}"));
-    // Two rows, the E-stop at the right of both: one row of nine buttons was 1039 px wide in
+    // The rail's E-stop look: red, bold, always live.
+    estop_->setStyleSheet(
+        QStringLiteral("QPushButton#xyEStop { background: rgb(200,0,0); color: white; "
+                       "font-weight: bold; padding: 6px 14px; border: 2px solid rgb(120,0,0); "
+                       "border-radius: 4px; }"));
+    singleButton_ = button("xySingleBlock");
+    singleButton_->setCheckable(true);
+    override_ = new QLabel(this);
+    override_->setObjectName(QStringLiteral("xyOverride"));
+    homeButton_ = button("homeButton");
+    connect(homeButton_, &QPushButton::clicked, this, &XyMainWindow::requestHome);
+    // An armed fault of the Simulation dock is said on the safety bar, until cleared.
+    faultArmed_ = new QLabel(this);
+    faultArmed_->setObjectName(QStringLiteral("faultArmed"));
+    faultArmed_->setStyleSheet(
+        QStringLiteral("QLabel#faultArmed { background: rgb(255,170,0); color: black; "
+                       "font-weight: bold; border: 2px solid rgb(160,90,0); border-radius: 4px; "
+                       "padding: 4px 10px; }"));
+    // The safety bar as the rail's, in the same place (issue 19, one frame): E-stop, Reset
+    // E-stop, Acknowledge, Home, Remote and an armed fault, never hidden.
+    safetyBar_ = addToolBar(QString());
+    safetyBar_->setObjectName(QStringLiteral("safetyBar"));
+    safetyBar_->setMovable(false);
+    safetyBar_->toggleViewAction()->setEnabled(false);
+    for (QPushButton* b : {estop_, reset_, ack_, homeButton_})
+        safetyBar_->addWidget(b);
+    safetyBar_->addSeparator();
+    remoteButton_ = new QToolButton(safetyBar_);
+    remoteButton_->setObjectName(QStringLiteral("remoteButton"));
+    remoteButton_->setStyleSheet(
+        QStringLiteral("QToolButton#remoteButton:checked { background: rgb(255,170,0); "
+                       "color: black; font-weight: bold; border: 2px solid rgb(160,90,0); "
+                       "border-radius: 4px; padding: 4px 10px; }"));
+    safetyBar_->addWidget(remoteButton_);
+    faultArmedAction_ = safetyBar_->addWidget(faultArmed_);
+    faultArmedAction_->setVisible(false);
+    // The run controls in two rows under it: one row of nine buttons was 1039 px wide in
     // pt_BR, wider than a 1024-px screen (issue 19, the fit).
     auto* controls = new QGridLayout;
     int column = 0;
-    for (QPushButton* b : {open_, automatic_, reset_, ack_})
+    for (QPushButton* b : {open_, automatic_})
         controls->addWidget(b, 0, column++);
+    controls->addWidget(override_, 0, column, 1, 3);
     column = 0;
-    for (QPushButton* b : {start_, hold_, resume_, stop_})
+    for (QPushButton* b : {start_, hold_, resume_, stop_, singleButton_})
         controls->addWidget(b, 1, column++);
-    controls->setColumnStretch(4, 1);
-    estop_->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Expanding);
-    controls->addWidget(estop_, 0, 5, 2, 1);
+    controls->setColumnStretch(5, 1);
 
     connect(open_, &QPushButton::clicked, this, &XyMainWindow::chooseFile);
     connect(automatic_, &QPushButton::clicked, this, &XyMainWindow::requestAutomatic);
@@ -163,20 +217,37 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
             [this] { link_.post([](XyController& c) { c.resetEmergencyStop(); }); });
     connect(ack_, &QPushButton::clicked, this,
             [this] { link_.post([](XyController& c) { c.acknowledgeAlarms(); }); });
-    // Keys: E-stop on Pause/Break, which no dialog or menu uses; the run keys F5-F8.
-    auto key = [this](const QKeySequence& k, QPushButton* b) {
-        auto* s = new QShortcut(k, this);
-        s->setContext(Qt::ApplicationShortcut);
-        connect(s, &QShortcut::activated, b, [b] {
-            if (b->isEnabled()) b->click();
-        });
+    connect(singleButton_, &QPushButton::toggled, this,
+            [this](bool on) { link_.post([on](XyController& c) { c.setSingleBlock(on); }); });
+    // The run keys are actions named as the rail's (RunControls), with its keys; E-stop on
+    // Pause/Break and F1 (eventFilter), which no dialog or menu uses.
+    auto key = [this](const char* name, const QKeySequence& k, QPushButton* b) {
+        auto* a = new QAction(this);
+        a->setObjectName(QString::fromLatin1(name));
+        a->setShortcut(k);
+        a->setShortcutContext(Qt::ApplicationShortcut);
+        addAction(a);
+        if (b)
+            connect(a, &QAction::triggered, b, [b] {
+                if (b->isEnabled()) b->click();
+            });
+        return a;
     };
-    key(QKeySequence(Qt::Key_Pause), estop_);
-    key(QKeySequence(Qt::Key_F5), start_);
-    key(QKeySequence(Qt::Key_F6), hold_);
-    key(QKeySequence(Qt::Key_F7), resume_);
-    key(QKeySequence(Qt::Key_F8), stop_);
-    key(QKeySequence(QKeySequence::Open), open_);
+    auto* estopKey = new QShortcut(QKeySequence(Qt::Key_Pause), this);
+    estopKey->setContext(Qt::ApplicationShortcut);
+    connect(estopKey, &QShortcut::activated, estop_, &QPushButton::click);
+    cycleStart_ = key("cycleStart", QKeySequence(Qt::Key_F5), start_);
+    feedHold_ = key("feedHold", QKeySequence(Qt::Key_F6), hold_);
+    continue_ = key("continue", QKeySequence(Qt::Key_F7), resume_);
+    stopAction_ = key("stop", QKeySequence(Qt::Key_F8), stop_);
+    single_ = key("singleBlock", QKeySequence(Qt::Key_F9), singleButton_);
+    overrideDown_ = key("overrideDown", QKeySequence(Qt::CTRL | Qt::Key_Minus), nullptr);
+    overrideUp_ = key("overrideUp", QKeySequence(Qt::CTRL | Qt::Key_Plus), nullptr);
+    overrideReset_ = key("overrideReset", QKeySequence(Qt::CTRL | Qt::Key_0), nullptr);
+    connect(overrideDown_, &QAction::triggered, this,
+            [this] { setOverride(overridePercent_ - 10); });
+    connect(overrideUp_, &QAction::triggered, this, [this] { setOverride(overridePercent_ + 10); });
+    connect(overrideReset_, &QAction::triggered, this, [this] { setOverride(100); });
     qApp->installEventFilter(this);  // F1, Esc and Space: eventFilter
 
     // The machine's own panel.
@@ -187,6 +258,17 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
         connect(table_, &DcTablePanel::sendRequested, this, [this](double xm, double ym) {
             link_.post([xm, ym](XyController& c) { c.moveTo({xm, ym}, 1.0); });
         });
+        connect(table_, &DcTablePanel::stopRequested, this,
+                [this] { link_.post([](XyController& c) { c.stop(); }); });
+        connect(table_, &DcTablePanel::connectRequested, this,
+                [this](const QString& port, int baud) {
+                    if (moving(last_.state) || last_.motionBusy) {
+                        statusBar()->showMessage(
+                            tr("Stop the machine before changing the connection."), 8000);
+                        return;
+                    }
+                    emit connectionChosen(port, baud);
+                });
         machinePanel = table_;
     } else {
         plotter_ = new PlotterPanel(this);
@@ -216,7 +298,7 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     auto* sideLayout = new QVBoxLayout(side);
     sideLayout->addLayout(readout);
     sideLayout->addWidget(machinePanel);
-    sideLayout->addWidget(history_, 1);
+    sideLayout->addStretch(1);
 
     // The side column scrolls when the screen is short (issue 19: the windows needed 798 px,
     // so the status bar with the link's state was below a 768-px screen).
@@ -233,46 +315,196 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     split->addWidget(sideScroll);
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 2);
-    auto* vsplit = new QSplitter(Qt::Vertical, this);
-    vsplit->addWidget(split);
-    vsplit->addWidget(plots_);
-    vsplit->setStretchFactor(0, 3);
-    vsplit->setStretchFactor(1, 2);
 
     auto* central = new QWidget(this);
     auto* v = new QVBoxLayout(central);
     v->addLayout(controls);
-    v->addWidget(vsplit, 1);
+    v->addWidget(split, 1);
     setCentralWidget(central);
 
-    auto* file = menuBar()->addMenu(tr("&File"));
-    file->addAction(tr("&Open program..."), this, &XyMainWindow::chooseFile);
-    file->addSeparator();
-    file->addAction(tr("E&xit"), this, &QWidget::close);
-    // The same commands as the rail's Command menu (issue 19 items 2 and 3): a mode change
-    // never moves the machine unasked, and Home is a command of its own.
-    auto* command = menuBar()->addMenu(tr("&Command"));
-    manual_ = command->addAction(tr("&Manual"), this,
-                                 [this] { link_.post([](XyController& c) { c.selectManual(); }); });
-    command->addAction(tr("&Automatic"), this, &XyMainWindow::requestAutomatic);
-    home_ = command->addAction(tr("&Home"), this, &XyMainWindow::requestHome);
-    home_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Home));
-    home_->setShortcutContext(Qt::ApplicationShortcut);
-    auto* options = menuBar()->addMenu(tr("&Options"));
-    options->addAction(tr("&Connection..."), this, &XyMainWindow::chooseConnection);
-    if (link_.profile().kind == MachineKind::DcTable)  // issue 22 item 8
-        options->addAction(tr("Ca&libration..."), this, [this] {
-            CalibrationDialog(link_.profile(), port_, baud_, this).exec();
-        });
+    split_ = split;
+    // The DNC link: the same server as the rail's, over this screen's own link (issue 19).
+    dnc_ = new DncLink(
+        link_.profile(),
+        [this] {
+            auto m = std::make_unique<XyDncMachine>(link_);
+            XyDncMachine* raw = m.get();
+            return DncMachineMade{std::move(m),
+                                  [raw](const ControllerEvent& e) { raw->noteEvent(e); }};
+        },
+        this);
+    buildMenus();
+    remoteButton_->setDefaultAction(remote_);
+    // The docks as the rail's (issue 19, one frame): plots, history and simulation in tabs
+    // under the work area, the plots in front; each can be moved, and Windows > Reset layout
+    // puts them back.
+    auto dock = [this](QWidget* w, const char* name) {
+        auto* d = new QDockWidget(this);
+        d->setObjectName(QString::fromLatin1(name));
+        d->setWidget(w);
+        addDockWidget(Qt::BottomDockWidgetArea, d);
+        windowsMenu_->addAction(d->toggleViewAction());
+        return d;
+    };
+    windowsMenu_->addSeparator();
+    plotDock_ = dock(plots_, "plotDock");
+    historyDock_ = dock(history_, "historyDock");
+    simulation_ = new XySimulationPanel(profile.kind, this);
+    auto* simulationScroll = new QScrollArea(this);
+    simulationScroll->setWidget(simulation_);
+    simulationScroll->setWidgetResizable(true);
+    simulationScroll->setFrameShape(QFrame::NoFrame);
+    simulationDock_ = dock(simulationScroll, "simulationDock");
+    tabifyDockWidget(plotDock_, historyDock_);
+    tabifyDockWidget(historyDock_, simulationDock_);
+    plotDock_->raise();
+    // A board on a serial line has no simulated plant: no faults to offer.
+    simulationDock_->setVisible(link_.simulated());
+    simulationDock_->toggleViewAction()->setVisible(link_.simulated());
+    connect(simulation_, &XySimulationPanel::faultsChanged, this, [this] {
+        // Read here, on the screen's thread; the plant gets a copy on the machine's.
+        const XyFaults faults = simulation_->faults();
+        link_.postToPlant([faults](XyPlant& plant) { applyFaults(faults, plant); });
+    });
+    connect(simulation_, &XySimulationPanel::armedChanged, this, &XyMainWindow::showArmedFaults);
+    defaultLayout_ = saveState();
 
     linkLabel_ = new QLabel(this);
     linkLabel_->setObjectName(QStringLiteral("xyLink"));
+    dncLabel_ = new QLabel(this);
+    dncLabel_->setObjectName(QStringLiteral("dncState"));
+    statusBar()->addPermanentWidget(dncLabel_);
     statusBar()->addPermanentWidget(linkLabel_);
 
+    // Served again at start when it was on, always with Remote off (consent is given anew).
+    connect(dnc_, &DncLink::stateChanged, this, &XyMainWindow::showDncState);
+    connect(dnc_, &DncLink::historyLine, this, [this](const QString& l) { addHistory(l, false); });
+    const DncSettings dncSettings = DncSettings::load(settings_);
+    if (dncSettings.enabled) dnc_->start(dncSettings, nullptr);  // a failure: the status bar
+    showDncState();
     connect(&link_, &XyLink::updated, this, &XyMainWindow::onUpdate);
     last_ = link_.status();
+    language_ = settings_.value(QStringLiteral("language"), language_).toString();
     retranslate();
     onUpdate({}, {}, last_);
+}
+
+void XyMainWindow::buildMenus() {
+    // The rail's menus, with the same object names (issue 19, one frame); texts in retranslate().
+    fileMenu_ = menuBar()->addMenu(QString());
+    openAction_ = fileMenu_->addAction(QString(), this, &XyMainWindow::chooseFile);
+    openAction_->setObjectName(QStringLiteral("selectProgram"));
+    openAction_->setShortcut(QKeySequence::Open);
+    openAction_->setShortcutContext(Qt::ApplicationShortcut);
+    machine_ = fileMenu_->addAction(QString(), this, &XyMainWindow::requestMachine);
+    machine_->setObjectName(QStringLiteral("machine"));
+    fileMenu_->addSeparator();
+    exit_ = fileMenu_->addAction(QString(), this, &QWidget::close);
+    exit_->setObjectName(QStringLiteral("exit"));
+    // The same commands as the rail's Command menu (issue 19 items 2 and 3): a mode change
+    // never moves the machine unasked, and Home is a command of its own.
+    commandMenu_ = menuBar()->addMenu(QString());
+    manual_ = commandMenu_->addAction(
+        QString(), this, [this] { link_.post([](XyController& c) { c.selectManual(); }); });
+    manual_->setObjectName(QStringLiteral("manual"));
+    automaticAction_ = commandMenu_->addAction(QString(), this, &XyMainWindow::requestAutomatic);
+    automaticAction_->setObjectName(QStringLiteral("automatic"));
+    home_ = commandMenu_->addAction(QString(), this, &XyMainWindow::requestHome);
+    home_->setObjectName(QStringLiteral("home"));
+    home_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Home));
+    home_->setShortcutContext(Qt::ApplicationShortcut);
+    optionsMenu_ = menuBar()->addMenu(QString());
+    languageMenu_ = optionsMenu_->addMenu(QString());
+    languages_ = addLanguageActions(languageMenu_, [this](const QString& c) { setLanguage(c); });
+    connection_ = optionsMenu_->addAction(QString(), this, &XyMainWindow::chooseConnection);
+    connection_->setObjectName(QStringLiteral("connection"));
+    if (link_.profile().kind == MachineKind::DcTable) {  // issue 22 item 8
+        calibration_ = optionsMenu_->addAction(QString(), this, [this] {
+            CalibrationDialog(link_.profile(), port_, baud_, this).exec();
+        });
+        calibration_->setObjectName(QStringLiteral("calibration"));
+    }
+    optionsMenu_->addSeparator();
+    dncAction_ = optionsMenu_->addAction(QString(), this, [this] { openDncDialog(); });
+    dncAction_->setObjectName(QStringLiteral("dnc"));
+    remote_ = optionsMenu_->addAction(QString());
+    remote_->setObjectName(QStringLiteral("remote"));
+    remote_->setCheckable(true);
+    remote_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+    remote_->setShortcutContext(Qt::WindowShortcut);
+    remote_->setEnabled(false);  // until the link is served
+    connect(remote_, &QAction::toggled, dnc_, &DncLink::setRemote);
+    windowsMenu_ = menuBar()->addMenu(QString());
+    resetLayout_ = windowsMenu_->addAction(QString(), this, &XyMainWindow::resetLayout);
+    resetLayout_->setObjectName(QStringLiteral("resetLayout"));
+    helpMenu_ = menuBar()->addMenu(QString());
+    keys_ = helpMenu_->addAction(QString(), this, [this] {
+        KeysDialog dialog(keyedActions(), this, KeysDialog::Machine::Xy);
+        dialog.exec();
+    });
+    keys_->setObjectName(QStringLiteral("keys"));
+}
+
+QList<QAction*> XyMainWindow::keyedActions() const {
+    return {cycleStart_, feedHold_,      continue_, stopAction_, single_, overrideDown_,
+            overrideUp_, overrideReset_, home_,     openAction_, remote_};
+}
+
+void XyMainWindow::setOverride(int percent) {
+    overridePercent_ = std::clamp(percent, 0, 150);  // the rail's slider's range
+    const double factor = overridePercent_ / 100.0;
+    link_.post([factor](XyController& c) { c.setFeedOverride(factor); });
+    override_->setText(tr("Feed override %1 %").arg(overridePercent_));
+}
+
+void XyMainWindow::setLanguage(const QString& lang) {
+    if (!installLanguage(lang)) return;
+    language_ = lang;
+    settings_.setValue(QStringLiteral("language"), lang);
+    retranslate();
+}
+
+void XyMainWindow::resetLayout() {
+    // The docks where they were built, in front the plots; the work area 3 to the side
+    // column's 2; the plots at their first height.
+    restoreState(defaultLayout_);
+    for (QDockWidget* d : {plotDock_, historyDock_, simulationDock_}) {
+        d->setFloating(false);
+        d->setVisible(d != simulationDock_ || link_.simulated());
+    }
+    plotDock_->raise();
+    const int w = split_->width();
+    split_->setSizes({w * 3 / 5, w - w * 3 / 5});
+    resizeDocks({plotDock_}, {kPlotDockHeight}, Qt::Vertical);
+}
+
+bool XyMainWindow::faultArmedShown() const {
+    return faultArmedAction_->isVisible();
+}
+
+void XyMainWindow::showArmedFaults(const QString& text) {
+    // As the rail's safety bar: at most 320 px, the whole list on hover.
+    const QString full = tr("Simulated fault armed: %1").arg(text);
+    faultArmed_->setText(faultArmed_->fontMetrics().elidedText(full, Qt::ElideRight, 300));
+    faultArmed_->setMaximumWidth(320);
+    faultArmed_->setToolTip(full);
+    faultArmedAction_->setVisible(!text.isEmpty());
+}
+
+void XyMainWindow::requestMachine() {
+    const std::optional<MachineKind> next = chooseMachine(this, link_.profile().kind);
+    if (next) switchTo(*next);
+}
+
+bool XyMainWindow::switchTo(MachineKind next) {
+    const MachineKind own = link_.profile().kind;
+    if (next == own) return false;
+    const bool busy =
+        moving(last_.state) || last_.state == ControllerState::Paused || last_.motionBusy;
+    if (busy && !confirm(tr("Machine"), switchQuestion(own, next))) return false;
+    link_.post([](XyController& c) { c.stop(); });
+    emit machineChosen(shippedProfileName(next));
+    return true;
 }
 
 bool XyMainWindow::selectProgram(const QString& path) {
@@ -387,7 +619,31 @@ void XyMainWindow::chooseFile() {
     selectProgram(path);
 }
 
-void XyMainWindow::addHistory(const QString& line, bool alarm) {
+bool XyMainWindow::openJournal(const QString& path, QString* error) {
+    journal_ = std::make_unique<Journal>();
+    journalClock_.start();
+    QString why;
+    if (!journal_->open(path, &why)) {
+        journal_.reset();
+        statusBar()->showMessage(tr("The history could not be written: %1").arg(why), 15000);
+        if (error) *error = why;
+        return false;
+    }
+    journalPath_ = path;
+    return true;
+}
+
+void XyMainWindow::addHistory(const QString& line, bool alarm, int alarmCode) {
+    if (journal_ &&
+        !journal_->append(
+            {QDateTime::currentDateTimeUtc(),
+             alarm ? QStringLiteral("alarm") : QStringLiteral("status"), alarmCode, line},
+            journalClock_.elapsed()) &&
+        !journalWarned_) {
+        journalWarned_ = true;  // said once; the screen's list still has every line
+        statusBar()->showMessage(
+            tr("The history could not be written: %1").arg(journal_->health().error), 15000);
+    }
     auto* item = new QListWidgetItem(line, history_);
     if (alarm) item->setForeground(QColor(190, 0, 0));
     while (history_->count() > 2000)
@@ -404,11 +660,13 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
                            r.sample.pen != PenState::Up);
     }
     for (const ControllerEvent& e : events) {
+        dnc_->noteEvent(e);
         const bool alarm = e.kind == EventKind::AlarmRaised;
         const QString line = xyHistoryLine(e);
-        if (!line.isEmpty()) addHistory(line, alarm);
+        if (!line.isEmpty()) addHistory(line, alarm, alarm ? static_cast<int>(e.alarm) : 0);
     }
     last_ = status;
+    if (journal_) journal_->syncIfDue(journalClock_.elapsed());
     showLinkState();
     const XySample& s = status.sample;
     view_->setTool({s.x.positionMm, s.y.positionMm}, s.pen);
@@ -423,7 +681,9 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
                                    : alarmed ? QColor(255, 200, 0)
                                              : palette().color(QPalette::Window));
     pal.setColor(QPalette::WindowText, latched ? Qt::white : palette().color(QPalette::WindowText));
-    state_->setPalette(pal);
+    if (pal != state_->palette()) state_->setPalette(pal);
+    const QString estopText = latched ? tr("E-STOP LATCHED") : tr("E-STOP (Pause, F1)");
+    if (estop_->text() != estopText) estop_->setText(estopText);
     block_->setText(status.blockN >= 0
                         ? tr("Block N%1, line %2").arg(status.blockN).arg(status.blockLine)
                     : status.blockLine > 0 ? tr("Line %1").arg(status.blockLine)
@@ -441,6 +701,17 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
     reset_->setEnabled(latched);
     ack_->setEnabled(!latched && alarmed);
     automatic_->setEnabled(idle && !status.automatic);
+    automaticAction_->setEnabled(idle && !status.automatic);
+    if (singleButton_->isChecked() != status.singleBlock) {
+        const QSignalBlocker block(singleButton_);
+        singleButton_->setChecked(status.singleBlock);
+    }
+    // One source of truth (issue 19 item 4): the readout follows the machine's override.
+    const int percent = static_cast<int>(std::lround(status.feedOverride * 100.0));
+    if (percent != overridePercent_) {
+        overridePercent_ = percent;
+        override_->setText(tr("Feed override %1 %").arg(overridePercent_));
+    }
     if (table_) {
         table_->setRunning(moving(status.state) || status.motionBusy);
         table_->setSendEnabled(status.state == ControllerState::Manual && !status.motionBusy);
@@ -453,13 +724,19 @@ void XyMainWindow::setDeviceLink(SerialLinkMotion* link, const QString& port, in
     deviceLink_ = link;
     port_ = port;
     baud_ = baud;
+    if (table_) table_->setSerial(port, baud);
     showLinkState();
 }
 
 void XyMainWindow::showLinkState() {
+    // Set only what changed: a style sheet set again re-polishes the label, 50 times a second
+    // (issue 19, the cost).
+    const auto style = [this](const QString& sheet) {
+        if (linkLabel_->styleSheet() != sheet) linkLabel_->setStyleSheet(sheet);
+    };
     if (!deviceLink_) {
         linkLabel_->setText(tr("Simulated machine"));
-        linkLabel_->setStyleSheet(QString());
+        style(QString());
         return;
     }
     const bool up = deviceLink_->linkUp();
@@ -472,8 +749,7 @@ void XyMainWindow::showLinkState() {
                        .arg(deviceLink_->timeouts());
     linkLabel_->setText(text);
     linkLabel_->setToolTip(up ? QString() : QString::fromStdString(deviceLink_->linkError()));
-    linkLabel_->setStyleSheet(
-        up ? QString() : QStringLiteral("background:#c0161b;color:white;padding:1px 4px;"));
+    style(up ? QString() : QStringLiteral("background:#c0161b;color:white;padding:1px 4px;"));
 }
 
 void XyMainWindow::chooseConnection() {
@@ -536,6 +812,42 @@ void XyMainWindow::closeEvent(QCloseEvent* e) {
     QMainWindow::closeEvent(e);
 }
 
+XyMainWindow::~XyMainWindow() {
+    qApp->removeEventFilter(this);
+    dnc_->stop();  // its machine refers to the link, which outlives this window only just
+    for (QObject* child : findChildren<QObject*>())
+        disconnect(child, nullptr, this, nullptr);
+    disconnect(&link_, nullptr, this, nullptr);
+}
+
+DncDialog* XyMainWindow::openDncDialog() {
+    if (!dncDialog_) dncDialog_ = new DncDialog(*dnc_, settings_, this);
+    dncDialog_->show();
+    dncDialog_->raise();
+    dncDialog_->activateWindow();
+    return dncDialog_;
+}
+
+void XyMainWindow::showDncState() {
+    const QSignalBlocker block(remote_);  // showing the state is not the operator's toggle
+    remote_->setEnabled(dnc_->running());
+    remote_->setChecked(dnc_->remote());
+    const QString text = dnc_->statusLine();
+    dncLabel_->setText(text);
+    dncLabel_->setToolTip(dnc_->statusText());
+    dncLabel_->setStyleSheet(dnc_->error().isEmpty() ? QString()
+                                                     : QStringLiteral("color: rgb(170,0,0);"));
+    dncLabel_->setVisible(!text.isEmpty());
+}
+
+void XyMainWindow::showEvent(QShowEvent* e) {
+    QMainWindow::showEvent(e);
+    if (shown_) return;
+    shown_ = true;
+    layout()->activate();  // the docks' current sizes first, or the request is dropped
+    resizeDocks({plotDock_}, {kPlotDockHeight}, Qt::Vertical);
+}
+
 void XyMainWindow::changeEvent(QEvent* e) {
     if (e->type() == QEvent::LanguageChange) retranslate();
     QMainWindow::changeEvent(e);
@@ -546,11 +858,55 @@ void XyMainWindow::retranslate() {
     setWindowTitle(tr("trilho - %1").arg(p.description));
     open_->setText(tr("Open..."));
     automatic_->setText(tr("Automatic (home)"));
+    // The rail's names for the same actions (issue 19, one frame).
     start_->setText(tr("Cycle start (F5)"));
-    hold_->setText(tr("Hold (F6)"));
-    resume_->setText(tr("Resume (F7)"));
+    hold_->setText(tr("Feed hold (F6)"));
+    resume_->setText(tr("Continue (F7)"));
     stop_->setText(tr("Stop (F8)"));
-    estop_->setText(tr("E-STOP (Pause, F1)"));
+    singleButton_->setText(tr("Single block (F9)"));
+    const auto withKey = [](QAction* a, const QString& text) {
+        a->setText(text);
+        a->setToolTip(
+            QStringLiteral("%1 (%2)").arg(text, a->shortcut().toString(QKeySequence::NativeText)));
+    };
+    withKey(cycleStart_, tr("Cycle start"));
+    withKey(feedHold_, tr("Feed hold"));
+    withKey(continue_, tr("Continue"));
+    withKey(stopAction_, tr("Stop"));
+    withKey(single_, tr("Single block"));
+    withKey(overrideDown_, tr("Feed override -10 %"));
+    withKey(overrideUp_, tr("Feed override +10 %"));
+    withKey(overrideReset_, tr("Feed override 100 %"));
+    override_->setText(tr("Feed override %1 %").arg(overridePercent_));
+    fileMenu_->setTitle(tr("&File"));
+    openAction_->setText(tr("&Open program..."));
+    machine_->setText(tr("&Machine..."));
+    exit_->setText(tr("E&xit"));
+    commandMenu_->setTitle(tr("&Command"));
+    manual_->setText(tr("&Manual"));
+    automaticAction_->setText(tr("&Automatic"));
+    home_->setText(tr("&Home"));
+    optionsMenu_->setTitle(tr("&Options"));
+    languageMenu_->setTitle(tr("&Language"));
+    connection_->setText(tr("&Connection..."));
+    if (calibration_) calibration_->setText(tr("Ca&libration..."));
+    dncAction_->setText(tr("&DNC link..."));
+    remote_->setText(tr("&Remote (DNC)"));
+    remote_->setToolTip(tr("Allow the cell's supervisor to write and command over the DNC "
+                           "link (%1). Off at every start.")
+                            .arg(remote_->shortcut().toString(QKeySequence::NativeText)));
+    windowsMenu_->setTitle(tr("&Windows"));
+    resetLayout_->setText(tr("&Reset layout"));
+    helpMenu_->setTitle(tr("&Help"));
+    keys_->setText(tr("&Keys"));
+    plotDock_->setWindowTitle(tr("Plots"));
+    historyDock_->setWindowTitle(tr("History"));
+    simulationDock_->setWindowTitle(tr("Simulation"));
+    checkLanguage(languages_, language_);
+    estop_->setText(last_.state == ControllerState::EStop ? tr("E-STOP LATCHED")
+                                                          : tr("E-STOP (Pause, F1)"));
+    homeButton_->setText(tr("Home (Ctrl+Home)"));
+    safetyBar_->setWindowTitle(tr("Safety"));
     reset_->setText(tr("Reset E-stop"));
     ack_->setText(tr("Acknowledge"));
     program_label_->setText(program_ ? tr("Program: %1").arg(programName_)

@@ -3,6 +3,7 @@
 #include <qcustomplot.h>
 #include <QEvent>
 #include <QVBoxLayout>
+#include <array>
 
 namespace trilho {
 namespace ui {
@@ -46,6 +47,10 @@ XyPlots::XyPlots(QWidget* parent) : QWidget(parent) {
 
 void XyPlots::addSample(double tS, const XySample& s) {
     lastT_ = tS;
+    const std::array<double, 6> values{s.x.setpointMm, s.x.positionMm,  s.y.setpointMm,
+                                       s.y.positionMm, s.x.velocityMmS, s.y.velocityMmS};
+    if (values != last_) changed_ = true;
+    last_ = values;
     xSet_->addData(tS, s.x.setpointMm);
     xPos_->addData(tS, s.x.positionMm);
     ySet_->addData(tS, s.y.setpointMm);
@@ -55,9 +60,17 @@ void XyPlots::addSample(double tS, const XySample& s) {
     if (tS - lastReplotT_ < 0.04 && lastReplotT_ >= 0) return;  // 25 Hz is enough to read
     lastReplotT_ = tS;
     const double from = tS - kWindowS;
-    for (QCustomPlot* p : {position_, velocity_}) {
+    for (QCustomPlot* p : {position_, velocity_})
         for (int i = 0; i < p->graphCount(); ++i)
             p->graph(i)->data()->removeBefore(from);
+    // Nothing moved since the last picture: the flat lines are drawn once a second, so the
+    // time axis still moves (issue 19, the cost: the plots redrew at 25 Hz with nothing
+    // moving).
+    if (!changed_ && tS - lastDrawnT_ < kRestPeriodS) return;
+    changed_ = false;
+    lastDrawnT_ = tS;
+    ++replots_;
+    for (QCustomPlot* p : {position_, velocity_}) {
         p->xAxis->setRange(std::max(0.0, from), std::max(kWindowS, tS));
         // The values' own range (a flat line at 0 gets +-1, not QCustomPlot's default).
         QCPRange r;
@@ -83,6 +96,8 @@ void XyPlots::clear() {
         p->replot(QCustomPlot::rpQueuedReplot);
     }
     lastReplotT_ = -1.0;
+    lastDrawnT_ = -1.0;
+    changed_ = true;
 }
 
 int XyPlots::pointCount() const {

@@ -16,6 +16,7 @@ class XySessionRunnable : public XyRunnable {
     void step(double dtS) override { session_->step(dtS); }
     XyController& controller() override { return session_->controller(); }
     double periodS() const override { return session_->periodS(); }
+    XyPlant* plant() override { return session_->hasPlant() ? &session_->plant() : nullptr; }
 
   private:
     std::unique_ptr<XySession> session_;
