@@ -10,7 +10,8 @@ int profileCommand(const QStringList& args);
 int runCommand(const QStringList& args);
 int latencyCommand(const QStringList& args);
 int serveCommand(const QStringList& args);
-/// tune identify | auto (tune_command.cpp; the step-test subcommands join it there).
+/// tune identify | auto (tune_model_command.cpp); tune dispatches to them.
+int tuneModelCommand(const QStringList& args, bool autotune);
 int tuneCommand(const QStringList& args);
 
 }  // namespace trilho::cli

@@ -16,7 +16,10 @@ const char* kUsage =
     "  latency   measure the servo loop's wake-up latency and body time\n"
     "  profile   check a machine profile (JSON) and print it in full\n"
     "  serve     run the rail headless with the DNC link (Modbus TCP/RTU)\n"
-    "  tune      identify the plant and tune the loop (identify, auto)\n"
+    "  tune      step tests, metrics, identification and autotune (tune step,
+    "
+    "            tune metrics, tune identify, tune auto)
+    "
     "\n"
     "Options:\n"
     "  -h, --help  print this help\n"

@@ -30,6 +30,7 @@
 #include "core/gcode/source_file.h"
 #include "core/machine/event_text.h"
 #include "core/runtime/servo_worker.h"
+#include "core/tuning/trace_writer.h"
 #include "hal/sim/fault_schedule.h"
 #include "host/common/data_paths.h"
 #include "host/session/sim_session.h"
@@ -43,11 +44,17 @@ constexpr const char* kRailTraceHeader =
     "t_s,block_n,setpoint_mm,position_mm,error_mm,velocity_mm_s,drive\n";
 
 void railTraceRow(TraceFile& trace, const TraceRow& r) {
-    char line[192];
-    const int len =
-        std::snprintf(line, sizeof line, "%.4f,%d,%.4f,%.4f,%.4f,%.3f,%d\n", r.timeS, r.blockN,
-                      r.setpointMm, r.positionMm, r.errorMm, r.velocityMmS, r.drive);
-    trace.line(line, len);
+    // std::to_chars, the columns and decimals of the former "%.4f,%d,%.4f,%.4f,%.4f,%.3f,%d".
+    CsvRow row;
+    row.num(r.timeS, 4)
+        .integer(r.blockN)
+        .num(r.setpointMm, 4)
+        .num(r.positionMm, 4)
+        .num(r.errorMm, 4)
+        .num(r.velocityMmS, 3)
+        .integer(r.drive)
+        .end();
+    trace.line(row.data(), static_cast<qint64>(row.size()));
 }
 
 /// What to do with the controller after a period; shared by both time bases.
@@ -174,6 +181,7 @@ Outcome runRealTime(const MachineProfile& profile, std::shared_ptr<const Program
         }
         worker.drainEvents([&](const ControllerEvent& e) { report.add(e); });
         worker.drainTrace([&](const TraceRow& r) { railTraceRow(trace, r); });
+        trace.flush();
         const ControllerStatus s = worker.snapshot();
         if (s.lastCommandSeq < startSeq) continue;
         bool press = false;

@@ -12,6 +12,7 @@
 #include <cerrno>
 #include <cstring>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "app/cli/cli_output.h"
@@ -73,7 +74,9 @@ struct Report {
 
 /// The --trace file: a regular file (or a new one) is written atomically (QSaveFile: a crash or
 /// a full disk never leaves half a trace where a good one was); a device or a FIFO (/dev/null,
-/// a pipe to a plotter) is written straight, never replaced. Any failed write is kept with its
+/// a pipe to a plotter) is written straight, never replaced. Rows are gathered in a buffer of
+/// kBufferBytes and written a block at a time: a write per row made a virtual-time run 11x
+/// slower to a file and 28x to a pipe (issue 21 item 3). Any failed write is kept with its
 /// reason and reported after the run's own result.
 class TraceFile {
   public:
@@ -109,17 +112,24 @@ class TraceFile {
             }
             file_ = std::move(f);
         }
-        write(header, static_cast<qint64>(std::strlen(header)));
+        buffer_.reserve(kBufferBytes + 1024);
+        line(header, static_cast<qint64>(std::strlen(header)));
         return true;
     }
-    /// One row, already formatted with its newline.
-    void line(const char* text, int len) {
+    /// One row (or more), already formatted with its newline.
+    void line(const char* text, qint64 len) {
         if (!file_ || !error_.isEmpty() || len <= 0) return;
-        write(text, len);
+        buffer_.append(text, static_cast<std::size_t>(len));
+        if (buffer_.size() >= kBufferBytes) flushBuffer();
+    }
+    /// Writes what is buffered now (a real-time run, so a live reader keeps up).
+    void flush() {
+        if (file_ && error_.isEmpty()) flushBuffer();
     }
     /// Finishes the file; false (with error()) when any write, the flush or the commit failed.
     bool close() {
         if (!file_) return true;
+        if (error_.isEmpty()) flushBuffer();
         if (auto* save = dynamic_cast<QSaveFile*>(file_.get())) {
             if (!error_.isEmpty()) {
                 save->cancelWriting();
@@ -140,13 +150,20 @@ class TraceFile {
         return QStringLiteral("cannot write trace '%1': %2").arg(path_, error_);
     }
 
+    static constexpr std::size_t kBufferBytes = 64 * 1024;
+
   private:
+    void flushBuffer() {
+        if (!buffer_.empty()) write(buffer_.data(), static_cast<qint64>(buffer_.size()));
+        buffer_.clear();
+    }
     void write(const char* data, qint64 len) {
         if (file_->write(data, len) != len && error_.isEmpty())
             error_ = file_->errorString().isEmpty() ? QStringLiteral("write failed")
                                                     : file_->errorString();
     }
     std::unique_ptr<QFileDevice> file_;
+    std::string buffer_;
     QString path_, error_;
 };
 

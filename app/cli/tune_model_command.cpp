@@ -1,8 +1,7 @@
 // trilho-cli tune identify|auto --machine P [--axis x|y] [--mass-factor F] [--seed N] [--json]
 //   [--write-profile OUT.json] (auto only)
 // Issue 21 items 5-8: identification of the plant and autotune, on the simulated machine in
-// virtual time. The tune dispatch lives here; `tune step` and `tune metrics` (the step-test
-// helper's) join it as further subcommands.
+// virtual time. tune_command.cpp dispatches here; every number comes from core/tuning.
 #include <QCommandLineParser>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -23,18 +22,6 @@ namespace {
 /// The rail starts at rest here, as if homed: 500 mm left of the centre, so the 1000 mm
 /// verification move ends 500 mm right of it, crossing the centre mark as a real move does.
 constexpr double kTuneStartMm = -500.0;
-
-const char* kTuneUsage =
-    "Usage: trilho-cli tune <subcommand> [options]\n"
-    "\n"
-    "Subcommands:\n"
-    "  identify  identify the plant's model from a bounded experiment (at most 3 s, within\n"
-    "            +-100 mm, back at its start within a count) and judge it on a held-out run\n"
-    "  auto      identify, design the gains (SIMC), predict the verification moves on the\n"
-    "            model, run them with the tuned gains, and report prediction against\n"
-    "            measurement\n"
-    "\n"
-    "Run 'trilho-cli tune <subcommand> --help' for its options.\n";
 
 QString tuneExitHelp() {
     return QStringLiteral(
@@ -325,25 +312,8 @@ int tuneRail(const QStringList& args, bool autotune) {
 
 }  // namespace
 
-int tuneCommand(const QStringList& args) {
-    if (args.size() < 2) {
-        err(QStringLiteral("trilho-cli tune: a subcommand is needed (identify or auto)\n") +
-            QString::fromLatin1(kTuneUsage));
-        return kUsage;
-    }
-    const QString sub = args.at(1);
-    QStringList rest = args;
-    rest.removeAt(1);
-    rest[0] = QStringLiteral("trilho-cli tune ") + sub;
-    if (sub == QLatin1String("identify")) return tuneRail(rest, false);
-    if (sub == QLatin1String("auto")) return tuneRail(rest, true);
-    if (sub == QLatin1String("--help") || sub == QLatin1String("-h")) {
-        out(QString::fromLatin1(kTuneUsage) + QLatin1Char('\n') + tuneExitHelp());
-        return kOk;
-    }
-    err(QStringLiteral("trilho-cli tune: unknown subcommand '%1'\n%2")
-            .arg(sub, QString::fromLatin1(kTuneUsage)));
-    return kUsage;
+int tuneModelCommand(const QStringList& args, bool autotune) {
+    return tuneRail(args, autotune);
 }
 
 }  // namespace trilho::cli

@@ -10,6 +10,7 @@
 #include <QCoreApplication>
 
 #include "core/machine/serial_link_motion.h"
+#include "core/tuning/trace_writer.h"
 #include "host/session/late_ticks.h"
 #include "host/session/xy_device_session.h"
 #include "host/session/xy_session.h"
@@ -28,15 +29,25 @@ double round4(double v) {
 }
 
 void traceRow(TraceFile& trace, const XyStatus& s) {
-    char line[256];
-    const char* pen = s.sample.pen == PenState::Down ? "1"
-                      : s.sample.pen == PenState::Up ? "0"
-                                                     : "";
-    const int len =
-        std::snprintf(line, sizeof line, "%.4f,%d,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%s\n", s.timeS,
-                      s.blockN, s.sample.x.setpointMm, s.sample.x.positionMm, s.sample.y.setpointMm,
-                      s.sample.y.positionMm, s.sample.x.drive, s.sample.y.drive, pen);
-    trace.line(line, len);
+    // std::to_chars, the columns and decimals of the former
+    // "%.4f,%d,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%s".
+    CsvRow row;
+    row.num(s.timeS, 4)
+        .integer(s.blockN)
+        .num(s.sample.x.setpointMm, 4)
+        .num(s.sample.x.positionMm, 4)
+        .num(s.sample.y.setpointMm, 4)
+        .num(s.sample.y.positionMm, 4)
+        .num(s.sample.x.drive, 3)
+        .num(s.sample.y.drive, 3);
+    if (s.sample.pen == PenState::Down)
+        row.integer(1);
+    else if (s.sample.pen == PenState::Up)
+        row.integer(0);
+    else
+        row.empty();
+    row.end();
+    trace.line(row.data(), static_cast<qint64>(row.size()));
 }
 
 /// Returns true when the run is over (as the rail's Supervisor).

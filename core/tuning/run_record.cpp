@@ -133,12 +133,38 @@ QByteArray runConditionsToJson(const RunConditions& c, const StepMetrics* metric
     o[QStringLiteral("settle_s")] = c.settleS;
     o[QStringLiteral("pre_roll_s")] = c.preRollS;
     o[QStringLiteral("max_duration_s")] = c.maxDurationS;
+    o[QStringLiteral("envelope_margin_mm")] = c.envelopeMarginMm;
     o[QStringLiteral("counts_per_mm")] = c.countsPerMm;
     o[QStringLiteral("abort_reason")] = c.abortReason;
     o[QStringLiteral("profile")] =
         QJsonDocument::fromJson(machineProfileToJson(c.profile)).object();
     if (metrics) o[QStringLiteral("metrics")] = stepMetricsToJson(*metrics);
     return QJsonDocument(o).toJson(QJsonDocument::Indented);
+}
+
+void formatRunCsvRow(const RunChannels& c, std::size_t k, bool integerDrive, CsvRow& row) {
+    auto at = [k](const std::vector<double>& v) { return k < v.size() ? v[k] : kNaN; };
+    row.clear();
+    row.num(at(c.timeS), kDecimals)
+        .integer(k < c.blockN.size() ? c.blockN[k] : -1)
+        .num(at(c.setpointMm), kDecimals)
+        .num(at(c.positionMm), kDecimals)
+        .num(at(c.errorMm), kDecimals)
+        .num(at(c.velocityMmS), kDecimals);
+    const double d = at(c.drive);
+    row.num(d, integerDrive && d == std::floor(d) ? 0 : kDecimals)
+        .num(at(c.setpointVelocityMmS), kDecimals)
+        .num(at(c.pCodes), kDecimals)
+        .num(at(c.iCodes), kDecimals)
+        .num(at(c.dCodes), kDecimals)
+        .num(at(c.ffCodes), kDecimals)
+        .num(at(c.sumCodes), kDecimals)
+        .num(at(c.commandCodes), kDecimals);
+    if (k < c.saturated.size())
+        row.integer(c.saturated[k] ? 1 : 0);
+    else
+        row.empty();
+    row.end();
 }
 
 namespace {
@@ -154,33 +180,10 @@ bool writeAtomically(const QString& path, const QByteArray& head, const RunChann
     if (rows) {
         const RunChannels& c = *rows;
         const std::size_t n = c.size();
-        auto at = [](const std::vector<double>& v, std::size_t k) {
-            return k < v.size() ? v[k] : kNaN;
-        };
         CsvRow row;
         buffer.reserve(1 << 20);
         for (std::size_t k = 0; k < n; ++k) {
-            row.clear();
-            row.num(c.timeS[k], kDecimals)
-                .integer(k < c.blockN.size() ? c.blockN[k] : -1)
-                .num(at(c.setpointMm, k), kDecimals)
-                .num(at(c.positionMm, k), kDecimals)
-                .num(at(c.errorMm, k), kDecimals)
-                .num(at(c.velocityMmS, k), kDecimals);
-            const double d = at(c.drive, k);
-            row.num(d, integerDrive && d == std::floor(d) ? 0 : kDecimals)
-                .num(at(c.setpointVelocityMmS, k), kDecimals)
-                .num(at(c.pCodes, k), kDecimals)
-                .num(at(c.iCodes, k), kDecimals)
-                .num(at(c.dCodes, k), kDecimals)
-                .num(at(c.ffCodes, k), kDecimals)
-                .num(at(c.sumCodes, k), kDecimals)
-                .num(at(c.commandCodes, k), kDecimals);
-            if (k < c.saturated.size())
-                row.integer(c.saturated[k] ? 1 : 0);
-            else
-                row.empty();
-            row.end();
+            formatRunCsvRow(c, k, integerDrive, row);
             buffer.append(row.data(), static_cast<qsizetype>(row.size()));
             if (buffer.size() > (1 << 20)) {
                 if (f.write(buffer) != buffer.size()) break;
@@ -487,6 +490,7 @@ std::optional<RunConditions> runConditionsFromJson(const QByteArray& json, const
         !num("speed_fraction", 1e-3, 1.0, c.speedFraction) ||
         !num("settle_s", 0.0, 600.0, c.settleS) || !num("pre_roll_s", 0.0, 600.0, c.preRollS) ||
         !num("max_duration_s", 0.0, 3600.0, c.maxDurationS) ||
+        !num("envelope_margin_mm", 0.0, 1e5, c.envelopeMarginMm) ||
         !num("counts_per_mm", 1e-3, 1e6, c.countsPerMm))
         return std::nullopt;
     const QJsonValue seed = o.value(QStringLiteral("seed"));

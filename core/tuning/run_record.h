@@ -12,6 +12,7 @@
 
 #include "core/machine/machine_profile.h"
 #include "core/tuning/step_metrics.h"
+#include "core/tuning/trace_writer.h"
 
 namespace trilho {
 
@@ -37,10 +38,11 @@ struct RunConditions {
     std::uint64_t seed = 1;
     double startMm = 0.0;
     double amplitudeMm = 0.0;
-    double speedFraction = 1.0;  ///< of the machine's rapid speed
-    double settleS = 0.5;        ///< recorded after in position
-    double preRollS = 0.01;      ///< recorded at rest before the step
-    double maxDurationS = 0.0;   ///< 0: automatic
+    double speedFraction = 1.0;     ///< of the machine's rapid speed
+    double settleS = 0.5;           ///< recorded after in position
+    double preRollS = 0.01;         ///< recorded at rest before the step
+    double maxDurationS = 0.0;      ///< 0: automatic
+    double envelopeMarginMm = 0.0;  ///< 0: automatic
     double countsPerMm = 22.8;
     QString abortReason;  ///< empty when the test ran to its end
 };
@@ -76,6 +78,8 @@ inline constexpr std::size_t kMaxRunRows = 5'000'000;
 
 /// The CSV header of a record (no newline).
 const char* runCsvHeader();
+/// Row k of the record's CSV (with its newline) into row. integerDrive: the rail's DAC code.
+void formatRunCsvRow(const RunChannels& c, std::size_t k, bool integerDrive, CsvRow& row);
 /// The sidecar's path for a CSV path: "run.csv" -> "run.json", "run" -> "run.json".
 QString runSidecarPath(const QString& csvPath);
 

@@ -85,9 +85,10 @@ StepMetrics measureStep(const StepSignals& s) {
         if (lower == n && sgn * (y - 0.1 * a) >= 0) lower = k;
         if (upper == n && sgn * (y - 0.9 * a) >= 0) upper = k;
         if (std::abs(y / a - 1.0) >= kSettlingBand) lastOut = k;
-        // One count of the target: positions are whole counts on the rail; 1e-6 absorbs the
-        // rounding of count / counts-per-mm so that exactly one count off is inside.
-        if (std::abs(m.targetMm - x[k]) > countMm * (1.0 + 1e-6)) lastOutCount = k;
+        // One count of the target: positions are whole counts on the rail; 1e-5 mm absorbs the
+        // rounding of count / counts-per-mm (and of a record's 1e-6 mm) so that exactly one
+        // count off is inside.
+        if (std::abs(m.targetMm - x[k]) > countMm + 1e-5) lastOutCount = k;
         const double e = sp[k] - x[k];
         yOs = std::max(yOs, sgn * y);
         yUs = std::min(yUs, sgn * y);

@@ -30,7 +30,9 @@ struct StepTestSpec {
     std::optional<double> startMm;     ///< default: rail centre; table: the middle of the axis
     std::optional<LoopLaw> law;        ///< default: the profile's
     std::optional<TuningGains> gains;  ///< default: the profile's for the law
-    double massFactor = 1.0;           ///< multiplies the profile's (the loop is not told)
+    /// Loop period, s; default: the profile's (the 1996 gains are per tick: try 0.01 vs 0.001).
+    std::optional<double> periodS;
+    double massFactor = 1.0;  ///< multiplies the profile's (the loop is not told)
     std::uint64_t seed = 1;
     double speedFraction = 1.0;  ///< 1: a step at rapid; below: a ramp at that fraction
     double preRollS = 0.01;

@@ -115,11 +115,14 @@ TEST_F(CliExitStatus, EveryCommandListsWhatItReturns) {
         const char* command;
         std::vector<int> statuses;
     };
-    const Expect commands[] = {{"compile", {0, 1, 2}}, {"run", {0, 1, 2, 3, 4}},
-                               {"serve", {0, 2}},      {"profile", {0, 2}},
-                               {"latency", {0, 2}},    {"tune", {0, 2, 3}}};
+    const Expect commands[] = {
+        {"compile", {0, 1, 2}},   {"run", {0, 1, 2, 3, 4}}, {"serve", {0, 2}},
+        {"profile", {0, 2}},      {"latency", {0, 2}},      {"tune", {0, 2, 3}},
+        {"tune step", {0, 2, 3}}, {"tune metrics", {0, 2}}, {"tune identify", {0, 2, 3}},
+        {"tune auto", {0, 2, 3}}};
     for (const Expect& e : commands) {
-        const CliResult r = runCli({QString::fromLatin1(e.command), QStringLiteral("--help")});
+        const CliResult r = runCli(QString::fromLatin1(e.command).split(QLatin1Char(' ')) +
+                                   QStringList{QStringLiteral("--help")});
         EXPECT_EQ(r.exit, 0) << e.command;
         const std::map<int, QString> listed = listedStatuses(r.out);
         std::vector<int> got;
@@ -129,7 +132,8 @@ TEST_F(CliExitStatus, EveryCommandListsWhatItReturns) {
     }
     // And each a usage error really is 2; compile's 0 and 1 and profile's 0 really happen.
     for (const Expect& e : commands) {
-        const CliResult r = runCli({QString::fromLatin1(e.command), QStringLiteral("--bogus")});
+        const CliResult r = runCli(QString::fromLatin1(e.command).split(QLatin1Char(' ')) +
+                                   QStringList{QStringLiteral("--bogus")});
         EXPECT_EQ(r.exit, 2) << e.command << r.err.toStdString();
         EXPECT_TRUE(r.err.startsWith(QStringLiteral("trilho-cli ") + QLatin1String(e.command)))
             << r.err.toStdString();

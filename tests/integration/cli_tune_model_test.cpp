@@ -28,7 +28,7 @@ QJsonObject jsonOf(const CliResult& r) {
     return d.object();
 }
 
-TEST(CliTune, HelpListsZeroTwoThree) {
+TEST(CliTuneModel, HelpListsZeroTwoThree) {
     for (const char* sub : {"identify", "auto"}) {
         const CliResult r = runCli(tune(sub, {QStringLiteral("--help")}));
         EXPECT_EQ(r.exit, 0) << sub;
@@ -40,7 +40,7 @@ TEST(CliTune, HelpListsZeroTwoThree) {
     EXPECT_TRUE(top.out.contains(QStringLiteral("tune"))) << top.out.toStdString();
 }
 
-TEST(CliTune, IdentifyJsonHasTheModelWithUnits) {
+TEST(CliTuneModel, IdentifyJsonHasTheModelWithUnits) {
     const CliResult r =
         runCli(tune("identify", {QStringLiteral("--machine"), QStringLiteral("rail"),
                                  QStringLiteral("--json")}));
@@ -55,7 +55,7 @@ TEST(CliTune, IdentifyJsonHasTheModelWithUnits) {
     EXPECT_LE(o[QStringLiteral("experiment_time_s")].toDouble(), 3.0);
 }
 
-TEST(CliTune, SameNumbersForTheSameSeed) {
+TEST(CliTuneModel, SameNumbersForTheSameSeed) {
     const QStringList args =
         tune("auto", {QStringLiteral("--mass-factor"), QStringLiteral("3"),
                       QStringLiteral("--seed"), QStringLiteral("7"), QStringLiteral("--json")});
@@ -64,7 +64,7 @@ TEST(CliTune, SameNumbersForTheSameSeed) {
     EXPECT_EQ(a.out, b.out);
 }
 
-TEST(CliTune, AutoWritesAProfileThatRunTakes) {
+TEST(CliTuneModel, AutoWritesAProfileThatRunTakes) {
     QTemporaryDir dir;
     const QString out = dir.filePath(QStringLiteral("tuned.json"));
     const CliResult r =
@@ -90,7 +90,7 @@ TEST(CliTune, AutoWritesAProfileThatRunTakes) {
     EXPECT_EQ(run.exit, 0) << run.out.toStdString() << run.err.toStdString();
 }
 
-TEST(CliTune, BadInputIsAUsageErrorInOneLine) {
+TEST(CliTuneModel, BadInputIsAUsageErrorInOneLine) {
     const QStringList bad[] = {
         tune("identify", {QStringLiteral("--bogus")}),
         tune("identify", {QStringLiteral("--mass-factor"), QStringLiteral("abc")}),
@@ -113,7 +113,7 @@ TEST(CliTune, BadInputIsAUsageErrorInOneLine) {
     }
 }
 
-TEST(CliTune, AnExperimentStoppedByAnAlarmIsThree) {
+TEST(CliTuneModel, AnExperimentStoppedByAnAlarmIsThree) {
     // x20 the mass: the platform cannot follow the experiment's drive and the servo stops it.
     const CliResult r =
         runCli(tune("identify", {QStringLiteral("--mass-factor"), QStringLiteral("20")}));

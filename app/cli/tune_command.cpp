@@ -1,0 +1,428 @@
+// trilho-cli tune step|metrics: step and ramp tests on the simulated machines and the metrics
+// of any trace (issue 21 items 1, 2 and 8). Every number comes from core/tuning and
+// host/tuning, the same code the screens call; this file parses and formats only.
+#include <QCommandLineParser>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+#include <cmath>
+
+#include "app/cli/cli_output.h"
+#include "app/cli/commands.h"
+#include "app/cli/run_support.h"
+#include "core/tuning/run_record.h"
+#include "host/common/data_paths.h"
+#include "host/tuning/step_test.h"
+
+namespace trilho::cli {
+
+namespace {
+
+const char* kTuneUsage =
+    "Usage: trilho-cli tune <subcommand> [options]\n"
+    "\n"
+    "Subcommands:\n"
+    "  step      run a step (or ramp) test on the simulated machine and measure it\n"
+    "  metrics   measure a trace written by 'run --trace' or 'tune step --trace'\n"
+    "  identify  identify the plant's model from a bounded experiment (at most 3 s, within\n"
+    "            +-100 mm, back at its start within a count), judged on a held-out run\n"
+    "  auto      identify, design the gains (SIMC), predict the verification moves on the\n"
+    "            model, run them with the tuned gains, report prediction against measurement\n"
+    "\n"
+    "Run 'trilho-cli tune <subcommand> --help' for its options.\n";
+
+QString lawName(LoopLaw law) {
+    return law == LoopLaw::Classic ? QStringLiteral("classic") : QStringLiteral("engineered");
+}
+
+QString fmt(double v, int decimals) {
+    return std::isfinite(v) ? QString::number(v, 'f', decimals) : QStringLiteral("not reached");
+}
+
+/// The metrics as the text report prints them (the JSON has the same figures, unrounded).
+QString metricsText(const StepMetrics& m) {
+    if (!m.ok) return QStringLiteral("no metrics: %1\n").arg(QString::fromStdString(m.problem));
+    QString t;
+    auto row = [&](const char* name, const QString& value, const char* unit) {
+        const bool reached = value != QLatin1String("not reached") && *unit;
+        t += QStringLiteral("  %1 %2%3\n")
+                 .arg(QLatin1String(name), -28)
+                 .arg(value)
+                 .arg(reached ? QLatin1Char(' ') + QLatin1String(unit) : QString());
+    };
+    row("step",
+        QStringLiteral("%1 -> %2 mm (%3 mm) at %4 s")
+            .arg(fmt(m.startMm, 4), fmt(m.targetMm, 4), fmt(m.amplitudeMm, 4), fmt(m.stepTimeS, 4)),
+        "");
+    row("rise time 10-90 %", fmt(m.riseTimeS, 4), "s");
+    row("settling time (2 %)", fmt(m.settlingTimeS, 4), "s");
+    row("settling time (1 count)", fmt(m.settlingTime1CountS, 4), "s");
+    row("overshoot", fmt(m.overshootPct, 3), "%");
+    row("peak (from the start)",
+        QStringLiteral("%1 mm at %2 s").arg(fmt(m.peakMm, 4), fmt(m.peakTimeS, 4)), "");
+    row("steady-state error", fmt(m.steadyStateErrorCounts, 2), "counts");
+    row("IAE", fmt(m.iae, 6), "mm.s");
+    row("ITAE", fmt(m.itae, 6), "mm.s2");
+    row("ISE", fmt(m.ise, 6), "mm2.s");
+    row("following error max", fmt(m.followingErrorMaxMm, 4), "mm");
+    row("following error RMS", fmt(m.followingErrorRmsMm, 4), "mm");
+    row("time saturated",
+        m.saturationKnown ? fmt(m.saturatedTimeS, 4) : QStringLiteral("not recorded"), "s");
+    return t;
+}
+
+/// The JSON of a run: the metrics' keys at the top, then the conditions when known.
+QJsonObject runJsonObject(const StepMetrics& m, const RunConditions* c) {
+    QJsonObject o = stepMetricsToJson(m);
+    if (c) {
+        o[QStringLiteral("machine")] = c->profile.name;
+        o[QStringLiteral("axis")] =
+            c->axis ? QJsonValue(QString(QLatin1Char(c->axis))) : QJsonValue(QJsonValue::Null);
+        o[QStringLiteral("law")] = lawName(c->law);
+        o[QStringLiteral("gains")] = tuningGainsToJson(c->gains, c->profile.kind, c->law);
+        o[QStringLiteral("period_s")] = c->periodS;
+        o[QStringLiteral("mass_factor")] = c->massFactor;
+        o[QStringLiteral("seed")] = QString::number(c->seed);
+        o[QStringLiteral("test")] = c->test;
+        o[QStringLiteral("start_mm")] = c->startMm;
+        o[QStringLiteral("counts_per_mm")] = c->countsPerMm;
+    }
+    return o;
+}
+
+int stepCommand(const QStringList& args) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Run a step (or, with --speed-fraction, a ramp) test on the simulated machine in "
+        "virtual time: hold still 10 ms, move by --amplitude through the machine's servo, "
+        "record every tick until in position for --settle seconds, and measure it. Always "
+        "inside the soft limits, with the profile's following-error limit; aborted on a servo "
+        "alarm, on more than 200 ms of continuous saturation, or on leaving the envelope."));
+    const QCommandLineOption machineOpt(
+        QStringLiteral("machine"),
+        QStringLiteral("Machine profile: a file or a shipped name (rail, xy_dc_table; default "
+                       "rail)."),
+        QStringLiteral("PROFILE"));
+    const QCommandLineOption axisOpt(QStringLiteral("axis"),
+                                     QStringLiteral("DC table: the axis to test, x or y."),
+                                     QStringLiteral("x|y"));
+    const QCommandLineOption ampOpt(QStringLiteral("amplitude"),
+                                    QStringLiteral("The step, mm; its sign is the direction."),
+                                    QStringLiteral("MM"));
+    const QCommandLineOption startOpt(
+        QStringLiteral("start"),
+        QStringLiteral("Where the test starts, mm (default: the rail centre, the middle of a "
+                       "table axis)."),
+        QStringLiteral("MM"));
+    const QCommandLineOption lawOpt(QStringLiteral("law"),
+                                    QStringLiteral("classic or engineered (default: the "
+                                                   "profile's)."),
+                                    QStringLiteral("LAW"));
+    const QCommandLineOption kpOpt(QStringLiteral("kp"), QStringLiteral("Proportional gain."),
+                                   QStringLiteral("K"));
+    const QCommandLineOption kiOpt(QStringLiteral("ki"), QStringLiteral("Integral gain."),
+                                   QStringLiteral("K"));
+    const QCommandLineOption kdOpt(
+        QStringLiteral("kd"), QStringLiteral("Derivative gain (the rail)."), QStringLiteral("K"));
+    const QCommandLineOption kffOpt(
+        QStringLiteral("kff"),
+        QStringLiteral("Velocity feed-forward gain (DC table, engineered law)."),
+        QStringLiteral("K"));
+    const QCommandLineOption b0Opt(QStringLiteral("b0"),
+                                   QStringLiteral("b0 of the DC table's classic law."),
+                                   QStringLiteral("B"));
+    const QCommandLineOption b1Opt(QStringLiteral("b1"),
+                                   QStringLiteral("b1 of the DC table's classic law."),
+                                   QStringLiteral("B"));
+    const QCommandLineOption periodOpt(
+        QStringLiteral("period"),
+        QStringLiteral("Loop period, s (default: the profile's; the 1996 gains are per tick)."),
+        QStringLiteral("S"));
+    const QCommandLineOption massOpt(QStringLiteral("mass-factor"),
+                                     QStringLiteral("Multiply the simulated moving mass (0.1-20)."),
+                                     QStringLiteral("F"));
+    const QCommandLineOption seedOpt(QStringLiteral("seed"),
+                                     QStringLiteral("Seed of the simulation's randomness."),
+                                     QStringLiteral("N"));
+    const QCommandLineOption fracOpt(
+        QStringLiteral("speed-fraction"),
+        QStringLiteral("Move at this fraction of rapid (0-1]: below 1 a ramp test."),
+        QStringLiteral("F"));
+    const QCommandLineOption settleOpt(
+        QStringLiteral("settle"),
+        QStringLiteral("Record this long once in position, s (default 0.5)."), QStringLiteral("S"));
+    const QCommandLineOption durationOpt(
+        QStringLiteral("max-seconds"),
+        QStringLiteral("End the test after this long, s (default: the move's time plus 3 s)."),
+        QStringLiteral("S"));
+    const QCommandLineOption traceOpt(
+        QStringLiteral("trace"),
+        QStringLiteral("Write every tick to this CSV (and its conditions and metrics to the "
+                       "JSON beside it)."),
+        QStringLiteral("FILE.csv"));
+    const QCommandLineOption jsonOpt(QStringLiteral("json"),
+                                     QStringLiteral("Print one JSON object."));
+    parser.addOptions({machineOpt, axisOpt, ampOpt, startOpt, lawOpt, kpOpt, kiOpt, kdOpt, kffOpt,
+                       b0Opt, b1Opt, periodOpt, massOpt, seedOpt, fracOpt, settleOpt, durationOpt,
+                       traceOpt, jsonOpt});
+    if (auto done = parseArguments(parser, args, "tune step")) return *done;
+    auto usage = [](const QString& m) { return usageError("tune step", m); };
+    if (!parser.positionalArguments().isEmpty())
+        return usage(
+            QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().front()));
+    const ProfileLoad load = loadNamedMachineProfile(parser.value(machineOpt));
+    if (!load.profile) return usage(load.error);
+    if (!load.error.isEmpty()) err(QStringLiteral("trilho-cli tune step: %1\n").arg(load.error));
+    StepTestSpec spec;
+    spec.profile = *load.profile;
+    const bool table = spec.profile.kind == MachineKind::DcTable;
+    if (spec.profile.kind == MachineKind::Plotter)
+        return usage(QStringLiteral(
+            "the plotter has no encoder to measure a step with; its speed and acceleration "
+            "margin test is not built yet"));
+    if (parser.isSet(axisOpt)) {
+        const QString a = parser.value(axisOpt);
+        if (a != QLatin1String("x") && a != QLatin1String("y"))
+            return usage(QStringLiteral("--axis must be x or y (got '%1')").arg(a));
+        if (!table)
+            return usage(QStringLiteral("--axis is for the DC table: the rail has one axis"));
+        spec.axis = a.at(0).toLatin1();
+    } else if (table) {
+        return usage(QStringLiteral("the DC table has two axes: choose one with --axis x or y"));
+    }
+    auto number = [&](const QCommandLineOption& opt, double lo, double hi,
+                      double& into) -> std::optional<int> {
+        if (!parser.isSet(opt)) return std::nullopt;
+        bool ok = false;
+        const double v = parser.value(opt).toDouble(&ok);
+        if (!ok || !std::isfinite(v) || v < lo || v > hi)
+            return usage(QStringLiteral("--%1 must be a number from %2 to %3 (got '%4')")
+                             .arg(opt.names().front())
+                             .arg(lo)
+                             .arg(hi)
+                             .arg(parser.value(opt)));
+        into = v;
+        return std::nullopt;
+    };
+    if (!parser.isSet(ampOpt)) return usage(QStringLiteral("--amplitude MM is required"));
+    if (auto e = number(ampOpt, -1e4, 1e4, spec.amplitudeMm)) return *e;
+    if (spec.amplitudeMm == 0.0) return usage(QStringLiteral("--amplitude must not be 0"));
+    if (parser.isSet(startOpt)) {
+        double s = 0.0;
+        if (auto e = number(startOpt, -1e4, 1e4, s)) return *e;
+        spec.startMm = s;
+    }
+    if (parser.isSet(lawOpt)) {
+        const QString l = parser.value(lawOpt);
+        if (l == QLatin1String("classic"))
+            spec.law = LoopLaw::Classic;
+        else if (l == QLatin1String("engineered"))
+            spec.law = LoopLaw::Engineered;
+        else
+            return usage(QStringLiteral("--law must be classic or engineered (got '%1')").arg(l));
+    }
+    const LoopLaw law =
+        spec.law ? *spec.law : (table ? spec.profile.dcTable.law : spec.profile.loop.law);
+    TuningGains g = profileGains(spec.profile, spec.axis, law);
+    const bool dcClassic = table && law == LoopLaw::Classic;
+    struct GainOpt {
+        const QCommandLineOption* opt;
+        double* into;
+        bool applies;
+        const char* where;
+    };
+    const GainOpt gains[] = {
+        {&kpOpt, &g.kp, !dcClassic, "the rail and the DC table's engineered law"},
+        {&kiOpt, &g.ki, !dcClassic, "the rail and the DC table's engineered law"},
+        {&kdOpt, &g.kd, !table, "the rail (the DC table's laws have no D term)"},
+        {&kffOpt, &g.kff, table && !dcClassic, "the DC table's engineered law"},
+        {&b0Opt, &g.b0, dcClassic, "the DC table's classic law"},
+        {&b1Opt, &g.b1, dcClassic, "the DC table's classic law"},
+    };
+    bool anyGain = false;
+    for (const GainOpt& o : gains) {
+        if (!parser.isSet(*o.opt)) continue;
+        if (!o.applies)
+            return usage(QStringLiteral("--%1 is for %2")
+                             .arg(o.opt->names().front(), QLatin1String(o.where)));
+        if (auto e = number(*o.opt, -1e6, 1e6, *o.into)) return *e;
+        anyGain = true;
+    }
+    if (anyGain) spec.gains = g;
+    if (parser.isSet(periodOpt)) {
+        double p = 0.0;
+        if (auto e = number(periodOpt, kMinSamplePeriodS, 0.05, p)) return *e;
+        spec.periodS = p;
+    }
+    if (auto e = number(massOpt, 0.1, 20.0, spec.massFactor)) return *e;
+    if (auto e = number(fracOpt, 0.001, 1.0, spec.speedFraction)) return *e;
+    if (auto e = number(settleOpt, 0.0, 60.0, spec.settleS)) return *e;
+    if (auto e = number(durationOpt, 0.01, 600.0, spec.maxDurationS)) return *e;
+    if (parser.isSet(seedOpt)) {
+        bool ok = false;
+        spec.seed = parser.value(seedOpt).toULongLong(&ok);
+        if (!ok)
+            return usage(QStringLiteral("--seed must be a whole number from 0 to "
+                                        "18446744073709551615 (got '%1')")
+                             .arg(parser.value(seedOpt)));
+    }
+    const QString tracePath = parser.value(traceOpt);
+    // Open the trace before the test: a path that cannot be written is said before any work.
+    TraceFile trace;
+    QString traceError;
+    if (!trace.open(tracePath, "", &traceError)) return usage(traceError);
+
+    const StepTestResult r = runStepTest(spec);
+    if (r.abort == StepAbort::Refused) {
+        trace.close();
+        return usage(r.abortReason);
+    }
+    bool traceOk = true;
+    QString traceFailure;
+    if (trace.active()) {
+        const QByteArray header = QByteArray(runCsvHeader()) + '\n';
+        trace.line(header.constData(), header.size());
+        CsvRow row;
+        const RunChannels& c = r.record.channels;
+        for (std::size_t k = 0; k < c.size(); ++k) {
+            formatRunCsvRow(c, k, !table, row);
+            trace.line(row.data(), static_cast<qint64>(row.size()));
+        }
+        traceOk = trace.close();
+        if (!traceOk) traceFailure = trace.error();
+        // The sidecar beside a regular file (not beside a pipe or a device).
+        if (traceOk && QFileInfo(tracePath).isFile()) {
+            QSaveFile side(runSidecarPath(tracePath));
+            const QByteArray json = runConditionsToJson(r.record.conditions, &r.metrics);
+            if (!side.open(QIODevice::WriteOnly) || side.write(json) != json.size() ||
+                !side.commit()) {
+                traceFailure = QStringLiteral("cannot write '%1': %2")
+                                   .arg(runSidecarPath(tracePath), side.errorString());
+                traceOk = false;
+            }
+        }
+    }
+    const RunConditions& c = r.record.conditions;
+    if (parser.isSet(jsonOpt)) {
+        QJsonObject o = runJsonObject(r.metrics, &c);
+        o[QStringLiteral("aborted")] = !r.ok();
+        o[QStringLiteral("abort_reason")] =
+            r.ok() ? QJsonValue(QJsonValue::Null) : QJsonValue(r.abortReason);
+        o[QStringLiteral("ok")] = r.ok() && r.metrics.ok;
+        out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
+    } else {
+        QString gainsText;
+        const QJsonObject gj = tuningGainsToJson(c.gains, c.profile.kind, c.law);
+        for (auto it = gj.begin(); it != gj.end(); ++it)
+            gainsText += QStringLiteral(" %1 %2").arg(it.key()).arg(it.value().toDouble());
+        out(QStringLiteral("%1 of %2 mm on %3%4 from %5 mm: %6 law,%7, period %8 ms, mass x%9, "
+                           "seed %10\n")
+                .arg(c.test)
+                .arg(c.amplitudeMm)
+                .arg(c.profile.name,
+                     c.axis ? QStringLiteral(" axis ") + QLatin1Char(c.axis) : QString())
+                .arg(c.startMm)
+                .arg(lawName(c.law), gainsText)
+                .arg(c.periodS * 1000.0)
+                .arg(c.massFactor)
+                .arg(c.seed));
+        if (!r.ok()) out(QStringLiteral("ABORTED: %1\n").arg(r.abortReason));
+        out(metricsText(r.metrics));
+    }
+    if (!traceOk) {
+        err(QStringLiteral("trilho-cli tune step: %1\n").arg(traceFailure));
+        return kUsage;
+    }
+    return r.ok() ? kOk : kAlarm;
+}
+
+int metricsCommand(const QStringList& args) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Measure a trace written by 'trilho-cli run --trace' or 'trilho-cli tune step "
+        "--trace': the step is taken from the setpoint column (its first value to its last)."));
+    const QCommandLineOption axisOpt(
+        QStringLiteral("axis"),
+        QStringLiteral("The axis of an XY trace (x_setpoint_mm ...): x or y."),
+        QStringLiteral("x|y"));
+    const QCommandLineOption machineOpt(
+        QStringLiteral("machine"),
+        QStringLiteral("For a trace without its JSON sidecar: the profile whose encoder sets "
+                       "the count (default rail, 22.8 counts/mm)."),
+        QStringLiteral("PROFILE"));
+    const QCommandLineOption jsonOpt(QStringLiteral("json"),
+                                     QStringLiteral("Print one JSON object."));
+    parser.addOptions({axisOpt, machineOpt, jsonOpt});
+    parser.addPositionalArgument(QStringLiteral("TRACE"), QStringLiteral("The trace (CSV)."),
+                                 QStringLiteral("TRACE.csv"));
+    if (auto done = parseArguments(parser, args, "tune metrics")) return *done;
+    auto usage = [](const QString& m) { return usageError("tune metrics", m); };
+    const QStringList files = parser.positionalArguments();
+    if (files.size() != 1)
+        return usage(QStringLiteral("expected exactly one TRACE.csv, got %1").arg(files.size()));
+    char axis = 0;
+    if (parser.isSet(axisOpt)) {
+        const QString a = parser.value(axisOpt);
+        if (a != QLatin1String("x") && a != QLatin1String("y"))
+            return usage(QStringLiteral("--axis must be x or y (got '%1')").arg(a));
+        axis = a.at(0).toLatin1();
+    }
+    const RunLoad load = loadRunRecord(QString::fromLocal8Bit(localPath(files.front())), axis);
+    if (!load.record) return usage(load.error);
+    const RunRecord& rec = *load.record;
+    double countsPerMm = 22.8;
+    if (rec.hasConditions) {
+        countsPerMm = rec.conditions.countsPerMm;
+    } else {
+        const ProfileLoad p = loadNamedMachineProfile(parser.value(machineOpt));
+        if (!p.profile) return usage(p.error);
+        if (p.profile->kind == MachineKind::DcTable) {
+            const DcAxisParams& a = axis == 'y' ? p.profile->dcTable.y : p.profile->dcTable.x;
+            countsPerMm = 2.0 * 3.14159265358979323846 / (a.mmPerTurn * a.radPerCount);
+        } else {
+            countsPerMm = p.profile->plant.countsPerMm;
+        }
+    }
+    const StepMetrics m = measureRun(rec.channels, countsPerMm);
+    if (!m.ok)
+        return usage(QStringLiteral("%1: no step to measure: %2")
+                         .arg(files.front(), QString::fromStdString(m.problem)));
+    if (parser.isSet(jsonOpt)) {
+        QJsonObject o = runJsonObject(m, rec.hasConditions ? &rec.conditions : nullptr);
+        o[QStringLiteral("trace")] = files.front();
+        if (!rec.hasConditions) o[QStringLiteral("counts_per_mm")] = countsPerMm;
+        out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
+    } else {
+        out(QStringLiteral("%1: %2 ticks\n").arg(files.front()).arg(m.samples));
+        out(metricsText(m));
+    }
+    return kOk;
+}
+
+}  // namespace
+
+int tuneCommand(const QStringList& args) {
+    if (args.size() < 2) {
+        err(QStringLiteral("trilho-cli tune: expected a subcommand\n") +
+            QString::fromLatin1(kTuneUsage));
+        return kUsage;
+    }
+    const QString sub = args.at(1);
+    if (sub == QLatin1String("--help") || sub == QLatin1String("-h")) {
+        out(QString::fromLatin1(kTuneUsage) + QLatin1Char('\n') + exitStatusHelp("tune"));
+        return kOk;
+    }
+    QStringList rest = args;
+    rest.removeAt(1);
+    rest[0] = QStringLiteral("trilho-cli tune ") + sub;
+    if (sub == QLatin1String("step")) return stepCommand(rest);
+    if (sub == QLatin1String("metrics")) return metricsCommand(rest);
+    if (sub == QLatin1String("identify")) return tuneModelCommand(rest, false);
+    if (sub == QLatin1String("auto")) return tuneModelCommand(rest, true);
+    return usageError(
+        "tune",
+        QStringLiteral("unknown subcommand '%1' (step, metrics, identify or auto)").arg(sub));
+}
+
+}  // namespace trilho::cli

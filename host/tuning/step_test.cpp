@@ -1,0 +1,362 @@
+#include "host/tuning/step_test.h"
+
+#include <QDateTime>
+#include <algorithm>
+#include <cmath>
+
+#include "core/control/rail_servo.h"
+#include "core/machine/dc_table_motion.h"
+#include "core/tuning/trace_writer.h"
+#include "hal/sim/sim_dc_table.h"
+#include "hal/sim/sim_rail.h"
+
+namespace trilho {
+
+namespace {
+
+constexpr int kDecimals = 6;  // as the record's CSV prints them: a record reads back exactly
+
+double q(double v) {
+    return roundToDecimals(v, kDecimals);
+}
+
+QString servoFaultText(ServoFault f, double value) {
+    switch (f) {
+        case ServoFault::None:
+            return {};
+        case ServoFault::FollowingError:
+            return QStringLiteral("following error beyond the profile's limit");
+        case ServoFault::LeftEndSwitch:
+            return QStringLiteral("left end switch");
+        case ServoFault::RightEndSwitch:
+            return QStringLiteral("right end switch");
+        case ServoFault::AmplifierFault:
+            return QStringLiteral("amplifier fault");
+        case ServoFault::HardStop:
+            return QStringLiteral("hard stop");
+        case ServoFault::SoftLimit:
+            return QStringLiteral("stopping point past the soft limit %1 mm").arg(value);
+        case ServoFault::EncoderStall:
+            return QStringLiteral("encoder stall: %1 mm driven without a count").arg(value);
+        case ServoFault::InPositionTimeout:
+            return QStringLiteral("never settled in the in-position window (error %1 mm)")
+                .arg(value);
+        case ServoFault::CountsLost:
+            return QStringLiteral("counts lost");
+    }
+    return QStringLiteral("servo fault");
+}
+
+/// What both machines share: the checks that abort a test, tick by tick.
+struct Guard {
+    Guard(double low, double high) : lowMm(low), highMm(high) {}
+    double lowMm = 0.0, highMm = 0.0;
+    double saturatedForS = 0.0;
+    StepAbort abort = StepAbort::None;
+    QString reason;
+    /// False when the test must stop now.
+    bool check(double positionMm, bool saturated, double dtS) {
+        saturatedForS = saturated ? saturatedForS + dtS : 0.0;
+        if (saturatedForS > kMaxSaturationS + 1e-9) {
+            abort = StepAbort::Saturation;
+            reason = QStringLiteral("saturated for more than %1 ms without a break")
+                         .arg(kMaxSaturationS * 1000.0);
+            return false;
+        }
+        if (positionMm < lowMm || positionMm > highMm) {
+            abort = StepAbort::Envelope;
+            reason = QStringLiteral("left the test's envelope [%1, %2] mm at %3 mm")
+                         .arg(lowMm)
+                         .arg(highMm)
+                         .arg(positionMm);
+            return false;
+        }
+        return true;
+    }
+};
+
+double autoDuration(const StepTestSpec& spec, double speedMmS, double accelMmS2) {
+    const double d = std::abs(spec.amplitudeMm);
+    const double v = std::max(1e-3, speedMmS * spec.speedFraction);
+    const double a = std::max(1e-3, accelMmS2);
+    // The profile's time (trapezoid or triangle) plus 3 s to settle, plus what is asked after.
+    const double move = d / v + v / a;
+    return spec.preRollS + std::max(move, 2.0 * std::sqrt(d / a)) + 3.0 + spec.settleS;
+}
+
+void pushCommon(RunChannels& c, double t, double sp, double x, double vel, double drive,
+                double spVel, bool sat) {
+    c.timeS.push_back(q(t));
+    c.blockN.push_back(-1);
+    c.setpointMm.push_back(q(sp));
+    c.positionMm.push_back(q(x));
+    c.errorMm.push_back(q(sp - x));
+    c.velocityMmS.push_back(q(vel));
+    c.drive.push_back(q(drive));
+    c.setpointVelocityMmS.push_back(q(spVel));
+    c.saturated.push_back(sat ? 1 : 0);
+}
+
+StepTestResult refuse(StepTestResult r, const QString& why) {
+    r.abort = StepAbort::Refused;
+    r.abortReason = why;
+    r.record.conditions.abortReason = why;
+    return r;
+}
+
+StepTestResult runRail(const StepTestSpec& spec, StepTestResult r) {
+    RunConditions& c = r.record.conditions;
+    MachineProfile profile = c.profile;
+    profile.plant.massFactor *= spec.massFactor;
+    profile.loop.law = c.law;
+    (c.law == LoopLaw::Classic ? profile.loop.classic : profile.loop.engineered) =
+        LoopGains{c.gains.kp, c.gains.ki, c.gains.kd};
+    profile.loop.samplePeriodS = c.periodS;
+    const double dt = c.periodS;
+    SimRail rail(profile.plant, spec.seed);
+    rail.placeAt(c.startMm);
+    RailServo servo(profile, rail);
+    servo.resyncToCounter();
+    servo.hold();
+    const double target = c.startMm + c.amplitudeMm;
+    const double margin = spec.envelopeMarginMm > 0.0
+                              ? spec.envelopeMarginMm
+                              : std::max(2.0, 0.5 * std::abs(c.amplitudeMm));
+    Guard guard(std::min(c.startMm, target) - margin, std::max(c.startMm, target) + margin);
+    const double maxS = c.maxDurationS > 0.0 ? c.maxDurationS
+                                             : autoDuration(spec, profile.motion.rapidSpeedMmS,
+                                                            profile.motion.accelerationMmS2);
+    const auto ticks = static_cast<std::size_t>(std::ceil(maxS / dt));
+    RunChannels& ch = r.record.channels;
+    ch.reserve(ticks + 1);
+    ch.hasLoopTerms = ch.hasSaturation = true;
+    const auto preTicks = static_cast<std::size_t>(std::llround(spec.preRollS / dt));
+    double inPositionSince = -1.0;
+    for (std::size_t k = 0; k <= ticks; ++k) {
+        const double t = static_cast<double>(k) * dt;
+        if (k == preTicks) servo.moveTo(target, c.speedFraction, false);
+        servo.tick(dt);
+        const ServoSample& s = servo.sample();
+        const LoopOutput& o = s.loop;
+        const bool looping = s.mode == ServoMode::Move || s.mode == ServoMode::Hold;
+        // The classic law lets go of the drive once within 0.5 mm (the VB's motor(128)): the
+        // servo then reports its position as the setpoint, the test still commands the target.
+        const double sp = k >= preTicks && s.mode == ServoMode::Idle ? target : s.setpointMm;
+        pushCommon(ch, t, sp, s.positionMm, s.velocityMmS, o.code, s.setpointVelocityMmS,
+                   looping && o.saturated);
+        ch.pCodes.push_back(q(o.p));
+        ch.iCodes.push_back(q(o.i));
+        ch.dCodes.push_back(q(o.d));
+        ch.ffCodes.push_back(q(o.ff));
+        ch.sumCodes.push_back(q(o.p + o.i + o.d + o.ff));
+        ch.commandCodes.push_back(q(o.command));
+        rail.step(dt);
+        if (s.fault != ServoFault::None) {
+            r.abort = StepAbort::ServoFault;
+            r.abortReason = QStringLiteral("the servo stopped: %1 at %2 s")
+                                .arg(servoFaultText(s.fault, s.faultValue))
+                                .arg(t);
+            break;
+        }
+        if (!guard.check(s.positionMm, looping && o.saturated, dt)) {
+            servo.emergencyStop();
+            r.abort = guard.abort;
+            r.abortReason = guard.reason + QStringLiteral(" at %1 s").arg(t);
+            break;
+        }
+        if (k >= preTicks && s.inPosition && inPositionSince < 0) inPositionSince = t;
+        if (inPositionSince >= 0 && t - inPositionSince >= spec.settleS - 1e-9) break;
+    }
+    return r;
+}
+
+StepTestResult runTable(const StepTestSpec& spec, StepTestResult r) {
+    RunConditions& c = r.record.conditions;
+    MachineProfile profile = c.profile;
+    profile.dcTable.massFactor *= spec.massFactor;
+    profile.dcTable.law = c.law;
+    DcAxisParams& ax = c.axis == 'x' ? profile.dcTable.x : profile.dcTable.y;
+    if (c.law == LoopLaw::Classic)
+        ax.classic = {c.gains.b0, c.gains.b1};
+    else
+        ax.engineered = {c.gains.kp, c.gains.ki, c.gains.kff};
+    profile.dcTable.samplePeriodS = c.periodS;
+    const double dt = c.periodS;
+    const std::size_t k = c.axis == 'x' ? 0 : 1;
+    SimDcTable table(profile.dcTable, spec.seed);
+    // The other axis stays where it is: at the middle of its travel.
+    const AxisTravel& other = c.axis == 'x' ? profile.limits.y : profile.limits.x;
+    const double otherMm = 0.5 * (other.softMinMm + other.softMaxMm);
+    if (k == 0)
+        table.placeAt(c.startMm, otherMm);
+    else
+        table.placeAt(otherMm, c.startMm);
+    DcTableMotion motion(profile, table);
+    motion.beginHoming();
+    const XyPoint from = motion.measured();
+    XyPoint to = from;
+    (k == 0 ? to.x : to.y) += c.amplitudeMm;
+    const double target = c.startMm + c.amplitudeMm;
+    const double margin = spec.envelopeMarginMm > 0.0
+                              ? spec.envelopeMarginMm
+                              : std::max(2.0, 0.5 * std::abs(c.amplitudeMm));
+    Guard guard(std::min(c.startMm, target) - margin, std::max(c.startMm, target) + margin);
+    const double maxS = c.maxDurationS > 0.0 ? c.maxDurationS
+                                             : autoDuration(spec, profile.motion.rapidSpeedMmS,
+                                                            profile.motion.accelerationMmS2);
+    const auto ticks = static_cast<std::size_t>(std::ceil(maxS / dt));
+    RunChannels& ch = r.record.channels;
+    ch.reserve(ticks + 1);
+    ch.hasSaturation = true;
+    const auto preTicks = static_cast<std::size_t>(std::llround(spec.preRollS / dt));
+    const double clamp = profile.dcTable.pwmClampPercent;
+    double inPositionSince = -1.0;
+    bool started = false;
+    for (std::size_t i = 0; i <= ticks; ++i) {
+        const double t = static_cast<double>(i) * dt;
+        if (i == preTicks) {
+            motion.beginMove(to, XyMove::Travel, c.speedFraction);
+            started = true;
+        }
+        motion.tick(dt);
+        const XySample s = motion.sample();
+        const XyAxisSample& a = k == 0 ? s.x : s.y;
+        const bool sat = std::abs(a.drive) >= clamp - 1e-9;
+        pushCommon(ch, t, a.setpointMm, a.positionMm, a.velocityMmS, a.drive, a.velocityMmS, sat);
+        for (auto* v : {&ch.pCodes, &ch.iCodes, &ch.dCodes, &ch.ffCodes, &ch.sumCodes})
+            v->push_back(std::numeric_limits<double>::quiet_NaN());
+        ch.commandCodes.push_back(q(a.drive));
+        table.step(dt);
+        if (motion.fault() != AlarmCode::None) {
+            r.abort = StepAbort::ServoFault;
+            r.abortReason = QStringLiteral("the table stopped: alarm %1 (%2) at %3 s")
+                                .arg(static_cast<int>(motion.fault()))
+                                .arg(motion.faultValue())
+                                .arg(t);
+            break;
+        }
+        if (!guard.check(a.positionMm, sat, dt)) {
+            motion.cut();
+            r.abort = guard.abort;
+            r.abortReason = guard.reason + QStringLiteral(" at %1 s").arg(t);
+            break;
+        }
+        if (started && !motion.busy() && inPositionSince < 0) inPositionSince = t;
+        if (inPositionSince >= 0 && t - inPositionSince >= spec.settleS - 1e-9) break;
+    }
+    return r;
+}
+
+}  // namespace
+
+TuningGains profileGains(const MachineProfile& profile, char axis, LoopLaw law) {
+    TuningGains g;
+    if (profile.kind == MachineKind::DcTable) {
+        const DcAxisParams& a = axis == 'y' ? profile.dcTable.y : profile.dcTable.x;
+        g.kp = a.engineered.kp, g.ki = a.engineered.ki, g.kff = a.engineered.kff;
+        g.b0 = a.classic.b0, g.b1 = a.classic.b1;
+        if (law == LoopLaw::Classic)
+            g.kp = g.ki = g.kff = 0.0;
+        else
+            g.b0 = g.b1 = 0.0;
+        return g;
+    }
+    const LoopGains& l = law == LoopLaw::Classic ? profile.loop.classic : profile.loop.engineered;
+    g.kp = l.kp, g.ki = l.ki, g.kd = l.kd;
+    return g;
+}
+
+StepTestResult runStepTest(const StepTestSpec& spec) {
+    StepTestResult r;
+    RunConditions& c = r.record.conditions;
+    r.record.hasConditions = true;
+    c.profile = spec.profile;
+    c.axis = spec.axis;
+    c.massFactor = spec.massFactor;
+    c.seed = spec.seed;
+    c.amplitudeMm = spec.amplitudeMm;
+    c.speedFraction = spec.speedFraction;
+    c.settleS = spec.settleS;
+    c.preRollS = spec.preRollS;
+    c.maxDurationS = spec.maxDurationS;
+    c.envelopeMarginMm = spec.envelopeMarginMm;
+    c.test = spec.speedFraction < 1.0 ? QStringLiteral("ramp") : QStringLiteral("step");
+    c.date = QDateTime::currentDateTimeUtc().toString(Qt::ISODate);
+    const bool table = spec.profile.kind == MachineKind::DcTable;
+    if (spec.profile.kind == MachineKind::Plotter)
+        return refuse(std::move(r),
+                      QStringLiteral("the plotter has no encoder: its speed and acceleration "
+                                     "margin test is not built yet"));
+    if (table && spec.axis != 'x' && spec.axis != 'y')
+        return refuse(std::move(r), QStringLiteral("the DC table needs an axis: x or y"));
+    if (!table && spec.axis != 0)
+        return refuse(std::move(r), QStringLiteral("the rail has one axis: no axis to choose"));
+    if (!std::isfinite(spec.amplitudeMm) || spec.amplitudeMm == 0.0)
+        return refuse(std::move(r),
+                      QStringLiteral("the amplitude must be a non-zero number of mm"));
+    if (!(spec.massFactor >= 0.1 && spec.massFactor <= 20.0))
+        return refuse(std::move(r), QStringLiteral("the mass factor must be from 0.1 to 20"));
+    if (!(spec.speedFraction > 0.0 && spec.speedFraction <= 1.0))
+        return refuse(std::move(r), QStringLiteral("the speed fraction must be in (0, 1]"));
+    if (!(spec.preRollS >= 0.0 && spec.preRollS <= 10.0) ||
+        !(spec.settleS >= 0.0 && spec.settleS <= 60.0) ||
+        !(spec.maxDurationS >= 0.0 && spec.maxDurationS <= 600.0))
+        return refuse(std::move(r), QStringLiteral("pre-roll, settle and duration out of range"));
+    c.law = spec.law ? *spec.law : (table ? spec.profile.dcTable.law : spec.profile.loop.law);
+    c.gains = spec.gains ? *spec.gains : profileGains(spec.profile, spec.axis, c.law);
+    c.periodS = spec.periodS ? *spec.periodS
+                             : (table ? spec.profile.dcTable.samplePeriodS
+                                      : spec.profile.loop.samplePeriodS);
+    if (!(c.periodS >= kMinSamplePeriodS && c.periodS <= 0.05))
+        return refuse(std::move(r), QStringLiteral("the period must be from %1 to 0.05 s (got %2)")
+                                        .arg(kMinSamplePeriodS)
+                                        .arg(c.periodS));
+    const AxisTravel& travel = spec.axis == 'y' ? spec.profile.limits.y : spec.profile.limits.x;
+    c.startMm =
+        spec.startMm ? *spec.startMm : (table ? 0.5 * (travel.softMinMm + travel.softMaxMm) : 0.0);
+    if (table) {
+        const DcAxisParams& a = spec.axis == 'x' ? spec.profile.dcTable.x : spec.profile.dcTable.y;
+        c.countsPerMm = 2.0 * 3.14159265358979323846 / (a.mmPerTurn * a.radPerCount);
+    } else {
+        c.countsPerMm = spec.profile.plant.countsPerMm;
+    }
+    const double target = c.startMm + c.amplitudeMm;
+    for (double p : {c.startMm, target})
+        if (!(p >= travel.softMinMm && p <= travel.softMaxMm))
+            return refuse(std::move(r),
+                          QStringLiteral("%1 mm is outside the soft limits [%2, %3] mm")
+                              .arg(p)
+                              .arg(travel.softMinMm)
+                              .arg(travel.softMaxMm));
+    r = table ? runTable(spec, std::move(r)) : runRail(spec, std::move(r));
+    r.record.conditions.abortReason = r.abortReason;
+    r.metrics = measureRun(r.record.channels, r.record.conditions.countsPerMm);
+    return r;
+}
+
+StepTestSpec specFromConditions(const RunConditions& c) {
+    StepTestSpec s;
+    s.profile = c.profile;
+    s.axis = c.axis;
+    s.amplitudeMm = c.amplitudeMm;
+    s.startMm = c.startMm;
+    s.law = c.law;
+    s.gains = c.gains;
+    s.periodS = c.periodS;
+    s.massFactor = c.massFactor;
+    s.seed = c.seed;
+    s.speedFraction = c.speedFraction;
+    s.preRollS = c.preRollS;
+    s.settleS = c.settleS;
+    s.maxDurationS = c.maxDurationS;
+    s.envelopeMarginMm = c.envelopeMarginMm;
+    return s;
+}
+
+StepTestResult whatIf(const RunConditions& recorded, const TuningGains& gains) {
+    StepTestSpec s = specFromConditions(recorded);
+    s.gains = gains;
+    return runStepTest(s);
+}
+
+}  // namespace trilho

@@ -1,0 +1,167 @@
+// Issue 21 item 8: trilho-cli tune step and tune metrics give the same numbers, on the step's
+// own trace and on any trace `run` writes; bad input is named; aborts exit 3.
+#include <gtest/gtest.h>
+
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+
+#include "tests/integration/cli_process.h"
+
+namespace {
+
+using trilho::test::CliResult;
+using trilho::test::runCli;
+
+QJsonObject json(const CliResult& r) {
+    const QJsonDocument d = QJsonDocument::fromJson(r.out.toUtf8());
+    EXPECT_TRUE(d.isObject()) << r.out.toStdString() << r.err.toStdString();
+    return d.object();
+}
+
+const char* kMetricKeys[] = {"rise_time_s",
+                             "settling_time_s",
+                             "settling_time_1count_s",
+                             "overshoot_pct",
+                             "undershoot_pct",
+                             "peak_mm",
+                             "peak_time_s",
+                             "steady_state_error_counts",
+                             "iae",
+                             "itae",
+                             "ise",
+                             "following_error_max_mm",
+                             "following_error_rms_mm",
+                             "saturated_time_s",
+                             "step_time_s",
+                             "amplitude_mm",
+                             "samples"};
+
+class CliTune : public ::testing::Test {
+  protected:
+    QTemporaryDir dir;
+};
+
+TEST_F(CliTune, StepAndMetricsOfItsTraceGiveTheSameNumbers) {
+    const QString trace = dir.filePath(QStringLiteral("step.csv"));
+    const CliResult step =
+        runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--machine"),
+                QStringLiteral("rail"), QStringLiteral("--amplitude"), QStringLiteral("10"),
+                QStringLiteral("--trace"), trace, QStringLiteral("--json")});
+    ASSERT_EQ(step.exit, 0) << step.err.toStdString();
+    const QJsonObject a = json(step);
+    EXPECT_TRUE(a.value(QStringLiteral("ok")).toBool());
+    EXPECT_EQ(a.value(QStringLiteral("gains")).toObject().value(QStringLiteral("kp")).toDouble(),
+              1.2);
+    EXPECT_EQ(a.value(QStringLiteral("law")).toString(), QStringLiteral("engineered"));
+    const CliResult metrics = runCli(
+        {QStringLiteral("tune"), QStringLiteral("metrics"), trace, QStringLiteral("--json")});
+    ASSERT_EQ(metrics.exit, 0) << metrics.err.toStdString();
+    const QJsonObject b = json(metrics);
+    for (const char* key : kMetricKeys) {
+        ASSERT_TRUE(a.contains(QLatin1String(key))) << key;
+        EXPECT_EQ(a.value(QLatin1String(key)), b.value(QLatin1String(key))) << key;
+    }
+    // The sidecar's conditions came back with the trace.
+    EXPECT_EQ(b.value(QStringLiteral("gains")), a.value(QStringLiteral("gains")));
+    EXPECT_EQ(b.value(QStringLiteral("seed")).toString(), QStringLiteral("1"));
+    // Sanity of the figures themselves: a 10 mm step on the rail, no more than a count over.
+    EXPECT_GT(a.value(QStringLiteral("rise_time_s")).toDouble(), 0.0);
+    EXPECT_LE(a.value(QStringLiteral("overshoot_pct")).toDouble() * 0.1 * 22.8, 1.0);
+}
+
+TEST_F(CliTune, MetricsReadTheTracesRunWrites) {
+    const QString prog =
+        trilho::test::writeIn(dir, QStringLiteral("m.G"), "N10 G1 X20 F50\nN20 M2\n");
+    const QString trace = dir.filePath(QStringLiteral("run.csv"));
+    const CliResult run = runCli({QStringLiteral("run"), QStringLiteral("--virtual-time"),
+                                  QStringLiteral("--trace"), trace, prog});
+    ASSERT_EQ(run.exit, 0) << run.err.toStdString();
+    const CliResult m = runCli(
+        {QStringLiteral("tune"), QStringLiteral("metrics"), trace, QStringLiteral("--json")});
+    ASSERT_EQ(m.exit, 0) << m.err.toStdString();
+    const QJsonObject o = json(m);
+    EXPECT_NEAR(o.value(QStringLiteral("amplitude_mm")).toDouble(), 20.0, 1e-9);
+    EXPECT_TRUE(o.value(QStringLiteral("saturated_time_s")).isNull());  // not in a run trace
+    EXPECT_LE(std::abs(o.value(QStringLiteral("steady_state_error_counts")).toDouble()), 1.0);
+    // Text too.
+    const CliResult text = runCli({QStringLiteral("tune"), QStringLiteral("metrics"), trace});
+    EXPECT_EQ(text.exit, 0);
+    EXPECT_TRUE(text.out.contains(QStringLiteral("settling time (1 count)")))
+        << text.out.toStdString();
+}
+
+TEST_F(CliTune, BadTracesAreNamedWithLineAndColumn) {
+    const QString bad = trilho::test::writeIn(dir, QStringLiteral("bad.csv"),
+                                              "t_s,setpoint_mm,position_mm\n0,0,0\n0.1,1,x\n");
+    const CliResult r = runCli({QStringLiteral("tune"), QStringLiteral("metrics"), bad});
+    EXPECT_EQ(r.exit, 2);
+    EXPECT_TRUE(
+        r.err.startsWith(QStringLiteral("trilho-cli tune metrics: ") + bad +
+                         QStringLiteral(":3:7: position_mm: not a finite number (got 'x')")))
+        << r.err.toStdString();
+    const QString flat = trilho::test::writeIn(dir, QStringLiteral("flat.csv"),
+                                               "t_s,setpoint_mm,position_mm\n0,1,1\n0.1,1,1\n");
+    const CliResult f = runCli({QStringLiteral("tune"), QStringLiteral("metrics"), flat});
+    EXPECT_EQ(f.exit, 2);
+    EXPECT_TRUE(f.err.contains(QStringLiteral("the setpoint never moves"))) << f.err.toStdString();
+}
+
+TEST_F(CliTune, AnAbortedTestExitsThreeAndSaysWhy) {
+    const CliResult r =
+        runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--amplitude"),
+                QStringLiteral("300"), QStringLiteral("--law"), QStringLiteral("classic"),
+                QStringLiteral("--kp"), QStringLiteral("2"), QStringLiteral("--period"),
+                QStringLiteral("0.01"), QStringLiteral("--json")});
+    EXPECT_EQ(r.exit, 3) << r.err.toStdString();
+    const QJsonObject o = json(r);
+    EXPECT_TRUE(o.value(QStringLiteral("aborted")).toBool());
+    EXPECT_TRUE(
+        o.value(QStringLiteral("abort_reason")).toString().contains(QStringLiteral("200 ms")));
+}
+
+TEST_F(CliTune, UsageErrorsAreOneLine) {
+    struct Case {
+        QStringList args;
+        const char* says;
+    };
+    const Case cases[] = {
+        {{QStringLiteral("step")}, "--amplitude MM is required"},
+        {{QStringLiteral("step"), QStringLiteral("--amplitude"), QStringLiteral("5000")},
+         "outside the soft limits"},
+        {{QStringLiteral("step"), QStringLiteral("--amplitude"), QStringLiteral("10"),
+          QStringLiteral("--axis"), QStringLiteral("x")},
+         "--axis is for the DC table"},
+        {{QStringLiteral("step"), QStringLiteral("--machine"), QStringLiteral("xy_dc_table"),
+          QStringLiteral("--amplitude"), QStringLiteral("10")},
+         "choose one with --axis x or y"},
+        {{QStringLiteral("step"), QStringLiteral("--machine"), QStringLiteral("xy_dc_table"),
+          QStringLiteral("--axis"), QStringLiteral("x"), QStringLiteral("--amplitude"),
+          QStringLiteral("10"), QStringLiteral("--kd"), QStringLiteral("1")},
+         "--kd is for the rail"},
+        {{QStringLiteral("step"), QStringLiteral("--amplitude"), QStringLiteral("ten")},
+         "--amplitude must be a number"},
+        {{QStringLiteral("bogus")}, "unknown subcommand 'bogus'"},
+        {{QStringLiteral("metrics")}, "expected exactly one TRACE.csv"},
+    };
+    for (const Case& c : cases) {
+        const CliResult r = runCli(QStringList{QStringLiteral("tune")} + c.args);
+        EXPECT_EQ(r.exit, 2) << c.says << r.err.toStdString();
+        EXPECT_TRUE(r.err.contains(QLatin1String(c.says))) << r.err.toStdString();
+        EXPECT_EQ(r.err.count(QLatin1Char('\n')), 1) << r.err.toStdString();
+    }
+}
+
+TEST_F(CliTune, ADcTableAxisStepMeasuresInItsCounts) {
+    const CliResult r =
+        runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--machine"),
+                QStringLiteral("xy_dc_table"), QStringLiteral("--axis"), QStringLiteral("y"),
+                QStringLiteral("--amplitude"), QStringLiteral("20"), QStringLiteral("--json")});
+    ASSERT_EQ(r.exit, 0) << r.err.toStdString();
+    const QJsonObject o = json(r);
+    EXPECT_EQ(o.value(QStringLiteral("axis")).toString(), QStringLiteral("y"));
+    EXPECT_NEAR(o.value(QStringLiteral("counts_per_mm")).toDouble(), 10.0, 0.01);
+    EXPECT_TRUE(o.value(QStringLiteral("gains")).toObject().contains(QStringLiteral("kff")));
+}
+
+}  // namespace

@@ -1,0 +1,202 @@
+// Issue 21 item 3: run records saved as CSV + JSON and read back; bad files named with place.
+#include "core/tuning/run_record.h"
+
+#include <gtest/gtest.h>
+
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+#include <cmath>
+
+namespace trilho {
+namespace {
+
+RunRecord sampleRecord() {
+    RunRecord r;
+    r.hasConditions = true;
+    RunConditions& c = r.conditions;
+    c.profile = MachineProfile::rail();
+    c.law = LoopLaw::Classic;
+    c.gains = {0.2, 0.0005, 1.0, 0, 0, 0};
+    c.periodS = 0.01;
+    c.massFactor = 3.0;
+    c.test = QStringLiteral("step");
+    c.date = QStringLiteral("2026-12-02T03:00:00Z");
+    c.seed = 18446744073709551557ULL;  // above 2^53: kept as text
+    c.startMm = -12.5;
+    c.amplitudeMm = 10.0;
+    c.countsPerMm = 22.8;
+    RunChannels& ch = r.channels;
+    ch.hasLoopTerms = ch.hasSaturation = true;
+    for (int k = 0; k < 300; ++k) {
+        auto q = [](double v) { return roundToDecimals(v, 6); };
+        const double t = k * 0.01;
+        ch.timeS.push_back(q(t));
+        ch.blockN.push_back(-1);
+        const double sp = k < 3 ? -12.5 : -2.5;
+        const double x = -12.5 + (k < 3 ? 0.0 : 10.0 * (1 - std::exp(-(t - 0.03) / 0.1)));
+        ch.setpointMm.push_back(q(sp));
+        ch.positionMm.push_back(q(std::round(x * 22.8) / 22.8));
+        ch.errorMm.push_back(q(sp - ch.positionMm.back()));
+        ch.velocityMmS.push_back(q(1.0 / 3.0 * k));
+        ch.drive.push_back(128 + k % 50);
+        ch.setpointVelocityMmS.push_back(0.0);
+        ch.pCodes.push_back(q(std::sin(k)));
+        ch.iCodes.push_back(q(1e-7 * k));
+        ch.dCodes.push_back(q(-std::cos(k)));
+        ch.ffCodes.push_back(0.0);
+        ch.sumCodes.push_back(q(std::sin(k) - std::cos(k)));
+        ch.commandCodes.push_back(q(std::sin(k) - std::cos(k)));
+        ch.saturated.push_back(k % 7 == 0 ? 1 : 0);
+    }
+    return r;
+}
+
+TEST(RunRecord, CsvAndJsonRoundTripExactly) {
+    QTemporaryDir dir;
+    const RunRecord r = sampleRecord();
+    const QString path = dir.filePath(QStringLiteral("run.csv"));
+    const StepMetrics m = measureRun(r.channels, 22.8);
+    QString error;
+    ASSERT_TRUE(saveRunRecord(r, path, &m, &error)) << error.toStdString();
+    ASSERT_TRUE(QFile::exists(dir.filePath(QStringLiteral("run.json"))));
+    const RunLoad back = loadRunRecord(path);
+    ASSERT_TRUE(back.record) << back.error.toStdString();
+    const RunChannels& a = r.channels;
+    const RunChannels& b = back.record->channels;
+    EXPECT_EQ(a.timeS, b.timeS);
+    EXPECT_EQ(a.setpointMm, b.setpointMm);
+    EXPECT_EQ(a.positionMm, b.positionMm);
+    EXPECT_EQ(a.errorMm, b.errorMm);
+    EXPECT_EQ(a.velocityMmS, b.velocityMmS);
+    EXPECT_EQ(a.drive, b.drive);
+    EXPECT_EQ(a.pCodes, b.pCodes);
+    EXPECT_EQ(a.iCodes, b.iCodes);
+    EXPECT_EQ(a.dCodes, b.dCodes);
+    EXPECT_EQ(a.sumCodes, b.sumCodes);
+    EXPECT_EQ(a.commandCodes, b.commandCodes);
+    EXPECT_EQ(a.saturated, b.saturated);
+    EXPECT_EQ(a.blockN, b.blockN);
+    EXPECT_TRUE(b.hasLoopTerms && b.hasSaturation);
+    ASSERT_TRUE(back.record->hasConditions);
+    const RunConditions& c = back.record->conditions;
+    EXPECT_EQ(c.law, LoopLaw::Classic);
+    EXPECT_EQ(c.gains.kp, 0.2);
+    EXPECT_EQ(c.gains.ki, 0.0005);
+    EXPECT_EQ(c.gains.kd, 1.0);
+    EXPECT_EQ(c.periodS, 0.01);
+    EXPECT_EQ(c.massFactor, 3.0);
+    EXPECT_EQ(c.seed, 18446744073709551557ULL);
+    EXPECT_EQ(c.startMm, -12.5);
+    EXPECT_EQ(c.date, r.conditions.date);
+    EXPECT_EQ(c.profile.name, QStringLiteral("rail"));
+    // The same numbers from the file as from memory.
+    const StepMetrics m2 = measureRun(b, c.countsPerMm);
+    EXPECT_EQ(m.riseTimeS, m2.riseTimeS);
+    EXPECT_EQ(m.iae, m2.iae);
+    EXPECT_EQ(m.saturatedTimeS, m2.saturatedTimeS);
+}
+
+TEST(RunRecord, ReadsARunTraceWithoutItsLoopColumns) {
+    const QByteArray csv =
+        "t_s,block_n,setpoint_mm,position_mm,error_mm,velocity_mm_s,drive\n"
+        "0.0010,10,0.0000,0.0000,0.0000,0.000,128\n"
+        "0.0020,10,0.0500,0.0000,0.0500,0.000,131\n"
+        "0.0030,10,0.1000,0.0439,0.0561,12.500,133\n";
+    const RunLoad l = runRecordFromCsv(csv, QStringLiteral("t.csv"));
+    ASSERT_TRUE(l.record) << l.error.toStdString();
+    EXPECT_EQ(l.record->channels.size(), 3u);
+    EXPECT_FALSE(l.record->channels.hasLoopTerms);
+    EXPECT_FALSE(l.record->channels.hasSaturation);
+    EXPECT_EQ(l.record->channels.blockN[2], 10);
+    EXPECT_EQ(l.record->channels.positionMm[2], 0.0439);
+}
+
+TEST(RunRecord, TakesOneAxisOfAnXyTrace) {
+    const QByteArray csv =
+        "t_s,block_n,x_setpoint_mm,x_position_mm,y_setpoint_mm,y_position_mm,x_drive,y_drive,pen\n"
+        "0.0050,1,0.0000,0.0000,5.0000,5.0000,0.000,0.000,\n"
+        "0.0100,1,1.0000,0.5000,6.0000,5.2500,10.000,-3.000,\n";
+    const RunLoad none = runRecordFromCsv(csv, QStringLiteral("xy.csv"));
+    EXPECT_FALSE(none.record);
+    EXPECT_TRUE(none.error.startsWith(QStringLiteral("xy.csv:1:1: a trace of two axes")))
+        << none.error.toStdString();
+    const RunLoad y = runRecordFromCsv(csv, QStringLiteral("xy.csv"), 'y');
+    ASSERT_TRUE(y.record) << y.error.toStdString();
+    EXPECT_EQ(y.record->channels.setpointMm[1], 6.0);
+    EXPECT_EQ(y.record->channels.positionMm[1], 5.25);
+    EXPECT_EQ(y.record->channels.drive[1], -3.0);
+}
+
+TEST(RunRecord, BadFilesAreRefusedWithFileLineColumnAndValue) {
+    const QByteArray head = "t_s,setpoint_mm,position_mm\n";
+    struct Case {
+        QByteArray csv;
+        const char* expected;
+    };
+    const Case cases[] = {
+        {head + "0,0,0\n0.1,1,abc\n", "b.csv:3:7: position_mm: not a finite number (got 'abc')"},
+        {head + "0,0,0\n0.1,1\n", "b.csv:3:1: 2 fields, the header has 3"},
+        {head + "0,0,0\n0,1,0\n", "b.csv:3:1: t_s: time does not increase (got '0' after 0)"},
+        {head + "0,0,0\n0.1,,0\n", "b.csv:3:5: setpoint_mm: empty, a number is needed"},
+        {head + "0,0,nan\n", "b.csv:2:5: position_mm: not a finite number (got 'nan')"},
+        {"t_s,position_mm\n0,0\n", "b.csv:1:1: no column 'setpoint_mm' in the header"},
+        {"", "b.csv:1:1: empty file"},
+        {head, "b.csv:1:1: no rows after the header"},
+        {QByteArray("t_s\0x", 5), "b.csv:1:1: binary data"},
+        {"t_s,setpoint_mm,position_mm,saturated\n0,0,0,2\n",
+         "b.csv:2:7: saturated: must be 0 or 1 (got '2')"},
+    };
+    for (const Case& c : cases) {
+        const RunLoad l = runRecordFromCsv(c.csv, QStringLiteral("b.csv"));
+        EXPECT_FALSE(l.record) << c.expected;
+        EXPECT_TRUE(l.error.startsWith(QLatin1String(c.expected)))
+            << "got: " << l.error.toStdString() << "\nexpected: " << c.expected;
+    }
+}
+
+TEST(RunRecord, BadSidecarsAndNonFilesAreRefused) {
+    QTemporaryDir dir;
+    const QString csv = dir.filePath(QStringLiteral("r.csv"));
+    QFile f(csv);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write("t_s,setpoint_mm,position_mm\n0,0,0\n0.1,1,0.5\n");
+    f.close();
+    QFile j(dir.filePath(QStringLiteral("r.json")));
+    ASSERT_TRUE(j.open(QIODevice::WriteOnly));
+    j.write("{\n  \"format\": \"trilho-run/1\",\n  \"law\": oops\n}\n");
+    j.close();
+    RunLoad l = loadRunRecord(csv);
+    EXPECT_FALSE(l.record);
+    EXPECT_TRUE(l.error.contains(QStringLiteral("r.json:3:"))) << l.error.toStdString();
+    ASSERT_TRUE(j.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    j.write("{\"format\": \"trilho-run/2\"}");
+    j.close();
+    l = loadRunRecord(csv);
+    EXPECT_TRUE(l.error.contains(QStringLiteral("format: expected \"trilho-run/1\"")))
+        << l.error.toStdString();
+    // A directory is not a trace; nothing blocks on it.
+    l = loadRunRecord(dir.path());
+    EXPECT_TRUE(l.error.endsWith(QStringLiteral("not a regular file"))) << l.error.toStdString();
+    l = loadRunRecord(dir.filePath(QStringLiteral("absent.csv")));
+    EXPECT_TRUE(l.error.endsWith(QStringLiteral("no such file"))) << l.error.toStdString();
+}
+
+TEST(RunRecord, SavingOverAnUnwritablePlaceSaysWhere) {
+    QString error;
+    EXPECT_FALSE(
+        saveRunRecord(sampleRecord(), QStringLiteral("/nonexistent-dir/r.csv"), nullptr, &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("/nonexistent-dir/r.csv"))) << error.toStdString();
+}
+
+TEST(CsvRow, FormatsFixedAndEmptyFields) {
+    CsvRow row;
+    row.num(1.23456789, 4).integer(-7).num(std::nan(""), 3).empty().num(-0.00001, 4).end();
+    EXPECT_EQ(std::string(row.data(), row.size()), "1.2346,-7,,,0.0000\n");
+    row.clear();
+    row.empty().num(2.5, 1).end();
+    EXPECT_EQ(std::string(row.data(), row.size()), ",2.5\n");
+}
+
+}  // namespace
+}  // namespace trilho

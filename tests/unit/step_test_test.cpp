@@ -1,0 +1,163 @@
+// Issue 21 item 1 and 4: step tests on the simulated rail and DC table, their aborts, their
+// per-tick loop terms, and "what if" from a record.
+#include "host/tuning/step_test.h"
+
+#include <gtest/gtest.h>
+
+#include <QTemporaryDir>
+#include <cmath>
+
+namespace trilho {
+namespace {
+
+TEST(StepTest, ARailStepRunsToItsEndAndRecordsEveryTick) {
+    StepTestSpec spec;
+    spec.amplitudeMm = 10.0;
+    const StepTestResult r = runStepTest(spec);
+    ASSERT_TRUE(r.ok()) << r.abortReason.toStdString();
+    ASSERT_TRUE(r.metrics.ok) << r.metrics.problem;
+    const RunChannels& c = r.record.channels;
+    ASSERT_GT(c.size(), 100u);
+    // One row a tick, 1 ms apart, from 0.
+    for (std::size_t k = 1; k < c.size(); ++k)
+        ASSERT_NEAR(c.timeS[k] - c.timeS[k - 1], 0.001, 1e-9) << k;
+    EXPECT_DOUBLE_EQ(r.metrics.stepTimeS, 0.01);  // the 10 ms pre-roll
+    EXPECT_DOUBLE_EQ(r.metrics.amplitudeMm, 10.0);
+    EXPECT_LE(r.metrics.overshootPct * 10.0 / 100.0 * 22.8, 1.0);  // at most a count over
+    EXPECT_LE(std::abs(r.metrics.steadyStateErrorCounts), 1.0);
+    EXPECT_TRUE(std::isfinite(r.metrics.settlingTime1CountS));
+    // The teaching view's terms: their sum before the clamp, the command after it, the code.
+    for (std::size_t k = 0; k < c.size(); ++k) {
+        ASSERT_NEAR(c.sumCodes[k], c.pCodes[k] + c.iCodes[k] + c.dCodes[k] + c.ffCodes[k], 5e-6);
+        ASSERT_LE(std::abs(c.commandCodes[k]), 127.0);
+        ASSERT_GE(c.drive[k], 0.0);
+        ASSERT_LE(c.drive[k], 255.0);
+        // The DAC code is the command rounded (the engineered law carries the fraction on).
+        ASSERT_LE(std::abs(c.drive[k] - 128.0 - c.commandCodes[k]), 1.5) << k;
+    }
+    EXPECT_EQ(r.record.conditions.law, LoopLaw::Engineered);
+    EXPECT_EQ(r.record.conditions.gains.kp, MachineProfile::rail().loop.engineered.kp);
+}
+
+TEST(StepTest, MoreThan200MsOfSaturationAbortsTheTest) {
+    // The 1996 law with ten times its Kp: a 300 mm step pins the DAC at 255 until the error is
+    // under 13 mm, far longer than 200 ms.
+    StepTestSpec spec;
+    spec.amplitudeMm = 300.0;
+    spec.law = LoopLaw::Classic;
+    spec.gains = TuningGains{2.0, 0.0005, 1.0, 0, 0, 0};
+    spec.periodS = 0.01;
+    const StepTestResult r = runStepTest(spec);
+    EXPECT_EQ(r.abort, StepAbort::Saturation) << r.abortReason.toStdString();
+    EXPECT_TRUE(r.abortReason.contains(QStringLiteral("200 ms"))) << r.abortReason.toStdString();
+    const RunChannels& c = r.record.channels;
+    ASSERT_FALSE(c.saturated.empty());
+    // It stopped on the first tick past 200 ms of saturation, not later.
+    std::size_t run = 0;
+    for (std::size_t k = 0; k < c.size(); ++k)
+        run = c.saturated[k] ? run + 1 : 0;
+    EXPECT_EQ(run, 21u);  // 21 ticks of 10 ms: the first > 200 ms
+    EXPECT_EQ(r.record.conditions.abortReason, r.abortReason);
+    // The partial run is still measured.
+    EXPECT_TRUE(r.metrics.ok);
+    EXPECT_GE(r.metrics.saturatedTimeS, 0.2 - 1e-9);
+}
+
+TEST(StepTest, LeavingTheEnvelopeAbortsTheTest) {
+    // The 1996 gains at 1 ms instead of 10 ms overshoot a 100 mm step by about 4 mm.
+    StepTestSpec spec;
+    spec.amplitudeMm = 100.0;
+    spec.law = LoopLaw::Classic;
+    spec.periodS = 0.001;
+    spec.envelopeMarginMm = 1.0;
+    const StepTestResult r = runStepTest(spec);
+    EXPECT_EQ(r.abort, StepAbort::Envelope) << r.abortReason.toStdString();
+    EXPECT_GT(r.record.channels.positionMm.back(), 101.0);
+    EXPECT_LT(r.record.channels.positionMm.back(), 101.5);
+}
+
+TEST(StepTest, TargetsOutsideTheSoftLimitsAreRefusedBeforeAnythingMoves) {
+    StepTestSpec spec;
+    spec.startMm = 1260.0;
+    spec.amplitudeMm = 20.0;
+    const StepTestResult r = runStepTest(spec);
+    EXPECT_EQ(r.abort, StepAbort::Refused);
+    EXPECT_TRUE(r.abortReason.contains(QStringLiteral("outside the soft limits")));
+    EXPECT_EQ(r.record.channels.size(), 0u);
+    spec.startMm = 0.0;
+    spec.profile = MachineProfile::xyPlotter();
+    EXPECT_EQ(runStepTest(spec).abort, StepAbort::Refused);
+}
+
+TEST(StepTest, AFollowingErrorStopsTheTestThroughTheServosOwnAlarm) {
+    // Eight times the mass the loop was tuned for: the platform cannot follow the profile's
+    // acceleration and lags beyond the following-error limit, which the test never loosens.
+    StepTestSpec spec;
+    spec.amplitudeMm = 800.0;
+    spec.massFactor = 8.0;
+    const StepTestResult r = runStepTest(spec);
+    EXPECT_EQ(r.abort, StepAbort::ServoFault);
+    EXPECT_TRUE(r.abortReason.contains(QStringLiteral("following error")))
+        << r.abortReason.toStdString();
+    EXPECT_LT(r.record.channels.timeS.back(), 0.1);
+}
+
+TEST(StepTest, WhatIfWithTheSameGainsReproducesTheRecordExactly) {
+    StepTestSpec spec;
+    spec.amplitudeMm = -25.0;
+    spec.massFactor = 3.0;
+    spec.seed = 42;
+    const StepTestResult first = runStepTest(spec);
+    ASSERT_TRUE(first.ok()) << first.abortReason.toStdString();
+    // Through the files, as a teacher would: saved, loaded, re-run.
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("run.csv"));
+    QString error;
+    ASSERT_TRUE(saveRunRecord(first.record, path, &first.metrics, &error)) << error.toStdString();
+    const RunLoad loaded = loadRunRecord(path);
+    ASSERT_TRUE(loaded.record) << loaded.error.toStdString();
+    const StepTestResult again = whatIf(loaded.record->conditions, loaded.record->conditions.gains);
+    const RunChannels& a = loaded.record->channels;
+    const RunChannels& b = again.record.channels;
+    EXPECT_EQ(a.timeS, b.timeS);
+    EXPECT_EQ(a.setpointMm, b.setpointMm);
+    EXPECT_EQ(a.positionMm, b.positionMm);
+    EXPECT_EQ(a.velocityMmS, b.velocityMmS);
+    EXPECT_EQ(a.drive, b.drive);
+    EXPECT_EQ(a.pCodes, b.pCodes);
+    EXPECT_EQ(a.iCodes, b.iCodes);
+    EXPECT_EQ(a.dCodes, b.dCodes);
+    EXPECT_EQ(a.ffCodes, b.ffCodes);
+    EXPECT_EQ(a.commandCodes, b.commandCodes);
+    EXPECT_EQ(a.saturated, b.saturated);
+    EXPECT_EQ(first.metrics.settlingTime1CountS, again.metrics.settlingTime1CountS);
+    // Other gains: another run from the same start.
+    TuningGains soft = loaded.record->conditions.gains;
+    soft.kp *= 0.3;
+    const StepTestResult other = whatIf(loaded.record->conditions, soft);
+    ASSERT_TRUE(other.metrics.ok);
+    EXPECT_EQ(other.record.channels.positionMm.front(), a.positionMm.front());
+    EXPECT_NE(other.record.channels.positionMm, a.positionMm);
+    EXPECT_EQ(other.record.conditions.gains.kp, soft.kp);
+}
+
+TEST(StepTest, EachDcTableAxisTakesAStep) {
+    for (char axis : {'x', 'y'}) {
+        StepTestSpec spec;
+        spec.profile = MachineProfile::xyDcTable();
+        spec.axis = axis;
+        spec.amplitudeMm = -15.0;
+        const StepTestResult r = runStepTest(spec);
+        ASSERT_TRUE(r.ok()) << axis << ": " << r.abortReason.toStdString();
+        ASSERT_TRUE(r.metrics.ok) << r.metrics.problem;
+        EXPECT_DOUBLE_EQ(r.metrics.amplitudeMm, -15.0);
+        EXPECT_LE(std::abs(r.metrics.steadyStateErrorCounts), 1.0) << axis;
+        EXPECT_NEAR(r.record.channels.timeS[1] - r.record.channels.timeS[0], 0.005, 1e-9);
+    }
+    StepTestSpec noAxis;
+    noAxis.profile = MachineProfile::xyDcTable();
+    EXPECT_EQ(runStepTest(noAxis).abort, StepAbort::Refused);
+}
+
+}  // namespace
+}  // namespace trilho
