@@ -16,10 +16,8 @@ const char* kUsage =
     "  latency   measure the servo loop's wake-up latency and body time\n"
     "  profile   check a machine profile (JSON) and print it in full\n"
     "  serve     run the rail headless with the DNC link (Modbus TCP/RTU)\n"
-    "  tune      step tests, metrics, identification and autotune (tune step,
-    "
-    "            tune metrics, tune identify, tune auto)
-    "
+    "  tune      step tests, metrics, identification and autotune (tune step,\n"
+    "            tune metrics, tune identify, tune auto)\n"
     "\n"
     "Options:\n"
     "  -h, --help  print this help\n"
