@@ -75,16 +75,22 @@ QString exitStatusHelp(const char* command) {
         line(kOk, c == "tune step"      ? "the test ran to its end (measured)"
                   : c == "tune metrics" ? "the trace was measured"
                                         : "step: the test ran to its end; metrics: the trace "
-                                          "was measured");
+                                          "was measured; identify: a model was accepted; auto: "
+                                          "tuned and verified in position");
         line(kUsage,
              "usage error, a profile or trace that cannot be read (named with its line and "
              "column) or written, a test refused (outside the soft limits), or a trace with no "
              "step");
-        if (c != "tune metrics")
-            line(kAlarm,
-                 "step: the test was aborted (a servo alarm such as a following error, more "
-                 "than 200 ms of continuous saturation, or leaving the test's envelope); what "
-                 "ran is still measured and traced");
+        const std::string alarm =
+            std::string(
+                "step: the test was aborted (a servo alarm such as a following error, "
+                "more than 200 ms of continuous saturation, or leaving the test's "
+                "envelope); what ran is still measured and traced") +
+            (c == "tune" ? "; identify, auto: an alarm stopped the experiment, the model fits "
+                           "the held-out run under 90 %, or a verification move did not end in "
+                           "position"
+                         : "");
+        if (c != "tune metrics") line(kAlarm, alarm.c_str());
     } else if (c == "calibrate") {
         line(kOk, "calibrated (printed; the profile written with --write-profile)");
         line(kUsage,

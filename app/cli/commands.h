@@ -10,9 +10,9 @@ int profileCommand(const QStringList& args);
 int runCommand(const QStringList& args);
 int latencyCommand(const QStringList& args);
 int serveCommand(const QStringList& args);
-/// tune step | metrics (tune_command.cpp) | identify | auto (tune_model_command.cpp).
-int tuneCommand(const QStringList& args);
+/// tune identify | auto (tune_model_command.cpp); tune dispatches to them.
 int tuneModelCommand(const QStringList& args, bool autotune);
+int tuneCommand(const QStringList& args);
 int calibrateCommand(const QStringList& args);
 
 }  // namespace trilho::cli

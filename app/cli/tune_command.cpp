@@ -26,10 +26,9 @@ const char* kTuneUsage =
     "  step      run a step (or ramp) test on the simulated machine and measure it\n"
     "  metrics   measure a trace written by 'run --trace' or 'tune step --trace'\n"
     "  identify  identify the plant's model from a bounded experiment (at most 3 s, within\n"
-    "            +-100 mm, back at its start within a count) and judge it on a held-out run\n"
+    "            +-100 mm, back at its start within a count), judged on a held-out run\n"
     "  auto      identify, design the gains (SIMC), predict the verification moves on the\n"
-    "            model, run them with the tuned gains, and report prediction against\n"
-    "            measurement\n"
+    "            model, run them with the tuned gains, report prediction against measurement\n"
     "\n"
     "Run 'trilho-cli tune <subcommand> --help' for its options.\n";
 

@@ -1,7 +1,7 @@
 // trilho-cli tune identify|auto --machine P [--axis x|y] [--mass-factor F] [--seed N] [--json]
 //   [--write-profile OUT.json] (auto only)
 // Issue 21 items 5-8: identification of the plant and autotune, on the simulated machine in
-// virtual time. `tune` dispatches here (tune_command.cpp) for identify and auto.
+// virtual time. tune_command.cpp dispatches here; every number comes from core/tuning.
 #include <QCommandLineParser>
 #include <QFileInfo>
 #include <QJsonArray>

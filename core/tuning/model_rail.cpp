@@ -30,7 +30,7 @@ void ModelRig::reloadProfile(const MachineProfile& profile) {
 void ModelRig::tick() {
     servo_->tick(periodS_);
     rail_.step(periodS_);
-    elapsedS_ += periodS_;
+    elapsedNs_ += std::llround(periodS_ * 1e9);
 }
 
 }  // namespace trilho
