@@ -515,6 +515,10 @@ void MainWindow::chooseFile() {
 }
 
 bool MainWindow::selectProgram(const QString& path) {
+    // A new selection cancels what was asked of the old one: a compile queued behind a load,
+    // and (through the generation) the result of a compile still running.
+    afterLoad_ = nullptr;
+    ++selection_;
     QString error;
     if (!program_->load(path, &error)) {
         statusBar()->showMessage(error, 8000);
@@ -540,16 +544,40 @@ void MainWindow::compileEditor(bool showInAlarms,
                                  8000);
         return;
     }
+    // A read-only large program is the file as it was read: changed on disk since, it is read
+    // again first, so what compiles is the file that will be named.
+    if (program_->changedOnDisk()) {
+        const QString path = selectedFile_;
+        statusBar()->showMessage(
+            tr("%1 changed on disk: reading it again.").arg(QFileInfo(path).fileName()), 8000);
+        if (!selectProgram(path)) return;
+        if (program_->loading())
+            afterLoad_ = [this, showInAlarms, then] { compileEditor(showInAlarms, then); };
+        else
+            compileEditor(showInAlarms, then);
+        return;
+    }
     CompileOptions options;
     options.dialect = dialect_;
     options.machine = link_.profile().limits;
     options.maxDiagnostics = 1000;  // a file of garbage lists the first thousand, counts the rest
     // What the operator sees is what runs: the editor's text, saved or not.
     std::shared_ptr<const std::string> text = program_->source();
-    auto finish = [this, showInAlarms, then = std::move(then)](std::shared_ptr<Program> program) {
+    // What compiles must still be what is selected and shown when it ends: another program
+    // selected, or the text edited, meanwhile, and the result is not used.
+    const int selection = selection_;
+    const int revision = program_->revision();
+    auto finish = [this, showInAlarms, then = std::move(then), selection,
+                   revision](std::shared_ptr<Program> program) {
         compiling_ = false;
         compileProgress_->hide();
         onStatus(last_);  // Compile and Execute as the state says again
+        if (selection != selection_ || revision != program_->revision()) {
+            statusBar()->showMessage(tr("The program changed while it compiled: nothing was "
+                                        "run. Compile or execute it again."),
+                                     10000);
+            return;
+        }
         QStringList messages;
         for (const Diagnostic& d : program->diagnostics)
             messages << diagnosticMessage(d);

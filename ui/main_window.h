@@ -177,6 +177,7 @@ class MainWindow : public QMainWindow {
     Confirmer confirmer_;
     std::function<QString()> online_;
     std::function<void()> afterLoad_;  ///< a compile asked while a large program loads
+    int selection_ = 0;                ///< counts selections: a compile knows whose it is
     QDockWidget *programDock_, *plotDock_, *jogDock_, *historyDock_, *railDock_, *simulationDock_,
         *libraryDock_;
     QMenu *fileMenu_, *commandMenu_, *optionsMenu_, *languageMenu_, *themeMenu_, *lawMenu_,

@@ -176,6 +176,11 @@ bool ProgramPanel::load(const QString& path, QString* error) {
 }
 
 void ProgramPanel::apply(Loaded l) {
+    ++loads_;
+    const QFileInfo info(path_);
+    loadedModified_ = info.lastModified();
+    loadedSize_ = info.size();
+    editor_->setReadOnly(false);  // an earlier large load may have set it
     large_mode_ = l.large;
     if (large_mode_) {
         editor_->clear();
@@ -215,6 +220,16 @@ QString ProgramPanel::text() const {
     if (large_mode_) return QString::fromStdString(*large_->bytes());
     return editor_->toPlainText();
 }
+int ProgramPanel::revision() const {
+    return loads_ * 1000003 + editor_->document()->revision();
+}
+
+bool ProgramPanel::changedOnDisk() const {
+    if (!large_mode_ || path_.isEmpty()) return false;
+    const QFileInfo info(path_);
+    return info.size() != loadedSize_ || info.lastModified() != loadedModified_;
+}
+
 std::shared_ptr<const std::string> ProgramPanel::source() const {
     if (large_mode_) return large_->bytes();  // shared, not copied: 16 MB for 1M lines
     return std::make_shared<const std::string>(editor_->toPlainText().toStdString());

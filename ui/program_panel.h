@@ -2,6 +2,7 @@
 // The program view and editor: line numbers, syntax colours, the executing block highlighted,
 // diagnostics marked on their lines and listed (a click jumps there), atomic save. A program
 // too large to edit (kLargeProgramBytes or kLargeProgramLines) opens in a read-only view.
+#include <QDateTime>
 #include <QWidget>
 
 #include <memory>
@@ -44,6 +45,11 @@ class ProgramPanel : public QWidget {
     std::shared_ptr<const std::string> source() const;
     /// True while the program is shown read-only because it is too large to edit.
     bool readOnlyLarge() const { return large_mode_; }
+    /// Counts the editor's edits (and each load): a compile started at one revision is stale
+    /// at another.
+    int revision() const;
+    /// A read-only large program whose file changed (time or size) since it was read.
+    bool changedOnDisk() const;
     bool dirty() const;
     void showDiagnostics(const std::vector<Diagnostic>& diagnostics, const QStringList& messages);
     void setExecutingLine(int line);
@@ -74,6 +80,9 @@ class ProgramPanel : public QWidget {
     QLabel* largeNote_;
     bool large_mode_ = false;
     bool loading_ = false;
+    int loads_ = 0;
+    QDateTime loadedModified_;
+    qint64 loadedSize_ = -1;
     int generation_ = 0;  ///< a newer load makes an older one's result stale
     QListWidget* list_;
     QPushButton *save_, *startHere_;

@@ -394,6 +394,66 @@ class MainWindowTest : public QObject {
         QCOMPARE(program->editor()->toPlainText(), QStringLiteral("G00 X10\nM02\n"));
     }
 
+    // Found by an outside tester: a compile queued behind a large load, or still running, must
+    // never run or name another program than the one selected when it ends.
+    QByteArray hugeProgram(int lines, const char* move) {
+        QByteArray text = "G90\n";
+        for (int i = 0; i < lines; ++i)
+            text += move;
+        text += "M02\n";
+        return text;
+    }
+    void aQueuedCompileIsDroppedWhenAnotherProgramIsSelected() {
+        ProgramPanel* program = window_->programPanel();
+        QVERIFY(
+            window_->selectProgram(writeProgram("big.G", hugeProgram(150000, "G01 X300 F40\n"))));
+        QVERIFY(program->loading());
+        window_->compileSelected();  // queued behind the load
+        const QString small = writeProgram("small.G", "G00 X10\nM02\n");
+        QVERIFY(window_->selectProgram(small));
+        QVERIFY(!program->loading());
+        QVERIFY(!program->editor()->isReadOnly());  // the large load had made it read-only
+        QVERIFY(!window_->compiling());  // the queued compile went with the old selection
+        QString asked;
+        window_->setConfirmer([&asked](const QString&, const QString& text) {
+            asked = text;
+            return false;
+        });
+        window_->compileSelected();
+        QTRY_VERIFY(!window_->compiling());
+        QVERIFY(program->diagnosticsList()->count() == 0);
+    }
+    void aCompileStillRunningIsNotUsedForAnotherProgram() {
+        ProgramPanel* program = window_->programPanel();
+        QVERIFY(
+            window_->selectProgram(writeProgram("big2.G", hugeProgram(400000, "G01 X9999 F40\n"))));
+        QTRY_VERIFY_WITH_TIMEOUT(!program->loading(), 30000);
+        window_->compileSelected();
+        QVERIFY(window_->compiling());  // 5 MB: on a worker thread
+        QVERIFY(window_->selectProgram(writeProgram("small2.G", "G00 X10\nM02\n")));
+        QTRY_VERIFY_WITH_TIMEOUT(!window_->compiling(), 30000);
+        QVERIFY2(window_->statusBar()->currentMessage().contains(QStringLiteral("changed while")),
+                 qPrintable(window_->statusBar()->currentMessage()));
+        QCOMPARE(program->diagnosticsList()->count(), 0);  // not big2.G's 400,000 errors
+    }
+    void aLargeProgramChangedOnDiskIsReadAgainBeforeItCompiles() {
+        ProgramPanel* program = window_->programPanel();
+        const QString path = writeProgram("grows.G", hugeProgram(120000, "G01 X12.5 F40\n"));
+        QVERIFY(window_->selectProgram(path));
+        QTRY_VERIFY_WITH_TIMEOUT(!program->loading(), 30000);
+        QCOMPARE(program->largeView()->lineCount(), 120002);
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(hugeProgram(130000, "G01 X12.5 F40\n"));
+        }
+        QVERIFY(program->changedOnDisk());
+        window_->compileSelected();
+        QTRY_VERIFY_WITH_TIMEOUT(!program->loading() && !window_->compiling(), 30000);
+        QCOMPARE(program->largeView()->lineCount(), 130002);
+        QVERIFY(!program->changedOnDisk());
+    }
+
     // A large file that disappears before its load ends is said, and nothing stays selected.
     void aLargeProgramThatCannotBeReadIsSaid() {
         QByteArray text;
