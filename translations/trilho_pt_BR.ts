@@ -1364,6 +1364,14 @@
         <translation>O programa está carregando: ele será compilado quando estiver carregado.</translation>
     </message>
     <message>
+        <source>%1 changed on disk: reading it again.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>The program changed while it compiled: nothing was run. Compile or execute it again.</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
         <source>Compiling %1 MB...</source>
         <translation>Compilando %1 MB...</translation>
     </message>

@@ -14,7 +14,8 @@ class CsvRow {
     static constexpr std::size_t kCapacity = 512;
 
     void clear() { len_ = 0, fields_ = 0; }
-    /// Fixed-point with `decimals` digits; NaN and infinities are written empty.
+    /// Fixed-point with `decimals` digits (0-9; rounded half away from zero on the scaled value);
+    /// NaN and infinities are written empty.
     CsvRow& num(double v, int decimals);
     CsvRow& integer(long long v);
     /// An empty field.

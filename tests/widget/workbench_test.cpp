@@ -154,6 +154,9 @@ class WorkbenchTest : public QObject {
         QVERIFY(waitRun(w));
         const QString eq = w.terms()->equation()->text();
         QVERIFY2(eq.contains(QStringLiteral("floor(128")), qPrintable(eq));
+        // On the step tick the loop was just reset: e[k-1] is e[k], and D is zero (no kick);
+        // the page substitutes what the law used, so its arithmetic holds.
+        QVERIFY2(eq.contains(QStringLiteral("x (10.0000 - 10.0000) = 0.000")), qPrintable(eq));
     }
 
     // A run saved (CSV + JSON sidecar) and loaded back has the same channels and metrics.

@@ -216,7 +216,11 @@ QString TermsView::equationHtml(const RunRecord& r, std::size_t k) {
     const TuningGains& g = r.conditions.gains;
     const double periodMs = r.conditions.periodS * 1e3;
     const double e = at(c.setpointMm, k) - at(c.positionMm, k);
-    const double ePrev = k > 0 ? at(c.setpointMm, k - 1) - at(c.positionMm, k - 1) : e;
+    // The e[k-1] the law used, from its own D term: the loop is reset when a move starts, so
+    // on the first tick of a move it is e[k] itself, not the previous tick's recorded error.
+    const double ePrev = g.kd != 0.0 ? e - at(c.dCodes, k) * periodMs / g.kd
+                         : k > 0     ? at(c.setpointMm, k - 1) - at(c.positionMm, k - 1)
+                                     : e;
     const double p = at(c.pCodes, k), i = at(c.iCodes, k), d = at(c.dCodes, k),
                  ff = at(c.ffCodes, k), sum = at(c.sumCodes, k), cmd = at(c.commandCodes, k),
                  drive = at(c.drive, k);
