@@ -70,9 +70,9 @@ struct Options {
         QStringLiteral("DEV")};
     QCommandLineOption workbench{
         QStringLiteral("workbench"),
-        QStringLiteral("Open the rail's tuning workbench and run in it the 1996 law against the "
-                       "engineered one and an autotune (a class demonstration; with "
-                       "--screenshot the workbench is saved).")};
+        QStringLiteral("Open the tuning workbench and run a demonstration in it: on the rail the "
+                       "1996 law against the engineered one and an autotune, on the DC table a "
+                       "step (with --screenshot the workbench is saved).")};
     QCommandLineOption baud{QStringLiteral("baud"),
                             QStringLiteral("Bit rate of --port (default: the board's)."),
                             QStringLiteral("N")};
@@ -341,6 +341,12 @@ int main(int argc, char* argv[]) {
                              static_cast<long long>(launch.elapsed()));
         });
         if (xyWindow) {
+            if (parser.isSet(options.workbench) && xyWindow->workbenchAction()->isEnabled()) {
+                xyWindow->openWorkbench();  // the DC table: a step on each axis
+                ui::WorkbenchWindow* bench = xyWindow->workbench();
+                if (parser.isSet(sizeOpt)) bench->resize(window->size());
+                bench->runStep();
+            }
             if (parser.isSet(runOpt))
                 xyWindow->startProgram(false);  // --run: chosen; Automatic homes first
             else if (parser.isSet(autoOpt))
@@ -403,6 +409,7 @@ int main(int argc, char* argv[]) {
             QTimer::singleShot(ms, window, [&] {
                 QWidget* shown = window;
                 if (railWindow && railWindow->workbench()) shown = railWindow->workbench();
+                if (xyWindow && xyWindow->workbench()) shown = xyWindow->workbench();
                 const bool ok = shown->grab().save(parser.value(shotOpt));
                 if (!ok)
                     std::fprintf(stderr, "trilho: cannot write %s\n",

@@ -40,6 +40,7 @@
 #include "ui/machine_link.h"
 #include "ui/main_window.h"
 #include "ui/start_screen.h"
+#include "ui/workbench/workbench_window.h"
 #include "ui/xy/dc_table_panel.h"
 #include "ui/xy/plotter_panel.h"
 #include "ui/xy/work_area_view.h"
@@ -641,6 +642,35 @@ class XyScreensTest : public QObject {
                 QVERIFY(w.statusBar()->geometry().bottom() < w.height());
             }
         }
+    }
+
+    // Issue 21: the workbench from the DC table's window, per axis; greyed on the plotter.
+    void theDcTableOpensTheWorkbenchAndThePlotterSaysWhyNot() {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        {
+            auto link = virtualLink(shipped("xy_dc_table.json"));
+            XyMainWindow w(*link, settings);
+            QVERIFY(w.workbenchAction()->isEnabled());
+            QCOMPARE(w.workbenchAction()->shortcut(),
+                     QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_W));
+            w.workbenchAction()->trigger();
+            QVERIFY(w.workbench());
+            QVERIFY(w.workbench()->isVisible());
+            auto* axis = w.workbench()->findChild<QComboBox*>(QStringLiteral("axis"));
+            QVERIFY(axis && axis->isVisibleTo(w.workbench()));
+            QSignalSpy done(w.workbench(), &WorkbenchWindow::runFinished);
+            w.workbench()->runStep();
+            QVERIFY(done.wait(60000));
+            QCOMPARE(w.workbench()->runs().size(), std::size_t(1));
+            QCOMPARE(w.workbench()->runs()[0]->record.conditions.axis, 'x');
+        }
+        auto link = virtualLink(shipped("xy_plotter.json"));
+        XyMainWindow w(*link, settings);
+        QVERIFY(!w.workbenchAction()->isEnabled());
+        QVERIFY(w.workbenchAction()->toolTip().contains(QStringLiteral("no encoder")));
+        w.openWorkbench();
+        QVERIFY(!w.workbench());
     }
 
     void plotterJogStopsOnSpace() {

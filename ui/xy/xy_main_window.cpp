@@ -55,6 +55,7 @@
 #include "ui/keys_dialog.h"
 #include "ui/language_menu.h"
 #include "ui/machine_choice.h"
+#include "ui/workbench/workbench_window.h"
 #include "ui/xy/calibration_dialog.h"
 #include "ui/xy/dc_table_panel.h"
 #include "ui/xy/plotter_panel.h"
@@ -436,6 +437,12 @@ void XyMainWindow::buildMenus() {
     connect(remote_, &QAction::toggled, dnc_, &DncLink::setRemote);
     windowsMenu_ = menuBar()->addMenu(QString());
     resetLayout_ = windowsMenu_->addAction(QString(), this, &XyMainWindow::resetLayout);
+    // The tuning workbench, as on the rail (issue 21): step tests per axis on the DC table; the
+    // plotter has no encoder, so nothing to measure a response with.
+    workbench_ = windowsMenu_->addAction(QString(), this, &XyMainWindow::openWorkbench);
+    workbench_->setObjectName(QStringLiteral("workbenchAction"));
+    workbench_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_W));
+    workbench_->setEnabled(link_.profile().kind == MachineKind::DcTable);
     resetLayout_->setObjectName(QStringLiteral("resetLayout"));
     helpMenu_ = menuBar()->addMenu(QString());
     keys_ = helpMenu_->addAction(QString(), this, [this] {
@@ -720,6 +727,19 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
         plotter_->setControlsEnabled(status.state == ControllerState::Manual && !status.motionBusy);
 }
 
+void XyMainWindow::openWorkbench() {
+    if (!workbench_->isEnabled()) return;
+    // Its own window on a copy of the profile: step tests on a simulated table in virtual time,
+    // never on the machine this screen drives.
+    if (!workbenchWindow_) {
+        workbenchWindow_ = new WorkbenchWindow(link_.profile(), this);
+        workbenchWindow_->setWindowFlag(Qt::Window);
+    }
+    workbenchWindow_->show();
+    workbenchWindow_->raise();
+    workbenchWindow_->activateWindow();
+}
+
 void XyMainWindow::setDeviceLink(SerialLinkMotion* link, const QString& port, int baud) {
     deviceLink_ = link;
     port_ = port;
@@ -897,6 +917,10 @@ void XyMainWindow::retranslate() {
                             .arg(remote_->shortcut().toString(QKeySequence::NativeText)));
     windowsMenu_->setTitle(tr("&Windows"));
     resetLayout_->setText(tr("&Reset layout"));
+    workbench_->setText(tr("Tuning &workbench..."));
+    workbench_->setToolTip(workbench_->isEnabled()
+                               ? QString()
+                               : tr("The plotter has no encoder: there is no response to measure"));
     helpMenu_->setTitle(tr("&Help"));
     keys_->setText(tr("&Keys"));
     plotDock_->setWindowTitle(tr("Plots"));

@@ -36,6 +36,7 @@ class PlotterPanel;
 class XySimulationPanel;
 class DncDialog;
 class DncLink;
+class WorkbenchWindow;
 
 class XyMainWindow : public QMainWindow {
     Q_OBJECT
@@ -71,6 +72,10 @@ class XyMainWindow : public QMainWindow {
     QString language() const { return language_; }
     /// Windows > Reset layout: the work area, side column and plots at their first sizes.
     void resetLayout();
+    /// Windows > Tuning workbench... (the DC table; greyed on the plotter, which has no encoder).
+    void openWorkbench();
+    QAction* workbenchAction() const { return workbench_; }
+    WorkbenchWindow* workbench() const { return workbenchWindow_; }
     QLabel* overrideLabel() const { return override_; }
     XySimulationPanel* simulation() const { return simulation_; }
     // ---- the DNC link, as the rail's (issue 19, one frame) ----
@@ -162,6 +167,8 @@ class XyMainWindow : public QMainWindow {
     QMenu *fileMenu_, *commandMenu_, *optionsMenu_, *languageMenu_, *windowsMenu_, *helpMenu_;
     QAction *openAction_, *machine_, *exit_, *automaticAction_, *connection_, *resetLayout_, *keys_;
     QAction* calibration_ = nullptr;  ///< Options > Calibration..., the DC table only
+    QAction* workbench_ = nullptr;
+    WorkbenchWindow* workbenchWindow_ = nullptr;
     QAction *cycleStart_, *feedHold_, *continue_, *stopAction_, *single_, *overrideDown_,
         *overrideUp_, *overrideReset_;
     QPushButton* singleButton_;
