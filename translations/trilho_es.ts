@@ -2726,6 +2726,14 @@
         <translation>&amp;Restablecer disposición</translation>
     </message>
     <message>
+        <source>Tuning &amp;workbench...</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
+        <source>The plotter has no encoder: there is no response to measure</source>
+        <translation type="unfinished" />
+    </message>
+    <message>
         <source>&amp;Help</source>
         <translation>A&amp;yuda</translation>
     </message>
