@@ -1,4 +1,5 @@
-<?xml version='1.0' encoding='utf-8'?>
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
 <TS version="2.1" language="es_ES">
 <context>
     <name>Controller</name>
@@ -27,7 +28,7 @@
         <translation>%1: Cero del sistema cambiado a x=%2.</translation>
     </message>
     <message>
-        <source>%1: Return to the rail's absolute zero.</source>
+        <source>%1: Return to the rail&apos;s absolute zero.</source>
         <translation>%1: Retorno al cero absoluto del riel.</translation>
     </message>
     <message>
@@ -283,7 +284,7 @@
         <translation>Referencia terminada: en el origen.</translation>
     </message>
     <message>
-        <source>%1: Return to the machine's absolute zero.</source>
+        <source>%1: Return to the machine&apos;s absolute zero.</source>
         <translation>%1: Regreso al cero absoluto de la máquina.</translation>
     </message>
     <message>
@@ -299,11 +300,11 @@
         <translation>Error de seguimiento: un eje de la mesa (x o y) quedó %1 mm detrás de la orden (un atasco, una carga demasiado pesada o un cable del encoder roto) y se cortaron ambos accionamientos. Libere la mesa, reconozca y vuelva a referenciar.</translation>
     </message>
     <message>
-        <source>Soft limit: the target is outside the table's travel, so the table stopped at its limit. Move it back the other way, inside the limits.</source>
+        <source>Soft limit: the target is outside the table&apos;s travel, so the table stopped at its limit. Move it back the other way, inside the limits.</source>
         <translation>Límite de software: el destino está fuera del recorrido de la mesa, y la mesa se detuvo en su límite. Llévela de vuelta en el sentido opuesto, dentro de los límites.</translation>
     </message>
     <message>
-        <source>Homing failed: the table's origin was not found. Check its sensor and cable, acknowledge, then home again.</source>
+        <source>Homing failed: the table&apos;s origin was not found. Check its sensor and cable, acknowledge, then home again.</source>
         <translation>Referenciado fallido: no se encontró el origen de la mesa. Revise el sensor y su cable, reconozca y vuelva a referenciar.</translation>
     </message>
     <message>
@@ -319,7 +320,7 @@
         <translation>El programa terminó con la mesa a %1 mm de su último destino en el eje x o y, fuera de la ventana de posición final. Revise la carga y las ganancias y ejecútelo de nuevo.</translation>
     </message>
     <message>
-        <source>A reference mark corrected the table's position by %1 mm: counts were lost or a belt slipped. The position is right again; if this repeats, check the encoders and their cables.</source>
+        <source>A reference mark corrected the table&apos;s position by %1 mm: counts were lost or a belt slipped. The position is right again; if this repeats, check the encoders and their cables.</source>
         <translation>Una marca de referencia corrigió la posición de la mesa en %1 mm: se perdieron cuentas o una correa patinó. La posición vuelve a ser correcta; si se repite, revise los encoders y sus cables.</translation>
     </message>
     <message>
@@ -334,8 +335,8 @@
 <context>
     <name>Diagnostic</name>
     <message>
-        <source>every line must start with n (found '%2')</source>
-        <translation>toda línea debe comenzar con n (se encontró '%2')</translation>
+        <source>every line must start with n (found &apos;%2&apos;)</source>
+        <translation>toda línea debe comenzar con n (se encontró &apos;%2&apos;)</translation>
     </message>
     <message>
         <source>wrong n sequence %1: must be greater than %3</source>
@@ -346,8 +347,8 @@
         <translation>número de secuencia solo %1</translation>
     </message>
     <message>
-        <source>separating spaces required %1 (found '%2')</source>
-        <translation>se requieren espacios de separación %1 (se encontró '%2')</translation>
+        <source>separating spaces required %1 (found &apos;%2&apos;)</source>
+        <translation>se requieren espacios de separación %1 (se encontró &apos;%2&apos;)</translation>
     </message>
     <message>
         <source>there can be no more commands after %2 %1</source>
@@ -406,36 +407,36 @@
         <translation>carácter inválido o g00 no admite f %1</translation>
     </message>
     <message>
-        <source>invalid character %1: '%2'</source>
-        <translation>carácter inválido %1: '%2'</translation>
+        <source>invalid character %1: &apos;%2&apos;</source>
+        <translation>carácter inválido %1: &apos;%2&apos;</translation>
     </message>
     <message>
-        <source>invalid character %1: malformed number '%2'</source>
-        <translation>carácter inválido %1: número mal formado '%2'</translation>
+        <source>invalid character %1: malformed number &apos;%2&apos;</source>
+        <translation>carácter inválido %1: número mal formado &apos;%2&apos;</translation>
     </message>
     <message>
-        <source>invalid character %1: '%2' must have exactly %3 digits</source>
-        <translation>carácter inválido %1: '%2' debe tener exactamente %3 dígitos</translation>
+        <source>invalid character %1: &apos;%2&apos; must have exactly %3 digits</source>
+        <translation>carácter inválido %1: &apos;%2&apos; debe tener exactamente %3 dígitos</translation>
     </message>
     <message>
         <source>invalid character %1: comment not closed</source>
         <translation>carácter inválido %1: comentario sin cerrar</translation>
     </message>
     <message>
-        <source>invalid character %1: word '%2' repeated</source>
-        <translation>carácter inválido %1: palabra '%2' repetida</translation>
+        <source>invalid character %1: word &apos;%2&apos; repeated</source>
+        <translation>carácter inválido %1: palabra &apos;%2&apos; repetida</translation>
     </message>
     <message>
-        <source>invalid character %1: n must be the first word ('%2')</source>
-        <translation>carácter inválido %1: n debe ser la primera palabra ('%2')</translation>
+        <source>invalid character %1: n must be the first word (&apos;%2&apos;)</source>
+        <translation>carácter inválido %1: n debe ser la primera palabra (&apos;%2&apos;)</translation>
     </message>
     <message>
-        <source>invalid value after m03 %1: '%2' is not a block number</source>
-        <translation>valor inválido después de m03 %1: '%2' no es un número de bloque</translation>
+        <source>invalid value after m03 %1: &apos;%2&apos; is not a block number</source>
+        <translation>valor inválido después de m03 %1: &apos;%2&apos; no es un número de bloque</translation>
     </message>
     <message>
-        <source>invalid character %1: number '%2' longer than %3 digits</source>
-        <translation>carácter inválido %1: número '%2' de más de %3 dígitos</translation>
+        <source>invalid character %1: number &apos;%2&apos; longer than %3 digits</source>
+        <translation>carácter inválido %1: número &apos;%2&apos; de más de %3 dígitos</translation>
     </message>
     <message>
         <source>program requires m02 (END) at the end</source>
@@ -458,12 +459,12 @@
         <translation>el eje %2 %1 no existe en esta máquina</translation>
     </message>
     <message>
-        <source>block number '%2' too large %1: at most %3</source>
-        <translation>número de bloque '%2' demasiado grande %1: como máximo %3</translation>
+        <source>block number &apos;%2&apos; too large %1: at most %3</source>
+        <translation>número de bloque &apos;%2&apos; demasiado grande %1: como máximo %3</translation>
     </message>
     <message>
-        <source>value '%2' too large %1: at most %3 in magnitude</source>
-        <translation>valor '%2' demasiado grande %1: como máximo %3 en valor absoluto</translation>
+        <source>value &apos;%2&apos; too large %1: at most %3 in magnitude</source>
+        <translation>valor &apos;%2&apos; demasiado grande %1: como máximo %3 en valor absoluto</translation>
     </message>
     <message>
         <source>in block n=%1</source>
@@ -490,103 +491,103 @@
     <name>trilho</name>
     <message>
         <source>the servo refused the drive (a limit or an end switch)</source>
-        <translation type="unfinished" />
+        <translation>el servo rechazó el accionamiento (un límite o un final de carrera)</translation>
     </message>
     <message>
         <source>the experiment was stopped by an alarm: %1</source>
-        <translation type="unfinished" />
+        <translation>el experimento fue detenido por una alarma: %1</translation>
     </message>
     <message>
-        <source>the platform left the experiment's +-100 mm</source>
-        <translation type="unfinished" />
+        <source>the platform left the experiment&apos;s +-100 mm</source>
+        <translation>la plataforma salió de los +-100 mm del experimento</translation>
     </message>
     <message>
         <source>the return to the start was stopped by an alarm: %1</source>
-        <translation type="unfinished" />
+        <translation>el regreso al inicio fue detenido por una alarma: %1</translation>
     </message>
     <message>
         <source>the platform did not come back within one count of its start (%1 mm away)</source>
-        <translation type="unfinished" />
+        <translation>la plataforma no volvió a menos de una cuenta de su inicio (quedó a %1 mm)</translation>
     </message>
     <message>
         <source>%1 %2 held to %3</source>
-        <translation type="unfinished" />
+        <translation>%1 %2 limitado a %3</translation>
     </message>
     <message>
         <source>a verification move with the tuned gains was stopped by an alarm: %1</source>
-        <translation type="unfinished" />
+        <translation>un movimiento de verificación con las ganancias sintonizadas fue detenido por una alarma: %1</translation>
     </message>
     <message>
         <source>a verification move with the tuned gains did not end in position</source>
-        <translation type="unfinished" />
+        <translation>un movimiento de verificación con las ganancias sintonizadas no terminó en posición</translation>
     </message>
     <message>
         <source>the experiment recorded too little</source>
-        <translation type="unfinished" />
+        <translation>el experimento registró muy pocos datos</translation>
     </message>
     <message>
         <source>the model fits the held-out run at %1 % on velocity, under %2 %</source>
-        <translation type="unfinished" />
+        <translation>el modelo ajusta el ensayo de validación al %1 % en velocidad, por debajo del %2 %</translation>
     </message>
     <message>
-        <source>the relay cycle left the experiment's +-100 mm</source>
-        <translation type="unfinished" />
+        <source>the relay cycle left the experiment&apos;s +-100 mm</source>
+        <translation>el ciclo del relé salió de los +-100 mm del experimento</translation>
     </message>
     <message>
         <source>the relay did not oscillate (%1 switches in %2 s)</source>
-        <translation type="unfinished" />
+        <translation>el relé no osciló (%1 conmutaciones en %2 s)</translation>
     </message>
     <message>
         <source>the relay cycle was too short to time</source>
-        <translation type="unfinished" />
+        <translation>el ciclo del relé fue demasiado corto para medirlo</translation>
     </message>
     <message>
         <source>the relay cycle had no amplitude</source>
-        <translation type="unfinished" />
+        <translation>el ciclo del relé no tuvo amplitud</translation>
     </message>
     <message>
         <source>no fault</source>
-        <translation type="unfinished" />
+        <translation>sin falla</translation>
     </message>
     <message>
         <source>following error</source>
-        <translation type="unfinished" />
+        <translation>error de seguimiento</translation>
     </message>
     <message>
         <source>left end switch</source>
-        <translation type="unfinished" />
+        <translation>final de carrera izquierdo</translation>
     </message>
     <message>
         <source>right end switch</source>
-        <translation type="unfinished" />
+        <translation>final de carrera derecho</translation>
     </message>
     <message>
         <source>amplifier fault</source>
-        <translation type="unfinished" />
+        <translation>falla del amplificador</translation>
     </message>
     <message>
         <source>hard stop</source>
-        <translation type="unfinished" />
+        <translation>tope mecánico</translation>
     </message>
     <message>
         <source>soft limit</source>
-        <translation type="unfinished" />
+        <translation>límite de software</translation>
     </message>
     <message>
         <source>encoder stalled</source>
-        <translation type="unfinished" />
+        <translation>encoder detenido</translation>
     </message>
     <message>
         <source>in-position timeout</source>
-        <translation type="unfinished" />
+        <translation>tiempo agotado para llegar a posición</translation>
     </message>
     <message>
         <source>counts lost</source>
-        <translation type="unfinished" />
+        <translation>cuentas perdidas</translation>
     </message>
     <message>
         <source>unknown fault</source>
-        <translation type="unfinished" />
+        <translation>falla desconocida</translation>
     </message>
 </context>
 <context>
@@ -627,7 +628,7 @@
         <translation>Guardar perfil...</translation>
     </message>
     <message>
-        <source>Run the board's calibration program, then press Start.</source>
+        <source>Run the board&apos;s calibration program, then press Start.</source>
         <translation>Ejecute el programa de calibración de la placa y pulse Iniciar.</translation>
     </message>
     <message>
@@ -761,19 +762,19 @@
         <translation>Carpeta de los programas</translation>
     </message>
     <message>
-        <source>The address '%1' is not an IP address: write a numeric address such as 127.0.0.1 (this computer only), or 0.0.0.0 for every network interface.</source>
-        <translation>La dirección '%1' no es una dirección IP: escriba una dirección numérica como 127.0.0.1 (solo este ordenador) o 0.0.0.0 para todas las interfaces de red.</translation>
+        <source>The address &apos;%1&apos; is not an IP address: write a numeric address such as 127.0.0.1 (this computer only), or 0.0.0.0 for every network interface.</source>
+        <translation>La dirección &apos;%1&apos; no es una dirección IP: escriba una dirección numérica como 127.0.0.1 (solo este ordenador) o 0.0.0.0 para todas las interfaces de red.</translation>
     </message>
     <message>
-        <source>The port must be a whole number from 1 to 65535 (got '%1'); Modbus TCP's own is 502, which needs administrator rights: 1502 does not.</source>
-        <translation>El puerto debe ser un número entero de 1 a 65535 (recibido '%1'); el de Modbus TCP es 502, que requiere derechos de administrador: 1502 no.</translation>
+        <source>The port must be a whole number from 1 to 65535 (got &apos;%1&apos;); Modbus TCP&apos;s own is 502, which needs administrator rights: 1502 does not.</source>
+        <translation>El puerto debe ser un número entero de 1 a 65535 (recibido &apos;%1&apos;); el de Modbus TCP es 502, que requiere derechos de administrador: 1502 no.</translation>
     </message>
     <message>
         <source>Modbus RTU needs the serial device, e.g. /dev/ttyUSB0 (or turn RTU off).</source>
         <translation>Modbus RTU necesita el dispositivo serie, p. ej. /dev/ttyUSB0 (o desactive RTU).</translation>
     </message>
     <message>
-        <source>Warning: %1 can be reached from other computers. Modbus has no password and no encryption: anyone on that network can read this machine and, while Remote is on, change its gains and run programs. Use 127.0.0.1 unless the cell's network is closed.</source>
+        <source>Warning: %1 can be reached from other computers. Modbus has no password and no encryption: anyone on that network can read this machine and, while Remote is on, change its gains and run programs. Use 127.0.0.1 unless the cell&apos;s network is closed.</source>
         <translation>Atención: %1 es accesible desde otros ordenadores. Modbus no tiene contraseña ni cifrado: cualquiera en esa red puede leer esta máquina y, con Remoto activado, cambiar sus ganancias y ejecutar programas. Use 127.0.0.1 salvo que la red de la célula sea cerrada.</translation>
     </message>
     <message>
@@ -785,7 +786,7 @@
         <translation>Enlace DNC (Modbus)</translation>
     </message>
     <message>
-        <source>Serve the DNC link (Modbus) for the cell's supervisor</source>
+        <source>Serve the DNC link (Modbus) for the cell&apos;s supervisor</source>
         <translation>Servir el enlace DNC (Modbus) para el supervisor de la célula</translation>
     </message>
     <message>
@@ -1145,7 +1146,7 @@
 <context>
     <name>trilho::ui::MachineLink</name>
     <message>
-        <source>Command not taken: the servo thread's queue is full. Press again.</source>
+        <source>Command not taken: the servo thread&apos;s queue is full. Press again.</source>
         <translation>Comando no aceptado: la cola del servo está llena. Pulse de nuevo.</translation>
     </message>
     <message>
@@ -1277,7 +1278,7 @@
     </message>
     <message>
         <source>Tuning &amp;workbench...</source>
-        <translation type="unfinished" />
+        <translation>&amp;Banco de sintonía...</translation>
     </message>
     <message>
         <source>&amp;Help</source>
@@ -1320,7 +1321,7 @@
         <translation>&amp;Remoto (DNC)</translation>
     </message>
     <message>
-        <source>Allow the cell's supervisor to write and command over the DNC link (%1). Off at every start.</source>
+        <source>Allow the cell&apos;s supervisor to write and command over the DNC link (%1). Off at every start.</source>
         <translation>Permite al supervisor de la célula escribir y mandar por el enlace DNC (%1). Desactivado en cada inicio.</translation>
     </message>
     <message>
@@ -1365,11 +1366,11 @@
     </message>
     <message>
         <source>%1 changed on disk: reading it again.</source>
-        <translation type="unfinished" />
+        <translation>%1 cambió en el disco: leyéndolo de nuevo.</translation>
     </message>
     <message>
         <source>The program changed while it compiled: nothing was run. Compile or execute it again.</source>
-        <translation type="unfinished" />
+        <translation>El programa cambió mientras se compilaba: no se ejecutó nada. Compílelo o ejecútelo de nuevo.</translation>
     </message>
     <message>
         <source>Compiling %1 MB...</source>
@@ -1508,7 +1509,7 @@
         <translation>Alarma: léala en Alarmas y Reconozca.</translation>
     </message>
     <message>
-        <source>The rail's position is not known: Execute (or Automatic) homes it first.</source>
+        <source>The rail&apos;s position is not known: Execute (or Automatic) homes it first.</source>
         <translation>La posición del riel no se conoce: Ejecutar (o Automático) la referencia primero.</translation>
     </message>
     <message>
@@ -1552,103 +1553,103 @@
     <name>trilho::ui::ModelView</name>
     <message>
         <source>Identify or autotune the rail to see its model, its fit and its Bode plot.</source>
-        <translation type="unfinished" />
+        <translation>Identifique el riel o haga el autoajuste para ver su modelo, su ajuste y su diagrama de Bode.</translation>
     </message>
     <message>
         <source>&lt;b&gt;Identified model&lt;/b&gt; (G = K / (s (tau s + 1)), acceleration limited, Coulomb friction)</source>
-        <translation type="unfinished" />
+        <translation>&lt;b&gt;Modelo identificado&lt;/b&gt; (G = K / (s (tau s + 1)), aceleración limitada, fricción de Coulomb)</translation>
     </message>
     <message>
         <source>speed gain K = %1 mm/s per code</source>
-        <translation type="unfinished" />
+        <translation>ganancia de velocidad K = %1 mm/s por código</translation>
     </message>
     <message>
         <source>time constant tau = %1 ms</source>
-        <translation type="unfinished" />
+        <translation>constante de tiempo tau = %1 ms</translation>
     </message>
     <message>
         <source>acceleration limit = %1 mm/s2 (mass %2 kg)</source>
-        <translation type="unfinished" />
+        <translation>límite de aceleración = %1 mm/s2 (masa %2 kg)</translation>
     </message>
     <message>
         <source>Coulomb friction = %1 mm/s2 (%2 N)</source>
-        <translation type="unfinished" />
+        <translation>fricción de Coulomb = %1 mm/s2 (%2 N)</translation>
     </message>
     <message>
         <source>fit on held-out velocity (NRMSE) = &lt;b&gt;%1 %&lt;/b&gt;; on the fitted part %2 %; on position %3 % (flattering: position integrates)</source>
-        <translation type="unfinished" />
+        <translation>ajuste en la velocidad de validación (NRMSE) = &lt;b&gt;%1 %&lt;/b&gt;; en la parte ajustada %2 %; en la posición %3 % (optimista: la posición integra)</translation>
     </message>
     <message>
         <source>experiment: %1 s of machine time, at most %2 mm from the start, back within %3 counts</source>
-        <translation type="unfinished" />
+        <translation>experimento: %1 s de tiempo de máquina, como máximo a %2 mm del inicio, de vuelta a menos de %3 cuentas</translation>
     </message>
     <message>
         <source>Model refused: %1</source>
-        <translation type="unfinished" />
+        <translation>Modelo rechazado: %1</translation>
     </message>
     <message>
         <source>&lt;b&gt;Margins&lt;/b&gt;: gain %1 dB at %2 rad/s; phase %3 deg at %4 rad/s</source>
-        <translation type="unfinished" />
+        <translation>&lt;b&gt;Márgenes&lt;/b&gt;: ganancia %1 dB a %2 rad/s; fase %3 deg a %4 rad/s</translation>
     </message>
     <message>
         <source>infinite</source>
-        <translation type="unfinished" />
+        <translation>infinita</translation>
     </message>
     <message>
         <source>|L| (dB)</source>
-        <translation type="unfinished" />
+        <translation>|L| (dB)</translation>
     </message>
     <message>
         <source>phase (deg)</source>
-        <translation type="unfinished" />
+        <translation>fase (deg)</translation>
     </message>
     <message>
         <source>frequency (rad/s)</source>
-        <translation type="unfinished" />
+        <translation>frecuencia (rad/s)</translation>
     </message>
     <message>
-        <source>Open loop with the profile's engineered gains (Kp %1, Ki %2, Kd %3):</source>
-        <translation type="unfinished" />
+        <source>Open loop with the profile&apos;s engineered gains (Kp %1, Ki %2, Kd %3):</source>
+        <translation>Lazo abierto con las ganancias de la ley moderna del perfil (Kp %1, Ki %2, Kd %3):</translation>
     </message>
     <message>
         <source>&lt;b&gt;Design&lt;/b&gt; (SIMC, closed-loop time constant %1 ms, delay %2 ms): Kp %3, Ki %4, Kd %5; planning acceleration %6 mm/s2</source>
-        <translation type="unfinished" />
+        <translation>&lt;b&gt;Diseño&lt;/b&gt; (SIMC, constante de tiempo en lazo cerrado %1 ms, retardo %2 ms): Kp %3, Ki %4, Kd %5; aceleración de planificación %6 mm/s2</translation>
     </message>
     <message>
         <source>Prediction (on the model, before applying) against measurement</source>
-        <translation type="unfinished" />
+        <translation>Predicción (en el modelo, antes de aplicar) frente a medición</translation>
     </message>
     <message>
         <source>overshoot predicted (counts)</source>
-        <translation type="unfinished" />
+        <translation>sobreimpulso previsto (cuentas)</translation>
     </message>
     <message>
         <source>measured</source>
-        <translation type="unfinished" />
+        <translation>medido</translation>
     </message>
     <message>
         <source>settling +-1 count predicted (ms)</source>
-        <translation type="unfinished" />
+        <translation>establecimiento +-1 cuenta previsto (ms)</translation>
     </message>
     <message>
         <source>%1 mm step</source>
-        <translation type="unfinished" />
+        <translation>escalón de %1 mm</translation>
     </message>
     <message>
         <source>%1 mm move</source>
-        <translation type="unfinished" />
+        <translation>movimiento de %1 mm</translation>
     </message>
     <message>
         <source>Machine time of the whole autotune: %1 s</source>
-        <translation type="unfinished" />
+        <translation>Tiempo de máquina de todo el autoajuste: %1 s</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Autotune passed&lt;/b&gt;: the tuned gains are in the step test's boxes; Save tuned profile... keeps them in a profile.</source>
-        <translation type="unfinished" />
+        <source>&lt;b&gt;Autotune passed&lt;/b&gt;: the tuned gains are in the step test&apos;s boxes; Save tuned profile... keeps them in a profile.</source>
+        <translation>&lt;b&gt;Autoajuste aprobado&lt;/b&gt;: las ganancias sintonizadas están en las casillas de la prueba de escalón; Guardar perfil sintonizado... las guarda en un perfil.</translation>
     </message>
     <message>
         <source>Autotune failed: %1</source>
-        <translation type="unfinished" />
+        <translation>Autoajuste fallido: %1</translation>
     </message>
 </context>
 <context>
@@ -1811,8 +1812,8 @@
         <translation>Ningún programa seleccionado: no hay archivo donde guardar.</translation>
     </message>
     <message>
-        <source>cannot save '%1': %2</source>
-        <translation>no se pudo guardar '%1': %2</translation>
+        <source>cannot save &apos;%1&apos;: %2</source>
+        <translation>no se pudo guardar &apos;%1&apos;: %2</translation>
     </message>
 </context>
 <context>
@@ -1873,67 +1874,67 @@
     <name>trilho::ui::RunOverlay</name>
     <message>
         <source>Rise time 10-90 % (ms)</source>
-        <translation type="unfinished" />
+        <translation>Tiempo de subida 10-90 % (ms)</translation>
     </message>
     <message>
         <source>Settling time 2 % (ms)</source>
-        <translation type="unfinished" />
+        <translation>Tiempo de establecimiento 2 % (ms)</translation>
     </message>
     <message>
         <source>Settling time +-1 count (ms)</source>
-        <translation type="unfinished" />
+        <translation>Tiempo de establecimiento +-1 cuenta (ms)</translation>
     </message>
     <message>
         <source>Overshoot (%)</source>
-        <translation type="unfinished" />
+        <translation>Sobreimpulso (%)</translation>
     </message>
     <message>
         <source>Peak (mm)</source>
-        <translation type="unfinished" />
+        <translation>Pico (mm)</translation>
     </message>
     <message>
         <source>Peak time (ms)</source>
-        <translation type="unfinished" />
+        <translation>Tiempo de pico (ms)</translation>
     </message>
     <message>
         <source>Steady-state error (counts)</source>
-        <translation type="unfinished" />
+        <translation>Error en estado estacionario (cuentas)</translation>
     </message>
     <message>
         <source>IAE (mm.s)</source>
-        <translation type="unfinished" />
+        <translation>IAE (mm.s)</translation>
     </message>
     <message>
         <source>ITAE (mm.s2)</source>
-        <translation type="unfinished" />
+        <translation>ITAE (mm.s2)</translation>
     </message>
     <message>
         <source>ISE (mm2.s)</source>
-        <translation type="unfinished" />
+        <translation>ISE (mm2.s)</translation>
     </message>
     <message>
         <source>Following error max (mm)</source>
-        <translation type="unfinished" />
+        <translation>Error de seguimiento máx. (mm)</translation>
     </message>
     <message>
         <source>Following error RMS (mm)</source>
-        <translation type="unfinished" />
+        <translation>Error de seguimiento RMS (mm)</translation>
     </message>
     <message>
         <source>Time saturated (ms)</source>
-        <translation type="unfinished" />
+        <translation>Tiempo saturado (ms)</translation>
     </message>
     <message>
         <source>no step</source>
-        <translation type="unfinished" />
+        <translation>sin escalón</translation>
     </message>
     <message>
         <source>not reached</source>
-        <translation type="unfinished" />
+        <translation>no alcanzado</translation>
     </message>
     <message>
         <source>time from the step (s)</source>
-        <translation type="unfinished" />
+        <translation>tiempo desde el escalón (s)</translation>
     </message>
     <message>
         <source>displacement (mm)</source>
@@ -1945,7 +1946,7 @@
     </message>
     <message>
         <source>no</source>
-        <translation type="unfinished" />
+        <translation>No</translation>
     </message>
 </context>
 <context>
@@ -2053,7 +2054,7 @@
         <translation>Escuela Politécnica</translation>
     </message>
     <message>
-        <source>Numerical Control for the robot's rail</source>
+        <source>Numerical Control for the robot&apos;s rail</source>
         <translation>Control Numérico para el riel del robot</translation>
     </message>
     <message>
@@ -2085,31 +2086,31 @@
     <name>trilho::ui::TermsView</name>
     <message>
         <source>What if: the same run with other gains</source>
-        <translation type="unfinished" />
+        <translation>Y si: el mismo ensayo con otras ganancias</translation>
     </message>
     <message>
         <source>Kp</source>
-        <translation type="unfinished" />
+        <translation>Kp</translation>
     </message>
     <message>
         <source>Ki</source>
-        <translation type="unfinished" />
+        <translation>Ki</translation>
     </message>
     <message>
         <source>Kff</source>
-        <translation type="unfinished" />
+        <translation>Kff</translation>
     </message>
     <message>
         <source>Kd</source>
-        <translation type="unfinished" />
+        <translation>Kd</translation>
     </message>
     <message>
         <source>Re-simulate</source>
-        <translation type="unfinished" />
+        <translation>Volver a simular</translation>
     </message>
     <message>
         <source>Runs the recorded test again from the same start with these gains and adds it to the overlay</source>
-        <translation type="unfinished" />
+        <translation>Ejecuta de nuevo el ensayo grabado desde el mismo inicio con estas ganancias y lo superpone a los demás</translation>
     </message>
     <message>
         <source>time (s)</source>
@@ -2117,138 +2118,138 @@
     </message>
     <message>
         <source>PWM (%)</source>
-        <translation type="unfinished" />
+        <translation>PWM (%)</translation>
     </message>
     <message>
         <source>DAC codes from 128</source>
-        <translation type="unfinished" />
+        <translation>códigos DAC desde 128</translation>
     </message>
     <message>
         <source>This run has no loop terms (a trace of a program): record a step test to see them.</source>
-        <translation type="unfinished" />
+        <translation>Este ensayo no tiene términos del lazo (es el registro de un programa): grabe una prueba de escalón para verlos.</translation>
     </message>
     <message>
         <source>Run a step test, then choose its column in the table.</source>
-        <translation type="unfinished" />
+        <translation>Ejecute una prueba de escalón y elija su columna en la tabla.</translation>
     </message>
     <message>
         <source>P</source>
-        <translation type="unfinished" />
+        <translation>P</translation>
     </message>
     <message>
         <source>I</source>
-        <translation type="unfinished" />
+        <translation>I</translation>
     </message>
     <message>
         <source>D</source>
-        <translation type="unfinished" />
+        <translation>D</translation>
     </message>
     <message>
         <source>FF</source>
-        <translation type="unfinished" />
+        <translation>FF</translation>
     </message>
     <message>
         <source>sum before the clamp</source>
-        <translation type="unfinished" />
+        <translation>suma antes de la limitación</translation>
     </message>
     <message>
         <source>drive written</source>
-        <translation type="unfinished" />
+        <translation>accionamiento escrito</translation>
     </message>
     <message>
         <source>&lt;b&gt;Tick %1&lt;/b&gt;, t = %2 s, period T = %3 ms</source>
-        <translation type="unfinished" />
+        <translation>&lt;b&gt;Ciclo %1&lt;/b&gt;, t = %2 s, período T = %3 ms</translation>
     </message>
     <message>
         <source>e[k] = r[k] - y[k] = %1 - %2 = &lt;b&gt;%3 mm&lt;/b&gt; (%4 counts)</source>
-        <translation type="unfinished" />
+        <translation>e[k] = r[k] - y[k] = %1 - %2 = &lt;b&gt;%3 mm&lt;/b&gt; (%4 cuentas)</translation>
     </message>
     <message>
         <source>P = Kp e = %1 x %2 = %3 %; I = %4 %; FF = Kff v_ref = %5 %</source>
-        <translation type="unfinished" />
+        <translation>P = Kp e = %1 x %2 = %3 %; I = %4 %; FF = Kff v_ref = %5 %</translation>
     </message>
     <message>
         <source>u = P + I + FF = &lt;b&gt;%1 %&lt;/b&gt; -&gt; clamp -&gt; %2 % -&gt; PWM written %3 %</source>
-        <translation type="unfinished" />
+        <translation>u = P + I + FF = &lt;b&gt;%1 %&lt;/b&gt; -&gt; limitación -&gt; %2 % -&gt; PWM escrito %3 %</translation>
     </message>
     <message>
         <source>The 1996 law: V[k] = floor(128 + Kp e[k] + (Kd / T) (e[k] - e[k-1]) + Ki sum(e) + 0.5), T in ms, clamped by M = F / 100</source>
-        <translation type="unfinished" />
+        <translation>La ley de 1996: V[k] = floor(128 + Kp e[k] + (Kd / T) (e[k] - e[k-1]) + Ki sum(e) + 0.5), T en ms, limitado por M = F / 100</translation>
     </message>
     <message>
         <source>Kp e = %1 x %2 = %3; (Kd / T) (e[k] - e[k-1]) = (%4 / %5) x (%6 - %7) = %8; Ki sum(e) = %9</source>
-        <translation type="unfinished" />
+        <translation>Kp e = %1 x %2 = %3; (Kd / T) (e[k] - e[k-1]) = (%4 / %5) x (%6 - %7) = %8; Ki sum(e) = %9</translation>
     </message>
     <message>
         <source>V = floor(128 + %1 + 0.5) = %2 -&gt; written &lt;b&gt;%3&lt;/b&gt;%4</source>
-        <translation type="unfinished" />
+        <translation>V = floor(128 + %1 + 0.5) = %2 -&gt; escrito &lt;b&gt;%3&lt;/b&gt;%4</translation>
     </message>
     <message>
         <source> (clamped: saturated)</source>
-        <translation type="unfinished" />
+        <translation> (limitado: saturado)</translation>
     </message>
     <message>
         <source>P = Kp e = %1 x %2 = %3 codes</source>
-        <translation type="unfinished" />
+        <translation>P = Kp e = %1 x %2 = %3 códigos</translation>
     </message>
     <message>
         <source>I[k] = I[k-1] + Ki T e[k] = %1 codes (Ki = %2; held while the output is saturated: anti-windup)</source>
-        <translation type="unfinished" />
+        <translation>I[k] = I[k-1] + Ki T e[k] = %1 códigos (Ki = %2; congelado mientras la salida está saturada: anti-windup)</translation>
     </message>
     <message>
         <source>D = -Kd dy/dt (on the measurement, filtered: no kick when the setpoint jumps) = -%1 x %2 = %3 codes</source>
-        <translation type="unfinished" />
+        <translation>D = -Kd dy/dt (sobre la medición, filtrado: sin pico cuando la consigna salta) = -%1 x %2 = %3 códigos</translation>
     </message>
     <message>
         <source>FF = (v_ref + tau a_ref) x 127 / v_max + Kd v_ref = %1 codes (v_ref = %2 mm/s)</source>
-        <translation type="unfinished" />
+        <translation>FF = (v_ref + tau a_ref) x 127 / v_max + Kd v_ref = %1 códigos (v_ref = %2 mm/s)</translation>
     </message>
     <message>
         <source>u = P + I + D + FF = &lt;b&gt;%1 codes&lt;/b&gt; -&gt; clamp and slew limit -&gt; %2 -&gt; DAC = round(128 + u + carried fraction) = &lt;b&gt;%3&lt;/b&gt;%4</source>
-        <translation type="unfinished" />
+        <translation>u = P + I + D + FF = &lt;b&gt;%1 códigos&lt;/b&gt; -&gt; limitación y límite de variación -&gt; %2 -&gt; DAC = round(128 + u + fracción acumulada) = &lt;b&gt;%3&lt;/b&gt;%4</translation>
     </message>
     <message>
         <source> (saturated)</source>
-        <translation type="unfinished" />
+        <translation> (saturado)</translation>
     </message>
 </context>
 <context>
     <name>trilho::ui::WorkbenchWindow</name>
     <message>
         <source>Tuning workbench: %1</source>
-        <translation type="unfinished" />
+        <translation>Banco de sintonía: %1</translation>
     </message>
     <message>
         <source>Step test (simulated plant, virtual time)</source>
-        <translation type="unfinished" />
+        <translation>Prueba de escalón (planta simulada, tiempo virtual)</translation>
     </message>
     <message>
         <source>Axis</source>
-        <translation type="unfinished" />
+        <translation>Eje</translation>
     </message>
     <message>
         <source>Amplitude (mm)</source>
-        <translation type="unfinished" />
+        <translation>Amplitud del escalón (mm)</translation>
     </message>
     <message>
         <source>The sign is the direction</source>
-        <translation type="unfinished" />
+        <translation>El signo indica el sentido</translation>
     </message>
     <message>
         <source>Speed (% of rapid)</source>
-        <translation type="unfinished" />
+        <translation>Velocidad (% de la máxima)</translation>
     </message>
     <message>
         <source>100 %: a step at the rapid speed; below: a ramp</source>
-        <translation type="unfinished" />
+        <translation>100 %: un escalón a la velocidad máxima; por debajo: una rampa</translation>
     </message>
     <message>
         <source>Control law</source>
-        <translation type="unfinished" />
+        <translation>Ley de control</translation>
     </message>
     <message>
         <source>Engineered</source>
-        <translation type="unfinished" />
+        <translation>Moderna</translation>
     </message>
     <message>
         <source>Classic (1996)</source>
@@ -2256,195 +2257,195 @@
     </message>
     <message>
         <source>Period (ms)</source>
-        <translation type="unfinished" />
+        <translation>Período (ms)</translation>
     </message>
     <message>
         <source>The 1996 law ran at 10 ms: its gains are per tick, so at 1 ms they act ten times harder (a lesson, not a setting)</source>
-        <translation type="unfinished" />
+        <translation>La ley de 1996 corría a 10 ms: sus ganancias son por ciclo, así que a 1 ms actúan diez veces más fuerte (una lección, no un ajuste)</translation>
     </message>
     <message>
         <source>Kp</source>
-        <translation type="unfinished" />
+        <translation>Kp</translation>
     </message>
     <message>
         <source>Ki</source>
-        <translation type="unfinished" />
+        <translation>Ki</translation>
     </message>
     <message>
         <source>Kd</source>
-        <translation type="unfinished" />
+        <translation>Kd</translation>
     </message>
     <message>
         <source>Kff</source>
-        <translation type="unfinished" />
+        <translation>Kff</translation>
     </message>
     <message>
         <source>Mass factor</source>
-        <translation type="unfinished" />
+        <translation>Factor de masa</translation>
     </message>
     <message>
-        <source>The plant's moving mass times this; the loop is not told</source>
-        <translation type="unfinished" />
+        <source>The plant&apos;s moving mass times this; the loop is not told</source>
+        <translation>La masa móvil de la planta por este factor; el lazo no lo sabe</translation>
     </message>
     <message>
         <source>Seed</source>
-        <translation type="unfinished" />
+        <translation>Semilla</translation>
     </message>
     <message>
         <source>Run step</source>
-        <translation type="unfinished" />
+        <translation>Ejecutar escalón</translation>
     </message>
     <message>
         <source>1996 law against engineered</source>
-        <translation type="unfinished" />
+        <translation>Ley de 1996 frente a la moderna</translation>
     </message>
     <message>
         <source>The same move with the 1996 law at its 10 ms and its gains, and with the engineered law</source>
-        <translation type="unfinished" />
+        <translation>El mismo movimiento con la ley de 1996, con sus 10 ms y sus ganancias, y con la ley moderna</translation>
     </message>
     <message>
         <source>Identification and autotune</source>
-        <translation type="unfinished" />
+        <translation>Identificación y autoajuste</translation>
     </message>
     <message>
         <source>Identify the plant</source>
-        <translation type="unfinished" />
+        <translation>Identificar la planta</translation>
     </message>
     <message>
         <source>At most 3 s of machine time, within 100 mm, back to the start within a count</source>
-        <translation type="unfinished" />
+        <translation>Como máximo 3 s de tiempo de máquina, dentro de 100 mm, de vuelta al inicio a menos de una cuenta</translation>
     </message>
     <message>
         <source>Autotune</source>
-        <translation type="unfinished" />
+        <translation>Autoajuste</translation>
     </message>
     <message>
         <source>Identify, design (SIMC), predict, then verify with a 10 mm step and a 1000 mm move</source>
-        <translation type="unfinished" />
+        <translation>Identifica, diseña (SIMC), predice y luego verifica con un escalón de 10 mm y un movimiento de 1000 mm</translation>
     </message>
     <message>
         <source>Save tuned profile...</source>
-        <translation type="unfinished" />
+        <translation>Guardar perfil sintonizado...</translation>
     </message>
     <message>
         <source>Runs</source>
-        <translation type="unfinished" />
+        <translation>Ensayos</translation>
     </message>
     <message>
         <source>Save run...</source>
-        <translation type="unfinished" />
+        <translation>Guardar ensayo...</translation>
     </message>
     <message>
         <source>Load run...</source>
-        <translation type="unfinished" />
+        <translation>Cargar ensayo...</translation>
     </message>
     <message>
         <source>Remove</source>
-        <translation type="unfinished" />
+        <translation>Quitar</translation>
     </message>
     <message>
         <source>Clear</source>
-        <translation type="unfinished" />
+        <translation>Borrar</translation>
     </message>
     <message>
         <source>Responses</source>
-        <translation type="unfinished" />
+        <translation>Respuestas</translation>
     </message>
     <message>
         <source>P, I, D terms</source>
-        <translation type="unfinished" />
+        <translation>Términos P, I, D</translation>
     </message>
     <message>
         <source>Model</source>
-        <translation type="unfinished" />
+        <translation>Modelo</translation>
     </message>
     <message>
         <source>1996</source>
-        <translation type="unfinished" />
+        <translation>1996</translation>
     </message>
     <message>
         <source>engineered</source>
-        <translation type="unfinished" />
+        <translation>moderna</translation>
     </message>
     <message>
         <source>%1 %2, %3 mm at %4 ms, mass x%5</source>
-        <translation type="unfinished" />
+        <translation>%1 %2, %3 mm a %4 ms, masa x%5</translation>
     </message>
     <message>
         <source>Running in virtual time...</source>
-        <translation type="unfinished" />
+        <translation>Ejecutando en tiempo virtual...</translation>
     </message>
     <message>
         <source>Run %1 done.</source>
-        <translation type="unfinished" />
+        <translation>Ensayo %1 terminado.</translation>
     </message>
     <message>
         <source>Run %1 stopped: %2</source>
-        <translation type="unfinished" />
+        <translation>Ensayo %1 detenido: %2</translation>
     </message>
     <message>
         <source>what if (from run %1): %2</source>
-        <translation type="unfinished" />
+        <translation>y si (del ensayo %1): %2</translation>
     </message>
     <message>
         <source>Identified: fit %1 % on held-out velocity.</source>
-        <translation type="unfinished" />
+        <translation>Identificado: ajuste del %1 % en la velocidad de validación.</translation>
     </message>
     <message>
         <source>Model refused: %1</source>
-        <translation type="unfinished" />
+        <translation>Modelo rechazado: %1</translation>
     </message>
     <message>
         <source>Autotune passed in %1 s of machine time.</source>
-        <translation type="unfinished" />
+        <translation>Autoajuste aprobado en %1 s de tiempo de máquina.</translation>
     </message>
     <message>
         <source>Autotune failed: %1</source>
-        <translation type="unfinished" />
+        <translation>Autoajuste fallido: %1</translation>
     </message>
     <message>
         <source>%1: the run has no samples</source>
-        <translation type="unfinished" />
+        <translation>%1: el ensayo no tiene muestras</translation>
     </message>
     <message>
         <source>No run is selected.</source>
-        <translation type="unfinished" />
+        <translation>Ningún ensayo seleccionado.</translation>
     </message>
     <message>
         <source>Save run</source>
-        <translation type="unfinished" />
+        <translation>Guardar ensayo</translation>
     </message>
     <message>
         <source>Run records (*.csv)</source>
-        <translation type="unfinished" />
+        <translation>Registros de ensayo (*.csv)</translation>
     </message>
     <message>
         <source>Saved %1 and %2.</source>
-        <translation type="unfinished" />
+        <translation>Guardados %1 y %2.</translation>
     </message>
     <message>
         <source>Load run</source>
-        <translation type="unfinished" />
+        <translation>Cargar ensayo</translation>
     </message>
     <message>
         <source>Run records and traces (*.csv)</source>
-        <translation type="unfinished" />
+        <translation>Registros de ensayo y trazas (*.csv)</translation>
     </message>
     <message>
         <source>Save tuned profile</source>
-        <translation type="unfinished" />
+        <translation>Guardar perfil sintonizado</translation>
     </message>
     <message>
         <source>Machine profiles (*.json)</source>
         <translation>Perfiles de máquina (*.json)</translation>
     </message>
     <message>
-        <source>cannot save '%1': %2</source>
-        <translation>no se pudo guardar '%1': %2</translation>
+        <source>cannot save &apos;%1&apos;: %2</source>
+        <translation>no se pudo guardar &apos;%1&apos;: %2</translation>
     </message>
     <message>
         <source>Saved %1: trilho-cli run --machine %1 uses it.</source>
-        <translation type="unfinished" />
+        <translation>Guardado %1: trilho-cli run --machine %1 lo usa.</translation>
     </message>
 </context>
 <context>
@@ -2530,7 +2531,7 @@
         <translation>Inicio de ciclo</translation>
     </message>
     <message>
-        <source>Run %1? %2The machine travels at full speed from (%3, %4) mm to the program's start, then runs it.</source>
+        <source>Run %1? %2The machine travels at full speed from (%3, %4) mm to the program&apos;s start, then runs it.</source>
         <translation>¿Ejecutar %1? %2La máquina va a velocidad máxima de (%3, %4) mm hasta el inicio del programa, y luego lo ejecuta.</translation>
     </message>
     <message>
@@ -2714,7 +2715,7 @@
         <translation>&amp;Remoto (DNC)</translation>
     </message>
     <message>
-        <source>Allow the cell's supervisor to write and command over the DNC link (%1). Off at every start.</source>
+        <source>Allow the cell&apos;s supervisor to write and command over the DNC link (%1). Off at every start.</source>
         <translation>Permite al supervisor de la célula escribir y mandar por el enlace DNC (%1). Desactivado en cada inicio.</translation>
     </message>
     <message>
@@ -2727,11 +2728,11 @@
     </message>
     <message>
         <source>Tuning &amp;workbench...</source>
-        <translation type="unfinished" />
+        <translation>&amp;Banco de sintonía...</translation>
     </message>
     <message>
         <source>The plotter has no encoder: there is no response to measure</source>
-        <translation type="unfinished" />
+        <translation>El plotter no tiene encoder: no hay respuesta que medir</translation>
     </message>
     <message>
         <source>&amp;Help</source>

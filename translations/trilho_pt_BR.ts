@@ -1,4 +1,5 @@
-<?xml version='1.0' encoding='utf-8'?>
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
 <TS version="2.1" language="pt_BR">
 <context>
     <name>Controller</name>
@@ -27,7 +28,7 @@
         <translation>%1: Mudança do zero do sistema para x=%2.</translation>
     </message>
     <message>
-        <source>%1: Return to the rail's absolute zero.</source>
+        <source>%1: Return to the rail&apos;s absolute zero.</source>
         <translation>%1: Retorno para zero absoluto do trilho.</translation>
     </message>
     <message>
@@ -283,7 +284,7 @@
         <translation>Referência concluída: na origem.</translation>
     </message>
     <message>
-        <source>%1: Return to the machine's absolute zero.</source>
+        <source>%1: Return to the machine&apos;s absolute zero.</source>
         <translation>%1: Retorno ao zero absoluto da máquina.</translation>
     </message>
     <message>
@@ -299,11 +300,11 @@
         <translation>Erro de seguimento: um eixo da mesa (x ou y) ficou %1 mm atrás do comando (travamento, carga pesada demais ou cabo do encoder rompido) e os dois acionamentos foram cortados. Libere a mesa, reconheça e refaça o referenciamento.</translation>
     </message>
     <message>
-        <source>Soft limit: the target is outside the table's travel, so the table stopped at its limit. Move it back the other way, inside the limits.</source>
+        <source>Soft limit: the target is outside the table&apos;s travel, so the table stopped at its limit. Move it back the other way, inside the limits.</source>
         <translation>Limite de software: o alvo está fora do curso da mesa, e a mesa parou no limite. Leve-a de volta no sentido oposto, para dentro dos limites.</translation>
     </message>
     <message>
-        <source>Homing failed: the table's origin was not found. Check its sensor and cable, acknowledge, then home again.</source>
+        <source>Homing failed: the table&apos;s origin was not found. Check its sensor and cable, acknowledge, then home again.</source>
         <translation>Falha no referenciamento: a origem da mesa não foi encontrada. Verifique o sensor e o cabo, reconheça e refaça o referenciamento.</translation>
     </message>
     <message>
@@ -319,7 +320,7 @@
         <translation>O programa terminou com a mesa a %1 mm do último alvo no eixo x ou y, fora da janela de posição final. Verifique a carga e os ganhos e execute de novo.</translation>
     </message>
     <message>
-        <source>A reference mark corrected the table's position by %1 mm: counts were lost or a belt slipped. The position is right again; if this repeats, check the encoders and their cables.</source>
+        <source>A reference mark corrected the table&apos;s position by %1 mm: counts were lost or a belt slipped. The position is right again; if this repeats, check the encoders and their cables.</source>
         <translation>Uma marca de referência corrigiu a posição da mesa em %1 mm: houve perda de contagens ou uma correia escorregou. A posição está certa de novo; se isso se repetir, verifique os encoders e os cabos.</translation>
     </message>
     <message>
@@ -334,7 +335,7 @@
 <context>
     <name>Diagnostic</name>
     <message>
-        <source>every line must start with n (found '%2')</source>
+        <source>every line must start with n (found &apos;%2&apos;)</source>
         <translation>Erro: Toda linha deve iniciar com n.</translation>
     </message>
     <message>
@@ -346,7 +347,7 @@
         <translation>Erro: Seqüência n sozinha %1</translation>
     </message>
     <message>
-        <source>separating spaces required %1 (found '%2')</source>
+        <source>separating spaces required %1 (found &apos;%2&apos;)</source>
         <translation>Erro: Espaços para separação requeridos %1</translation>
     </message>
     <message>
@@ -406,36 +407,36 @@
         <translation>Erro: Caracter inválido ou g00 não requer f %1</translation>
     </message>
     <message>
-        <source>invalid character %1: '%2'</source>
-        <translation>Erro: Caracter inválido %1 ('%2')</translation>
+        <source>invalid character %1: &apos;%2&apos;</source>
+        <translation>Erro: Caracter inválido %1 (&apos;%2&apos;)</translation>
     </message>
     <message>
-        <source>invalid character %1: malformed number '%2'</source>
-        <translation>Erro: Caracter inválido %1 (número malformado '%2')</translation>
+        <source>invalid character %1: malformed number &apos;%2&apos;</source>
+        <translation>Erro: Caracter inválido %1 (número malformado &apos;%2&apos;)</translation>
     </message>
     <message>
-        <source>invalid character %1: '%2' must have exactly %3 digits</source>
-        <translation>Erro: Caracter inválido %1 ('%2' deve ter %3 dígitos)</translation>
+        <source>invalid character %1: &apos;%2&apos; must have exactly %3 digits</source>
+        <translation>Erro: Caracter inválido %1 (&apos;%2&apos; deve ter %3 dígitos)</translation>
     </message>
     <message>
         <source>invalid character %1: comment not closed</source>
         <translation>Erro: Caracter inválido %1 (comentário não fechado)</translation>
     </message>
     <message>
-        <source>invalid character %1: word '%2' repeated</source>
-        <translation>Erro: Caracter inválido %1 (comando '%2' repetido)</translation>
+        <source>invalid character %1: word &apos;%2&apos; repeated</source>
+        <translation>Erro: Caracter inválido %1 (comando &apos;%2&apos; repetido)</translation>
     </message>
     <message>
-        <source>invalid character %1: n must be the first word ('%2')</source>
-        <translation>Erro: Caracter inválido %1 (n deve ser o primeiro comando: '%2')</translation>
+        <source>invalid character %1: n must be the first word (&apos;%2&apos;)</source>
+        <translation>Erro: Caracter inválido %1 (n deve ser o primeiro comando: &apos;%2&apos;)</translation>
     </message>
     <message>
-        <source>invalid value after m03 %1: '%2' is not a block number</source>
-        <translation>Erro: Caracter inválido após m03 %1 ('%2')</translation>
+        <source>invalid value after m03 %1: &apos;%2&apos; is not a block number</source>
+        <translation>Erro: Caracter inválido após m03 %1 (&apos;%2&apos;)</translation>
     </message>
     <message>
-        <source>invalid character %1: number '%2' longer than %3 digits</source>
-        <translation>Erro: Caracter inválido %1 (número '%2' com mais de %3 dígitos)</translation>
+        <source>invalid character %1: number &apos;%2&apos; longer than %3 digits</source>
+        <translation>Erro: Caracter inválido %1 (número &apos;%2&apos; com mais de %3 dígitos)</translation>
     </message>
     <message>
         <source>program requires m02 (END) at the end</source>
@@ -458,12 +459,12 @@
         <translation>Erro: Eixo %2 %1 não existe nesta máquina</translation>
     </message>
     <message>
-        <source>block number '%2' too large %1: at most %3</source>
-        <translation>Erro: Número de bloco '%2' grande demais %1 (no máximo %3)</translation>
+        <source>block number &apos;%2&apos; too large %1: at most %3</source>
+        <translation>Erro: Número de bloco &apos;%2&apos; grande demais %1 (no máximo %3)</translation>
     </message>
     <message>
-        <source>value '%2' too large %1: at most %3 in magnitude</source>
-        <translation>Erro: Valor '%2' grande demais %1 (no máximo %3 em módulo)</translation>
+        <source>value &apos;%2&apos; too large %1: at most %3 in magnitude</source>
+        <translation>Erro: Valor &apos;%2&apos; grande demais %1 (no máximo %3 em módulo)</translation>
     </message>
     <message>
         <source>in block n=%1</source>
@@ -490,103 +491,103 @@
     <name>trilho</name>
     <message>
         <source>the servo refused the drive (a limit or an end switch)</source>
-        <translation type="unfinished" />
+        <translation>o servo recusou o acionamento (um limite ou uma chave de fim de curso)</translation>
     </message>
     <message>
         <source>the experiment was stopped by an alarm: %1</source>
-        <translation type="unfinished" />
+        <translation>o experimento foi parado por um alarme: %1</translation>
     </message>
     <message>
-        <source>the platform left the experiment's +-100 mm</source>
-        <translation type="unfinished" />
+        <source>the platform left the experiment&apos;s +-100 mm</source>
+        <translation>a plataforma saiu dos +-100 mm do experimento</translation>
     </message>
     <message>
         <source>the return to the start was stopped by an alarm: %1</source>
-        <translation type="unfinished" />
+        <translation>o retorno ao início foi parado por um alarme: %1</translation>
     </message>
     <message>
         <source>the platform did not come back within one count of its start (%1 mm away)</source>
-        <translation type="unfinished" />
+        <translation>a plataforma não voltou a menos de uma contagem do início (ficou a %1 mm)</translation>
     </message>
     <message>
         <source>%1 %2 held to %3</source>
-        <translation type="unfinished" />
+        <translation>%1 %2 limitado a %3</translation>
     </message>
     <message>
         <source>a verification move with the tuned gains was stopped by an alarm: %1</source>
-        <translation type="unfinished" />
+        <translation>um movimento de verificação com os ganhos sintonizados foi parado por um alarme: %1</translation>
     </message>
     <message>
         <source>a verification move with the tuned gains did not end in position</source>
-        <translation type="unfinished" />
+        <translation>um movimento de verificação com os ganhos sintonizados não terminou em posição</translation>
     </message>
     <message>
         <source>the experiment recorded too little</source>
-        <translation type="unfinished" />
+        <translation>o experimento registrou poucos dados</translation>
     </message>
     <message>
         <source>the model fits the held-out run at %1 % on velocity, under %2 %</source>
-        <translation type="unfinished" />
+        <translation>o modelo ajusta o ensaio de validação a %1 % na velocidade, abaixo de %2 %</translation>
     </message>
     <message>
-        <source>the relay cycle left the experiment's +-100 mm</source>
-        <translation type="unfinished" />
+        <source>the relay cycle left the experiment&apos;s +-100 mm</source>
+        <translation>o ciclo do relé saiu dos +-100 mm do experimento</translation>
     </message>
     <message>
         <source>the relay did not oscillate (%1 switches in %2 s)</source>
-        <translation type="unfinished" />
+        <translation>o relé não oscilou (%1 comutações em %2 s)</translation>
     </message>
     <message>
         <source>the relay cycle was too short to time</source>
-        <translation type="unfinished" />
+        <translation>o ciclo do relé foi curto demais para ser medido</translation>
     </message>
     <message>
         <source>the relay cycle had no amplitude</source>
-        <translation type="unfinished" />
+        <translation>o ciclo do relé não teve amplitude</translation>
     </message>
     <message>
         <source>no fault</source>
-        <translation type="unfinished" />
+        <translation>sem falha</translation>
     </message>
     <message>
         <source>following error</source>
-        <translation type="unfinished" />
+        <translation>erro de seguimento</translation>
     </message>
     <message>
         <source>left end switch</source>
-        <translation type="unfinished" />
+        <translation>fim de curso esquerdo</translation>
     </message>
     <message>
         <source>right end switch</source>
-        <translation type="unfinished" />
+        <translation>fim de curso direito</translation>
     </message>
     <message>
         <source>amplifier fault</source>
-        <translation type="unfinished" />
+        <translation>falha do amplificador</translation>
     </message>
     <message>
         <source>hard stop</source>
-        <translation type="unfinished" />
+        <translation>batente mecânico</translation>
     </message>
     <message>
         <source>soft limit</source>
-        <translation type="unfinished" />
+        <translation>limite de software</translation>
     </message>
     <message>
         <source>encoder stalled</source>
-        <translation type="unfinished" />
+        <translation>encoder parado</translation>
     </message>
     <message>
         <source>in-position timeout</source>
-        <translation type="unfinished" />
+        <translation>tempo esgotado para chegar em posição</translation>
     </message>
     <message>
         <source>counts lost</source>
-        <translation type="unfinished" />
+        <translation>contagens perdidas</translation>
     </message>
     <message>
         <source>unknown fault</source>
-        <translation type="unfinished" />
+        <translation>falha desconhecida</translation>
     </message>
 </context>
 <context>
@@ -627,7 +628,7 @@
         <translation>Salvar perfil...</translation>
     </message>
     <message>
-        <source>Run the board's calibration program, then press Start.</source>
+        <source>Run the board&apos;s calibration program, then press Start.</source>
         <translation>Rode o programa de calibração da placa e pressione Iniciar.</translation>
     </message>
     <message>
@@ -761,19 +762,19 @@
         <translation>Pasta dos programas</translation>
     </message>
     <message>
-        <source>The address '%1' is not an IP address: write a numeric address such as 127.0.0.1 (this computer only), or 0.0.0.0 for every network interface.</source>
-        <translation>O endereço '%1' não é um endereço IP: escreva um endereço numérico como 127.0.0.1 (só este computador) ou 0.0.0.0 para todas as interfaces de rede.</translation>
+        <source>The address &apos;%1&apos; is not an IP address: write a numeric address such as 127.0.0.1 (this computer only), or 0.0.0.0 for every network interface.</source>
+        <translation>O endereço &apos;%1&apos; não é um endereço IP: escreva um endereço numérico como 127.0.0.1 (só este computador) ou 0.0.0.0 para todas as interfaces de rede.</translation>
     </message>
     <message>
-        <source>The port must be a whole number from 1 to 65535 (got '%1'); Modbus TCP's own is 502, which needs administrator rights: 1502 does not.</source>
-        <translation>A porta deve ser um número inteiro de 1 a 65535 (recebido '%1'); a do Modbus TCP é 502, que exige direitos de administrador: 1502 não.</translation>
+        <source>The port must be a whole number from 1 to 65535 (got &apos;%1&apos;); Modbus TCP&apos;s own is 502, which needs administrator rights: 1502 does not.</source>
+        <translation>A porta deve ser um número inteiro de 1 a 65535 (recebido &apos;%1&apos;); a do Modbus TCP é 502, que exige direitos de administrador: 1502 não.</translation>
     </message>
     <message>
         <source>Modbus RTU needs the serial device, e.g. /dev/ttyUSB0 (or turn RTU off).</source>
         <translation>O Modbus RTU precisa do dispositivo serial, p. ex. /dev/ttyUSB0 (ou desligue o RTU).</translation>
     </message>
     <message>
-        <source>Warning: %1 can be reached from other computers. Modbus has no password and no encryption: anyone on that network can read this machine and, while Remote is on, change its gains and run programs. Use 127.0.0.1 unless the cell's network is closed.</source>
+        <source>Warning: %1 can be reached from other computers. Modbus has no password and no encryption: anyone on that network can read this machine and, while Remote is on, change its gains and run programs. Use 127.0.0.1 unless the cell&apos;s network is closed.</source>
         <translation>Atenção: %1 pode ser alcançado de outros computadores. O Modbus não tem senha nem criptografia: qualquer um nessa rede pode ler esta máquina e, com o Remoto ligado, mudar seus ganhos e executar programas. Use 127.0.0.1, a menos que a rede da célula seja fechada.</translation>
     </message>
     <message>
@@ -785,7 +786,7 @@
         <translation>Enlace DNC (Modbus)</translation>
     </message>
     <message>
-        <source>Serve the DNC link (Modbus) for the cell's supervisor</source>
+        <source>Serve the DNC link (Modbus) for the cell&apos;s supervisor</source>
         <translation>Servir o enlace DNC (Modbus) para o supervisor da célula</translation>
     </message>
     <message>
@@ -1145,7 +1146,7 @@
 <context>
     <name>trilho::ui::MachineLink</name>
     <message>
-        <source>Command not taken: the servo thread's queue is full. Press again.</source>
+        <source>Command not taken: the servo thread&apos;s queue is full. Press again.</source>
         <translation>Comando não aceito: a fila do servo está cheia. Pressione de novo.</translation>
     </message>
     <message>
@@ -1277,7 +1278,7 @@
     </message>
     <message>
         <source>Tuning &amp;workbench...</source>
-        <translation type="unfinished" />
+        <translation>&amp;Bancada de sintonia...</translation>
     </message>
     <message>
         <source>&amp;Help</source>
@@ -1320,7 +1321,7 @@
         <translation>&amp;Remoto (DNC)</translation>
     </message>
     <message>
-        <source>Allow the cell's supervisor to write and command over the DNC link (%1). Off at every start.</source>
+        <source>Allow the cell&apos;s supervisor to write and command over the DNC link (%1). Off at every start.</source>
         <translation>Permite ao supervisor da célula escrever e comandar pelo enlace DNC (%1). Desligado a cada início.</translation>
     </message>
     <message>
@@ -1365,11 +1366,11 @@
     </message>
     <message>
         <source>%1 changed on disk: reading it again.</source>
-        <translation type="unfinished" />
+        <translation>%1 mudou no disco: lendo de novo.</translation>
     </message>
     <message>
         <source>The program changed while it compiled: nothing was run. Compile or execute it again.</source>
-        <translation type="unfinished" />
+        <translation>O programa mudou durante a compilação: nada foi executado. Compile ou execute de novo.</translation>
     </message>
     <message>
         <source>Compiling %1 MB...</source>
@@ -1508,7 +1509,7 @@
         <translation>Alarme: leia-o em Alarmes e Reconheça.</translation>
     </message>
     <message>
-        <source>The rail's position is not known: Execute (or Automatic) homes it first.</source>
+        <source>The rail&apos;s position is not known: Execute (or Automatic) homes it first.</source>
         <translation>A posição do trilho não é conhecida: Executar (ou Automático) faz o referenciamento antes.</translation>
     </message>
     <message>
@@ -1552,103 +1553,103 @@
     <name>trilho::ui::ModelView</name>
     <message>
         <source>Identify or autotune the rail to see its model, its fit and its Bode plot.</source>
-        <translation type="unfinished" />
+        <translation>Identifique o trilho ou faça a sintonia automática para ver o modelo, o ajuste e o diagrama de Bode.</translation>
     </message>
     <message>
         <source>&lt;b&gt;Identified model&lt;/b&gt; (G = K / (s (tau s + 1)), acceleration limited, Coulomb friction)</source>
-        <translation type="unfinished" />
+        <translation>&lt;b&gt;Modelo identificado&lt;/b&gt; (G = K / (s (tau s + 1)), aceleração limitada, atrito de Coulomb)</translation>
     </message>
     <message>
         <source>speed gain K = %1 mm/s per code</source>
-        <translation type="unfinished" />
+        <translation>ganho de velocidade K = %1 mm/s por código</translation>
     </message>
     <message>
         <source>time constant tau = %1 ms</source>
-        <translation type="unfinished" />
+        <translation>constante de tempo tau = %1 ms</translation>
     </message>
     <message>
         <source>acceleration limit = %1 mm/s2 (mass %2 kg)</source>
-        <translation type="unfinished" />
+        <translation>limite de aceleração = %1 mm/s2 (massa %2 kg)</translation>
     </message>
     <message>
         <source>Coulomb friction = %1 mm/s2 (%2 N)</source>
-        <translation type="unfinished" />
+        <translation>atrito de Coulomb = %1 mm/s2 (%2 N)</translation>
     </message>
     <message>
         <source>fit on held-out velocity (NRMSE) = &lt;b&gt;%1 %&lt;/b&gt;; on the fitted part %2 %; on position %3 % (flattering: position integrates)</source>
-        <translation type="unfinished" />
+        <translation>ajuste na velocidade de validação (NRMSE) = &lt;b&gt;%1 %&lt;/b&gt;; na parte ajustada %2 %; na posição %3 % (otimista: a posição integra)</translation>
     </message>
     <message>
         <source>experiment: %1 s of machine time, at most %2 mm from the start, back within %3 counts</source>
-        <translation type="unfinished" />
+        <translation>experimento: %1 s de tempo de máquina, no máximo a %2 mm do início, de volta a menos de %3 contagens</translation>
     </message>
     <message>
         <source>Model refused: %1</source>
-        <translation type="unfinished" />
+        <translation>Modelo recusado: %1</translation>
     </message>
     <message>
         <source>&lt;b&gt;Margins&lt;/b&gt;: gain %1 dB at %2 rad/s; phase %3 deg at %4 rad/s</source>
-        <translation type="unfinished" />
+        <translation>&lt;b&gt;Margens&lt;/b&gt;: ganho %1 dB em %2 rad/s; fase %3 deg em %4 rad/s</translation>
     </message>
     <message>
         <source>infinite</source>
-        <translation type="unfinished" />
+        <translation>infinito</translation>
     </message>
     <message>
         <source>|L| (dB)</source>
-        <translation type="unfinished" />
+        <translation>|L| (dB)</translation>
     </message>
     <message>
         <source>phase (deg)</source>
-        <translation type="unfinished" />
+        <translation>fase (deg)</translation>
     </message>
     <message>
         <source>frequency (rad/s)</source>
-        <translation type="unfinished" />
+        <translation>frequência (rad/s)</translation>
     </message>
     <message>
-        <source>Open loop with the profile's engineered gains (Kp %1, Ki %2, Kd %3):</source>
-        <translation type="unfinished" />
+        <source>Open loop with the profile&apos;s engineered gains (Kp %1, Ki %2, Kd %3):</source>
+        <translation>Malha aberta com os ganhos da lei moderna do perfil (Kp %1, Ki %2, Kd %3):</translation>
     </message>
     <message>
         <source>&lt;b&gt;Design&lt;/b&gt; (SIMC, closed-loop time constant %1 ms, delay %2 ms): Kp %3, Ki %4, Kd %5; planning acceleration %6 mm/s2</source>
-        <translation type="unfinished" />
+        <translation>&lt;b&gt;Projeto&lt;/b&gt; (SIMC, constante de tempo em malha fechada %1 ms, atraso %2 ms): Kp %3, Ki %4, Kd %5; aceleração de planejamento %6 mm/s2</translation>
     </message>
     <message>
         <source>Prediction (on the model, before applying) against measurement</source>
-        <translation type="unfinished" />
+        <translation>Previsão (no modelo, antes de aplicar) contra medição</translation>
     </message>
     <message>
         <source>overshoot predicted (counts)</source>
-        <translation type="unfinished" />
+        <translation>sobressinal previsto (contagens)</translation>
     </message>
     <message>
         <source>measured</source>
-        <translation type="unfinished" />
+        <translation>medido</translation>
     </message>
     <message>
         <source>settling +-1 count predicted (ms)</source>
-        <translation type="unfinished" />
+        <translation>acomodação +-1 contagem prevista (ms)</translation>
     </message>
     <message>
         <source>%1 mm step</source>
-        <translation type="unfinished" />
+        <translation>degrau de %1 mm</translation>
     </message>
     <message>
         <source>%1 mm move</source>
-        <translation type="unfinished" />
+        <translation>movimento de %1 mm</translation>
     </message>
     <message>
         <source>Machine time of the whole autotune: %1 s</source>
-        <translation type="unfinished" />
+        <translation>Tempo de máquina de toda a sintonia automática: %1 s</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Autotune passed&lt;/b&gt;: the tuned gains are in the step test's boxes; Save tuned profile... keeps them in a profile.</source>
-        <translation type="unfinished" />
+        <source>&lt;b&gt;Autotune passed&lt;/b&gt;: the tuned gains are in the step test&apos;s boxes; Save tuned profile... keeps them in a profile.</source>
+        <translation>&lt;b&gt;Sintonia automática aprovada&lt;/b&gt;: os ganhos sintonizados estão nos campos do teste de degrau; Salvar perfil sintonizado... os guarda num perfil.</translation>
     </message>
     <message>
         <source>Autotune failed: %1</source>
-        <translation type="unfinished" />
+        <translation>Sintonia automática falhou: %1</translation>
     </message>
 </context>
 <context>
@@ -1811,8 +1812,8 @@
         <translation>Nenhum programa selecionado: não há arquivo onde salvar.</translation>
     </message>
     <message>
-        <source>cannot save '%1': %2</source>
-        <translation>não foi possível salvar '%1': %2</translation>
+        <source>cannot save &apos;%1&apos;: %2</source>
+        <translation>não foi possível salvar &apos;%1&apos;: %2</translation>
     </message>
 </context>
 <context>
@@ -1873,67 +1874,67 @@
     <name>trilho::ui::RunOverlay</name>
     <message>
         <source>Rise time 10-90 % (ms)</source>
-        <translation type="unfinished" />
+        <translation>Tempo de subida 10-90 % (ms)</translation>
     </message>
     <message>
         <source>Settling time 2 % (ms)</source>
-        <translation type="unfinished" />
+        <translation>Tempo de acomodação 2 % (ms)</translation>
     </message>
     <message>
         <source>Settling time +-1 count (ms)</source>
-        <translation type="unfinished" />
+        <translation>Tempo de acomodação +-1 contagem (ms)</translation>
     </message>
     <message>
         <source>Overshoot (%)</source>
-        <translation type="unfinished" />
+        <translation>Sobressinal (%)</translation>
     </message>
     <message>
         <source>Peak (mm)</source>
-        <translation type="unfinished" />
+        <translation>Pico (mm)</translation>
     </message>
     <message>
         <source>Peak time (ms)</source>
-        <translation type="unfinished" />
+        <translation>Tempo de pico (ms)</translation>
     </message>
     <message>
         <source>Steady-state error (counts)</source>
-        <translation type="unfinished" />
+        <translation>Erro em regime permanente (contagens)</translation>
     </message>
     <message>
         <source>IAE (mm.s)</source>
-        <translation type="unfinished" />
+        <translation>IAE (mm.s)</translation>
     </message>
     <message>
         <source>ITAE (mm.s2)</source>
-        <translation type="unfinished" />
+        <translation>ITAE (mm.s2)</translation>
     </message>
     <message>
         <source>ISE (mm2.s)</source>
-        <translation type="unfinished" />
+        <translation>ISE (mm2.s)</translation>
     </message>
     <message>
         <source>Following error max (mm)</source>
-        <translation type="unfinished" />
+        <translation>Erro de seguimento máx. (mm)</translation>
     </message>
     <message>
         <source>Following error RMS (mm)</source>
-        <translation type="unfinished" />
+        <translation>Erro de seguimento RMS (mm)</translation>
     </message>
     <message>
         <source>Time saturated (ms)</source>
-        <translation type="unfinished" />
+        <translation>Tempo saturado (ms)</translation>
     </message>
     <message>
         <source>no step</source>
-        <translation type="unfinished" />
+        <translation>sem degrau</translation>
     </message>
     <message>
         <source>not reached</source>
-        <translation type="unfinished" />
+        <translation>não atingido</translation>
     </message>
     <message>
         <source>time from the step (s)</source>
-        <translation type="unfinished" />
+        <translation>tempo desde o degrau (s)</translation>
     </message>
     <message>
         <source>displacement (mm)</source>
@@ -1945,7 +1946,7 @@
     </message>
     <message>
         <source>no</source>
-        <translation type="unfinished" />
+        <translation>não</translation>
     </message>
 </context>
 <context>
@@ -2053,7 +2054,7 @@
         <translation>Escola Politécnica</translation>
     </message>
     <message>
-        <source>Numerical Control for the robot's rail</source>
+        <source>Numerical Control for the robot&apos;s rail</source>
         <translation>Comando Numérico para trilho de comando do robô</translation>
     </message>
     <message>
@@ -2085,31 +2086,31 @@
     <name>trilho::ui::TermsView</name>
     <message>
         <source>What if: the same run with other gains</source>
-        <translation type="unfinished" />
+        <translation>E se: o mesmo ensaio com outros ganhos</translation>
     </message>
     <message>
         <source>Kp</source>
-        <translation type="unfinished" />
+        <translation>Kp</translation>
     </message>
     <message>
         <source>Ki</source>
-        <translation type="unfinished" />
+        <translation>Ki</translation>
     </message>
     <message>
         <source>Kff</source>
-        <translation type="unfinished" />
+        <translation>Kff</translation>
     </message>
     <message>
         <source>Kd</source>
-        <translation type="unfinished" />
+        <translation>Kd</translation>
     </message>
     <message>
         <source>Re-simulate</source>
-        <translation type="unfinished" />
+        <translation>Simular de novo</translation>
     </message>
     <message>
         <source>Runs the recorded test again from the same start with these gains and adds it to the overlay</source>
-        <translation type="unfinished" />
+        <translation>Executa de novo o ensaio gravado a partir do mesmo início com estes ganhos e o sobrepõe aos outros</translation>
     </message>
     <message>
         <source>time (s)</source>
@@ -2117,138 +2118,138 @@
     </message>
     <message>
         <source>PWM (%)</source>
-        <translation type="unfinished" />
+        <translation>PWM (%)</translation>
     </message>
     <message>
         <source>DAC codes from 128</source>
-        <translation type="unfinished" />
+        <translation>códigos DAC a partir de 128</translation>
     </message>
     <message>
         <source>This run has no loop terms (a trace of a program): record a step test to see them.</source>
-        <translation type="unfinished" />
+        <translation>Este ensaio não tem termos da malha (é o registro de um programa): grave um teste de degrau para vê-los.</translation>
     </message>
     <message>
         <source>Run a step test, then choose its column in the table.</source>
-        <translation type="unfinished" />
+        <translation>Execute um teste de degrau e escolha a coluna dele na tabela.</translation>
     </message>
     <message>
         <source>P</source>
-        <translation type="unfinished" />
+        <translation>P</translation>
     </message>
     <message>
         <source>I</source>
-        <translation type="unfinished" />
+        <translation>I</translation>
     </message>
     <message>
         <source>D</source>
-        <translation type="unfinished" />
+        <translation>D</translation>
     </message>
     <message>
         <source>FF</source>
-        <translation type="unfinished" />
+        <translation>FF</translation>
     </message>
     <message>
         <source>sum before the clamp</source>
-        <translation type="unfinished" />
+        <translation>soma antes da limitação</translation>
     </message>
     <message>
         <source>drive written</source>
-        <translation type="unfinished" />
+        <translation>acionamento escrito</translation>
     </message>
     <message>
         <source>&lt;b&gt;Tick %1&lt;/b&gt;, t = %2 s, period T = %3 ms</source>
-        <translation type="unfinished" />
+        <translation>&lt;b&gt;Ciclo %1&lt;/b&gt;, t = %2 s, período T = %3 ms</translation>
     </message>
     <message>
         <source>e[k] = r[k] - y[k] = %1 - %2 = &lt;b&gt;%3 mm&lt;/b&gt; (%4 counts)</source>
-        <translation type="unfinished" />
+        <translation>e[k] = r[k] - y[k] = %1 - %2 = &lt;b&gt;%3 mm&lt;/b&gt; (%4 contagens)</translation>
     </message>
     <message>
         <source>P = Kp e = %1 x %2 = %3 %; I = %4 %; FF = Kff v_ref = %5 %</source>
-        <translation type="unfinished" />
+        <translation>P = Kp e = %1 x %2 = %3 %; I = %4 %; FF = Kff v_ref = %5 %</translation>
     </message>
     <message>
         <source>u = P + I + FF = &lt;b&gt;%1 %&lt;/b&gt; -&gt; clamp -&gt; %2 % -&gt; PWM written %3 %</source>
-        <translation type="unfinished" />
+        <translation>u = P + I + FF = &lt;b&gt;%1 %&lt;/b&gt; -&gt; limitação -&gt; %2 % -&gt; PWM escrito %3 %</translation>
     </message>
     <message>
         <source>The 1996 law: V[k] = floor(128 + Kp e[k] + (Kd / T) (e[k] - e[k-1]) + Ki sum(e) + 0.5), T in ms, clamped by M = F / 100</source>
-        <translation type="unfinished" />
+        <translation>A lei de 1996: V[k] = floor(128 + Kp e[k] + (Kd / T) (e[k] - e[k-1]) + Ki sum(e) + 0.5), T em ms, limitado por M = F / 100</translation>
     </message>
     <message>
         <source>Kp e = %1 x %2 = %3; (Kd / T) (e[k] - e[k-1]) = (%4 / %5) x (%6 - %7) = %8; Ki sum(e) = %9</source>
-        <translation type="unfinished" />
+        <translation>Kp e = %1 x %2 = %3; (Kd / T) (e[k] - e[k-1]) = (%4 / %5) x (%6 - %7) = %8; Ki sum(e) = %9</translation>
     </message>
     <message>
         <source>V = floor(128 + %1 + 0.5) = %2 -&gt; written &lt;b&gt;%3&lt;/b&gt;%4</source>
-        <translation type="unfinished" />
+        <translation>V = floor(128 + %1 + 0.5) = %2 -&gt; escrito &lt;b&gt;%3&lt;/b&gt;%4</translation>
     </message>
     <message>
         <source> (clamped: saturated)</source>
-        <translation type="unfinished" />
+        <translation> (limitado: saturado)</translation>
     </message>
     <message>
         <source>P = Kp e = %1 x %2 = %3 codes</source>
-        <translation type="unfinished" />
+        <translation>P = Kp e = %1 x %2 = %3 códigos</translation>
     </message>
     <message>
         <source>I[k] = I[k-1] + Ki T e[k] = %1 codes (Ki = %2; held while the output is saturated: anti-windup)</source>
-        <translation type="unfinished" />
+        <translation>I[k] = I[k-1] + Ki T e[k] = %1 códigos (Ki = %2; congelado enquanto a saída está saturada: anti-windup)</translation>
     </message>
     <message>
         <source>D = -Kd dy/dt (on the measurement, filtered: no kick when the setpoint jumps) = -%1 x %2 = %3 codes</source>
-        <translation type="unfinished" />
+        <translation>D = -Kd dy/dt (sobre a medição, filtrado: sem pico quando o setpoint salta) = -%1 x %2 = %3 códigos</translation>
     </message>
     <message>
         <source>FF = (v_ref + tau a_ref) x 127 / v_max + Kd v_ref = %1 codes (v_ref = %2 mm/s)</source>
-        <translation type="unfinished" />
+        <translation>FF = (v_ref + tau a_ref) x 127 / v_max + Kd v_ref = %1 códigos (v_ref = %2 mm/s)</translation>
     </message>
     <message>
         <source>u = P + I + D + FF = &lt;b&gt;%1 codes&lt;/b&gt; -&gt; clamp and slew limit -&gt; %2 -&gt; DAC = round(128 + u + carried fraction) = &lt;b&gt;%3&lt;/b&gt;%4</source>
-        <translation type="unfinished" />
+        <translation>u = P + I + D + FF = &lt;b&gt;%1 códigos&lt;/b&gt; -&gt; limitação e limite de variação -&gt; %2 -&gt; DAC = round(128 + u + fração acumulada) = &lt;b&gt;%3&lt;/b&gt;%4</translation>
     </message>
     <message>
         <source> (saturated)</source>
-        <translation type="unfinished" />
+        <translation> (saturado)</translation>
     </message>
 </context>
 <context>
     <name>trilho::ui::WorkbenchWindow</name>
     <message>
         <source>Tuning workbench: %1</source>
-        <translation type="unfinished" />
+        <translation>Bancada de sintonia: %1</translation>
     </message>
     <message>
         <source>Step test (simulated plant, virtual time)</source>
-        <translation type="unfinished" />
+        <translation>Teste de degrau (planta simulada, tempo virtual)</translation>
     </message>
     <message>
         <source>Axis</source>
-        <translation type="unfinished" />
+        <translation>Eixo</translation>
     </message>
     <message>
         <source>Amplitude (mm)</source>
-        <translation type="unfinished" />
+        <translation>Amplitude do degrau (mm)</translation>
     </message>
     <message>
         <source>The sign is the direction</source>
-        <translation type="unfinished" />
+        <translation>O sinal indica o sentido</translation>
     </message>
     <message>
         <source>Speed (% of rapid)</source>
-        <translation type="unfinished" />
+        <translation>Velocidade (% da máxima)</translation>
     </message>
     <message>
         <source>100 %: a step at the rapid speed; below: a ramp</source>
-        <translation type="unfinished" />
+        <translation>100 %: um degrau na velocidade máxima; abaixo disso: uma rampa</translation>
     </message>
     <message>
         <source>Control law</source>
-        <translation type="unfinished" />
+        <translation>Lei de controle</translation>
     </message>
     <message>
         <source>Engineered</source>
-        <translation type="unfinished" />
+        <translation>Moderna</translation>
     </message>
     <message>
         <source>Classic (1996)</source>
@@ -2256,195 +2257,195 @@
     </message>
     <message>
         <source>Period (ms)</source>
-        <translation type="unfinished" />
+        <translation>Período (ms)</translation>
     </message>
     <message>
         <source>The 1996 law ran at 10 ms: its gains are per tick, so at 1 ms they act ten times harder (a lesson, not a setting)</source>
-        <translation type="unfinished" />
+        <translation>A lei de 1996 rodava a 10 ms: seus ganhos são por ciclo, então a 1 ms agem dez vezes mais forte (uma lição, não um ajuste)</translation>
     </message>
     <message>
         <source>Kp</source>
-        <translation type="unfinished" />
+        <translation>Kp</translation>
     </message>
     <message>
         <source>Ki</source>
-        <translation type="unfinished" />
+        <translation>Ki</translation>
     </message>
     <message>
         <source>Kd</source>
-        <translation type="unfinished" />
+        <translation>Kd</translation>
     </message>
     <message>
         <source>Kff</source>
-        <translation type="unfinished" />
+        <translation>Kff</translation>
     </message>
     <message>
         <source>Mass factor</source>
-        <translation type="unfinished" />
+        <translation>Fator de massa</translation>
     </message>
     <message>
-        <source>The plant's moving mass times this; the loop is not told</source>
-        <translation type="unfinished" />
+        <source>The plant&apos;s moving mass times this; the loop is not told</source>
+        <translation>A massa móvel da planta vezes este fator; a malha não é informada</translation>
     </message>
     <message>
         <source>Seed</source>
-        <translation type="unfinished" />
+        <translation>Semente</translation>
     </message>
     <message>
         <source>Run step</source>
-        <translation type="unfinished" />
+        <translation>Executar degrau</translation>
     </message>
     <message>
         <source>1996 law against engineered</source>
-        <translation type="unfinished" />
+        <translation>Lei de 1996 contra a moderna</translation>
     </message>
     <message>
         <source>The same move with the 1996 law at its 10 ms and its gains, and with the engineered law</source>
-        <translation type="unfinished" />
+        <translation>O mesmo movimento com a lei de 1996, com seus 10 ms e seus ganhos, e com a lei moderna</translation>
     </message>
     <message>
         <source>Identification and autotune</source>
-        <translation type="unfinished" />
+        <translation>Identificação e sintonia automática</translation>
     </message>
     <message>
         <source>Identify the plant</source>
-        <translation type="unfinished" />
+        <translation>Identificar a planta</translation>
     </message>
     <message>
         <source>At most 3 s of machine time, within 100 mm, back to the start within a count</source>
-        <translation type="unfinished" />
+        <translation>No máximo 3 s de tempo de máquina, dentro de 100 mm, de volta ao início a menos de uma contagem</translation>
     </message>
     <message>
         <source>Autotune</source>
-        <translation type="unfinished" />
+        <translation>Sintonia automática</translation>
     </message>
     <message>
         <source>Identify, design (SIMC), predict, then verify with a 10 mm step and a 1000 mm move</source>
-        <translation type="unfinished" />
+        <translation>Identifica, projeta (SIMC), prevê e depois verifica com um degrau de 10 mm e um movimento de 1000 mm</translation>
     </message>
     <message>
         <source>Save tuned profile...</source>
-        <translation type="unfinished" />
+        <translation>Salvar perfil sintonizado...</translation>
     </message>
     <message>
         <source>Runs</source>
-        <translation type="unfinished" />
+        <translation>Ensaios</translation>
     </message>
     <message>
         <source>Save run...</source>
-        <translation type="unfinished" />
+        <translation>Salvar ensaio...</translation>
     </message>
     <message>
         <source>Load run...</source>
-        <translation type="unfinished" />
+        <translation>Carregar ensaio...</translation>
     </message>
     <message>
         <source>Remove</source>
-        <translation type="unfinished" />
+        <translation>Remover</translation>
     </message>
     <message>
         <source>Clear</source>
-        <translation type="unfinished" />
+        <translation>Limpar</translation>
     </message>
     <message>
         <source>Responses</source>
-        <translation type="unfinished" />
+        <translation>Respostas</translation>
     </message>
     <message>
         <source>P, I, D terms</source>
-        <translation type="unfinished" />
+        <translation>Termos P, I, D</translation>
     </message>
     <message>
         <source>Model</source>
-        <translation type="unfinished" />
+        <translation>Modelo</translation>
     </message>
     <message>
         <source>1996</source>
-        <translation type="unfinished" />
+        <translation>1996</translation>
     </message>
     <message>
         <source>engineered</source>
-        <translation type="unfinished" />
+        <translation>moderna</translation>
     </message>
     <message>
         <source>%1 %2, %3 mm at %4 ms, mass x%5</source>
-        <translation type="unfinished" />
+        <translation>%1 %2, %3 mm a %4 ms, massa x%5</translation>
     </message>
     <message>
         <source>Running in virtual time...</source>
-        <translation type="unfinished" />
+        <translation>Executando em tempo virtual...</translation>
     </message>
     <message>
         <source>Run %1 done.</source>
-        <translation type="unfinished" />
+        <translation>Ensaio %1 concluído.</translation>
     </message>
     <message>
         <source>Run %1 stopped: %2</source>
-        <translation type="unfinished" />
+        <translation>Ensaio %1 parado: %2</translation>
     </message>
     <message>
         <source>what if (from run %1): %2</source>
-        <translation type="unfinished" />
+        <translation>e se (do ensaio %1): %2</translation>
     </message>
     <message>
         <source>Identified: fit %1 % on held-out velocity.</source>
-        <translation type="unfinished" />
+        <translation>Identificado: ajuste de %1 % na velocidade de validação.</translation>
     </message>
     <message>
         <source>Model refused: %1</source>
-        <translation type="unfinished" />
+        <translation>Modelo recusado: %1</translation>
     </message>
     <message>
         <source>Autotune passed in %1 s of machine time.</source>
-        <translation type="unfinished" />
+        <translation>Sintonia automática aprovada em %1 s de tempo de máquina.</translation>
     </message>
     <message>
         <source>Autotune failed: %1</source>
-        <translation type="unfinished" />
+        <translation>Sintonia automática falhou: %1</translation>
     </message>
     <message>
         <source>%1: the run has no samples</source>
-        <translation type="unfinished" />
+        <translation>%1: o ensaio não tem amostras</translation>
     </message>
     <message>
         <source>No run is selected.</source>
-        <translation type="unfinished" />
+        <translation>Nenhum ensaio selecionado.</translation>
     </message>
     <message>
         <source>Save run</source>
-        <translation type="unfinished" />
+        <translation>Salvar ensaio</translation>
     </message>
     <message>
         <source>Run records (*.csv)</source>
-        <translation type="unfinished" />
+        <translation>Registros de ensaio (*.csv)</translation>
     </message>
     <message>
         <source>Saved %1 and %2.</source>
-        <translation type="unfinished" />
+        <translation>Salvos %1 e %2.</translation>
     </message>
     <message>
         <source>Load run</source>
-        <translation type="unfinished" />
+        <translation>Carregar ensaio</translation>
     </message>
     <message>
         <source>Run records and traces (*.csv)</source>
-        <translation type="unfinished" />
+        <translation>Registros de ensaio e traços (*.csv)</translation>
     </message>
     <message>
         <source>Save tuned profile</source>
-        <translation type="unfinished" />
+        <translation>Salvar perfil sintonizado</translation>
     </message>
     <message>
         <source>Machine profiles (*.json)</source>
         <translation>Perfis de máquina (*.json)</translation>
     </message>
     <message>
-        <source>cannot save '%1': %2</source>
-        <translation>não foi possível salvar '%1': %2</translation>
+        <source>cannot save &apos;%1&apos;: %2</source>
+        <translation>não foi possível salvar &apos;%1&apos;: %2</translation>
     </message>
     <message>
         <source>Saved %1: trilho-cli run --machine %1 uses it.</source>
-        <translation type="unfinished" />
+        <translation>Salvo %1: trilho-cli run --machine %1 o usa.</translation>
     </message>
 </context>
 <context>
@@ -2530,7 +2531,7 @@
         <translation>Início de ciclo</translation>
     </message>
     <message>
-        <source>Run %1? %2The machine travels at full speed from (%3, %4) mm to the program's start, then runs it.</source>
+        <source>Run %1? %2The machine travels at full speed from (%3, %4) mm to the program&apos;s start, then runs it.</source>
         <translation>Executar %1? %2A máquina vai em velocidade máxima de (%3, %4) mm até o início do programa, e então o executa.</translation>
     </message>
     <message>
@@ -2714,7 +2715,7 @@
         <translation>&amp;Remoto (DNC)</translation>
     </message>
     <message>
-        <source>Allow the cell's supervisor to write and command over the DNC link (%1). Off at every start.</source>
+        <source>Allow the cell&apos;s supervisor to write and command over the DNC link (%1). Off at every start.</source>
         <translation>Permite ao supervisor da célula escrever e comandar pelo enlace DNC (%1). Desligado a cada início.</translation>
     </message>
     <message>
@@ -2727,11 +2728,11 @@
     </message>
     <message>
         <source>Tuning &amp;workbench...</source>
-        <translation type="unfinished" />
+        <translation>&amp;Bancada de sintonia...</translation>
     </message>
     <message>
         <source>The plotter has no encoder: there is no response to measure</source>
-        <translation type="unfinished" />
+        <translation>O plotter não tem encoder: não há resposta a medir</translation>
     </message>
     <message>
         <source>&amp;Help</source>
