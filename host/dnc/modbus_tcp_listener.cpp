@@ -1,21 +1,51 @@
 #include "host/dnc/modbus_tcp_listener.h"
 
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <sys/socket.h>
+#include <unistd.h>
 #include <QScopeGuard>
+#include <QSocketNotifier>
 #include <QTcpServer>
-#include <QTcpSocket>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 
 #include "core/dnc/mbap_frame.h"
 
 namespace trilho::dnc {
 
+/// The listening socket: it hands over each accepted descriptor, with no QTcpSocket made.
+class ModbusTcpListener::Server : public QTcpServer {
+  public:
+    explicit Server(ModbusTcpListener* owner) : QTcpServer(owner), owner_(owner) {}
+
+  protected:
+    void incomingConnection(qintptr fd) override { owner_->accept(fd); }
+
+  private:
+    ModbusTcpListener* owner_;
+};
+
 namespace {
-QString nameOf(const QTcpSocket* s) {
+/// The peer of fd as "address:port" (IPv4-mapped addresses as IPv4) and its address.
+QString peerOf(int fd, QHostAddress* address) {
+    sockaddr_storage ss{};
+    socklen_t len = sizeof ss;
+    if (::getpeername(fd, reinterpret_cast<sockaddr*>(&ss), &len) != 0) return QStringLiteral("?");
+    QHostAddress a(reinterpret_cast<const sockaddr*>(&ss));
+    quint16 port = 0;
+    if (ss.ss_family == AF_INET)
+        port = ntohs(reinterpret_cast<const sockaddr_in*>(&ss)->sin_port);
+    else if (ss.ss_family == AF_INET6)
+        port = ntohs(reinterpret_cast<const sockaddr_in6*>(&ss)->sin6_port);
     bool v4 = false;
-    const quint32 a = s->peerAddress().toIPv4Address(&v4);
-    return QStringLiteral("%1:%2")
-        .arg(v4 ? QHostAddress(a).toString() : s->peerAddress().toString())
-        .arg(s->peerPort());
+    const quint32 ip4 = a.toIPv4Address(&v4);
+    if (v4) a = QHostAddress(ip4);
+    if (address) *address = a;
+    return QStringLiteral("%1:%2").arg(a.toString()).arg(port);
 }
 }  // namespace
 
@@ -29,21 +59,19 @@ ModbusTcpListener::ModbusTcpListener(Handler handler, TcpLimits limits, QObject*
 }
 
 ModbusTcpListener::~ModbusTcpListener() {
-    // The sockets go before the server they came from.
     const auto all = connections_;
     connections_.clear();
-    for (auto it = all.begin(); it != all.end(); ++it) {
-        it.key()->disconnect(this);
-        it.key()->abort();
-        delete it.key();
+    for (const auto& c : all) {
+        delete c->readable;
+        delete c->writable;
+        ::close(c->fd);
     }
 }
 
 bool ModbusTcpListener::listen(const QHostAddress& host, quint16 port, QString* error) {
-    server_ = new QTcpServer(this);
-    // The kernel's queue of connections not yet accepted; accept() takes them all at once.
+    server_ = new Server(this);
+    // The kernel's queue of connections not yet accepted.
     server_->setMaxPendingConnections(limits_.maxClients + 16);
-    connect(server_, &QTcpServer::newConnection, this, &ModbusTcpListener::accept);
     if (!server_->listen(host, port)) {
         if (error) *error = server_->errorString();
         delete server_;
@@ -61,76 +89,99 @@ quint16 ModbusTcpListener::port() const {
 qint64 ModbusTcpListener::bufferedBytes() const {
     qint64 n = 0;
     for (const auto& c : connections_)
-        n += c->in.size() + c->socket->bytesAvailable() + c->socket->bytesToWrite();
+        n += c->in.size() + c->out.size();
     return n;
 }
 
-void ModbusTcpListener::accept() {
-    while (QTcpSocket* s = server_->nextPendingConnection()) {
-        const QString name = nameOf(s);
-        const bool supervisor =
-            !limits_.supervisor.isNull() &&
-            limits_.supervisor.isEqual(s->peerAddress(), QHostAddress::ConvertV4MappedToIPv4);
-        // The last slot waits for the supervisor when one is named: idle or greedy clients can
-        // take all the others, never that one.
-        const int limit =
-            limits_.supervisor.isNull() || supervisor ? limits_.maxClients : limits_.maxClients - 1;
-        if (connections_.size() >= limit) {
-            if (!refusing_)
-                emit historyLine(QStringLiteral("DNC: connection from %1 refused: %2 clients "
-                                                "already connected (the limit%3)")
-                                     .arg(name)
-                                     .arg(connections_.size())
-                                     .arg(limit < limits_.maxClients
-                                              ? QStringLiteral("; the last slot is the "
-                                                               "supervisor's, %1")
-                                                    .arg(limits_.supervisor.toString())
-                                              : QString()));
-            refusing_ = true;
-            s->abort();
-            s->deleteLater();
-            continue;
-        }
-        refusing_ = false;
-        auto c = std::make_shared<Connection>();
-        c->socket = s;
-        c->name = name;
-        c->heard.start();
-        // Qt reads ahead into its own buffer without bound unless told: one frame and a
-        // header is enough to answer in turn; the rest waits in the kernel (TCP's window).
-        s->setReadBufferSize(static_cast<qint64>(kMaxMbapFrameBytes + kMbapHeaderBytes));
-        connections_.insert(s, c);
-        connect(s, &QTcpSocket::readyRead, this, [this, s] {
-            if (auto it = connections_.find(s); it != connections_.end()) markReady(**it);
-        });
-        connect(s, &QTcpSocket::bytesWritten, this, [this, s] {
-            auto it = connections_.find(s);
-            if (it == connections_.end() || !(*it)->stalled.isValid()) return;
-            if (s->bytesToWrite() <= limits_.maxPendingBytes / 2) markReady(**it);
-        });
-        connect(s, &QTcpSocket::disconnected, this, [this, s] { drop(s, QString()); });
-        emit clientsChanged();
-        if (s->bytesAvailable() > 0) markReady(*c);
+void ModbusTcpListener::accept(qintptr descriptor) {
+    const int fd = static_cast<int>(descriptor);
+    QHostAddress peer;
+    const QString name = peerOf(fd, &peer);
+    const bool supervisor = !limits_.supervisor.isNull() &&
+                            limits_.supervisor.isEqual(peer, QHostAddress::ConvertV4MappedToIPv4);
+    // The last slot waits for the supervisor when one is named: idle or greedy clients can
+    // take all the others, never that one.
+    const int limit =
+        limits_.supervisor.isNull() || supervisor ? limits_.maxClients : limits_.maxClients - 1;
+    if (connections_.size() >= limit) {
+        if (!refusing_)
+            emit historyLine(
+                QStringLiteral("DNC: connection from %1 refused: %2 clients already connected "
+                               "(the limit%3)")
+                    .arg(name)
+                    .arg(connections_.size())
+                    .arg(limit < limits_.maxClients
+                             ? QStringLiteral("; the last slot is the supervisor's, %1")
+                                   .arg(limits_.supervisor.toString())
+                             : QString()));
+        refusing_ = true;
+        ::close(fd);
+        return;
     }
+    refusing_ = false;
+    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK);
+    const int one = 1;
+    ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);  // an answer is one segment
+    auto c = std::make_shared<Connection>();
+    c->fd = fd;
+    c->name = name;
+    c->heard.start();
+    c->readable = new QSocketNotifier(fd, QSocketNotifier::Read, this);
+    c->writable = new QSocketNotifier(fd, QSocketNotifier::Write, this);
+    c->writable->setEnabled(false);
+    connections_.insert(fd, c);
+    connect(c->readable, &QSocketNotifier::activated, this, [this, fd] {
+        if (auto it = connections_.find(fd); it != connections_.end()) markReady(**it);
+    });
+    connect(c->writable, &QSocketNotifier::activated, this, [this, fd] {
+        auto it = connections_.find(fd);
+        if (it == connections_.end()) return;
+        const std::shared_ptr<Connection> conn = *it;
+        if (!flush(*conn)) return;
+        // Answers taken by the kernel: a connection held back for them may read again.
+        if (conn->stalled.isValid() && conn->out.size() <= limits_.maxPendingBytes / 2)
+            markReady(*conn);
+    });
+    emit clientsChanged();
 }
 
-void ModbusTcpListener::drop(QTcpSocket* socket, const QString& why) {
-    auto it = connections_.find(socket);
+void ModbusTcpListener::drop(int fd, const QString& why) {
+    auto it = connections_.find(fd);
     if (it == connections_.end()) return;
-    const QString name = (*it)->name;
+    const std::shared_ptr<Connection> c = *it;
     connections_.erase(it);
-    socket->disconnect(this);
+    c->readable->setEnabled(false);
+    c->writable->setEnabled(false);
+    c->readable->deleteLater();  // it may be the one whose signal is running
+    c->writable->deleteLater();
+    ::close(c->fd);
     if (!why.isEmpty())
-        emit historyLine(QStringLiteral("DNC: connection from %1 closed: %2").arg(name, why));
-    socket->abort();
-    socket->deleteLater();
+        emit historyLine(QStringLiteral("DNC: connection from %1 closed: %2").arg(c->name, why));
     emit clientsChanged();
+}
+
+bool ModbusTcpListener::flush(Connection& c) {
+    while (!c.out.isEmpty()) {
+        const ssize_t sent = ::send(c.fd, c.out.constData(), static_cast<std::size_t>(c.out.size()),
+                                    MSG_DONTWAIT | MSG_NOSIGNAL);
+        if (sent > 0) {
+            c.out.remove(0, static_cast<qsizetype>(sent));
+            continue;
+        }
+        if (sent < 0 && errno == EINTR) continue;
+        if (sent < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) break;
+        drop(c.fd, QString());  // the peer is gone (reset, closed): nothing to say
+        return false;
+    }
+    c.writable->setEnabled(!c.out.isEmpty());
+    return true;
 }
 
 void ModbusTcpListener::markReady(Connection& c) {
     if (!c.queued) {
         c.queued = true;
-        ready_.push_back(c.socket);
+        c.readable->setEnabled(false);  // level-triggered: quiet until its turn has been served
+        ready_.push_back(c.fd);
     }
     // Alone with a request and not inside a turn: answer now (a turn is due to nobody else),
     // saving the event loop's round before the answer. Otherwise take turns.
@@ -145,39 +196,59 @@ void ModbusTcpListener::serveTurn() {
     // One round: every connection waiting gets its turn once, in order; those with more go
     // to the back, and the event loop runs before the next round.
     for (std::size_t n = ready_.size(); n > 0 && !ready_.empty(); --n) {
-        QTcpSocket* s = ready_.front();
+        const int fd = ready_.front();
         ready_.pop_front();
-        const auto it = connections_.find(s);
+        const auto it = connections_.find(fd);
         if (it == connections_.end()) continue;
         const std::shared_ptr<Connection> c = *it;  // serve() may drop it
         c->queued = false;
-        if (serve(*c) && connections_.contains(s)) {
+        const bool more = serve(*c);
+        if (!connections_.contains(fd)) continue;
+        if (more) {
             c->queued = true;
-            ready_.push_back(s);
+            ready_.push_back(fd);
+        } else {
+            // Waiting for its next request (or, stalled, for its answers to go): the kernel
+            // says when. A stalled connection is not read until its answers are taken.
+            c->readable->setEnabled(!c->stalled.isValid());
         }
     }
     if (!ready_.empty()) turn_.start();
 }
 
 bool ModbusTcpListener::serve(Connection& c) {
-    QTcpSocket* s = c.socket;
+    const int fd = c.fd;
+    bool eof = false;
     for (int k = 0; k < limits_.framesPerTurn; ++k) {
-        if (s->bytesToWrite() > limits_.maxPendingBytes) {
+        if (c.out.size() > limits_.maxPendingBytes) {
             // The client does not read its answers: its requests wait (TCP holds it back)
-            // until it does; bytesWritten brings it back, checkTimeouts closes it in the end.
+            // until it does; the write notifier brings it back, checkTimeouts closes it.
             if (!c.stalled.isValid()) c.stalled.start();
             return false;
         }
         c.stalled.invalidate();
-        const auto room = static_cast<qint64>(kMaxMbapFrameBytes) - c.in.size();
-        if (room > 0 && s->bytesAvailable() > 0) c.in += s->read(room);
+        // At most one frame read ahead: the rest waits in the kernel.
+        const auto room = static_cast<qint64>(kMaxMbapFrameBytes + kMbapHeaderBytes) - c.in.size();
+        if (room > 0 && !eof) {
+            const qsizetype had = c.in.size();
+            c.in.resize(had + room);
+            ssize_t got;
+            do {
+                got = ::recv(fd, c.in.data() + had, static_cast<std::size_t>(room), MSG_DONTWAIT);
+            } while (got < 0 && errno == EINTR);
+            c.in.resize(had + (got > 0 ? got : 0));
+            if (got == 0) eof = true;
+            if (got < 0 && errno != EAGAIN && errno != EWOULDBLOCK) eof = true;
+        }
         const MbapFrame f = scanMbap(reinterpret_cast<const std::uint8_t*>(c.in.constData()),
                                      static_cast<std::size_t>(c.in.size()));
         switch (f.scan) {
             case MbapScan::NeedMore:
-                return false;  // readyRead brings the rest
+                if (!flush(c)) return false;
+                if (eof) drop(fd, QString());  // the client closed: nothing more will come
+                return false;
             case MbapScan::Close:
-                drop(s, QString::fromStdString(f.reason));
+                drop(fd, QString::fromStdString(f.reason));
                 return false;
             case MbapScan::SkipFrame:
                 emit refusal(c.name, QStringLiteral("DNC: a frame from %1 dropped unanswered: %2")
@@ -190,25 +261,28 @@ bool ModbusTcpListener::serve(Connection& c) {
                 const std::string out =
                     mbapAnswer(f, reinterpret_cast<const std::uint8_t*>(answer.constData()),
                                static_cast<std::size_t>(answer.size()));
-                s->write(out.data(), static_cast<qint64>(out.size()));
+                c.out.append(out.data(), static_cast<qsizetype>(out.size()));
                 break;
             }
         }
         c.in.remove(0, static_cast<qsizetype>(f.frameBytes));
         c.heard.restart();
-        if (!connections_.contains(s)) return false;
+        if (!connections_.contains(fd)) return false;
     }
-    s->flush();  // this turn's answers to the kernel now, not after another loop iteration
-    if (s->bytesAvailable() > 0) return true;
-    return scanMbap(reinterpret_cast<const std::uint8_t*>(c.in.constData()),
-                    static_cast<std::size_t>(c.in.size()))
-               .scan != MbapScan::NeedMore;
+    // This turn's answers to the kernel now, in one send.
+    if (!flush(c)) return false;
+    if (eof && c.in.isEmpty()) {
+        drop(fd, QString());
+        return false;
+    }
+    // More may be waiting: in what was read, or in the kernel (the next turn's recv says).
+    return true;
 }
 
 void ModbusTcpListener::checkTimeouts() {
     if (limits_.idleTimeoutS <= 0.0) return;
     const auto ms = static_cast<qint64>(std::llround(limits_.idleTimeoutS * 1000.0));
-    QList<QPair<QTcpSocket*, QString>> closing;
+    QList<QPair<int, QString>> closing;
     for (auto it = connections_.begin(); it != connections_.end(); ++it) {
         const Connection& c = **it;
         if (c.stalled.isValid() && c.stalled.elapsed() > ms)
@@ -220,8 +294,8 @@ void ModbusTcpListener::checkTimeouts() {
                 {it.key(),
                  QStringLiteral("silent for %1 s (the idle timeout)").arg(limits_.idleTimeoutS)});
     }
-    for (const auto& [socket, why] : closing)
-        drop(socket, why);
+    for (const auto& [fd, why] : closing)
+        drop(fd, why);
 }
 
 }  // namespace trilho::dnc
