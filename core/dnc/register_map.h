@@ -46,7 +46,8 @@ constexpr std::uint16_t kSetpoint = 26;        ///< float32 mm
 constexpr std::uint16_t kFollowingError = 28;  ///< float32 mm, setpoint - position
 constexpr std::uint16_t kSpeed = 30;           ///< float32 mm/s, measured
 constexpr std::uint16_t kFeedOverride = 32;    ///< float32, factor 0..1.5
-constexpr std::uint16_t kCount = 34;
+constexpr std::uint16_t kSamplePeriodUs = 34;  ///< the active law's period, us (10000 classic)
+constexpr std::uint16_t kCount = 35;
 }  // namespace in
 
 /// Holding registers (functions 03, 06, 16): settings, commands, the download block.
@@ -77,6 +78,7 @@ enum class Command : std::uint16_t {
     SelectAutomatic = 6,  ///< homes to the centre switch
     SelectManual = 7,
     CommitDownload = 8,  ///< argument: program number (= hold::kDownloadNumber); compile, save
+    SetLaw = 9,          ///< argument: 0 classic, 1 engineered; the law comes with its period
     Count_
 };
 
