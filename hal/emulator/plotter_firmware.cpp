@@ -50,14 +50,20 @@ void PlotterFirmware::handle(const plotter_wire::Decoded& p) {
             return;
         case Command::Line:
         case Command::Move:
-            // 1500 bytes of RAM, 5 a point: the 301st point has nowhere to go. The seed does
-            // not say what its firmware did then; this one answers NEXT and drops the point.
-            if (object_.size() < plotter_wire::kMaxObjectPoints) {
-                object_.push_back(p);
-                ++stats_.pointsStored;
-            } else {
+            // 1500 bytes of RAM, 5 a point (seed 001 3.1.3.1): the 301st point has nowhere to
+            // go. Its firmware's code is not in the annexes (C and G hold the two line
+            // algorithms only); of table 7's answers, NEXT says "stored, send the next" and
+            // RESEND "not taken, send it again", so a point it cannot store is answered RESEND
+            // and not stored: the loss is never silent, and a host that sends it anyway fails
+            // after its resends instead of plotting a drawing without it (issue 22 item 11).
+            if (object_.size() >= plotter_wire::kMaxObjectPoints) {
                 ++stats_.pointsRefused;
+                ++stats_.resendsSent;
+                answer(static_cast<std::uint8_t>(Reply::Resend));
+                return;
             }
+            object_.push_back(p);
+            ++stats_.pointsStored;
             answer(static_cast<std::uint8_t>(Reply::Next));
             return;
         case Command::End:
