@@ -650,12 +650,12 @@
         <translation>corrección %1 %</translation>
     </message>
     <message>
-        <source>classic law</source>
-        <translation>ley clásica</translation>
+        <source>classic law, %1 ms</source>
+        <translation>ley clásica, %1 ms</translation>
     </message>
     <message>
-        <source>engineered law</source>
-        <translation>ley moderna</translation>
+        <source>engineered law, %1 ms</source>
+        <translation>ley moderna, %1 ms</translation>
     </message>
     <message>
         <source>Cycle %1:%2</source>

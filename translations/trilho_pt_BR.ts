@@ -650,12 +650,12 @@
         <translation>correção %1 %</translation>
     </message>
     <message>
-        <source>classic law</source>
-        <translation>lei clássica</translation>
+        <source>classic law, %1 ms</source>
+        <translation>lei clássica, %1 ms</translation>
     </message>
     <message>
-        <source>engineered law</source>
-        <translation>lei moderna</translation>
+        <source>engineered law, %1 ms</source>
+        <translation>lei moderna, %1 ms</translation>
     </message>
     <message>
         <source>Cycle %1:%2</source>
