@@ -204,6 +204,7 @@ QMap<QString, KeyKind> keysOf(MachineKind kind) {
     add(QStringLiteral("limits.hasY"), KeyKind::Bool);
     if (kind == MachineKind::Rail) add(QStringLiteral("loop.law"), KeyKind::Law);
     if (kind == MachineKind::DcTable) add(QStringLiteral("dcTable.law"), KeyKind::Law);
+    if (kind == MachineKind::Plotter) add(QStringLiteral("plotter.line"), KeyKind::String);
     MachineProfile p = MachineProfile::forKind(kind);
     forEachNumber(p, [&](const char* key, double&, double, double) {
         add(QString::fromLatin1(key), KeyKind::Number);
@@ -468,6 +469,13 @@ ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin
             return result;
         }
     }
+    const QJsonValue line = lookup(root, QStringLiteral("plotter.line"));
+    if (!line.isUndefined() && !applyPlotterLineName(p.plotter, line.toString().toStdString())) {
+        result.error =
+            QStringLiteral("%1: plotter.line: must be \"bresenham\" or \"float\" (got %2)")
+                .arg(origin, jsonText(line));
+        return result;
+    }
     QString error;
     forEachNumber(p, [&](const char* key, double& value, double lo, double hi) {
         if (!error.isEmpty()) return;
@@ -523,6 +531,9 @@ QByteArray machineProfileToJson(const MachineProfile& profile) {
         insert(root, {QStringLiteral("loop"), QStringLiteral("law")}, 0, lawName(p.loop.law));
     if (p.kind == MachineKind::DcTable)
         insert(root, {QStringLiteral("dcTable"), QStringLiteral("law")}, 0, lawName(p.dcTable.law));
+    if (p.kind == MachineKind::Plotter)
+        insert(root, {QStringLiteral("plotter"), QStringLiteral("line")}, 0,
+               QString::fromLatin1(plotterLineName(p.plotter.line).data()));
     forEachNumber(p, [&](const char* key, double& value, double, double) {
         insert(root, QString::fromLatin1(key).split(QLatin1Char('.')), 0, value);
     });

@@ -38,7 +38,7 @@ void PlotterLinkMotion::beginMove(XyPoint target, XyMove kind, double speedFract
     // A MOVE starts a new object; so does a new speed.
     if (!draw || speed != speed_) host_.endObject();
     if (speed != speed_) {
-        host_.speed(static_cast<std::uint16_t>(std::max(1, speed)));
+        host_.speed(plotter_wire::stepsPerSToSpeed(std::max(1, speed)));
         speed_ = speed;
     }
     host_.addPoint(

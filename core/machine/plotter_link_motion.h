@@ -25,6 +25,8 @@ class PlotterLinkMotion final : public SerialLinkMotion {
     void hold() override { host_.endObject(); }
 
     const PlotterHostStats& stats() const { return host_.stats(); }
+    /// Each packet sent and each byte received (the communication log, issue 22 item 12).
+    void setMonitor(PlotterMonitor monitor) { host_.setMonitor(std::move(monitor)); }
     std::uint64_t packetsSent() const override { return host_.stats().packetsSent; }
     std::uint64_t resends() const override { return host_.stats().resends; }
     std::uint64_t timeouts() const override { return host_.stats().timeouts; }

@@ -85,7 +85,8 @@ void PlotterHost::endObject() {
     // END waits for the plotting: twice the estimated time at the slower of the configured and
     // the last SPEED, plus the answer timeout.
     const double rate = std::max(
-        1.0, lastSpeed_ ? std::min<double>(config_.stepsPerS, *lastSpeed_) : config_.stepsPerS);
+        1.0, lastSpeed_ ? std::min(config_.stepsPerS, plotter_wire::speedToStepsPerS(*lastSpeed_))
+                        : config_.stepsPerS);
     const Item end{plotter_wire::encode(Command::End), plotter_wire::expectedReply(Command::End),
                    config_.answerTimeoutS + 2.0 * openSteps_ / rate,
                    static_cast<int>(objects_.size()) - 1, true};
@@ -94,6 +95,17 @@ void PlotterHost::endObject() {
 }
 
 void PlotterHost::receive(std::uint8_t byte, double nowS) {
+    if (monitor_) {
+        PlotterLogEntry e;
+        e.timeS = nowS;
+        e.sent = false;
+        e.answer = byte;
+        e.answeredCommand = inFlight_ ? current_.packet[0] : 0;
+        e.object = inFlight_ ? current_.object : -1;
+        e.objectEnd = !failed_ && inFlight_ && current_.endsObject && byte == current_.expect;
+        e.objectSeconds = e.objectEnd ? nowS - objectStartS_ : 0.0;
+        monitor_(e);
+    }
     if (failed_ || !inFlight_) {
         if (owes(byte)) {
             --owed_[byte];
@@ -197,6 +209,19 @@ void PlotterHost::poll(double nowS) {
 }
 
 void PlotterHost::send(double nowS) {
+    if (monitor_) {
+        PlotterLogEntry e;
+        e.timeS = nowS;
+        e.packet = current_.packet;
+        e.object = current_.object;
+        // An object's time runs from its first packet (a retried object starts again).
+        if (current_.object >= 0 && current_.object != loggedObject_) {
+            e.objectStart = true;
+            loggedObject_ = current_.object;
+            objectStartS_ = nowS;
+        }
+        monitor_(e);
+    }
     out_.insert(out_.end(), current_.packet.begin(), current_.packet.end());
     ++stats_.packetsSent;
     ++copies_;
@@ -225,6 +250,7 @@ void PlotterHost::fail(std::string why) {
 
 void PlotterHost::retry() {
     if (!failed_) return;
+    loggedObject_ = -1;  // the unfinished object's time starts again with its first packet
     failed_ = false;
     unknown_ = false;
     error_.clear();
@@ -276,6 +302,7 @@ void PlotterHost::clear() {
     objectEnds_.clear();
     objectsDone_ = objectCount_ = 0;
     open_ = false;
+    loggedObject_ = -1;
     if (stored)
         push(Command::End, 0, 0,
              config_.answerTimeoutS + 2.0 * openSteps_ / std::max(1.0, config_.stepsPerS));

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "core/protocol/plotter_log.h"
 #include "core/protocol/plotter_protocol.h"
 
 namespace trilho {
@@ -75,6 +76,10 @@ class PlotterHost {
     bool objectOpen() const { return open_; }
     /// Points (MOVE and LINE packets, the seam included) an object holds at most.
     static std::size_t maxObjectPoints();
+
+    /// Called with each packet sent and each byte received (the communication log of seed 001
+    /// figure 48, issue 22 item 12); on the caller's thread, from send() and receive().
+    void setMonitor(PlotterMonitor monitor) { monitor_ = std::move(monitor); }
 
     // ---- the line ----
     void receive(std::uint8_t byte, double nowS);
@@ -152,6 +157,9 @@ class PlotterHost {
     bool open_ = false;                  ///< the last object has no END yet
     double openSteps_ = 0.0;             ///< its longest-axis steps so far (END's deadline)
     std::optional<std::uint16_t> lastSpeed_;
+    PlotterMonitor monitor_;
+    int loggedObject_ = -1;      ///< the last object whose first packet was logged
+    double objectStartS_ = 0.0;  ///< when that first packet went, s
 };
 
 }  // namespace trilho

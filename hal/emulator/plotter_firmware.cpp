@@ -11,7 +11,13 @@ PlotterFirmware::PlotterFirmware(const MachineProfile& profile, std::uint64_t se
     : profile_(profile),
       plotter_(profile, seed),
       motion_(profile, plotter_),
-      speed_(static_cast<std::uint16_t>(profile.plotter.defaultSpeedStepsS)) {}
+      speed_(plotter_wire::stepsPerSToSpeed(profile.plotter.defaultSpeedStepsS)) {}
+
+double PlotterFirmware::speedFraction() const {
+    // SPEED is the step clock's half period in microseconds (plotter_wire::speedToStepsPerS).
+    return std::min(1.0, plotter_wire::speedToStepsPerS(speed_) /
+                             std::max(1.0, profile_.plotter.maxStepRateHz));
+}
 
 void PlotterFirmware::answer(std::uint8_t byte) {
     out_.push_back(byte);
@@ -39,7 +45,6 @@ void PlotterFirmware::receive(std::uint8_t byte, double nowS) {
 }
 
 void PlotterFirmware::handle(const plotter_wire::Decoded& p) {
-    const double maxRate = std::max(1.0, profile_.plotter.maxStepRateHz);
     switch (p.command) {
         case Command::Request:
             answer(static_cast<std::uint8_t>(Reply::RequestOk));
@@ -94,14 +99,13 @@ void PlotterFirmware::handle(const plotter_wire::Decoded& p) {
                                                            : 0.0;
             busy_ = Busy::Jogging;
             pendingAnswer_ = static_cast<std::uint8_t>(p.command);
-            motion_.beginMove({at.x + dx, at.y + dy}, XyMove::Travel, speed_ / maxRate);
+            motion_.beginMove({at.x + dx, at.y + dy}, XyMove::Travel, speedFraction());
             return;
         }
     }
 }
 
 void PlotterFirmware::startNextPoint() {
-    const double maxRate = std::max(1.0, profile_.plotter.maxStepRateHz);
     if (next_ >= object_.size()) {
         busy_ = Busy::None;
         object_.clear();
@@ -113,7 +117,7 @@ void PlotterFirmware::startNextPoint() {
     plotted_.push_back({p.command == Command::Line, p.x, p.y});
     const XyPoint target = motion_.toMm({p.x, p.y});
     motion_.beginMove(target, p.command == Command::Line ? XyMove::Draw : XyMove::Travel,
-                      std::min(1.0, speed_ / maxRate));
+                      speedFraction());
 }
 
 void PlotterFirmware::step(double dtS, double nowS) {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -28,6 +29,8 @@ struct ProgramRun {
     std::uint64_t refused = 0;
     std::vector<PlottedPoint> plotted;
     std::vector<std::size_t> objectSizes;  ///< MOVE and LINE packets of each object sent
+    double seconds = 0.0;                  ///< Cycle start to the program's end
+    std::uint64_t events = 0;              ///< step events the board sent its motors
 };
 
 /// The packets the host sent, counted per object from the bytes on the wire.
@@ -46,8 +49,8 @@ struct WireCounter {
     }
 };
 
-ProgramRun runProgram(const std::string& text) {
-    const MachineProfile profile = MachineProfile::xyPlotter();
+ProgramRun runProgram(const std::string& text,
+                      const MachineProfile& profile = MachineProfile::xyPlotter()) {
     CompileOptions o;
     o.machine = profile.limits;
     auto program = std::make_shared<Program>(compile(text, o));
@@ -80,6 +83,8 @@ ProgramRun runProgram(const std::string& text) {
     const std::uint64_t packets0 = link->packetsSent();
     const std::uint64_t objects0 = device.stats().objectsPlotted;
     const std::size_t plotted0 = device.plotted().size();
+    const std::uint64_t events0 = device.motion().events();
+    const double t0 = t;
     counter.sizes.clear();
     if (!c.loadProgram(program) || !c.start(0)) return r;
     for (int i = 0; i < 10000000; ++i) {
@@ -97,6 +102,8 @@ ProgramRun runProgram(const std::string& text) {
     for (std::size_t i = plotted0; i < device.plotted().size(); ++i)
         r.plotted.push_back(device.plotted()[i]);
     r.objectSizes = counter.sizes;
+    r.seconds = t - t0;
+    r.events = device.motion().events() - events0;
     return r;
 }
 
@@ -217,4 +224,54 @@ TEST(PlotterObjects, Seed001_3_1_3_1_TheHostNeverSendsPoint301) {
     ASSERT_EQ(counter.sizes.size(), 4u);
     for (std::size_t n : counter.sizes)
         EXPECT_LE(n, PlotterHost::maxObjectPoints());
+}
+
+// Seed 001 figure 48 settles SPEED's unit: its object (1404 step events) took 3.123 s at SPEED
+// 1000. SPEED is the step clock's half period in microseconds, 500 events a second at 1000
+// (as steps a second it took 1.5 s here). Issue 22 item 13.
+TEST(PlotterObjects, Seed001_Fig48_SpeedIsTheStepClocksHalfPeriodInMicroseconds) {
+    EXPECT_EQ(plotter_wire::speedToStepsPerS(1000), 500.0);
+    EXPECT_EQ(plotter_wire::stepsPerSToSpeed(500.0), 1000);
+    EXPECT_EQ(plotter_wire::stepsPerSToSpeed(450.0), 1111);
+    const MachineProfile profile = MachineProfile::xyPlotter();
+    PlotterFirmware device(profile, 1);
+    PlotterHost host;
+    test::VirtualWire down(57600), up(57600);
+    host.request();
+    host.speed(1000);
+    host.plot({{false, 644, 314},
+               {true, 644, 454},
+               {true, 884, 454},
+               {true, 884, 314},
+               {true, 644, 314}});
+    double t = 0.0;
+    for (; t < 60.0 && !host.idle() && !host.failed(); t += PlotterFirmware::kTickS) {
+        host.poll(t);
+        down.send(host.takeOutput(), t);
+        down.deliver(t, [&](std::uint8_t b, double at) { device.receive(b, at); });
+        device.step(PlotterFirmware::kTickS, t);
+        up.send(device.takeOutput(), t);
+        up.deliver(t, [&](std::uint8_t b, double at) { host.receive(b, at); });
+    }
+    ASSERT_TRUE(host.idle()) << host.error();
+    EXPECT_EQ(device.motion().events(), 1404u);
+    EXPECT_GT(t, 2.8);  // 1404 events at 500 a second, the exchange and the pen
+    EXPECT_LT(t, 3.3);  // the seed: 3.123 s
+    std::printf("figure 48's object at SPEED 1000: %.3f s (seed 001: 3.123 s)\n", t);
+}
+
+// Seed 001 annex G: the float line plots the text too, from the profile (plotter.line). It
+// stops one step short of each segment, and the next starts where the head is, so it sends
+// about as many events as Bresenham.
+TEST(PlotterObjects, Seed001_AnnexG_TheFloatLinePlotsFromTheProfile) {
+    MachineProfile floatProfile = MachineProfile::xyPlotter();
+    floatProfile.plotter.line = PlotterLine::Float;
+    const std::string text = readFile("plotter_texto.G");
+    const ProgramRun b = runProgram(text);
+    const ProgramRun f = runProgram(text, floatProfile);
+    ASSERT_TRUE(b.finished);
+    ASSERT_TRUE(f.finished);
+    EXPECT_EQ(f.objects, b.objects);
+    EXPECT_EQ(f.plotted, b.plotted);  // the same points; the steps between differ
+    EXPECT_NEAR(static_cast<double>(f.events), static_cast<double>(b.events), 100.0);
 }
