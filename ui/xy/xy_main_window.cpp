@@ -3,6 +3,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDir>
 #include <QDockWidget>
 #include <QEvent>
 #include <QFileDialog>
@@ -16,6 +17,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPlainTextEdit>
+#include <QPointer>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QScrollBar>
@@ -36,12 +38,15 @@
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/source_file.h"
 #include "core/machine/event_text.h"
+#include "core/machine/plotter_link_motion.h"
 #include "core/machine/serial_link_motion.h"
 #include "core/machine/xy_event_text.h"
 #include "host/common/data_paths.h"
 #include "ui/confirm_box.h"
 #include "ui/xy/dc_table_panel.h"
+#include "ui/xy/plotter_comm_log.h"
 #include "ui/xy/plotter_panel.h"
+#include "ui/xy/polygon_dialog.h"
 #include "ui/xy/work_area_view.h"
 #include "ui/xy/xy_plots.h"
 
@@ -259,6 +264,21 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     home_->setShortcutContext(Qt::ApplicationShortcut);
     auto* options = menuBar()->addMenu(tr("&Options"));
     options->addAction(tr("&Connection..."), this, &XyMainWindow::chooseConnection);
+    if (plotter_) {  // seed 001's Java host: its communication log and polygons from points
+        auto* dock = new QDockWidget(this);
+        dock->setObjectName(QStringLiteral("plotterCommLogDock"));
+        dock->setWidget(commLog_ = new PlotterCommLog(dock));
+        addDockWidget(Qt::BottomDockWidgetArea, dock);
+        dock->hide();
+        options->addAction(dock->toggleViewAction());
+        auto* polygon = new QAction(tr("Polygon from &points..."), this);
+        polygon->setObjectName(QStringLiteral("polygonAction"));
+        file->insertAction(file->actions().value(1), polygon);  // after Open program...
+        connect(polygon, &QAction::triggered, this, [this] {
+            PolygonDialog d(this);
+            if (d.exec() == QDialog::Accepted) plotPolygon(d.program());
+        });
+    }
 
     linkLabel_ = new QLabel(this);
     linkLabel_->setObjectName(QStringLiteral("xyLink"));
@@ -444,8 +464,27 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
         plotter_->setControlsEnabled(status.state == ControllerState::Manual && !status.motionBusy);
 }
 
+bool XyMainWindow::plotPolygon(const QString& program) {
+    const QString path = QDir(QDir::tempPath()).filePath(QStringLiteral("trilho-poligono.G"));
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) || f.write(program.toUtf8()) < 0) {
+        addHistory(tr("Cannot write %1: %2").arg(path, f.errorString()), true);
+        return false;
+    }
+    f.close();
+    if (!selectProgram(path)) return false;
+    startProgram(true);
+    return true;
+}
+
 void XyMainWindow::setDeviceLink(SerialLinkMotion* link, const QString& port, int baud) {
     deviceLink_ = link;
+    if (auto* plotterLink = dynamic_cast<PlotterLinkMotion*>(link); plotterLink && commLog_) {
+        QPointer<PlotterCommLog> log(commLog_);
+        plotterLink->setMonitor([log](const PlotterLogEntry& e) {
+            if (log) log->addEntry(e);
+        });
+    }
     port_ = port;
     baud_ = baud;
     showLinkState();

@@ -24,6 +24,7 @@ class WorkAreaView;
 class XyPlots;
 class DcTablePanel;
 class PlotterPanel;
+class PlotterCommLog;
 
 class XyMainWindow : public QMainWindow {
     Q_OBJECT
@@ -45,6 +46,9 @@ class XyMainWindow : public QMainWindow {
     /// The machine is a board on this serial port (its link's state in the status bar); none:
     /// the simulated machine.
     void setDeviceLink(SerialLinkMotion* link, const QString& port, int baud);
+    /// Runs a program made from typed points (seed 001 3.1.4, PolygonDialog): selects it and
+    /// starts it as Start does (asking first); false when it cannot be saved or compiled.
+    bool plotPolygon(const QString& program);
     QLabel* linkLabel() const { return linkLabel_; }
 
     WorkAreaView* workArea() const { return view_; }
@@ -100,6 +104,7 @@ class XyMainWindow : public QMainWindow {
     QString programName_;
     QLabel* linkLabel_;
     SerialLinkMotion* deviceLink_ = nullptr;
+    PlotterCommLog* commLog_ = nullptr;  ///< the plotter's communication log (seed 001)
     QString port_;
     int baud_ = 0;
     XyStatus last_;
