@@ -96,6 +96,11 @@ class PlotterToolsTest : public QObject {
         const double s = last.section(QLatin1Char(' '), 2, 2).toDouble();
         QVERIFY2(s > 2.5 && s < 4.0, qPrintable(last));
         QVERIFY(log.lines() > 10);
+        if (qEnvironmentVariableIsSet("TRILHO_SCREENSHOT_DIR")) {  // to look at, not asserted
+            log.resize(900, 420);
+            log.grab().save(qEnvironmentVariable("TRILHO_SCREENSHOT_DIR") +
+                            QStringLiteral("/plotter_comm_log.png"));
+        }
         log.clearButton()->click();
         QCOMPARE(log.lines(), 0);
         QCOMPARE(log.lastObjectLabel()->text(), QStringLiteral("No object sent yet"));
@@ -126,6 +131,9 @@ class PlotterToolsTest : public QObject {
         d.buttons()->button(QDialogButtonBox::Ok)->click();
         QVERIFY(d.isVisible());
         QVERIFY(d.errorLabel()->text().startsWith(QStringLiteral("line 2:")));
+        if (qEnvironmentVariableIsSet("TRILHO_SCREENSHOT_DIR"))
+            d.grab().save(qEnvironmentVariable("TRILHO_SCREENSHOT_DIR") +
+                          QStringLiteral("/polygon_dialog.png"));
         d.pointsEdit()->setPlainText(QStringLiteral("10 10\n60 10\n30 40\n"));
         d.buttons()->button(QDialogButtonBox::Ok)->click();
         QCOMPARE(d.result(), int(QDialog::Accepted));
