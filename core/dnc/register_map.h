@@ -46,8 +46,9 @@ constexpr std::uint16_t kSetpoint = 26;        ///< float32 mm
 constexpr std::uint16_t kFollowingError = 28;  ///< float32 mm, setpoint - position
 constexpr std::uint16_t kSpeed = 30;           ///< float32 mm/s, measured
 constexpr std::uint16_t kFeedOverride = 32;    ///< float32, factor 0..1.5
-constexpr std::uint16_t kSamplePeriodUs = 34;  ///< the active law's period, us (10000 classic)
-constexpr std::uint16_t kCount = 35;
+// 34-43 are the XY machines' (branch xy-frame, issue 19): the period comes after them.
+constexpr std::uint16_t kSamplePeriodUs = 44;  ///< the active law's period, us (10000 classic)
+constexpr std::uint16_t kCount = 45;
 }  // namespace in
 
 /// Holding registers (functions 03, 06, 16): settings, commands, the download block.

@@ -16,7 +16,7 @@ import time
 IN_VERSION, IN_STATE, IN_MODE, IN_HOMED, IN_PAUSE, IN_PROGRAM, IN_FINISHED = 0, 2, 3, 4, 5, 8, 9
 IN_ALARMS, IN_ALARMS_ACK, IN_LAST_ALARM, IN_ALARM_SEQ = 10, 12, 14, 15
 IN_CMD_SEQ, IN_CMD_RESULT, IN_REMOTE, IN_DIAG_ERRORS, IN_DIAG_CODE, IN_DIAG_LINE = 16, 17, 18, 19, 20, 21
-IN_LAW, IN_POSITION, IN_SETPOINT, IN_SPEED, IN_COUNT = 23, 24, 26, 30, 35
+IN_LAW, IN_POSITION, IN_SETPOINT, IN_SPEED, IN_COUNT = 23, 24, 26, 30, 45
 H_KP, H_FEED, H_COMMAND, H_DL_NUMBER, H_DL_LENGTH, H_DL_DATA, H_COUNT = 0, 6, 8, 16, 17, 18, 18 + 4096
 MANUAL, AUTO_IDLE, HOMING, RUNNING, WAITING, PAUSED, ALARM = 0, 1, 2, 3, 4, 5, 6
 START, HOLD, CONTINUE, STOP, ACK, AUTO, MANUAL_CMD, COMMIT = 1, 2, 3, 4, 5, 6, 7, 8
@@ -636,8 +636,8 @@ def run_frames(cli):
             # Function 16 whose byte count disagrees with its quantity: exception 03.
             r = exchange(port, mbap(struct.pack(">BHHB", 16, 0, 2, 2) + b"\0\0"))
             check(r is not None and r[7:9] == bytes([0x90, 3]), f"a malformed write: exception 03 ({r!r})")
-            r = exchange(port, mbap(struct.pack(">BHH", 4, 30, 10)))
-            check(r is not None and r[7:9] == bytes([0x84, 2]), "input registers 30..39: exception 02")
+            r = exchange(port, mbap(struct.pack(">BHH", 4, IN_COUNT - 4, 10)))
+            check(r is not None and r[7:9] == bytes([0x84, 2]), "input registers past the map: exception 02")
             r = exchange(port, mbap(struct.pack(">BHH", 4, 0, 200)))
             check(r is not None and r[7:9] == bytes([0x84, 3]), "200 registers at once: exception 03")
             r = exchange(port, mbap(struct.pack(">BHH", 4, 0, 0)))

@@ -111,7 +111,7 @@ TEST(DncRegisters, BadValuesRefused) {
 }
 
 // Seed 000 (`Amostragem` Interval = 10): the law is chosen over the link with its period, which
-// input 34 says (issue 22 item 1).
+// input 44 says (issue 22 item 1).
 TEST(DncRegisters, Seed000_AmostragemInterval10_SetLawAndThePeriodRegister) {
     const auto setLaw = static_cast<std::uint16_t>(Command::SetLaw);
     EXPECT_EQ(check(hold::kCommand, {setLaw, 0, 1}), Exception::None);
