@@ -467,6 +467,10 @@
         <translation>valor &apos;%2&apos; demasiado grande %1: como máximo %3 en valor absoluto</translation>
     </message>
     <message>
+        <source>in line n=%1</source>
+        <translation>en la línea n=%1</translation>
+    </message>
+    <message>
         <source>in block n=%1</source>
         <translation>en el bloque n=%1</translation>
     </message>
@@ -904,12 +908,12 @@
         <translation>corrección %1 %</translation>
     </message>
     <message>
-        <source>classic law</source>
-        <translation>ley clásica</translation>
+        <source>classic law, %1 ms</source>
+        <translation>ley clásica, %1 ms</translation>
     </message>
     <message>
-        <source>engineered law</source>
-        <translation>ley moderna</translation>
+        <source>engineered law, %1 ms</source>
+        <translation>ley moderna, %1 ms</translation>
     </message>
     <message>
         <source>Cycle %1:%2</source>
@@ -1700,6 +1704,41 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::PlotterCommLog</name>
+    <message>
+        <source>Sending object %1</source>
+        <translation>Enviando objeto %1</translation>
+    </message>
+    <message>
+        <source>Sending: %1</source>
+        <translation>Enviando: %1</translation>
+    </message>
+    <message>
+        <source>Received: %1</source>
+        <translation>Recibido: %1</translation>
+    </message>
+    <message>
+        <source>Time: %1 s</source>
+        <translation>Tiempo: %1 s</translation>
+    </message>
+    <message>
+        <source>Communication log</source>
+        <translation>Registro de comunicación</translation>
+    </message>
+    <message>
+        <source>Clear log</source>
+        <translation>Limpiar registro</translation>
+    </message>
+    <message>
+        <source>No object sent yet</source>
+        <translation>Ningún objeto enviado todavía</translation>
+    </message>
+    <message>
+        <source>Last object: %1 s</source>
+        <translation>Último objeto: %1 s</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::PlotterPanel</name>
     <message>
         <source>Plotter</source>
@@ -1740,6 +1779,41 @@
     <message>
         <source>Object: %1 points (at most 300 per object)</source>
         <translation>Objeto: %1 puntos (como máximo 300 por objeto)</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::PolygonDialog</name>
+    <message>
+        <source>line %1: expected two numbers, x and y in mm (got &apos;%2&apos;)</source>
+        <translation>línea %1: se esperaban dos números, x e y en mm (llegó &apos;%2&apos;)</translation>
+    </message>
+    <message>
+        <source>a polygon needs at least three points (got %1)</source>
+        <translation>un polígono necesita al menos tres puntos (llegaron %1)</translation>
+    </message>
+    <message>
+        <source>Polygon from points</source>
+        <translation>Polígono por puntos</translation>
+    </message>
+    <message>
+        <source>One point a line: x y in mm (e.g. 20 20)</source>
+        <translation>Un punto por línea: x y en mm (p. ej. 20 20)</translation>
+    </message>
+    <message>
+        <source>Plot</source>
+        <translation>Plotear</translation>
+    </message>
+    <message>
+        <source>Vertices (x y, mm):</source>
+        <translation>Vértices (x y, mm):</translation>
+    </message>
+    <message>
+        <source>Feed:</source>
+        <translation>Avance:</translation>
+    </message>
+    <message>
+        <source>The polygon is closed back to its first point.</source>
+        <translation>El polígono se cierra volviendo al primer punto.</translation>
     </message>
 </context>
 <context>
@@ -2563,6 +2637,10 @@
         <translation>Línea %1</translation>
     </message>
     <message>
+        <source>Cannot write %1: %2</source>
+        <translation>No se puede escribir %1: %2</translation>
+    </message>
+    <message>
         <source>Simulated machine</source>
         <translation>Máquina simulada</translation>
     </message>
@@ -2705,6 +2783,10 @@
     <message>
         <source>Ca&amp;libration...</source>
         <translation>Ca&amp;libración...</translation>
+    </message>
+    <message>
+        <source>Polygon from &amp;points...</source>
+        <translation>Polígono por &amp;puntos...</translation>
     </message>
     <message>
         <source>&amp;DNC link...</source>

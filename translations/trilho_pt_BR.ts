@@ -467,6 +467,10 @@
         <translation>Erro: Valor &apos;%2&apos; grande demais %1 (no máximo %3 em módulo)</translation>
     </message>
     <message>
+        <source>in line n=%1</source>
+        <translation>na linha %1</translation>
+    </message>
+    <message>
         <source>in block n=%1</source>
         <translation>no bloco n=%1</translation>
     </message>
@@ -904,12 +908,12 @@
         <translation>correção %1 %</translation>
     </message>
     <message>
-        <source>classic law</source>
-        <translation>lei clássica</translation>
+        <source>classic law, %1 ms</source>
+        <translation>lei clássica, %1 ms</translation>
     </message>
     <message>
-        <source>engineered law</source>
-        <translation>lei moderna</translation>
+        <source>engineered law, %1 ms</source>
+        <translation>lei moderna, %1 ms</translation>
     </message>
     <message>
         <source>Cycle %1:%2</source>
@@ -1700,6 +1704,41 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::PlotterCommLog</name>
+    <message>
+        <source>Sending object %1</source>
+        <translation>Enviando objeto %1</translation>
+    </message>
+    <message>
+        <source>Sending: %1</source>
+        <translation>Enviando: %1</translation>
+    </message>
+    <message>
+        <source>Received: %1</source>
+        <translation>Recebido: %1</translation>
+    </message>
+    <message>
+        <source>Time: %1 s</source>
+        <translation>Tempo: %1 s</translation>
+    </message>
+    <message>
+        <source>Communication log</source>
+        <translation>Log de comunicação</translation>
+    </message>
+    <message>
+        <source>Clear log</source>
+        <translation>Limpar log</translation>
+    </message>
+    <message>
+        <source>No object sent yet</source>
+        <translation>Nenhum objeto enviado ainda</translation>
+    </message>
+    <message>
+        <source>Last object: %1 s</source>
+        <translation>Último objeto: %1 s</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::PlotterPanel</name>
     <message>
         <source>Plotter</source>
@@ -1740,6 +1779,41 @@
     <message>
         <source>Object: %1 points (at most 300 per object)</source>
         <translation>Objeto: %1 pontos (no máximo 300 por objeto)</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::PolygonDialog</name>
+    <message>
+        <source>line %1: expected two numbers, x and y in mm (got &apos;%2&apos;)</source>
+        <translation>linha %1: esperados dois números, x e y em mm (veio &apos;%2&apos;)</translation>
+    </message>
+    <message>
+        <source>a polygon needs at least three points (got %1)</source>
+        <translation>um polígono precisa de pelo menos três pontos (vieram %1)</translation>
+    </message>
+    <message>
+        <source>Polygon from points</source>
+        <translation>Polígono por pontos</translation>
+    </message>
+    <message>
+        <source>One point a line: x y in mm (e.g. 20 20)</source>
+        <translation>Um ponto por linha: x y em mm (ex.: 20 20)</translation>
+    </message>
+    <message>
+        <source>Plot</source>
+        <translation>Plotar</translation>
+    </message>
+    <message>
+        <source>Vertices (x y, mm):</source>
+        <translation>Vértices (x y, mm):</translation>
+    </message>
+    <message>
+        <source>Feed:</source>
+        <translation>Avanço:</translation>
+    </message>
+    <message>
+        <source>The polygon is closed back to its first point.</source>
+        <translation>O polígono é fechado de volta ao primeiro ponto.</translation>
     </message>
 </context>
 <context>
@@ -2563,6 +2637,10 @@
         <translation>Linha %1</translation>
     </message>
     <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Não foi possível gravar %1: %2</translation>
+    </message>
+    <message>
         <source>Simulated machine</source>
         <translation>Máquina simulada</translation>
     </message>
@@ -2705,6 +2783,10 @@
     <message>
         <source>Ca&amp;libration...</source>
         <translation>Ca&amp;libração...</translation>
+    </message>
+    <message>
+        <source>Polygon from &amp;points...</source>
+        <translation>Polígono por &amp;pontos...</translation>
     </message>
     <message>
         <source>&amp;DNC link...</source>

@@ -131,7 +131,10 @@ void DroPanel::showStatus(const ControllerStatus& s) {
     modal << tr("F %1 %").arg(s.modal.feed, 0, 'f', 0);
     modal << tr("override %1 %").arg(std::lround(s.feedOverride * 100.0));
     // Which law drives the rail is said on the main screen, not only in Options.
-    modal << (s.law == LoopLaw::Classic ? tr("classic law") : tr("engineered law"));
+    // The period comes with the law (issue 22 item 1) and is said beside it.
+    const int periodMs = static_cast<int>(std::lround(s.samplePeriodS * 1000.0));
+    modal << (s.law == LoopLaw::Classic ? tr("classic law, %1 ms").arg(periodMs)
+                                        : tr("engineered law, %1 ms").arg(periodMs));
     modal_->setText(modal.join(QStringLiteral("   ")));
 
     const int seconds = static_cast<int>(cycleS_);

@@ -841,6 +841,9 @@ void MainWindow::applyGain(int which, double value) {
 
 void MainWindow::onStatus(const ControllerStatus& s) {
     last_ = s;
+    // The law may change from the DNC link: the menu says the one that runs.
+    if (classicLaw_->isChecked() != (s.law == LoopLaw::Classic))
+        (s.law == LoopLaw::Classic ? classicLaw_ : engineeredLaw_)->setChecked(true);
     panel_->showStatus(s);
     panel_->showGains(s.gains);
     manual_->setChecked(!s.automatic);

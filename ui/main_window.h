@@ -91,6 +91,7 @@ class MainWindow : public QMainWindow {
     QAction* selectAction() const { return select_; }
     QAction* classicDialectAction() const { return classicDialect_; }
     QAction* classicLawAction() const { return classicLaw_; }
+    QAction* engineeredLawAction() const { return engineeredLaw_; }
     QToolButton* emergencyButton() const { return estop_; }
     // ---- the DNC link (issue 13) ----
     DncLink* dncLink() const { return dnc_; }

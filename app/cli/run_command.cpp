@@ -205,6 +205,11 @@ int runCommand(const QStringList& args) {
     const QCommandLineOption dialectOpt(QStringLiteral("dialect"),
                                         QStringLiteral("classic or standard (default)."),
                                         QStringLiteral("dialect"), QStringLiteral("standard"));
+    const QCommandLineOption lawOpt(
+        QStringLiteral("law"),
+        QStringLiteral("The rail's law: classic (the 1996 equation, at its 10 ms) or engineered; "
+                       "default: the profile's."),
+        QStringLiteral("law"));
     const QCommandLineOption langOpt(QStringLiteral("lang"),
                                      QStringLiteral("Message language: en, pt_BR or es."),
                                      QStringLiteral("lang"), QStringLiteral("en"));
@@ -259,9 +264,9 @@ int runCommand(const QStringList& args) {
     const QCommandLineOption baudOpt(
         QStringLiteral("baud"), QStringLiteral("Bit rate of --port (default: the board's own)."),
         QStringLiteral("N"));
-    parser.addOptions({dialectOpt, langOpt, virtualOpt, massOpt, continueOpt, maxOpt, traceOpt,
-                       jsonOpt, machineOpt, jitterOpt, rateOpt, seedOpt, faultOpt, portOpt,
-                       baudOpt});
+    parser.addOptions({dialectOpt, lawOpt, langOpt, virtualOpt, massOpt, continueOpt, maxOpt,
+                       traceOpt, jsonOpt, machineOpt, jitterOpt, rateOpt, seedOpt, faultOpt,
+                       portOpt, baudOpt});
     parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("The program to run."));
     auto usage = [](const QString& message) { return usageError("run", message); };
     if (auto done = parseArguments(parser, args, "run")) return *done;
@@ -354,6 +359,23 @@ int runCommand(const QStringList& args) {
     if (!load.profile) return usage(load.error);
     if (!load.error.isEmpty()) err(QStringLiteral("trilho-cli run: %1\n").arg(load.error));
     MachineProfile profile = *load.profile;
+    if (parser.isSet(lawOpt)) {
+        const QString law = parser.value(lawOpt);
+        if (law != QLatin1String("classic") && law != QLatin1String("engineered"))
+            return usage(QStringLiteral("--law must be classic or engineered (got '%1')").arg(law));
+        if (profile.kind != MachineKind::Rail)
+            return usage(
+                QStringLiteral("--law is for the rail; an XY table's law is in its "
+                               "profile"));
+        // The law comes with its period (issue 22 item 1), as Options > Control law does.
+        const LoopLaw chosen =
+            law == QLatin1String("classic") ? LoopLaw::Classic : LoopLaw::Engineered;
+        const double engineeredS = profile.loop.law == LoopLaw::Engineered
+                                       ? profile.loop.samplePeriodS
+                                       : LoopParams{}.samplePeriodS;
+        profile.loop.samplePeriodS = periodForLaw(chosen, profile.loop.samplePeriodS, engineeredS);
+        profile.loop.law = chosen;
+    }
     // The payload goes where the simulated plant has a mass: the rail's platform, the DC table's
     // axes. The plotter's steppers are modelled without one (a pulse is a step, up to the
     // pull-out rate): there the option would change nothing, so it is refused.
@@ -463,6 +485,7 @@ int runCommand(const QStringList& args) {
         o[QStringLiteral("axes_mm")] =
             QJsonObject{{QStringLiteral("x"), std::round(finalMm * 1e4) / 1e4}};
         o[QStringLiteral("duration_s")] = std::round(last.timeS * 1e4) / 1e4;
+        o[QStringLiteral("sample_period_s")] = last.samplePeriodS;  // the law's, issue 22 item 1
         o[QStringLiteral("plant_position_mm")] = std::round(plantMm * 1e4) / 1e4;
         o[QStringLiteral("late_ticks")] = static_cast<double>(last.servo.overruns);
         o[QStringLiteral("worst_period_ms")] = std::round(last.servo.worstPeriodS * 1e6) / 1e3;

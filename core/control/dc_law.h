@@ -11,7 +11,7 @@ enum class DcLaw : unsigned char {
     /// Seed 004's main program as written: u = 100 (b0 |e| + b1 |e_prev|) percent, clamped to
     /// 0..50 %, the direction bit fixed per move by bits_de_giro (the sign of the move), the X
     /// loop over its whole trajectory and then the Y loop over its own. No in-position check:
-    /// the move ends with the Y loop. One difference (docs/seeds-dc-table.md): each PWM goes to
+    /// the move ends with the Y loop. One difference (docs/seeds.md (DC table)): each PWM goes to
     /// 0 when its loop ends (the seed leaves it at its last value).
     Seed,
     /// The same gains and clamp on the signed error, both axes together every period, the sign

@@ -7,11 +7,12 @@ namespace trilho {
 
 RailServo::RailServo(const MachineProfile& profile, RailIo& io)
     : profile_(profile),
+      engineeredPeriodS_(profile.loop.law == LoopLaw::Engineered ? profile.loop.samplePeriodS
+                                                                 : LoopParams{}.samplePeriodS),
       io_(io),
       loop_(profile.loop, profile.plant),
       counter_(profile.plant.countsPerMm, profile.plant.maxSpeedMmS()),
-      switches_(std::max(1, static_cast<int>(std::lround(profile.loop.switchDebounceS /
-                                                         profile.loop.samplePeriodS)))),
+      switches_(debounceReads()),
       accel_(profile.motion.accelerationMmS2),
       speedPerCode_(profile.plant.maxSpeedMmS() / 127.0),
       countLimitMmS_(0.95 * profile.plant.counterMaxRateHz / profile.plant.countsPerMm),
@@ -38,9 +39,23 @@ void RailServo::resyncToCounter() {
     velocity_ = acceleration_ = 0.0;
 }
 
+int RailServo::debounceReads() const {
+    return std::max(1, static_cast<int>(std::lround(profile_.loop.switchDebounceS /
+                                                    profile_.loop.samplePeriodS)));
+}
+
 void RailServo::setLaw(LoopLaw law) {
     loop_.setLaw(law);
     profile_.loop.law = law;
+    // The law comes with its period (issue 22 item 1): the 1996 gains are per 10 ms tick, and at
+    // 1 ms they overshoot a 1000 mm rapid by 140 mm into the soft limit.
+    const double before = profile_.loop.samplePeriodS;
+    profile_.loop.samplePeriodS = periodForLaw(law, before, engineeredPeriodS_);
+    if (profile_.loop.samplePeriodS != before) {
+        SwitchFilter f(debounceReads());  // the same debounce time at the new period
+        f.reset(switches_.value());
+        switches_ = f;
+    }
 }
 
 double RailServo::moveFraction() const {

@@ -100,6 +100,9 @@ class RailServo {
     void setSoftLimitsActive(bool on) { limitsActive_ = on; }
     double speedOverride() const { return override_; }
     void setGains(LoopLaw law, const LoopGains& gains) { loop_.setGains(law, gains); }
+    /// Chooses the law and, with it, its period (profile().loop.samplePeriodS): the classic
+    /// law runs at the VB's 10 ms (kClassicSamplePeriodS) unless the period already suits it,
+    /// the engineered law at the period it started with (the profile's, else the default 1 ms).
     void setLaw(LoopLaw law);
     const PositionLoop& loop() const { return loop_; }
     /// Takes the counter's current value as `positionMm` (after homing on the centre switch).
@@ -123,7 +126,11 @@ class RailServo {
     /// The drive code limited to the speed the counter card counts without loss.
     std::uint8_t counterSafeCode(std::uint8_t code) const;
 
+    /// Switch reads that make a change: switchDebounceS at the current period.
+    int debounceReads() const;
+
     MachineProfile profile_;
+    double engineeredPeriodS_;  ///< s: the engineered law's period, restored when chosen again
     RailIo& io_;
     PositionLoop loop_;
     CounterReader counter_;

@@ -55,7 +55,8 @@ constexpr std::uint16_t kYPosition = 36;        ///< float32 mm, measured; NaN o
 constexpr std::uint16_t kYSetpoint = 38;        ///< float32 mm; NaN on the rail
 constexpr std::uint16_t kYFollowingError = 40;  ///< float32 mm, setpoint - position; NaN
 constexpr std::uint16_t kYSpeed = 42;           ///< float32 mm/s, measured; NaN on the rail
-constexpr std::uint16_t kCount = 44;
+constexpr std::uint16_t kSamplePeriodUs = 44;   ///< the active law's period, us (10000 classic)
+constexpr std::uint16_t kCount = 45;
 }  // namespace in
 
 /// Holding registers (functions 03, 06, 16): settings, commands, the download block.
@@ -86,6 +87,7 @@ enum class Command : std::uint16_t {
     SelectAutomatic = 6,  ///< homes to the centre switch
     SelectManual = 7,
     CommitDownload = 8,  ///< argument: program number (= hold::kDownloadNumber); compile, save
+    SetLaw = 9,          ///< argument: 0 classic, 1 engineered; the law comes with its period
     Count_
 };
 

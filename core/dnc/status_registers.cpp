@@ -63,6 +63,8 @@ void fillInputRegisters(const ControllerStatus& s, const LinkState& link, InputI
     r[in::kDiagLine] = link.diagLine;
     r[in::kDiagProgram] = link.diagProgram;
     r[in::kLaw] = static_cast<std::uint16_t>(s.law);
+    r[in::kSamplePeriodUs] =
+        static_cast<std::uint16_t>(std::clamp(std::lround(s.samplePeriodS * 1e6), 0L, 65535L));
     putFloat(&r[in::kPosition], s.servo.positionMm);
     putFloat(&r[in::kSetpoint], s.servo.setpointMm);
     putFloat(&r[in::kFollowingError], s.servo.errorMm);

@@ -128,6 +128,7 @@ Exception checkHoldingWrite(const HoldingWrite& w,
         if ((cmd == Command::StartProgram || cmd == Command::CommitDownload) &&
             (arg < 1 || arg > kMaxProgramNumber))
             return Exception::IllegalValue;
+        if (cmd == Command::SetLaw && arg > 1) return Exception::IllegalValue;
     }
     if (inside(hold::kDownloadNumber, w) &&
         after(hold::kDownloadNumber, w, current) > kMaxProgramNumber)

@@ -181,6 +181,7 @@ class Compiler {
         d.column = column;
         d.n = lineN_;
         d.value = value;
+        d.classic = options_.dialect == Dialect::Classic;
         copyEscaped(d.text, Diagnostic::kTextCapacity, text);
     }
     std::uint32_t col(const char* q) const {
@@ -257,12 +258,28 @@ class Compiler {
         }
         int rank = 0;  // classic word order: g or m first, then x (y), then f
         while (p < e) {
+            // The VB's Compilar_click (seed 000): a line that starts with x under a modal g00
+            // must end after x (y); anything else is "Caracter inválido ou g00 não requer f",
+            // even a second space (issue 22 item 3).
+            const bool yNext = p + 1 < e && p[0] == ' ' && p[1] == 'y';
+            if (!w.g.present && !w.m.present && w.x.present && !w.f.present && lastMotion_ == 0 &&
+                !yNext) {
+                report(MessageId::G00Feed, col(p));
+                return false;
+            }
             if (*p != ' ' || p + 1 == e || p[1] == ' ') {
                 report(MessageId::SpaceRequired, col(*p == ' ' ? p + 1 : p),
                        charAt(*p == ' ' ? p + 1 : p));
                 return false;
             }
             ++p;
+            // The VB's "Não pode haver mais comandos após g00 / f": nothing follows a g00's x
+            // (y), nor f.
+            const bool afterG00 = w.g.present && w.g.value == 0 && (w.x.present || w.y.present);
+            if ((afterG00 && *p != 'y') || w.f.present) {
+                report(MessageId::TrailingWords, col(p), w.f.present ? "f" : "g00");
+                return false;
+            }
             Word* slot = nullptr;
             int width = 0, wordRank = 0;
             bool sign = false;
@@ -299,6 +316,10 @@ class Compiler {
             rank = wordRank;
             if (!fixedNumber(p, width, sign, *slot)) return false;
             p = numberEnd_;
+            // The VB set its modal g (ultimog) as soon as it read g00 or g01, before checking
+            // the rest of the line: the lines after a faulty one are read as it read them.
+            if (slot == &w.g && (slot->value == 0 || slot->value == 1))
+                lastMotion_ = static_cast<int>(slot->value);
         }
         return true;
     }

@@ -120,6 +120,7 @@ struct Diagnostic {
     std::uint32_t column = 0;  ///< 1-based byte column, 0 when the message has no column
     std::int32_t n = -1;       ///< block number of the line, -1 when unknown
     double value = 0.0;        ///< a numeric value the message names (a limit, a previous n)
+    bool classic = false;      ///< compiled in the classic dialect: the place is said as the VB did
     char text[kTextCapacity + 1] = {};  ///< offending source text, escaped, NUL-terminated
 
     std::string_view code() const { return diagnosticCode(id); }

@@ -75,6 +75,11 @@ QString substitute(const QString& text, std::initializer_list<QString> args) {
 }
 
 QString diagnosticPlace(const Diagnostic& d) {
+    // The classic dialect says where as the VB did (seed 000, Compilar_click): "na linha " +
+    // CStr(programa(i).n), the block number the line starts with (issue 22 item 3).
+    if (d.classic && d.n >= 0)
+        return substitute(QCoreApplication::translate("Diagnostic", "in line n=%1"),
+                          {QString::number(d.n)});
     if (d.n >= 0)
         return substitute(QCoreApplication::translate("Diagnostic", "in block n=%1"),
                           {QString::number(d.n)});

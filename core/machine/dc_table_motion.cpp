@@ -200,7 +200,7 @@ void DcTableMotion::tickSeed(double dtS) {
         commanded_ = {sx.position[0], sy.position[1]};
         commandedVelocity_ = {xLoop ? sx.velocity[0] : 0.0, xLoop ? 0.0 : sy.velocity[1]};
         commandedAccel_ = {xLoop ? sx.acceleration[0] : 0.0, xLoop ? 0.0 : sy.acceleration[1]};
-        // Deliberate difference (docs/seeds-dc-table.md): the seed leaves OCR1A at the X loop's
+        // Deliberate difference (docs/seeds.md (DC table)): the seed leaves OCR1A at the X loop's
         // last value while the Y loop runs, and both after it; on a plant whose friction does
         // not hold that value the axis runs on past its target. Each PWM goes to 0 when its
         // loop ends, as the seed's author evidently meant the table to stop there.

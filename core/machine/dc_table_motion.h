@@ -8,7 +8,7 @@
 // Hold and stop brake along the line. Under the seed's law (DcLaw::Seed) a move runs as seed
 // 004's main program does: the X loop over the whole trajectory, then the Y loop over its own
 // (each axis' set points in turn; the other axis' PWM at 0 once its loop ended: the seed keeps
-// its last value, docs/seeds-dc-table.md), no in-position check; hold and stop cut both PWM to
+// its last value, docs/seeds.md (DC table)), no in-position check; hold and stop cut both PWM to
 // 0 (the seed has neither) and the table coasts to rest.
 // Homing: the seed has no origin sensor; its firmware starts with both counts at zero, so the
 // origin is where the table stood at power-on (the operator puts it in the origin corner first).

@@ -205,6 +205,7 @@ QMap<QString, KeyKind> keysOf(MachineKind kind) {
     add(QStringLiteral("limits.hasY"), KeyKind::Bool);
     if (kind == MachineKind::Rail) add(QStringLiteral("loop.law"), KeyKind::Law);
     if (kind == MachineKind::DcTable) add(QStringLiteral("dcTable.law"), KeyKind::Law);
+    if (kind == MachineKind::Plotter) add(QStringLiteral("plotter.line"), KeyKind::String);
     MachineProfile p = MachineProfile::forKind(kind);
     forEachNumber(p, [&](const char* key, double&, double, double) {
         add(QString::fromLatin1(key), KeyKind::Number);
@@ -471,6 +472,13 @@ ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin
         }
         p.dcTable.law = *parsed;
     }
+    const QJsonValue line = lookup(root, QStringLiteral("plotter.line"));
+    if (!line.isUndefined() && !applyPlotterLineName(p.plotter, line.toString().toStdString())) {
+        result.error =
+            QStringLiteral("%1: plotter.line: must be \"bresenham\" or \"float\" (got %2)")
+                .arg(origin, jsonText(line));
+        return result;
+    }
     QString error;
     forEachNumber(p, [&](const char* key, double& value, double lo, double hi) {
         if (!error.isEmpty()) return;
@@ -528,6 +536,9 @@ QByteArray machineProfileToJson(const MachineProfile& profile) {
         insert(root, {QStringLiteral("dcTable"), QStringLiteral("law")}, 0,
                QString::fromLatin1(dcLawName(p.dcTable.law).data(),
                                    static_cast<qsizetype>(dcLawName(p.dcTable.law).size())));
+    if (p.kind == MachineKind::Plotter)
+        insert(root, {QStringLiteral("plotter"), QStringLiteral("line")}, 0,
+               QString::fromLatin1(plotterLineName(p.plotter.line).data()));
     forEachNumber(p, [&](const char* key, double& value, double, double) {
         insert(root, QString::fromLatin1(key).split(QLatin1Char('.')), 0, value);
     });

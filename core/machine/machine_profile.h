@@ -59,6 +59,18 @@ inline constexpr double kMaxSamplePeriodS = 0.01;
 /// The classic law's gains are per tick, tuned at the VB's 10 ms: below 8 ms the 1996 gains
 /// overshoot a 1000 mm move by 460 mm (1 ms) or stop on a soft limit (2 ms).
 inline constexpr double kClassicMinSamplePeriodS = 0.008;
+/// The classic law's own period, s: the VB's timer (seed 000, `Begin Timer Amostragem`,
+/// `Interval = 10`) and the `periodo = 10` it passed to PID() as TC. Choosing the classic law
+/// (Options > Control law, the DNC's SetLaw, `trilho-cli run --law classic`) runs it at this
+/// period unless the profile already gives it one it accepts (issue 22 item 1).
+inline constexpr double kClassicSamplePeriodS = 0.01;
+/// The period, s, a law runs at when chosen: the classic law at kClassicSamplePeriodS unless
+/// currentS already suits it (8 to 10 ms), the engineered law at engineeredS (its own period).
+inline double periodForLaw(LoopLaw law, double currentS, double engineeredS) {
+    if (law == LoopLaw::Classic)
+        return currentS < kClassicMinSamplePeriodS ? kClassicSamplePeriodS : currentS;
+    return engineeredS;
+}
 
 struct LoopParams {
     LoopLaw law = LoopLaw::Engineered;

@@ -1,8 +1,12 @@
 #pragma once
-// The stepper plotter on a serial line (issue 12): each move goes to the board as a one-point
-// object (MOVE or LINE, then END) through PlotterHost and is done when the board answers DONE;
-// homing is ORIGEM. After a failed link, resume() sends REQUEST, ORIGEM and SPEED again and
-// the unfinished object from its seam MOVE (PlotterHost::retry).
+// The stepper plotter on a serial line (issue 12): a program's pen-down path goes to the board
+// as one object, MOVE, LINEs, END, as the seed's host sent its drawings (seed 001 3.1.3.1,
+// figures 44 and 48; issue 22 item 10), split at 300 points by PlotterHost. A move the next
+// block goes on drawing from is done when the board answers NEXT (stored); the path's last
+// move is done at DONE (plotted). A g00 that starts a path is the object's MOVE and runs at
+// the path's SPEED (one SPEED an object); any other move is an object of its own. Homing is
+// ORIGEM. After a failed link, resume() sends REQUEST, ORIGEM and SPEED again and the
+// unfinished object from its seam MOVE (PlotterHost::retry).
 #include "core/machine/machine_profile.h"
 #include "core/machine/serial_link_motion.h"
 #include "core/protocol/plotter_host.h"
@@ -15,8 +19,14 @@ class PlotterLinkMotion final : public SerialLinkMotion {
 
     void beginMove(XyPoint target, XyMove kind, double speedFraction) override;
     void beginHoming() override;
+    void setNextDraw(std::optional<double> speedFraction) override { nextDraw_ = speedFraction; }
+    /// Hold: the board plots what it stored of the path (END), so the drawing is never left
+    /// waiting on the board while the run is paused.
+    void hold() override { host_.endObject(); }
 
     const PlotterHostStats& stats() const { return host_.stats(); }
+    /// Each packet sent and each byte received (the communication log, issue 22 item 12).
+    void setMonitor(PlotterMonitor monitor) { host_.setMonitor(std::move(monitor)); }
     std::uint64_t packetsSent() const override { return host_.stats().packetsSent; }
     std::uint64_t resends() const override { return host_.stats().resends; }
     std::uint64_t timeouts() const override { return host_.stats().timeouts; }
@@ -35,8 +45,9 @@ class PlotterLinkMotion final : public SerialLinkMotion {
 
     PlotterParams params_;
     PlotterHost host_;
-    bool greeted_ = false;  ///< REQUEST sent once
-    int speed_ = -1;        ///< the SPEED last sent, steps/s
+    bool greeted_ = false;            ///< REQUEST sent once
+    int speed_ = -1;                  ///< the SPEED last sent, steps/s
+    std::optional<double> nextDraw_;  ///< setNextDraw(), for the next beginMove() only
 };
 
 }  // namespace trilho

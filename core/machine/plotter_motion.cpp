@@ -41,9 +41,19 @@ XyPoint PlotterMotion::toMm(StepPoint steps) const {
 void PlotterMotion::beginMove(XyPoint target, XyMove kind, double speedFraction) {
     if (busy() || fault_ != AlarmCode::None) return;
     lineTarget_ = toSteps(target);
-    line_ = BresenhamLine(counted_, lineTarget_);
+    // The profile's line (issue 22 item 13). Each starts where the head is, so annex G's line,
+    // which stops one step short, makes the shortfall up on the next move instead of adding it
+    // up over a drawing.
+    if (params_.line == PlotterLine::Float) {
+        floatLine_ = FloatLine(counted_, lineTarget_);
+        line_ = BresenhamLine();
+        lineMajor_ = floatLine_.remaining();
+    } else {
+        line_ = BresenhamLine(counted_, lineTarget_);
+        floatLine_ = FloatLine();
+        lineMajor_ = line_.remaining();
+    }
     lineDelta_ = {lineTarget_.x - counted_.x, lineTarget_.y - counted_.y};
-    lineMajor_ = line_.remaining();
     commanded_ = target;
     // The RailServo's floor: a feed of 0.1 % still moves.
     rateHz_ = std::clamp(speedFraction, 0.001, 1.0) * params_.maxStepRateHz;
@@ -130,10 +140,12 @@ void PlotterMotion::sendEvent(StepEvent e) {
 }
 
 void PlotterMotion::tickLine(double dtS) {
-    const std::int64_t n = std::min(eventsFor(dtS, rateHz_), line_.remaining());
+    const bool useFloat = params_.line == PlotterLine::Float;
+    const std::int64_t left = useFloat ? floatLine_.remaining() : line_.remaining();
+    const std::int64_t n = std::min(eventsFor(dtS, rateHz_), left);
     for (std::int64_t i = 0; i < n; ++i)
-        sendEvent(line_.next());
-    if (line_.done()) {
+        sendEvent(useFloat ? floatLine_.next() : line_.next());
+    if (useFloat ? floatLine_.done() : line_.done()) {
         phase_ = Phase::Idle;
         carry_ = 0.0;
     }

@@ -17,6 +17,7 @@
 #include "core/machine/machine_profile.h"
 #include "core/machine/xy_motion.h"
 #include "core/motion/bresenham_line.h"
+#include "core/motion/float_line.h"
 
 namespace trilho {
 
@@ -78,6 +79,7 @@ class PlotterMotion final : public XyMotion {
     bool penDown_ = false;
     bool penKnown_ = false;  ///< the solenoid has been written once
     BresenhamLine line_;
+    FloatLine floatLine_;  ///< annex G's line, when params_.line is Float (table 8)
     StepEvent lastEvent_;
     StepPoint counted_;
     StepPoint lineTarget_;

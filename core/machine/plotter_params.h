@@ -3,9 +3,17 @@
 // Every figure says where it comes from: "seed 001 <section>", "derived" (with the sum) or
 // "chosen" (the seed does not give it; why this value).
 
+#include <string_view>
+
 namespace trilho {
 
+/// The line algorithm the board steps with: annex C's Bresenham (the seed's choice) or annex
+/// G's floating-point line, which the seed timed against it (3.1.4.1, table 8).
+enum class PlotterLine : unsigned char { Bresenham, Float };
+
 struct PlotterParams {
+    /// "plotter.line": "bresenham" (default) or "float" (issue 22 item 13).
+    PlotterLine line = PlotterLine::Bresenham;
     /// Seed 001 3.1.2 (TPP17, 1.8 degrees a step) and 4 (half-step: 400 steps per turn).
     double stepsPerTurn = 400.0;
     /// Chosen: seed 001 3.1.2 drives both axes with belts and pulleys but gives no pulley or
@@ -18,7 +26,7 @@ struct PlotterParams {
     double maxStepRateHz = 1000.0;
     /// Derived, about: seed 001 figure 48 plots a 240 x 140-step rectangle after a MOVE of 644
     /// steps from the origin, 1404 events, in 3.12 s at SPEED 1000, serial exchange included:
-    /// 1404 / 3.12 = 450 events/s. The unit of SPEED itself is not given.
+    /// 1404 / 3.12 = 450 events/s. SPEED's unit: plotter_wire::speedToStepsPerS.
     double defaultSpeedStepsS = 450.0;
     /// Chosen: seed 001 3.1.4 fits a 20 V solenoid to lift the pen but gives no timing.
     double penSettleS = 0.05;
@@ -30,6 +38,17 @@ struct PlotterParams {
     /// Chosen: homing gives up (alarm 19) after crossing the work area plus this, mm.
     double homingOvertravelMm = 10.0;
 };
+
+constexpr std::string_view plotterLineName(PlotterLine line) {
+    return line == PlotterLine::Float ? "float" : "bresenham";
+}
+
+/// Sets p.line from its name; false (p unchanged) for any other name.
+constexpr bool applyPlotterLineName(PlotterParams& p, std::string_view name) {
+    if (name == "bresenham") return p.line = PlotterLine::Bresenham, true;
+    if (name == "float") return p.line = PlotterLine::Float, true;
+    return false;
+}
 
 /// Every number of the section with its key (under "plotter.") and its allowed range.
 template <typename P, typename F>

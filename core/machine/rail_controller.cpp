@@ -36,6 +36,7 @@ const char* controllerStateName(ControllerState s) {
 
 RailController::RailController(const MachineProfile& profile, RailIo& io) : servo_(profile, io) {
     status_.law = profile.loop.law;
+    status_.samplePeriodS = profile.loop.samplePeriodS;
     status_.gains =
         profile.loop.law == LoopLaw::Classic ? profile.loop.classic : profile.loop.engineered;
     status_.servo = servo_.sample();
@@ -445,6 +446,7 @@ void RailController::setGains(LoopLaw law, const LoopGains& gains) {
 void RailController::setLaw(LoopLaw law) {
     servo_.setLaw(law);
     status_.law = law;
+    status_.samplePeriodS = profile().loop.samplePeriodS;
     status_.gains = servo_.loop().gains();
 }
 

@@ -44,6 +44,7 @@ struct ControllerStatus {
     ControllerEvent lastStatus{};  ///< the event that set the online status text
     ModalState modal;
     LoopLaw law = LoopLaw::Engineered;
+    double samplePeriodS = 0.001;  ///< the period the law runs at (it comes with the law), s
     LoopGains gains;
     ServoSample servo;
     std::uint64_t lastCommandSeq = 0;  ///< the last command applied (echoed by the worker)

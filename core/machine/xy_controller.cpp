@@ -105,6 +105,14 @@ void XyController::startMove(const Block& b) {
     const bool rapid = b.op == Op::Rapid;
     post(rapid ? EventKind::Rapid : EventKind::Linear, b.n, b.x, rapid ? 0.0 : b.feed,
          AlarmCode::None, yOf(pc_));
+    // The plotter sends a pen-down path as one object (seed 001 3.1.3.1): it is told whether
+    // the next block goes on drawing, and at what speed (not in single block: each stops).
+    std::optional<double> nextDraw;
+    if (!status_.singleBlock && pc_ + 1 < program_->blocks.size() &&
+        program_->blocks[pc_ + 1].op == Op::Linear)
+        nextDraw =
+            std::clamp(program_->blocks[pc_ + 1].feed / 100.0 * status_.feedOverride, 0.001, 1.0);
+    motion_->setNextDraw(nextDraw);
     moveProgram({b.x, yOf(pc_)}, rapid ? XyMove::Travel : XyMove::Draw,
                 rapid ? 1.0 : b.feed / 100.0);
 }

@@ -5,6 +5,7 @@
 // Plain and steppable: tick(dtS) is one period with time passed in; the machine's I/O
 // (core/io/dc_table_io.h, core/io/plotter_io.h) is read and written only inside tick().
 #include <cstdint>
+#include <optional>
 
 #include "core/machine/alarm.h"
 
@@ -41,6 +42,11 @@ class XyMotion {
     /// Starts a straight move from the commanded point to target at speedFraction (0..1] of
     /// the machine's maximum speed. Only when !busy().
     virtual void beginMove(XyPoint target, XyMove kind, double speedFraction) = 0;
+    /// Says, just before beginMove(), that the program's next block goes on drawing (a g01)
+    /// at speedFraction, or not (nullopt). A machine that sends a pen-down path as one object
+    /// (the plotter, seed 001 3.1.3.1) may then call this move done once the board stored it.
+    /// Default: ignored; every other caller of beginMove() never says it.
+    virtual void setNextDraw(std::optional<double> speedFraction) { (void)speedFraction; }
     /// Seeks the origin sensor (plotter) or the index (table) and zeroes the axes there.
     virtual void beginHoming() = 0;
     /// One period of dtS seconds: reads the I/O, advances, writes the drives.

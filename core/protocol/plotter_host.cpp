@@ -40,36 +40,72 @@ void PlotterHost::jog(Command direction) {
     push(direction);
 }
 
+std::size_t PlotterHost::maxObjectPoints() {
+    return kObjectPoints;
+}
+
 void PlotterHost::plot(const std::vector<PlotPoint>& drawing) {
-    std::size_t i = 0;
-    PlotPoint at = prev_;
-    while (i < drawing.size()) {
-        std::vector<Item> items;
-        double steps = 0.0;
-        auto add = [&](const PlotPoint& p) {
-            steps += std::max(std::abs(int(p.x) - int(at.x)), std::abs(int(p.y) - int(at.y)));
-            at = p;
-            items.push_back({plotter_wire::encode(p.draw ? Command::Line : Command::Move, p.x, p.y),
-                             plotter_wire::expectedReply(Command::Line), config_.answerTimeoutS,
-                             static_cast<int>(objects_.size()), false});
-        };
-        if (!objects_.empty()) add({false, at.x, at.y});  // the seam: start where the last ended
-        while (i < drawing.size() && items.size() < kObjectPoints)
-            add(drawing[i++]);
-        // END waits for the plotting: twice the estimated time, plus the answer timeout.
-        items.push_back({plotter_wire::encode(Command::End),
-                         plotter_wire::expectedReply(Command::End),
-                         config_.answerTimeoutS + 2.0 * steps / config_.stepsPerS,
-                         static_cast<int>(objects_.size()), true});
-        objectEnds_.push_back(at);
-        queue_.insert(queue_.end(), items.begin(), items.end());
-        objects_.push_back(std::move(items));
+    for (const PlotPoint& p : drawing)
+        addPoint(p);
+    endObject();
+}
+
+void PlotterHost::addPoint(const PlotPoint& p) {
+    const auto object = [this] { return static_cast<int>(objects_.size()) - 1; };
+    auto add = [&](const PlotPoint& q) {
+        openSteps_ +=
+            std::max(std::abs(int(q.x) - int(prev_.x)), std::abs(int(q.y) - int(prev_.y)));
+        prev_ = q;
+        objectEnds_.back() = q;
+        const Item item{plotter_wire::encode(q.draw ? Command::Line : Command::Move, q.x, q.y),
+                        plotter_wire::expectedReply(Command::Line), config_.answerTimeoutS,
+                        object(), false};
+        queue_.push_back(item);
+        objects_.back().push_back(item);
+    };
+    // Full: the board stores 300 points and no more; this point opens the next object.
+    if (open_ && objects_.back().size() >= kObjectPoints) endObject();
+    if (!open_) {
+        const bool later = !objects_.empty();
+        objects_.emplace_back();
+        objectEnds_.push_back(prev_);
         ++objectCount_;
+        open_ = true;
+        openSteps_ = 0.0;
+        // The seam: a later object that starts with a LINE starts where the last one ended
+        // (after a re-plug, ORIGEM has moved the head). A MOVE places the head itself.
+        if (later && p.draw) add({false, prev_.x, prev_.y});
     }
-    prev_ = at;
+    add(p);
+}
+
+void PlotterHost::endObject() {
+    if (!open_) return;
+    open_ = false;
+    // END waits for the plotting: twice the estimated time at the slower of the configured and
+    // the last SPEED, plus the answer timeout.
+    const double rate = std::max(
+        1.0, lastSpeed_ ? std::min(config_.stepsPerS, plotter_wire::speedToStepsPerS(*lastSpeed_))
+                        : config_.stepsPerS);
+    const Item end{plotter_wire::encode(Command::End), plotter_wire::expectedReply(Command::End),
+                   config_.answerTimeoutS + 2.0 * openSteps_ / rate,
+                   static_cast<int>(objects_.size()) - 1, true};
+    queue_.push_back(end);
+    objects_.back().push_back(end);
 }
 
 void PlotterHost::receive(std::uint8_t byte, double nowS) {
+    if (monitor_) {
+        PlotterLogEntry e;
+        e.timeS = nowS;
+        e.sent = false;
+        e.answer = byte;
+        e.answeredCommand = inFlight_ ? current_.packet[0] : 0;
+        e.object = inFlight_ ? current_.object : -1;
+        e.objectEnd = !failed_ && inFlight_ && current_.endsObject && byte == current_.expect;
+        e.objectSeconds = e.objectEnd ? nowS - objectStartS_ : 0.0;
+        monitor_(e);
+    }
     if (failed_ || !inFlight_) {
         if (owes(byte)) {
             --owed_[byte];
@@ -89,9 +125,13 @@ void PlotterHost::receive(std::uint8_t byte, double nowS) {
         // late answer to an older one, so the copy it may answer is still counted as owed.
         if (!owesAny()) ++copiesAnswered_;
         if (++resends_ > config_.maxResends) {
+            const auto c = static_cast<Command>(current_.packet[0]);
+            // A board whose object is full answers a point RESEND too (issue 22 item 11).
             fail("the plotter asked " + std::to_string(resends_ - 1) + " times to resend " +
-                 std::string(plotter_wire::commandName(static_cast<Command>(current_.packet[0]))) +
-                 ": the line is too noisy");
+                 std::string(plotter_wire::commandName(c)) +
+                 (c == Command::Line || c == Command::Move
+                      ? ": the line is too noisy, or the plotter's object is full (300 points)"
+                      : ": the line is too noisy"));
             return;
         }
         send(nowS);
@@ -169,6 +209,19 @@ void PlotterHost::poll(double nowS) {
 }
 
 void PlotterHost::send(double nowS) {
+    if (monitor_) {
+        PlotterLogEntry e;
+        e.timeS = nowS;
+        e.packet = current_.packet;
+        e.object = current_.object;
+        // An object's time runs from its first packet (a retried object starts again).
+        if (current_.object >= 0 && current_.object != loggedObject_) {
+            e.objectStart = true;
+            loggedObject_ = current_.object;
+            objectStartS_ = nowS;
+        }
+        monitor_(e);
+    }
     out_.insert(out_.end(), current_.packet.begin(), current_.packet.end());
     ++stats_.packetsSent;
     ++copies_;
@@ -197,6 +250,7 @@ void PlotterHost::fail(std::string why) {
 
 void PlotterHost::retry() {
     if (!failed_) return;
+    loggedObject_ = -1;  // the unfinished object's time starts again with its first packet
     failed_ = false;
     unknown_ = false;
     error_.clear();
@@ -227,6 +281,16 @@ void PlotterHost::retry() {
 }
 
 void PlotterHost::clear() {
+    // Points of the open object that left the host are stored on the board: END plots them
+    // (issue 22 item 10), or the next object would be appended to them.
+    bool stored = false;
+    if (open_) {
+        const int object = static_cast<int>(objects_.size()) - 1;
+        std::size_t waiting = 0;
+        for (const Item& item : queue_)
+            waiting += item.object == object ? 1u : 0u;
+        stored = objects_.back().size() > waiting || (inFlight_ && current_.object == object);
+    }
     // A packet in flight may still be answered: its answers are owed.
     if (inFlight_) owed_[current_.expect] += std::max(0, copies_ - copiesAnswered_);
     queue_.clear();
@@ -237,6 +301,11 @@ void PlotterHost::clear() {
     objects_.clear();
     objectEnds_.clear();
     objectsDone_ = objectCount_ = 0;
+    open_ = false;
+    loggedObject_ = -1;
+    if (stored)
+        push(Command::End, 0, 0,
+             config_.answerTimeoutS + 2.0 * openSteps_ / std::max(1.0, config_.stepsPerS));
 }
 
 }  // namespace trilho

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "core/protocol/plotter_log.h"
 #include "core/protocol/plotter_protocol.h"
 
 namespace trilho {
@@ -62,9 +63,23 @@ class PlotterHost {
     void origin();                    ///< ORIGEM -> ORIGIN_OK
     void jog(plotter_wire::Command direction);
     /// Sends the drawing as successive objects of at most 300 points, each plotted (DONE)
-    /// before the next is sent; each later object begins with a MOVE to the last point of the
-    /// one before, so the drawing has no seam.
+    /// before the next is sent; each later object that begins with a LINE begins with a MOVE to
+    /// the last point of the one before, so the drawing has no seam. addPoint() and endObject().
     void plot(const std::vector<PlotPoint>& drawing);
+    /// One point of the open object, opening one when none is (seed 001 3.1.3.1, figures 44
+    /// and 48: MOVE, LINEs, END). The host never sends a point the board has no room for: an
+    /// object that already holds kObjectPoints is ended first and the point opens the next one
+    /// (with its seam MOVE), as the seed's host splits a drawing (issue 22 items 10 and 11).
+    void addPoint(const PlotPoint& p);
+    /// Ends the open object: END, answered DONE once the board has plotted it. No-op when none.
+    void endObject();
+    bool objectOpen() const { return open_; }
+    /// Points (MOVE and LINE packets, the seam included) an object holds at most.
+    static std::size_t maxObjectPoints();
+
+    /// Called with each packet sent and each byte received (the communication log of seed 001
+    /// figure 48, issue 22 item 12); on the caller's thread, from send() and receive().
+    void setMonitor(PlotterMonitor monitor) { monitor_ = std::move(monitor); }
 
     // ---- the line ----
     void receive(std::uint8_t byte, double nowS);
@@ -92,7 +107,9 @@ class PlotterHost {
         if (!failed_) fail("the line was opened again");
         retry();
     }
-    /// Forgets every job (Stop).
+    /// Forgets every job (Stop). Points of an open object the board already stored cannot be
+    /// taken back (the protocol has no such command): END is sent for them, so the next object
+    /// is not appended to them.
     void clear();
 
   private:
@@ -137,7 +154,12 @@ class PlotterHost {
     std::vector<std::vector<Item>> objects_;
     std::vector<PlotPoint> objectEnds_;  ///< where each object ends
     PlotPoint prev_{};                   ///< the last point queued
+    bool open_ = false;                  ///< the last object has no END yet
+    double openSteps_ = 0.0;             ///< its longest-axis steps so far (END's deadline)
     std::optional<std::uint16_t> lastSpeed_;
+    PlotterMonitor monitor_;
+    int loggedObject_ = -1;      ///< the last object whose first packet was logged
+    double objectStartS_ = 0.0;  ///< when that first packet went, s
 };
 
 }  // namespace trilho

@@ -42,6 +42,22 @@ enum class Reply : std::uint8_t {
 
 using Packet = std::array<std::uint8_t, kPacketBytes>;
 
+/// SPEED's unit (issue 22 item 13). The seed names none (table 7: "determina a velocidade de
+/// plotagem"); figure 48 settles it: its object, a 644-step MOVE and a 240 x 140-step
+/// rectangle, 1404 step events, took 3.123 s at SPEED 1000. Read as steps a second it would
+/// take 1.40 s plus the exchange (trilho measured 1.53 to 1.77 s); read as the half period of
+/// the step clock in microseconds (the board waits SPEED us after each edge of the driver's
+/// clock, 3.1.3.3), an event takes 2 ms: 2.81 s plus the exchange and the pen's solenoid, 2.9
+/// to 3.2 s. So SPEED is that half period: SPEED 1000 is 500 events a second.
+constexpr double speedToStepsPerS(std::uint16_t speed) {
+    return 1e6 / (2.0 * static_cast<double>(speed == 0 ? 1 : speed));
+}
+/// The SPEED for a rate of events a second (1..65535, the nearest).
+constexpr std::uint16_t stepsPerSToSpeed(double stepsPerS) {
+    const double us = 1e6 / (2.0 * (stepsPerS > 7.63 ? stepsPerS : 7.63));
+    return static_cast<std::uint16_t>(us < 1.0 ? 1.0 : us + 0.5);
+}
+
 constexpr std::uint8_t checksum(const Packet& p) {
     unsigned sum = 0;
     for (std::size_t i = 0; i < 5; ++i)

@@ -31,7 +31,8 @@ ServoWorker::ServoWorker(RailController& controller, RailIo& io, PlantStep plant
     : controller_(controller),
       io_(io),
       plantStep_(std::move(plantStep)),
-      periodS_(periodS > 0.0 ? periodS : controller.profile().loop.samplePeriodS) {
+      periodS_(periodS > 0.0 ? periodS : controller.profile().loop.samplePeriodS),
+      fixedPeriod_(periodS > 0.0) {
     status_.store(controller_.status());
 }
 
@@ -122,7 +123,7 @@ void ServoWorker::apply(const Command& c) {
 }
 
 void ServoWorker::run() {
-    const auto period = static_cast<std::int64_t>(std::llround(periodS_ * 1e9));
+    auto period = static_cast<std::int64_t>(std::llround(periodS_.load() * 1e9));
     std::int64_t next = monotonicNs() + period;
     std::int64_t lastWake = next - period;
     while (running_.load(std::memory_order_relaxed)) {
@@ -156,6 +157,15 @@ void ServoWorker::run() {
         for (int k = 0; k < 16 && !deferredLoad_ && commands_.pop(cmd); ++k)
             apply(cmd);
         if (tickHook_) tickHook_();
+        // A law change (a command just applied) brings its period: the next wake is one new
+        // period after this one.
+        if (!fixedPeriod_ && controller_.profile().loop.samplePeriodS != periodS_.load()) {
+            periodS_.store(controller_.profile().loop.samplePeriodS);
+            const std::int64_t changed =
+                static_cast<std::int64_t>(std::llround(periodS_.load() * 1e9));
+            next += changed - period;
+            period = changed;
+        }
 
         // A simulated plant first runs the real elapsed time on the drive the last tick held,
         // as the machine does while the thread sleeps (late or not); then the controller reads
@@ -246,9 +256,12 @@ void ServoWorker::injectLateTick() {
 }
 
 void ServoWorker::watchdog() {
-    // Stalled when no tick finished within the profile's watchdog time (and 5 periods).
-    const std::int64_t limit = static_cast<std::int64_t>(
-        std::max(controller_.profile().loop.watchdogS, 5.0 * periodS_) * 1e9);
+    // Stalled when no tick finished within the profile's watchdog time (and 5 periods of the
+    // longest a law may choose).
+    const std::int64_t limit =
+        static_cast<std::int64_t>(std::max(controller_.profile().loop.watchdogS,
+                                           5.0 * std::max(periodS_.load(), kMaxSamplePeriodS)) *
+                                  1e9);
     bool tripped = false;
     while (running_.load()) {
         timespec ts = toTimespec(monotonicNs() + limit / 4);

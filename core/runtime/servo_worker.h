@@ -146,7 +146,9 @@ class ServoWorker {
     std::optional<TimingWindow> takeTimingWindow(double timeoutS = 1.0);
     /// Test hook run inside each tick (e.g. to stall the loop on purpose).
     void setTickHook(std::function<void()> hook) { tickHook_ = std::move(hook); }
-    double periodS() const { return periodS_; }
+    /// The period the thread runs at now, s: the law's (it changes with SetLaw, issue 22 item 1)
+    /// unless the constructor fixed one.
+    double periodS() const { return periodS_.load(std::memory_order_relaxed); }
     bool watchdogTripped() const { return watchdogTrips_.load() > 0; }
     /// Status lines the screens did not read in time (an alarm is never dropped).
     std::uint64_t droppedEvents() const { return droppedEvents_.load(); }
@@ -164,7 +166,8 @@ class ServoWorker {
     RailController& controller_;
     RailIo& io_;
     PlantStep plantStep_;
-    double periodS_;
+    std::atomic<double> periodS_;
+    bool fixedPeriod_;  ///< the constructor gave the period: a law change does not change it
     std::thread thread_, watchdogThread_;
     std::atomic<bool> running_{false};
     std::atomic<bool> stopFlag_{false}, estopFlag_{false}, tracing_{false};

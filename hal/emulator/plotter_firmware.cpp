@@ -11,7 +11,13 @@ PlotterFirmware::PlotterFirmware(const MachineProfile& profile, std::uint64_t se
     : profile_(profile),
       plotter_(profile, seed),
       motion_(profile, plotter_),
-      speed_(static_cast<std::uint16_t>(profile.plotter.defaultSpeedStepsS)) {}
+      speed_(plotter_wire::stepsPerSToSpeed(profile.plotter.defaultSpeedStepsS)) {}
+
+double PlotterFirmware::speedFraction() const {
+    // SPEED is the step clock's half period in microseconds (plotter_wire::speedToStepsPerS).
+    return std::min(1.0, plotter_wire::speedToStepsPerS(speed_) /
+                             std::max(1.0, profile_.plotter.maxStepRateHz));
+}
 
 void PlotterFirmware::answer(std::uint8_t byte) {
     out_.push_back(byte);
@@ -39,7 +45,6 @@ void PlotterFirmware::receive(std::uint8_t byte, double nowS) {
 }
 
 void PlotterFirmware::handle(const plotter_wire::Decoded& p) {
-    const double maxRate = std::max(1.0, profile_.plotter.maxStepRateHz);
     switch (p.command) {
         case Command::Request:
             answer(static_cast<std::uint8_t>(Reply::RequestOk));
@@ -50,14 +55,20 @@ void PlotterFirmware::handle(const plotter_wire::Decoded& p) {
             return;
         case Command::Line:
         case Command::Move:
-            // 1500 bytes of RAM, 5 a point: the 301st point has nowhere to go. The seed does
-            // not say what its firmware did then; this one answers NEXT and drops the point.
-            if (object_.size() < plotter_wire::kMaxObjectPoints) {
-                object_.push_back(p);
-                ++stats_.pointsStored;
-            } else {
+            // 1500 bytes of RAM, 5 a point (seed 001 3.1.3.1): the 301st point has nowhere to
+            // go. Its firmware's code is not in the annexes (C and G hold the two line
+            // algorithms only); of table 7's answers, NEXT says "stored, send the next" and
+            // RESEND "not taken, send it again", so a point it cannot store is answered RESEND
+            // and not stored: the loss is never silent, and a host that sends it anyway fails
+            // after its resends instead of plotting a drawing without it (issue 22 item 11).
+            if (object_.size() >= plotter_wire::kMaxObjectPoints) {
                 ++stats_.pointsRefused;
+                ++stats_.resendsSent;
+                answer(static_cast<std::uint8_t>(Reply::Resend));
+                return;
             }
+            object_.push_back(p);
+            ++stats_.pointsStored;
             answer(static_cast<std::uint8_t>(Reply::Next));
             return;
         case Command::End:
@@ -88,14 +99,13 @@ void PlotterFirmware::handle(const plotter_wire::Decoded& p) {
                                                            : 0.0;
             busy_ = Busy::Jogging;
             pendingAnswer_ = static_cast<std::uint8_t>(p.command);
-            motion_.beginMove({at.x + dx, at.y + dy}, XyMove::Travel, speed_ / maxRate);
+            motion_.beginMove({at.x + dx, at.y + dy}, XyMove::Travel, speedFraction());
             return;
         }
     }
 }
 
 void PlotterFirmware::startNextPoint() {
-    const double maxRate = std::max(1.0, profile_.plotter.maxStepRateHz);
     if (next_ >= object_.size()) {
         busy_ = Busy::None;
         object_.clear();
@@ -107,7 +117,7 @@ void PlotterFirmware::startNextPoint() {
     plotted_.push_back({p.command == Command::Line, p.x, p.y});
     const XyPoint target = motion_.toMm({p.x, p.y});
     motion_.beginMove(target, p.command == Command::Line ? XyMove::Draw : XyMove::Travel,
-                      std::min(1.0, speed_ / maxRate));
+                      speedFraction());
 }
 
 void PlotterFirmware::step(double dtS, double nowS) {

@@ -1,10 +1,11 @@
 #pragma once
 // Seed 001's Arduino firmware (xy.md A, 3.3), emulated: the receiver takes six consecutive
 // bytes within a time limit, answers each packet with one byte, asks RESEND for a bad checksum
-// or when no valid packet completed for 2 s, stores at most 300 points of an object, and on END
-// plots them with Bresenham at the programmed speed, in the time it takes, before answering
-// DONE; ORIGEM homes on the origin sensors. It runs the core's PlotterMotion on the simulated
-// plotter: the same step generator and plant as in-process runs, not copies. Plain and
+// or when no valid packet completed for 2 s, stores at most 300 points of an object (a 301st is
+// answered RESEND), and on END plots them with the profile's line (annex C's Bresenham, or
+// annex G's float line: plotter.line) at the programmed SPEED, in the time it takes, before
+// answering DONE; ORIGEM homes on the origin sensors. It runs the core's PlotterMotion on the
+// simulated plotter: the same step generator and plant as in-process runs, not copies. Plain and
 // steppable: bytes in, bytes out, time passed in.
 #include <cstdint>
 #include <vector>
@@ -63,6 +64,9 @@ class PlotterFirmware final : public DeviceFirmware {
     void handle(const plotter_wire::Decoded& p);
     void answer(std::uint8_t byte);
     void startNextPoint();
+    /// The programmed SPEED as a fraction of the maximum step rate (SPEED is the step clock's
+    /// half period in microseconds: plotter_wire::speedToStepsPerS).
+    double speedFraction() const;
 
     MachineProfile profile_;
     SimPlotter plotter_;

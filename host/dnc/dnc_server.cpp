@@ -73,6 +73,8 @@ const char* commandName(Command c) {
             return "manual";
         case Command::CommitDownload:
             return "commit download";
+        case Command::SetLaw:
+            return "set law";
         case Command::None:
         case Command::Count_:
             break;
@@ -569,6 +571,11 @@ void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq,
         case Command::SelectManual:
             if (pending_) return finish(CommandResult::Busy);
             return finish(CommandResult::Applied, machine_.send(CommandKind::SelectManual));
+        case Command::SetLaw:
+            // The law comes with its period (issue 22 item 1); never changed under a program.
+            if (pending_ || runningState(s.state)) return finish(CommandResult::Busy);
+            return finish(CommandResult::Applied,
+                          machine_.send(CommandKind::SetLaw, argument == 0 ? 0 : 1));
         case Command::CommitDownload: {
             // Only the client whose download it is commits it; the block is free afterwards.
             if (!takeDownloadBlock(client)) return finish(CommandResult::Busy);

@@ -12,6 +12,10 @@
 
 #include "tests/integration/cli_process.h"
 
+#ifndef TRILHO_TEST_DATA
+#define TRILHO_TEST_DATA TRILHO_PROGRAMS_DIR "/../../tests/data"
+#endif
+
 namespace {
 
 using Result = trilho::test::CliResult;
@@ -45,16 +49,47 @@ TEST_F(CliCompile, ErrorsListedWithPlaceAndCodeExitOne) {
     EXPECT_EQ(r.exit, 1);
     QStringList lines = r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
     ASSERT_EQ(lines.size(), 4);
-    EXPECT_EQ(
-        lines[0],
-        file + QStringLiteral(":1:7: error[invalid-g]: invalid g command in block n=10 (g07)"));
+    EXPECT_EQ(lines[0], file + QStringLiteral(
+                                   ":1:7: error[invalid-g]: invalid g command in line n=10 (g07)"));
     EXPECT_EQ(
         lines[1],
-        file + QStringLiteral(":2:7: error[no-motion-mode]: g01 or g00 not defined in block n=20"));
+        file + QStringLiteral(":2:7: error[no-motion-mode]: g01 or g00 not defined in line n=20"));
     EXPECT_EQ(
         lines[2],
         file + QStringLiteral(":2: error[missing-m02]: program requires m02 (END) at the end"));
     EXPECT_EQ(lines[3], QStringLiteral("3 compile error(s)"));
+}
+
+// Seed 000, Compilar_click: the classic dialect in Portuguese says what the VB said, "na linha
+// N" with N the block number, and the faults after a g00's x and under a modal g00 with the
+// VB's own text and kind (issue 22 item 3).
+TEST_F(CliCompile, Seed000_CompilarClick_TheNineFaultsAsTheVbListedThem) {
+    Result r = run({QStringLiteral("compile"), QStringLiteral("--lang"), QStringLiteral("pt_BR"),
+                    QStringLiteral("--dialect"), QStringLiteral("classic"),
+                    QStringLiteral(TRILHO_TEST_DATA "/com_erros.classic.G")});
+    EXPECT_EQ(r.exit, 1);
+    const QStringList want = {
+        QStringLiteral("error[feed-undefined]: Erro: g01 precisa de f definido na linha 10"),
+        QStringLiteral("error[n-order]: Erro: Seqüência n errada na linha 5"),
+        QStringLiteral(
+            "error[trailing-words]: Erro: Não pode haver mais comandos após g00 na linha 5"),
+        QStringLiteral("error[invalid-g]: Erro: Comando g inválido na linha 30"),
+        QStringLiteral("error[g00-feed]: Erro: Caracter inválido ou g00 não requer f na linha 40"),
+        QStringLiteral("error[invalid-m]: Erro: Comando m inválido na linha 50"),
+        QStringLiteral("error[n-alone]: Erro: Seqüência n sozinha na linha 60"),
+        QStringLiteral("error[negative-value]: Erro: Caracter inválido após g04 na linha 70"),
+        QStringLiteral("error[missing-m02]: Erro: Programa requer m02 (END) no final"),
+        QStringLiteral("Há 9 erro(s) de compilação !"),
+    };
+    const QStringList lines = r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    ASSERT_EQ(lines.size(), want.size()) << r.out.toStdString();
+    for (qsizetype i = 0; i < want.size(); ++i)
+        EXPECT_TRUE(lines[i].endsWith(want[i])) << lines[i].toStdString();
+    // The standard dialect keeps its clearer places.
+    Result std = run({QStringLiteral("compile"), QStringLiteral("--lang"), QStringLiteral("pt_BR"),
+                      write(QStringLiteral("s.G"), "N30 G7\nM2\n")});
+    EXPECT_TRUE(std.out.contains(QStringLiteral("Erro: Comando g inválido no bloco n=30")))
+        << std.out.toStdString();
 }
 
 TEST_F(CliCompile, PortugueseSummary) {

@@ -293,6 +293,26 @@ TEST_F(CliRun, EndingOffTargetIsNoSuccessAndAMotionlessLoopEndsTheRun) {
     EXPECT_LT(loop.out.size(), 4000);
 }
 
+// Seed 000 (`Amostragem` Interval = 10, `periodo = 10`): --law classic runs the 1996 law at its
+// 10 ms on the stock profile (1 ms), as the screens' menu does (issue 22 item 1).
+TEST_F(CliRun, Seed000_AmostragemInterval10_LawClassicRunsAtItsOwnPeriod) {
+    const QString prog = write(QStringLiteral("g00.classic.G"), "n0010 g00 x1000\nn0020 m02\n");
+    Result r = run({QStringLiteral("--virtual-time"), QStringLiteral("--json"),
+                    QStringLiteral("--dialect"), QStringLiteral("classic"), QStringLiteral("--law"),
+                    QStringLiteral("classic"), prog});
+    EXPECT_EQ(r.exit, 0) << r.out.toStdString() << r.err.toStdString();
+    const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+    EXPECT_TRUE(o[QStringLiteral("ok")].toBool());
+    EXPECT_TRUE(o[QStringLiteral("alarms")].toArray().isEmpty()) << r.out.toStdString();
+    EXPECT_EQ(o[QStringLiteral("sample_period_s")].toDouble(), 0.01);
+    EXPECT_NEAR(o[QStringLiteral("final_position_mm")].toDouble(), 1000.0, 0.6);
+    Result bad = run(
+        {QStringLiteral("--virtual-time"), QStringLiteral("--law"), QStringLiteral("pid"), prog});
+    EXPECT_EQ(bad.exit, 2);
+    EXPECT_TRUE(bad.err.contains(QStringLiteral("--law must be classic or engineered (got 'pid')")))
+        << bad.err.toStdString();
+}
+
 TEST_F(CliRun, AFaultDueAfterTheEndIsSaidNotSilentlyDropped) {
     Result r = run({QStringLiteral("--virtual-time"), QStringLiteral("--fault"),
                     QStringLiteral("stuck-encoder@100"), program("exemplo_documento.G")});

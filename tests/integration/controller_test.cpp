@@ -427,6 +427,31 @@ TEST(Controller, StopInTheClassicLawHoldsWhereThePlatformIs) {
     EXPECT_LT(r.session.rail().state().positionMm, 500);  // it did not go on to 800
 }
 
+// Seed 000, `Begin Timer Amostragem` (Interval = 10) and Sub posiciona (`periodo = 10`): the
+// 1996 law runs at its own period. Chosen at run time on the stock profile (1 ms), as Options >
+// Control law and the DNC's SetLaw do, it brings its 10 ms: g00 x1000 ends on 1000 mm, where
+// at 1 ms it ended at 1140 mm with alarm 11 (issue 22 item 1).
+TEST(Controller, Seed000_AmostragemInterval10_ChoosingTheClassicLawChoosesItsPeriod) {
+    RailRun r;
+    ASSERT_EQ(r.c().profile().loop.law, LoopLaw::Engineered);
+    ASSERT_EQ(r.c().profile().loop.samplePeriodS, 0.001);
+    ASSERT_TRUE(r.home());
+    r.c().setLaw(LoopLaw::Classic);
+    EXPECT_EQ(r.c().profile().loop.samplePeriodS, 0.01);
+    EXPECT_EQ(r.c().status().samplePeriodS, 0.01);
+    const double before = r.session.elapsedS();
+    r.step();
+    EXPECT_NEAR(r.session.elapsedS() - before, 0.01, 1e-12);  // one tick is the VB's 10 ms
+    ASSERT_TRUE(r.runProgram(compileText("n0010 g00 x1000\nn0020 m02\n", Dialect::Classic), 120));
+    EXPECT_NE(r.c().status().state, ControllerState::Alarm) << r.history().back();
+    EXPECT_TRUE(r.c().status().programFinished);
+    EXPECT_NEAR(r.session.rail().state().positionMm, 1000.0, 0.5 + kCount);  // the VB's epsilon
+    // And back: the engineered law returns to its own 1 ms.
+    r.c().setLaw(LoopLaw::Engineered);
+    EXPECT_EQ(r.c().profile().loop.samplePeriodS, 0.001);
+    EXPECT_EQ(r.c().status().samplePeriodS, 0.001);
+}
+
 TEST(Controller, CompileErrorsAreRefusedAndNothingMoves) {
     RailRun r;
     ASSERT_TRUE(r.home());

@@ -99,8 +99,9 @@ TEST(DeviceLink, TheSeedsSquareOverAPseudoTerminal) {
     EXPECT_DOUBLE_EQ(axis(r, "y"), 20.2);
     EXPECT_EQ(link(r, "resends"), 0.0);
     const QString said = d.stop();
-    // ORIGEM, then five moves: each a one-point object plotted before the next.
-    EXPECT_TRUE(said.contains(QStringLiteral("objects plotted 5"))) << said.toStdString();
+    // ORIGEM, then the square's five moves as one object, MOVE and four LINEs (seed 001
+    // 3.1.3.1, figure 48; issue 22 item 10).
+    EXPECT_TRUE(said.contains(QStringLiteral("points 5, objects plotted 1"))) << said.toStdString();
 }
 
 TEST(DeviceLink, TheDcTableOverAPseudoTerminal) {
@@ -126,12 +127,12 @@ TEST(DeviceLink, EveryTenthByteCorruptedEndsTheSameWithResendsCounted) {
     EXPECT_DOUBLE_EQ(axis(r, "y"), 20.2);
     EXPECT_GT(link(r, "resends"), 0.0);
     const QString said = d.stop();
-    EXPECT_TRUE(said.contains(QStringLiteral("objects plotted 5"))) << said.toStdString();
+    EXPECT_TRUE(said.contains(QStringLiteral("objects plotted 1"))) << said.toStdString();
 }
 
 TEST(DeviceLink, DroppedBytesCostTimeNotTheResult) {
     Device d({QStringLiteral("--drop"), QStringLiteral("0.03"), QStringLiteral("--seed"),
-              QStringLiteral("4")});
+              QStringLiteral("8")});  // 54 bytes go down now (one object): seed 8 drops some
     ASSERT_FALSE(d.path.isEmpty());
     const LinkRun r = runOn(d.path, kSquare);
     ASSERT_EQ(r.exit, 0) << r.err.toStdString();
@@ -143,11 +144,11 @@ TEST(DeviceLink, DroppedBytesCostTimeNotTheResult) {
         said.contains(QRegularExpression(QStringLiteral("; bytes in \\d+, out \\d+, "
                                                         "corrupted 0, dropped [1-9]"))))
         << said.toStdString();
-    EXPECT_TRUE(said.contains(QStringLiteral("objects plotted 5"))) << said.toStdString();
+    EXPECT_TRUE(said.contains(QStringLiteral("objects plotted 1"))) << said.toStdString();
 }
 
 // Issue 20 item 10: the board's answers corrupted, lost and duplicated on their way back.
-// Either the square ends where it should with the five moves plotted, or the run ends on the
+// Either the square ends where it should with its object plotted, or the run ends on the
 // link's alarm saying why; never a success the board did not make.
 TEST(DeviceLink, AnswersCorruptedLostAndDuplicatedEndRightOrSayWhy) {
     Device d({QStringLiteral("--out-corrupt"), QStringLiteral("0.1"), QStringLiteral("--out-drop"),
@@ -160,7 +161,7 @@ TEST(DeviceLink, AnswersCorruptedLostAndDuplicatedEndRightOrSayWhy) {
     if (r.exit == 0) {
         EXPECT_DOUBLE_EQ(axis(r, "x"), 36.6);
         EXPECT_DOUBLE_EQ(axis(r, "y"), 20.2);
-        EXPECT_TRUE(said.contains(QStringLiteral("objects plotted 5"))) << said.toStdString();
+        EXPECT_TRUE(said.contains(QStringLiteral("objects plotted 1"))) << said.toStdString();
     } else {
         EXPECT_EQ(r.exit, 3);
         EXPECT_TRUE(r.err.contains(QStringLiteral("plotter"))) << r.err.toStdString();

@@ -80,7 +80,7 @@ TEST(XyTableMoves, ClassicLawFigures) {
 }
 
 /// The seed's law on the plant of resources/machines/xy_dc_table_seed.json
-/// (docs/seeds-dc-table.md): the seed's gains are PD laws u = Kp e + Kd (e - e_prev) / T whose
+/// (docs/seeds.md (DC table)): the seed's gains are PD laws u = Kp e + Kd (e - e_prev) / T whose
 /// zero Kp / Kd cancels the motor's pole (tau = Kd / Kp: 50 ms on X, 30 ms on Y) and whose Kp Km
 /// puts the closed loop's pole there too (Km = 1 / (tau Kp): 375 mm/s on X and 1768 mm/s on Y
 /// at 100 % PWM).
@@ -119,7 +119,7 @@ TEST(XyTableSeedLaw, RunsTheXLoopThenTheYLoop) {
         m.tick(dt);
         table.step(dt);
         t += dt;
-        // The seed keeps OCR1A at the X loop's last value; trilho zeroes it (seeds-dc-table.md).
+        // The seed keeps OCR1A at the X loop's last value; trilho zeroes it (docs/seeds.md).
         EXPECT_EQ(table.axis(0).state().drivePercent, 0.0);
     }
     EXPECT_GT(table.positionMm(1), 0.5);
@@ -137,7 +137,7 @@ TEST(XyTableSeedLaw, RunsTheXLoopThenTheYLoop) {
 
 // Issue 22 item 6: seed 004's example (annex 7: spx 0 -> 180, spy 0 -> 120, vel_max 150,
 // acel 300) and the project's three moves, run with the seed's law on the simulated table
-// whose motors have the time constants the seed's gains were designed for (docs/seeds-dc-table.md):
+// whose motors have the time constants the seed's gains were designed for (docs/seeds.md (DC table)):
 // each ends at its target and stays there, with no alarm.
 TEST(XyTableSeedLaw, TheExampleMovesEndAtTheirTargets) {
     const MachineProfile profile = seedMatchedProfile();
@@ -163,7 +163,7 @@ TEST(XyTableSeedLaw, TheExampleMovesEndAtTheirTargets) {
 }
 
 // The seed has no hold: under its law hold cuts both PWM to 0, the table coasts to rest with
-// no alarm, and resume replans from where it stands (docs/seeds-dc-table.md).
+// no alarm, and resume replans from where it stands (docs/seeds.md (DC table)).
 TEST(XyTableSeedLaw, HoldCoastsToRestAndResumeReachesTheTarget) {
     const MachineProfile p = seedMatchedProfile();
     SimDcTable table(p.dcTable, 1);

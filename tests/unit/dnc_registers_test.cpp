@@ -142,6 +142,22 @@ TEST(DncRegisters, BadValuesRefused) {
     EXPECT_EQ(check(hold::kDownloadData, {0x47FF}), Exception::IllegalValue);  // not ASCII
 }
 
+// Seed 000 (`Amostragem` Interval = 10): the law is chosen over the link with its period, which
+// input 44 says (issue 22 item 1).
+TEST(DncRegisters, Seed000_AmostragemInterval10_SetLawAndThePeriodRegister) {
+    const auto setLaw = static_cast<std::uint16_t>(Command::SetLaw);
+    EXPECT_EQ(check(hold::kCommand, {setLaw, 0, 1}), Exception::None);
+    EXPECT_EQ(check(hold::kCommand, {setLaw, 1, 1}), Exception::None);
+    EXPECT_EQ(check(hold::kCommand, {setLaw, 2, 1}), Exception::IllegalValue);
+    ControllerStatus s;
+    s.law = LoopLaw::Classic;
+    s.samplePeriodS = 0.01;
+    InputImage r{};
+    fillInputRegisters(s, LinkState{}, r);
+    EXPECT_EQ(r[in::kLaw], 0);
+    EXPECT_EQ(r[in::kSamplePeriodUs], 10000);
+}
+
 TEST(DncRegisters, MalformedFramesAndAddresses) {
     const std::uint8_t shortFrame[] = {0, 1, 0};
     EXPECT_EQ(decodeHoldingWrite(0x06, shortFrame, sizeof shortFrame).error,

@@ -19,6 +19,37 @@ TEST(MachineProfile, ShippedRailProfileIsTheDefault) {
     EXPECT_EQ(machineProfileToJson(*load.profile), machineProfileToJson(MachineProfile::rail()));
 }
 
+// Seed 000, the form's text boxes: tproporcional "0.2", tderivativa "1", tintegrativa "0.0005"
+// are the classic law's gains; Timer Amostragem Interval = 10 its period (issue 22 items 1, 2).
+TEST(MachineProfile, Seed000_FormDefaults_TheClassicLawsGainsAndPeriodAreTheVbs) {
+    const MachineProfile p = MachineProfile::rail();
+    EXPECT_EQ(p.loop.classic.kp, 0.2);
+    EXPECT_EQ(p.loop.classic.kd, 1.0);
+    EXPECT_EQ(p.loop.classic.ki, 0.0005);
+    EXPECT_EQ(kClassicSamplePeriodS, 0.01);
+    EXPECT_EQ(periodForLaw(LoopLaw::Classic, p.loop.samplePeriodS, p.loop.samplePeriodS), 0.01);
+    EXPECT_EQ(periodForLaw(LoopLaw::Classic, 0.009, 0.001), 0.009);  // a period it accepts
+    EXPECT_EQ(periodForLaw(LoopLaw::Engineered, 0.01, 0.001), 0.001);
+}
+
+// Seed 001 3.1.4.1, annex G: the float line is selectable for plotting (issue 22 item 13).
+TEST(MachineProfile, Seed001_AnnexG_TheFloatLineIsAPlotterProfileChoice) {
+    ProfileLoad load = machineProfileFromJson(
+        R"({"kind": "xy-plotter", "plotter": {"line": "float"}})", QStringLiteral("p.json"));
+    ASSERT_TRUE(load.profile) << load.error.toStdString();
+    EXPECT_EQ(load.profile->plotter.line, PlotterLine::Float);
+    EXPECT_EQ(MachineProfile::xyPlotter().plotter.line, PlotterLine::Bresenham);
+    const ProfileLoad again =
+        machineProfileFromJson(machineProfileToJson(*load.profile), QStringLiteral("q.json"));
+    ASSERT_TRUE(again.profile) << again.error.toStdString();
+    EXPECT_EQ(again.profile->plotter.line, PlotterLine::Float);
+    load = machineProfileFromJson(R"({"kind": "xy-plotter", "plotter": {"line": "dda"}})",
+                                  QStringLiteral("p.json"));
+    EXPECT_FALSE(load.profile);
+    EXPECT_EQ(load.error.toStdString(),
+              "p.json: plotter.line: must be \"bresenham\" or \"float\" (got \"dda\")");
+}
+
 TEST(MachineProfile, RoundTripKeepsEveryValue) {
     MachineProfile p;
     p.loop.law = LoopLaw::Classic;

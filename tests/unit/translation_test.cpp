@@ -49,16 +49,16 @@ TEST(TranslationsPtBr, OriginalTexts) {
     Program p = compile("n0020 g90\nn0010 g05\n", {Dialect::Classic, {}});
     ASSERT_EQ(p.diagnostics.size(), 3u);
     EXPECT_EQ(diagnosticMessage(p.diagnostics[0]),
-              QStringLiteral("Erro: Seqüência n errada no bloco n=10"));
+              QStringLiteral("Erro: Seqüência n errada na linha 10"));  // the VB's own place
     EXPECT_EQ(diagnosticMessage(p.diagnostics[1]),
-              QStringLiteral("Erro: Comando g inválido no bloco n=10"));
+              QStringLiteral("Erro: Comando g inválido na linha 10"));
     EXPECT_EQ(diagnosticMessage(p.diagnostics[2]),
               QStringLiteral("Erro: Programa requer m02 (END) no final"));
     EXPECT_EQ(compileSummary(3), QStringLiteral("Há 3 erro(s) de compilação !"));
     EXPECT_EQ(compileSummary(0), QStringLiteral("Compilação completada com sucesso !"));
     installLanguage(QStringLiteral("en"));
     EXPECT_EQ(diagnosticMessage(p.diagnostics[1]),
-              QStringLiteral("invalid g command in block n=10 (g05)"));
+              QStringLiteral("invalid g command in line n=10 (g05)"));
 }
 
 // Issue 9: "on line N" used to name the block number while the prefix gave the file line. A

@@ -207,7 +207,7 @@ class MainWindowTest : public QObject {
         QCOMPARE(alarms->count(), 9);  // as `trilho-cli compile --dialect classic` lists them
         QCOMPARE(alarms->currentText(), QStringLiteral("9 compile error(s)"));
         QVERIFY(
-            alarms->itemText(3).startsWith(QStringLiteral("3: invalid g command in block n=30")));
+            alarms->itemText(3).startsWith(QStringLiteral("3: invalid g command in line n=30")));
         QCOMPARE(window_->programPanel()->editor()->markedLines(), 9);
         // Executing it does not move: recompiled, refused.
         const double before = status().servo.positionMm;

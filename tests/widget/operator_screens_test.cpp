@@ -676,6 +676,30 @@ class OperatorScreensTest : public QObject {
         QCOMPARE(panel()->gainField(2)->text(), QStringLiteral("0.0005"));
     }
 
+    // Seed 000, `Begin Timer Amostragem` (Interval = 10) and Sub posiciona (`periodo = 10`):
+    // Options > Control law > Classic brings the law's own 10 ms, said beside the law; g00 x1000
+    // then ends on 1000 mm (at 1 ms it ended at 1140 mm with alarm 11). Issue 22 item 1.
+    void seed000_AmostragemInterval10_theClassicLawRunsAtItsPeriodFromTheMenu() {
+        QTRY_VERIFY(
+            window_->dro()->modalState()->text().contains(QStringLiteral("engineered law, 1 ms")));
+        QCOMPARE(link_->worker().periodS(), 0.001);
+        window_->classicLawAction()->trigger();
+        QTRY_VERIFY(
+            window_->dro()->modalState()->text().contains(QStringLiteral("classic law, 10 ms")));
+        QTRY_COMPARE(link_->worker().periodS(), 0.01);
+        QCOMPARE(status().samplePeriodS, 0.01);
+        goAutomatic();
+        QVERIFY(window_->selectProgram(writeProgram("g00.G", "N10 G0 X1000\nN20 M2\n")));
+        window_->executeAction()->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(
+            status().programFinished || status().state == ControllerState::Alarm, 60000);
+        QVERIFY2(status().activeAlarms == 0, qPrintable(QString::number(status().activeAlarms)));
+        QVERIFY2(std::abs(status().servo.positionMm - 1000.0) < 0.6,
+                 qPrintable(QString::number(status().servo.positionMm)));
+        window_->engineeredLawAction()->trigger();
+        QTRY_COMPARE(link_->worker().periodS(), 0.001);
+    }
+
     void thePlotsDockCanBeEnlarged() {
         auto* plots = window_->findChild<QDockWidget*>(QStringLiteral("plotDock"));
         settle();

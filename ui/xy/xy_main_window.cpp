@@ -5,6 +5,7 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDateTime>
+#include <QDir>
 #include <QDockWidget>
 #include <QEvent>
 #include <QFileDialog>
@@ -18,6 +19,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPlainTextEdit>
+#include <QPointer>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QScrollBar>
@@ -44,6 +46,7 @@
 #include "core/gcode/source_file.h"
 #include "core/machine/event_text.h"
 #include "core/machine/journal.h"
+#include "core/machine/plotter_link_motion.h"
 #include "core/machine/serial_link_motion.h"
 #include "core/machine/xy_event_text.h"
 #include "host/common/data_paths.h"
@@ -58,7 +61,9 @@
 #include "ui/workbench/workbench_window.h"
 #include "ui/xy/calibration_dialog.h"
 #include "ui/xy/dc_table_panel.h"
+#include "ui/xy/plotter_comm_log.h"
 #include "ui/xy/plotter_panel.h"
+#include "ui/xy/polygon_dialog.h"
 #include "ui/xy/work_area_view.h"
 #include "ui/xy/xy_dnc_machine.h"
 #include "ui/xy/xy_plots.h"
@@ -425,6 +430,21 @@ void XyMainWindow::buildMenus() {
         });
         calibration_->setObjectName(QStringLiteral("calibration"));
     }
+    if (plotter_) {  // seed 001's Java host: its communication log and polygons from points
+        auto* dock = new QDockWidget(this);
+        dock->setObjectName(QStringLiteral("plotterCommLogDock"));
+        dock->setWidget(commLog_ = new PlotterCommLog(dock));
+        addDockWidget(Qt::BottomDockWidgetArea, dock);
+        dock->hide();
+        optionsMenu_->addAction(dock->toggleViewAction());
+        polygon_ = new QAction(this);
+        polygon_->setObjectName(QStringLiteral("polygonAction"));
+        fileMenu_->insertAction(machine_, polygon_);  // after Open program...
+        connect(polygon_, &QAction::triggered, this, [this] {
+            PolygonDialog d(this);
+            if (d.exec() == QDialog::Accepted) plotPolygon(d.program());
+        });
+    }
     optionsMenu_->addSeparator();
     dncAction_ = optionsMenu_->addAction(QString(), this, [this] { openDncDialog(); });
     dncAction_->setObjectName(QStringLiteral("dnc"));
@@ -740,8 +760,27 @@ void XyMainWindow::openWorkbench() {
     workbenchWindow_->activateWindow();
 }
 
+bool XyMainWindow::plotPolygon(const QString& program) {
+    const QString path = QDir(QDir::tempPath()).filePath(QStringLiteral("trilho-poligono.G"));
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) || f.write(program.toUtf8()) < 0) {
+        addHistory(tr("Cannot write %1: %2").arg(path, f.errorString()), true);
+        return false;
+    }
+    f.close();
+    if (!selectProgram(path)) return false;
+    startProgram(true);
+    return true;
+}
+
 void XyMainWindow::setDeviceLink(SerialLinkMotion* link, const QString& port, int baud) {
     deviceLink_ = link;
+    if (auto* plotterLink = dynamic_cast<PlotterLinkMotion*>(link); plotterLink && commLog_) {
+        QPointer<PlotterCommLog> log(commLog_);
+        plotterLink->setMonitor([log](const PlotterLogEntry& e) {
+            if (log) log->addEntry(e);
+        });
+    }
     port_ = port;
     baud_ = baud;
     if (table_) table_->setSerial(port, baud);
@@ -910,6 +949,7 @@ void XyMainWindow::retranslate() {
     languageMenu_->setTitle(tr("&Language"));
     connection_->setText(tr("&Connection..."));
     if (calibration_) calibration_->setText(tr("Ca&libration..."));
+    if (polygon_) polygon_->setText(tr("Polygon from &points..."));
     dncAction_->setText(tr("&DNC link..."));
     remote_->setText(tr("&Remote (DNC)"));
     remote_->setToolTip(tr("Allow the cell's supervisor to write and command over the DNC "

@@ -37,6 +37,7 @@ class XySimulationPanel;
 class DncDialog;
 class DncLink;
 class WorkbenchWindow;
+class PlotterCommLog;
 
 class XyMainWindow : public QMainWindow {
     Q_OBJECT
@@ -92,6 +93,9 @@ class XyMainWindow : public QMainWindow {
     /// The machine is a board on this serial port (its link's state in the status bar); none:
     /// the simulated machine.
     void setDeviceLink(SerialLinkMotion* link, const QString& port, int baud);
+    /// Runs a program made from typed points (seed 001 3.1.4, PolygonDialog): selects it and
+    /// starts it as Start does (asking first); false when it cannot be saved or compiled.
+    bool plotPolygon(const QString& program);
     QLabel* linkLabel() const { return linkLabel_; }
     /// Keeps the history in a journal (core/machine/journal.h) at path, as the rail's
     /// history.log; false with the reason (the screen still works, and says it).
@@ -161,6 +165,8 @@ class XyMainWindow : public QMainWindow {
     QString programName_;
     QLabel* linkLabel_;
     SerialLinkMotion* deviceLink_ = nullptr;
+    QAction* polygon_ = nullptr;         ///< File > Polygon from points..., the plotter only
+    PlotterCommLog* commLog_ = nullptr;  ///< the plotter's communication log (seed 001)
     QString port_;
     int baud_ = 0;
     XyStatus last_;
