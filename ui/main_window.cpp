@@ -868,6 +868,12 @@ void MainWindow::onStatus(const ControllerStatus& s) {
                            s.state == ControllerState::Waiting ||
                            s.state == ControllerState::Paused;
     program_->setExecutingLine(executing ? static_cast<int>(s.blockLine) : 0);
+    // A law carries its period (issue 22 item 1): chosen while the rail moves, the period would
+    // switch under a running move. The law is chosen at rest; the DNC's SetLaw is busy then too.
+    const bool atRest = !executing && s.state != ControllerState::Homing &&
+                        s.servo.mode != ServoMode::Move;
+    for (QAction* a : {classicLaw_, engineeredLaw_})
+        a->setEnabled(atRest);
     if (++plotDivider_ % 2 == 0) plots_->addSample(s);  // 25 Hz is plenty for the eye
     stateLabel_->setText(QStringLiteral("%1  |  x = %2 mm")
                              .arg(stateText(s.state))

@@ -109,7 +109,8 @@ TEST(DncRegisters, TheYAxisFollowsTheRailsMapOnTheXyMachines) {
     EXPECT_EQ(joinFloat(table[in::kYSetpoint], table[in::kYSetpoint + 1]), 81.0f);
     EXPECT_EQ(joinFloat(table[in::kYFollowingError], table[in::kYFollowingError + 1]), 0.75f);
     EXPECT_EQ(joinFloat(table[in::kYSpeed], table[in::kYSpeed + 1]), -3.5f);
-    EXPECT_EQ(in::kYSpeed + 2, in::kCount);
+    EXPECT_EQ(in::kYSpeed + 2, in::kSamplePeriodUs);  // the law's period after the Y axis
+    EXPECT_EQ(in::kSamplePeriodUs + 1, in::kCount);
     for (std::uint16_t i = 0; i < in::kMachine; ++i)
         EXPECT_EQ(rail[i], table[i]) << "register " << i;
 }

@@ -472,6 +472,19 @@ class MainWindowTest : public QObject {
         }
     }
 
+    // Issue 22 item 1: a law carries its period, so it is never changed under a running move.
+    void theLawIsChosenAtRestOnly() {
+        goAutomatic();
+        QVERIFY(window_->classicLawAction()->isEnabled());
+        QVERIFY(window_->selectProgram(writeProgram("far.G", "G01 X900 F20\nM02\n")));
+        window_->executeSelected(0);
+        QTRY_VERIFY_WITH_TIMEOUT(status().state == ControllerState::Running, 20000);
+        QTRY_VERIFY(!window_->classicLawAction()->isEnabled());
+        QVERIFY(!window_->engineeredLawAction()->isEnabled());
+        window_->classicLawAction()->trigger();  // disabled: nothing happens
+        QCOMPARE(status().law, LoopLaw::Engineered);
+    }
+
     void aHistoryThatCannotBeKeptIsSaidOnScreen() {
         QString error;
         QVERIFY(!link_->openJournal(QStringLiteral("/dev/null/history.log"), &error));
