@@ -13,6 +13,7 @@
 #include <limits>
 #include <string_view>
 
+#include "core/machine/replace_target.h"
 #include "core/tuning/trace_writer.h"
 
 namespace trilho {
@@ -171,6 +172,10 @@ namespace {
 
 bool writeAtomically(const QString& path, const QByteArray& head, const RunChannels* rows,
                      bool integerDrive, QString* error) {
+    if (const QString refused = refuseToReplace(path); !refused.isEmpty()) {
+        *error = QStringLiteral("cannot write %1").arg(refused);
+        return false;
+    }
     QSaveFile f(path);
     if (!f.open(QIODevice::WriteOnly)) {
         *error = QStringLiteral("cannot write '%1': %2").arg(path, f.errorString());
@@ -203,6 +208,12 @@ bool writeAtomically(const QString& path, const QByteArray& head, const RunChann
 
 bool saveRunRecord(const RunRecord& r, const QString& csvPath, const StepMetrics* metrics,
                    QString* error) {
+    // Neither file is touched when either may not be replaced.
+    for (const QString& p : {csvPath, runSidecarPath(csvPath)})
+        if (const QString refused = refuseToReplace(p); !refused.isEmpty()) {
+            *error = QStringLiteral("cannot write %1").arg(refused);
+            return false;
+        }
     const QByteArray head = QByteArray(runCsvHeader()) + '\n';
     if (!writeAtomically(csvPath, head, &r.channels, true, error)) return false;
     return writeAtomically(runSidecarPath(csvPath), runConditionsToJson(r.conditions, metrics),

@@ -3,9 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <QDir>
 #include <QFile>
 #include <QTemporaryDir>
+
+#include <QFileInfo>
 #include <cmath>
 
 namespace trilho {
@@ -187,6 +190,26 @@ TEST(RunRecord, SavingOverAnUnwritablePlaceSaysWhere) {
     EXPECT_FALSE(
         saveRunRecord(sampleRecord(), QStringLiteral("/nonexistent-dir/r.csv"), nullptr, &error));
     EXPECT_TRUE(error.contains(QStringLiteral("/nonexistent-dir/r.csv"))) << error.toStdString();
+}
+
+TEST(RunRecord, SavingNeverReplacesAFifoOrADirectory) {
+    QTemporaryDir dir;
+    const QString fifo = dir.filePath(QStringLiteral("pipe.csv"));
+    ASSERT_EQ(::mkfifo(QFile::encodeName(fifo).constData(), 0600), 0);
+    QString error;
+    EXPECT_FALSE(saveRunRecord(sampleRecord(), fifo, nullptr, &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("'%1' exists and is not a regular file").arg(fifo)))
+        << error.toStdString();
+    struct stat st {};
+    ASSERT_EQ(::stat(QFile::encodeName(fifo).constData(), &st), 0);
+    EXPECT_TRUE(S_ISFIFO(st.st_mode));
+    // A directory where the sidecar goes: neither file is written.
+    const QString csv = dir.filePath(QStringLiteral("r.csv"));
+    ASSERT_TRUE(QDir(dir.path()).mkdir(QFileInfo(runSidecarPath(csv)).fileName()));
+    error.clear();
+    EXPECT_FALSE(saveRunRecord(sampleRecord(), csv, nullptr, &error));
+    EXPECT_TRUE(error.contains(runSidecarPath(csv))) << error.toStdString();
+    EXPECT_FALSE(QFileInfo::exists(csv));
 }
 
 TEST(CsvRow, FormatsFixedAndEmptyFields) {
