@@ -11,6 +11,7 @@
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
 #include "app/cli/run_support.h"
+#include "core/machine/replace_target.h"
 #include "core/tuning/run_record.h"
 #include "host/common/data_paths.h"
 #include "host/tuning/step_test.h"
@@ -159,7 +160,7 @@ int stepCommand(const QStringList& args) {
     const QCommandLineOption traceOpt(
         QStringLiteral("trace"),
         QStringLiteral("Write every tick to this CSV (and its conditions and metrics to the "
-                       "JSON beside it)."),
+                       "sidecar beside it: FILE.run.json)."),
         QStringLiteral("FILE.csv"));
     const QCommandLineOption jsonOpt(QStringLiteral("json"),
                                      QStringLiteral("Print one JSON object."));
@@ -269,6 +270,20 @@ int stepCommand(const QStringList& args) {
                              .arg(parser.value(seedOpt)));
     }
     const QString tracePath = parser.value(traceOpt);
+    if (!tracePath.isEmpty()) {
+        // Never overwrite the profile the test runs on, with the trace or with its sidecar.
+        const QString profileFile =
+            QFileInfo(machineProfilePath(parser.value(machineOpt))).canonicalFilePath();
+        for (const QString& p : {tracePath, runSidecarPath(tracePath)}) {
+            if (!profileFile.isEmpty() && QFileInfo(p).canonicalFilePath() == profileFile)
+                return usage(QStringLiteral("--trace: '%1' is the machine profile of the test; "
+                                            "write the trace to another name")
+                                 .arg(p));
+        }
+        if (const QString refused = refuseToReplace(runSidecarPath(tracePath));
+            !refused.isEmpty() && QFileInfo(tracePath).isFile())
+            return usage(QStringLiteral("--trace: the sidecar %1").arg(refused));
+    }
     // Open the trace before the test: a path that cannot be written is said before any work.
     TraceFile trace;
     QString traceError;
@@ -276,7 +291,7 @@ int stepCommand(const QStringList& args) {
 
     const StepTestResult r = runStepTest(spec);
     if (r.abort == StepAbort::Refused) {
-        trace.close();
+        trace.cancel();  // the old trace stays as it was
         return usage(r.abortReason);
     }
     bool traceOk = true;

@@ -50,8 +50,8 @@ const char* runCsvHeader() {
 
 QString runSidecarPath(const QString& csvPath) {
     if (csvPath.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive))
-        return csvPath.left(csvPath.size() - 4) + QStringLiteral(".json");
-    return csvPath + QStringLiteral(".json");
+        return csvPath.left(csvPath.size() - 4) + QStringLiteral(".run.json");
+    return csvPath + QStringLiteral(".run.json");
 }
 
 StepMetrics measureRun(const RunChannels& c, double countsPerMm) {
@@ -438,7 +438,7 @@ std::optional<RunConditions> runConditionsFromJson(const QByteArray& json, const
     };
     if (o.value(QStringLiteral("format")).toString() != QLatin1String("trilho-run/1"))
         return bad(QStringLiteral("format"),
-                   QStringLiteral("expected \"trilho-run/1\" (got '%1')")
+                   QStringLiteral("expected \"trilho-run/1\" (got '%1'): not a run sidecar")
                        .arg(o.value(QStringLiteral("format")).toVariant().toString()));
     RunConditions c;
     const QJsonValue prof = o.value(QStringLiteral("profile"));

@@ -120,6 +120,51 @@ TEST_F(CliTune, AnAbortedTestExitsThreeAndSaysWhy) {
         o.value(QStringLiteral("abort_reason")).toString().contains(QStringLiteral("200 ms")));
 }
 
+QByteArray contentOf(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+// Outside tester: the sidecar NAME.json overwrote the profile myrail.json under test.
+TEST_F(CliTune, TheSidecarNeverOverwritesTheProfileUnderTest) {
+    const QString profile = dir.filePath(QStringLiteral("myrail.json"));
+    ASSERT_TRUE(QFile::copy(QStringLiteral(TRILHO_MACHINES_DIR "/rail.json"), profile));
+    const QByteArray before = contentOf(profile);
+    const QString trace = dir.filePath(QStringLiteral("myrail.csv"));
+    const CliResult r = runCli({QStringLiteral("tune"), QStringLiteral("step"),
+                                QStringLiteral("--machine"), profile, QStringLiteral("--amplitude"),
+                                QStringLiteral("10"), QStringLiteral("--trace"), trace});
+    ASSERT_EQ(r.exit, 0) << r.err.toStdString();
+    EXPECT_EQ(contentOf(profile), before);
+    EXPECT_TRUE(QFile::exists(dir.filePath(QStringLiteral("myrail.run.json"))));
+    // tune metrics beside the unrelated profile reads the run's own sidecar.
+    const CliResult m = runCli({QStringLiteral("tune"), QStringLiteral("metrics"), trace});
+    EXPECT_EQ(m.exit, 0) << m.err.toStdString();
+    // The trace itself may not be the profile either.
+    const CliResult same = runCli(
+        {QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--machine"), profile,
+         QStringLiteral("--amplitude"), QStringLiteral("10"), QStringLiteral("--trace"), profile});
+    EXPECT_EQ(same.exit, 2);
+    EXPECT_TRUE(same.err.contains(QStringLiteral("machine profile"))) << same.err.toStdString();
+    EXPECT_EQ(contentOf(profile), before);
+}
+
+// Outside tester: a refused test (outside the soft limits) left the good trace empty.
+TEST_F(CliTune, ARefusedTestLeavesTheOldTraceAsItWas) {
+    const QString trace = dir.filePath(QStringLiteral("good.csv"));
+    const CliResult good =
+        runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--amplitude"),
+                QStringLiteral("100"), QStringLiteral("--trace"), trace});
+    ASSERT_EQ(good.exit, 0) << good.err.toStdString();
+    const QByteArray before = contentOf(trace);
+    ASSERT_GT(before.size(), 1000);
+    const CliResult refused =
+        runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--amplitude"),
+                QStringLiteral("5000"), QStringLiteral("--trace"), trace});
+    EXPECT_EQ(refused.exit, 2) << refused.err.toStdString();
+    EXPECT_EQ(contentOf(trace), before);
+}
+
 TEST_F(CliTune, UsageErrorsAreOneLine) {
     struct Case {
         QStringList args;
