@@ -138,7 +138,9 @@ int stepCommand(const QStringList& args) {
                                    QStringLiteral("B"));
     const QCommandLineOption periodOpt(
         QStringLiteral("period"),
-        QStringLiteral("Loop period, s (default: the profile's; the 1996 gains are per tick)."),
+        QStringLiteral("Loop period, s (default: the law's own: 0.01 for the rail's classic "
+                       "law, whose gains are per tick of the VB's timer; otherwise the "
+                       "profile's)."),
         QStringLiteral("S"));
     const QCommandLineOption massOpt(QStringLiteral("mass-factor"),
                                      QStringLiteral("Multiply the simulated moving mass (0.1-20)."),

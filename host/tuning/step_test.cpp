@@ -305,9 +305,10 @@ StepTestResult runStepTest(const StepTestSpec& spec) {
     c.law = spec.law ? *spec.law
                      : (table ? tableStepLaw(spec.profile.dcTable.law) : spec.profile.loop.law);
     c.gains = spec.gains ? *spec.gains : profileGains(spec.profile, spec.axis, c.law);
-    c.periodS = spec.periodS ? *spec.periodS
-                             : (table ? spec.profile.dcTable.samplePeriodS
-                                      : spec.profile.loop.samplePeriodS);
+    c.periodS = spec.periodS                ? *spec.periodS
+                : table                     ? spec.profile.dcTable.samplePeriodS
+                : c.law == LoopLaw::Classic ? kRailClassicPeriodS
+                                            : spec.profile.loop.samplePeriodS;
     if (!(c.periodS >= kMinSamplePeriodS && c.periodS <= 0.05))
         return refuse(std::move(r), QStringLiteral("the period must be from %1 to 0.05 s (got %2)")
                                         .arg(kMinSamplePeriodS)
