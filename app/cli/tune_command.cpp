@@ -402,7 +402,7 @@ int metricsCommand(const QStringList& args) {
             countsPerMm = p.profile->plant.countsPerMm;
         }
     }
-    const StepMetrics m = measureRun(rec.channels, countsPerMm);
+    const StepMetrics m = measureRun(rec.channels, countsPerMm, commandedTarget(rec));
     if (!m.ok)
         return usage(QStringLiteral("%1: no step to measure: %2")
                          .arg(files.front(), QString::fromStdString(m.problem)));

@@ -54,8 +54,18 @@ QString runSidecarPath(const QString& csvPath) {
     return csvPath + QStringLiteral(".run.json");
 }
 
-StepMetrics measureRun(const RunChannels& c, double countsPerMm) {
+std::optional<double> commandedTarget(const RunRecord& r) {
+    const RunConditions& c = r.conditions;
+    if (!r.hasConditions || c.amplitudeMm == 0.0 ||
+        (c.test != QLatin1String("step") && c.test != QLatin1String("ramp")))
+        return std::nullopt;
+    return c.startMm + c.amplitudeMm;
+}
+
+StepMetrics measureRun(const RunChannels& c, double countsPerMm,
+                       std::optional<double> commandedTargetMm) {
     StepSignals s;
+    s.commandedTargetMm = commandedTargetMm;
     s.timeS = c.timeS;
     s.setpointMm = c.setpointMm;
     s.positionMm = c.positionMm;

@@ -92,8 +92,12 @@ QJsonObject stepMetricsToJson(const StepMetrics& m);
 /// engineered), b0, b1 (DC table, classic).
 QJsonObject tuningGainsToJson(const TuningGains& g, MachineKind kind, LoopLaw law);
 
-/// The metrics of a record's channels.
-StepMetrics measureRun(const RunChannels& c, double countsPerMm);
+/// The metrics of a record's channels; commandedTargetMm: see StepSignals.
+StepMetrics measureRun(const RunChannels& c, double countsPerMm,
+                       std::optional<double> commandedTargetMm = std::nullopt);
+/// The target a recorded step or ramp test commanded (start + amplitude); none for a `run`
+/// trace or a record without conditions.
+std::optional<double> commandedTarget(const RunRecord& r);
 
 /// Writes csvPath and its sidecar atomically; the sidecar also holds metrics when given.
 bool saveRunRecord(const RunRecord& r, const QString& csvPath, const StepMetrics* metrics,

@@ -104,6 +104,13 @@ StepTestResult refuse(StepTestResult r, const QString& why) {
     return r;
 }
 
+/// The test's duration ended before the axis was in position: no success.
+void endedEarly(StepTestResult& r, const RunChannels& ch) {
+    r.abort = StepAbort::TimeLimit;
+    r.abortReason = QStringLiteral("the test ended at %1 s before the axis was in position")
+                        .arg(ch.size() ? ch.timeS.back() : 0.0, 0, 'f', 2);
+}
+
 StepTestResult runRail(const StepTestSpec& spec, StepTestResult r) {
     RunConditions& c = r.record.conditions;
     MachineProfile profile = c.profile;
@@ -167,6 +174,7 @@ StepTestResult runRail(const StepTestSpec& spec, StepTestResult r) {
         if (k >= preTicks && s.inPosition && inPositionSince < 0) inPositionSince = t;
         if (inPositionSince >= 0 && t - inPositionSince >= spec.settleS - 1e-9) break;
     }
+    if (r.abort == StepAbort::None && inPositionSince < 0) endedEarly(r, ch);
     return r;
 }
 
@@ -244,6 +252,7 @@ StepTestResult runTable(const StepTestSpec& spec, StepTestResult r) {
         if (started && !motion.busy() && inPositionSince < 0) inPositionSince = t;
         if (inPositionSince >= 0 && t - inPositionSince >= spec.settleS - 1e-9) break;
     }
+    if (r.abort == StepAbort::None && inPositionSince < 0) endedEarly(r, ch);
     return r;
 }
 
@@ -332,7 +341,8 @@ StepTestResult runStepTest(const StepTestSpec& spec) {
                               .arg(travel.softMaxMm));
     r = table ? runTable(spec, std::move(r)) : runRail(spec, std::move(r));
     r.record.conditions.abortReason = r.abortReason;
-    r.metrics = measureRun(r.record.channels, r.record.conditions.countsPerMm);
+    r.metrics =
+        measureRun(r.record.channels, r.record.conditions.countsPerMm, commandedTarget(r.record));
     return r;
 }
 

@@ -65,6 +65,7 @@ enum class StepAbort : std::uint8_t {
     ServoFault,  ///< following error, soft limit, encoder... (the servo's own alarm)
     Saturation,  ///< more than kMaxSaturationS of continuous saturation
     Envelope,    ///< the position left the test's envelope
+    TimeLimit,   ///< the test's duration ended before the axis was in position
 };
 
 struct StepTestResult {

@@ -165,6 +165,38 @@ TEST_F(CliTune, ARefusedTestLeavesTheOldTraceAsItWas) {
     EXPECT_EQ(contentOf(trace), before);
 }
 
+// Outside tester: `--max-seconds 0.3` on a 100 mm step exited 0 with "step 0 -> 85.1488 mm" and
+// a settling time while the platform was still moving.
+TEST_F(CliTune, ATestEndedBeforeInPositionSaysSoAndMeasuresAgainstTheTarget) {
+    const QString trace = dir.filePath(QStringLiteral("short.csv"));
+    const CliResult r =
+        runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--amplitude"),
+                QStringLiteral("100"), QStringLiteral("--max-seconds"), QStringLiteral("0.3"),
+                QStringLiteral("--trace"), trace, QStringLiteral("--json")});
+    EXPECT_EQ(r.exit, 3) << r.err.toStdString();
+    const QJsonObject o = json(r);
+    EXPECT_TRUE(o.value(QStringLiteral("aborted")).toBool());
+    EXPECT_FALSE(o.value(QStringLiteral("ok")).toBool());
+    EXPECT_EQ(o.value(QStringLiteral("abort_reason")).toString(),
+              QStringLiteral("the test ended at 0.30 s before the axis was in position"));
+    EXPECT_DOUBLE_EQ(o.value(QStringLiteral("target_mm")).toDouble(), 100.0);
+    EXPECT_TRUE(o.value(QStringLiteral("settling_time_s")).isNull());
+    EXPECT_TRUE(o.value(QStringLiteral("settling_time_1count_s")).isNull());
+    EXPECT_TRUE(o.value(QStringLiteral("steady_state_error_counts")).isNull());
+    // Its trace measures the same, against the target its sidecar names.
+    const CliResult m = runCli(
+        {QStringLiteral("tune"), QStringLiteral("metrics"), trace, QStringLiteral("--json")});
+    ASSERT_EQ(m.exit, 0) << m.err.toStdString();
+    const QJsonObject b = json(m);
+    for (const char* key : kMetricKeys)
+        EXPECT_EQ(o.value(QLatin1String(key)), b.value(QLatin1String(key))) << key;
+    const CliResult text =
+        runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--amplitude"),
+                QStringLiteral("100"), QStringLiteral("--max-seconds"), QStringLiteral("0.3")});
+    EXPECT_EQ(text.exit, 3);
+    EXPECT_TRUE(text.out.contains(QStringLiteral("-> 100.0000 mm"))) << text.out.toStdString();
+}
+
 TEST_F(CliTune, UsageErrorsAreOneLine) {
     struct Case {
         QStringList args;
