@@ -256,7 +256,17 @@ int stepCommand(const QStringList& args) {
     if (anyGain) spec.gains = g;
     if (parser.isSet(periodOpt)) {
         double p = 0.0;
-        if (auto e = number(periodOpt, kMinSamplePeriodS, 0.05, p)) return *e;
+        const double lo = table ? kMinTableSamplePeriodS : kMinSamplePeriodS;
+        const double hi = table ? kMaxTableSamplePeriodS : kMaxSamplePeriodS;
+        bool ok = false;
+        p = parser.value(periodOpt).toDouble(&ok);
+        if (!ok || !std::isfinite(p) || p < lo || p > hi)
+            return usage(QStringLiteral("--period on the %1 must be a number from %2 to %3 s, "
+                                        "the profile's range for its loop period (got '%4')")
+                             .arg(table ? QStringLiteral("DC table") : QStringLiteral("rail"))
+                             .arg(lo)
+                             .arg(hi)
+                             .arg(parser.value(periodOpt)));
         spec.periodS = p;
     }
     if (auto e = number(massOpt, 0.1, 20.0, spec.massFactor)) return *e;

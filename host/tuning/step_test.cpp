@@ -318,10 +318,17 @@ StepTestResult runStepTest(const StepTestSpec& spec) {
                 : table                     ? spec.profile.dcTable.samplePeriodS
                 : c.law == LoopLaw::Classic ? kRailClassicPeriodS
                                             : spec.profile.loop.samplePeriodS;
-    if (!(c.periodS >= kMinSamplePeriodS && c.periodS <= 0.05))
-        return refuse(std::move(r), QStringLiteral("the period must be from %1 to 0.05 s (got %2)")
-                                        .arg(kMinSamplePeriodS)
-                                        .arg(c.periodS));
+    // The ranges the profile reader takes: beyond 10 ms the rail's homing and the centre vane
+    // fail (machine_profile.h), and a step aborts on spurious counts lost.
+    const double minPeriodS = table ? kMinTableSamplePeriodS : kMinSamplePeriodS;
+    const double maxPeriodS = table ? kMaxTableSamplePeriodS : kMaxSamplePeriodS;
+    if (!(c.periodS >= minPeriodS && c.periodS <= maxPeriodS))
+        return refuse(std::move(r),
+                      QStringLiteral("the %1's period must be from %2 to %3 s (got %4)")
+                          .arg(table ? QStringLiteral("DC table") : QStringLiteral("rail"))
+                          .arg(minPeriodS)
+                          .arg(maxPeriodS)
+                          .arg(c.periodS));
     const AxisTravel& travel = spec.axis == 'y' ? spec.profile.limits.y : spec.profile.limits.x;
     c.startMm =
         spec.startMm ? *spec.startMm : (table ? 0.5 * (travel.softMinMm + travel.softMaxMm) : 0.0);

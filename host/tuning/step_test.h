@@ -36,6 +36,11 @@ inline DcLaw tableDcLaw(LoopLaw law) {
 /// experiment).
 inline constexpr double kRailClassicPeriodS = 0.01;
 
+/// The DC table's loop periods (dc_table_params.h's dcTable.samplePeriodS); the rail's are
+/// kMinSamplePeriodS to kMaxSamplePeriodS (machine_profile.h).
+inline constexpr double kMinTableSamplePeriodS = 0.001;
+inline constexpr double kMaxTableSamplePeriodS = 0.05;
+
 /// Continuous saturation longer than this aborts a test, s.
 inline constexpr double kMaxSaturationS = 0.2;
 

@@ -197,6 +197,26 @@ TEST_F(CliTune, ATestEndedBeforeInPositionSaysSoAndMeasuresAgainstTheTarget) {
     EXPECT_TRUE(text.out.contains(QStringLiteral("-> 100.0000 mm"))) << text.out.toStdString();
 }
 
+// Outside tester: --period took up to 0.05 s on the rail, where every step from 0.02 s aborted
+// on spurious counts lost. The rail takes the profile's 0.0005-0.01 s, the DC table its own.
+TEST_F(CliTune, TheRailsPeriodIsTheProfilesRange) {
+    const CliResult r =
+        runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--amplitude"),
+                QStringLiteral("10"), QStringLiteral("--period"), QStringLiteral("0.02")});
+    EXPECT_EQ(r.exit, 2);
+    EXPECT_TRUE(
+        r.err.contains(QStringLiteral("--period on the rail must be a number from 0.0005 "
+                                      "to 0.01 s")))
+        << r.err.toStdString();
+    EXPECT_TRUE(r.out.isEmpty());
+    const CliResult t =
+        runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--machine"),
+                QStringLiteral("xy_dc_table"), QStringLiteral("--axis"), QStringLiteral("x"),
+                QStringLiteral("--amplitude"), QStringLiteral("10"), QStringLiteral("--period"),
+                QStringLiteral("0.02")});
+    EXPECT_NE(t.exit, 2) << t.err.toStdString();
+}
+
 TEST_F(CliTune, UsageErrorsAreOneLine) {
     struct Case {
         QStringList args;

@@ -61,6 +61,29 @@ TEST(StepTest, TheRailClassicLawRunsAtItsOwnPeriodUnlessTold) {
     EXPECT_DOUBLE_EQ(r.record.conditions.periodS, MachineProfile::rail().loop.samplePeriodS);
 }
 
+// Outside tester: from 0.02 s every rail step aborted on spurious counts lost; the rail takes
+// the profile reader's periods, 0.5 to 10 ms, the DC table its own, 1 to 50 ms.
+TEST(StepTest, ThePeriodIsLimitedToTheProfilesRange) {
+    StepTestSpec spec;
+    spec.amplitudeMm = 10.0;
+    spec.periodS = 0.02;
+    StepTestResult r = runStepTest(spec);
+    EXPECT_EQ(r.abort, StepAbort::Refused);
+    EXPECT_TRUE(r.abortReason.contains(QStringLiteral("0.0005 to 0.01 s")))
+        << r.abortReason.toStdString();
+    spec.periodS = 0.01;
+    r = runStepTest(spec);
+    EXPECT_NE(r.abort, StepAbort::Refused) << r.abortReason.toStdString();
+    spec.profile = MachineProfile::xyDcTable();
+    spec.axis = 'x';
+    spec.periodS = 0.02;
+    r = runStepTest(spec);
+    EXPECT_NE(r.abort, StepAbort::Refused) << r.abortReason.toStdString();
+    spec.periodS = 0.0005;
+    r = runStepTest(spec);
+    EXPECT_EQ(r.abort, StepAbort::Refused);
+}
+
 TEST(StepTest, MoreThan200MsOfSaturationAbortsTheTest) {
     // The 1996 law with ten times its Kp: a 300 mm step pins the DAC at 255 until the error is
     // under 13 mm, far longer than 200 ms.
