@@ -338,6 +338,14 @@ StepTestResult runStepTest(const StepTestSpec& spec) {
     } else {
         c.countsPerMm = spec.profile.plant.countsPerMm;
     }
+    // A step under one count moves no count (1e-9 mm said "the setpoint never moves") or
+    // measures quantization as overshoot (0.01 mm on the rail: 338 %).
+    if (std::abs(c.amplitudeMm) * c.countsPerMm < 1.0 - 1e-9)
+        return refuse(std::move(r),
+                      QStringLiteral("the amplitude %1 mm is smaller than one encoder count "
+                                     "(%2 mm)")
+                          .arg(c.amplitudeMm)
+                          .arg(1.0 / c.countsPerMm, 0, 'f', 4));
     const double target = c.startMm + c.amplitudeMm;
     for (double p : {c.startMm, target})
         if (!(p >= travel.softMinMm && p <= travel.softMaxMm))

@@ -217,6 +217,21 @@ TEST_F(CliTune, TheRailsPeriodIsTheProfilesRange) {
     EXPECT_NE(t.exit, 2) << t.err.toStdString();
 }
 
+// Outside tester: --amplitude 1e-9 exited 0 with "no metrics", 0.01 mm reported 338 %
+// overshoot. A step smaller than one count is refused.
+TEST_F(CliTune, AnAmplitudeUnderOneCountIsRefused) {
+    for (const char* a : {"1e-9", "0.01", "-0.04"}) {
+        const CliResult r = runCli({QStringLiteral("tune"), QStringLiteral("step"),
+                                    QStringLiteral("--amplitude"), QString::fromLatin1(a)});
+        EXPECT_EQ(r.exit, 2) << a << r.out.toStdString();
+        EXPECT_TRUE(r.err.contains(QStringLiteral("smaller than one encoder count (0.0439 mm)")))
+            << r.err.toStdString();
+    }
+    const CliResult one = runCli({QStringLiteral("tune"), QStringLiteral("step"),
+                                  QStringLiteral("--amplitude"), QStringLiteral("0.0439")});
+    EXPECT_NE(one.exit, 2) << one.err.toStdString();
+}
+
 TEST_F(CliTune, UsageErrorsAreOneLine) {
     struct Case {
         QStringList args;
