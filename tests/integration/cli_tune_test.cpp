@@ -91,6 +91,24 @@ TEST_F(CliTune, MetricsReadTheTracesRunWrites) {
         << text.out.toStdString();
 }
 
+// Outside tester: `run --trace` wrote positions with 4 decimals, so the metrics of a shipped
+// program said "settling time (1 count) not reached" next to "steady-state error 1.00 counts".
+TEST_F(CliTune, AShippedProgramsRunTraceSettlesWithinOneCount) {
+    const QString trace = dir.filePath(QStringLiteral("doc.csv"));
+    const CliResult run =
+        runCli({QStringLiteral("run"), QStringLiteral("--virtual-time"), QStringLiteral("--trace"),
+                trace, QStringLiteral(TRILHO_PROGRAMS_DIR "/exemplo_documento.G")});
+    ASSERT_EQ(run.exit, 0) << run.err.toStdString();
+    const CliResult m = runCli(
+        {QStringLiteral("tune"), QStringLiteral("metrics"), trace, QStringLiteral("--json")});
+    ASSERT_EQ(m.exit, 0) << m.err.toStdString();
+    const QJsonObject o = json(m);
+    const double ss = o.value(QStringLiteral("steady_state_error_counts")).toDouble();
+    ASSERT_LE(std::abs(ss), 1.0 + 1e-9) << ss;
+    EXPECT_TRUE(o.value(QStringLiteral("settling_time_1count_s")).isDouble())
+        << m.out.toStdString();
+}
+
 TEST_F(CliTune, BadTracesAreNamedWithLineAndColumn) {
     const QString bad = trilho::test::writeIn(dir, QStringLiteral("bad.csv"),
                                               "t_s,setpoint_mm,position_mm\n0,0,0\n0.1,1,x\n");
