@@ -2,6 +2,7 @@
 // of any trace (issue 21 items 1, 2 and 8). Every number comes from core/tuning and
 // host/tuning, the same code the screens call; this file parses and formats only.
 #include <QCommandLineParser>
+#include <QFile>
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -46,7 +47,7 @@ QString metricsText(const StepMetrics& m) {
     if (!m.ok) return QStringLiteral("no metrics: %1\n").arg(QString::fromStdString(m.problem));
     QString t;
     auto row = [&](const char* name, const QString& value, const char* unit) {
-        const bool reached = value != QLatin1String("not reached") && *unit;
+        const bool reached = !value.startsWith(QLatin1String("not ")) && *unit;
         t += QStringLiteral("  %1 %2%3\n")
                  .arg(QLatin1String(name), -28)
                  .arg(value)
@@ -399,6 +400,23 @@ int metricsCommand(const QStringList& args) {
     const RunLoad load = loadRunRecord(QString::fromLocal8Bit(localPath(files.front())), axis);
     if (!load.record) return usage(load.error);
     const RunRecord& rec = *load.record;
+    if (axis) {
+        // --axis chooses a column set of an XY trace; a single-axis trace (the rail's, or a
+        // table axis' step) has none to choose: refuse rather than ignore it, unless its
+        // sidecar names that very axis.
+        QFile f(QString::fromLocal8Bit(localPath(files.front())));
+        const bool twoAxes =
+            f.open(QIODevice::ReadOnly) && f.readLine(64 * 1024).contains("x_setpoint_mm");
+        if (!twoAxes && !(rec.hasConditions && rec.conditions.axis == axis))
+            return usage(
+                QStringLiteral("--axis %1: %2 is a trace of one axis (%3); --axis is "
+                               "for a trace of two")
+                    .arg(QLatin1Char(axis))
+                    .arg(files.front())
+                    .arg(rec.hasConditions && rec.conditions.axis
+                             ? QStringLiteral("axis %1").arg(QLatin1Char(rec.conditions.axis))
+                             : QStringLiteral("the rail")));
+    }
     double countsPerMm = 22.8;
     if (rec.hasConditions) {
         countsPerMm = rec.conditions.countsPerMm;
@@ -413,6 +431,7 @@ int metricsCommand(const QStringList& args) {
         }
     }
     const StepMetrics m = measureRun(rec.channels, countsPerMm, commandedTarget(rec));
+    const bool aborted = rec.hasConditions && !rec.conditions.abortReason.isEmpty();
     if (!m.ok)
         return usage(QStringLiteral("%1: no step to measure: %2")
                          .arg(files.front(), QString::fromStdString(m.problem)));
@@ -420,9 +439,15 @@ int metricsCommand(const QStringList& args) {
         QJsonObject o = runJsonObject(m, rec.hasConditions ? &rec.conditions : nullptr);
         o[QStringLiteral("trace")] = files.front();
         if (!rec.hasConditions) o[QStringLiteral("counts_per_mm")] = countsPerMm;
+        // A test aborted when it ran stays aborted when measured again (its sidecar says why).
+        o[QStringLiteral("aborted")] = aborted;
+        o[QStringLiteral("abort_reason")] =
+            aborted ? QJsonValue(rec.conditions.abortReason) : QJsonValue(QJsonValue::Null);
+        o[QStringLiteral("ok")] = m.ok && !aborted;
         out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
     } else {
         out(QStringLiteral("%1: %2 ticks\n").arg(files.front()).arg(m.samples));
+        if (aborted) out(QStringLiteral("ABORTED: %1\n").arg(rec.conditions.abortReason));
         out(metricsText(m));
     }
     return kOk;

@@ -250,6 +250,48 @@ TEST_F(CliTune, AnAmplitudeUnderOneCountIsRefused) {
     EXPECT_NE(one.exit, 2) << one.err.toStdString();
 }
 
+// Outside tester: `tune metrics --json` on an aborted trace said ok: true and dropped the abort;
+// the text said "not recorded s"; --axis x on a rail trace was silently ignored.
+TEST_F(CliTune, MetricsOfAnAbortedTraceCarryTheAbort) {
+    const QString trace = dir.filePath(QStringLiteral("aborted.csv"));
+    const CliResult step =
+        runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--amplitude"),
+                QStringLiteral("300"), QStringLiteral("--law"), QStringLiteral("classic"),
+                QStringLiteral("--kp"), QStringLiteral("2"), QStringLiteral("--period"),
+                QStringLiteral("0.01"), QStringLiteral("--trace"), trace});
+    ASSERT_EQ(step.exit, 3) << step.err.toStdString();
+    const CliResult m = runCli(
+        {QStringLiteral("tune"), QStringLiteral("metrics"), trace, QStringLiteral("--json")});
+    ASSERT_EQ(m.exit, 0) << m.err.toStdString();
+    const QJsonObject o = json(m);
+    EXPECT_FALSE(o.value(QStringLiteral("ok")).toBool());
+    EXPECT_TRUE(o.value(QStringLiteral("aborted")).toBool());
+    EXPECT_TRUE(
+        o.value(QStringLiteral("abort_reason")).toString().contains(QStringLiteral("200 ms")))
+        << m.out.toStdString();
+    const CliResult text = runCli({QStringLiteral("tune"), QStringLiteral("metrics"), trace});
+    EXPECT_TRUE(text.out.contains(QStringLiteral("ABORTED: "))) << text.out.toStdString();
+    const CliResult rail = runCli({QStringLiteral("tune"), QStringLiteral("metrics"), trace,
+                                   QStringLiteral("--axis"), QStringLiteral("x")});
+    EXPECT_EQ(rail.exit, 2);
+    EXPECT_TRUE(rail.err.contains(QStringLiteral("--axis x: "))) << rail.err.toStdString();
+    // A run trace has no saturation column: "not recorded", without a unit.
+    const QString prog =
+        trilho::test::writeIn(dir, QStringLiteral("m.G"), "N10 G1 X20 F50\nN20 M2\n");
+    const QString runTrace = dir.filePath(QStringLiteral("run.csv"));
+    ASSERT_EQ(runCli({QStringLiteral("run"), QStringLiteral("--virtual-time"),
+                      QStringLiteral("--trace"), runTrace, prog})
+                  .exit,
+              0);
+    const CliResult r = runCli({QStringLiteral("tune"), QStringLiteral("metrics"), runTrace});
+    EXPECT_TRUE(r.out.contains(QStringLiteral("not recorded\n"))) << r.out.toStdString();
+    EXPECT_FALSE(r.out.contains(QStringLiteral("not recorded s"))) << r.out.toStdString();
+    const QJsonObject ok = json(runCli(
+        {QStringLiteral("tune"), QStringLiteral("metrics"), runTrace, QStringLiteral("--json")}));
+    EXPECT_TRUE(ok.value(QStringLiteral("ok")).toBool());
+    EXPECT_FALSE(ok.value(QStringLiteral("aborted")).toBool());
+}
+
 TEST_F(CliTune, UsageErrorsAreOneLine) {
     struct Case {
         QStringList args;
