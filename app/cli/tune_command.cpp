@@ -100,7 +100,9 @@ int stepCommand(const QStringList& args) {
         "virtual time: hold still 10 ms, move by --amplitude through the machine's servo, "
         "record every tick until in position for --settle seconds, and measure it. Always "
         "inside the soft limits, with the profile's following-error limit; aborted on a servo "
-        "alarm, on more than 200 ms of continuous saturation, or on leaving the envelope."));
+        "alarm, on more than 200 ms of continuous saturation, on leaving the envelope, or when "
+        "--max-seconds ends before the axis is in position; measured against the commanded "
+        "target."));
     const QCommandLineOption machineOpt(
         QStringLiteral("machine"),
         QStringLiteral("Machine profile: a file or a shipped name (rail, xy_dc_table; default "

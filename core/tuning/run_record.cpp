@@ -59,6 +59,10 @@ std::optional<double> commandedTarget(const RunRecord& r) {
     if (!r.hasConditions || c.amplitudeMm == 0.0 ||
         (c.test != QLatin1String("step") && c.test != QLatin1String("ramp")))
         return std::nullopt;
+    // A table axis moves by the amplitude from where it measured itself at the start (its
+    // first setpoint); the rail to start + amplitude.
+    if (c.axis && !r.channels.setpointMm.empty())
+        return r.channels.setpointMm.front() + c.amplitudeMm;
     return c.startMm + c.amplitudeMm;
 }
 

@@ -95,8 +95,9 @@ QJsonObject tuningGainsToJson(const TuningGains& g, MachineKind kind, LoopLaw la
 /// The metrics of a record's channels; commandedTargetMm: see StepSignals.
 StepMetrics measureRun(const RunChannels& c, double countsPerMm,
                        std::optional<double> commandedTargetMm = std::nullopt);
-/// The target a recorded step or ramp test commanded (start + amplitude); none for a `run`
-/// trace or a record without conditions.
+/// The target a recorded step or ramp test commanded (start + amplitude: a table axis from its
+/// first setpoint, where it measured itself); none for a `run` trace or a record without
+/// conditions.
 std::optional<double> commandedTarget(const RunRecord& r);
 
 /// Writes csvPath and its sidecar atomically; the sidecar also holds metrics when given.

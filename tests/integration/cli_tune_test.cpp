@@ -104,7 +104,7 @@ TEST_F(CliTune, AShippedProgramsRunTraceSettlesWithinOneCount) {
     ASSERT_EQ(m.exit, 0) << m.err.toStdString();
     const QJsonObject o = json(m);
     const double ss = o.value(QStringLiteral("steady_state_error_counts")).toDouble();
-    ASSERT_LE(std::abs(ss), 1.0 + 1e-9) << ss;
+    ASSERT_LE(std::abs(ss), 1.0 + 1e-4) << ss;  // the setpoint has 4 decimals
     EXPECT_TRUE(o.value(QStringLiteral("settling_time_1count_s")).isDouble())
         << m.out.toStdString();
 }
