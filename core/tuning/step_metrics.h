@@ -48,7 +48,10 @@ struct StepMetrics {
     // step_info (times from the step, s; NaN when not reached)
     double riseTimeS = 0.0;
     double settlingTimeS = 0.0;
-    double settlingMinMm = 0.0;  ///< displacement after the rise (step_info's SettlingMin)
+    /// Displacement after the rise (step_info's SettlingMin and SettlingMax). Like step_info
+    /// (control/timeresp.py: min(yout[tr_upper_index:].min(), InfValue), max(..., InfValue))
+    /// they are clamped with the step A: a response that stays short of A has SettlingMax A.
+    double settlingMinMm = 0.0;
     double settlingMaxMm = 0.0;
     double overshootPct = 0.0;
     double undershootPct = 0.0;

@@ -142,6 +142,18 @@ TEST(StepMetrics, AgainstTheCommandedTargetWhatWasNotReachedIsNotReached) {
     EXPECT_DOUBLE_EQ(m.overshootPct, 0.0);
 }
 
+// Outside tester (item 10) asked for unclamped SettlingMin/Max; python-control's step_info
+// clamps them with the final value (settling_min = min(yout[tr_upper_index:].min(), InfValue)),
+// and trilho follows it: a response that stays under the step has SettlingMax = the step.
+TEST(StepMetrics, SettlingMinAndMaxAreClampedWithTheStepAsStepInfo) {
+    const Trace tr =
+        sampled(0.0, 10.0, 1e-3, 1.0, [](double t) { return std::min(9.9, 20.0 * t); });
+    const StepMetrics m = measureStep(tr.signals());
+    ASSERT_TRUE(m.ok);
+    EXPECT_DOUBLE_EQ(m.settlingMaxMm, 10.0);
+    EXPECT_NEAR(m.settlingMinMm, 9.0, 0.03);
+}
+
 TEST(StepMetrics, OneCountOffIsInsideTheOneCountBand) {
     // Settled exactly one count short from 0.2 s on (quantized positions, as the rail reads).
     const double c = 1.0 / 22.8;
