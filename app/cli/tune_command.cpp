@@ -296,7 +296,7 @@ int stepCommand(const QStringList& args) {
                                  .arg(p));
         }
         if (const QString refused = refuseToReplace(runSidecarPath(tracePath));
-            !refused.isEmpty() && QFileInfo(tracePath).isFile())
+            !refused.isEmpty() && (!QFileInfo::exists(tracePath) || QFileInfo(tracePath).isFile()))
             return usage(QStringLiteral("--trace: the sidecar %1").arg(refused));
     }
     // Open the trace before the test: a path that cannot be written is said before any work.

@@ -2,6 +2,7 @@
 // own trace and on any trace `run` writes; bad input is named; aborts exit 3.
 #include <gtest/gtest.h>
 
+#include <QDir>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
@@ -165,6 +166,14 @@ TEST_F(CliTune, TheSidecarNeverOverwritesTheProfileUnderTest) {
     EXPECT_EQ(same.exit, 2);
     EXPECT_TRUE(same.err.contains(QStringLiteral("machine profile"))) << same.err.toStdString();
     EXPECT_EQ(contentOf(profile), before);
+    // A directory where the sidecar goes is refused before the test runs, for a new trace too.
+    ASSERT_TRUE(QDir(dir.path()).mkdir(QStringLiteral("new.run.json")));
+    const CliResult side = runCli(
+        {QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--amplitude"),
+         QStringLiteral("10"), QStringLiteral("--trace"), dir.filePath(QStringLiteral("new.csv"))});
+    EXPECT_EQ(side.exit, 2);
+    EXPECT_TRUE(side.err.contains(QStringLiteral("new.run.json"))) << side.err.toStdString();
+    EXPECT_FALSE(QFile::exists(dir.filePath(QStringLiteral("new.csv"))));
 }
 
 // Outside tester: a refused test (outside the soft limits) left the good trace empty.
