@@ -21,6 +21,7 @@
 #include "app/cli/commands.h"
 #include "core/machine/dc_calibration.h"
 #include "core/machine/machine_profile.h"
+#include "core/machine/replace_target.h"
 #include "hal/serial/serial_line.h"
 #include "host/common/data_paths.h"
 
@@ -129,6 +130,10 @@ int calibrateCommand(const QStringList& args) {
     if (parser.isSet(writeOpt) && !parser.isSet(travelOpt))
         return usageError(kCommand, QStringLiteral("--write-profile needs --travel-mm: the mm per "
                                                    "pulse comes from the travel measured"));
+    if (parser.isSet(writeOpt)) {
+        if (const QString refused = refuseToReplace(parser.value(writeOpt)); !refused.isEmpty())
+            return usageError(kCommand, QStringLiteral("--write-profile: %1").arg(refused));
+    }
     const QString profilePath = machineProfilePath(parser.value(machineOpt));
     const ProfileLoad load = loadMachineProfile(profilePath);
     if (!load.profile) return usageError(kCommand, load.error);
@@ -196,6 +201,8 @@ int calibrateCommand(const QStringList& args) {
         // Check what is written: a profile trilho reads back.
         const ProfileLoad again = machineProfileFromJson(bytes, parser.value(writeOpt));
         if (!again.profile) return usageError(kCommand, again.error);
+        if (const QString refused = refuseToReplace(parser.value(writeOpt)); !refused.isEmpty())
+            return usageError(kCommand, QStringLiteral("--write-profile: %1").arg(refused));
         QSaveFile out(parser.value(writeOpt));
         if (!out.open(QIODevice::WriteOnly) || out.write(bytes) != bytes.size() || !out.commit())
             return usageError(kCommand, QStringLiteral("cannot write profile %1: %2")

@@ -44,13 +44,16 @@ constexpr const char* kRailTraceHeader =
     "t_s,block_n,setpoint_mm,position_mm,error_mm,velocity_mm_s,drive\n";
 
 void railTraceRow(TraceFile& trace, const TraceRow& r) {
-    // std::to_chars, the columns and decimals of the former "%.4f,%d,%.4f,%.4f,%.4f,%.3f,%d".
+    // std::to_chars, the columns of the former "%.4f,%d,%.4f,%.4f,%.4f,%.3f,%d"; the position
+    // and the error with 6 decimals, as a tune step's record: a count on the rail is
+    // 0.0438596 mm, and 4 decimals put one count off outside the one-count band of `tune
+    // metrics`.
     CsvRow row;
     row.num(r.timeS, 4)
         .integer(r.blockN)
         .num(r.setpointMm, 4)
-        .num(r.positionMm, 4)
-        .num(r.errorMm, 4)
+        .num(r.positionMm, 6)
+        .num(r.errorMm, 6)
         .num(r.velocityMmS, 3)
         .integer(r.drive)
         .end();

@@ -146,6 +146,19 @@ class TraceFile {
         file_.reset();
         return error_.isEmpty();
     }
+    /// Abandons the file without writing it: a file that was there stays as it was (a test
+    /// refused before it ran must not leave an empty trace where a good one was).
+    void cancel() {
+        if (!file_) return;
+        if (auto* save = dynamic_cast<QSaveFile*>(file_.get())) {
+            save->cancelWriting();
+            save->commit();  // discards
+        } else {
+            static_cast<QFile*>(file_.get())->close();
+        }
+        file_.reset();
+        buffer_.clear();
+    }
     bool active() const { return file_ != nullptr; }
     QString error() const {
         return QStringLiteral("cannot write trace '%1': %2").arg(path_, error_);

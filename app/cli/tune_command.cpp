@@ -2,6 +2,7 @@
 // of any trace (issue 21 items 1, 2 and 8). Every number comes from core/tuning and
 // host/tuning, the same code the screens call; this file parses and formats only.
 #include <QCommandLineParser>
+#include <QFile>
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -11,6 +12,7 @@
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
 #include "app/cli/run_support.h"
+#include "core/machine/replace_target.h"
 #include "core/tuning/run_record.h"
 #include "host/common/data_paths.h"
 #include "host/tuning/step_test.h"
@@ -45,7 +47,7 @@ QString metricsText(const StepMetrics& m) {
     if (!m.ok) return QStringLiteral("no metrics: %1\n").arg(QString::fromStdString(m.problem));
     QString t;
     auto row = [&](const char* name, const QString& value, const char* unit) {
-        const bool reached = value != QLatin1String("not reached") && *unit;
+        const bool reached = !value.startsWith(QLatin1String("not ")) && *unit;
         t += QStringLiteral("  %1 %2%3\n")
                  .arg(QLatin1String(name), -28)
                  .arg(value)
@@ -98,7 +100,9 @@ int stepCommand(const QStringList& args) {
         "virtual time: hold still 10 ms, move by --amplitude through the machine's servo, "
         "record every tick until in position for --settle seconds, and measure it. Always "
         "inside the soft limits, with the profile's following-error limit; aborted on a servo "
-        "alarm, on more than 200 ms of continuous saturation, or on leaving the envelope."));
+        "alarm, on more than 200 ms of continuous saturation, on leaving the envelope, or when "
+        "--max-seconds ends before the axis is in position; measured against the commanded "
+        "target."));
     const QCommandLineOption machineOpt(
         QStringLiteral("machine"),
         QStringLiteral("Machine profile: a file or a shipped name (rail, xy_dc_table; default "
@@ -137,7 +141,9 @@ int stepCommand(const QStringList& args) {
                                    QStringLiteral("B"));
     const QCommandLineOption periodOpt(
         QStringLiteral("period"),
-        QStringLiteral("Loop period, s (default: the profile's; the 1996 gains are per tick)."),
+        QStringLiteral("Loop period, s (default: the law's own: 0.01 for the rail's classic "
+                       "law, whose gains are per tick of the VB's timer; otherwise the "
+                       "profile's)."),
         QStringLiteral("S"));
     const QCommandLineOption massOpt(QStringLiteral("mass-factor"),
                                      QStringLiteral("Multiply the simulated moving mass (0.1-20)."),
@@ -159,7 +165,7 @@ int stepCommand(const QStringList& args) {
     const QCommandLineOption traceOpt(
         QStringLiteral("trace"),
         QStringLiteral("Write every tick to this CSV (and its conditions and metrics to the "
-                       "JSON beside it)."),
+                       "sidecar beside it: FILE.run.json)."),
         QStringLiteral("FILE.csv"));
     const QCommandLineOption jsonOpt(QStringLiteral("json"),
                                      QStringLiteral("Print one JSON object."));
@@ -253,7 +259,17 @@ int stepCommand(const QStringList& args) {
     if (anyGain) spec.gains = g;
     if (parser.isSet(periodOpt)) {
         double p = 0.0;
-        if (auto e = number(periodOpt, kMinSamplePeriodS, 0.05, p)) return *e;
+        const double lo = table ? kMinTableSamplePeriodS : kMinSamplePeriodS;
+        const double hi = table ? kMaxTableSamplePeriodS : kMaxSamplePeriodS;
+        bool ok = false;
+        p = parser.value(periodOpt).toDouble(&ok);
+        if (!ok || !std::isfinite(p) || p < lo || p > hi)
+            return usage(QStringLiteral("--period on the %1 must be a number from %2 to %3 s, "
+                                        "the profile's range for its loop period (got '%4')")
+                             .arg(table ? QStringLiteral("DC table") : QStringLiteral("rail"))
+                             .arg(lo)
+                             .arg(hi)
+                             .arg(parser.value(periodOpt)));
         spec.periodS = p;
     }
     if (auto e = number(massOpt, 0.1, 20.0, spec.massFactor)) return *e;
@@ -269,6 +285,20 @@ int stepCommand(const QStringList& args) {
                              .arg(parser.value(seedOpt)));
     }
     const QString tracePath = parser.value(traceOpt);
+    if (!tracePath.isEmpty()) {
+        // Never overwrite the profile the test runs on, with the trace or with its sidecar.
+        const QString profileFile =
+            QFileInfo(machineProfilePath(parser.value(machineOpt))).canonicalFilePath();
+        for (const QString& p : {tracePath, runSidecarPath(tracePath)}) {
+            if (!profileFile.isEmpty() && QFileInfo(p).canonicalFilePath() == profileFile)
+                return usage(QStringLiteral("--trace: '%1' is the machine profile of the test; "
+                                            "write the trace to another name")
+                                 .arg(p));
+        }
+        if (const QString refused = refuseToReplace(runSidecarPath(tracePath));
+            !refused.isEmpty() && (!QFileInfo::exists(tracePath) || QFileInfo(tracePath).isFile()))
+            return usage(QStringLiteral("--trace: the sidecar %1").arg(refused));
+    }
     // Open the trace before the test: a path that cannot be written is said before any work.
     TraceFile trace;
     QString traceError;
@@ -276,7 +306,7 @@ int stepCommand(const QStringList& args) {
 
     const StepTestResult r = runStepTest(spec);
     if (r.abort == StepAbort::Refused) {
-        trace.close();
+        trace.cancel();  // the old trace stays as it was
         return usage(r.abortReason);
     }
     bool traceOk = true;
@@ -372,6 +402,23 @@ int metricsCommand(const QStringList& args) {
     const RunLoad load = loadRunRecord(QString::fromLocal8Bit(localPath(files.front())), axis);
     if (!load.record) return usage(load.error);
     const RunRecord& rec = *load.record;
+    if (axis) {
+        // --axis chooses a column set of an XY trace; a single-axis trace (the rail's, or a
+        // table axis' step) has none to choose: refuse rather than ignore it, unless its
+        // sidecar names that very axis.
+        QFile f(QString::fromLocal8Bit(localPath(files.front())));
+        const bool twoAxes =
+            f.open(QIODevice::ReadOnly) && f.readLine(64 * 1024).contains("x_setpoint_mm");
+        if (!twoAxes && !(rec.hasConditions && rec.conditions.axis == axis))
+            return usage(
+                QStringLiteral("--axis %1: %2 is a trace of one axis (%3); --axis is "
+                               "for a trace of two")
+                    .arg(QLatin1Char(axis))
+                    .arg(files.front())
+                    .arg(rec.hasConditions && rec.conditions.axis
+                             ? QStringLiteral("axis %1").arg(QLatin1Char(rec.conditions.axis))
+                             : QStringLiteral("the rail")));
+    }
     double countsPerMm = 22.8;
     if (rec.hasConditions) {
         countsPerMm = rec.conditions.countsPerMm;
@@ -385,7 +432,8 @@ int metricsCommand(const QStringList& args) {
             countsPerMm = p.profile->plant.countsPerMm;
         }
     }
-    const StepMetrics m = measureRun(rec.channels, countsPerMm);
+    const StepMetrics m = measureRun(rec.channels, countsPerMm, commandedTarget(rec));
+    const bool aborted = rec.hasConditions && !rec.conditions.abortReason.isEmpty();
     if (!m.ok)
         return usage(QStringLiteral("%1: no step to measure: %2")
                          .arg(files.front(), QString::fromStdString(m.problem)));
@@ -393,9 +441,15 @@ int metricsCommand(const QStringList& args) {
         QJsonObject o = runJsonObject(m, rec.hasConditions ? &rec.conditions : nullptr);
         o[QStringLiteral("trace")] = files.front();
         if (!rec.hasConditions) o[QStringLiteral("counts_per_mm")] = countsPerMm;
+        // A test aborted when it ran stays aborted when measured again (its sidecar says why).
+        o[QStringLiteral("aborted")] = aborted;
+        o[QStringLiteral("abort_reason")] =
+            aborted ? QJsonValue(rec.conditions.abortReason) : QJsonValue(QJsonValue::Null);
+        o[QStringLiteral("ok")] = m.ok && !aborted;
         out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
     } else {
         out(QStringLiteral("%1: %2 ticks\n").arg(files.front()).arg(m.samples));
+        if (aborted) out(QStringLiteral("ABORTED: %1\n").arg(rec.conditions.abortReason));
         out(metricsText(m));
     }
     return kOk;

@@ -11,6 +11,7 @@
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
+#include "core/machine/replace_target.h"
 #include "core/tuning/rail_autotune.h"
 #include "host/common/data_paths.h"
 #include "host/session/sim_rail_rig.h"
@@ -207,6 +208,8 @@ int tuneRail(const QStringList& args, bool autotune) {
         if (!canonical.isEmpty() && canonical == QFileInfo(in).canonicalFilePath())
             return usage(QStringLiteral(
                 "--write-profile must not name the profile being tuned (write a new file)"));
+        if (const QString refused = refuseToReplace(outPath); !refused.isEmpty())
+            return usage(QStringLiteral("--write-profile: %1").arg(refused));
     }
 
     SimRailRig rig(profile, seed, kTuneStartMm, profile.plant.massFactor * massFactor);

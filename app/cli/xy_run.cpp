@@ -35,9 +35,9 @@ void traceRow(TraceFile& trace, const XyStatus& s) {
     row.num(s.timeS, 4)
         .integer(s.blockN)
         .num(s.sample.x.setpointMm, 4)
-        .num(s.sample.x.positionMm, 4)
+        .num(s.sample.x.positionMm, 6)  // 6: a count within `tune metrics`' one-count band
         .num(s.sample.y.setpointMm, 4)
-        .num(s.sample.y.positionMm, 4)
+        .num(s.sample.y.positionMm, 6)
         .num(s.sample.x.drive, 3)
         .num(s.sample.y.drive, 3);
     if (s.sample.pen == PenState::Down)

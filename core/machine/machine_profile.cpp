@@ -1,5 +1,7 @@
 #include "core/machine/machine_profile.h"
 
+#include "core/machine/replace_target.h"
+
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -557,6 +559,10 @@ std::optional<NumberRange> machineProfileRange(const QString& key) {
 }
 
 bool saveMachineProfile(const MachineProfile& profile, const QString& path, QString* error) {
+    if (const QString refused = refuseToReplace(path); !refused.isEmpty()) {
+        if (error) *error = QStringLiteral("cannot save machine profile: %1").arg(refused);
+        return false;
+    }
     QSaveFile f(path);
     if (!f.open(QIODevice::WriteOnly) || f.write(machineProfileToJson(profile)) < 0 ||
         !f.commit()) {

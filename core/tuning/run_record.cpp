@@ -13,6 +13,7 @@
 #include <limits>
 #include <string_view>
 
+#include "core/machine/replace_target.h"
 #include "core/tuning/trace_writer.h"
 
 namespace trilho {
@@ -49,12 +50,26 @@ const char* runCsvHeader() {
 
 QString runSidecarPath(const QString& csvPath) {
     if (csvPath.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive))
-        return csvPath.left(csvPath.size() - 4) + QStringLiteral(".json");
-    return csvPath + QStringLiteral(".json");
+        return csvPath.left(csvPath.size() - 4) + QStringLiteral(".run.json");
+    return csvPath + QStringLiteral(".run.json");
 }
 
-StepMetrics measureRun(const RunChannels& c, double countsPerMm) {
+std::optional<double> commandedTarget(const RunRecord& r) {
+    const RunConditions& c = r.conditions;
+    if (!r.hasConditions || c.amplitudeMm == 0.0 ||
+        (c.test != QLatin1String("step") && c.test != QLatin1String("ramp")))
+        return std::nullopt;
+    // A table axis moves by the amplitude from where it measured itself at the start (its
+    // first setpoint); the rail to start + amplitude.
+    if (c.axis && !r.channels.setpointMm.empty())
+        return r.channels.setpointMm.front() + c.amplitudeMm;
+    return c.startMm + c.amplitudeMm;
+}
+
+StepMetrics measureRun(const RunChannels& c, double countsPerMm,
+                       std::optional<double> commandedTargetMm) {
     StepSignals s;
+    s.commandedTargetMm = commandedTargetMm;
     s.timeS = c.timeS;
     s.setpointMm = c.setpointMm;
     s.positionMm = c.positionMm;
@@ -171,6 +186,10 @@ namespace {
 
 bool writeAtomically(const QString& path, const QByteArray& head, const RunChannels* rows,
                      bool integerDrive, QString* error) {
+    if (const QString refused = refuseToReplace(path); !refused.isEmpty()) {
+        *error = QStringLiteral("cannot write %1").arg(refused);
+        return false;
+    }
     QSaveFile f(path);
     if (!f.open(QIODevice::WriteOnly)) {
         *error = QStringLiteral("cannot write '%1': %2").arg(path, f.errorString());
@@ -203,6 +222,12 @@ bool writeAtomically(const QString& path, const QByteArray& head, const RunChann
 
 bool saveRunRecord(const RunRecord& r, const QString& csvPath, const StepMetrics* metrics,
                    QString* error) {
+    // Neither file is touched when either may not be replaced.
+    for (const QString& p : {csvPath, runSidecarPath(csvPath)})
+        if (const QString refused = refuseToReplace(p); !refused.isEmpty()) {
+            *error = QStringLiteral("cannot write %1").arg(refused);
+            return false;
+        }
     const QByteArray head = QByteArray(runCsvHeader()) + '\n';
     if (!writeAtomically(csvPath, head, &r.channels, true, error)) return false;
     return writeAtomically(runSidecarPath(csvPath), runConditionsToJson(r.conditions, metrics),
@@ -427,7 +452,7 @@ std::optional<RunConditions> runConditionsFromJson(const QByteArray& json, const
     };
     if (o.value(QStringLiteral("format")).toString() != QLatin1String("trilho-run/1"))
         return bad(QStringLiteral("format"),
-                   QStringLiteral("expected \"trilho-run/1\" (got '%1')")
+                   QStringLiteral("expected \"trilho-run/1\" (got '%1'): not a run sidecar")
                        .arg(o.value(QStringLiteral("format")).toVariant().toString()));
     RunConditions c;
     const QJsonValue prof = o.value(QStringLiteral("profile"));

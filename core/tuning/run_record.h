@@ -1,9 +1,9 @@
 #pragma once
 // One recorded run: the conditions it ran under and every channel of every tick. Saved as a
-// CSV (one row per tick) with a JSON sidecar (the conditions, the full machine profile and the
-// metrics), both written atomically (a temporary file renamed over the old one), and read back
-// with errors that name the file, line, column and value. The CSV's first seven columns are
-// those of `trilho-cli run --trace` on the rail, so one reader takes both.
+// CSV (one row per tick) with a JSON sidecar NAME.run.json (the conditions, the full machine
+// profile and the metrics), both written atomically (a temporary file renamed over the old one),
+// and read back with errors that name the file, line, column and value. The CSV's first seven
+// columns are those of `trilho-cli run --trace` on the rail, so one reader takes both.
 #include <QJsonObject>
 #include <QString>
 #include <cstdint>
@@ -80,7 +80,9 @@ inline constexpr std::size_t kMaxRunRows = 5'000'000;
 const char* runCsvHeader();
 /// Row k of the record's CSV (with its newline) into row. integerDrive: the rail's DAC code.
 void formatRunCsvRow(const RunChannels& c, std::size_t k, bool integerDrive, CsvRow& row);
-/// The sidecar's path for a CSV path: "run.csv" -> "run.json", "run" -> "run.json".
+/// The sidecar's path for a CSV path: "run.csv" -> "run.run.json", "run" -> "run.run.json" (not
+/// "run.json": a machine profile beside its trace, rail.json and rail.csv, is no sidecar and is
+/// never overwritten by one).
 QString runSidecarPath(const QString& csvPath);
 
 /// The metrics as JSON, snake case with units in the keys (rise_time_s, overshoot_pct...); NaN
@@ -90,8 +92,13 @@ QJsonObject stepMetricsToJson(const StepMetrics& m);
 /// engineered), b0, b1 (DC table, classic).
 QJsonObject tuningGainsToJson(const TuningGains& g, MachineKind kind, LoopLaw law);
 
-/// The metrics of a record's channels.
-StepMetrics measureRun(const RunChannels& c, double countsPerMm);
+/// The metrics of a record's channels; commandedTargetMm: see StepSignals.
+StepMetrics measureRun(const RunChannels& c, double countsPerMm,
+                       std::optional<double> commandedTargetMm = std::nullopt);
+/// The target a recorded step or ramp test commanded (start + amplitude: a table axis from its
+/// first setpoint, where it measured itself); none for a `run` trace or a record without
+/// conditions.
+std::optional<double> commandedTarget(const RunRecord& r);
 
 /// Writes csvPath and its sidecar atomically; the sidecar also holds metrics when given.
 bool saveRunRecord(const RunRecord& r, const QString& csvPath, const StepMetrics* metrics,

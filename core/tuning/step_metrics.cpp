@@ -54,7 +54,7 @@ StepMetrics measureStep(const StepSignals& s) {
 
     // The step: where the setpoint first leaves its first value.
     m.startMm = sp[0];
-    m.targetMm = sp[n - 1];
+    m.targetMm = s.commandedTargetMm ? *s.commandedTargetMm : sp[n - 1];
     std::size_t k0 = 0;
     while (k0 < n && sp[k0] == sp[0])
         ++k0;
@@ -127,7 +127,10 @@ StepMetrics measureStep(const StepSignals& s) {
     m.undershootPct = yUs < 0 ? 100.0 * std::abs(yUs / a) : 0.0;
     m.peakMm = peak;
     m.peakTimeS = t[peakK] - m.stepTimeS;
-    m.steadyStateErrorCounts = (sp[n - 1] - x[n - 1]) * s.countsPerMm;
+    m.steadyStateErrorCounts = s.commandedTargetMm && std::isnan(m.settlingTimeS)
+                                   ? kNaN
+                                   : (s.commandedTargetMm ? m.targetMm : sp[n - 1]) - x[n - 1];
+    m.steadyStateErrorCounts *= s.countsPerMm;
     m.iae = iae, m.itae = itae, m.ise = ise;
     m.ok = true;
     return m;

@@ -15,6 +15,7 @@
 // the time the loop was saturated. Plain arithmetic on arrays; allocates nothing.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -27,6 +28,10 @@ struct StepSignals {
     /// Per sample, non-zero while the loop output was saturated; empty: not recorded.
     std::span<const std::uint8_t> saturated;
     double countsPerMm = 22.8;
+    /// Where the test commanded the axis to go (a step test's start + amplitude); when given,
+    /// the step is measured against it, not against the setpoint at the last sample, so a test
+    /// that ended (or was aborted) before it got there shows what it did not reach as NaN.
+    std::optional<double> commandedTargetMm;
 };
 
 struct StepMetrics {
@@ -36,14 +41,17 @@ struct StepMetrics {
     std::size_t samples = 0;
     double stepTimeS = 0.0;    ///< first sample whose setpoint differs from the first one
     double startMm = 0.0;      ///< setpoint before the step
-    double targetMm = 0.0;     ///< setpoint at the last sample
+    double targetMm = 0.0;     ///< the commanded target, else the setpoint at the last sample
     double amplitudeMm = 0.0;  ///< targetMm - startMm (signed)
     double durationS = 0.0;    ///< last sample - step time
 
     // step_info (times from the step, s; NaN when not reached)
     double riseTimeS = 0.0;
     double settlingTimeS = 0.0;
-    double settlingMinMm = 0.0;  ///< displacement after the rise (step_info's SettlingMin)
+    /// Displacement after the rise (step_info's SettlingMin and SettlingMax). Like step_info
+    /// (control/timeresp.py: min(yout[tr_upper_index:].min(), InfValue), max(..., InfValue))
+    /// they are clamped with the step A: a response that stays short of A has SettlingMax A.
+    double settlingMinMm = 0.0;
     double settlingMaxMm = 0.0;
     double overshootPct = 0.0;
     double undershootPct = 0.0;
@@ -51,12 +59,14 @@ struct StepMetrics {
     double peakTimeS = 0.0;
 
     // CNC additions
-    double settlingTime1CountS = 0.0;     ///< last time |e| was above one count, from the step
-    double steadyStateErrorCounts = 0.0;  ///< (setpoint - position) x counts/mm at the end
-    double iae = 0.0;                     ///< mm.s
-    double itae = 0.0;                    ///< mm.s^2
-    double ise = 0.0;                     ///< mm^2.s
-    double followingErrorMaxMm = 0.0;     ///< max |setpoint - position| over the whole run
+    double settlingTime1CountS = 0.0;  ///< last time |e| was above one count, from the step
+    /// (target - position) x counts/mm at the end; with a commanded target, NaN when the
+    /// response never settled within the 2 % band (no steady state was reached).
+    double steadyStateErrorCounts = 0.0;
+    double iae = 0.0;                  ///< mm.s
+    double itae = 0.0;                 ///< mm.s^2
+    double ise = 0.0;                  ///< mm^2.s
+    double followingErrorMaxMm = 0.0;  ///< max |setpoint - position| over the whole run
     double followingErrorRmsMm = 0.0;
     bool saturationKnown = false;  ///< the signals carried a saturation channel
     double saturatedTimeS = 0.0;   ///< sum of the periods that began saturated

@@ -31,6 +31,16 @@ inline DcLaw tableDcLaw(LoopLaw law) {
     return law == LoopLaw::Engineered ? DcLaw::Engineered : DcLaw::SeedSigned;
 }
 
+/// The rail's classic law runs at its own period, the VB timer's 10 ms, wherever it is chosen
+/// (its gains are per tick); a test's explicit period still overrides it (a teaching
+/// experiment).
+inline constexpr double kRailClassicPeriodS = 0.01;
+
+/// The DC table's loop periods (dc_table_params.h's dcTable.samplePeriodS); the rail's are
+/// kMinSamplePeriodS to kMaxSamplePeriodS (machine_profile.h).
+inline constexpr double kMinTableSamplePeriodS = 0.001;
+inline constexpr double kMaxTableSamplePeriodS = 0.05;
+
 /// Continuous saturation longer than this aborts a test, s.
 inline constexpr double kMaxSaturationS = 0.2;
 
@@ -41,7 +51,8 @@ struct StepTestSpec {
     std::optional<double> startMm;     ///< default: rail centre; table: the middle of the axis
     std::optional<LoopLaw> law;        ///< default: the profile's
     std::optional<TuningGains> gains;  ///< default: the profile's for the law
-    /// Loop period, s; default: the profile's (the 1996 gains are per tick: try 0.01 vs 0.001).
+    /// Loop period, s; default: the law's (the rail's classic law: kRailClassicPeriodS, its own;
+    /// otherwise the profile's). The 1996 gains are per tick: try 0.01 vs 0.001.
     std::optional<double> periodS;
     double massFactor = 1.0;  ///< multiplies the profile's (the loop is not told)
     std::uint64_t seed = 1;
@@ -59,6 +70,7 @@ enum class StepAbort : std::uint8_t {
     ServoFault,  ///< following error, soft limit, encoder... (the servo's own alarm)
     Saturation,  ///< more than kMaxSaturationS of continuous saturation
     Envelope,    ///< the position left the test's envelope
+    TimeLimit,   ///< the test's duration ended before the axis was in position
 };
 
 struct StepTestResult {

@@ -2,6 +2,7 @@
 // exit statuses their --help lists happen as it says, the JSON carries the keys the issue
 // names, and the profile --write-profile writes is one `run --machine` takes.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -88,6 +89,37 @@ TEST(CliTuneModel, AutoWritesAProfileThatRunTakes) {
          QStringLiteral("--machine"), out,
          QStringLiteral(TRILHO_PROGRAMS_DIR) + QStringLiteral("/ciclo_carga.G")});
     EXPECT_EQ(run.exit, 0) << run.out.toStdString() << run.err.toStdString();
+}
+
+bool isFifo(const QString& path) {
+    struct stat st {};
+    return ::stat(QFile::encodeName(path).constData(), &st) == 0 && S_ISFIFO(st.st_mode);
+}
+
+// Outside tester: as root, `tune auto --write-profile /dev/full` turned /dev/full into a regular
+// file (a temporary file renamed over it). A FIFO stands in for the device here; calibrate's
+// --write-profile is refused the same way, before it opens the port.
+TEST(CliTuneModel, WriteProfileNeverReplacesADeviceOrAFifo) {
+    QTemporaryDir dir;
+    const QString fifo = dir.filePath(QStringLiteral("out.json"));
+    ASSERT_EQ(::mkfifo(QFile::encodeName(fifo).constData(), 0600), 0);
+    const CliResult r = runCli(tune("auto", {QStringLiteral("--write-profile"), fifo}));
+    EXPECT_EQ(r.exit, 2);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("'%1' exists and is not a regular file").arg(fifo)))
+        << r.err.toStdString();
+    EXPECT_TRUE(r.out.isEmpty()) << "nothing ran: " << r.out.toStdString();
+    EXPECT_TRUE(isFifo(fifo));
+    const CliResult d = runCli(tune("auto", {QStringLiteral("--write-profile"), dir.path()}));
+    EXPECT_EQ(d.exit, 2);
+    EXPECT_TRUE(d.err.contains(dir.path())) << d.err.toStdString();
+    const CliResult c = runCli({QStringLiteral("calibrate"), QStringLiteral("--machine"),
+                                QStringLiteral("xy_dc_table"), QStringLiteral("--port"),
+                                QStringLiteral("/nonexistent-port"), QStringLiteral("--travel-mm"),
+                                QStringLiteral("100"), QStringLiteral("--write-profile"), fifo});
+    EXPECT_EQ(c.exit, 2);
+    EXPECT_TRUE(c.err.contains(QStringLiteral("'%1' exists and is not a regular file").arg(fifo)))
+        << c.err.toStdString();
+    EXPECT_TRUE(isFifo(fifo));
 }
 
 TEST(CliTuneModel, BadInputIsAUsageErrorInOneLine) {

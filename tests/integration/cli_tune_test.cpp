@@ -2,6 +2,7 @@
 // own trace and on any trace `run` writes; bad input is named; aborts exit 3.
 #include <gtest/gtest.h>
 
+#include <QDir>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
@@ -91,6 +92,24 @@ TEST_F(CliTune, MetricsReadTheTracesRunWrites) {
         << text.out.toStdString();
 }
 
+// Outside tester: `run --trace` wrote positions with 4 decimals, so the metrics of a shipped
+// program said "settling time (1 count) not reached" next to "steady-state error 1.00 counts".
+TEST_F(CliTune, AShippedProgramsRunTraceSettlesWithinOneCount) {
+    const QString trace = dir.filePath(QStringLiteral("doc.csv"));
+    const CliResult run =
+        runCli({QStringLiteral("run"), QStringLiteral("--virtual-time"), QStringLiteral("--trace"),
+                trace, QStringLiteral(TRILHO_PROGRAMS_DIR "/exemplo_documento.G")});
+    ASSERT_EQ(run.exit, 0) << run.err.toStdString();
+    const CliResult m = runCli(
+        {QStringLiteral("tune"), QStringLiteral("metrics"), trace, QStringLiteral("--json")});
+    ASSERT_EQ(m.exit, 0) << m.err.toStdString();
+    const QJsonObject o = json(m);
+    const double ss = o.value(QStringLiteral("steady_state_error_counts")).toDouble();
+    ASSERT_LE(std::abs(ss), 1.0 + 1e-4) << ss;  // the setpoint has 4 decimals
+    EXPECT_TRUE(o.value(QStringLiteral("settling_time_1count_s")).isDouble())
+        << m.out.toStdString();
+}
+
 TEST_F(CliTune, BadTracesAreNamedWithLineAndColumn) {
     const QString bad = trilho::test::writeIn(dir, QStringLiteral("bad.csv"),
                                               "t_s,setpoint_mm,position_mm\n0,0,0\n0.1,1,x\n");
@@ -118,6 +137,168 @@ TEST_F(CliTune, AnAbortedTestExitsThreeAndSaysWhy) {
     EXPECT_TRUE(o.value(QStringLiteral("aborted")).toBool());
     EXPECT_TRUE(
         o.value(QStringLiteral("abort_reason")).toString().contains(QStringLiteral("200 ms")));
+}
+
+QByteArray contentOf(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+// Outside tester: the sidecar NAME.json overwrote the profile myrail.json under test.
+TEST_F(CliTune, TheSidecarNeverOverwritesTheProfileUnderTest) {
+    const QString profile = dir.filePath(QStringLiteral("myrail.json"));
+    ASSERT_TRUE(QFile::copy(QStringLiteral(TRILHO_MACHINES_DIR "/rail.json"), profile));
+    const QByteArray before = contentOf(profile);
+    const QString trace = dir.filePath(QStringLiteral("myrail.csv"));
+    const CliResult r = runCli({QStringLiteral("tune"), QStringLiteral("step"),
+                                QStringLiteral("--machine"), profile, QStringLiteral("--amplitude"),
+                                QStringLiteral("10"), QStringLiteral("--trace"), trace});
+    ASSERT_EQ(r.exit, 0) << r.err.toStdString();
+    EXPECT_EQ(contentOf(profile), before);
+    EXPECT_TRUE(QFile::exists(dir.filePath(QStringLiteral("myrail.run.json"))));
+    // tune metrics beside the unrelated profile reads the run's own sidecar.
+    const CliResult m = runCli({QStringLiteral("tune"), QStringLiteral("metrics"), trace});
+    EXPECT_EQ(m.exit, 0) << m.err.toStdString();
+    // The trace itself may not be the profile either.
+    const CliResult same = runCli(
+        {QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--machine"), profile,
+         QStringLiteral("--amplitude"), QStringLiteral("10"), QStringLiteral("--trace"), profile});
+    EXPECT_EQ(same.exit, 2);
+    EXPECT_TRUE(same.err.contains(QStringLiteral("machine profile"))) << same.err.toStdString();
+    EXPECT_EQ(contentOf(profile), before);
+    // A directory where the sidecar goes is refused before the test runs, for a new trace too.
+    ASSERT_TRUE(QDir(dir.path()).mkdir(QStringLiteral("new.run.json")));
+    const CliResult side = runCli(
+        {QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--amplitude"),
+         QStringLiteral("10"), QStringLiteral("--trace"), dir.filePath(QStringLiteral("new.csv"))});
+    EXPECT_EQ(side.exit, 2);
+    EXPECT_TRUE(side.err.contains(QStringLiteral("new.run.json"))) << side.err.toStdString();
+    EXPECT_FALSE(QFile::exists(dir.filePath(QStringLiteral("new.csv"))));
+}
+
+// Outside tester: a refused test (outside the soft limits) left the good trace empty.
+TEST_F(CliTune, ARefusedTestLeavesTheOldTraceAsItWas) {
+    const QString trace = dir.filePath(QStringLiteral("good.csv"));
+    const CliResult good =
+        runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--amplitude"),
+                QStringLiteral("100"), QStringLiteral("--trace"), trace});
+    ASSERT_EQ(good.exit, 0) << good.err.toStdString();
+    const QByteArray before = contentOf(trace);
+    ASSERT_GT(before.size(), 1000);
+    const CliResult refused =
+        runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--amplitude"),
+                QStringLiteral("5000"), QStringLiteral("--trace"), trace});
+    EXPECT_EQ(refused.exit, 2) << refused.err.toStdString();
+    EXPECT_EQ(contentOf(trace), before);
+}
+
+// Outside tester: `--max-seconds 0.3` on a 100 mm step exited 0 with "step 0 -> 85.1488 mm" and
+// a settling time while the platform was still moving.
+TEST_F(CliTune, ATestEndedBeforeInPositionSaysSoAndMeasuresAgainstTheTarget) {
+    const QString trace = dir.filePath(QStringLiteral("short.csv"));
+    const CliResult r =
+        runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--amplitude"),
+                QStringLiteral("100"), QStringLiteral("--max-seconds"), QStringLiteral("0.3"),
+                QStringLiteral("--trace"), trace, QStringLiteral("--json")});
+    EXPECT_EQ(r.exit, 3) << r.err.toStdString();
+    const QJsonObject o = json(r);
+    EXPECT_TRUE(o.value(QStringLiteral("aborted")).toBool());
+    EXPECT_FALSE(o.value(QStringLiteral("ok")).toBool());
+    EXPECT_EQ(o.value(QStringLiteral("abort_reason")).toString(),
+              QStringLiteral("the test ended at 0.30 s before the axis was in position"));
+    EXPECT_DOUBLE_EQ(o.value(QStringLiteral("target_mm")).toDouble(), 100.0);
+    EXPECT_TRUE(o.value(QStringLiteral("settling_time_s")).isNull());
+    EXPECT_TRUE(o.value(QStringLiteral("settling_time_1count_s")).isNull());
+    EXPECT_TRUE(o.value(QStringLiteral("steady_state_error_counts")).isNull());
+    // Its trace measures the same, against the target its sidecar names.
+    const CliResult m = runCli(
+        {QStringLiteral("tune"), QStringLiteral("metrics"), trace, QStringLiteral("--json")});
+    ASSERT_EQ(m.exit, 0) << m.err.toStdString();
+    const QJsonObject b = json(m);
+    for (const char* key : kMetricKeys)
+        EXPECT_EQ(o.value(QLatin1String(key)), b.value(QLatin1String(key))) << key;
+    const CliResult text =
+        runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--amplitude"),
+                QStringLiteral("100"), QStringLiteral("--max-seconds"), QStringLiteral("0.3")});
+    EXPECT_EQ(text.exit, 3);
+    EXPECT_TRUE(text.out.contains(QStringLiteral("-> 100.0000 mm"))) << text.out.toStdString();
+}
+
+// Outside tester: --period took up to 0.05 s on the rail, where every step from 0.02 s aborted
+// on spurious counts lost. The rail takes the profile's 0.0005-0.01 s, the DC table its own.
+TEST_F(CliTune, TheRailsPeriodIsTheProfilesRange) {
+    const CliResult r =
+        runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--amplitude"),
+                QStringLiteral("10"), QStringLiteral("--period"), QStringLiteral("0.02")});
+    EXPECT_EQ(r.exit, 2);
+    EXPECT_TRUE(
+        r.err.contains(QStringLiteral("--period on the rail must be a number from 0.0005 "
+                                      "to 0.01 s")))
+        << r.err.toStdString();
+    EXPECT_TRUE(r.out.isEmpty());
+    const CliResult t =
+        runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--machine"),
+                QStringLiteral("xy_dc_table"), QStringLiteral("--axis"), QStringLiteral("x"),
+                QStringLiteral("--amplitude"), QStringLiteral("10"), QStringLiteral("--period"),
+                QStringLiteral("0.02")});
+    EXPECT_NE(t.exit, 2) << t.err.toStdString();
+}
+
+// Outside tester: --amplitude 1e-9 exited 0 with "no metrics", 0.01 mm reported 338 %
+// overshoot. A step smaller than one count is refused.
+TEST_F(CliTune, AnAmplitudeUnderOneCountIsRefused) {
+    for (const char* a : {"1e-9", "0.01", "-0.04"}) {
+        const CliResult r = runCli({QStringLiteral("tune"), QStringLiteral("step"),
+                                    QStringLiteral("--amplitude"), QString::fromLatin1(a)});
+        EXPECT_EQ(r.exit, 2) << a << r.out.toStdString();
+        EXPECT_TRUE(r.err.contains(QStringLiteral("smaller than one encoder count (0.0439 mm)")))
+            << r.err.toStdString();
+    }
+    const CliResult one = runCli({QStringLiteral("tune"), QStringLiteral("step"),
+                                  QStringLiteral("--amplitude"), QStringLiteral("0.0439")});
+    EXPECT_NE(one.exit, 2) << one.err.toStdString();
+}
+
+// Outside tester: `tune metrics --json` on an aborted trace said ok: true and dropped the abort;
+// the text said "not recorded s"; --axis x on a rail trace was silently ignored.
+TEST_F(CliTune, MetricsOfAnAbortedTraceCarryTheAbort) {
+    const QString trace = dir.filePath(QStringLiteral("aborted.csv"));
+    const CliResult step =
+        runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--amplitude"),
+                QStringLiteral("300"), QStringLiteral("--law"), QStringLiteral("classic"),
+                QStringLiteral("--kp"), QStringLiteral("2"), QStringLiteral("--period"),
+                QStringLiteral("0.01"), QStringLiteral("--trace"), trace});
+    ASSERT_EQ(step.exit, 3) << step.err.toStdString();
+    const CliResult m = runCli(
+        {QStringLiteral("tune"), QStringLiteral("metrics"), trace, QStringLiteral("--json")});
+    ASSERT_EQ(m.exit, 0) << m.err.toStdString();
+    const QJsonObject o = json(m);
+    EXPECT_FALSE(o.value(QStringLiteral("ok")).toBool());
+    EXPECT_TRUE(o.value(QStringLiteral("aborted")).toBool());
+    EXPECT_TRUE(
+        o.value(QStringLiteral("abort_reason")).toString().contains(QStringLiteral("200 ms")))
+        << m.out.toStdString();
+    const CliResult text = runCli({QStringLiteral("tune"), QStringLiteral("metrics"), trace});
+    EXPECT_TRUE(text.out.contains(QStringLiteral("ABORTED: "))) << text.out.toStdString();
+    const CliResult rail = runCli({QStringLiteral("tune"), QStringLiteral("metrics"), trace,
+                                   QStringLiteral("--axis"), QStringLiteral("x")});
+    EXPECT_EQ(rail.exit, 2);
+    EXPECT_TRUE(rail.err.contains(QStringLiteral("--axis x: "))) << rail.err.toStdString();
+    // A run trace has no saturation column: "not recorded", without a unit.
+    const QString prog =
+        trilho::test::writeIn(dir, QStringLiteral("m.G"), "N10 G1 X20 F50\nN20 M2\n");
+    const QString runTrace = dir.filePath(QStringLiteral("run.csv"));
+    ASSERT_EQ(runCli({QStringLiteral("run"), QStringLiteral("--virtual-time"),
+                      QStringLiteral("--trace"), runTrace, prog})
+                  .exit,
+              0);
+    const CliResult r = runCli({QStringLiteral("tune"), QStringLiteral("metrics"), runTrace});
+    EXPECT_TRUE(r.out.contains(QStringLiteral("not recorded\n"))) << r.out.toStdString();
+    EXPECT_FALSE(r.out.contains(QStringLiteral("not recorded s"))) << r.out.toStdString();
+    const QJsonObject ok = json(runCli(
+        {QStringLiteral("tune"), QStringLiteral("metrics"), runTrace, QStringLiteral("--json")}));
+    EXPECT_TRUE(ok.value(QStringLiteral("ok")).toBool());
+    EXPECT_FALSE(ok.value(QStringLiteral("aborted")).toBool());
 }
 
 TEST_F(CliTune, UsageErrorsAreOneLine) {

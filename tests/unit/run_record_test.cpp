@@ -3,9 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <QDir>
 #include <QFile>
 #include <QTemporaryDir>
+
+#include <QFileInfo>
 #include <cmath>
 
 namespace trilho {
@@ -59,7 +62,7 @@ TEST(RunRecord, CsvAndJsonRoundTripExactly) {
     const StepMetrics m = measureRun(r.channels, 22.8);
     QString error;
     ASSERT_TRUE(saveRunRecord(r, path, &m, &error)) << error.toStdString();
-    ASSERT_TRUE(QFile::exists(dir.filePath(QStringLiteral("run.json"))));
+    ASSERT_TRUE(QFile::exists(dir.filePath(QStringLiteral("run.run.json"))));
     const RunLoad back = loadRunRecord(path);
     ASSERT_TRUE(back.record) << back.error.toStdString();
     const RunChannels& a = r.channels;
@@ -162,13 +165,13 @@ TEST(RunRecord, BadSidecarsAndNonFilesAreRefused) {
     ASSERT_TRUE(f.open(QIODevice::WriteOnly));
     f.write("t_s,setpoint_mm,position_mm\n0,0,0\n0.1,1,0.5\n");
     f.close();
-    QFile j(dir.filePath(QStringLiteral("r.json")));
+    QFile j(dir.filePath(QStringLiteral("r.run.json")));
     ASSERT_TRUE(j.open(QIODevice::WriteOnly));
     j.write("{\n  \"format\": \"trilho-run/1\",\n  \"law\": oops\n}\n");
     j.close();
     RunLoad l = loadRunRecord(csv);
     EXPECT_FALSE(l.record);
-    EXPECT_TRUE(l.error.contains(QStringLiteral("r.json:3:"))) << l.error.toStdString();
+    EXPECT_TRUE(l.error.contains(QStringLiteral("r.run.json:3:"))) << l.error.toStdString();
     ASSERT_TRUE(j.open(QIODevice::WriteOnly | QIODevice::Truncate));
     j.write("{\"format\": \"trilho-run/2\"}");
     j.close();
@@ -187,6 +190,60 @@ TEST(RunRecord, SavingOverAnUnwritablePlaceSaysWhere) {
     EXPECT_FALSE(
         saveRunRecord(sampleRecord(), QStringLiteral("/nonexistent-dir/r.csv"), nullptr, &error));
     EXPECT_TRUE(error.contains(QStringLiteral("/nonexistent-dir/r.csv"))) << error.toStdString();
+}
+
+// Outside tester: the sidecar was NAME.json, so `tune step --machine myrail.json --trace
+// myrail.csv` overwrote the profile, and `tune metrics rail.csv` failed beside a rail.json.
+TEST(RunRecord, TheSidecarIsNameRunJsonAndAProfileBesideIsIgnored) {
+    EXPECT_EQ(runSidecarPath(QStringLiteral("/a/rail.csv")), QStringLiteral("/a/rail.run.json"));
+    EXPECT_EQ(runSidecarPath(QStringLiteral("rail")), QStringLiteral("rail.run.json"));
+    QTemporaryDir dir;
+    const QString csv = dir.filePath(QStringLiteral("rail.csv"));
+    const QString profile = dir.filePath(QStringLiteral("rail.json"));
+    QFile p(profile);
+    ASSERT_TRUE(p.open(QIODevice::WriteOnly));
+    const QByteArray profileBytes = machineProfileToJson(MachineProfile::rail());
+    p.write(profileBytes);
+    p.close();
+    QString error;
+    ASSERT_TRUE(saveRunRecord(sampleRecord(), csv, nullptr, &error)) << error.toStdString();
+    ASSERT_TRUE(p.open(QIODevice::ReadOnly));
+    EXPECT_EQ(p.readAll(), profileBytes);  // the profile beside is untouched
+    p.close();
+    RunLoad l = loadRunRecord(csv);
+    ASSERT_TRUE(l.record) << l.error.toStdString();
+    EXPECT_TRUE(l.record->hasConditions);
+    // A bare trace beside an unrelated profile: the profile is not read as its sidecar.
+    ASSERT_TRUE(QFile::remove(runSidecarPath(csv)));
+    l = loadRunRecord(csv);
+    ASSERT_TRUE(l.record) << l.error.toStdString();
+    EXPECT_FALSE(l.record->hasConditions);
+    // A NAME.run.json that is not a run sidecar is an error naming it.
+    ASSERT_TRUE(QFile::copy(profile, runSidecarPath(csv)));
+    l = loadRunRecord(csv);
+    EXPECT_FALSE(l.record);
+    EXPECT_TRUE(l.error.startsWith(runSidecarPath(csv))) << l.error.toStdString();
+    EXPECT_TRUE(l.error.contains(QStringLiteral("not a run sidecar"))) << l.error.toStdString();
+}
+
+TEST(RunRecord, SavingNeverReplacesAFifoOrADirectory) {
+    QTemporaryDir dir;
+    const QString fifo = dir.filePath(QStringLiteral("pipe.csv"));
+    ASSERT_EQ(::mkfifo(QFile::encodeName(fifo).constData(), 0600), 0);
+    QString error;
+    EXPECT_FALSE(saveRunRecord(sampleRecord(), fifo, nullptr, &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("'%1' exists and is not a regular file").arg(fifo)))
+        << error.toStdString();
+    struct stat st {};
+    ASSERT_EQ(::stat(QFile::encodeName(fifo).constData(), &st), 0);
+    EXPECT_TRUE(S_ISFIFO(st.st_mode));
+    // A directory where the sidecar goes: neither file is written.
+    const QString csv = dir.filePath(QStringLiteral("r.csv"));
+    ASSERT_TRUE(QDir(dir.path()).mkdir(QFileInfo(runSidecarPath(csv)).fileName()));
+    error.clear();
+    EXPECT_FALSE(saveRunRecord(sampleRecord(), csv, nullptr, &error));
+    EXPECT_TRUE(error.contains(runSidecarPath(csv))) << error.toStdString();
+    EXPECT_FALSE(QFileInfo::exists(csv));
 }
 
 TEST(CsvRow, FormatsFixedAndEmptyFields) {

@@ -121,6 +121,39 @@ TEST(StepMetrics, AResponseThatNeverSettlesHasNoSettlingTime) {
     EXPECT_NEAR(m.riseTimeS, 0.4, 1.5e-3);
 }
 
+// Outside tester: a test ended at 0.3 s while its planned setpoint was at 85 of 100 mm and
+// was reported as a step to 85 mm, settled. Against the commanded target it has not settled.
+TEST(StepMetrics, AgainstTheCommandedTargetWhatWasNotReachedIsNotReached) {
+    Trace tr = sampled(0.0, 85.0, 1e-3, 0.3, [](double t) { return std::min(85.0, 400.0 * t); });
+    const StepMetrics last = measureStep(tr.signals());
+    ASSERT_TRUE(last.ok);
+    EXPECT_DOUBLE_EQ(last.targetMm, 85.0);  // what the reader alone can tell
+    EXPECT_TRUE(std::isfinite(last.settlingTimeS));
+    StepSignals s = tr.signals();
+    s.commandedTargetMm = 100.0;
+    const StepMetrics m = measureStep(s);
+    ASSERT_TRUE(m.ok) << m.problem;
+    EXPECT_DOUBLE_EQ(m.targetMm, 100.0);
+    EXPECT_DOUBLE_EQ(m.amplitudeMm, 100.0);
+    EXPECT_TRUE(std::isnan(m.settlingTimeS));
+    EXPECT_TRUE(std::isnan(m.settlingTime1CountS));
+    EXPECT_TRUE(std::isnan(m.steadyStateErrorCounts));
+    EXPECT_TRUE(std::isnan(m.riseTimeS));  // 90 % of 100 mm never reached
+    EXPECT_DOUBLE_EQ(m.overshootPct, 0.0);
+}
+
+// Outside tester (item 10) asked for unclamped SettlingMin/Max; python-control's step_info
+// clamps them with the final value (settling_min = min(yout[tr_upper_index:].min(), InfValue)),
+// and trilho follows it: a response that stays under the step has SettlingMax = the step.
+TEST(StepMetrics, SettlingMinAndMaxAreClampedWithTheStepAsStepInfo) {
+    const Trace tr =
+        sampled(0.0, 10.0, 1e-3, 1.0, [](double t) { return std::min(9.9, 20.0 * t); });
+    const StepMetrics m = measureStep(tr.signals());
+    ASSERT_TRUE(m.ok);
+    EXPECT_DOUBLE_EQ(m.settlingMaxMm, 10.0);
+    EXPECT_NEAR(m.settlingMinMm, 9.0, 0.03);
+}
+
 TEST(StepMetrics, OneCountOffIsInsideTheOneCountBand) {
     // Settled exactly one count short from 0.2 s on (quantized positions, as the rail reads).
     const double c = 1.0 / 22.8;

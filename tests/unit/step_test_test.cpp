@@ -39,6 +39,51 @@ TEST(StepTest, ARailStepRunsToItsEndAndRecordsEveryTick) {
     EXPECT_EQ(r.record.conditions.gains.kp, MachineProfile::rail().loop.engineered.kp);
 }
 
+// Outside tester: `tune step --law classic` without --period ran the 1996 law at the
+// profile's 1 ms; the law's own period is the VB timer's 10 ms. An explicit period overrides.
+TEST(StepTest, TheRailClassicLawRunsAtItsOwnPeriodUnlessTold) {
+    StepTestSpec spec;
+    spec.amplitudeMm = 10.0;
+    spec.law = LoopLaw::Classic;
+    spec.maxDurationS = 0.05;
+    StepTestResult r = runStepTest(spec);
+    ASSERT_NE(r.abort, StepAbort::Refused) << r.abortReason.toStdString();
+    EXPECT_DOUBLE_EQ(r.record.conditions.periodS, kRailClassicPeriodS);
+    EXPECT_DOUBLE_EQ(kRailClassicPeriodS, 0.01);
+    spec.periodS = 0.001;
+    r = runStepTest(spec);
+    ASSERT_NE(r.abort, StepAbort::Refused) << r.abortReason.toStdString();
+    EXPECT_DOUBLE_EQ(r.record.conditions.periodS, 0.001);
+    // The engineered law keeps the profile's period.
+    spec.periodS.reset();
+    spec.law = LoopLaw::Engineered;
+    r = runStepTest(spec);
+    EXPECT_DOUBLE_EQ(r.record.conditions.periodS, MachineProfile::rail().loop.samplePeriodS);
+}
+
+// Outside tester: from 0.02 s every rail step aborted on spurious counts lost; the rail takes
+// the profile reader's periods, 0.5 to 10 ms, the DC table its own, 1 to 50 ms.
+TEST(StepTest, ThePeriodIsLimitedToTheProfilesRange) {
+    StepTestSpec spec;
+    spec.amplitudeMm = 10.0;
+    spec.periodS = 0.02;
+    StepTestResult r = runStepTest(spec);
+    EXPECT_EQ(r.abort, StepAbort::Refused);
+    EXPECT_TRUE(r.abortReason.contains(QStringLiteral("0.0005 to 0.01 s")))
+        << r.abortReason.toStdString();
+    spec.periodS = 0.01;
+    r = runStepTest(spec);
+    EXPECT_NE(r.abort, StepAbort::Refused) << r.abortReason.toStdString();
+    spec.profile = MachineProfile::xyDcTable();
+    spec.axis = 'x';
+    spec.periodS = 0.02;
+    r = runStepTest(spec);
+    EXPECT_NE(r.abort, StepAbort::Refused) << r.abortReason.toStdString();
+    spec.periodS = 0.0005;
+    r = runStepTest(spec);
+    EXPECT_EQ(r.abort, StepAbort::Refused);
+}
+
 TEST(StepTest, MoreThan200MsOfSaturationAbortsTheTest) {
     // The 1996 law with ten times its Kp: a 300 mm step pins the DAC at 255 until the error is
     // under 13 mm, far longer than 200 ms.

@@ -168,7 +168,7 @@ class WorkbenchTest : public QObject {
         const QString path = dir.filePath(QStringLiteral("run.csv"));
         QString error;
         QVERIFY2(w.saveRun(0, path, &error), qPrintable(error));
-        QVERIFY(QFile::exists(dir.filePath(QStringLiteral("run.json"))));
+        QVERIFY(QFile::exists(dir.filePath(QStringLiteral("run.run.json"))));
         QVERIFY2(w.loadRun(path, &error), qPrintable(error));
         QCOMPARE(w.runs().size(), std::size_t(2));
         const WorkbenchRun& a = *w.runs()[0];

@@ -39,7 +39,7 @@ namespace {
 
 // The 1996 law's own period (the VB's `Amostragem Interval=10`, `periodo=10`): the workbench
 // runs it there unless the teacher sets another period on purpose.
-constexpr double kClassicPeriodMs = 10.0;
+constexpr double kClassicPeriodMs = kRailClassicPeriodS * 1e3;
 
 QDoubleSpinBox* spinBox(QWidget* parent, const char* name, double lo, double hi, int decimals,
                         double step) {
@@ -511,7 +511,8 @@ bool WorkbenchWindow::addRecord(RunRecord record, const QString& name, QString* 
         return false;
     }
     StepTestResult r;
-    r.metrics = measureRun(record.channels, record.conditions.countsPerMm);
+    // A step test's record is measured against its commanded target, as when it ran.
+    r.metrics = measureRun(record.channels, record.conditions.countsPerMm, commandedTarget(record));
     r.abortReason = record.conditions.abortReason;
     r.record = std::move(record);
     addRun(std::move(r), name);
