@@ -312,7 +312,7 @@ TEST(TableFirmware, XAndYSentSecondsApartAreOneSetPointAsOnTheSeedsPanel) {
     EXPECT_EQ(device.stats().staleBytes, 0u);
     EXPECT_TRUE(device.moving());
     run(5.0);
-    EXPECT_EQ(out, (std::vector<std::uint8_t>{table_wire::kAck, 0, 60, 0, 20, 0, 0, 0, 0, 86}));
+    EXPECT_EQ(out, (std::vector<std::uint8_t>{table_wire::kAck, 0, 60, 0, 20, 0, 0, 0, 0, 1, 87}));
     EXPECT_NEAR(device.table().positionMm(0), 60.0, device.table().axis(0).mmPerCount());
     EXPECT_NEAR(device.table().positionMm(1), 20.0, device.table().axis(1).mmPerCount());
     // A gap inside a pair is still a lost byte: that partial is dropped.
