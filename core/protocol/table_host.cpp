@@ -52,18 +52,63 @@ void TableHost::receive(std::uint8_t byte, double nowS) {
     if (answer) answered(*answer, nowS);
 }
 
+void TableHost::countedAhead(const table_wire::DecodedAnswer& a, std::uint8_t expected) {
+    // The board started moves the host never had answered: one whose answer (and the next
+    // one's) was lost, to a set point line noise changed, or a late copy run again.
+    reached_.reset();
+    offPath_ = true;
+    fail("the table's answer to " + name(a.setPoint) + " counts " + std::to_string(a.moves) +
+         " moves started where the program had " + std::to_string(expected) +
+         " sent and answered (mod 256): it ran a set point that was not sent (line noise changed "
+         "one on the way) or ran one again: the table left the program's path");
+}
+
+void TableHost::ranUnheard(const table_wire::DecodedAnswer& a) {
+    reached_.reset();
+    offPath_ = true;
+    fail("the table ran " + name(a.before) +
+         ", which was not sent (line noise changed one on the way), before " + name(current_) +
+         ": the table left the program's path");
+}
+
 void TableHost::answered(const table_wire::DecodedAnswer& a, double nowS) {
     const bool mine = inFlight_ && !failed_ && same(a.setPoint, current_);
     if (!mine) {
         if (mayStillAnswer_ && same(a.setPoint, *mayStillAnswer_)) {
-            ++stats_.late;  // the answer to a repeat (or to a set point abandoned): not ours
+            // The answer to a repeat (or to a set point abandoned): not ours. Its count is not
+            // ahead of the last answer's: nothing was started since that the host did not ask.
+            if (!failed_ && moves_ && table_wire::countsAhead(a.moves, *moves_) > 0) {
+                countedAhead(a, *moves_);
+                return;
+            }
+            ++stats_.late;
             return;
         }
         if (!inFlight_ || failed_) {
+            if (!failed_ && moves_ && table_wire::countsAhead(a.moves, *moves_) > 0) {
+                // Idle, and the board moved: a copy still on its way ran after the last answer.
+                countedAhead(a, *moves_);
+                return;
+            }
             ++stats_.unexpected;
             return;
         }
         if (a.code == table_wire::kNak) {
+            // Nothing started for it; but the board may have moved before, unheard: only the
+            // set point in flight (a copy of it ran, and then a changed one came: its answer
+            // says it stands there) may be counted.
+            if (moves_) {
+                const int ranIt = same(a.before, current_) && !same(current_, movesAt_) ? 1 : 0;
+                const auto expected = static_cast<std::uint8_t>((*moves_ + ranIt) & 0xFF);
+                if (table_wire::countsAhead(a.moves, expected) > 0) {
+                    countedAhead(a, expected);
+                    return;
+                }
+            }
+            if (!moves_) {
+                moves_ = a.moves;  // the board still holds the set point before (it says which)
+                movesAt_ = a.before;
+            }
             // The table refused what it received, and nothing moved: line noise changed the set
             // point on the way. Send it again (bounded).
             ++stats_.garbled;
@@ -86,37 +131,71 @@ void TableHost::answered(const table_wire::DecodedAnswer& a, double nowS) {
              ": the table left the program's path");
         return;
     }
+    // The move count: this answer's move is counted unless the board already stood at (or
+    // headed for) this set point: it does not count the set point it last started again.
+    if (moves_) {
+        const int started = a.code == table_wire::kNak || same(current_, movesAt_) ? 0 : 1;
+        const auto expected = static_cast<std::uint8_t>((*moves_ + started) & 0xFF);
+        const int ahead = table_wire::countsAhead(a.moves, expected);
+        if (ahead < 0) {
+            ++stats_.late;  // older than the last answer trusted: an earlier visit's, late
+            return;
+        }
+        if (ahead > 0) {
+            if (a.code == table_wire::kAck && !checking_ && reached_ &&
+                !same(a.before, *reached_) && !same(a.before, current_))
+                ranUnheard(a);  // the answer names the move the host did not hear of
+            else
+                countedAhead(a, expected);
+            return;
+        }
+    }
+    moves_ = a.moves;
+    // A NAK starts nothing: the board still holds the set point before (its answer says which).
+    movesAt_ = a.code == table_wire::kNak ? a.before : current_;
+    if (checking_) {
+        // The check is a set point outside every table: refused, nothing moves, and no other
+        // answer names it, so a late answer to a repeat is never taken for it. It says which set
+        // point the board started last, and how many moves: every copy sent before it has
+        // arrived (the line keeps the order).
+        if (a.code != table_wire::kNak || !reached_ || !same(a.before, *reached_)) {
+            reached_.reset();
+            offPath_ = true;
+            fail("the table last ran " + name(a.before) + ", not " +
+                 (reached_ ? name(*reached_) : std::string("the program's last")) +
+                 " (line noise changed one on the way): the table left the program's path");
+            return;
+        }
+        inFlight_ = false;
+        timeouts_ = garbled_ = 0;
+        if (copies_ == 1) {
+            needCheck_ = false;  // the check went once: its answer is the last word
+            checks_ = 0;
+        } else if (++checks_ > config_.maxTimeouts) {
+            fail("the table's answers come later than " +
+                 std::to_string(std::lround(config_.checkTimeoutS)) + " s: where it ended (" +
+                 name(*reached_) + ") cannot be confirmed");
+            return;
+        }
+        poll(nowS);
+        return;
+    }
     switch (a.code) {
         case table_wire::kAck:
             // Its move started from the set point acknowledged before (or from itself: a repeat
             // after the first copy ran). Anything else ran in between, unheard: its answer was
             // lost, and it was no set point of the program's.
             if (reached_ && !same(a.before, *reached_) && !same(a.before, current_)) {
-                reached_.reset();
-                offPath_ = true;
-                fail("the table ran " + name(a.before) +
-                     ", which was not sent (line noise changed "
-                     "one on the way), before " +
-                     name(current_) + ": the table left the program's path");
+                ranUnheard(a);
                 return;
             }
             inFlight_ = false;
             timeouts_ = garbled_ = 0;
             reached_ = current_;
             mayStillAnswer_ = current_;  // a repeat of it may be answered again
-            if (!checking_) ++stats_.acknowledged;
-            if (copies_ == 1) {
-                needCheck_ = false;  // sent once: no copy of it is left on the way
-                checks_ = 0;
-            } else {
-                needCheck_ = true;
-                if (checking_ && ++checks_ > config_.maxTimeouts) {
-                    fail("the table's answers come later than " +
-                         std::to_string(std::lround(config_.checkTimeoutS)) +
-                         " s: where it ended (" + name(current_) + ") cannot be confirmed");
-                    return;
-                }
-            }
+            ++stats_.acknowledged;
+            needCheck_ = copies_ != 1;  // sent once: no copy of it is left on the way
+            checks_ = 0;
             poll(nowS);
             return;
         case table_wire::kNak:
@@ -137,8 +216,9 @@ void TableHost::poll(double nowS) {
         if (nowS < deadline_) return;
         ++stats_.timeouts;
         if (++timeouts_ > config_.maxTimeouts) {
-            fail("no answer from the table to " + name(current_) + " after " +
-                 std::to_string(timeouts_) + " tries: is it connected and on?");
+            fail("no answer from the table to " +
+                 (checking_ && reached_ ? "the check after " + name(*reached_) : name(current_)) +
+                 " after " + std::to_string(timeouts_) + " tries: is it connected and on?");
             return;
         }
         send(nowS);
@@ -146,8 +226,9 @@ void TableHost::poll(double nowS) {
     }
     if (queue_.empty()) {
         if (!needCheck_ || !reached_) return;
-        // The last set point went more than once: send it again, once, and wait long for it.
-        current_ = *reached_;
+        // The last set point went more than once, so a copy may still be on its way: send the
+        // check (table_wire::kCheck, refused by every table), once, and wait long for it.
+        current_ = table_wire::kCheck;
         checking_ = true;
         copies_ = 0;
         ++stats_.checks;
@@ -208,6 +289,7 @@ void TableHost::clear() {
     checks_ = 0;
     error_.clear();
     timeouts_ = garbled_ = 0;
+    moves_.reset();  // a set point abandoned may still run: the next answer sets the count
 }
 
 }  // namespace trilho

@@ -10,9 +10,12 @@
 // never sent (line noise changed it on the way: nothing moved) sends it again, bounded; an ACK
 // or CAN naming one never sent, or an ACK whose move started from a set point the host did not
 // hear answered, means the table moved where the program did not ask: the host fails and
-// offPath() says so. A set point sent more than once may still have a copy on its way, which
-// noise could change: when it is the last, the host sends it once more (a check, with a long
-// deadline) and is idle only when a check sent once comes back from it.
+// offPath() says so. Every answer carries the board's move count (a set point other than the
+// one it last started is a move): an answer that counts more moves than the host had answered
+// (a detour whose answer and the next one's were lost) fails the same way. A set point sent
+// more than once may still have a copy on its way, which noise could change: when it is the
+// last, the host sends a check (table_wire::kCheck, refused without a move, with a long
+// deadline) and is idle only when a check sent once is answered from it, with the count.
 #include <cstdint>
 #include <deque>
 #include <optional>
@@ -41,7 +44,7 @@ struct TableHostStats {
     std::uint64_t unexpected = 0;    ///< answers to nothing asked, noise bytes (ignored)
     std::uint64_t late = 0;          ///< answers to a set point already answered (ignored)
     std::uint64_t garbled = 0;       ///< set points the table received changed (NAK: sent again)
-    std::uint64_t checks = 0;        ///< checks sent after a repeated last set point
+    std::uint64_t checks = 0;        ///< checks (kCheck) sent after a repeated last set point
 };
 
 class TableHost {
@@ -78,6 +81,7 @@ class TableHost {
     /// noticed (a packet in flight on a pulled cable has no answer coming).
     void restart() {
         if (!failed_) fail("the line was opened again");
+        moves_.reset();  // the board may have been switched off: its count starts again
         retry();
     }
     /// Forgets every set point (Stop).
@@ -87,6 +91,8 @@ class TableHost {
     void answered(const table_wire::DecodedAnswer& a, double nowS);
     void send(double nowS);
     void fail(std::string why);
+    void ranUnheard(const table_wire::DecodedAnswer& a);
+    void countedAhead(const table_wire::DecodedAnswer& a, std::uint8_t expected);
     double waitFor(const table_wire::SetPointMm& from, const table_wire::SetPointMm& to) const;
     static std::string name(const table_wire::SetPointMm& sp);
 
@@ -114,6 +120,12 @@ class TableHost {
     /// Where the table stands for the deadline: the last ACK; before it, the origin, where
     /// seed 004's table stands at power-on (its counts start at zero there).
     std::optional<table_wire::SetPointMm> reached_;
+    /// The board's move count as the last answer trusted gave it (nullopt until the first
+    /// answer, and after clear() or restart(): a set point abandoned may still run, a board
+    /// may have been switched off), and the set point it last started by that answer: a set
+    /// point other than that one is one move more, the same one none.
+    std::optional<std::uint8_t> moves_;
+    table_wire::SetPointMm movesAt_{};
 };
 
 }  // namespace trilho

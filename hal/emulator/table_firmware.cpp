@@ -64,6 +64,11 @@ void TableFirmware::handle(const table_wire::SetPoint& bytes) {
         answer(table_wire::kNak, sp, lastRun_);  // nothing moves
         return;
     }
+    // The move count: a set point other than the one last started is a new move. The same one
+    // again (a repeat whose answer the host did not get, or a retry after a CAN) runs the
+    // in-position check from where the table stands and is not counted, so the host counts
+    // what it sent once per set point, however many copies went.
+    if (sp.x != lastRun_.x || sp.y != lastRun_.y) ++moves_;
     running_ = sp;
     runningFrom_ = lastRun_;
     lastRun_ = sp;
@@ -74,10 +79,11 @@ void TableFirmware::handle(const table_wire::SetPoint& bytes) {
 
 void TableFirmware::answer(std::uint8_t code, const table_wire::SetPointMm& sp,
                            const table_wire::SetPointMm& before) {
-    // docs/protocols.md B: the code, the set point as received, the one run before, a checksum.
+    // docs/protocols.md B: the code, the set point as received, the one run before, the move
+    // count, a checksum.
     const table_wire::Answer a =
         table_wire::encodeAnswer(code, table_wire::encodeSetPoint(sp.x, sp.y),
-                                 table_wire::encodeSetPoint(before.x, before.y));
+                                 table_wire::encodeSetPoint(before.x, before.y), moves_);
     out_.insert(out_.end(), a.begin(), a.end());
     ++stats_.answers;
 }

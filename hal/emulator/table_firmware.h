@@ -3,8 +3,8 @@
 // point as 4 bytes (hiX loX hiY loY, whole mm), plans the synchronized trapezoid and runs the
 // per-axis loop every 5 ms until both axes are in position, then answers (the extension of
 // docs/protocols.md B: ACK in position, NAK outside the table, CAN when an over-current cut
-// the drives; each followed by the set point as received, the one run before it and a
-// checksum). The open-loop calibration
+// the drives; each followed by the set point as received, the one run before it, the count of
+// moves started and a checksum). The open-loop calibration
 // program drives one axis at a fixed PWM and sends its encoder count, LSB then MSB, every 32 ms
 // until 1300 pulses. It runs the core's DcTableMotion on SimDcTable: the same planner, loops and
 // plant as in-process runs, not copies. Plain and steppable: bytes in, bytes out, time passed in.
@@ -28,7 +28,7 @@ struct TableFirmwareStats {
     std::uint64_t staleBytes = 0;         ///< partial set points dropped for a gap in the bytes
     std::uint64_t ignoredMoving = 0;      ///< set points that completed during a move (dropped)
     std::uint64_t countsSent = 0;         ///< calibration counts sent (2 bytes each)
-    std::uint64_t answers = 0;            ///< answers sent (6 bytes each: ACK, NAK or CAN)
+    std::uint64_t answers = 0;            ///< answers sent (kAnswerBytes each: ACK, NAK or CAN)
     AlarmCode lastCut = AlarmCode::None;  ///< the alarm behind the last CAN
 };
 
@@ -79,6 +79,9 @@ class TableFirmware final : public DeviceFirmware {
     /// Every set point the board began to run, in order (its trace, for the tests that compare
     /// where the table went with what the program asked).
     const std::vector<table_wire::SetPointMm>& ran() const { return ran_; }
+    /// The moves started since power-on, mod 256 (a set point equal to the last one started is
+    /// no new move), as every answer carries it.
+    std::uint8_t moves() const { return moves_; }
     /// The calibration's pulse count (pulsos) and whether it stopped the motor at 1300.
     std::uint16_t calibrationCount() const { return pulses_; }
     bool calibrationDone() const { return calibrationDone_; }
@@ -103,6 +106,7 @@ class TableFirmware final : public DeviceFirmware {
     table_wire::SetPointMm running_{};
     table_wire::SetPointMm runningFrom_{};  ///< the set point run before running_
     table_wire::SetPointMm lastRun_{};      ///< the last set point started ((0, 0) at power-on)
+    std::uint8_t moves_ = 0;                ///< moves started, mod 256 (0 at power-on)
     // Board time: the plant is advanced from event to event (the 5 ms loop, the 32 ms stream),
     // so both run on exact instants whatever step() is called with.
     double clockS_ = 0.0;    ///< board time the plant has reached, s

@@ -3,7 +3,7 @@
 // every byte towards the host also feeds an EncoderStreamDecoder; the input is a script of
 // bytes injected towards either side, time steps, silences, set points, retry/clear and jams.
 // Invariants: no crash; a host call writes nothing or one whole set point and sends at most one
-// (one in flight); a failed host says why; the firmware answers at most once a set point, 10
+// (one in flight); a failed host says why; the firmware answers at most once a set point, 11
 // bytes an answer (set points), or sends at most two bytes every 32 ms (calibration); the
 // decoder gives at most one count for two bytes; the host takes no more answers than the
 // board sent plus the frames the noise could hold, and off the path is a failure (issue 20

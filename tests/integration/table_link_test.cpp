@@ -256,20 +256,31 @@ TEST(TableFirmware, AStalePartialIsDroppedAndARepeatDuringAMoveIsAnsweredOnce) {
     feed(table_wire::encodeSetPoint(30, 40), 4);
     EXPECT_EQ(device.stats().ignoredMoving, 1u);
     const std::vector<std::uint8_t> out = run(5.0);
-    // One answer: ACK, the set point as received, the one before (power-on: 0, 0), the
-    // checksum (0x06 + 30 + 40 = 76).
-    EXPECT_EQ(out, (std::vector<std::uint8_t>{table_wire::kAck, 0, 30, 0, 40, 0, 0, 0, 0, 76}));
+    // One answer: ACK, the set point as received, the one before (power-on: 0, 0), the move
+    // count (the first move: 1; the repeat dropped while moving is none) and the checksum
+    // (0x06 + 30 + 40 + 1 = 77).
+    EXPECT_EQ(out, (std::vector<std::uint8_t>{table_wire::kAck, 0, 30, 0, 40, 0, 0, 0, 0, 1, 77}));
+    EXPECT_EQ(device.moves(), 1);
     EXPECT_NEAR(device.table().positionMm(0), 30.0, device.table().axis(0).mmPerCount());
     EXPECT_NEAR(device.table().positionMm(1), 40.0, device.table().axis(1).mmPerCount());
-    // Once there, the same set point is a zero-length move: ACK after the in-position check.
+    // Once there, the same set point is a zero-length move: ACK after the in-position check,
+    // and no new move in the count (the host counts what it sent once per set point).
     feed(table_wire::encodeSetPoint(30, 40), 4);
     const double sent = t;
     std::vector<std::uint8_t> again;
     while (again.empty() && t < sent + 1.0)
         again = run(0.001);
     EXPECT_EQ(again,
-              (std::vector<std::uint8_t>{table_wire::kAck, 0, 30, 0, 40, 0, 30, 0, 40, 146}));
+              (std::vector<std::uint8_t>{table_wire::kAck, 0, 30, 0, 40, 0, 30, 0, 40, 1, 147}));
+    EXPECT_EQ(device.moves(), 1);
     EXPECT_LT(t - sent, 0.05);
+    // Outside the table: NAK, nothing moves, the count stays; then another set point counts.
+    feed(table_wire::encodeSetPoint(400, 40), 4);
+    EXPECT_EQ(run(0.01), (std::vector<std::uint8_t>{
+                             table_wire::kNak, 1, 144, 0, 40, 0, 30, 0, 40, 1,
+                             static_cast<std::uint8_t>(0x15 + 1 + 144 + 40 + 30 + 40 + 1)}));
+    feed(table_wire::encodeSetPoint(31, 40), 4);
+    EXPECT_EQ(device.moves(), 2);
 }
 
 TEST(TableFirmware, XAndYSentSecondsApartAreOneSetPointAsOnTheSeedsPanel) {
@@ -301,7 +312,7 @@ TEST(TableFirmware, XAndYSentSecondsApartAreOneSetPointAsOnTheSeedsPanel) {
     EXPECT_EQ(device.stats().staleBytes, 0u);
     EXPECT_TRUE(device.moving());
     run(5.0);
-    EXPECT_EQ(out, (std::vector<std::uint8_t>{table_wire::kAck, 0, 60, 0, 20, 0, 0, 0, 0, 86}));
+    EXPECT_EQ(out, (std::vector<std::uint8_t>{table_wire::kAck, 0, 60, 0, 20, 0, 0, 0, 0, 1, 87}));
     EXPECT_NEAR(device.table().positionMm(0), 60.0, device.table().axis(0).mmPerCount());
     EXPECT_NEAR(device.table().positionMm(1), 20.0, device.table().axis(1).mmPerCount());
     // A gap inside a pair is still a lost byte: that partial is dropped.

@@ -93,7 +93,7 @@ TEST(TablePty, TheHostDrivesTrilhoDeviceTableUntilAck) {
     EXPECT_EQ(host.reached()->x, 10);
     EXPECT_EQ(host.reached()->y, 40);
     EXPECT_EQ(line.bytesWritten(), 8u);
-    EXPECT_EQ(line.bytesRead(), 2 * table_wire::kAnswerBytes);  // two answers of 10 bytes
+    EXPECT_EQ(line.bytesRead(), 2 * table_wire::kAnswerBytes);  // two answers of 11 bytes
     std::printf("through %s: two set points acknowledged in %.3f s\n", qPrintable(device.path),
                 now());
     line.close();

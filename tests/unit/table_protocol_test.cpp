@@ -35,16 +35,17 @@ TEST(TableWire, CalibrationStreamPairsByTime) {
 }
 
 namespace {
-/// The board's answer to sp (code, the set point as received, checksum), fed to the host.
-/// before: the set point the board ran before it (where the move started).
+/// The board's answer to sp (code, the set point as received, the one before, the move count,
+/// checksum), fed to the host. before: the set point the board ran before it (where the move
+/// started); moves: the moves it has started (mod 256).
 void answerWith(TableHost& host, std::uint8_t code, const SetPoint& sp, const SetPoint& before,
-                double t) {
-    for (std::uint8_t b : encodeAnswer(code, sp, before))
+                double t, std::uint8_t moves) {
+    for (std::uint8_t b : encodeAnswer(code, sp, before, moves))
         host.receive(b, t);
 }
 void answerWith(TableHost& host, std::uint8_t code, std::uint16_t x, std::uint16_t y, double t,
-                std::uint16_t fromX = 0, std::uint16_t fromY = 0) {
-    answerWith(host, code, encodeSetPoint(x, y), encodeSetPoint(fromX, fromY), t);
+                std::uint16_t fromX = 0, std::uint16_t fromY = 0, std::uint8_t moves = 1) {
+    answerWith(host, code, encodeSetPoint(x, y), encodeSetPoint(fromX, fromY), t, moves);
 }
 
 /// A table that answers each complete set point through `answer` (nullopt: stays silent).
@@ -53,6 +54,7 @@ struct ScriptedTable {
     std::vector<SetPoint> received;
     std::vector<std::uint8_t> partial;
     SetPoint lastRun{0, 0, 0, 0};
+    std::uint8_t moves = 0;  ///< as the board: a set point other than the last started counts
 
     void feed(TableHost& host, double t) {
         for (std::uint8_t b : host.takeOutput()) {
@@ -63,8 +65,9 @@ struct ScriptedTable {
                 received.push_back(p);
                 if (auto a = answer(decodeSetPoint(p))) {
                     const SetPoint before = lastRun;
+                    if (*a != kNak && p != lastRun) ++moves;
                     if (*a != kNak) lastRun = p;
-                    answerWith(host, *a, p, before, t);
+                    answerWith(host, *a, p, before, t, moves);
                 }
             }
         }
@@ -95,7 +98,7 @@ TEST(TableHost, GoldenBytesOneSetPointInFlight) {
     EXPECT_TRUE(host.takeOutput().empty());  // the first is not answered yet
     answerWith(host, kAck, 100, 50, 0.6);
     EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 180, 0, 120}));
-    answerWith(host, kAck, 180, 120, 1.0, 100, 50);
+    answerWith(host, kAck, 180, 120, 1.0, 100, 50, 2);
     EXPECT_TRUE(host.idle());
     ASSERT_TRUE(host.reached());
     EXPECT_EQ(host.reached()->x, 180);
@@ -212,8 +215,8 @@ TEST(TableHost, GarbageIsCountedNotObeyed) {
     // Noise, a bare one-byte ACK, and an ACK frame whose checksum does not check.
     for (int b : {0, 255, 0x05, 0x16, 0x17, 0x41, 0x06})
         host.receive(static_cast<std::uint8_t>(b), 0.1);
-    Answer broken = encodeAnswer(kAck, encodeSetPoint(5, 5), encodeSetPoint(0, 0));
-    broken[9] ^= 0x10;
+    Answer broken = encodeAnswer(kAck, encodeSetPoint(5, 5), encodeSetPoint(0, 0), 1);
+    broken[kAnswerBytes - 1] ^= 0x10;
     for (std::uint8_t b : broken)
         host.receive(b, 0.2);
     EXPECT_FALSE(host.idle());
@@ -236,7 +239,7 @@ TEST(TableHost, AnAnswerNamesItsSetPointAndALateOneIsNotTakenForTheNext) {
     answerWith(host, kAck, 10, 20, 6.0, 10, 20);  // the repeat's: not the answer to (30, 40)
     EXPECT_FALSE(host.idle());
     EXPECT_EQ(host.stats().late, 1u);
-    answerWith(host, kAck, 30, 40, 6.5, 10, 20);
+    answerWith(host, kAck, 30, 40, 6.5, 10, 20, 2);
     EXPECT_TRUE(host.idle());
     EXPECT_EQ(host.reached()->x, 30);
 }
@@ -272,7 +275,7 @@ TEST(TableHost, AMoveFromASetPointNotHeardOfIsTheTableOffThePath) {
     answerWith(host, kAck, 20, 40, 1.0);
     (void)host.takeOutput();
     // (50, 90) arrived as (18, 90), ran, and its answer was lost; the repeat ran from there.
-    answerWith(host, kAck, 50, 90, 9.0, 18, 90);
+    answerWith(host, kAck, 50, 90, 9.0, 18, 90, 3);
     ASSERT_TRUE(host.failed());
     EXPECT_TRUE(host.offPath());
     EXPECT_EQ(host.error(),
@@ -289,14 +292,41 @@ TEST(TableHost, ALastSetPointSentTwiceIsCheckedOnceMore) {
     EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 30, 0, 40}));
     answerWith(host, kAck, 30, 40, 3.5);
     EXPECT_FALSE(host.idle());  // the repeat is still on its way: a check goes once
-    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 30, 0, 40}));
+    // The check: a set point outside every table, refused without a move.
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{255, 255, 255, 255}));
     EXPECT_EQ(host.stats().checks, 1u);
     host.poll(12.0);  // the check's deadline is 10 s: not passed
     EXPECT_TRUE(host.takeOutput().empty());
-    // An answer from (30, 40) to (30, 40): nothing else ran since; the check went once.
-    answerWith(host, kAck, 30, 40, 12.1, 30, 40);
-    EXPECT_TRUE(host.idle());
+    // The repeat's answer, late: it names (30, 40), not the check, so it is not the check's.
+    answerWith(host, kAck, 30, 40, 12.05, 30, 40);
+    EXPECT_FALSE(host.idle());
+    EXPECT_EQ(host.stats().late, 1u);
+    // The check refused: the board last started (30, 40), one move: nothing else ran since.
+    answerWith(host, kNak, 65535, 65535, 12.1, 30, 40);
+    EXPECT_TRUE(host.idle()) << host.error();
     EXPECT_EQ(host.stats().acknowledged, 1u);
+}
+
+// Issue 20 item 10, the other gap: a changed copy of the last set point still on its way when a
+// late repeat's answer came. The check's answer comes after every copy (the line keeps the
+// order) and names the check alone: it counts the detour.
+TEST(TableHost, TheChecksAnswerCountsACopyChangedOnTheWay) {
+    TableHost host;
+    ASSERT_TRUE(host.moveTo(30, 40));
+    host.poll(0.0);
+    (void)host.takeOutput();
+    host.poll(3.0);
+    (void)host.takeOutput();  // sent twice
+    answerWith(host, kAck, 30, 40, 3.5, 0, 0, 1);
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{255, 255, 255, 255}));
+    // The second copy arrived as (30, 32) and ran (move 2); its answer was lost. The check: the
+    // board last started (30, 32), two moves.
+    answerWith(host, kNak, 65535, 65535, 5.0, 30, 32, 2);
+    ASSERT_TRUE(host.failed());
+    EXPECT_TRUE(host.offPath());
+    EXPECT_NE(host.error().find("counts 2 moves started where the program had 1"),
+              std::string::npos)
+        << host.error();
 }
 
 TEST(TableHost, AnAckOfASetPointNeverSentIsTheTableOffThePath) {
@@ -332,4 +362,88 @@ TEST(TableHost, TheDeadlineGrowsWithTheLongerTravel) {
     host.poll(8.0);
     EXPECT_EQ(host.stats().timeouts, 1u);
     EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{1, 44, 0, 100}));
+}
+
+TEST(TableWire, AnswersByteForByteWithTheMoveCount) {
+    // ACK of (100, 50), from (0, 300), the board's 7th move: the count before the checksum.
+    const Answer a = encodeAnswer(kAck, encodeSetPoint(100, 50), encodeSetPoint(0, 300), 7);
+    EXPECT_EQ(a, (Answer{0x06, 0, 100, 0, 50, 0, 0, 1, 44, 7,
+                         static_cast<std::uint8_t>(0x06 + 100 + 50 + 1 + 44 + 7)}));
+    AnswerDecoder dec;
+    std::optional<DecodedAnswer> d;
+    for (std::uint8_t b : a)
+        d = dec.feed(b, 0.0);
+    ASSERT_TRUE(d);
+    EXPECT_EQ(d->moves, 7);
+    EXPECT_EQ(d->before.y, 300);
+    // The count is covered by the checksum: a bit flipped in it breaks the frame.
+    Answer flipped = a;
+    flipped[9] ^= 0x02;
+    AnswerDecoder dec2;
+    for (std::uint8_t b : flipped)
+        EXPECT_FALSE(dec2.feed(b, 0.0));
+    EXPECT_EQ(countsAhead(1, 255), 2);  // wraps at 256
+    EXPECT_EQ(countsAhead(255, 1), -2);
+    EXPECT_EQ(countsAhead(9, 9), 0);
+}
+
+// Issue 20 item 10, the gap the echo left: (50, 90) arrived as (18, 90) and ran; its answer was
+// lost, and so was the answer of the repeat that then ran (50, 90) from there. A third copy
+// finds the table at (50, 90): a zero move, answered "from (50, 90)" as any repeat. Only the
+// count tells: three moves started where the program had two sent and answered.
+TEST(TableHost, ADetourWhoseAnswerAndTheNextAreLostIsSeenByTheCount) {
+    TableHost host;
+    ASSERT_TRUE(host.moveTo(20, 40));
+    ASSERT_TRUE(host.moveTo(50, 90));
+    host.poll(0.0);
+    (void)host.takeOutput();
+    answerWith(host, kAck, 20, 40, 1.0, 0, 0, 1);
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 50, 0, 90}));
+    // Move 2, to (18, 90): answer lost. Past the deadline: (50, 90) again, move 3: lost.
+    host.poll(10.0);
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 50, 0, 90}));
+    host.poll(20.0);
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 50, 0, 90}));
+    answerWith(host, kAck, 50, 90, 20.5, 50, 90, 3);  // the third copy: no move, count 3
+    ASSERT_TRUE(host.failed());
+    EXPECT_FALSE(host.idle());
+    EXPECT_TRUE(host.offPath());
+    EXPECT_EQ(host.error(),
+              "the table's answer to set point (50, 90) mm counts 3 moves started where the "
+              "program had 2 sent and answered (mod 256): it ran a set point that was not sent "
+              "(line noise changed one on the way) or ran one again: the table left the "
+              "program's path");
+    host.retry();  // off the path: no Continue
+    EXPECT_TRUE(host.failed());
+}
+
+// A repeat that finds the table at its set point is no move: the count does not grow, and the
+// run finishes. The count wraps at 256. After the end, an answer that counts one move more (a
+// copy still on its way ran) fails the host that was idle.
+TEST(TableHost, RepeatsAreNoMovesAndTheCountWraps) {
+    TableHost host;
+    ASSERT_TRUE(host.moveTo(10, 10));
+    ASSERT_TRUE(host.moveTo(20, 20));
+    ASSERT_TRUE(host.moveTo(30, 30));
+    host.poll(0.0);
+    (void)host.takeOutput();
+    answerWith(host, kAck, 10, 10, 0.5, 0, 0, 255);  // a board that has run before: 255
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 20, 0, 20}));
+    host.poll(10.0);  // late: sent again; both copies are answered, the second is no move
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 20, 0, 20}));
+    answerWith(host, kAck, 20, 20, 10.5, 10, 10, 0);  // 255 + 1 wraps to 0
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 30, 0, 30}));
+    answerWith(host, kAck, 20, 20, 10.6, 20, 20, 0);  // the repeat's, late: ignored
+    EXPECT_FALSE(host.failed()) << host.error();
+    EXPECT_EQ(host.stats().late, 1u);
+    answerWith(host, kAck, 30, 30, 11.0, 20, 20, 1);
+    EXPECT_TRUE(host.idle()) << host.error();
+    answerWith(host, kAck, 30, 30, 11.5, 30, 30, 1);  // a duplicate of it: no move more
+    EXPECT_TRUE(host.idle()) << host.error();
+    answerWith(host, kAck, 30, 30, 12.0, 31, 30, 3);
+    EXPECT_TRUE(host.failed());
+    EXPECT_TRUE(host.offPath());
+    EXPECT_NE(host.error().find("counts 3 moves started where the program had 1 sent"),
+              std::string::npos)
+        << host.error();
 }
