@@ -694,8 +694,15 @@ class OperatorScreensTest : public QObject {
         QTRY_VERIFY_WITH_TIMEOUT(
             status().programFinished || status().state == ControllerState::Alarm, 60000);
         QVERIFY2(status().activeAlarms == 0, qPrintable(QString::number(status().activeAlarms)));
-        QVERIFY2(std::abs(status().servo.positionMm - 1000.0) < 0.6,
-                 qPrintable(QString::number(status().servo.positionMm)));
+        // No soft-limit alarm and no 1140 mm any more. The 1996 law lets go of the drive as
+        // soon as a reading falls in its 0.5 mm window, at any speed, as the VB did: in virtual
+        // time it ends at 1000.4 mm; here the tick's phase is real time's, and when a reading
+        // lands in the window at speed the platform coasts on (25.6 mm once, under CI's load).
+        // Then the program must say so (warning 13), never "finished" as if in position.
+        const double pos = status().servo.positionMm;
+        QVERIFY2(std::abs(pos - 1000.0) < 100.0, qPrintable(QString::number(pos)));
+        if (std::abs(pos - 1000.0) >= 0.6)
+            QTRY_COMPARE(status().lastAlarm, AlarmCode::FinalPositionOff);
         window_->engineeredLawAction()->trigger();
         QTRY_COMPARE(link_->worker().periodS(), 0.001);
     }
