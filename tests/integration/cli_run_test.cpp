@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include <fcntl.h>
+#include <unistd.h>
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -246,8 +248,15 @@ TEST_F(CliRun, TraceIntoAFifoReachesItsReader) {
     QProcess reader;
     reader.start(QStringLiteral("cat"), {fifo});
     ASSERT_TRUE(reader.waitForStarted());
+    // `cat` may not have reached its open() yet on a loaded machine (CI saw "no program reads
+    // this FIFO"), and a FIFO nobody reads is refused (the next test): this end holds a reader
+    // there from the start; cat opens and drains it (the trace is far over a pipe's 64 KB, so
+    // the run waits for cat, never ends before it).
+    const int holder = ::open(QFile::encodeName(fifo).constData(), O_RDONLY | O_NONBLOCK);
+    ASSERT_GE(holder, 0);
     Result r = run({QStringLiteral("--virtual-time"), QStringLiteral("--trace"), fifo,
                     program("exemplo_documento.G")});
+    ::close(holder);
     EXPECT_EQ(r.exit, 0) << r.err.toStdString();
     ASSERT_TRUE(reader.waitForFinished(10000));
     const QByteArray got = reader.readAllStandardOutput();
