@@ -29,6 +29,9 @@ const char* kUsage =
 
 static int dispatch(int argc, char* argv[]) {
     trilho::cli::keepRawArguments(argc, argv);
+    // No glib main loop: the command line has no screen to share it with, and Qt's own polls
+    // the DNC link's sockets for less a request (`serve`; issue 20's cost against libmodbus).
+    if (!qEnvironmentVariableIsSet("QT_NO_GLIB")) qputenv("QT_NO_GLIB", "1");
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("trilho-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(TRILHO_VERSION));

@@ -36,18 +36,23 @@ MbapFrame scanMbap(const std::uint8_t* data, std::size_t size) {
     return f;
 }
 
+void writeMbapAnswerHeader(const MbapFrame& request, std::size_t pduBytes, std::uint8_t* out) {
+    const std::size_t length = pduBytes + 1;  // the unit id and the PDU
+    out[0] = static_cast<std::uint8_t>(request.transaction >> 8);
+    out[1] = static_cast<std::uint8_t>(request.transaction & 0xFF);
+    out[2] = 0;
+    out[3] = 0;
+    out[4] = static_cast<std::uint8_t>((length >> 8) & 0xFF);
+    out[5] = static_cast<std::uint8_t>(length & 0xFF);
+    out[6] = request.unit;
+}
+
 std::string mbapAnswer(const MbapFrame& request, const std::uint8_t* pdu, std::size_t pduBytes) {
+    std::uint8_t header[kMbapHeaderBytes];
+    writeMbapAnswerHeader(request, pduBytes, header);
     std::string out;
     out.reserve(kMbapHeaderBytes + pduBytes);
-    const std::size_t length = pduBytes + 1;
-    const char header[kMbapHeaderBytes] = {static_cast<char>(request.transaction >> 8),
-                                           static_cast<char>(request.transaction & 0xFF),
-                                           0,
-                                           0,
-                                           static_cast<char>((length >> 8) & 0xFF),
-                                           static_cast<char>(length & 0xFF),
-                                           static_cast<char>(request.unit)};
-    out.append(header, kMbapHeaderBytes);
+    out.append(reinterpret_cast<const char*>(header), kMbapHeaderBytes);
     out.append(reinterpret_cast<const char*>(pdu), pduBytes);
     return out;
 }

@@ -41,6 +41,10 @@ struct MbapFrame {
 /// Looks at the start of a stream (size bytes) for one frame. Never reads past size.
 MbapFrame scanMbap(const std::uint8_t* data, std::size_t size);
 
+/// The answer's header (kMbapHeaderBytes into out): the request's transaction and unit,
+/// protocol 0, and the length of a PDU of pduBytes.
+void writeMbapAnswerHeader(const MbapFrame& request, std::size_t pduBytes, std::uint8_t* out);
+
 /// The answer's frame: the request's transaction and unit, protocol 0, then the PDU.
 std::string mbapAnswer(const MbapFrame& request, const std::uint8_t* pdu, std::size_t pduBytes);
 

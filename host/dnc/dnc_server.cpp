@@ -150,7 +150,8 @@ bool DncServer::listenTcp(const QString& host, quint16 port, QString* error) {
         adopt(tcpStore_);
     }
     auto listener = std::make_unique<ModbusTcpListener>(
-        [this](const QByteArray& pdu, const QString& client) { return answerTcp(pdu, client); },
+        [this](const std::uint8_t* pdu, std::size_t bytes, const QString& client,
+               QByteArray& answer) { answerTcp(pdu, bytes, client, answer); },
         tcpLimits_);
     connect(listener.get(), &ModbusTcpListener::historyLine, this, &DncServer::historyLine);
     connect(listener.get(), &ModbusTcpListener::refusal, this, &DncServer::refused);
@@ -167,22 +168,34 @@ bool DncServer::listenTcp(const QString& host, quint16 port, QString* error) {
     return true;
 }
 
-QByteArray DncServer::answerTcp(const QByteArray& pdu, const QString& client) {
+void DncServer::answerTcp(const std::uint8_t* pdu, std::size_t bytes, const QString& client,
+                          QByteArray& answer) {
     // The function code of every answer is the request's (its high bit set for an exception),
     // whatever Qt's store makes of a code it does not know.
-    const auto code = static_cast<std::uint8_t>(pdu.at(0));
-    const QModbusRequest request(static_cast<QModbusPdu::FunctionCode>(code), pdu.mid(1));
+    const std::uint8_t code = pdu[0];
+    const auto fc = static_cast<QModbusPdu::FunctionCode>(code);
+    if (fc == QModbusPdu::ReadInputRegisters || fc == QModbusPdu::ReadHoldingRegisters) {
+        // The status block, most of the traffic: from the link's image straight into the
+        // connection's send buffer, with no PDU object made.
+        refreshIfStale();
+        const Exception e = appendRegisters(fc, pdu + 1, bytes - 1, answer);
+        if (e != Exception::None) {
+            answer.append(static_cast<char>(code | 0x80));
+            answer.append(static_cast<char>(toQt(e)));
+        }
+        return;
+    }
+    const QModbusRequest request(
+        fc, QByteArray(reinterpret_cast<const char*>(pdu + 1), static_cast<qsizetype>(bytes - 1)));
     const QModbusResponse r = handle(
         request, *tcpStore_, [this](const QModbusPdu& p) { return tcpStore_->base(p); }, client);
-    QByteArray out;
     if (r.isException()) {
-        out.append(static_cast<char>(code | 0x80));
-        out.append(static_cast<char>(r.exceptionCode()));
+        answer.append(static_cast<char>(code | 0x80));
+        answer.append(static_cast<char>(r.exceptionCode()));
     } else {
-        out.append(static_cast<char>(code));
-        out.append(r.data());
+        answer.append(static_cast<char>(code));
+        answer.append(r.data());
     }
-    return out;
 }
 
 int DncServer::clientCount() const {
@@ -367,26 +380,35 @@ QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& serv
     return response;
 }
 
-QModbusResponse DncServer::readRegisters(QModbusPdu::FunctionCode fc, const std::uint8_t* data,
-                                         std::size_t size) const {
+Exception DncServer::appendRegisters(QModbusPdu::FunctionCode fc, const std::uint8_t* data,
+                                     std::size_t size, QByteArray& out) const {
     // As the protocol says (and Qt's store answered): a request of another size or a quantity
     // outside 1..125 is exception 03, a range past the map exception 02.
-    if (size != 4) return QModbusExceptionResponse(fc, QModbusPdu::IllegalDataValue);
+    if (size != 4) return Exception::IllegalValue;
     const std::uint16_t start = be16(data), quantity = be16(data + 2);
-    if (quantity < 1 || quantity > 125)
-        return QModbusExceptionResponse(fc, QModbusPdu::IllegalDataValue);
+    if (quantity < 1 || quantity > 125) return Exception::IllegalValue;
     const bool input = fc == QModbusPdu::ReadInputRegisters;
     const std::size_t count = input ? in::kCount : hold::kCount;
-    if (std::size_t{start} + quantity > count)
-        return QModbusExceptionResponse(fc, QModbusPdu::IllegalDataAddress);
-    QByteArray out(1 + 2 * quantity, Qt::Uninitialized);
-    out[0] = static_cast<char>(2 * quantity);
+    if (std::size_t{start} + quantity > count) return Exception::IllegalAddress;
+    const qsizetype at = out.size();
+    out.resize(at + 2 + 2 * qsizetype{quantity});
+    auto* p = reinterpret_cast<std::uint8_t*>(out.data() + at);
+    p[0] = static_cast<std::uint8_t>(fc);
+    p[1] = static_cast<std::uint8_t>(2 * quantity);
+    const std::uint16_t* from = input ? &input_[start] : &holding_[start];
     for (std::uint16_t k = 0; k < quantity; ++k) {
-        const std::uint16_t v = input ? input_[start + k] : holding_[start + k];
-        out[1 + 2 * k] = static_cast<char>(v >> 8);
-        out[2 + 2 * k] = static_cast<char>(v & 0xFF);
+        p[2 + 2 * k] = static_cast<std::uint8_t>(from[k] >> 8);
+        p[3 + 2 * k] = static_cast<std::uint8_t>(from[k] & 0xFF);
     }
-    return QModbusResponse(fc, out);
+    return Exception::None;
+}
+
+QModbusResponse DncServer::readRegisters(QModbusPdu::FunctionCode fc, const std::uint8_t* data,
+                                         std::size_t size) const {
+    QByteArray out;
+    const Exception e = appendRegisters(fc, data, size, out);
+    if (e != Exception::None) return QModbusExceptionResponse(fc, toQt(e));
+    return QModbusResponse(fc, out.mid(1));
 }
 
 QModbusResponse DncServer::readFile(QModbusPdu::FunctionCode fc, const std::uint8_t* data,

@@ -71,12 +71,16 @@ class DncServer : public QObject {
     void refused(const QString& client, const QString& line);
     /// An accepted write's history line, through its own summary.
     void acceptedLine(const QString& client, const QString& line);
-    /// A TCP request's PDU answered (ModbusTcpListener's handler).
-    QByteArray answerTcp(const QByteArray& pdu, const QString& client);
+    /// A TCP request's PDU (bytes >= 1) answered into answer (ModbusTcpListener's handler).
+    void answerTcp(const std::uint8_t* pdu, std::size_t bytes, const QString& client,
+                   QByteArray& answer);
     void refresh();
     /// refresh() unless done within the last servo period (1 ms); true when it refreshed.
     bool refreshIfStale();
-    /// Functions 03 and 04 from the link's own image (input_, holding_).
+    /// Functions 03 and 04 from the link's own image (input_, holding_): the response PDU
+    /// (function code, byte count, values) appended to out, or the exception (out untouched).
+    Exception appendRegisters(QModbusPdu::FunctionCode fc, const std::uint8_t* data,
+                              std::size_t size, QByteArray& out) const;
     QModbusResponse readRegisters(QModbusPdu::FunctionCode fc, const std::uint8_t* data,
                                   std::size_t size) const;
     void publish(QModbusServer& server);
