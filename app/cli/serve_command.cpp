@@ -1,7 +1,7 @@
 // trilho-cli serve --machine P [--modbus-tcp HOST:PORT] [--modbus-rtu DEV --baud N --unit ID]
 //   [--programs DIR] [--remote] [--virtual-time] [--time-scale K] [--fault NAME@T]...
 //   [--timing-report SECONDS]
-// The headless machine (issue 13): the rail's controller and the DNC link over Modbus, no
+// The headless machine (issue 13): a machine's controller and the DNC link over Modbus, no
 // screens; runs until SIGINT or SIGTERM. Reading is always allowed; writes need --remote.
 // In real time, SIGUSR1, --timing-report and the exit print the servo thread's timing since the
 // previous report and the process's resident memory (issue 13 item 6: the load figures).
@@ -22,7 +22,9 @@
 #include "host/dnc/dnc_server.h"
 #include "host/dnc/virtual_machine.h"
 #include "host/dnc/worker_machine.h"
+#include "host/dnc/xy_dnc_machine.h"
 #include "host/dnc/xy_virtual_machine.h"
+#include "host/session/xy_session_runnable.h"
 
 namespace trilho::cli {
 
@@ -205,16 +207,17 @@ int serveCommand(const QStringList& args) {
     if (!load.profile) return usage(load.error);
     if (!load.error.isEmpty()) err(QStringLiteral("trilho-cli serve: %1\n").arg(load.error));
     const MachineProfile profile = *load.profile;
-    // The XY machines serve the same map with their Y axis (issue 19), in virtual time: their
-    // real-time worker for the link is still to come.
+    // The XY machines serve the same map with their Y axis (issue 19): in real time on the
+    // screens' own worker (XyLink), or in virtual time.
     if (profile.kind != MachineKind::Rail && !faults.empty())
         return usage(
             QStringLiteral("--fault is for the rail (the XY machines' faults are in "
                            "the screens' Simulation dock)"));
-    if (profile.kind != MachineKind::Rail && !parser.isSet(virtualOpt))
+
+    if (profile.kind != MachineKind::Rail && parser.isSet(reportOpt))
         return usage(
-            QStringLiteral("serve runs an XY machine with --virtual-time only (the rail "
-                           "also in real time)"));
+            QStringLiteral("--timing-report is the rail's servo thread's (the XY "
+                           "machines have none)"));
 
     CompileOptions compileOptions;
     compileOptions.machine = profile.limits;
@@ -227,8 +230,24 @@ int serveCommand(const QStringList& args) {
     if (!parser.isSet(virtualOpt)) std::signal(SIGUSR1, onReport);
     std::unique_ptr<dnc::DncMachine> machine;
     dnc::WorkerMachine* realTime = nullptr;  // the timing report's source; null in virtual time
-    if (profile.kind != MachineKind::Rail) {
+    std::unique_ptr<XyLink> xyLink;          // an XY machine in real time: its worker thread
+    if (profile.kind != MachineKind::Rail && parser.isSet(virtualOpt)) {
         machine = std::make_unique<dnc::XyVirtualMachine>(profile, scale);
+    } else if (profile.kind != MachineKind::Rail) {
+        XySessionMake made = makeXySession(profile, 1);
+        if (!made.session) return usage(QString::fromStdString(made.error));
+        xyLink = std::make_unique<XyLink>(
+            std::make_unique<XySessionRunnable>(std::move(made.session)), XyLink::Drive::Thread);
+        auto m = std::make_unique<dnc::XyDncMachine>(*xyLink);
+        dnc::XyDncMachine* raw = m.get();
+        // The link's events reach the server as the screens hand them on (no screen here).
+        QObject::connect(xyLink.get(), &XyLink::updated,
+                         [raw](const std::vector<XyTraceRow>&,
+                               const std::vector<ControllerEvent>& events, const XyStatus&) {
+                             for (const ControllerEvent& e : events)
+                                 raw->noteEvent(e);
+                         });
+        machine = std::move(m);
     } else if (parser.isSet(virtualOpt)) {
         machine = std::make_unique<dnc::VirtualMachine>(profile, scale, faults);
     } else {

@@ -13,6 +13,7 @@
 
 #include "core/machine/machine_profile.h"
 #include "host/common/data_paths.h"
+#include "host/session/xy_session_runnable.h"
 #include "translations/i18n.h"
 #include "ui/execution_panel.h"
 #include "ui/machine_link.h"
@@ -21,7 +22,6 @@
 #include "ui/theme.h"
 #include "ui/workbench/workbench_window.h"
 #include "ui/xy/xy_main_window.h"
-#include "ui/xy/xy_session_runnable.h"
 
 #include <functional>
 #include <string_view>
@@ -203,7 +203,7 @@ int main(int argc, char* argv[]) {
     // What is open: the rail's link and replicated screen, or an XY machine's.
     std::unique_ptr<ui::MachineLink> railLink;
     std::unique_ptr<ui::MainWindow> railWindow;
-    std::unique_ptr<ui::XyLink> xyLink;
+    std::unique_ptr<XyLink> xyLink;
     std::unique_ptr<ui::XyMainWindow> xyWindow;
     QMainWindow* window = nullptr;
 
@@ -213,7 +213,7 @@ int main(int argc, char* argv[]) {
     const int xyBaud = parser.value(baudOpt).toInt();
     std::function<bool(const MachineProfile&, const QString&, int)> openXy;
     openXy = [&](const MachineProfile& machine, const QString& port, int baud) -> bool {
-        std::unique_ptr<ui::XyRunnable> runnable;
+        std::unique_ptr<XyRunnable> runnable;
         SerialLinkMotion* device = nullptr;
         if (port.isEmpty()) {
             XySessionMake made = makeXySession(machine, 1);
@@ -221,7 +221,7 @@ int main(int argc, char* argv[]) {
                 std::fprintf(stderr, "trilho: %s\n", made.error.c_str());
                 return false;
             }
-            runnable = std::make_unique<ui::XySessionRunnable>(std::move(made.session));
+            runnable = std::make_unique<XySessionRunnable>(std::move(made.session));
         } else {
             SerialSettings serial;
             serial.port = port;
@@ -234,14 +234,14 @@ int main(int argc, char* argv[]) {
                 return false;
             }
             baud = made.line ? serial.baud : baud;
-            auto r = std::make_unique<ui::XyDeviceRunnable>(std::move(made));
+            auto r = std::make_unique<XyDeviceRunnable>(std::move(made));
             device = r->link();
             runnable = std::move(r);
         }
         const QByteArray geometry = xyWindow ? xyWindow->saveGeometry() : QByteArray();
         xyWindow.reset();
-        xyLink = std::make_unique<ui::XyLink>(
-            std::move(runnable), device ? ui::XyLink::Drive::EventLoop : ui::XyLink::Drive::Thread);
+        xyLink = std::make_unique<XyLink>(
+            std::move(runnable), device ? XyLink::Drive::EventLoop : XyLink::Drive::Thread);
         xyWindow = std::make_unique<ui::XyMainWindow>(*xyLink, *settings);
         {
             // Each XY machine keeps its own journal beside the rail's history.log.

@@ -8,6 +8,7 @@
 #include <QUrl>
 
 #include "core/machine/event_text.h"
+#include "core/machine/xy_event_text.h"
 #include "host/dnc/modbus_tcp_listener.h"
 #include "host/dnc/register_store.h"
 
@@ -273,7 +274,9 @@ void DncServer::refresh() {
     const ControllerStatus s = machine_.snapshot();
     machine_.drainEvents([this](const ControllerEvent& e) {
         if (e.kind == EventKind::AlarmRaised) ++link_.alarmSeq;
-        emit historyLine(trilho::historyLine(e));
+        // The XY machines' lines say their axes (xy_event_text.h), as their screens' history.
+        emit historyLine(machine_.profile().kind == MachineKind::Rail ? trilho::historyLine(e)
+                                                                      : xyHistoryLine(e));
     });
     if (pending_ && machine_.applied(pending_->ticket)) {
         link_.commandSeq = pending_->seq;

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The DNC link against real Modbus clients (issue 13): pymodbus and mbpoll talk to
 `trilho-cli serve --virtual-time` on 127.0.0.1. Usage: dnc_clients.py CLI {pymodbus,mbpoll,
-refused,alarm,files,rtu,frames,bounds}. Exits 77 (ctest SKIP_RETURN_CODE) when the client is not installed.
+refused,alarm,files,rtu,frames,bounds,xy}. Exits 77 (ctest SKIP_RETURN_CODE) when the client is not installed.
 Every wait is on a condition with a deadline, never a fixed sleep."""
 import math
 import os
@@ -48,13 +48,13 @@ def free_port():
 
 
 class Server:
-    def __init__(self, cli, programs, remote=True, extra=()):
+    def __init__(self, cli, programs, remote=True, extra=(), virtual=True):
         # A free port can be taken again before serve binds it (tests run in parallel): a
         # "cannot listen" is retried on another port, anything else fails the test.
         for attempt in range(5):
             self.port = free_port()
-            args = [cli, "serve", "--virtual-time", "--modbus-tcp", f"127.0.0.1:{self.port}",
-                    "--programs", programs] + (["--remote"] if remote else []) + list(extra)
+            args = [cli, "serve"] + (["--virtual-time"] if virtual else []) + [
+                "--modbus-tcp", f"127.0.0.1:{self.port}", "--programs", programs] + (["--remote"] if remote else []) + list(extra)
             self.proc = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                          text=True)
             self.lines = []
@@ -696,6 +696,37 @@ def run_frames(cli):
 
 
 # ---------------------------------------------------------------- mbpoll
+def run_xy(cli):
+    """The XY machines served in real time (no --virtual-time): the screens' own worker
+    (host/session/xy_link.h) behind the same map; a program downloaded and run over the link
+    ends where it says on both axes, and the link's history says what ran."""
+    for machine, kind in (("xy_dc_table", 1), ("xy_plotter", 2)):
+        with tempfile.TemporaryDirectory() as programs:
+            srv = Server(cli, programs, extra=("--machine", machine), virtual=False)
+            try:
+                p = Py(srv.port)
+                check(p.ir(IN_MACHINE)[0] == kind and p.ir(IN_AXES)[0] == 2,
+                      f"{machine}: machine {kind}, two axes")
+                check(p.exc(p.write(H_KP, regs_of(2.0))) == 6, f"{machine}: the rail's gains refused")
+                text = "N10 G01 X030 Y020 F050\nN20 M02\n"
+                check(download(p, 7, text) == APPLIED, f"{machine}: program 7 downloaded")
+                check(p.command(AUTO) == APPLIED, f"{machine}: Automatic applied")
+                wait_for(lambda: p.state() == AUTO_IDLE and p.ir(IN_HOMED)[0] == 1,
+                         f"{machine}: homed in Automatic", 120)
+                check(p.command(START, 7) == APPLIED, f"{machine}: start program 7")
+                wait_for(lambda: p.ir(IN_FINISHED)[0] == 1 and p.state() == AUTO_IDLE,
+                         f"{machine}: program finished", 120)
+                x, y = f32(*p.ir(IN_POSITION, 2)), f32(*p.ir(IN_Y_POSITION, 2))
+                check(abs(x - 30.0) < 0.5 and abs(y - 20.0) < 0.5,
+                      f"{machine}: at (30, 20) mm over the link ({x:.3f}, {y:.3f})")
+                p.c.close()
+            finally:
+                rc, out = srv.stop()
+            check(rc == 0, f"{machine}: server exit status {rc} after SIGTERM")
+            check("program 7 started" in out, f"{machine}: the history says program 7 started")
+            check("rail" not in out, f"{machine}: no line of the link's history speaks of the rail")
+
+
 def mbpoll(port, *args):
     cmd = ["mbpoll", "-m", "tcp", "-a", "1", "-p", str(port), "-0", "-1", "-o", "5"] + list(args)
     r = subprocess.run(cmd, capture_output=True, text=True, timeout=30)
@@ -755,7 +786,7 @@ def main():
             print("pymodbus not installed: skipped (scripts/deps.sh installs python3-pymodbus)")
             return 77
         {"pymodbus": run_pymodbus, "alarm": run_alarm, "refused": run_refused,
-         "files": run_files, "rtu": run_rtu, "frames": run_frames, "bounds": run_bounds}[mode](cli)
+         "files": run_files, "rtu": run_rtu, "frames": run_frames, "bounds": run_bounds, "xy": run_xy}[mode](cli)
     if failures:
         print(f"{len(failures)} failed: " + "; ".join(failures))
         return 1

@@ -16,12 +16,12 @@
 #include "core/machine/xy_controller.h"
 #include "hal/emulator/plotter_firmware.h"
 #include "host/session/xy_session.h"
+#include "host/session/xy_session_runnable.h"
 #include "translations/i18n.h"
 #include "ui/xy/plotter_comm_log.h"
 #include "ui/xy/polygon_dialog.h"
 #include "ui/xy/work_area_view.h"
 #include "ui/xy/xy_main_window.h"
-#include "ui/xy/xy_session_runnable.h"
 
 using namespace trilho;
 using namespace trilho::ui;

@@ -34,6 +34,7 @@
 #include "core/machine/machine_profile.h"
 #include "host/dnc/dnc_server.h"
 #include "host/dnc/modbus_tcp_listener.h"
+#include "host/session/xy_session_runnable.h"
 #include "ui/dnc_link.h"
 #include "ui/dnc_settings.h"
 #include "ui/keys_dialog.h"
@@ -46,7 +47,6 @@
 #include "ui/xy/work_area_view.h"
 #include "ui/xy/xy_main_window.h"
 #include "ui/xy/xy_plots.h"
-#include "ui/xy/xy_session_runnable.h"
 #include "ui/xy/xy_simulation_panel.h"
 
 using namespace trilho;

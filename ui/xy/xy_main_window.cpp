@@ -50,6 +50,7 @@
 #include "core/machine/serial_link_motion.h"
 #include "core/machine/xy_event_text.h"
 #include "host/common/data_paths.h"
+#include "host/dnc/xy_dnc_machine.h"
 #include "translations/i18n.h"
 #include "ui/confirm_box.h"
 #include "ui/dnc_dialog.h"
@@ -65,7 +66,6 @@
 #include "ui/xy/plotter_panel.h"
 #include "ui/xy/polygon_dialog.h"
 #include "ui/xy/work_area_view.h"
-#include "ui/xy/xy_dnc_machine.h"
 #include "ui/xy/xy_plots.h"
 #include "ui/xy/xy_simulation_panel.h"
 
@@ -333,8 +333,8 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     dnc_ = new DncLink(
         link_.profile(),
         [this] {
-            auto m = std::make_unique<XyDncMachine>(link_);
-            XyDncMachine* raw = m.get();
+            auto m = std::make_unique<dnc::XyDncMachine>(link_);
+            dnc::XyDncMachine* raw = m.get();
             return DncMachineMade{std::move(m),
                                   [raw](const ControllerEvent& e) { raw->noteEvent(e); }};
         },

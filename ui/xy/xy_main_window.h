@@ -10,7 +10,7 @@
 #include <memory>
 
 #include "core/gcode/program.h"
-#include "ui/xy/xy_link.h"
+#include "host/session/xy_link.h"
 
 class QLabel;
 class QListWidget;

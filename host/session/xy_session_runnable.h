@@ -4,11 +4,10 @@
 #include <memory>
 
 #include "host/session/xy_device_session.h"
+#include "host/session/xy_link.h"
 #include "host/session/xy_session.h"
-#include "ui/xy/xy_link.h"
 
 namespace trilho {
-namespace ui {
 
 class XySessionRunnable : public XyRunnable {
   public:
@@ -36,5 +35,4 @@ class XyDeviceRunnable : public XyRunnable {
     XyDeviceSession device_;
 };
 
-}  // namespace ui
 }  // namespace trilho

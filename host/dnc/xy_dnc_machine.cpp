@@ -1,9 +1,8 @@
-#include "ui/xy/xy_dnc_machine.h"
+#include "host/dnc/xy_dnc_machine.h"
 
 #include "host/dnc/xy_virtual_machine.h"
 
-namespace trilho {
-namespace ui {
+namespace trilho::dnc {
 
 void XyDncMachine::noteEvent(const ControllerEvent& e) {
     if (pending_.size() >= kMaxPending) pending_.pop_front();
@@ -53,5 +52,4 @@ void XyDncMachine::drainEvents(const std::function<void(const ControllerEvent&)>
         f(e);
 }
 
-}  // namespace ui
-}  // namespace trilho
+}  // namespace trilho::dnc

@@ -7,10 +7,9 @@
 #include <deque>
 
 #include "host/dnc/dnc_machine.h"
-#include "ui/xy/xy_link.h"
+#include "host/session/xy_link.h"
 
-namespace trilho {
-namespace ui {
+namespace trilho::dnc {
 
 class XyDncMachine final : public dnc::DncMachine {
   public:
@@ -37,5 +36,4 @@ class XyDncMachine final : public dnc::DncMachine {
     std::deque<ControllerEvent> pending_;
 };
 
-}  // namespace ui
-}  // namespace trilho
+}  // namespace trilho::dnc

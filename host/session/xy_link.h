@@ -19,7 +19,6 @@
 #include "hal/sim/xy_plant.h"
 
 namespace trilho {
-namespace ui {
 
 /// What the link runs: a controller paired with its plant (host/session's XY sessions).
 class XyRunnable {
@@ -96,5 +95,4 @@ class XyLink : public QObject {
     QTimer poll_;
 };
 
-}  // namespace ui
 }  // namespace trilho

@@ -1,10 +1,9 @@
-#include "ui/xy/xy_link.h"
+#include "host/session/xy_link.h"
 
 #include <algorithm>
 #include <chrono>
 
 namespace trilho {
-namespace ui {
 
 XyLink::XyLink(std::unique_ptr<XyRunnable> machine, Drive drive, QObject* parent)
     : QObject(parent),
@@ -121,5 +120,4 @@ void XyLink::poll() {
     emit updated(rows, events, status);
 }
 
-}  // namespace ui
 }  // namespace trilho
