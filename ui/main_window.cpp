@@ -4,55 +4,41 @@
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
-#include <QComboBox>
 #include <QDateTime>
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
-#include <QMenuBar>
+#include <QMenu>
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QStatusBar>
-#include <QStyle>
-#include <QTimer>
-#include <QToolBar>
 #include <QToolButton>
 #include <QVBoxLayout>
 
 #include <QFutureWatcher>
 #include <QProgressBar>
 #include <QScrollArea>
-#include <QShortcut>
 #include <QtConcurrent/QtConcurrentRun>
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/modal_state.h"
 #include "core/machine/event_text.h"
 #include "host/common/data_paths.h"
-#include "translations/i18n.h"
 #include "ui/code_editor.h"
-#include "ui/confirm_box.h"
-#include "ui/dnc_dialog.h"
 #include "ui/dnc_link.h"
-#include "ui/dnc_settings.h"
 #include "ui/dro_panel.h"
 #include "ui/execution_panel.h"
 #include "ui/history_panel.h"
 #include "ui/jog_panel.h"
-#include "ui/keys_dialog.h"
-#include "ui/language_menu.h"
-#include "ui/machine_choice.h"
 #include "ui/machine_link.h"
 #include "ui/plot_panel.h"
-#include "ui/program_library_panel.h"
 #include "ui/program_panel.h"
 #include "ui/rail_view.h"
 #include "ui/run_controls.h"
 #include "ui/select_file_dialog.h"
 #include "ui/simulation_panel.h"
-#include "ui/workbench/workbench_window.h"
 
 namespace trilho {
 namespace ui {

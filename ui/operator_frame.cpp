@@ -217,6 +217,7 @@ void OperatorFrame::resetLayout() {
     plotDock_->raise();
     for (QDockWidget* d : frontDocks())
         d->raise();
+    resetMachineLayout();
     applyDefaultDockSizes();
 }
 

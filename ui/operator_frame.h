@@ -128,6 +128,8 @@ class OperatorFrame : public QMainWindow {
     virtual QString armedFaultsHint() const { return {}; }
     /// The machine's default dock sizes beyond the plots' height (Reset layout, first show).
     virtual void applyMachineDockSizes() {}
+    /// Reset layout's part for the machine's own widgets (its central splitter).
+    virtual void resetMachineLayout() {}
     /// The docks brought in front after Reset layout, after the plots.
     virtual QList<QDockWidget*> frontDocks() const { return {}; }
 

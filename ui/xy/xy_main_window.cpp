@@ -1,34 +1,26 @@
 #include "ui/xy/xy_main_window.h"
 
 #include <QAction>
-#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDateTime>
 #include <QDir>
 #include <QDockWidget>
-#include <QEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGridLayout>
-#include <QHBoxLayout>
-#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
-#include <QMenuBar>
-#include <QMessageBox>
+#include <QMenu>
 #include <QPlainTextEdit>
 #include <QPointer>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
-#include <QShowEvent>
 #include <QSplitter>
 #include <QStatusBar>
-#include <QToolBar>
-#include <QToolButton>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -49,15 +41,8 @@
 #include "core/machine/serial_link_motion.h"
 #include "core/machine/xy_event_text.h"
 #include "host/common/data_paths.h"
-#include "translations/i18n.h"
-#include "ui/confirm_box.h"
-#include "ui/dnc_dialog.h"
 #include "ui/dnc_link.h"
-#include "ui/dnc_settings.h"
-#include "ui/keys_dialog.h"
-#include "ui/language_menu.h"
 #include "ui/machine_choice.h"
-#include "ui/workbench/workbench_window.h"
 #include "ui/xy/calibration_dialog.h"
 #include "ui/xy/dc_table_panel.h"
 #include "ui/xy/plotter_comm_log.h"
@@ -381,7 +366,7 @@ void XyMainWindow::setOverride(int percent) {
     override_->setText(tr("Feed override %1 %").arg(overridePercent_));
 }
 
-void XyMainWindow::applyMachineDockSizes() {
+void XyMainWindow::resetMachineLayout() {
     // The work area 3 to the side column's 2.
     const int w = split_->width();
     split_->setSizes({w * 3 / 5, w - w * 3 / 5});

@@ -104,7 +104,7 @@ class XyMainWindow : public OperatorFrame {
     void addOptionItems(QMenu* options) override;
     /// Space is typed in a text field too (a port name), not only in an editor.
     bool typesSpace(QWidget* focus) const override;
-    void applyMachineDockSizes() override;
+    void resetMachineLayout() override;
 
   private:
     /// What homing does on this machine, for the questions that lead to it.
