@@ -1185,40 +1185,8 @@
         <translation>Sistema D.N.C. didáctico para riel automático</translation>
     </message>
     <message>
-        <source>&amp;File</source>
-        <translation>&amp;Archivo</translation>
-    </message>
-    <message>
         <source>&amp;Select</source>
         <translation>&amp;Seleccionar</translation>
-    </message>
-    <message>
-        <source>E&amp;xit</source>
-        <translation>Sa&amp;lir</translation>
-    </message>
-    <message>
-        <source>&amp;Machine...</source>
-        <translation>&amp;Máquina...</translation>
-    </message>
-    <message>
-        <source>C&amp;ommand</source>
-        <translation>C&amp;omando</translation>
-    </message>
-    <message>
-        <source>&amp;Manual</source>
-        <translation>&amp;Manual</translation>
-    </message>
-    <message>
-        <source>&amp;Automatic</source>
-        <translation>&amp;Automático</translation>
-    </message>
-    <message>
-        <source>&amp;Home</source>
-        <translation>&amp;Referenciar</translation>
-    </message>
-    <message>
-        <source>Home (Ctrl+Home)</source>
-        <translation>Referenciar (Ctrl+Inicio)</translation>
     </message>
     <message>
         <source>&amp;Compile file</source>
@@ -1227,14 +1195,6 @@
     <message>
         <source>&amp;Execute file</source>
         <translation>&amp;Ejecutar archivo</translation>
-    </message>
-    <message>
-        <source>O&amp;ptions</source>
-        <translation>O&amp;pciones</translation>
-    </message>
-    <message>
-        <source>&amp;Language</source>
-        <translation>&amp;Idioma</translation>
     </message>
     <message>
         <source>&amp;Theme</source>
@@ -1273,88 +1233,20 @@
         <translation>Clásico (1996)</translation>
     </message>
     <message>
-        <source>&amp;Windows</source>
-        <translation>&amp;Ventanas</translation>
-    </message>
-    <message>
-        <source>&amp;Reset layout</source>
-        <translation>&amp;Restablecer disposición</translation>
-    </message>
-    <message>
-        <source>Tuning &amp;workbench...</source>
-        <translation>&amp;Banco de sintonía...</translation>
-    </message>
-    <message>
-        <source>&amp;Help</source>
-        <translation>A&amp;yuda</translation>
-    </message>
-    <message>
-        <source>&amp;Keys</source>
-        <translation>&amp;Teclas</translation>
-    </message>
-    <message>
-        <source>Plots</source>
-        <translation>Gráficos</translation>
-    </message>
-    <message>
         <source>Jog</source>
         <translation>Manual</translation>
-    </message>
-    <message>
-        <source>History</source>
-        <translation>Historial</translation>
     </message>
     <message>
         <source>Rail</source>
         <translation>Riel</translation>
     </message>
     <message>
-        <source>Simulation</source>
-        <translation>Simulación</translation>
-    </message>
-    <message>
-        <source>Program library</source>
-        <translation>Biblioteca</translation>
-    </message>
-    <message>
-        <source>&amp;DNC link...</source>
-        <translation>Enlace &amp;DNC...</translation>
-    </message>
-    <message>
-        <source>&amp;Remote (DNC)</source>
-        <translation>&amp;Remoto (DNC)</translation>
-    </message>
-    <message>
-        <source>Allow the cell&apos;s supervisor to write and command over the DNC link (%1). Off at every start.</source>
-        <translation>Permite al supervisor de la célula escribir y mandar por el enlace DNC (%1). Desactivado en cada inicio.</translation>
-    </message>
-    <message>
-        <source>E-STOP LATCHED</source>
-        <translation>EMERGENCIA ACTIVADA</translation>
-    </message>
-    <message>
-        <source>E-STOP (Pause, F1)</source>
-        <translation>EMERGENCIA (Pausa, F1)</translation>
-    </message>
-    <message>
         <source>EMERGENCY STOP LATCHED: the drive is off. Clear the cause, then Reset E-stop.</source>
         <translation>PARADA DE EMERGENCIA ENCLAVADA: el accionamiento está apagado. Elimine la causa y luego Liberar emergencia.</translation>
     </message>
     <message>
-        <source>Reset E-stop</source>
-        <translation>Liberar emergencia</translation>
-    </message>
-    <message>
-        <source>Safety</source>
-        <translation>Seguridad</translation>
-    </message>
-    <message>
-        <source>Acknowledge</source>
-        <translation>Reconocer</translation>
-    </message>
-    <message>
-        <source>Machine</source>
-        <translation>Máquina</translation>
+        <source>Set in the Simulation dock; Clear all there puts the rail right.</source>
+        <translation>Definida en el panel Simulación; Borrar todo allí corrige el riel.</translation>
     </message>
     <message>
         <source>File message</source>
@@ -1544,14 +1436,6 @@
         <source>The rail is moving (x = %1 mm, towards x = %2 mm). Exit stops it with an emergency stop. Exit now?</source>
         <translation>El carril se está moviendo (x = %1 mm, hacia x = %2 mm). Salir lo detiene con una parada de emergencia. ¿Salir ahora?</translation>
     </message>
-    <message>
-        <source>Simulated fault armed: %1</source>
-        <translation>Falla simulada activa: %1</translation>
-    </message>
-    <message>
-        <source>Set in the Simulation dock; Clear all there puts the rail right.</source>
-        <translation>Definida en el panel Simulación; Borrar todo allí corrige el riel.</translation>
-    </message>
 </context>
 <context>
     <name>trilho::ui::ModelView</name>
@@ -1654,6 +1538,125 @@
     <message>
         <source>Autotune failed: %1</source>
         <translation>Autoajuste fallido: %1</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::OperatorFrame</name>
+    <message>
+        <source>Machine</source>
+        <translation>Máquina</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Archivo</translation>
+    </message>
+    <message>
+        <source>&amp;Machine...</source>
+        <translation>&amp;Máquina...</translation>
+    </message>
+    <message>
+        <source>E&amp;xit</source>
+        <translation>Sa&amp;lir</translation>
+    </message>
+    <message>
+        <source>C&amp;ommand</source>
+        <translation>C&amp;omando</translation>
+    </message>
+    <message>
+        <source>&amp;Manual</source>
+        <translation>&amp;Manual</translation>
+    </message>
+    <message>
+        <source>&amp;Automatic</source>
+        <translation>&amp;Automático</translation>
+    </message>
+    <message>
+        <source>&amp;Home</source>
+        <translation>&amp;Referenciar</translation>
+    </message>
+    <message>
+        <source>Home (Ctrl+Home)</source>
+        <translation>Referenciar (Ctrl+Inicio)</translation>
+    </message>
+    <message>
+        <source>O&amp;ptions</source>
+        <translation>O&amp;pciones</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Idioma</translation>
+    </message>
+    <message>
+        <source>&amp;DNC link...</source>
+        <translation>Enlace &amp;DNC...</translation>
+    </message>
+    <message>
+        <source>&amp;Remote (DNC)</source>
+        <translation>&amp;Remoto (DNC)</translation>
+    </message>
+    <message>
+        <source>Allow the cell&apos;s supervisor to write and command over the DNC link (%1). Off at every start.</source>
+        <translation>Permite al supervisor de la célula escribir y mandar por el enlace DNC (%1). Desactivado en cada inicio.</translation>
+    </message>
+    <message>
+        <source>&amp;Windows</source>
+        <translation>&amp;Ventanas</translation>
+    </message>
+    <message>
+        <source>&amp;Reset layout</source>
+        <translation>&amp;Restablecer disposición</translation>
+    </message>
+    <message>
+        <source>Tuning &amp;workbench...</source>
+        <translation>&amp;Banco de sintonía...</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>A&amp;yuda</translation>
+    </message>
+    <message>
+        <source>&amp;Keys</source>
+        <translation>&amp;Teclas</translation>
+    </message>
+    <message>
+        <source>Plots</source>
+        <translation>Gráficos</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>Historial</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulación</translation>
+    </message>
+    <message>
+        <source>Program library</source>
+        <translation>Biblioteca</translation>
+    </message>
+    <message>
+        <source>Safety</source>
+        <translation>Seguridad</translation>
+    </message>
+    <message>
+        <source>Reset E-stop</source>
+        <translation>Liberar emergencia</translation>
+    </message>
+    <message>
+        <source>Acknowledge</source>
+        <translation>Reconocer</translation>
+    </message>
+    <message>
+        <source>E-STOP LATCHED</source>
+        <translation>EMERGENCIA ACTIVADA</translation>
+    </message>
+    <message>
+        <source>E-STOP (Pause, F1)</source>
+        <translation>EMERGENCIA (Pausa, F1)</translation>
+    </message>
+    <message>
+        <source>Simulated fault armed: %1</source>
+        <translation>Falla simulada activa: %1</translation>
     </message>
 </context>
 <context>
@@ -2565,14 +2568,6 @@
         <translation>Corrección de avance %1 %</translation>
     </message>
     <message>
-        <source>Simulated fault armed: %1</source>
-        <translation>Falla simulada activa: %1</translation>
-    </message>
-    <message>
-        <source>Machine</source>
-        <translation>Máquina</translation>
-    </message>
-    <message>
         <source>the pen lifts and the carriage runs to the origin sensors, where both axes are zeroed (0, 0).</source>
         <translation>la pluma sube y el carro va hasta los sensores de origen, donde los dos ejes se ponen a cero (0, 0).</translation>
     </message>
@@ -2623,10 +2618,6 @@
     <message>
         <source>The history could not be written: %1</source>
         <translation>No se pudo escribir el historial: %1</translation>
-    </message>
-    <message>
-        <source>E-STOP (Pause, F1)</source>
-        <translation>EMERGENCIA (Pausa, F1)</translation>
     </message>
     <message>
         <source>Block N%1, line %2</source>
@@ -2737,44 +2728,8 @@
         <translation>Corrección de avance 100 %</translation>
     </message>
     <message>
-        <source>&amp;File</source>
-        <translation>&amp;Archivo</translation>
-    </message>
-    <message>
         <source>&amp;Open program...</source>
         <translation>&amp;Abrir programa...</translation>
-    </message>
-    <message>
-        <source>&amp;Machine...</source>
-        <translation>&amp;Máquina...</translation>
-    </message>
-    <message>
-        <source>E&amp;xit</source>
-        <translation>Sa&amp;lir</translation>
-    </message>
-    <message>
-        <source>&amp;Command</source>
-        <translation>&amp;Comando</translation>
-    </message>
-    <message>
-        <source>&amp;Manual</source>
-        <translation>&amp;Manual</translation>
-    </message>
-    <message>
-        <source>&amp;Automatic</source>
-        <translation>&amp;Automático</translation>
-    </message>
-    <message>
-        <source>&amp;Home</source>
-        <translation>&amp;Referenciar</translation>
-    </message>
-    <message>
-        <source>&amp;Options</source>
-        <translation>&amp;Opciones</translation>
-    </message>
-    <message>
-        <source>&amp;Language</source>
-        <translation>&amp;Idioma</translation>
     </message>
     <message>
         <source>&amp;Connection...</source>
@@ -2789,68 +2744,8 @@
         <translation>Polígono por &amp;puntos...</translation>
     </message>
     <message>
-        <source>&amp;DNC link...</source>
-        <translation>Enlace &amp;DNC...</translation>
-    </message>
-    <message>
-        <source>&amp;Remote (DNC)</source>
-        <translation>&amp;Remoto (DNC)</translation>
-    </message>
-    <message>
-        <source>Allow the cell&apos;s supervisor to write and command over the DNC link (%1). Off at every start.</source>
-        <translation>Permite al supervisor de la célula escribir y mandar por el enlace DNC (%1). Desactivado en cada inicio.</translation>
-    </message>
-    <message>
-        <source>&amp;Windows</source>
-        <translation>&amp;Ventanas</translation>
-    </message>
-    <message>
-        <source>&amp;Reset layout</source>
-        <translation>&amp;Restablecer disposición</translation>
-    </message>
-    <message>
-        <source>Tuning &amp;workbench...</source>
-        <translation>&amp;Banco de sintonía...</translation>
-    </message>
-    <message>
         <source>The plotter has no encoder: there is no response to measure</source>
         <translation>El plotter no tiene encoder: no hay respuesta que medir</translation>
-    </message>
-    <message>
-        <source>&amp;Help</source>
-        <translation>A&amp;yuda</translation>
-    </message>
-    <message>
-        <source>&amp;Keys</source>
-        <translation>&amp;Teclas</translation>
-    </message>
-    <message>
-        <source>Plots</source>
-        <translation>Gráficos</translation>
-    </message>
-    <message>
-        <source>History</source>
-        <translation>Historial</translation>
-    </message>
-    <message>
-        <source>Simulation</source>
-        <translation>Simulación</translation>
-    </message>
-    <message>
-        <source>Home (Ctrl+Home)</source>
-        <translation>Referenciar (Ctrl+Inicio)</translation>
-    </message>
-    <message>
-        <source>Safety</source>
-        <translation>Seguridad</translation>
-    </message>
-    <message>
-        <source>Reset E-stop</source>
-        <translation>Liberar emergencia</translation>
-    </message>
-    <message>
-        <source>Acknowledge</source>
-        <translation>Reconocer</translation>
     </message>
     <message>
         <source>Program: %1</source>

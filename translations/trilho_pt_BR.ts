@@ -1185,40 +1185,8 @@
         <translation>Sistema D.N.C. didático para trilho automático</translation>
     </message>
     <message>
-        <source>&amp;File</source>
-        <translation>&amp;Arquivo</translation>
-    </message>
-    <message>
         <source>&amp;Select</source>
         <translation>&amp;Selecionar</translation>
-    </message>
-    <message>
-        <source>E&amp;xit</source>
-        <translation>Sai&amp;r</translation>
-    </message>
-    <message>
-        <source>&amp;Machine...</source>
-        <translation>&amp;Máquina...</translation>
-    </message>
-    <message>
-        <source>C&amp;ommand</source>
-        <translation>C&amp;omando</translation>
-    </message>
-    <message>
-        <source>&amp;Manual</source>
-        <translation>&amp;Manual</translation>
-    </message>
-    <message>
-        <source>&amp;Automatic</source>
-        <translation>&amp;Automático</translation>
-    </message>
-    <message>
-        <source>&amp;Home</source>
-        <translation>&amp;Referenciar</translation>
-    </message>
-    <message>
-        <source>Home (Ctrl+Home)</source>
-        <translation>Referenciar (Ctrl+Home)</translation>
     </message>
     <message>
         <source>&amp;Compile file</source>
@@ -1227,14 +1195,6 @@
     <message>
         <source>&amp;Execute file</source>
         <translation>&amp;Executar arquivo</translation>
-    </message>
-    <message>
-        <source>O&amp;ptions</source>
-        <translation>O&amp;pções</translation>
-    </message>
-    <message>
-        <source>&amp;Language</source>
-        <translation>&amp;Idioma</translation>
     </message>
     <message>
         <source>&amp;Theme</source>
@@ -1273,88 +1233,20 @@
         <translation>Clássico (1996)</translation>
     </message>
     <message>
-        <source>&amp;Windows</source>
-        <translation>&amp;Janelas</translation>
-    </message>
-    <message>
-        <source>&amp;Reset layout</source>
-        <translation>&amp;Restaurar disposição</translation>
-    </message>
-    <message>
-        <source>Tuning &amp;workbench...</source>
-        <translation>&amp;Bancada de sintonia...</translation>
-    </message>
-    <message>
-        <source>&amp;Help</source>
-        <translation>Aj&amp;uda</translation>
-    </message>
-    <message>
-        <source>&amp;Keys</source>
-        <translation>&amp;Teclas</translation>
-    </message>
-    <message>
-        <source>Plots</source>
-        <translation>Gráficos</translation>
-    </message>
-    <message>
         <source>Jog</source>
         <translation>Manual</translation>
-    </message>
-    <message>
-        <source>History</source>
-        <translation>Histórico</translation>
     </message>
     <message>
         <source>Rail</source>
         <translation>Trilho</translation>
     </message>
     <message>
-        <source>Simulation</source>
-        <translation>Simulação</translation>
-    </message>
-    <message>
-        <source>Program library</source>
-        <translation>Biblioteca</translation>
-    </message>
-    <message>
-        <source>&amp;DNC link...</source>
-        <translation>Enlace &amp;DNC...</translation>
-    </message>
-    <message>
-        <source>&amp;Remote (DNC)</source>
-        <translation>&amp;Remoto (DNC)</translation>
-    </message>
-    <message>
-        <source>Allow the cell&apos;s supervisor to write and command over the DNC link (%1). Off at every start.</source>
-        <translation>Permite ao supervisor da célula escrever e comandar pelo enlace DNC (%1). Desligado a cada início.</translation>
-    </message>
-    <message>
-        <source>E-STOP LATCHED</source>
-        <translation>EMERGÊNCIA ACIONADA</translation>
-    </message>
-    <message>
-        <source>E-STOP (Pause, F1)</source>
-        <translation>EMERGÊNCIA (Pause, F1)</translation>
-    </message>
-    <message>
         <source>EMERGENCY STOP LATCHED: the drive is off. Clear the cause, then Reset E-stop.</source>
         <translation>PARADA DE EMERGÊNCIA TRAVADA: o acionamento está desligado. Elimine a causa e depois Liberar emergência.</translation>
     </message>
     <message>
-        <source>Reset E-stop</source>
-        <translation>Liberar emergência</translation>
-    </message>
-    <message>
-        <source>Safety</source>
-        <translation>Segurança</translation>
-    </message>
-    <message>
-        <source>Acknowledge</source>
-        <translation>Reconhecer</translation>
-    </message>
-    <message>
-        <source>Machine</source>
-        <translation>Máquina</translation>
+        <source>Set in the Simulation dock; Clear all there puts the rail right.</source>
+        <translation>Definida no painel Simulação; Limpar tudo lá corrige o trilho.</translation>
     </message>
     <message>
         <source>File message</source>
@@ -1544,14 +1436,6 @@
         <source>The rail is moving (x = %1 mm, towards x = %2 mm). Exit stops it with an emergency stop. Exit now?</source>
         <translation>O trilho está em movimento (x = %1 mm, rumo a x = %2 mm). Sair o pára com uma parada de emergência. Sair agora?</translation>
     </message>
-    <message>
-        <source>Simulated fault armed: %1</source>
-        <translation>Falha simulada ativa: %1</translation>
-    </message>
-    <message>
-        <source>Set in the Simulation dock; Clear all there puts the rail right.</source>
-        <translation>Definida no painel Simulação; Limpar tudo lá corrige o trilho.</translation>
-    </message>
 </context>
 <context>
     <name>trilho::ui::ModelView</name>
@@ -1654,6 +1538,125 @@
     <message>
         <source>Autotune failed: %1</source>
         <translation>Sintonia automática falhou: %1</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::OperatorFrame</name>
+    <message>
+        <source>Machine</source>
+        <translation>Máquina</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Arquivo</translation>
+    </message>
+    <message>
+        <source>&amp;Machine...</source>
+        <translation>&amp;Máquina...</translation>
+    </message>
+    <message>
+        <source>E&amp;xit</source>
+        <translation>Sai&amp;r</translation>
+    </message>
+    <message>
+        <source>C&amp;ommand</source>
+        <translation>C&amp;omando</translation>
+    </message>
+    <message>
+        <source>&amp;Manual</source>
+        <translation>&amp;Manual</translation>
+    </message>
+    <message>
+        <source>&amp;Automatic</source>
+        <translation>&amp;Automático</translation>
+    </message>
+    <message>
+        <source>&amp;Home</source>
+        <translation>&amp;Referenciar</translation>
+    </message>
+    <message>
+        <source>Home (Ctrl+Home)</source>
+        <translation>Referenciar (Ctrl+Home)</translation>
+    </message>
+    <message>
+        <source>O&amp;ptions</source>
+        <translation>O&amp;pções</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Idioma</translation>
+    </message>
+    <message>
+        <source>&amp;DNC link...</source>
+        <translation>Enlace &amp;DNC...</translation>
+    </message>
+    <message>
+        <source>&amp;Remote (DNC)</source>
+        <translation>&amp;Remoto (DNC)</translation>
+    </message>
+    <message>
+        <source>Allow the cell&apos;s supervisor to write and command over the DNC link (%1). Off at every start.</source>
+        <translation>Permite ao supervisor da célula escrever e comandar pelo enlace DNC (%1). Desligado a cada início.</translation>
+    </message>
+    <message>
+        <source>&amp;Windows</source>
+        <translation>&amp;Janelas</translation>
+    </message>
+    <message>
+        <source>&amp;Reset layout</source>
+        <translation>&amp;Restaurar disposição</translation>
+    </message>
+    <message>
+        <source>Tuning &amp;workbench...</source>
+        <translation>&amp;Bancada de sintonia...</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>Aj&amp;uda</translation>
+    </message>
+    <message>
+        <source>&amp;Keys</source>
+        <translation>&amp;Teclas</translation>
+    </message>
+    <message>
+        <source>Plots</source>
+        <translation>Gráficos</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>Histórico</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulação</translation>
+    </message>
+    <message>
+        <source>Program library</source>
+        <translation>Biblioteca</translation>
+    </message>
+    <message>
+        <source>Safety</source>
+        <translation>Segurança</translation>
+    </message>
+    <message>
+        <source>Reset E-stop</source>
+        <translation>Liberar emergência</translation>
+    </message>
+    <message>
+        <source>Acknowledge</source>
+        <translation>Reconhecer</translation>
+    </message>
+    <message>
+        <source>E-STOP LATCHED</source>
+        <translation>EMERGÊNCIA ACIONADA</translation>
+    </message>
+    <message>
+        <source>E-STOP (Pause, F1)</source>
+        <translation>EMERGÊNCIA (Pause, F1)</translation>
+    </message>
+    <message>
+        <source>Simulated fault armed: %1</source>
+        <translation>Falha simulada ativa: %1</translation>
     </message>
 </context>
 <context>
@@ -2565,14 +2568,6 @@
         <translation>Correção de avanço %1 %</translation>
     </message>
     <message>
-        <source>Simulated fault armed: %1</source>
-        <translation>Falha simulada ativa: %1</translation>
-    </message>
-    <message>
-        <source>Machine</source>
-        <translation>Máquina</translation>
-    </message>
-    <message>
         <source>the pen lifts and the carriage runs to the origin sensors, where both axes are zeroed (0, 0).</source>
         <translation>a caneta sobe e o carro vai até os sensores de origem, onde os dois eixos são zerados (0, 0).</translation>
     </message>
@@ -2623,10 +2618,6 @@
     <message>
         <source>The history could not be written: %1</source>
         <translation>O histórico não pôde ser gravado: %1</translation>
-    </message>
-    <message>
-        <source>E-STOP (Pause, F1)</source>
-        <translation>EMERGÊNCIA (Pause, F1)</translation>
     </message>
     <message>
         <source>Block N%1, line %2</source>
@@ -2737,44 +2728,8 @@
         <translation>Correção de avanço 100 %</translation>
     </message>
     <message>
-        <source>&amp;File</source>
-        <translation>&amp;Arquivo</translation>
-    </message>
-    <message>
         <source>&amp;Open program...</source>
         <translation>&amp;Abrir programa...</translation>
-    </message>
-    <message>
-        <source>&amp;Machine...</source>
-        <translation>&amp;Máquina...</translation>
-    </message>
-    <message>
-        <source>E&amp;xit</source>
-        <translation>Sai&amp;r</translation>
-    </message>
-    <message>
-        <source>&amp;Command</source>
-        <translation>&amp;Comando</translation>
-    </message>
-    <message>
-        <source>&amp;Manual</source>
-        <translation>&amp;Manual</translation>
-    </message>
-    <message>
-        <source>&amp;Automatic</source>
-        <translation>&amp;Automático</translation>
-    </message>
-    <message>
-        <source>&amp;Home</source>
-        <translation>&amp;Referenciar</translation>
-    </message>
-    <message>
-        <source>&amp;Options</source>
-        <translation>&amp;Opções</translation>
-    </message>
-    <message>
-        <source>&amp;Language</source>
-        <translation>&amp;Idioma</translation>
     </message>
     <message>
         <source>&amp;Connection...</source>
@@ -2789,68 +2744,8 @@
         <translation>Polígono por &amp;pontos...</translation>
     </message>
     <message>
-        <source>&amp;DNC link...</source>
-        <translation>Enlace &amp;DNC...</translation>
-    </message>
-    <message>
-        <source>&amp;Remote (DNC)</source>
-        <translation>&amp;Remoto (DNC)</translation>
-    </message>
-    <message>
-        <source>Allow the cell&apos;s supervisor to write and command over the DNC link (%1). Off at every start.</source>
-        <translation>Permite ao supervisor da célula escrever e comandar pelo enlace DNC (%1). Desligado a cada início.</translation>
-    </message>
-    <message>
-        <source>&amp;Windows</source>
-        <translation>&amp;Janelas</translation>
-    </message>
-    <message>
-        <source>&amp;Reset layout</source>
-        <translation>&amp;Restaurar disposição</translation>
-    </message>
-    <message>
-        <source>Tuning &amp;workbench...</source>
-        <translation>&amp;Bancada de sintonia...</translation>
-    </message>
-    <message>
         <source>The plotter has no encoder: there is no response to measure</source>
         <translation>O plotter não tem encoder: não há resposta a medir</translation>
-    </message>
-    <message>
-        <source>&amp;Help</source>
-        <translation>Aj&amp;uda</translation>
-    </message>
-    <message>
-        <source>&amp;Keys</source>
-        <translation>&amp;Teclas</translation>
-    </message>
-    <message>
-        <source>Plots</source>
-        <translation>Gráficos</translation>
-    </message>
-    <message>
-        <source>History</source>
-        <translation>Histórico</translation>
-    </message>
-    <message>
-        <source>Simulation</source>
-        <translation>Simulação</translation>
-    </message>
-    <message>
-        <source>Home (Ctrl+Home)</source>
-        <translation>Referenciar (Ctrl+Home)</translation>
-    </message>
-    <message>
-        <source>Safety</source>
-        <translation>Segurança</translation>
-    </message>
-    <message>
-        <source>Reset E-stop</source>
-        <translation>Liberar emergência</translation>
-    </message>
-    <message>
-        <source>Acknowledge</source>
-        <translation>Reconhecer</translation>
     </message>
     <message>
         <source>Program: %1</source>

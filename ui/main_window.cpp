@@ -4,61 +4,47 @@
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
-#include <QComboBox>
 #include <QDateTime>
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
-#include <QMenuBar>
+#include <QMenu>
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QStatusBar>
-#include <QStyle>
-#include <QTimer>
-#include <QToolBar>
 #include <QToolButton>
 #include <QVBoxLayout>
 
 #include <QFutureWatcher>
 #include <QProgressBar>
 #include <QScrollArea>
-#include <QShortcut>
 #include <QtConcurrent/QtConcurrentRun>
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/modal_state.h"
 #include "core/machine/event_text.h"
 #include "host/common/data_paths.h"
-#include "translations/i18n.h"
 #include "ui/code_editor.h"
-#include "ui/confirm_box.h"
-#include "ui/dnc_dialog.h"
 #include "ui/dnc_link.h"
-#include "ui/dnc_settings.h"
 #include "ui/dro_panel.h"
 #include "ui/execution_panel.h"
 #include "ui/history_panel.h"
 #include "ui/jog_panel.h"
-#include "ui/keys_dialog.h"
-#include "ui/language_menu.h"
-#include "ui/machine_choice.h"
 #include "ui/machine_link.h"
 #include "ui/plot_panel.h"
-#include "ui/program_library_panel.h"
 #include "ui/program_panel.h"
 #include "ui/rail_view.h"
 #include "ui/run_controls.h"
 #include "ui/select_file_dialog.h"
 #include "ui/simulation_panel.h"
-#include "ui/workbench/workbench_window.h"
 
 namespace trilho {
 namespace ui {
 
 MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
-    : QMainWindow(parent), link_(link), settings_(settings) {
+    : OperatorFrame(settings, parent), link_(link) {
     setObjectName(QStringLiteral("mainWindow"));
     // The centre: a latched E-stop banner, the readout and the run controls always in view,
     // then the 1996 form. The form scrolls rather than hold the window (and the Plots dock)
@@ -92,8 +78,25 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     v->addLayout(top);
     v->addWidget(formScroll, 1);
     setCentralWidget(centre);
-    dnc_ = new DncLink(link_, this);
-    buildMenus();
+    // The safety bar's buttons: the E-stop always live (keys Pause and F1), with reset,
+    // acknowledge and Home beside it.
+    estopTool_ = new QToolButton(this);
+    estopTool_->setObjectName(QStringLiteral("estop"));
+    estopTool_->setStyleSheet(
+        // Styled :enabled only, so a disabled look stays the palette's grey (never used: the
+        // E-stop is always live). Latched, it turns dark with a yellow border and caption.
+        QStringLiteral("QToolButton#estop:enabled { background: rgb(200,0,0); color: white; "
+                       "font-weight: bold; padding: 6px 14px;"
+                       " border: 2px solid rgb(120,0,0); border-radius: 4px; }"
+                       "QToolButton#estop[latched=\"true\"] { background: rgb(90,0,0); "
+                       "color: yellow; border: 3px solid yellow; }"));
+    auto* homeButton = new QToolButton(this);
+    homeButton->setObjectName(QStringLiteral("homeButton"));
+    buildFrame(new DncLink(link_, this), estopTool_, new QToolButton(this), new QToolButton(this),
+               homeButton);
+    manual_->setCheckable(true);
+    automatic_->setCheckable(true);
+    manual_->setChecked(true);
     buildDocks();
     stateLabel_ = new QLabel(this);
     hintLabel_ = new QLabel(this);
@@ -103,11 +106,7 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     timingLabel_->setObjectName(QStringLiteral("timing"));
     statusBar()->addWidget(hintLabel_, 1);
     statusBar()->addPermanentWidget(timingLabel_);
-    dncLabel_ = new QLabel(this);
-    dncLabel_->setObjectName(QStringLiteral("dncState"));
-    dncLabel_->setContentsMargins(8, 0, 12, 0);  // px: apart from the timing and state texts
-    dncLabel_->hide();
-    statusBar()->addPermanentWidget(dncLabel_);
+    statusBar()->addPermanentWidget(dncLabel());
     compileProgress_ = new QProgressBar(this);
     compileProgress_->setRange(0, 0);  // busy: the compiler runs in one pass
     compileProgress_->setMaximumWidth(120);
@@ -126,15 +125,14 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     connect(panel_, &ExecutionPanel::leftPressed, &link_, &MachineLink::manualLeft);
     connect(panel_, &ExecutionPanel::rightPressed, &link_, &MachineLink::manualRight);
     // PARA stops in both modes: ciclo_continuo.G tells the operator to end it with PARA.
-    connect(panel_, &ExecutionPanel::stopPressed, this, &MainWindow::stopKey);
+    connect(panel_, &ExecutionPanel::stopPressed, this, &MainWindow::controlledStop);
     connect(runControls_, &RunControls::cycleStartRequested, this, &MainWindow::requestCycleStart);
     connect(runControls_, &RunControls::holdRequested, &link_, &MachineLink::hold);
     connect(runControls_, &RunControls::continueRequested, &link_, &MachineLink::resume);
-    connect(runControls_, &RunControls::stopRequested, this, &MainWindow::stopKey);
+    connect(runControls_, &RunControls::stopRequested, this, &MainWindow::controlledStop);
     connect(runControls_, &RunControls::singleBlockToggled, &link_, &MachineLink::setSingleBlock);
     connect(runControls_, &RunControls::feedOverrideChanged, &link_, &MachineLink::setFeedOverride);
     connect(panel_, &ExecutionPanel::gainEdited, this, &MainWindow::applyGain);
-    qApp->installEventFilter(this);
 
     dialect_ = settings_.value(QStringLiteral("dialect")).toString() == QLatin1String("classic")
                    ? Dialect::Classic
@@ -147,23 +145,10 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     loadGainsFromSettings();
     retranslate();
     onStatus(link_.status());
-    defaultLayout_ = saveState();
-    restoreGeometry(settings_.value(QStringLiteral("geometry")).toByteArray());
-    // Dock sizes come back with the saved state; the first time, the default sizes apply once
-    // the window has its size (the plots at least 150 px high at 1366x768).
-    defaultSizesPending_ =
-        !restoreState(settings_.value(QStringLiteral("windowState")).toByteArray());
+    keepLayout(QStringLiteral("geometry"), QStringLiteral("windowState"));
     const QString lastProgram = settings_.value(QStringLiteral("lastProgram")).toString();
     if (!lastProgram.isEmpty() && QFileInfo::exists(lastProgram)) selectProgram(lastProgram);
-
-    // The DNC link: served again at start when it was on, always with Remote off (consent is
-    // given anew by the operator, never remembered).
-    connect(dnc_, &DncLink::stateChanged, this, &MainWindow::showDncState);
-    connect(dnc_, &DncLink::historyLine, this, &MainWindow::addDncLine);
-    const DncSettings dnc = DncSettings::load(settings_);
-    library_->setFolder(dnc.programs());
-    if (dnc.enabled) dnc_->start(dnc, nullptr);  // a failure shows in the status bar
-    showDncState();
+    startDnc();
 }
 
 MainWindow::~MainWindow() {
@@ -175,48 +160,22 @@ MainWindow::~MainWindow() {
     disconnect(&link_, nullptr, this, nullptr);
 }
 
-void MainWindow::buildMenus() {
-    // The frame's actions carry the same object names on every machine's screen (issue 19, one
-    // frame; the parity test compares them).
-    fileMenu_ = menuBar()->addMenu(QString());
-    select_ = fileMenu_->addAction(QString(), this, &MainWindow::chooseFile);
-    select_->setObjectName(QStringLiteral("selectProgram"));
-    select_->setShortcut(QKeySequence::Open);
-    machine_ = fileMenu_->addAction(QString(), this, &MainWindow::requestMachine);
-    machine_->setObjectName(QStringLiteral("machine"));
-    fileMenu_->addSeparator();
-    exit_ = fileMenu_->addAction(QString(), this, &QWidget::close);
-    exit_->setObjectName(QStringLiteral("exit"));
-
-    commandMenu_ = menuBar()->addMenu(QString());
-    manual_ = commandMenu_->addAction(QString(), &link_, &MachineLink::selectManual);
-    automatic_ = commandMenu_->addAction(QString(), this, &MainWindow::requestAutomatic);
-    manual_->setObjectName(QStringLiteral("manual"));
-    automatic_->setObjectName(QStringLiteral("automatic"));
-    manual_->setCheckable(true);
-    automatic_->setCheckable(true);
-    manual_->setChecked(true);
-    // The explicit Home (issue 19 item 3), as LinuxCNC's, Mach4's and UGS's: asks first.
-    home_ = commandMenu_->addAction(QString(), this, &MainWindow::requestHome);
-    home_->setObjectName(QStringLiteral("home"));
-    home_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Home));
-    home_->setShortcutContext(Qt::ApplicationShortcut);
-    commandMenu_->addSeparator();
-    compile_ = commandMenu_->addAction(QString(), this, &MainWindow::compileSelected);
-    execute_ = commandMenu_->addAction(QString(), this, &MainWindow::requestCycleStart);
+void MainWindow::addCommandItems(QMenu* command) {
+    command->addSeparator();
+    compile_ = command->addAction(QString(), this, &MainWindow::compileSelected);
+    execute_ = command->addAction(QString(), this, &MainWindow::requestCycleStart);
     compile_->setEnabled(false);  // until Automatic, as the original
     execute_->setEnabled(false);
+}
 
-    optionsMenu_ = menuBar()->addMenu(QString());
-    languageMenu_ = optionsMenu_->addMenu(QString());
-    languages_ = addLanguageActions(languageMenu_, [this](const QString& c) { setLanguage(c); });
-    themeMenu_ = optionsMenu_->addMenu(QString());
+void MainWindow::addOptionItems(QMenu* options) {
+    themeMenu_ = options->addMenu(QString());
     auto* themes = new QActionGroup(this);
     classicTheme_ = themeMenu_->addAction(QString(), this, [this] { setTheme(Theme::Classic); });
     systemTheme_ = themeMenu_->addAction(QString(), this, [this] { setTheme(Theme::System); });
     for (QAction* a : {classicTheme_, systemTheme_})
         a->setCheckable(true), themes->addAction(a);
-    lawMenu_ = optionsMenu_->addMenu(QString());
+    lawMenu_ = options->addMenu(QString());
     auto* laws = new QActionGroup(this);
     classicLaw_ = lawMenu_->addAction(QString(), this, [this] {
         settings_.setValue(QStringLiteral("law"), QStringLiteral("classic"));
@@ -230,7 +189,7 @@ void MainWindow::buildMenus() {
     });
     for (QAction* a : {classicLaw_, engineeredLaw_})
         a->setCheckable(true), laws->addAction(a);
-    dialectMenu_ = optionsMenu_->addMenu(QString());
+    dialectMenu_ = options->addMenu(QString());
     auto* dialects = new QActionGroup(this);
     standardDialect_ = dialectMenu_->addAction(QString(), this, [this] {
         dialect_ = Dialect::Standard;
@@ -242,88 +201,13 @@ void MainWindow::buildMenus() {
     });
     for (QAction* a : {standardDialect_, classicDialect_})
         a->setCheckable(true), dialects->addAction(a);
-    optionsMenu_->addSeparator();
-    dncAction_ = optionsMenu_->addAction(QString(), this, [this] { openDncDialog(); });
-    dncAction_->setObjectName(QStringLiteral("dnc"));
-    remote_ = optionsMenu_->addAction(QString());
-    remote_->setObjectName(QStringLiteral("remote"));
-    remote_->setCheckable(true);
-    remote_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
-    remote_->setShortcutContext(Qt::WindowShortcut);
-    remote_->setEnabled(false);  // until the link is served
-    connect(remote_, &QAction::toggled, dnc_, &DncLink::setRemote);
-    viewMenu_ = menuBar()->addMenu(QString());
-    resetLayout_ = viewMenu_->addAction(QString(), this, &MainWindow::resetLayout);
-    workbench_ = viewMenu_->addAction(QString(), this, &MainWindow::openWorkbench);
-    workbench_->setObjectName(QStringLiteral("workbenchAction"));
-    workbench_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_W));
-    resetLayout_->setObjectName(QStringLiteral("resetLayout"));
-    viewMenu_->addSeparator();
-    helpMenu_ = menuBar()->addMenu(QString());
-    keys_ = helpMenu_->addAction(QString(), this, [this] {
-        KeysDialog dialog(runControls_->keyedActions() << home_ << select_ << remote_, this);
-        dialog.exec();
-    });
-    keys_->setObjectName(QStringLiteral("keys"));
+}
 
-    // E-stop always visible (key: Esc), with reset and acknowledge beside it.
-    QToolBar* bar = addToolBar(QString());
-    safetyBar_ = bar;
-    bar->setObjectName(QStringLiteral("safetyBar"));
-    bar->setMovable(false);
-    bar->toggleViewAction()->setEnabled(false);  // the E-stop can never be hidden
-    estop_ = new QToolButton(bar);
-    estop_->setObjectName(QStringLiteral("estop"));
-    estop_->setStyleSheet(
-        // Styled :enabled only, so a disabled look stays the palette's grey (never used: the
-        // E-stop is always live). Latched, it turns dark with a yellow border and caption.
-        QStringLiteral("QToolButton#estop:enabled { background: rgb(200,0,0); color: white; "
-                       "font-weight: bold; padding: 6px 14px;"
-                       " border: 2px solid rgb(120,0,0); border-radius: 4px; }"
-                       "QToolButton#estop[latched=\"true\"] { background: rgb(90,0,0); "
-                       "color: yellow; border: 3px solid yellow; }"));
-    resetEstop_ = new QToolButton(bar);
-    ack_ = new QToolButton(bar);
-    bar->addWidget(estop_);
-    bar->addWidget(resetEstop_);
-    bar->addWidget(ack_);
-    homeButton_ = new QToolButton(bar);
-    homeButton_->setObjectName(QStringLiteral("homeButton"));
-    connect(homeButton_, &QToolButton::clicked, this, &MainWindow::requestHome);
-    bar->addWidget(homeButton_);
-    bar->addSeparator();
-    remoteButton_ = new QToolButton(bar);
-    remoteButton_->setObjectName(QStringLiteral("remoteButton"));
-    remoteButton_->setDefaultAction(remote_);
-    // On, it stands out: the supervisor may move the rail.
-    remoteButton_->setStyleSheet(
-        QStringLiteral("QToolButton#remoteButton:checked { background: rgb(255,170,0); "
-                       "color: black; font-weight: bold; border: 2px solid rgb(160,90,0); "
-                       "border-radius: 4px; padding: 4px 10px; }"));
-    bar->addWidget(remoteButton_);
-    // An armed fault of the Simulation dock is said here, in every tab, until cleared.
-    faultArmed_ = new QLabel(bar);
-    faultArmed_->setObjectName(QStringLiteral("faultArmed"));
-    faultArmed_->setStyleSheet(
-        QStringLiteral("QLabel#faultArmed { background: rgb(255,170,0); color: black; "
-                       "font-weight: bold; border: 2px solid rgb(160,90,0); border-radius: 4px; "
-                       "padding: 4px 10px; }"));
-    faultArmedAction_ = bar->addWidget(faultArmed_);
-    faultArmedAction_->setVisible(false);
-    connect(estop_, &QToolButton::clicked, &link_, &MachineLink::emergencyStop);
-    connect(resetEstop_, &QToolButton::clicked, &link_, &MachineLink::resetEmergencyStop);
-    connect(ack_, &QToolButton::clicked, &link_, &MachineLink::acknowledge);
+QList<QAction*> MainWindow::keyedActions() const {
+    return runControls_->keyedActions() << home_ << select_ << remote_;
 }
 
 void MainWindow::buildDocks() {
-    auto dock = [this](QWidget* w, const char* name, Qt::DockWidgetArea area) {
-        auto* d = new QDockWidget(this);
-        d->setObjectName(QString::fromLatin1(name));
-        d->setWidget(w);
-        addDockWidget(area, d);
-        viewMenu_->addAction(d->toggleViewAction());
-        return d;
-    };
     program_ = new ProgramPanel(this);
     plots_ = new PlotPanel(this);
     jogPanel_ = new JogPanel(this);
@@ -332,34 +216,19 @@ void MainWindow::buildDocks() {
     history_ = new HistoryPanel(this);
     rail_ = new RailView(link_.profile(), this);
     history_->setJournalPath(link_.journalPath());
-    programDock_ = dock(program_, "programDock", Qt::RightDockWidgetArea);
+    programDock_ = addPanelDock(program_, "programDock", Qt::RightDockWidgetArea);
     // The rail beside the plots, at the bottom: in the right column it held the window's middle
     // (and so the Plots dock) at its full height on a 768-line screen.
-    railDock_ = dock(rail_, "railDock", Qt::BottomDockWidgetArea);
-    jogDock_ = dock(jogPanel_, "jogDock", Qt::RightDockWidgetArea);
-    plotDock_ = dock(plots_, "plotDock", Qt::BottomDockWidgetArea);
-    historyDock_ = dock(history_, "historyDock", Qt::BottomDockWidgetArea);
+    railDock_ = addPanelDock(rail_, "railDock", Qt::BottomDockWidgetArea);
+    jogDock_ = addPanelDock(jogPanel_, "jogDock", Qt::RightDockWidgetArea);
     simulation_ = new SimulationPanel(this);
-    auto* simulationScroll = new QScrollArea(this);  // tall form: scroll, never grow the window
-    simulationScroll->setWidget(simulation_);
-    simulationScroll->setWidgetResizable(true);
-    simulationScroll->setFrameShape(QFrame::NoFrame);
-    simulationDock_ = dock(simulationScroll, "simulationDock", Qt::BottomDockWidgetArea);
-    splitDockWidget(plotDock_, railDock_, Qt::Horizontal);  // before the tabs, or it is a tab
-    tabifyDockWidget(plotDock_, historyDock_);
-    tabifyDockWidget(historyDock_, simulationDock_);
+    addFrameDocks(plots_, history_, simulation_, railDock_);
     connect(simulation_, &SimulationPanel::faultsChanged, &link_, &MachineLink::setFaults);
     connect(simulation_, &SimulationPanel::lateTicksChanged, &link_, &MachineLink::setLateTicks);
     connect(simulation_, &SimulationPanel::armedChanged, this, &MainWindow::showArmedFaults);
-    plotDock_->raise();
     tabifyDockWidget(programDock_, jogDock_);
-    library_ = new ProgramLibraryPanel(this);
-    libraryDock_ = dock(library_, "libraryDock", Qt::RightDockWidgetArea);
-    tabifyDockWidget(jogDock_, libraryDock_);
+    addLibraryDock(Qt::RightDockWidgetArea, jogDock_);
     programDock_->raise();
-    connect(library_, &ProgramLibraryPanel::openRequested, this, [this](const QString& path) {
-        if (selectProgram(path)) programDock_->raise();
-    });
 
     // The unsaved marker: "name *" in the Program field and the dock's title.
     connect(program_, &ProgramPanel::dirtyChanged, this, [this] { showProgramName(); });
@@ -417,21 +286,12 @@ void MainWindow::buildDocks() {
 }
 
 void MainWindow::retranslate() {
-    if (faultArmed_ && simulation_) showArmedFaults(simulation_->armedText());
+    if (simulation_) showArmedFaults(simulation_->armedText());
     setWindowTitle(tr("Didactic D.N.C. system for the automatic rail"));
-    fileMenu_->setTitle(tr("&File"));
+    retranslateFrame();
     select_->setText(tr("&Select"));
-    exit_->setText(tr("E&xit"));
-    machine_->setText(tr("&Machine..."));
-    commandMenu_->setTitle(tr("C&ommand"));
-    manual_->setText(tr("&Manual"));
-    automatic_->setText(tr("&Automatic"));
-    home_->setText(tr("&Home"));
-    homeButton_->setText(tr("Home (Ctrl+Home)"));
     compile_->setText(tr("&Compile file"));
     execute_->setText(tr("&Execute file"));
-    optionsMenu_->setTitle(tr("O&ptions"));
-    languageMenu_->setTitle(tr("&Language"));
     themeMenu_->setTitle(tr("&Theme"));
     classicTheme_->setText(tr("Classic (1996 colours)"));
     systemTheme_->setText(tr("System"));
@@ -441,62 +301,52 @@ void MainWindow::retranslate() {
     dialectMenu_->setTitle(tr("G-code &dialect"));
     standardDialect_->setText(tr("Standard"));
     classicDialect_->setText(tr("Classic (1996)"));
-    viewMenu_->setTitle(tr("&Windows"));
-    resetLayout_->setText(tr("&Reset layout"));
-    workbench_->setText(tr("Tuning &workbench..."));
-    helpMenu_->setTitle(tr("&Help"));
-    keys_->setText(tr("&Keys"));
     showProgramName();
-    plotDock_->setWindowTitle(tr("Plots"));
     jogDock_->setWindowTitle(tr("Jog"));
-    historyDock_->setWindowTitle(tr("History"));
     railDock_->setWindowTitle(tr("Rail"));
-    simulationDock_->setWindowTitle(tr("Simulation"));
-    libraryDock_->setWindowTitle(tr("Program library"));
-    dncAction_->setText(tr("&DNC link..."));
-    remote_->setText(tr("&Remote (DNC)"));
-    remote_->setToolTip(tr("Allow the cell's supervisor to write and command over the DNC "
-                           "link (%1). Off at every start.")
-                            .arg(remote_->shortcut().toString(QKeySequence::NativeText)));
-    estop_->setText(last_.state == ControllerState::EStop ? tr("E-STOP LATCHED")
-                                                          : tr("E-STOP (Pause, F1)"));
     estopBanner_->setText(
         tr("EMERGENCY STOP LATCHED: the drive is off. Clear the cause, then Reset E-stop."));
-    resetEstop_->setText(tr("Reset E-stop"));
-    safetyBar_->setWindowTitle(tr("Safety"));
-    ack_->setText(tr("Acknowledge"));
-    checkLanguage(languages_, language_);
     refreshOnline();
     onStatus(last_);
 }
 
-void MainWindow::changeEvent(QEvent* e) {
-    if (e->type() == QEvent::LanguageChange) retranslate();
-    QMainWindow::changeEvent(e);
+const MachineProfile& MainWindow::machineProfile() const {
+    return link_.profile();
 }
 
-void MainWindow::setLanguage(const QString& lang) {
-    if (!installLanguage(lang)) return;
-    language_ = lang;
-    settings_.setValue(QStringLiteral("language"), lang);
-    retranslate();  // widgets get LanguageChange too; this covers the window itself at once
-}
-
-void MainWindow::requestMachine() {
-    const std::optional<MachineKind> next = chooseMachine(this, MachineKind::Rail);
-    if (next) switchTo(*next);
-}
-
-bool MainWindow::switchTo(MachineKind next) {
-    if (next == MachineKind::Rail) return false;
+bool MainWindow::machineMoving() const {
     const ControllerState st = last_.state;
-    const bool moving = st == ControllerState::Running || st == ControllerState::Waiting ||
-                        st == ControllerState::Homing || st == ControllerState::Paused ||
-                        (st == ControllerState::Manual && last_.manualCode != 128);
-    if (moving && !confirm(tr("Machine"), switchQuestion(MachineKind::Rail, next))) return false;
+    return st == ControllerState::Running || st == ControllerState::Waiting ||
+           st == ControllerState::Homing || st == ControllerState::Paused ||
+           (st == ControllerState::Manual && last_.manualCode != 128);
+}
+
+void MainWindow::stopMachine() {
     link_.stop();
-    emit machineChosen(shippedProfileName(next));
-    return true;
+}
+
+void MainWindow::selectManual() {
+    link_.selectManual();
+}
+
+void MainWindow::emergencyStop() {
+    link_.emergencyStop();
+}
+
+void MainWindow::resetEmergencyStop() {
+    link_.resetEmergencyStop();
+}
+
+void MainWindow::acknowledgeAlarms() {
+    link_.acknowledge();
+}
+
+void MainWindow::openFromLibrary(const QString& path) {
+    if (selectProgram(path)) programDock_->raise();
+}
+
+QString MainWindow::armedFaultsHint() const {
+    return tr("Set in the Simulation dock; Clear all there puts the rail right.");
 }
 
 void MainWindow::setTheme(Theme theme) {
@@ -714,11 +564,7 @@ void MainWindow::requestHome() {
     link_.home();
 }
 
-bool MainWindow::confirm(const QString& title, const QString& text) {
-    return confirmer_ ? confirmer_(title, text) : askYesNoDefaultNo(this, title, text);
-}
-
-void MainWindow::stopKey() {
+void MainWindow::controlledStop() {
     if (last_.automatic) {
         link_.stop();
     } else {
@@ -734,43 +580,8 @@ void MainWindow::showProgramName() {
     programDock_->setWindowTitle(tr("Program") + mark);
 }
 
-void MainWindow::openWorkbench() {
-    // A window of its own, on a copy of the machine's profile: its tests run on a simulated
-    // plant in virtual time and never move the machine.
-    if (!workbenchWindow_) {
-        workbenchWindow_ = new WorkbenchWindow(link_.profile(), this);
-        workbenchWindow_->setWindowFlag(Qt::Window);
-    }
-    workbenchWindow_->show();
-    workbenchWindow_->raise();
-    workbenchWindow_->activateWindow();
-}
-
-void MainWindow::resetLayout() {
-    restoreState(defaultLayout_);
-    for (QDockWidget* d : {programDock_, plotDock_, jogDock_, historyDock_, railDock_,
-                           simulationDock_, libraryDock_}) {
-        d->setFloating(false);
-        d->show();
-    }
-    plotDock_->raise();
-    programDock_->raise();
-    applyDefaultDockSizes();
-}
-
-void MainWindow::showEvent(QShowEvent* e) {
-    QMainWindow::showEvent(e);
-    // Default dock sizes need the window's own size: applied once it is shown and laid out.
-    if (defaultSizesPending_) {
-        defaultSizesPending_ = false;
-        QTimer::singleShot(0, this, &MainWindow::applyDefaultDockSizes);
-    }
-}
-
-void MainWindow::applyDefaultDockSizes() {
-    // The plots get what two 150-px plots need under their buttons; the form gets the rest.
-    layout()->activate();  // the docks' current sizes first, or the request is dropped
-    resizeDocks({plotDock_}, {230}, Qt::Vertical);
+void MainWindow::applyMachineDockSizes() {
+    // The plots beside the rail's view 7 to 3; the program's column at least 240 px.
     resizeDocks({plotDock_, railDock_}, {width() * 7 / 10, width() * 3 / 10}, Qt::Horizontal);
     resizeDocks({programDock_}, {std::max(240, width() * 3 / 10)}, Qt::Horizontal);
 }
@@ -784,31 +595,7 @@ void MainWindow::startCompiled(std::shared_ptr<Program> program, std::size_t fro
     link_.run(program, fromIndex);
 }
 
-DncDialog* MainWindow::openDncDialog() {
-    if (!dncDialog_) {
-        dncDialog_ = new DncDialog(*dnc_, settings_, this);
-        connect(dncDialog_, &DncDialog::applied, this,
-                [this](const DncSettings& s) { library_->setFolder(s.programs()); });
-    }
-    dncDialog_->show();
-    dncDialog_->raise();
-    dncDialog_->activateWindow();
-    return dncDialog_;
-}
-
-void MainWindow::showDncState() {
-    const QSignalBlocker block(remote_);  // showing the state is not the operator's toggle
-    remote_->setEnabled(dnc_->running());
-    remote_->setChecked(dnc_->remote());
-    const QString text = dnc_->statusLine();
-    dncLabel_->setText(text);
-    dncLabel_->setToolTip(dnc_->statusText());
-    dncLabel_->setStyleSheet(dnc_->error().isEmpty() ? QString()
-                                                     : QStringLiteral("color: rgb(170,0,0);"));
-    dncLabel_->setVisible(!text.isEmpty());
-}
-
-void MainWindow::addDncLine(const QString& line) {
+void MainWindow::addDncHistoryLine(const QString& line) {
     history_->add(QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")),
                   QStringLiteral("status"), 0, line);
     link_.journalNote(QStringLiteral("status"), 0, line);
@@ -855,12 +642,7 @@ void MainWindow::onStatus(const ControllerStatus& s) {
     dro_->showStatus(s);
     const bool latched = s.state == ControllerState::EStop;
     estopBanner_->setVisible(latched);
-    estop_->setText(latched ? tr("E-STOP LATCHED") : tr("E-STOP (Pause, F1)"));
-    if (estop_->property("latched").toBool() != latched) {
-        estop_->setProperty("latched", latched);
-        estop_->style()->unpolish(estop_);  // a dynamic property needs a re-polish to show
-        estop_->style()->polish(estop_);
-    }
+    showSafetyState(latched, s.state == ControllerState::Alarm);
     jogPanel_->setManual(!s.automatic);
     rail_->setState(s.servo.positionMm, s.servo.targetMm, s.servo.switches,
                     s.servo.mode == ServoMode::Move);
@@ -870,16 +652,14 @@ void MainWindow::onStatus(const ControllerStatus& s) {
     program_->setExecutingLine(executing ? static_cast<int>(s.blockLine) : 0);
     // A law carries its period (issue 22 item 1): chosen while the rail moves, the period would
     // switch under a running move. The law is chosen at rest; the DNC's SetLaw is busy then too.
-    const bool atRest = !executing && s.state != ControllerState::Homing &&
-                        s.servo.mode != ServoMode::Move;
+    const bool atRest =
+        !executing && s.state != ControllerState::Homing && s.servo.mode != ServoMode::Move;
     for (QAction* a : {classicLaw_, engineeredLaw_})
         a->setEnabled(atRest);
     if (++plotDivider_ % 2 == 0) plots_->addSample(s);  // 25 Hz is plenty for the eye
     stateLabel_->setText(QStringLiteral("%1  |  x = %2 mm")
                              .arg(stateText(s.state))
                              .arg(s.servo.positionMm, 0, 'f', 2));
-    resetEstop_->setEnabled(s.state == ControllerState::EStop);
-    ack_->setEnabled(s.state == ControllerState::Alarm);
     hintLabel_->setText(nextStepText());
     refreshOnline();
     QString timing;
@@ -960,32 +740,7 @@ void MainWindow::onEvent(const ControllerEvent& e) {
                   static_cast<int>(e.alarm), line);
 }
 
-bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
-    if (event->type() != QEvent::KeyPress) return QMainWindow::eventFilter(watched, event);
-    auto* key = static_cast<QKeyEvent*>(event);
-    // E-stop keys (Pause/Break and F1): no menu, list or dialog uses them, so they trip
-    // wherever the focus is, in any of the program's windows, popups included.
-    if (key->key() == Qt::Key_Pause || key->key() == Qt::Key_F1) {
-        link_.emergencyStop();
-        return true;
-    }
-    // Esc closes the menu, drop-down or dialog that is open; only on the bare main screen is
-    // it a controlled stop (never the E-stop: a nuisance trip costs a reset and a homing).
-    const bool popupOpen = QApplication::activePopupWidget() != nullptr ||
-                           QApplication::activeModalWidget() != nullptr;
-    if (!isActiveWindow() || popupOpen) return QMainWindow::eventFilter(watched, event);
-    if (key->key() == Qt::Key_Escape) {
-        stopKey();
-        return true;
-    }
-    // Space stops the rail whatever has the focus (a gain field takes only numbers), but for
-    // the program editor, where it is a space: PARA in manual, Stop in automatic.
-    QWidget* focus = QApplication::focusWidget();
-    const bool editor = qobject_cast<QPlainTextEdit*>(focus) != nullptr;
-    if (key->key() == Qt::Key_Space && !editor && !key->isAutoRepeat()) {
-        stopKey();
-        return true;
-    }
+bool MainWindow::machineKey(QKeyEvent* key, QWidget* focus) {
     // F5 in Manual: cycle start is grey there; say why rather than nothing (operator.md gap 24).
     if (key->key() == Qt::Key_F5 && !last_.automatic && !key->isAutoRepeat()) {
         statusBar()->showMessage(tr("Cycle start runs in Automatic: choose Command > Automatic "
@@ -994,12 +749,12 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
         return true;
     }
     // The original's keys in manual mode: '<' left, '>' right - unless the operator is typing.
-    const bool typing = editor || qobject_cast<QLineEdit*>(focus);
-    if (typing || last_.automatic) return QMainWindow::eventFilter(watched, event);
+    const bool typing = qobject_cast<QPlainTextEdit*>(focus) || qobject_cast<QLineEdit*>(focus);
+    if (typing || last_.automatic) return false;
     const QString text = key->text();
     if (text == QLatin1String("<") || text == QLatin1String(",")) return link_.manualLeft(), true;
     if (text == QLatin1String(">") || text == QLatin1String(".")) return link_.manualRight(), true;
-    return QMainWindow::eventFilter(watched, event);
+    return false;
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {
@@ -1033,21 +788,8 @@ void MainWindow::closeEvent(QCloseEvent* e) {
             return e->ignore();
         link_.emergencyStop();
     }
-    settings_.setValue(QStringLiteral("geometry"), saveGeometry());
-    settings_.setValue(QStringLiteral("windowState"), saveState());
+    saveLayout();
     e->accept();
-}
-
-void MainWindow::showArmedFaults(const QString& text) {
-    armedFaults_ = text;
-    // At most 320 px, so the bar keeps E-stop, Reset, Acknowledge and Home in view at 1024 px
-    // wide; the whole list on hover.
-    const QString full = tr("Simulated fault armed: %1").arg(text);
-    faultArmed_->setText(faultArmed_->fontMetrics().elidedText(full, Qt::ElideRight, 300));
-    faultArmed_->setMaximumWidth(320);
-    faultArmed_->setToolTip(full + QLatin1Char('\n') +
-                            tr("Set in the Simulation dock; Clear all there puts the rail right."));
-    faultArmedAction_->setVisible(!text.isEmpty());
 }
 
 }  // namespace ui

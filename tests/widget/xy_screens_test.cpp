@@ -4,12 +4,14 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QMap>
 #include <QModbusReply>
@@ -26,6 +28,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolButton>
+#include <QTreeWidget>
 #include <QWheelEvent>
 #include <cmath>
 
@@ -35,11 +38,13 @@
 #include "host/dnc/dnc_server.h"
 #include "host/dnc/modbus_tcp_listener.h"
 #include "host/session/xy_session_runnable.h"
+#include "ui/dnc_dialog.h"
 #include "ui/dnc_link.h"
 #include "ui/dnc_settings.h"
 #include "ui/keys_dialog.h"
 #include "ui/machine_link.h"
 #include "ui/main_window.h"
+#include "ui/program_library_panel.h"
 #include "ui/start_screen.h"
 #include "ui/workbench/workbench_window.h"
 #include "ui/xy/dc_table_panel.h"
@@ -838,6 +843,62 @@ class XyScreensTest : public QObject {
         device.waitForFinished(5000);
         QVERIFY(QString::fromUtf8(device.readAllStandardOutput())
                     .contains(QStringLiteral("objects plotted")));
+    }
+
+    void xyProgramLibraryOpensIntoTheWorkArea() {
+        // Issue 19, one frame: the XY screens have the rail's program library (their DNC link
+        // serves the same folder); a program opened from it is compiled for this machine and
+        // its path drawn, as File > Open program... does.
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        w.setConfirmer([](const QString&, const QString&) { return false; });
+        QVERIFY(w.findChild<QDockWidget*>(QStringLiteral("libraryDock")) != nullptr);
+        const QString programs = dir.filePath(QStringLiteral("programs"));
+        QVERIFY(QDir().mkpath(programs));
+        QVERIFY(QFile::copy(QStringLiteral(TRILHO_PROGRAMS_DIR "/mesa_xy_quadrado.G"),
+                            programs + QStringLiteral("/0042.G")));
+        DncDialog* d = w.openDncDialog();
+        d->programsEdit()->setText(programs);
+        QVERIFY(d->apply());  // off, but the folder is taken
+        d->close();
+        QCOMPARE(w.library()->folder(), programs);
+        QTreeWidget* list = w.library()->list();
+        QCOMPARE(list->topLevelItemCount(), 1);
+        QCOMPARE(list->topLevelItem(0)->text(0), QStringLiteral("42"));
+        list->setCurrentItem(list->topLevelItem(0));
+        w.library()->openButton()->click();
+        QVERIFY(w.program() != nullptr);
+        QVERIFY(!w.workArea()->plannedPath().empty());
+        QVERIFY(w.startButton()->isEnabled());
+    }
+
+    void xyLayoutIsKeptPerMachine() {
+        // Issue 19, one frame: an XY screen keeps its docks as the operator left them, as the
+        // rail's does, under its own machine's name.
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_plotter.json"));
+        {
+            XyMainWindow w(*link, settings);
+            w.setConfirmer([](const QString&, const QString&) { return false; });
+            w.resize(1024, 738);
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            w.findChild<QDockWidget*>(QStringLiteral("historyDock"))->hide();
+            QVERIFY(w.close());
+        }
+        QVERIFY(settings.contains(QStringLiteral("xy_plotter/windowState")));
+        QVERIFY(!settings.contains(QStringLiteral("windowState")));  // the rail's own
+        XyMainWindow again(*link, settings);
+        again.setConfirmer([](const QString&, const QString&) { return false; });
+        again.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&again));
+        QVERIFY(!again.findChild<QDockWidget*>(QStringLiteral("historyDock"))->isVisibleTo(&again));
+        QVERIFY(again.findChild<QDockWidget*>(QStringLiteral("plotDock"))->isVisibleTo(&again));
+        again.resetLayoutAction()->trigger();
+        QVERIFY(again.findChild<QDockWidget*>(QStringLiteral("historyDock"))->isVisibleTo(&again));
     }
 
     void startScreenOffersTheThreeMachines() {

@@ -1,35 +1,26 @@
 #include "ui/xy/xy_main_window.h"
 
 #include <QAction>
-#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDateTime>
 #include <QDir>
 #include <QDockWidget>
-#include <QEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGridLayout>
-#include <QHBoxLayout>
-#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
-#include <QMenuBar>
-#include <QMessageBox>
+#include <QMenu>
 #include <QPlainTextEdit>
 #include <QPointer>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
-#include <QShortcut>
-#include <QShowEvent>
 #include <QSplitter>
 #include <QStatusBar>
-#include <QToolBar>
-#include <QToolButton>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -51,15 +42,8 @@
 #include "core/machine/xy_event_text.h"
 #include "host/common/data_paths.h"
 #include "host/dnc/xy_dnc_machine.h"
-#include "translations/i18n.h"
-#include "ui/confirm_box.h"
-#include "ui/dnc_dialog.h"
 #include "ui/dnc_link.h"
-#include "ui/dnc_settings.h"
-#include "ui/keys_dialog.h"
-#include "ui/language_menu.h"
 #include "ui/machine_choice.h"
-#include "ui/workbench/workbench_window.h"
 #include "ui/xy/calibration_dialog.h"
 #include "ui/xy/dc_table_panel.h"
 #include "ui/xy/plotter_comm_log.h"
@@ -95,10 +79,6 @@ QString stateText(ControllerState s) {
     return {};
 }
 
-/// The plots' dock at first and after Reset layout: the rail's 230 px, so the work area keeps
-/// most of a 768-px screen's height.
-constexpr int kPlotDockHeight = 230;
-
 bool moving(ControllerState s) {
     return s == ControllerState::Running || s == ControllerState::Waiting ||
            s == ControllerState::Homing;
@@ -106,7 +86,7 @@ bool moving(ControllerState s) {
 }  // namespace
 
 XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
-    : QMainWindow(parent), link_(link), settings_(settings) {
+    : OperatorFrame(settings, parent), link_(link) {
     const MachineProfile& profile = link_.profile();
     view_ = new WorkAreaView(this);
     const AxisTravel& x = profile.limits.x;
@@ -146,16 +126,17 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
         return b;
     };
     open_ = button("xyOpen");
-    automatic_ = button("xyAutomatic");
+    automaticButton_ = button("xyAutomatic");
     start_ = button("xyStart");
     hold_ = button("xyHold");
     resume_ = button("xyResume");
     stop_ = button("xyStop");
-    estop_ = button("xyEStop");
-    reset_ = button("xyReset");
-    ack_ = button("xyAck");
-    // The rail's E-stop look: red, bold, always live.
-    estop_->setStyleSheet(
+    estopPush_ = button("xyEStop");
+    resetPush_ = button("xyReset");
+    ackPush_ = button("xyAck");
+    // The rail's E-stop look: red, bold, always live; with Reset E-stop and Acknowledge (and
+    // Home) on the frame's safety bar.
+    estopPush_->setStyleSheet(
         QStringLiteral("QPushButton#xyEStop { background: rgb(200,0,0); color: white; "
                        "font-weight: bold; padding: 6px 14px; border: 2px solid rgb(120,0,0); "
                        "border-radius: 4px; }"));
@@ -163,38 +144,11 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     singleButton_->setCheckable(true);
     override_ = new QLabel(this);
     override_->setObjectName(QStringLiteral("xyOverride"));
-    homeButton_ = button("homeButton");
-    connect(homeButton_, &QPushButton::clicked, this, &XyMainWindow::requestHome);
-    // An armed fault of the Simulation dock is said on the safety bar, until cleared.
-    faultArmed_ = new QLabel(this);
-    faultArmed_->setObjectName(QStringLiteral("faultArmed"));
-    faultArmed_->setStyleSheet(
-        QStringLiteral("QLabel#faultArmed { background: rgb(255,170,0); color: black; "
-                       "font-weight: bold; border: 2px solid rgb(160,90,0); border-radius: 4px; "
-                       "padding: 4px 10px; }"));
-    // The safety bar as the rail's, in the same place (issue 19, one frame): E-stop, Reset
-    // E-stop, Acknowledge, Home, Remote and an armed fault, never hidden.
-    safetyBar_ = addToolBar(QString());
-    safetyBar_->setObjectName(QStringLiteral("safetyBar"));
-    safetyBar_->setMovable(false);
-    safetyBar_->toggleViewAction()->setEnabled(false);
-    for (QPushButton* b : {estop_, reset_, ack_, homeButton_})
-        safetyBar_->addWidget(b);
-    safetyBar_->addSeparator();
-    remoteButton_ = new QToolButton(safetyBar_);
-    remoteButton_->setObjectName(QStringLiteral("remoteButton"));
-    remoteButton_->setStyleSheet(
-        QStringLiteral("QToolButton#remoteButton:checked { background: rgb(255,170,0); "
-                       "color: black; font-weight: bold; border: 2px solid rgb(160,90,0); "
-                       "border-radius: 4px; padding: 4px 10px; }"));
-    safetyBar_->addWidget(remoteButton_);
-    faultArmedAction_ = safetyBar_->addWidget(faultArmed_);
-    faultArmedAction_->setVisible(false);
     // The run controls in two rows under it: one row of nine buttons was 1039 px wide in
     // pt_BR, wider than a 1024-px screen (issue 19, the fit).
     auto* controls = new QGridLayout;
     int column = 0;
-    for (QPushButton* b : {open_, automatic_})
+    for (QPushButton* b : {open_, automaticButton_})
         controls->addWidget(b, 0, column++);
     controls->addWidget(override_, 0, column, 1, 3);
     column = 0;
@@ -203,7 +157,7 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     controls->setColumnStretch(5, 1);
 
     connect(open_, &QPushButton::clicked, this, &XyMainWindow::chooseFile);
-    connect(automatic_, &QPushButton::clicked, this, &XyMainWindow::requestAutomatic);
+    connect(automaticButton_, &QPushButton::clicked, this, &XyMainWindow::requestAutomatic);
     connect(start_, &QPushButton::clicked, this, [this] { startProgram(); });
     connect(hold_, &QPushButton::clicked, this,
             [this] { link_.post([](XyController& c) { c.hold(); }); });
@@ -217,16 +171,10 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     });
     connect(stop_, &QPushButton::clicked, this,
             [this] { link_.post([](XyController& c) { c.stop(); }); });
-    connect(estop_, &QPushButton::clicked, this,
-            [this] { link_.post([](XyController& c) { c.emergencyStop(); }); });
-    connect(reset_, &QPushButton::clicked, this,
-            [this] { link_.post([](XyController& c) { c.resetEmergencyStop(); }); });
-    connect(ack_, &QPushButton::clicked, this,
-            [this] { link_.post([](XyController& c) { c.acknowledgeAlarms(); }); });
     connect(singleButton_, &QPushButton::toggled, this,
             [this](bool on) { link_.post([on](XyController& c) { c.setSingleBlock(on); }); });
     // The run keys are actions named as the rail's (RunControls), with its keys; E-stop on
-    // Pause/Break and F1 (eventFilter), which no dialog or menu uses.
+    // Pause/Break and F1 (the frame's), which no dialog or menu uses.
     auto key = [this](const char* name, const QKeySequence& k, QPushButton* b) {
         auto* a = new QAction(this);
         a->setObjectName(QString::fromLatin1(name));
@@ -239,9 +187,6 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
             });
         return a;
     };
-    auto* estopKey = new QShortcut(QKeySequence(Qt::Key_Pause), this);
-    estopKey->setContext(Qt::ApplicationShortcut);
-    connect(estopKey, &QShortcut::activated, estop_, &QPushButton::click);
     cycleStart_ = key("cycleStart", QKeySequence(Qt::Key_F5), start_);
     feedHold_ = key("feedHold", QKeySequence(Qt::Key_F6), hold_);
     continue_ = key("continue", QKeySequence(Qt::Key_F7), resume_);
@@ -254,7 +199,6 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
             [this] { setOverride(overridePercent_ - 10); });
     connect(overrideUp_, &QAction::triggered, this, [this] { setOverride(overridePercent_ + 10); });
     connect(overrideReset_, &QAction::triggered, this, [this] { setOverride(100); });
-    qApp->installEventFilter(this);  // F1, Esc and Space: eventFilter
 
     // The machine's own panel.
     QWidget* machinePanel = nullptr;
@@ -329,8 +273,9 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     setCentralWidget(central);
 
     split_ = split;
-    // The DNC link: the same server as the rail's, over this screen's own link (issue 19).
-    dnc_ = new DncLink(
+    // The frame as the rail's (issue 19, one frame): its menus, the safety bar with this
+    // machine's buttons, and the same DNC server over this screen's own link.
+    auto* dnc = new DncLink(
         link_.profile(),
         [this] {
             auto m = std::make_unique<dnc::XyDncMachine>(link_);
@@ -339,55 +284,39 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
                                   [raw](const ControllerEvent& e) { raw->noteEvent(e); }};
         },
         this);
-    buildMenus();
-    remoteButton_->setDefaultAction(remote_);
-    // The docks as the rail's (issue 19, one frame): plots, history and simulation in tabs
-    // under the work area, the plots in front; each can be moved, and Windows > Reset layout
+    auto* homeButton = button("homeButton");
+    buildFrame(dnc, estopPush_, resetPush_, ackPush_, homeButton);
+    // As the run keys: Ctrl+O wherever the focus is in the program's windows.
+    select_->setShortcutContext(Qt::ApplicationShortcut);
+    // The tuning workbench, as on the rail (issue 21): step tests per axis on the DC table; the
+    // plotter has no encoder, so nothing to measure a response with.
+    workbench_->setEnabled(profile.kind == MachineKind::DcTable);
+    // The docks: plots, history and simulation in tabs under the work area, the plots in
+    // front, the program library beside them; each can be moved, and Windows > Reset layout
     // puts them back.
-    auto dock = [this](QWidget* w, const char* name) {
-        auto* d = new QDockWidget(this);
-        d->setObjectName(QString::fromLatin1(name));
-        d->setWidget(w);
-        addDockWidget(Qt::BottomDockWidgetArea, d);
-        windowsMenu_->addAction(d->toggleViewAction());
-        return d;
-    };
-    windowsMenu_->addSeparator();
-    plotDock_ = dock(plots_, "plotDock");
-    historyDock_ = dock(history_, "historyDock");
     simulation_ = new XySimulationPanel(profile.kind, this);
-    auto* simulationScroll = new QScrollArea(this);
-    simulationScroll->setWidget(simulation_);
-    simulationScroll->setWidgetResizable(true);
-    simulationScroll->setFrameShape(QFrame::NoFrame);
-    simulationDock_ = dock(simulationScroll, "simulationDock");
-    tabifyDockWidget(plotDock_, historyDock_);
-    tabifyDockWidget(historyDock_, simulationDock_);
+    addFrameDocks(plots_, history_, simulation_);
+    addLibraryDock(Qt::BottomDockWidgetArea, simulationDock_);
     plotDock_->raise();
     // A board on a serial line has no simulated plant: no faults to offer.
-    simulationDock_->setVisible(link_.simulated());
-    simulationDock_->toggleViewAction()->setVisible(link_.simulated());
+    if (!link_.simulated()) withdrawDock(simulationDock_);
     connect(simulation_, &XySimulationPanel::faultsChanged, this, [this] {
         // Read here, on the screen's thread; the plant gets a copy on the machine's.
         const XyFaults faults = simulation_->faults();
         link_.postToPlant([faults](XyPlant& plant) { applyFaults(faults, plant); });
     });
     connect(simulation_, &XySimulationPanel::armedChanged, this, &XyMainWindow::showArmedFaults);
-    defaultLayout_ = saveState();
+    // Each machine keeps its own layout (its docks are not the rail's).
+    const QString machineName = shippedProfileName(profile.kind);
+    keepLayout(machineName + QStringLiteral("/geometry"),
+               machineName + QStringLiteral("/windowState"));
 
     linkLabel_ = new QLabel(this);
     linkLabel_->setObjectName(QStringLiteral("xyLink"));
-    dncLabel_ = new QLabel(this);
-    dncLabel_->setObjectName(QStringLiteral("dncState"));
-    statusBar()->addPermanentWidget(dncLabel_);
+    statusBar()->addPermanentWidget(dncLabel());
     statusBar()->addPermanentWidget(linkLabel_);
 
-    // Served again at start when it was on, always with Remote off (consent is given anew).
-    connect(dnc_, &DncLink::stateChanged, this, &XyMainWindow::showDncState);
-    connect(dnc_, &DncLink::historyLine, this, [this](const QString& l) { addHistory(l, false); });
-    const DncSettings dncSettings = DncSettings::load(settings_);
-    if (dncSettings.enabled) dnc_->start(dncSettings, nullptr);  // a failure: the status bar
-    showDncState();
+    startDnc();
     connect(&link_, &XyLink::updated, this, &XyMainWindow::onUpdate);
     last_ = link_.status();
     language_ = settings_.value(QStringLiteral("language"), language_).toString();
@@ -395,86 +324,39 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     onUpdate({}, {}, last_);
 }
 
-void XyMainWindow::buildMenus() {
-    // The rail's menus, with the same object names (issue 19, one frame); texts in retranslate().
-    fileMenu_ = menuBar()->addMenu(QString());
-    openAction_ = fileMenu_->addAction(QString(), this, &XyMainWindow::chooseFile);
-    openAction_->setObjectName(QStringLiteral("selectProgram"));
-    openAction_->setShortcut(QKeySequence::Open);
-    openAction_->setShortcutContext(Qt::ApplicationShortcut);
-    machine_ = fileMenu_->addAction(QString(), this, &XyMainWindow::requestMachine);
-    machine_->setObjectName(QStringLiteral("machine"));
-    fileMenu_->addSeparator();
-    exit_ = fileMenu_->addAction(QString(), this, &QWidget::close);
-    exit_->setObjectName(QStringLiteral("exit"));
-    // The same commands as the rail's Command menu (issue 19 items 2 and 3): a mode change
-    // never moves the machine unasked, and Home is a command of its own.
-    commandMenu_ = menuBar()->addMenu(QString());
-    manual_ = commandMenu_->addAction(
-        QString(), this, [this] { link_.post([](XyController& c) { c.selectManual(); }); });
-    manual_->setObjectName(QStringLiteral("manual"));
-    automaticAction_ = commandMenu_->addAction(QString(), this, &XyMainWindow::requestAutomatic);
-    automaticAction_->setObjectName(QStringLiteral("automatic"));
-    home_ = commandMenu_->addAction(QString(), this, &XyMainWindow::requestHome);
-    home_->setObjectName(QStringLiteral("home"));
-    home_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Home));
-    home_->setShortcutContext(Qt::ApplicationShortcut);
-    optionsMenu_ = menuBar()->addMenu(QString());
-    languageMenu_ = optionsMenu_->addMenu(QString());
-    languages_ = addLanguageActions(languageMenu_, [this](const QString& c) { setLanguage(c); });
-    connection_ = optionsMenu_->addAction(QString(), this, &XyMainWindow::chooseConnection);
+void XyMainWindow::addFileItems(QMenu* file) {
+    if (!plotter_) return;
+    // Seed 001's Java host: polygons from typed points, after Open program...
+    polygon_ = file->addAction(QString());
+    polygon_->setObjectName(QStringLiteral("polygonAction"));
+    connect(polygon_, &QAction::triggered, this, [this] {
+        PolygonDialog d(this);
+        if (d.exec() == QDialog::Accepted) plotPolygon(d.program());
+    });
+}
+
+void XyMainWindow::addOptionItems(QMenu* options) {
+    connection_ = options->addAction(QString(), this, &XyMainWindow::chooseConnection);
     connection_->setObjectName(QStringLiteral("connection"));
     if (link_.profile().kind == MachineKind::DcTable) {  // issue 22 item 8
-        calibration_ = optionsMenu_->addAction(QString(), this, [this] {
+        calibration_ = options->addAction(QString(), this, [this] {
             CalibrationDialog(link_.profile(), port_, baud_, this).exec();
         });
         calibration_->setObjectName(QStringLiteral("calibration"));
     }
-    if (plotter_) {  // seed 001's Java host: its communication log and polygons from points
+    if (plotter_) {  // seed 001's Java host: its communication log
         auto* dock = new QDockWidget(this);
         dock->setObjectName(QStringLiteral("plotterCommLogDock"));
         dock->setWidget(commLog_ = new PlotterCommLog(dock));
         addDockWidget(Qt::BottomDockWidgetArea, dock);
         dock->hide();
-        optionsMenu_->addAction(dock->toggleViewAction());
-        polygon_ = new QAction(this);
-        polygon_->setObjectName(QStringLiteral("polygonAction"));
-        fileMenu_->insertAction(machine_, polygon_);  // after Open program...
-        connect(polygon_, &QAction::triggered, this, [this] {
-            PolygonDialog d(this);
-            if (d.exec() == QDialog::Accepted) plotPolygon(d.program());
-        });
+        options->addAction(dock->toggleViewAction());
     }
-    optionsMenu_->addSeparator();
-    dncAction_ = optionsMenu_->addAction(QString(), this, [this] { openDncDialog(); });
-    dncAction_->setObjectName(QStringLiteral("dnc"));
-    remote_ = optionsMenu_->addAction(QString());
-    remote_->setObjectName(QStringLiteral("remote"));
-    remote_->setCheckable(true);
-    remote_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
-    remote_->setShortcutContext(Qt::WindowShortcut);
-    remote_->setEnabled(false);  // until the link is served
-    connect(remote_, &QAction::toggled, dnc_, &DncLink::setRemote);
-    windowsMenu_ = menuBar()->addMenu(QString());
-    resetLayout_ = windowsMenu_->addAction(QString(), this, &XyMainWindow::resetLayout);
-    // The tuning workbench, as on the rail (issue 21): step tests per axis on the DC table; the
-    // plotter has no encoder, so nothing to measure a response with.
-    workbench_ = windowsMenu_->addAction(QString(), this, &XyMainWindow::openWorkbench);
-    workbench_->setObjectName(QStringLiteral("workbenchAction"));
-    workbench_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_W));
-    workbench_->setEnabled(link_.profile().kind == MachineKind::DcTable);
-    resetLayout_->setObjectName(QStringLiteral("resetLayout"));
-    helpMenu_ = menuBar()->addMenu(QString());
-    keys_ = helpMenu_->addAction(QString(), this, [this] {
-        KeysDialog dialog(keyedActions(), this, KeysDialog::Machine::Xy);
-        dialog.exec();
-    });
-    keys_->setObjectName(QStringLiteral("keys"));
 }
 
 QList<QAction*> XyMainWindow::keyedActions() const {
     return {cycleStart_, feedHold_,      continue_, stopAction_, single_, overrideDown_,
-            overrideUp_, overrideReset_, home_,     openAction_, remote_};
+            overrideUp_, overrideReset_, home_,     select_,     remote_};
 }
 
 void XyMainWindow::setOverride(int percent) {
@@ -484,54 +366,54 @@ void XyMainWindow::setOverride(int percent) {
     override_->setText(tr("Feed override %1 %").arg(overridePercent_));
 }
 
-void XyMainWindow::setLanguage(const QString& lang) {
-    if (!installLanguage(lang)) return;
-    language_ = lang;
-    settings_.setValue(QStringLiteral("language"), lang);
-    retranslate();
-}
-
-void XyMainWindow::resetLayout() {
-    // The docks where they were built, in front the plots; the work area 3 to the side
-    // column's 2; the plots at their first height.
-    restoreState(defaultLayout_);
-    for (QDockWidget* d : {plotDock_, historyDock_, simulationDock_}) {
-        d->setFloating(false);
-        d->setVisible(d != simulationDock_ || link_.simulated());
-    }
-    plotDock_->raise();
+void XyMainWindow::resetMachineLayout() {
+    // The work area 3 to the side column's 2.
     const int w = split_->width();
     split_->setSizes({w * 3 / 5, w - w * 3 / 5});
-    resizeDocks({plotDock_}, {kPlotDockHeight}, Qt::Vertical);
 }
 
-bool XyMainWindow::faultArmedShown() const {
-    return faultArmedAction_->isVisible();
+MachineKind XyMainWindow::machineKind() const {
+    return link_.profile().kind;
 }
 
-void XyMainWindow::showArmedFaults(const QString& text) {
-    // As the rail's safety bar: at most 320 px, the whole list on hover.
-    const QString full = tr("Simulated fault armed: %1").arg(text);
-    faultArmed_->setText(faultArmed_->fontMetrics().elidedText(full, Qt::ElideRight, 300));
-    faultArmed_->setMaximumWidth(320);
-    faultArmed_->setToolTip(full);
-    faultArmedAction_->setVisible(!text.isEmpty());
+const MachineProfile& XyMainWindow::machineProfile() const {
+    return link_.profile();
 }
 
-void XyMainWindow::requestMachine() {
-    const std::optional<MachineKind> next = chooseMachine(this, link_.profile().kind);
-    if (next) switchTo(*next);
+bool XyMainWindow::machineMoving() const {
+    return moving(last_.state) || last_.state == ControllerState::Paused || last_.motionBusy;
 }
 
-bool XyMainWindow::switchTo(MachineKind next) {
-    const MachineKind own = link_.profile().kind;
-    if (next == own) return false;
-    const bool busy =
-        moving(last_.state) || last_.state == ControllerState::Paused || last_.motionBusy;
-    if (busy && !confirm(tr("Machine"), switchQuestion(own, next))) return false;
+void XyMainWindow::stopMachine() {
     link_.post([](XyController& c) { c.stop(); });
-    emit machineChosen(shippedProfileName(next));
-    return true;
+}
+
+void XyMainWindow::controlledStop() {
+    link_.post([](XyController& c) { c.stop(); });
+}
+
+void XyMainWindow::selectManual() {
+    link_.post([](XyController& c) { c.selectManual(); });
+}
+
+void XyMainWindow::emergencyStop() {
+    link_.post([](XyController& c) { c.emergencyStop(); });
+}
+
+void XyMainWindow::resetEmergencyStop() {
+    link_.post([](XyController& c) { c.resetEmergencyStop(); });
+}
+
+void XyMainWindow::acknowledgeAlarms() {
+    link_.post([](XyController& c) { c.acknowledgeAlarms(); });
+}
+
+void XyMainWindow::openFromLibrary(const QString& path) {
+    selectProgram(path);  // compiled for this machine, its path drawn on the work area
+}
+
+bool XyMainWindow::typesSpace(QWidget* focus) const {
+    return qobject_cast<QPlainTextEdit*>(focus) || qobject_cast<QLineEdit*>(focus);
 }
 
 bool XyMainWindow::selectProgram(const QString& path) {
@@ -575,10 +457,6 @@ bool XyMainWindow::selectProgram(const QString& path) {
     retranslate();
     onUpdate({}, {}, last_);  // the run controls follow the program just loaded
     return true;
-}
-
-bool XyMainWindow::confirm(const QString& title, const QString& text) {
-    return confirmer_ ? confirmer_(title, text) : askYesNoDefaultNo(this, title, text);
 }
 
 QString XyMainWindow::homingText() const {
@@ -687,7 +565,7 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
                            r.sample.pen != PenState::Up);
     }
     for (const ControllerEvent& e : events) {
-        dnc_->noteEvent(e);
+        dncLink()->noteEvent(e);
         const bool alarm = e.kind == EventKind::AlarmRaised;
         const QString line = xyHistoryLine(e);
         if (!line.isEmpty()) addHistory(line, alarm, alarm ? static_cast<int>(e.alarm) : 0);
@@ -709,8 +587,7 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
                                              : palette().color(QPalette::Window));
     pal.setColor(QPalette::WindowText, latched ? Qt::white : palette().color(QPalette::WindowText));
     if (pal != state_->palette()) state_->setPalette(pal);
-    const QString estopText = latched ? tr("E-STOP LATCHED") : tr("E-STOP (Pause, F1)");
-    if (estop_->text() != estopText) estop_->setText(estopText);
+    showSafetyState(latched, alarmed);
     block_->setText(status.blockN >= 0
                         ? tr("Block N%1, line %2").arg(status.blockN).arg(status.blockLine)
                     : status.blockLine > 0 ? tr("Line %1").arg(status.blockLine)
@@ -725,10 +602,8 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
     // Stop stops every motion: a program's, a homing, and a manual set point or jog.
     stop_->setEnabled(moving(status.state) || status.state == ControllerState::Paused ||
                       status.motionBusy);
-    reset_->setEnabled(latched);
-    ack_->setEnabled(!latched && alarmed);
+    automaticButton_->setEnabled(idle && !status.automatic);
     automatic_->setEnabled(idle && !status.automatic);
-    automaticAction_->setEnabled(idle && !status.automatic);
     if (singleButton_->isChecked() != status.singleBlock) {
         const QSignalBlocker block(singleButton_);
         singleButton_->setChecked(status.singleBlock);
@@ -745,19 +620,6 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
     }
     if (plotter_)
         plotter_->setControlsEnabled(status.state == ControllerState::Manual && !status.motionBusy);
-}
-
-void XyMainWindow::openWorkbench() {
-    if (!workbench_->isEnabled()) return;
-    // Its own window on a copy of the profile: step tests on a simulated table in virtual time,
-    // never on the machine this screen drives.
-    if (!workbenchWindow_) {
-        workbenchWindow_ = new WorkbenchWindow(link_.profile(), this);
-        workbenchWindow_->setWindowFlag(Qt::Window);
-    }
-    workbenchWindow_->show();
-    workbenchWindow_->raise();
-    workbenchWindow_->activateWindow();
 }
 
 bool XyMainWindow::plotPolygon(const QString& program) {
@@ -845,78 +707,26 @@ void XyMainWindow::chooseConnection() {
                           baud->currentData().toInt());
 }
 
-bool XyMainWindow::eventFilter(QObject* watched, QEvent* event) {
-    if (event->type() != QEvent::KeyPress) return QMainWindow::eventFilter(watched, event);
-    auto* key = static_cast<QKeyEvent*>(event);
-    if (key->key() == Qt::Key_F1) {  // E-stop, as on the rail: wherever the focus is
-        link_.post([](XyController& c) { c.emergencyStop(); });
-        return true;
-    }
-    const bool popupOpen = QApplication::activePopupWidget() != nullptr ||
-                           QApplication::activeModalWidget() != nullptr;
-    if (!isActiveWindow() || popupOpen) return QMainWindow::eventFilter(watched, event);
-    QWidget* focus = QApplication::focusWidget();
-    const bool typing = qobject_cast<QPlainTextEdit*>(focus) || qobject_cast<QLineEdit*>(focus);
-    if (key->key() == Qt::Key_Escape ||
-        (key->key() == Qt::Key_Space && !typing && !key->isAutoRepeat())) {
-        link_.post([](XyController& c) { c.stop(); });
-        return true;
-    }
-    return QMainWindow::eventFilter(watched, event);
-}
-
 void XyMainWindow::closeEvent(QCloseEvent* e) {
     // Leaving the screen stops the machine: the worker thread ends with the link.
     link_.post([](XyController& c) { c.stop(); });
+    saveLayout();
     QMainWindow::closeEvent(e);
 }
 
 XyMainWindow::~XyMainWindow() {
     qApp->removeEventFilter(this);
-    dnc_->stop();  // its machine refers to the link, which outlives this window only just
+    dncLink()->stop();  // its machine refers to the link, which outlives this window only just
     for (QObject* child : findChildren<QObject*>())
         disconnect(child, nullptr, this, nullptr);
     disconnect(&link_, nullptr, this, nullptr);
-}
-
-DncDialog* XyMainWindow::openDncDialog() {
-    if (!dncDialog_) dncDialog_ = new DncDialog(*dnc_, settings_, this);
-    dncDialog_->show();
-    dncDialog_->raise();
-    dncDialog_->activateWindow();
-    return dncDialog_;
-}
-
-void XyMainWindow::showDncState() {
-    const QSignalBlocker block(remote_);  // showing the state is not the operator's toggle
-    remote_->setEnabled(dnc_->running());
-    remote_->setChecked(dnc_->remote());
-    const QString text = dnc_->statusLine();
-    dncLabel_->setText(text);
-    dncLabel_->setToolTip(dnc_->statusText());
-    dncLabel_->setStyleSheet(dnc_->error().isEmpty() ? QString()
-                                                     : QStringLiteral("color: rgb(170,0,0);"));
-    dncLabel_->setVisible(!text.isEmpty());
-}
-
-void XyMainWindow::showEvent(QShowEvent* e) {
-    QMainWindow::showEvent(e);
-    if (shown_) return;
-    shown_ = true;
-    layout()->activate();  // the docks' current sizes first, or the request is dropped
-    resizeDocks({plotDock_}, {kPlotDockHeight}, Qt::Vertical);
-}
-
-void XyMainWindow::changeEvent(QEvent* e) {
-    if (e->type() == QEvent::LanguageChange) retranslate();
-    QMainWindow::changeEvent(e);
 }
 
 void XyMainWindow::retranslate() {
     const MachineProfile& p = link_.profile();
     setWindowTitle(tr("trilho - %1").arg(p.description));
     open_->setText(tr("Open..."));
-    automatic_->setText(tr("Automatic (home)"));
+    automaticButton_->setText(tr("Automatic (home)"));
     // The rail's names for the same actions (issue 19, one frame).
     start_->setText(tr("Cycle start (F5)"));
     hold_->setText(tr("Feed hold (F6)"));
@@ -937,42 +747,15 @@ void XyMainWindow::retranslate() {
     withKey(overrideUp_, tr("Feed override +10 %"));
     withKey(overrideReset_, tr("Feed override 100 %"));
     override_->setText(tr("Feed override %1 %").arg(overridePercent_));
-    fileMenu_->setTitle(tr("&File"));
-    openAction_->setText(tr("&Open program..."));
-    machine_->setText(tr("&Machine..."));
-    exit_->setText(tr("E&xit"));
-    commandMenu_->setTitle(tr("&Command"));
-    manual_->setText(tr("&Manual"));
-    automaticAction_->setText(tr("&Automatic"));
-    home_->setText(tr("&Home"));
-    optionsMenu_->setTitle(tr("&Options"));
-    languageMenu_->setTitle(tr("&Language"));
+    retranslateFrame();
+    select_->setText(tr("&Open program..."));
     connection_->setText(tr("&Connection..."));
     if (calibration_) calibration_->setText(tr("Ca&libration..."));
     if (polygon_) polygon_->setText(tr("Polygon from &points..."));
-    dncAction_->setText(tr("&DNC link..."));
-    remote_->setText(tr("&Remote (DNC)"));
-    remote_->setToolTip(tr("Allow the cell's supervisor to write and command over the DNC "
-                           "link (%1). Off at every start.")
-                            .arg(remote_->shortcut().toString(QKeySequence::NativeText)));
-    windowsMenu_->setTitle(tr("&Windows"));
-    resetLayout_->setText(tr("&Reset layout"));
-    workbench_->setText(tr("Tuning &workbench..."));
     workbench_->setToolTip(workbench_->isEnabled()
                                ? QString()
                                : tr("The plotter has no encoder: there is no response to measure"));
-    helpMenu_->setTitle(tr("&Help"));
-    keys_->setText(tr("&Keys"));
-    plotDock_->setWindowTitle(tr("Plots"));
-    historyDock_->setWindowTitle(tr("History"));
-    simulationDock_->setWindowTitle(tr("Simulation"));
-    checkLanguage(languages_, language_);
-    estop_->setText(last_.state == ControllerState::EStop ? tr("E-STOP LATCHED")
-                                                          : tr("E-STOP (Pause, F1)"));
-    homeButton_->setText(tr("Home (Ctrl+Home)"));
-    safetyBar_->setWindowTitle(tr("Safety"));
-    reset_->setText(tr("Reset E-stop"));
-    ack_->setText(tr("Acknowledge"));
+    if (simulation_) showArmedFaults(simulation_->armedText());
     program_label_->setText(program_ ? tr("Program: %1").arg(programName_)
                                      : tr("No program loaded"));
     state_->setText(stateText(last_.state));
