@@ -10,14 +10,16 @@
 // thread (the same CsvRow rows and 64 KB blocks, no writer thread), to a file and to a pipe:
 //   inline-file, inline-pipe.
 // Runs are interleaved (mode after mode, then again) so a busy machine weighs on each alike;
-// the figures are the median, fastest and slowest wall time per mode, and the ratio of each
-// median to the median of `none`.
+// the figures are the median, fastest and slowest wall time per mode and the ratio of each
+// median to the median of `none`, then the median CPU time of the run's own thread and of the
+// whole process with their ratios (where the time went), and the load average.
 //
 // --long: one run of more than 10 minutes of machine time traced to a pipe, checking that the
 // reader got one row per tick (no drop), with its wall time.
 //
 // Usage: trilho-bench-trace [--runs N (default 9)] [--long]
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -28,6 +30,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -118,8 +121,19 @@ Outcome runInline(const MachineProfile& profile, std::shared_ptr<const Program> 
     return outcome;
 }
 
+/// CPU time, ms: of this thread (the run's), or of the whole process (the run, the writer
+/// thread and, for a pipe, the reader thread), user and system.
+double cpuMs(int who) {
+    rusage u{};
+    ::getrusage(who, &u);
+    return (static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) * 1e3 +
+            static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec) * 1e-3);
+}
+
 struct RunFigures {
     double wallMs = 0.0;
+    double runCpuMs = 0.0;      ///< the run's own thread
+    double processCpuMs = 0.0;  ///< every thread of the process
     double machineS = 0.0;
     std::uint64_t rowsRead = 0;  ///< pipe: lines the reader got, header included
     bool ok = false;
@@ -139,6 +153,7 @@ RunFigures runOnce(Mode mode, const std::shared_ptr<const Program>& program, QTe
         path = dir.filePath(QStringLiteral("trace.csv"));
     }
     RunFigures f;
+    const double thread0 = cpuMs(RUSAGE_THREAD), process0 = cpuMs(RUSAGE_SELF);
     QElapsedTimer clock;
     clock.start();
     TraceFile trace;
@@ -157,6 +172,8 @@ RunFigures runOnce(Mode mode, const std::shared_ptr<const Program>& program, QTe
     const bool traceOk = trace.close();
     if (reader) f.rowsRead = reader->join();
     f.wallMs = static_cast<double>(clock.nsecsElapsed()) * 1e-6;
+    f.runCpuMs = cpuMs(RUSAGE_THREAD) - thread0;
+    f.processCpuMs = cpuMs(RUSAGE_SELF) - process0;
     f.machineS = last.timeS;
     f.ok = outcome == Outcome::Finished && traceOk;
     if (!traceOk) std::fprintf(stderr, "%s\n", qPrintable(trace.error()));
@@ -170,6 +187,16 @@ std::shared_ptr<const Program> compileOrDie(const char* text) {
         std::exit(1);
     }
     return program;
+}
+
+/// A program of `count` passes of 1200 mm at F20 (3.75 s each), back to 0, then m02.
+std::string passes(int count) {
+    std::string text;
+    int n = 10;
+    for (int k = 0; k < count; ++k, n += 10)
+        text += "N" + std::to_string(n) + (k % 2 ? " G1 X-600 F20\n" : " G1 X600 F20\n");
+    text += "N" + std::to_string(n) + " G0 X0\nN" + std::to_string(n + 10) + " M2\n";
+    return text;
 }
 
 }  // namespace
@@ -189,14 +216,12 @@ int main(int argc, char** argv) {
         }
     }
     QTemporaryDir dir;
-    // About 30 s of machine time (30,000 rows at 1 kHz, 1.6 MB of CSV): the fixed costs
-    // (opening, the rename at the end) are small beside the rows.
-    const auto program = compileOrDie(
-        "N10 G1 X600 F20\nN20 G1 X-600 F20\nN30 G1 X600 F20\nN40 G1 X-600 F20\n"
-        "N50 G1 X600 F20\nN60 G1 X-600 F20\nN70 G1 X600 F20\nN80 G1 X-600 F20\n"
-        "N90 G0 X0\nN100 M2\n");
+    // About 120 s of machine time (120,000 rows at 1 kHz, 6.5 MB of CSV): the fixed costs
+    // (opening, the writer thread's start, the rename at the end) are small beside the rows.
+    const auto program = compileOrDie(passes(32).c_str());
     const Mode modes[] = {Mode::None, Mode::File, Mode::Pipe, Mode::InlineFile, Mode::InlinePipe};
-    std::vector<std::vector<double>> wall(std::size(modes));
+    std::vector<std::vector<double>> wall(std::size(modes)), runCpu(std::size(modes)),
+        processCpu(std::size(modes));
     double machineS = 0.0;
     runOnce(Mode::File, program, dir);  // warm-up: the page cache, the allocator
     for (int r = 0; r < runs; ++r) {
@@ -207,6 +232,8 @@ int main(int argc, char** argv) {
                 return 1;
             }
             wall[m].push_back(f.wallMs);
+            runCpu[m].push_back(f.runCpuMs);
+            processCpu[m].push_back(f.processCpuMs);
             if (modes[m] == Mode::None) machineS = f.machineS;
         }
     }
@@ -215,22 +242,55 @@ int main(int argc, char** argv) {
         "trace cost, rail, virtual time: %.1f s of machine time (%.0f ticks), %d runs "
         "per mode\n",
         machineS, machineS * 1000.0, runs);
-    std::printf("%-12s %10s %10s %10s %10s %8s\n", "mode", "median ms", "min ms", "max ms",
-                "ns/tick", "ratio");
+    // Wall time is what the issue bounds; the CPU times say where it went: the run's own thread
+    // (what tracing adds to the loop itself) and the whole process (the writer and the pipe's
+    // reader too). On a machine with no core free, wall time follows the process's CPU time.
+    std::printf("%-12s %10s %8s %8s %8s %8s | %9s %6s | %9s %6s\n", "mode", "wall ms", "min", "max",
+                "ns/tick", "ratio", "run cpu", "ratio", "all cpu", "ratio");
+    const double baseRun = median(runCpu[0]), baseAll = median(processCpu[0]);
     for (std::size_t m = 0; m < std::size(modes); ++m) {
         const double med = median(wall[m]);
-        std::printf("%-12s %10.1f %10.1f %10.1f %10.0f %7.2fx\n", kModeNames[m], med,
-                    *std::min_element(wall[m].begin(), wall[m].end()),
+        std::printf("%-12s %10.1f %8.1f %8.1f %8.0f %7.2fx | %9.1f %5.2fx | %9.1f %5.2fx\n",
+                    kModeNames[m], med, *std::min_element(wall[m].begin(), wall[m].end()),
                     *std::max_element(wall[m].begin(), wall[m].end()),
-                    med * 1e6 / (machineS * 1000.0), med / base);
+                    med * 1e6 / (machineS * 1000.0), med / base, median(runCpu[m]),
+                    median(runCpu[m]) / baseRun, median(processCpu[m]),
+                    median(processCpu[m]) / baseAll);
+    }
+    double load[3] = {0, 0, 0};
+    if (::getloadavg(load, 3) == 3)
+        std::printf(
+            "load average now %.2f %.2f %.2f on %u cores: a busy machine leaves the "
+            "writer thread no core of its own\n",
+            load[0], load[1], load[2], std::thread::hardware_concurrency());
+    // What the writer thread spends per row on formatting alone (no I/O): the rows of the
+    // run's own shape, 1,000,000 of them, median of the runs.
+    {
+        std::vector<double> ns;
+        CsvRow row;
+        std::size_t bytes = 0;
+        for (int r = 0; r < runs; ++r) {
+            QElapsedTimer clock;
+            clock.start();
+            for (std::size_t k = 0; k < 1'000'000; ++k) {
+                const double t = 0.001 * static_cast<double>(k + 1);
+                const double x = 600.0 * std::sin(0.37 * t);
+                formatRailTraceRow(
+                    {t, static_cast<std::int32_t>(k / 1000) * 10, x + 0.0123456, x, 0.0123456,
+                     25.0 * std::cos(0.37 * t), static_cast<std::uint8_t>(k % 256)},
+                    row);
+                bytes += row.size();
+            }
+            ns.push_back(static_cast<double>(clock.nsecsElapsed()) / 1e6);
+        }
+        std::printf(
+            "formatting alone: %.0f ns a row (median of %d x 1,000,000 rows, %.0f bytes "
+            "a row; the sin and cos of the rows' values included)\n",
+            median(ns), runs, static_cast<double>(bytes) / (runs * 1e6));
     }
     if (longRun) {
-        // 12 passes of 1200 mm at F20: over 10 minutes of machine time.
-        std::string text;
-        int n = 10;
-        for (int k = 0; k < 24; ++k, n += 10)
-            text += "N" + std::to_string(n) + (k % 2 ? " G1 X-600 F20\n" : " G1 X600 F20\n");
-        text += "N" + std::to_string(n) + " G0 X0\nN" + std::to_string(n + 10) + " M2\n";
+        // 164 passes of 1200 mm at F20: over 10 minutes of machine time.
+        const std::string text = passes(164);
         const auto longProgram = compileOrDie(text.c_str());
         const RunFigures f = runOnce(Mode::Pipe, longProgram, dir);
         const double ticks = std::round(f.machineS * 1000.0);

@@ -13,21 +13,13 @@
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
-#include "core/tuning/rail_autotune.h"
-#include "core/tuning/relay_experiment.h"
 #include "core/tuning/run_record.h"
 #include "host/common/data_paths.h"
-#include "host/session/sim_rail_rig.h"
-#include "host/tuning/step_test.h"
+#include "host/tuning/relay_comparison.h"
 
 namespace trilho::cli {
 
 namespace {
-
-/// Where the rail starts at rest, as `tune identify` and `tune auto` (tune_model_command.cpp).
-constexpr double kRelayStartMm = -500.0;
-/// The step both sets of gains run, mm.
-constexpr double kCompareStepMm = 10.0;
 
 QString relayExitHelp() {
     return QStringLiteral(
@@ -47,22 +39,9 @@ QJsonObject gainsJson(const LoopGains& g) {
                        {QStringLiteral("kd_code_per_mm_s"), g.kd}};
 }
 
-/// A 10 mm step with these gains on the same simulated rail (tune step's test).
-StepTestResult compareStep(const MachineProfile& profile, const LoopGains& g, double massFactor,
-                           std::uint64_t seed) {
-    StepTestSpec spec;
-    spec.profile = profile;
-    spec.law = LoopLaw::Engineered;
-    spec.gains = TuningGains{g.kp, g.ki, g.kd, 0.0, 0.0, 0.0};
-    spec.amplitudeMm = kCompareStepMm;
-    spec.massFactor = massFactor;
-    spec.seed = seed;
-    return runStepTest(spec);
-}
-
 QJsonObject stepJson(const StepTestResult& r) {
     QJsonObject o = stepMetricsToJson(r.metrics);
-    o[QStringLiteral("step_mm")] = kCompareStepMm;
+    o[QStringLiteral("step_mm")] = kRelayCompareStepMm;
     o[QStringLiteral("aborted")] = !r.ok();
     o[QStringLiteral("abort_reason")] =
         r.ok() ? QJsonValue(QJsonValue::Null) : QJsonValue(r.abortReason);
@@ -167,25 +146,16 @@ int tuneRelayCommand(const QStringList& args) {
                          .arg(profile.name));
     if (axis == QLatin1String("y"))
         return usage(QStringLiteral("--axis y: the rail has only the x axis"));
-    const double plantMass = profile.plant.massFactor * massFactor;
-
-    // The relay, from rest at the start.
     RelayOptions ro;
     ro.reliefCodes = static_cast<int>(codes);
     ro.hysteresisCounts = hysteresis;
-    SimRailRig relayRig(profile, seed, kRelayStartMm, plantMass);
-    const RelayResult relay = runRelayExperiment(relayRig, ro);
-    const bool relayBack = relay.returnErrorCounts <= 1.0;
-    // The model-based result on the same rail from the same start (tune auto).
-    SimRailRig autoRig(profile, seed, kRelayStartMm, plantMass);
-    const AutotuneResult tuned = autotuneRail(autoRig, profile);
-    // Both sets of gains on the same step, with the tuned profile's acceleration when there is
-    // one: only the gains differ.
-    const MachineProfile& stepProfile = tuned.ok ? tuned.tuned : profile;
-    std::optional<StepTestResult> znStep, simcStep;
-    if (relay.ok) znStep = compareStep(stepProfile, relay.zieglerNichols, massFactor, seed);
-    if (tuned.ok) simcStep = compareStep(stepProfile, tuned.design.gains, massFactor, seed);
-    const bool ok = relay.ok && relayBack && tuned.ok;
+    const RelayComparison cmp = compareRelayWithModel(profile, seed, massFactor, ro);
+    const RelayResult& relay = cmp.relay;
+    const bool relayBack = cmp.relayBack;
+    const AutotuneResult& tuned = cmp.autotune;
+    const std::optional<StepTestResult>& znStep = cmp.zieglerNicholsStep;
+    const std::optional<StepTestResult>& simcStep = cmp.modelStep;
+    const bool ok = cmp.ok();
 
     if (parser.isSet(jsonOpt)) {
         QJsonObject o;
@@ -252,7 +222,7 @@ int tuneRelayCommand(const QStringList& args) {
     } else {
         t += QStringLiteral("  RELAY FAILED: %1\n").arg(relay.error);
     }
-    t += QStringLiteral("  machine time %1 s, back at its start within %2 counts%3\n")
+    t += QStringLiteral("  machine time %1 s, back at its start %2 count(s) off%3\n")
              .arg(relay.experimentTimeS, 0, 'f', 3)
              .arg(relay.returnErrorCounts, 0, 'f', 0)
              .arg(relayBack ? QString() : QStringLiteral(" (NOT BACK)"));

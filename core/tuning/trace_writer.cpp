@@ -1,31 +1,48 @@
 #include "core/tuning/trace_writer.h"
 
 #include <cmath>
+#include <cstring>
 
 namespace trilho {
 
 namespace {
 
-/// Writes n / 10^D "." n % 10^D at p; D a constant, so the divisions are multiplications (a
-/// division by a variable cost more than the rest of the row).
-template <int D>
-char* fixedDigits(char* p, char* last, unsigned long long n) {
-    constexpr unsigned long long scale = [] {
-        unsigned long long s = 1;
-        for (int i = 0; i < D; ++i)
-            s *= 10;
-        return s;
-    }();
-    const unsigned long long whole = n / scale;
-    unsigned long long frac = n - whole * scale;
-    p = std::to_chars(p, last, whole).ptr;
-    if constexpr (D > 0) {
+/// "00" "01" ... "99": two digits a step, half the divisions of one a step.
+constexpr char kDigitPairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
+/// Writes n / 10^decimals "." n % 10^decimals at p (at least one digit before the point, the
+/// fraction zero-padded to its decimals); returns the end. The rows of a --trace are written a
+/// field at a time here, on the trace's own thread (issue 21 item 3: a trace may slow a run by
+/// at most 1.5x): the digits of n come two at a time from the end, by constant divisions (a
+/// multiplication each), then are copied once with the point put in.
+char* fixedPoint(char* p, unsigned long long n, int decimals) {
+    char digits[24];
+    char* const end = digits + sizeof digits;
+    char* q = end;
+    while (n >= 100) {
+        const auto pair = static_cast<std::size_t>(n % 100);
+        n /= 100;
+        q -= 2;
+        std::memcpy(q, kDigitPairs + 2 * pair, 2);
+    }
+    if (n >= 10) {
+        q -= 2;
+        std::memcpy(q, kDigitPairs + 2 * n, 2);
+    } else {
+        *--q = static_cast<char>('0' + n);
+    }
+    while (end - q < decimals + 1)
+        *--q = '0';
+    const auto whole = static_cast<std::size_t>(end - q - decimals);
+    std::memcpy(p, q, whole);
+    p += whole;
+    if (decimals > 0) {
         *p++ = '.';
-        for (int i = D - 1; i >= 0; --i) {
-            p[i] = static_cast<char>('0' + frac % 10);
-            frac /= 10;
-        }
-        p += D;
+        std::memcpy(p, q + whole, static_cast<std::size_t>(decimals));
+        p += decimals;
     }
     return p;
 }
@@ -45,38 +62,7 @@ CsvRow& CsvRow::num(double v, int decimals) {
         const double scaled = std::abs(v) * kScale[decimals];
         const auto n = static_cast<unsigned long long>(scaled + 0.5);
         if (v < 0 && n != 0) *p++ = '-';  // -0.0000 is 0.0000
-        switch (decimals) {
-            case 0:
-                p = fixedDigits<0>(p, last, n);
-                break;
-            case 1:
-                p = fixedDigits<1>(p, last, n);
-                break;
-            case 2:
-                p = fixedDigits<2>(p, last, n);
-                break;
-            case 3:
-                p = fixedDigits<3>(p, last, n);
-                break;
-            case 4:
-                p = fixedDigits<4>(p, last, n);
-                break;
-            case 5:
-                p = fixedDigits<5>(p, last, n);
-                break;
-            case 6:
-                p = fixedDigits<6>(p, last, n);
-                break;
-            case 7:
-                p = fixedDigits<7>(p, last, n);
-                break;
-            case 8:
-                p = fixedDigits<8>(p, last, n);
-                break;
-            default:
-                p = fixedDigits<9>(p, last, n);
-                break;
-        }
+        p = fixedPoint(p, n, decimals);
         len_ = static_cast<std::size_t>(p - buf_);
         return *this;
     }
