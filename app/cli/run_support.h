@@ -83,7 +83,8 @@ struct Report {
 /// a pipe to a plotter) is written straight, never replaced. Rows are gathered in a buffer of
 /// kBufferBytes and written a block at a time: a write per row made a virtual-time run 11x
 /// slower to a file and 28x to a pipe (issue 21 item 3). Any failed write is kept with its
-/// reason and reported after the run's own result.
+/// reason and reported after the run's own result. One thread at a time: in a virtual-time
+/// run the TraceQueue's writer thread (trace_queue.h) until its finish().
 class TraceFile {
   public:
     /// header: the CSV's first line, with its newline.
@@ -181,7 +182,15 @@ class TraceFile {
         buffer_.clear();
     }
     void write(const char* data, qint64 len) {
-        if (file_->write(data, len) != len && error_.isEmpty())
+        errno = 0;
+        if (file_->write(data, len) == len || !error_.isEmpty()) return;
+        // The system's reason where there is one (QFile on a descriptor says "Unknown error").
+        const int e = errno;
+        if (e == EPIPE)
+            error_ = QStringLiteral("the program reading it closed the pipe");
+        else if (e != 0)
+            error_ = QString::fromLocal8Bit(std::strerror(e));
+        else
             error_ = file_->errorString().isEmpty() ? QStringLiteral("write failed")
                                                     : file_->errorString();
     }

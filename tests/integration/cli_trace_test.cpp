@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
+#include <poll.h>
 #include <unistd.h>
 
 #include <QCryptographicHash>
@@ -116,7 +117,8 @@ TEST_F(CliTrace, AFifoGetsTheSameBytesAsAFile) {
     reader.start(QStringLiteral("cat"), {fifo});
     ASSERT_TRUE(reader.waitForStarted());
     // A reader end held from the start (cat may not have opened it yet): see cli_run_test.cpp.
-    const int holder = ::open(QFile::encodeName(fifo).constData(), O_RDONLY | O_NONBLOCK);
+    const int holder =
+        ::open(QFile::encodeName(fifo).constData(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     ASSERT_GE(holder, 0);
     const CliResult r = runCli({QStringLiteral("run"), QStringLiteral("--virtual-time"),
                                 QStringLiteral("--trace"), fifo, prog});
@@ -128,6 +130,48 @@ TEST_F(CliTrace, AFifoGetsTheSameBytesAsAFile) {
     EXPECT_TRUE(got == readAll(file));
     EXPECT_FALSE(QFileInfo::exists(fifo + QStringLiteral(".run.json")));  // none beside a FIFO
     EXPECT_FALSE(QFileInfo::exists(dir.filePath(QStringLiteral("trace.run.json"))));
+}
+
+// A pipe whose reader goes away: the run's own result stands, the trace's failure is said naming
+// the FIFO (it was a SIGPIPE that killed the run unreported, exit 141).
+TEST_F(CliTrace, APipeWhoseReaderLeavesIsSaidNamingIt) {
+    const QString prog = trilho::test::writeIn(dir, QStringLiteral("long.G"), kLongProgram);
+    const QString fifo = dir.filePath(QStringLiteral("early.fifo"));
+    ASSERT_EQ(QProcess::execute(QStringLiteral("mkfifo"), {fifo}), 0);
+    // Close-on-exec: the run must not inherit a read end of its own FIFO (it would never see
+    // the reader leave).
+    const int readEnd =
+        ::open(QFile::encodeName(fifo).constData(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    ASSERT_GE(readEnd, 0);
+    ::fcntl(readEnd, F_SETFL, ::fcntl(readEnd, F_GETFL) & ~O_NONBLOCK);
+    QProcess run;
+    run.start(QStringLiteral(TRILHO_CLI), {QStringLiteral("run"), QStringLiteral("--virtual-time"),
+                                           QStringLiteral("--trace"), fifo, prog});
+    ASSERT_TRUE(run.waitForStarted());
+    // Take the first 1000 bytes, then leave: the trace is 786 KB, far over a pipe's 64 KB, so
+    // the run is still writing when the reader is gone.
+    // A FIFO's read end reads as ended until a writer opens it: wait for the first bytes
+    // (poll, not a sleep; Linux reports no hang-up to a reader that never had a writer).
+    char buf[1000];
+    std::size_t got = 0;
+    while (got < sizeof buf) {
+        pollfd p{readEnd, POLLIN, 0};
+        ASSERT_EQ(::poll(&p, 1, 60000), 1) << "no trace within 60 s";
+        const ssize_t n = ::read(readEnd, buf + got, sizeof buf - got);
+        ASSERT_GT(n, 0);
+        got += static_cast<std::size_t>(n);
+    }
+    ::close(readEnd);
+    ASSERT_TRUE(run.waitForFinished(60000));
+    const QString out = QString::fromUtf8(run.readAllStandardOutput());
+    const QString err = QString::fromUtf8(run.readAllStandardError());
+    EXPECT_EQ(run.exitStatus(), QProcess::NormalExit);
+    EXPECT_EQ(run.exitCode(), 2) << err.toStdString();
+    EXPECT_TRUE(out.contains(QStringLiteral("Program finished !"))) << out.toStdString();
+    EXPECT_EQ(err, QStringLiteral("trilho-cli run: cannot write trace '%1': the program reading it "
+                                  "closed the pipe\n")
+                       .arg(fifo));
+    EXPECT_TRUE(QByteArray(buf, 16) == QByteArray("t_s,block_n,setp"));
 }
 
 TEST_F(CliTrace, TheSidecarRecordsTheRunAndHowItEnded) {

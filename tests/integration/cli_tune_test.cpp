@@ -210,10 +210,11 @@ TEST_F(CliTune, ATestEndedBeforeInPositionSaysSoAndMeasuresAgainstTheTarget) {
     EXPECT_TRUE(o.value(QStringLiteral("settling_time_s")).isNull());
     EXPECT_TRUE(o.value(QStringLiteral("settling_time_1count_s")).isNull());
     EXPECT_TRUE(o.value(QStringLiteral("steady_state_error_counts")).isNull());
-    // Its trace measures the same, against the target its sidecar names.
+    // Its trace measures the same, against the target its sidecar names; still an aborted test
+    // (status 3, issue 21 item 2).
     const CliResult m = runCli(
         {QStringLiteral("tune"), QStringLiteral("metrics"), trace, QStringLiteral("--json")});
-    ASSERT_EQ(m.exit, 0) << m.err.toStdString();
+    ASSERT_EQ(m.exit, 3) << m.err.toStdString();
     const QJsonObject b = json(m);
     for (const char* key : kMetricKeys)
         EXPECT_EQ(o.value(QLatin1String(key)), b.value(QLatin1String(key))) << key;
