@@ -1539,6 +1539,82 @@
         <source>Autotune failed: %1</source>
         <translation>Autoajuste fallido: %1</translation>
     </message>
+    <message>
+        <source>&lt;b&gt;Relay experiment&lt;/b&gt; (Astrom-Hagglund): a relay of +-%1 codes on the position error, hysteresis %2 counts</source>
+        <translation>&lt;b&gt;Experimento del relé&lt;/b&gt; (Astrom-Hagglund): un relé de +-%1 códigos sobre el error de posición, histéresis de %2 cuentas</translation>
+    </message>
+    <message>
+        <source>limit cycle: amplitude a = %1 mm, period Tu = %2 ms</source>
+        <translation>ciclo límite: amplitud a = %1 mm, período Tu = %2 ms</translation>
+    </message>
+    <message>
+        <source>ultimate gain Ku = 4 d / (pi a) = %1 code/mm</source>
+        <translation>ganancia crítica Ku = 4 d / (pi a) = %1 código/mm</translation>
+    </message>
+    <message>
+        <source>Relay experiment failed: %1</source>
+        <translation>El experimento del relé falló: %1</translation>
+    </message>
+    <message>
+        <source>experiment: %1 s of machine time, back within %2 counts</source>
+        <translation>experimento: %1 s de tiempo de máquina, de vuelta a %2 cuentas</translation>
+    </message>
+    <message>
+        <source>not reached</source>
+        <translation>no alcanzado</translation>
+    </message>
+    <message>
+        <source>Ziegler-Nichols (relay)</source>
+        <translation>Ziegler-Nichols (relé)</translation>
+    </message>
+    <message>
+        <source>model-based (SIMC)</source>
+        <translation>basado en el modelo (SIMC)</translation>
+    </message>
+    <message>
+        <source>Kp (code/mm)</source>
+        <translation>Kp (código/mm)</translation>
+    </message>
+    <message>
+        <source>Ki (code/(mm.s))</source>
+        <translation>Ki (código/(mm.s))</translation>
+    </message>
+    <message>
+        <source>Kd (code/(mm/s))</source>
+        <translation>Kd (código/(mm/s))</translation>
+    </message>
+    <message>
+        <source>10 mm step: overshoot (%)</source>
+        <translation>escalón de 10 mm: sobreimpulso (%)</translation>
+    </message>
+    <message>
+        <source>rise time 10-90 % (s)</source>
+        <translation>tiempo de subida 10-90 % (s)</translation>
+    </message>
+    <message>
+        <source>settling to +-1 count (s)</source>
+        <translation>establecimiento a +-1 cuenta (s)</translation>
+    </message>
+    <message>
+        <source>steady-state error (counts)</source>
+        <translation>error en régimen (cuentas)</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>No</translation>
+    </message>
+    <message>
+        <source>aborted: %1</source>
+        <translation>abortado: %1</translation>
+    </message>
+    <message>
+        <source>aborted</source>
+        <translation>abortado</translation>
+    </message>
+    <message>
+        <source>An experiment to teach with, not the default tuning: on this plant the DAC&apos;s quantization, the friction and the current limit set the limit cycle as much as the dynamics do.</source>
+        <translation>Un experimento para enseñar, no la sintonía por defecto: en esta planta la cuantización del DAC, la fricción y el límite de corriente fijan el ciclo límite tanto como la dinámica.</translation>
+    </message>
 </context>
 <context>
     <name>trilho::ui::OperatorFrame</name>
@@ -2401,6 +2477,14 @@
         <translation>Identifica, diseña (SIMC), predice y luego verifica con un escalón de 10 mm y un movimiento de 1000 mm</translation>
     </message>
     <message>
+        <source>Relay experiment (Ziegler-Nichols)</source>
+        <translation>Experimento del relé (Ziegler-Nichols)</translation>
+    </message>
+    <message>
+        <source>To teach with, never the default: a relay of +-3 codes provokes a limit cycle, Ziegler-Nichols gains from it, beside the model-based gains, both on the same 10 mm step</source>
+        <translation>Para enseñar, nunca por defecto: un relé de +-3 códigos provoca un ciclo límite, ganancias de Ziegler-Nichols a partir de él, junto a las ganancias basadas en el modelo, ambas en el mismo escalón de 10 mm</translation>
+    </message>
+    <message>
         <source>Save tuned profile...</source>
         <translation>Guardar perfil sintonizado...</translation>
     </message>
@@ -2479,6 +2563,14 @@
     <message>
         <source>Autotune failed: %1</source>
         <translation>Autoajuste fallido: %1</translation>
+    </message>
+    <message>
+        <source>Relay: Ku %1 code/mm, Tu %2 ms.</source>
+        <translation>Relé: Ku %1 código/mm, Tu %2 ms.</translation>
+    </message>
+    <message>
+        <source>Relay experiment failed: %1</source>
+        <translation>El experimento del relé falló: %1</translation>
     </message>
     <message>
         <source>%1: the run has no samples</source>

@@ -1539,6 +1539,82 @@
         <source>Autotune failed: %1</source>
         <translation>Sintonia automática falhou: %1</translation>
     </message>
+    <message>
+        <source>&lt;b&gt;Relay experiment&lt;/b&gt; (Astrom-Hagglund): a relay of +-%1 codes on the position error, hysteresis %2 counts</source>
+        <translation>&lt;b&gt;Experimento do relé&lt;/b&gt; (Astrom-Hagglund): um relé de +-%1 códigos sobre o erro de posição, histerese de %2 contagens</translation>
+    </message>
+    <message>
+        <source>limit cycle: amplitude a = %1 mm, period Tu = %2 ms</source>
+        <translation>ciclo limite: amplitude a = %1 mm, período Tu = %2 ms</translation>
+    </message>
+    <message>
+        <source>ultimate gain Ku = 4 d / (pi a) = %1 code/mm</source>
+        <translation>ganho crítico Ku = 4 d / (pi a) = %1 código/mm</translation>
+    </message>
+    <message>
+        <source>Relay experiment failed: %1</source>
+        <translation>O experimento do relé falhou: %1</translation>
+    </message>
+    <message>
+        <source>experiment: %1 s of machine time, back within %2 counts</source>
+        <translation>experimento: %1 s de tempo de máquina, de volta a %2 contagens</translation>
+    </message>
+    <message>
+        <source>not reached</source>
+        <translation>não atingido</translation>
+    </message>
+    <message>
+        <source>Ziegler-Nichols (relay)</source>
+        <translation>Ziegler-Nichols (relé)</translation>
+    </message>
+    <message>
+        <source>model-based (SIMC)</source>
+        <translation>baseado no modelo (SIMC)</translation>
+    </message>
+    <message>
+        <source>Kp (code/mm)</source>
+        <translation>Kp (código/mm)</translation>
+    </message>
+    <message>
+        <source>Ki (code/(mm.s))</source>
+        <translation>Ki (código/(mm.s))</translation>
+    </message>
+    <message>
+        <source>Kd (code/(mm/s))</source>
+        <translation>Kd (código/(mm/s))</translation>
+    </message>
+    <message>
+        <source>10 mm step: overshoot (%)</source>
+        <translation>degrau de 10 mm: sobressinal (%)</translation>
+    </message>
+    <message>
+        <source>rise time 10-90 % (s)</source>
+        <translation>tempo de subida 10-90 % (s)</translation>
+    </message>
+    <message>
+        <source>settling to +-1 count (s)</source>
+        <translation>acomodação a +-1 contagem (s)</translation>
+    </message>
+    <message>
+        <source>steady-state error (counts)</source>
+        <translation>erro em regime (contagens)</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>não</translation>
+    </message>
+    <message>
+        <source>aborted: %1</source>
+        <translation>abortado: %1</translation>
+    </message>
+    <message>
+        <source>aborted</source>
+        <translation>abortado</translation>
+    </message>
+    <message>
+        <source>An experiment to teach with, not the default tuning: on this plant the DAC&apos;s quantization, the friction and the current limit set the limit cycle as much as the dynamics do.</source>
+        <translation>Um experimento para ensinar, não a sintonia padrão: nesta planta a quantização do DAC, o atrito e o limite de corrente definem o ciclo limite tanto quanto a dinâmica.</translation>
+    </message>
 </context>
 <context>
     <name>trilho::ui::OperatorFrame</name>
@@ -2401,6 +2477,14 @@
         <translation>Identifica, projeta (SIMC), prevê e depois verifica com um degrau de 10 mm e um movimento de 1000 mm</translation>
     </message>
     <message>
+        <source>Relay experiment (Ziegler-Nichols)</source>
+        <translation>Experimento do relé (Ziegler-Nichols)</translation>
+    </message>
+    <message>
+        <source>To teach with, never the default: a relay of +-3 codes provokes a limit cycle, Ziegler-Nichols gains from it, beside the model-based gains, both on the same 10 mm step</source>
+        <translation>Para ensinar, nunca o padrão: um relé de +-3 códigos provoca um ciclo limite, ganhos de Ziegler-Nichols a partir dele, ao lado dos ganhos baseados no modelo, ambos no mesmo degrau de 10 mm</translation>
+    </message>
+    <message>
         <source>Save tuned profile...</source>
         <translation>Salvar perfil sintonizado...</translation>
     </message>
@@ -2479,6 +2563,14 @@
     <message>
         <source>Autotune failed: %1</source>
         <translation>Sintonia automática falhou: %1</translation>
+    </message>
+    <message>
+        <source>Relay: Ku %1 code/mm, Tu %2 ms.</source>
+        <translation>Relé: Ku %1 código/mm, Tu %2 ms.</translation>
+    </message>
+    <message>
+        <source>Relay experiment failed: %1</source>
+        <translation>O experimento do relé falhou: %1</translation>
     </message>
     <message>
         <source>%1: the run has no samples</source>

@@ -73,7 +73,7 @@ QString exitStatusHelp(const char* command) {
         line(kUsage, "usage error, or a profile that cannot be read or is invalid (named)");
     } else if (c == "tune" || c == "tune step" || c == "tune metrics") {
         line(kOk, c == "tune step"      ? "the test ran to its end (measured)"
-                  : c == "tune metrics" ? "the trace was measured"
+                  : c == "tune metrics" ? "the trace was measured, a clean record"
                                         : "step: the test ran to its end; metrics: the trace "
                                           "was measured; identify: a model was accepted; auto: "
                                           "tuned and verified in position");
@@ -81,16 +81,24 @@ QString exitStatusHelp(const char* command) {
              "usage error, a profile or trace that cannot be read (named with its line and "
              "column) or written, a test refused (outside the soft limits), or a trace with no "
              "step");
+        const char* metricsAlarm =
+            "the trace is no clean record: its sidecar (NAME.run.json) says the test was "
+            "aborted or the run ended in an alarm, off its target or by --max-seconds, or the "
+            "trace was cut short (its last row without an end of line, or fewer rows than its "
+            "sidecar counts); what is there is still measured and printed";
         const std::string alarm =
-            std::string(
-                "step: the test was aborted (a servo alarm such as a following error, "
-                "more than 200 ms of continuous saturation, or leaving the test's "
-                "envelope); what ran is still measured and traced") +
-            (c == "tune" ? "; identify, auto: an alarm stopped the experiment, the model fits "
-                           "the held-out run under 90 %, or a verification move did not end in "
-                           "position"
-                         : "");
-        if (c != "tune metrics") line(kAlarm, alarm.c_str());
+            c == "tune metrics"
+                ? std::string(metricsAlarm)
+                : std::string(
+                      "step: the test was aborted (a servo alarm such as a following error, "
+                      "more than 200 ms of continuous saturation, or leaving the test's "
+                      "envelope); what ran is still measured and traced") +
+                      (c == "tune" ? std::string("; metrics: ") + metricsAlarm +
+                                         "; identify, auto, relay: an alarm stopped the "
+                                         "experiment, the model fits the held-out run under 90 "
+                                         "%, or a verification move did not end in position"
+                                   : std::string());
+        line(kAlarm, alarm.c_str());
     } else if (c == "calibrate") {
         line(kOk, "calibrated (printed; the profile written with --write-profile)");
         line(kUsage,

@@ -18,18 +18,25 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <thread>
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
 #include "app/cli/diagnostics_text.h"
+#include "app/cli/rail_trace.h"
+#include "app/cli/rail_virtual_run.h"
+#include "app/cli/run_sidecar.h"
+#include "app/cli/run_supervisor.h"
 #include "app/cli/run_support.h"
 #include "app/cli/xy_run.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/source_file.h"
 #include "core/machine/event_text.h"
+#include "core/machine/replace_target.h"
 #include "core/runtime/servo_worker.h"
+#include "core/tuning/run_record.h"
 #include "core/tuning/trace_writer.h"
 #include "hal/sim/fault_schedule.h"
 #include "host/common/data_paths.h"
@@ -40,110 +47,11 @@ namespace trilho::cli {
 
 namespace {
 
-constexpr const char* kRailTraceHeader =
-    "t_s,block_n,setpoint_mm,position_mm,error_mm,velocity_mm_s,drive\n";
-
+/// A row written on this thread: the real-time run, whose rows come at the clock's pace.
 void railTraceRow(TraceFile& trace, const TraceRow& r) {
-    // std::to_chars, the columns of the former "%.4f,%d,%.4f,%.4f,%.4f,%.3f,%d"; the position
-    // and the error with 6 decimals, as a tune step's record: a count on the rail is
-    // 0.0438596 mm, and 4 decimals put one count off outside the one-count band of `tune
-    // metrics`.
     CsvRow row;
-    row.num(r.timeS, 4)
-        .integer(r.blockN)
-        .num(r.setpointMm, 4)
-        .num(r.positionMm, 6)
-        .num(r.errorMm, 6)
-        .num(r.velocityMmS, 3)
-        .integer(r.drive)
-        .end();
+    formatRailTraceRow(r, row);
     trace.line(row.data(), static_cast<qint64>(row.size()));
-}
-
-/// What to do with the controller after a period; shared by both time bases.
-struct Supervisor {
-    const RunOptions& options;
-    double pausedSince = -1.0;
-    /// Returns true when the run is over, setting outcome.
-    bool check(const ControllerStatus& s, double elapsedS, Outcome& outcome, bool& pressContinue) {
-        pressContinue = false;
-        if (s.programFinished && s.state == ControllerState::AutoIdle)
-            return outcome = Outcome::Finished, true;
-        if (s.state == ControllerState::Alarm || s.state == ControllerState::EStop)
-            return outcome = Outcome::Alarm, true;
-        // Held by the controller (a motionless loop): no operator here to stop or continue it.
-        if (s.state == ControllerState::Paused && s.heldByController)
-            return outcome = Outcome::Alarm, true;
-        if (options.maxSeconds >= 0 && elapsedS >= options.maxSeconds - 1e-9)
-            return outcome = Outcome::TimeLimit, true;
-        if (s.state == ControllerState::Paused && s.pause == PauseReason::M00) {
-            if (pausedSince < 0) pausedSince = elapsedS;
-            if (options.continueAfterS >= 0 &&
-                elapsedS - pausedSince >= options.continueAfterS - 1e-9) {
-                pressContinue = true;
-                pausedSince = -1.0;
-            }
-        } else {
-            pausedSince = -1.0;
-        }
-        return false;
-    }
-};
-
-Outcome runVirtual(const MachineProfile& profile, std::shared_ptr<const Program> program,
-                   const RunOptions& options, Report& report, TraceFile& trace,
-                   ControllerStatus& last, double& plantMm) {
-    SimSession session(profile, options.seed);
-    RailController& c = session.controller();
-    SimRail& rail = session.rail();
-    FaultInjection faults;
-    // Late ticks and faults start with the program, after homing (homing is the reference).
-    c.selectAutomatic();
-    c.loadProgram(std::move(program));
-    c.start(0);  // after homing
-    Supervisor sup{options};
-    std::vector<ScheduledFault> schedule = options.faults;
-    double startedAt = -1.0;
-    Outcome outcome = Outcome::Finished;
-    while (true) {
-        session.step();
-        c.drainEvents([&](const ControllerEvent& e) { report.add(e); });
-        const ControllerStatus& s = c.status();
-        if (startedAt < 0 && s.state == ControllerState::Running) {
-            startedAt = session.elapsedS();
-            faults.tickJitterMaxS = options.tickJitterMs / 1000.0;
-            faults.tickJitterRate = options.jitterRate;
-            rail.setFaults(faults);
-        }
-        if (startedAt >= 0 &&
-            applyDueFaults(schedule, session.elapsedS() - startedAt, rail.state().timeS, faults))
-            rail.setFaults(faults);
-        if (trace.active())
-            railTraceRow(trace, {s.timeS, s.blockN, s.servo.setpointMm, s.servo.positionMm,
-                                 s.servo.errorMm, s.servo.velocityMmS, s.servo.loop.code});
-        bool press = false;
-        if (sup.check(s, s.timeS, outcome, press)) break;
-        if (press) c.pressContinue();
-    }
-    if (outcome == Outcome::Alarm) {
-        // The drive is off; the platform coasts and brakes on. Follow it to rest (10 s at most)
-        // so the report says where it really stopped.
-        const double end = session.elapsedS() + 10.0;
-        double still = 0.0;
-        while (session.elapsedS() < end && still < 0.1) {
-            session.step();
-            c.drainEvents([&](const ControllerEvent& e) { report.add(e); });
-            still = std::abs(rail.state().velocityMmS) < 1e-6 ? still + 0.001 : 0.0;
-        }
-    }
-    plantMm = rail.state().positionMm;
-    last = c.status();
-    for (const ScheduledFault& f : schedule)
-        if (!f.applied)
-            err(QStringLiteral("trilho-cli run: a --fault due at %1 s was never injected: the "
-                               "program ended first\n")
-                    .arg(f.atS));
-    return outcome;
 }
 
 /// Ctrl-C or kill during a real-time run: the servo thread gets an E-stop and the run is
@@ -232,9 +140,13 @@ int runCommand(const QStringList& args) {
         QStringLiteral("max-seconds"),
         QStringLiteral("End the run after this long (default 3600 in virtual time)."),
         QStringLiteral("SECONDS"));
-    const QCommandLineOption traceOpt(QStringLiteral("trace"),
-                                      QStringLiteral("Write every servo tick to this CSV file."),
-                                      QStringLiteral("FILE.csv"));
+    const QCommandLineOption traceOpt(
+        QStringLiteral("trace"),
+        QStringLiteral("Write every servo tick to this CSV file (beside a "
+                       "regular file, its conditions and how the "
+                       "run ended to the sidecar FILE.run.json, "
+                       "which 'tune metrics' reads)."),
+        QStringLiteral("FILE.csv"));
     const QCommandLineOption jsonOpt(QStringLiteral("json"),
                                      QStringLiteral("Print one JSON object."));
     const QCommandLineOption machineOpt(
@@ -379,6 +291,7 @@ int runCommand(const QStringList& args) {
         profile.loop.samplePeriodS = periodForLaw(chosen, profile.loop.samplePeriodS, engineeredS);
         profile.loop.law = chosen;
     }
+    options.recordedProfile = profile;  // the trace's sidecar: --mass-factor recorded on its own
     // The payload goes where the simulated plant has a mass: the rail's platform, the DC table's
     // axes. The plotter's steppers are modelled without one (a pulse is a step, up to the
     // pull-out rate): there the option would change nothing, so it is refused.
@@ -451,13 +364,22 @@ int runCommand(const QStringList& args) {
         // Never write the trace over the program it runs (or the profile).
         const QString traceCanonical = QFileInfo(options.tracePath).canonicalFilePath();
         const QString machine = machineProfilePath(parser.value(machineOpt));
-        if (!traceCanonical.isEmpty() &&
-            (traceCanonical == QFileInfo(file).canonicalFilePath() ||
-             (traceCanonical == QFileInfo(machine).canonicalFilePath())))
-            return usage(QStringLiteral("--trace '%1' is an input of this run: refusing to "
-                                        "write over it")
-                             .arg(options.tracePath));
+        // Nor its sidecar (NAME.run.json beside a regular NAME.csv) over either.
+        const QString sidecarCanonical =
+            QFileInfo(runSidecarPath(options.tracePath)).canonicalFilePath();
+        for (const QString& written : {traceCanonical, sidecarCanonical})
+            if (!written.isEmpty() && (written == QFileInfo(file).canonicalFilePath() ||
+                                       written == QFileInfo(machine).canonicalFilePath()))
+                return usage(QStringLiteral("--trace '%1' (or its sidecar %2) is an input of "
+                                            "this run: refusing to write over it")
+                                 .arg(options.tracePath, runSidecarPath(options.tracePath)));
+        // A sidecar path that is a device, a FIFO or a directory is said before the run.
+        if (const QString refused = refuseToReplace(runSidecarPath(options.tracePath));
+            !refused.isEmpty() &&
+            (!QFileInfo::exists(options.tracePath) || QFileInfo(options.tracePath).isFile()))
+            return usage(QStringLiteral("--trace: the sidecar %1").arg(refused));
     }
+    options.programFile = file;
     const bool xy = profile.kind != MachineKind::Rail;
     if (!xy && !options.port.isEmpty())
         return usage(QStringLiteral("--port drives an XY board; the rail has no serial backend"));
@@ -476,10 +398,11 @@ int runCommand(const QStringList& args) {
     ControllerStatus last;
     double plantMm = 0.0;
     const Outcome outcome =
-        options.virtualTime ? runVirtual(profile, program, options, report, trace, last, plantMm)
-                            : runRealTime(profile, program, options, report, trace, last, plantMm);
+        options.virtualTime
+            ? runRailVirtual(profile, program, options, report, trace, last, plantMm)
+            : runRealTime(profile, program, options, report, trace, last, plantMm);
     // A trace that could not be written is said after the run's own result, which stands.
-    const bool traceOk = trace.close();
+    const QString traceFailure = finishTrace(trace, options, last.samplePeriodS, outcome, report);
 
     const double finalMm = last.servo.positionMm;
     if (options.json) {
@@ -505,7 +428,7 @@ int runCommand(const QStringList& args) {
             text += QStringLiteral("stopped by --max-seconds %1\n").arg(options.maxSeconds);
         out(text);
     }
-    return runExitStatus(outcome, report, traceOk, trace);
+    return runExitStatus(outcome, report, traceFailure);
 }
 
 }  // namespace trilho::cli

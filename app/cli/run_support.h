@@ -18,6 +18,7 @@
 #include "app/cli/cli_output.h"
 #include "core/machine/controller_event.h"
 #include "core/machine/event_text.h"
+#include "core/machine/machine_profile.h"
 #include "core/machine/xy_event_text.h"
 #include "hal/sim/fault_schedule.h"
 
@@ -36,8 +37,12 @@ struct RunOptions {
     double jitterRate = 0.01;   ///< with this probability
     std::uint64_t seed = 1;
     std::vector<ScheduledFault> faults;  ///< switched on after homing, at their @T
-    QString port;  ///< a board on this serial port instead of the simulated machine
-    int baud = 0;  ///< of port; 0: the board's own rate
+    QString port;         ///< a board on this serial port instead of the simulated machine
+    int baud = 0;         ///< of port; 0: the board's own rate
+    QString programFile;  ///< the program's file as given (the trace's sidecar names it)
+    /// The machine as loaded with --law applied and before --mass-factor (recorded on its own):
+    /// the trace's sidecar records it.
+    MachineProfile recordedProfile;
 };
 
 /// What the run said. Text: each history line is printed as it happens (memory bounded by
@@ -78,7 +83,8 @@ struct Report {
 /// a pipe to a plotter) is written straight, never replaced. Rows are gathered in a buffer of
 /// kBufferBytes and written a block at a time: a write per row made a virtual-time run 11x
 /// slower to a file and 28x to a pipe (issue 21 item 3). Any failed write is kept with its
-/// reason and reported after the run's own result.
+/// reason and reported after the run's own result. One thread at a time: in a virtual-time
+/// run the TraceQueue's writer thread (trace_queue.h) until its finish().
 class TraceFile {
   public:
     /// header: the CSV's first line, with its newline.
@@ -114,15 +120,19 @@ class TraceFile {
             file_ = std::move(f);
         }
         buffer_.reserve(kBufferBytes + 1024);
-        line(header, static_cast<qint64>(std::strlen(header)));
+        buffer_.append(header);
         return true;
     }
-    /// One row (or more), already formatted with its newline.
+    /// One row, already formatted with its newline.
     void line(const char* text, qint64 len) {
         if (!file_ || !error_.isEmpty() || len <= 0) return;
+        ++rows_;
         buffer_.append(text, static_cast<std::size_t>(len));
         if (buffer_.size() >= kBufferBytes) flushBuffer();
     }
+    /// The rows given to line() (the header given to open() is none).
+    long long rows() const { return rows_; }
+    const QString& path() const { return path_; }
     /// Writes what is buffered now (a real-time run, so a live reader keeps up).
     void flush() {
         if (file_ && error_.isEmpty()) flushBuffer();
@@ -172,13 +182,22 @@ class TraceFile {
         buffer_.clear();
     }
     void write(const char* data, qint64 len) {
-        if (file_->write(data, len) != len && error_.isEmpty())
+        errno = 0;
+        if (file_->write(data, len) == len || !error_.isEmpty()) return;
+        // The system's reason where there is one (QFile on a descriptor says "Unknown error").
+        const int e = errno;
+        if (e == EPIPE)
+            error_ = QStringLiteral("the program reading it closed the pipe");
+        else if (e != 0)
+            error_ = QString::fromLocal8Bit(std::strerror(e));
+        else
             error_ = file_->errorString().isEmpty() ? QStringLiteral("write failed")
                                                     : file_->errorString();
     }
     std::unique_ptr<QFileDevice> file_;
     std::string buffer_;
     QString path_, error_;
+    long long rows_ = 0;
 };
 
 /// The JSON fields every run reports, rail or XY: ok, history (and how many lines were left
@@ -192,13 +211,12 @@ inline QJsonObject runJson(Outcome outcome, const Report& report) {
     return o;
 }
 
-/// The exit status of a run (README): a trace that could not be written is said after the
-/// run's own report and makes a finished run a usage error; a program that ended away from
-/// where it sent the machine is no success (warning 13).
-inline int runExitStatus(Outcome outcome, const Report& report, bool traceOk,
-                         const TraceFile& trace) {
-    if (!traceOk) {
-        err(QStringLiteral("trilho-cli run: %1\n").arg(trace.error()));
+/// The exit status of a run (README): a trace (or its sidecar) that could not be written is said
+/// after the run's own report and makes a finished run a usage error; a program that ended away
+/// from where it sent the machine is no success (warning 13).
+inline int runExitStatus(Outcome outcome, const Report& report, const QString& traceFailure) {
+    if (!traceFailure.isEmpty()) {
+        err(QStringLiteral("trilho-cli run: %1\n").arg(traceFailure));
         if (outcome == Outcome::Finished) return kUsage;
     }
     if (outcome == Outcome::Finished && report.offTarget) return kAlarm;

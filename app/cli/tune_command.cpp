@@ -8,6 +8,7 @@
 #include <QJsonObject>
 #include <QSaveFile>
 #include <cmath>
+#include <numbers>
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
@@ -31,8 +32,16 @@ const char* kTuneUsage =
     "            +-100 mm, back at its start within a count), judged on a held-out run\n"
     "  auto      identify, design the gains (SIMC), predict the verification moves on the\n"
     "            model, run them with the tuned gains, report prediction against measurement\n"
+    "  relay     the relay experiment (Astrom-Hagglund) and its Ziegler-Nichols gains, to\n"
+    "            teach with, beside the model-based gains of 'auto'; both run the same step\n"
     "\n"
     "Run 'trilho-cli tune <subcommand> --help' for its options.\n";
+
+/// Counts per mm of a DC table axis (its encoder through its screw).
+double tableCountsPerMm(const MachineProfile& p, char axis) {
+    const DcAxisParams& a = axis == 'y' ? p.dcTable.y : p.dcTable.x;
+    return 2.0 * std::numbers::pi / (a.mmPerTurn * a.radPerCount);
+}
 
 QString lawName(LoopLaw law) {
     return law == LoopLaw::Classic ? QStringLiteral("classic") : QStringLiteral("engineered");
@@ -325,7 +334,9 @@ int stepCommand(const QStringList& args) {
         // The sidecar beside a regular file (not beside a pipe or a device).
         if (traceOk && QFileInfo(tracePath).isFile()) {
             QSaveFile side(runSidecarPath(tracePath));
-            const QByteArray json = runConditionsToJson(r.record.conditions, &r.metrics);
+            RunConditions written = r.record.conditions;
+            written.rows = static_cast<long long>(c.size());  // a shorter CSV was cut
+            const QByteArray json = runConditionsToJson(written, &r.metrics);
             if (!side.open(QIODevice::WriteOnly) || side.write(json) != json.size() ||
                 !side.commit()) {
                 traceFailure = QStringLiteral("cannot write '%1': %2")
@@ -420,23 +431,43 @@ int metricsCommand(const QStringList& args) {
                              : QStringLiteral("the rail")));
     }
     double countsPerMm = 22.8;
-    if (rec.hasConditions) {
+    if (rec.hasConditions && rec.conditions.profile.kind == MachineKind::DcTable && axis) {
+        // A run's trace of both table axes: the chosen axis' own encoder.
+        countsPerMm = tableCountsPerMm(rec.conditions.profile, axis);
+    } else if (rec.hasConditions) {
         countsPerMm = rec.conditions.countsPerMm;
     } else {
         const ProfileLoad p = loadNamedMachineProfile(parser.value(machineOpt));
         if (!p.profile) return usage(p.error);
-        if (p.profile->kind == MachineKind::DcTable) {
-            const DcAxisParams& a = axis == 'y' ? p.profile->dcTable.y : p.profile->dcTable.x;
-            countsPerMm = 2.0 * 3.14159265358979323846 / (a.mmPerTurn * a.radPerCount);
-        } else {
-            countsPerMm = p.profile->plant.countsPerMm;
-        }
+        countsPerMm = p.profile->kind == MachineKind::DcTable ? tableCountsPerMm(*p.profile, axis)
+                                                              : p.profile->plant.countsPerMm;
     }
     const StepMetrics m = measureRun(rec.channels, countsPerMm, commandedTarget(rec));
+    // What makes the trace no clean record (issue 21 item 2): its sidecar says the test was
+    // aborted or the run ended in an alarm (or off target, or stopped by --max-seconds); or it
+    // was cut short: a last row without its end of line, or fewer rows than its sidecar counts.
     const bool aborted = rec.hasConditions && !rec.conditions.abortReason.isEmpty();
-    if (!m.ok)
-        return usage(QStringLiteral("%1: no step to measure: %2")
-                         .arg(files.front(), QString::fromStdString(m.problem)));
+    QString cut;
+    if (rec.lastRowCut)
+        cut = QStringLiteral(
+            "its last row has no end of line (the writer stopped mid-row); "
+            "measured without it");
+    if (rec.hasConditions && rec.conditions.rows >= 0 &&
+        static_cast<long long>(rec.channels.size()) < rec.conditions.rows)
+        cut += QStringLiteral("%1%2 rows of the %3 its sidecar counts")
+                   .arg(cut.isEmpty() ? QString() : QStringLiteral("; "))
+                   .arg(rec.channels.size())
+                   .arg(rec.conditions.rows);
+    const bool truncated = !cut.isEmpty();
+    if (!m.ok) {
+        const QString why = QStringLiteral("%1: no step to measure: %2")
+                                .arg(files.front(), QString::fromStdString(m.problem));
+        if (!aborted && !truncated) return usage(why);
+        err(QStringLiteral("trilho-cli tune metrics: %1; %2\n")
+                .arg(why, aborted ? QStringLiteral("ABORTED: ") + rec.conditions.abortReason
+                                  : QStringLiteral("TRUNCATED: ") + cut));
+        return kAlarm;
+    }
     if (parser.isSet(jsonOpt)) {
         QJsonObject o = runJsonObject(m, rec.hasConditions ? &rec.conditions : nullptr);
         o[QStringLiteral("trace")] = files.front();
@@ -445,14 +476,20 @@ int metricsCommand(const QStringList& args) {
         o[QStringLiteral("aborted")] = aborted;
         o[QStringLiteral("abort_reason")] =
             aborted ? QJsonValue(rec.conditions.abortReason) : QJsonValue(QJsonValue::Null);
-        o[QStringLiteral("ok")] = m.ok && !aborted;
+        o[QStringLiteral("truncated")] = truncated;
+        o[QStringLiteral("truncation")] =
+            truncated ? QJsonValue(cut) : QJsonValue(QJsonValue::Null);
+        o[QStringLiteral("rows")] = static_cast<double>(rec.channels.size());
+        o[QStringLiteral("ok")] = m.ok && !aborted && !truncated;
         out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
     } else {
         out(QStringLiteral("%1: %2 ticks\n").arg(files.front()).arg(m.samples));
         if (aborted) out(QStringLiteral("ABORTED: %1\n").arg(rec.conditions.abortReason));
+        if (truncated) out(QStringLiteral("TRUNCATED: %1\n").arg(cut));
         out(metricsText(m));
     }
-    return kOk;
+    // Measured either way; a record that is not clean is no success (as `tune step` aborted).
+    return aborted || truncated ? kAlarm : kOk;
 }
 
 }  // namespace
@@ -475,9 +512,10 @@ int tuneCommand(const QStringList& args) {
     if (sub == QLatin1String("metrics")) return metricsCommand(rest);
     if (sub == QLatin1String("identify")) return tuneModelCommand(rest, false);
     if (sub == QLatin1String("auto")) return tuneModelCommand(rest, true);
+    if (sub == QLatin1String("relay")) return tuneRelayCommand(rest);
     return usageError(
-        "tune",
-        QStringLiteral("unknown subcommand '%1' (step, metrics, identify or auto)").arg(sub));
+        "tune", QStringLiteral("unknown subcommand '%1' (step, metrics, identify, auto or relay)")
+                    .arg(sub));
 }
 
 }  // namespace trilho::cli

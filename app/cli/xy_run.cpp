@@ -5,10 +5,14 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <optional>
 #include <thread>
 
 #include <QCoreApplication>
 
+#include "app/cli/run_sidecar.h"
+#include "app/cli/trace_queue.h"
+#include "app/cli/xy_trace.h"
 #include "core/machine/serial_link_motion.h"
 #include "core/tuning/trace_writer.h"
 #include "host/session/late_ticks.h"
@@ -28,25 +32,10 @@ double round4(double v) {
     return std::round(v * 1e4) / 1e4;
 }
 
+/// A row written on this thread: a real-time run, whose rows come at the clock's pace.
 void traceRow(TraceFile& trace, const XyStatus& s) {
-    // std::to_chars, the columns and decimals of the former
-    // "%.4f,%d,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%s".
     CsvRow row;
-    row.num(s.timeS, 4)
-        .integer(s.blockN)
-        .num(s.sample.x.setpointMm, 4)
-        .num(s.sample.x.positionMm, 6)  // 6: a count within `tune metrics`' one-count band
-        .num(s.sample.y.setpointMm, 4)
-        .num(s.sample.y.positionMm, 6)
-        .num(s.sample.x.drive, 3)
-        .num(s.sample.y.drive, 3);
-    if (s.sample.pen == PenState::Down)
-        row.integer(1);
-    else if (s.sample.pen == PenState::Up)
-        row.integer(0);
-    else
-        row.empty();
-    row.end();
+    formatXyTraceRow(xyTraceRow(s), row);
     trace.line(row.data(), static_cast<qint64>(row.size()));
 }
 
@@ -81,7 +70,7 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
     if (options.port.isEmpty()) {
         made = makeXySession(profile, options.seed);
         if (!made.session) {
-            trace.close();
+            trace.cancel();  // nothing ran: a trace that was there stays as it was
             return usageError("run", QString::fromStdString(made.error));
         }
     } else {
@@ -90,7 +79,7 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
         serial.baud = options.baud;
         device = makeXyDeviceSession(profile, serial);
         if (!device.session) {
-            trace.close();
+            trace.cancel();  // nothing ran: a trace that was there stays as it was
             return usageError("run", device.error);
         }
     }
@@ -111,6 +100,10 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
         std::signal(SIGINT, onXyInterrupt);
         std::signal(SIGTERM, onXyInterrupt);
     }
+    // In virtual time every period's row is formatted and written on another thread
+    // (trace_queue.h); in real time the periods come at the clock's pace, written here.
+    std::optional<TraceQueue<XyTraceRow>> traceQueue;
+    if (trace.active() && options.virtualTime) traceQueue.emplace(trace, formatXyTraceRow);
     while (true) {
         const double dtS = ticks.next(session.periodS());
         if (!options.virtualTime) {
@@ -125,7 +118,10 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
         c.drainEvents([&](const ControllerEvent& e) { report.add(e); });
         const XyStatus& s = c.status();
         if (!ticks.armed() && s.state == ControllerState::Running) ticks.arm();
-        if (trace.active()) traceRow(trace, s);
+        if (traceQueue)
+            traceQueue->push(xyTraceRow(s));
+        else if (trace.active())
+            traceRow(trace, s);
         bool press = false;
         if (link && link->fault() != AlarmCode::None) {
             // The screens hold the run for a Continue after a re-plug; here nobody can.
@@ -137,6 +133,7 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
         if (over(s, s.timeS, options, pausedSince, outcome, press)) break;
         if (press) c.pressContinue();
     }
+    if (traceQueue) traceQueue->finish();  // every row given to the file before it is closed
     if (outcome == Outcome::Alarm && !link) {
         // Drives off: follow the table to rest (2 s at most) so the report says where it is.
         for (int i = 0; i < 400; ++i) {
@@ -144,7 +141,7 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
             c.drainEvents([&](const ControllerEvent& e) { report.add(e); });
         }
     }
-    const bool traceOk = trace.close();
+    const QString traceFailure = finishTrace(trace, options, session.periodS(), outcome, report);
     const XyStatus last = c.status();
     const double x = last.sample.x.positionMm, y = last.sample.y.positionMm;
     if (options.json) {
@@ -182,7 +179,7 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
             text += QStringLiteral("stopped by --max-seconds %1\n").arg(options.maxSeconds);
         out(text);
     }
-    return runExitStatus(outcome, report, traceOk, trace);
+    return runExitStatus(outcome, report, traceFailure);
 }
 
 }  // namespace trilho::cli

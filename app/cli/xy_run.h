@@ -5,14 +5,11 @@
 #include <memory>
 
 #include "app/cli/run_support.h"
+#include "app/cli/xy_trace.h"
 #include "core/gcode/program.h"
 #include "core/machine/machine_profile.h"
 
 namespace trilho::cli {
-
-/// The --trace header of the XY machines (pen: 1 down, 0 up, empty on the DC table).
-inline constexpr const char* kXyTraceHeader =
-    "t_s,block_n,x_setpoint_mm,x_position_mm,y_setpoint_mm,y_position_mm,x_drive,y_drive,pen\n";
 
 /// Runs a compiled program; returns the exit status (cli_output.h), like the rail's run.
 int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> program,

@@ -151,6 +151,7 @@ QByteArray runConditionsToJson(const RunConditions& c, const StepMetrics* metric
     o[QStringLiteral("envelope_margin_mm")] = c.envelopeMarginMm;
     o[QStringLiteral("counts_per_mm")] = c.countsPerMm;
     o[QStringLiteral("abort_reason")] = c.abortReason;
+    if (c.rows >= 0) o[QStringLiteral("rows")] = static_cast<double>(c.rows);
     o[QStringLiteral("profile")] =
         QJsonDocument::fromJson(machineProfileToJson(c.profile)).object();
     if (metrics) o[QStringLiteral("metrics")] = stepMetricsToJson(*metrics);
@@ -230,8 +231,10 @@ bool saveRunRecord(const RunRecord& r, const QString& csvPath, const StepMetrics
         }
     const QByteArray head = QByteArray(runCsvHeader()) + '\n';
     if (!writeAtomically(csvPath, head, &r.channels, true, error)) return false;
-    return writeAtomically(runSidecarPath(csvPath), runConditionsToJson(r.conditions, metrics),
-                           nullptr, false, error);
+    RunConditions written = r.conditions;
+    written.rows = static_cast<long long>(r.channels.size());  // a shorter CSV was cut
+    return writeAtomically(runSidecarPath(csvPath), runConditionsToJson(written, metrics), nullptr,
+                           false, error);
 }
 
 // ---------------------------------------------------------------------------------- reading
@@ -330,6 +333,12 @@ RunLoad runRecordFromCsv(const QByteArray& csv, const QString& origin, char axis
         return out;
     RunRecord rec;
     RunChannels& c = rec.channels;
+    // Every writer ends each row with its newline: a last row without one was cut off.
+    std::size_t textEnd = text.size();
+    if (text.back() != '\n' && eol != std::string_view::npos) {
+        rec.lastRowCut = true;
+        textEnd = text.rfind('\n') + 1;
+    }
     c.hasLoopTerms = col.p >= 0 && col.i >= 0 && col.d >= 0 && col.ff >= 0;
     c.hasSaturation = col.sat >= 0;
     const std::size_t nCols = names.size();
@@ -337,10 +346,10 @@ RunLoad runRecordFromCsv(const QByteArray& csv, const QString& origin, char axis
     std::size_t line = 1;
     std::size_t pos = eol == std::string_view::npos ? text.size() : eol + 1;
     double lastT = -std::numeric_limits<double>::infinity();
-    while (pos < text.size()) {
+    while (pos < textEnd) {
         ++line;
         std::size_t end = text.find('\n', pos);
-        if (end == std::string_view::npos) end = text.size();
+        if (end == std::string_view::npos) end = textEnd;
         std::string_view row = text.substr(pos, end - pos);
         const std::size_t rowStart = pos;
         pos = end + 1;
@@ -422,7 +431,11 @@ RunLoad runRecordFromCsv(const QByteArray& csv, const QString& origin, char axis
         }
         c.saturated.push_back(s == 1.0 ? 1 : 0);
     }
-    if (c.size() == 0) return fail(line, 1, QStringLiteral("no rows after the header"));
+    if (c.size() == 0)
+        return fail(line, 1,
+                    rec.lastRowCut ? QStringLiteral("no whole row after the header (the only "
+                                                    "one is cut off: no end of line)")
+                                   : QStringLiteral("no rows after the header"));
     out.record = std::move(rec);
     return out;
 }
@@ -533,6 +546,13 @@ std::optional<RunConditions> runConditionsFromJson(const QByteArray& json, const
     c.test = o.value(QStringLiteral("test")).toString();
     c.date = o.value(QStringLiteral("date")).toString();
     c.abortReason = o.value(QStringLiteral("abort_reason")).toString();
+    const QJsonValue rows = o.value(QStringLiteral("rows"));
+    if (rows.isDouble() && rows.toDouble() >= 0 && rows.toDouble() <= double(kMaxRunRows) &&
+        rows.toDouble() == std::floor(rows.toDouble()))
+        c.rows = static_cast<long long>(rows.toDouble());
+    else if (!rows.isUndefined())
+        return bad(QStringLiteral("rows"),
+                   QStringLiteral("must be a whole number from 0 to %1").arg(kMaxRunRows));
     return c;
 }
 

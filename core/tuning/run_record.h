@@ -44,7 +44,10 @@ struct RunConditions {
     double maxDurationS = 0.0;      ///< 0: automatic
     double envelopeMarginMm = 0.0;  ///< 0: automatic
     double countsPerMm = 22.8;
-    QString abortReason;  ///< empty when the test ran to its end
+    QString abortReason;  ///< empty when the test (or `run`) ran to its end
+    /// Data rows of the CSV as its writer finished it (-1: not recorded, an older sidecar): a
+    /// CSV with fewer was cut short after it was written.
+    long long rows = -1;
 };
 
 /// Per tick, all the same length. Loop terms in DAC codes around 128 (rail) or PWM percent
@@ -69,6 +72,9 @@ struct RunRecord {
     RunConditions conditions;
     RunChannels channels;
     bool hasConditions = false;  ///< a sidecar was read (a bare trace has none)
+    /// The CSV's last row had no end of line: its writer stopped mid-row (killed, a full disk
+    /// behind a pipe). That row is left out; the rows before it are read.
+    bool lastRowCut = false;
 };
 
 /// Limits of what the reader accepts: 10 minutes at 2 kHz fit with room.

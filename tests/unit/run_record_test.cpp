@@ -10,6 +10,8 @@
 
 #include <QFileInfo>
 #include <cmath>
+#include <string>
+#include <tuple>
 
 namespace trilho {
 namespace {
@@ -253,6 +255,52 @@ TEST(CsvRow, FormatsFixedAndEmptyFields) {
     row.clear();
     row.empty().num(2.5, 1).end();
     EXPECT_EQ(std::string(row.data(), row.size()), ",2.5\n");
+}
+
+// The fixed-point writer (two digits a step, issue 21 item 3) against the definition it
+// documents, written the plain way: n = |v| 10^d + 0.5 truncated, its decimal digits with the
+// point d from the right, a minus unless n is 0. Values of every magnitude a trace holds, both
+// signs, every decimals 0-9, and the carries (9.99995 at 4 decimals is 10.0000).
+TEST(CsvRow, FixedPointIsTheDocumentedRoundingAtEveryWidth) {
+    auto reference = [](double v, int d) {
+        const double scaled = std::abs(v) * std::pow(10.0, d);
+        std::string digits = std::to_string(static_cast<unsigned long long>(scaled + 0.5));
+        if (digits.size() < static_cast<std::size_t>(d) + 1)
+            digits.insert(0, static_cast<std::size_t>(d) + 1 - digits.size(), '0');
+        std::string out = v < 0 && digits.find_first_not_of('0') != std::string::npos ? "-" : "";
+        out += digits.substr(0, digits.size() - static_cast<std::size_t>(d));
+        if (d > 0) out += "." + digits.substr(digits.size() - static_cast<std::size_t>(d));
+        return out + "\n";
+    };
+    std::uint64_t state = 12345;
+    auto next = [&] {  // xorshift: the same values on every machine
+        state ^= state << 13, state ^= state >> 7, state ^= state << 17;
+        return state;
+    };
+    CsvRow row;
+    int checked = 0;
+    for (int k = 0; k < 200000; ++k) {
+        const int d = static_cast<int>(next() % 10);
+        const double magnitude = std::pow(10.0, static_cast<double>(next() % 12) - 5.0);
+        const double v = (static_cast<double>(next() % 2000001) / 1e6 - 1.0) * magnitude;
+        if (std::abs(v) * std::pow(10.0, d) >= 9.0e15) continue;
+        row.clear();
+        row.num(v, d).end();
+        ASSERT_EQ(std::string(row.data(), row.size()), reference(v, d)) << v << " at " << d;
+        ++checked;
+    }
+    EXPECT_GT(checked, 150000);
+    for (const auto& [v, d, text] : {std::tuple{9.99995, 4, "10.0000\n"},
+                                     {-0.99999995, 6, "-1.000000\n"},
+                                     {0.0438596, 6, "0.043860\n"},
+                                     {128.0, 0, "128\n"},
+                                     {-0.0000004, 6, "0.000000\n"},
+                                     {1234567.5, 0, "1234568\n"},
+                                     {0.05, 1, "0.1\n"}}) {
+        row.clear();
+        row.num(v, d).end();
+        EXPECT_EQ(std::string(row.data(), row.size()), text) << v;
+    }
 }
 
 }  // namespace

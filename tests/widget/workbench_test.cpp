@@ -216,6 +216,45 @@ class WorkbenchTest : public QObject {
         }
     }
 
+    // The relay (Ziegler-Nichols) experiment beside the model-based result, from its button:
+    // the numbers `trilho-cli tune relay` prints for the same rail, seed and mass.
+    void theRelayExperimentShowsBesideTheModelWithTheCliNumbers() {
+        WorkbenchWindow w(MachineProfile::rail());
+        auto* relay = w.findChild<QPushButton*>(QStringLiteral("relayExperiment"));
+        QVERIFY(relay);
+        relay->click();
+        QVERIFY(w.busy());
+        QVERIFY(waitRun(w));
+        const QString text = w.model()->summary()->text();
+        QCOMPARE(w.tabs()->currentWidget(), static_cast<QWidget*>(w.model()));
+        QVERIFY2(text.contains(QStringLiteral("Ziegler-Nichols (relay)")), qPrintable(text));
+        QVERIFY(text.contains(QStringLiteral("model-based (SIMC)")));
+        const QJsonObject json =
+            cli({QStringLiteral("tune"), QStringLiteral("relay"), QStringLiteral("--machine"),
+                 QStringLiteral("rail"), QStringLiteral("--json")});
+        QVERIFY2(!json.isEmpty(), "trilho-cli tune relay printed no JSON");
+        const double ku = json[QStringLiteral("relay")]
+                              .toObject()[QStringLiteral("ultimate_gain_code_per_mm")]
+                              .toDouble();
+        QVERIFY(ku > 0.0);
+        QVERIFY2(
+            text.contains(
+                QStringLiteral("Ku = 4 d / (pi a) = %1 code/mm").arg(QString::number(ku, 'f', 2))),
+            qPrintable(text));
+        const double znKp = json[QStringLiteral("ziegler_nichols")]
+                                .toObject()[QStringLiteral("gains")]
+                                .toObject()[QStringLiteral("kp_code_per_mm")]
+                                .toDouble();
+        const double simcKp = json[QStringLiteral("model_based")]
+                                  .toObject()[QStringLiteral("gains")]
+                                  .toObject()[QStringLiteral("kp_code_per_mm")]
+                                  .toDouble();
+        QVERIFY2(
+            text.contains(QStringLiteral("<td>%1</td><td>%2</td>")
+                              .arg(QString::number(znKp, 'f', 4), QString::number(simcKp, 'f', 4))),
+            qPrintable(text));
+    }
+
     // The DC table: per axis; no autotune page (the rail's model only, for now).
     void theDcTableStepsEachAxis() {
         WorkbenchWindow w(MachineProfile::xyDcTable());

@@ -167,5 +167,66 @@ void ModelView::showAutotune(const AutotuneResult& r) {
     plotBode(r.frequency);
 }
 
+void ModelView::showRelay(const RelayComparison& c) {
+    const RelayResult& r = c.relay;
+    QString h = tr("<b>Relay experiment</b> (Astrom-Hagglund): a relay of +-%1 codes on the "
+                   "position error, hysteresis %2 counts")
+                    .arg(c.options.reliefCodes)
+                    .arg(num(c.options.hysteresisCounts, 1));
+    if (r.ok) {
+        h += QStringLiteral("<br>") + tr("limit cycle: amplitude a = %1 mm, period Tu = %2 ms")
+                                          .arg(num(r.amplitudeMm, 4), num(r.periodS * 1e3, 1));
+        h += QStringLiteral("<br>") +
+             tr("ultimate gain Ku = 4 d / (pi a) = %1 code/mm").arg(num(r.ultimateGain, 2));
+    } else {
+        h += QStringLiteral("<br><font color=\"#c00000\"><b>%1</b></font>")
+                 .arg(tr("Relay experiment failed: %1").arg(r.error));
+    }
+    h += QStringLiteral("<br>") + tr("experiment: %1 s of machine time, back within %2 counts")
+                                      .arg(num(r.experimentTimeS, 2), num(r.returnErrorCounts, 0));
+    const QString none = QStringLiteral("-");
+    const bool zn = r.ok, model = c.autotune.ok;
+    auto cell = [&](bool have, double v, int d) { return have ? num(v, d) : none; };
+    auto row = [](const QString& what, const QString& a, const QString& b) {
+        return QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td></tr>").arg(what, a, b);
+    };
+    auto metric = [&](const std::optional<StepTestResult>& s, double StepMetrics::*m, int d) {
+        if (!s) return none;
+        return std::isfinite((s->metrics).*m) ? num((s->metrics).*m, d) : tr("not reached");
+    };
+    h += QStringLiteral("<br><br><table border=\"1\" cellpadding=\"3\" cellspacing=\"0\">");
+    h += QStringLiteral("<tr><th></th><th>%1</th><th>%2</th></tr>")
+             .arg(tr("Ziegler-Nichols (relay)"), tr("model-based (SIMC)"));
+    const LoopGains& g = r.zieglerNichols;
+    const LoopGains& m = c.autotune.design.gains;
+    h += row(tr("Kp (code/mm)"), cell(zn, g.kp, 4), cell(model, m.kp, 4));
+    h += row(tr("Ki (code/(mm.s))"), cell(zn, g.ki, 4), cell(model, m.ki, 4));
+    h += row(tr("Kd (code/(mm/s))"), cell(zn, g.kd, 5), cell(model, m.kd, 5));
+    const auto& a = c.zieglerNicholsStep;
+    const auto& b = c.modelStep;
+    h += row(tr("10 mm step: overshoot (%)"), metric(a, &StepMetrics::overshootPct, 2),
+             metric(b, &StepMetrics::overshootPct, 2));
+    h += row(tr("rise time 10-90 % (s)"), metric(a, &StepMetrics::riseTimeS, 4),
+             metric(b, &StepMetrics::riseTimeS, 4));
+    h += row(tr("settling to +-1 count (s)"), metric(a, &StepMetrics::settlingTime1CountS, 4),
+             metric(b, &StepMetrics::settlingTime1CountS, 4));
+    h += row(tr("steady-state error (counts)"), metric(a, &StepMetrics::steadyStateErrorCounts, 2),
+             metric(b, &StepMetrics::steadyStateErrorCounts, 2));
+    auto aborted = [&](const std::optional<StepTestResult>& s) {
+        return !s ? none : s->ok() ? tr("no") : tr("aborted: %1").arg(s->abortReason);
+    };
+    h += row(tr("aborted"), aborted(a), aborted(b));
+    h += QStringLiteral("</table>");
+    if (!model)
+        h += QStringLiteral("<br><font color=\"#c00000\"><b>%1</b></font>")
+                 .arg(tr("Autotune failed: %1").arg(c.autotune.error));
+    h += QStringLiteral("<br>") +
+         tr("An experiment to teach with, not the default tuning: on this plant the DAC's "
+            "quantization, the friction and the current limit set the limit cycle as much as "
+            "the dynamics do.");
+    summary_->setText(h);
+    if (model) plotBode(c.autotune.frequency);
+}
+
 }  // namespace ui
 }  // namespace trilho

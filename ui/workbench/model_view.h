@@ -2,12 +2,13 @@
 // The workbench's model page (issue 21 items 5-7): the identified model of the rail and its
 // fit (MATLAB compare's NRMSE on held-out velocity), the loop designed from it, the prediction
 // of the verification moves against what they measured, and the Bode plot of the identified
-// open loop with its margins.
+// open loop with its margins; beside the autotune, the relay (Ziegler-Nichols) experiment.
 #include <QWidget>
 
 #include "core/tuning/frequency_response.h"
 #include "core/tuning/rail_autotune.h"
 #include "core/tuning/rail_identification.h"
+#include "host/tuning/relay_comparison.h"
 
 class QCustomPlot;
 class QLabel;
@@ -22,6 +23,9 @@ class ModelView : public QWidget {
     void showIdentification(const RailIdentification& id, const FrequencyView& frequency,
                             const LoopGains& gains);
     void showAutotune(const AutotuneResult& result);
+    /// The relay experiment's Ku, Tu and Ziegler-Nichols gains beside the model-based gains,
+    /// and what each did on the same 10 mm step.
+    void showRelay(const RelayComparison& comparison);
     void showMessage(const QString& text);
     QLabel* summary() const { return summary_; }
     QCustomPlot* bode() const { return bode_; }

@@ -28,6 +28,7 @@
 #include "core/tuning/rail_autotune.h"
 #include "core/tuning/rail_identification.h"
 #include "host/session/sim_rail_rig.h"
+#include "host/tuning/relay_comparison.h"
 #include "ui/workbench/model_view.h"
 #include "ui/workbench/run_overlay.h"
 #include "ui/workbench/terms_view.h"
@@ -147,11 +148,14 @@ void WorkbenchWindow::build() {
     identify_->setObjectName(QStringLiteral("identify"));
     autotune_ = new QPushButton(tuneBox_);
     autotune_->setObjectName(QStringLiteral("autotune"));
+    relay_ = new QPushButton(tuneBox_);
+    relay_->setObjectName(QStringLiteral("relayExperiment"));
     saveTuned_ = new QPushButton(tuneBox_);
     saveTuned_->setObjectName(QStringLiteral("saveTuned"));
     saveTuned_->setEnabled(false);
     t->addWidget(identify_);
     t->addWidget(autotune_);
+    t->addWidget(relay_);
     t->addWidget(saveTuned_);
     tuneBox_->setVisible(rail_);
 
@@ -209,6 +213,7 @@ void WorkbenchWindow::build() {
     connect(compare_, &QPushButton::clicked, this, &WorkbenchWindow::compareLaws);
     connect(identify_, &QPushButton::clicked, this, &WorkbenchWindow::identify);
     connect(autotune_, &QPushButton::clicked, this, &WorkbenchWindow::autotune);
+    connect(relay_, &QPushButton::clicked, this, &WorkbenchWindow::relayExperiment);
     connect(saveTuned_, &QPushButton::clicked, this, &WorkbenchWindow::saveTunedProfile);
     connect(overlay_, &RunOverlay::runSelected, this, &WorkbenchWindow::selectRun);
     connect(terms_, &TermsView::whatIfRequested, this, &WorkbenchWindow::whatIfRun);
@@ -272,6 +277,11 @@ void WorkbenchWindow::retranslate() {
     autotune_->setToolTip(
         tr("Identify, design (SIMC), predict, then verify with a 10 mm step "
            "and a 1000 mm move"));
+    relay_->setText(tr("Relay experiment (Ziegler-Nichols)"));
+    relay_->setToolTip(
+        tr("To teach with, never the default: a relay of +-3 codes provokes a limit cycle, "
+           "Ziegler-Nichols gains from it, beside the model-based gains, both on the same 10 mm "
+           "step"));
     saveTuned_->setText(tr("Save tuned profile..."));
     runsBox_->setTitle(tr("Runs"));
     saveRun_->setText(tr("Save run..."));
@@ -352,7 +362,7 @@ QString WorkbenchWindow::runLabel(const RunConditions& c) const {
 
 void WorkbenchWindow::setBusy(bool busy) {
     busy_ = busy;
-    for (QWidget* w : std::initializer_list<QWidget*>{run_, compare_, identify_, autotune_,
+    for (QWidget* w : std::initializer_list<QWidget*>{run_, compare_, identify_, autotune_, relay_,
                                                       terms_->whatIfButton()})
         w->setEnabled(!busy);
     if (busy) statusBar()->showMessage(tr("Running in virtual time..."));
@@ -502,6 +512,27 @@ void WorkbenchWindow::autotune() {
                 r.ok ? tr("Autotune passed in %1 s of machine time.").arg(r.machineTimeS, 0, 'f', 2)
                      : tr("Autotune failed: %1").arg(r.error),
                 10000);
+        });
+}
+
+void WorkbenchWindow::relayExperiment() {
+    if (busy_ || !rail_) return;
+    MachineProfile profile = currentSpec().profile;
+    profile.loop.law = LoopLaw::Engineered;
+    profile.loop.samplePeriodS = profile_.loop.samplePeriodS;
+    const auto seed = static_cast<std::uint64_t>(seed_->value());
+    const double mass = mass_->value();
+    inBackground<RelayComparison>(
+        [profile, seed, mass] { return compareRelayWithModel(profile, seed, mass); },
+        [this](RelayComparison c) {
+            model_->showRelay(c);
+            tabs_->setCurrentWidget(model_);
+            statusBar()->showMessage(c.relay.ok
+                                         ? tr("Relay: Ku %1 code/mm, Tu %2 ms.")
+                                               .arg(c.relay.ultimateGain, 0, 'f', 2)
+                                               .arg(c.relay.periodS * 1e3, 0, 'f', 1)
+                                         : tr("Relay experiment failed: %1").arg(c.relay.error),
+                                     10000);
         });
 }
 

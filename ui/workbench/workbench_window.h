@@ -3,8 +3,9 @@
 // machine's simulated plant in virtual time, their metrics, an overlay of every run with a
 // table of metrics side by side, the P/I/D terms of a run tick by tick with the equation
 // substituted and "what if" re-simulation, and on the rail identification, autotune and the
-// Bode plot. Every figure comes from core/tuning and host/tuning, the same code
-// `trilho-cli tune` prints, so the screens and the CLI agree to the digit.
+// Bode plot, and the relay (Ziegler-Nichols) experiment beside the autotune to teach with. Every
+// figure comes from core/tuning and host/tuning, the same code `trilho-cli tune` prints, so the
+// screens and the CLI agree to the digit.
 #include <QMainWindow>
 #include <functional>
 #include <optional>
@@ -45,6 +46,9 @@ class WorkbenchWindow : public QMainWindow {
     void compareLaws();
     void identify();
     void autotune();
+    /// The relay experiment and its Ziegler-Nichols gains beside the model-based autotune, both
+    /// run on the same 10 mm step (host/tuning/relay_comparison.h; `tune relay`'s numbers).
+    void relayExperiment();
     bool busy() const { return busy_; }
     const std::vector<WorkbenchRunPtr>& runs() const { return runs_; }
     bool addRecord(RunRecord record, const QString& name, QString* error = nullptr);
@@ -99,7 +103,7 @@ class WorkbenchWindow : public QMainWindow {
     QComboBox *axis_, *law_;
     QDoubleSpinBox *amplitude_, *speed_, *period_, *kp_, *ki_, *kd_, *mass_;
     QSpinBox* seed_;
-    QPushButton *run_, *compare_, *identify_, *autotune_, *saveTuned_;
+    QPushButton *run_, *compare_, *identify_, *autotune_, *relay_, *saveTuned_;
     QListWidget* runList_;
     QPushButton *saveRun_, *loadRun_, *removeRun_, *clearRuns_;
 };

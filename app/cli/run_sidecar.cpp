@@ -1,0 +1,98 @@
+#include "app/cli/run_sidecar.h"
+
+#include <QDateTime>
+#include <QFileInfo>
+#include <QJsonObject>
+#include <QSaveFile>
+#include <numbers>
+
+#include "core/machine/replace_target.h"
+#include "core/tuning/run_record.h"
+#include "host/tuning/step_test.h"
+
+namespace trilho::cli {
+
+QString runAbortReason(Outcome outcome, const Report& report, const RunOptions& options) {
+    // The last alarm (or warning) the run raised is what ended it: "Alarm 3: Following error..."
+    // as the history says it.
+    QString last;
+    if (!report.alarms.isEmpty()) {
+        const QJsonObject a = report.alarms.last().toObject();
+        last = QStringLiteral("%1 %2: %3")
+                   .arg(a.value(QStringLiteral("severity")).toString() == QLatin1String("warning")
+                            ? QStringLiteral("Warning")
+                            : QStringLiteral("Alarm"))
+                   .arg(a.value(QStringLiteral("code")).toInt())
+                   .arg(a.value(QStringLiteral("text")).toString());
+    }
+    switch (outcome) {
+        case Outcome::Finished:
+            return report.offTarget
+                       ? QStringLiteral("the program ended away from its last target: %1").arg(last)
+                       : QString();
+        case Outcome::Alarm:
+            return last.isEmpty() ? QStringLiteral("the run was stopped (E-stop or interrupted)")
+                                  : QStringLiteral("the run ended in an alarm: %1").arg(last);
+        case Outcome::TimeLimit:
+            return QStringLiteral("stopped by --max-seconds %1 before the program's end")
+                .arg(options.maxSeconds);
+    }
+    return {};
+}
+
+namespace {
+
+QString writeRunSidecar(const QString& tracePath, const MachineProfile& profile, double periodS,
+                        const RunOptions& options, const QString& program, long long rows,
+                        const QString& abortReason) {
+    RunConditions c;
+    c.profile = profile;
+    c.massFactor = options.massFactor;
+    c.seed = options.seed;
+    c.test = program;
+    c.date = QDateTime::currentDateTimeUtc().toString(Qt::ISODate);
+    c.periodS = periodS;
+    c.rows = rows;
+    c.abortReason = abortReason;
+    switch (profile.kind) {
+        case MachineKind::Rail:
+            c.law = profile.loop.law;
+            c.countsPerMm = profile.plant.countsPerMm;
+            break;
+        case MachineKind::DcTable: {
+            // The X axis' count here; `tune metrics --axis y` takes Y's from the profile.
+            c.law = tableStepLaw(profile.dcTable.law);
+            const DcAxisParams& a = profile.dcTable.x;
+            c.countsPerMm = 2.0 * std::numbers::pi / (a.mmPerTurn * a.radPerCount);
+            break;
+        }
+        case MachineKind::Plotter:
+            c.countsPerMm = profile.plant.countsPerMm;
+            break;
+    }
+    c.gains = profileGains(profile, profile.kind == MachineKind::DcTable ? 'x' : 0, c.law);
+    const QString path = runSidecarPath(tracePath);
+    if (const QString refused = refuseToReplace(path); !refused.isEmpty())
+        return QStringLiteral("cannot write %1").arg(refused);
+    QSaveFile f(path);
+    const QByteArray json = runConditionsToJson(c, nullptr);
+    if (!f.open(QIODevice::WriteOnly) || f.write(json) != json.size() || !f.commit())
+        return QStringLiteral("cannot write '%1': %2").arg(path, f.errorString());
+    return {};
+}
+
+}  // namespace
+
+QString finishTrace(TraceFile& trace, const RunOptions& options, double periodS, Outcome outcome,
+                    const Report& report) {
+    if (!trace.active()) return {};
+    const QString path = trace.path();
+    const long long rows = trace.rows();
+    if (!trace.close()) return trace.error();
+    // Beside a regular file only: a device or a FIFO has no "beside".
+    if (!QFileInfo(path).isFile()) return {};
+    return writeRunSidecar(path, options.recordedProfile, periodS, options, options.programFile,
+                           rows, runAbortReason(outcome, report, options));
+}
+
+}  // namespace trilho::cli

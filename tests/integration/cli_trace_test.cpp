@@ -1,0 +1,292 @@
+// Issue 21 items 2 and 3: `trilho-cli run --trace` writes its rows on a thread of its own (the
+// run's thread only copies the numbers) and the bytes stay those of the former writer; beside a
+// regular file it writes the sidecar NAME.run.json, so that `tune metrics` says of a trace
+// whose run ended in an alarm, or that was cut short, that it is no clean record (status 3).
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <unistd.h>
+
+#include <QCryptographicHash>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+
+#include "tests/integration/cli_process.h"
+
+namespace {
+
+using trilho::test::CliResult;
+using trilho::test::runCli;
+
+QString program(const char* name) {
+    return QStringLiteral(TRILHO_PROGRAMS_DIR "/") + QString::fromLatin1(name);
+}
+
+QByteArray readAll(const QString& path) {
+    QFile f(path);
+    EXPECT_TRUE(f.open(QIODevice::ReadOnly)) << path.toStdString();
+    return f.readAll();
+}
+
+QJsonObject jsonFile(const QString& path) {
+    const QJsonDocument d = QJsonDocument::fromJson(readAll(path));
+    EXPECT_TRUE(d.isObject()) << path.toStdString();
+    return d.object();
+}
+
+/// Four passes of 1200 mm at F20 and back: 14,930 rows, several of the writer's chunks.
+constexpr const char* kLongProgram =
+    "N10 G1 X600 F20\nN20 G1 X-600 F20\nN30 G1 X600 F20\nN40 G1 X-600 F20\n"
+    "N50 G0 X0\nN60 M2\n";
+
+class CliTrace : public ::testing::Test {
+  protected:
+    QTemporaryDir dir;
+};
+
+// The figures are those of `trilho-cli run --virtual-time --trace` built at c9157ca, the commit
+// before the writer thread: the SHA-256 and the size of each trace. A rail run of several
+// chunks, a run that ends in an alarm, the DC table and the plotter.
+TEST_F(CliTrace, TheBytesAreThoseOfTheFormerWriter) {
+    struct Case {
+        QStringList args;
+        int exit;
+        qint64 bytes;
+        const char* sha256;
+    };
+    const QString longProgram = trilho::test::writeIn(dir, QStringLiteral("long.G"), kLongProgram);
+    const Case cases[] = {
+        {{longProgram},
+         0,
+         786417,
+         "dec51a5d43e1a8aedd77e83fe7e09fdc2a6c293a135efd6c7837db499f0998d8"},
+        {{program("exemplo_documento.G")},
+         0,
+         41951,
+         "300a464e35d9051fbeb4761d3fe99b18af37b17488bcdcaf5a52d3754edf6446"},
+        {{QStringLiteral("--fault"), QStringLiteral("stuck-encoder@1"),
+          program("ciclo_continuo.G")},
+         3,
+         100871,
+         "990a55211593d6368a7a9e27ec3d1d8fd21e5cd5cdf98fcc0150ed3fc94d20e3"},
+        {{QStringLiteral("--machine"), QStringLiteral("xy_dc_table"),
+          program("mesa_xy_quadrado.G")},
+         0,
+         170106,
+         "ac94963f8f5069d138cb82a608c4d55dee7df9c7a08fcbb07c0373d74362123f"},
+        {{QStringLiteral("--machine"), QStringLiteral("xy_plotter"), program("plotter_quadrado.G")},
+         0,
+         113024,
+         "d8dba2657d2a5601a5ee6a8fd70b30c4d33e61551e702924b0ca04cda2692f22"},
+    };
+    int n = 0;
+    for (const Case& c : cases) {
+        const QString trace = dir.filePath(QStringLiteral("t%1.csv").arg(n++));
+        SCOPED_TRACE(c.args.join(QLatin1Char(' ')).toStdString());
+        const CliResult r =
+            runCli(QStringList{QStringLiteral("run"), QStringLiteral("--virtual-time"),
+                               QStringLiteral("--trace"), trace} +
+                   c.args);
+        ASSERT_EQ(r.exit, c.exit) << r.err.toStdString();
+        const QByteArray bytes = readAll(trace);
+        EXPECT_EQ(bytes.size(), c.bytes);
+        EXPECT_EQ(QCryptographicHash::hash(bytes, QCryptographicHash::Sha256).toHex(),
+                  QByteArray(c.sha256));
+    }
+}
+
+TEST_F(CliTrace, AFifoGetsTheSameBytesAsAFile) {
+    const QString prog = trilho::test::writeIn(dir, QStringLiteral("long.G"), kLongProgram);
+    const QString file = dir.filePath(QStringLiteral("file.csv"));
+    ASSERT_EQ(runCli({QStringLiteral("run"), QStringLiteral("--virtual-time"),
+                      QStringLiteral("--trace"), file, prog})
+                  .exit,
+              0);
+    const QString fifo = dir.filePath(QStringLiteral("trace.fifo"));
+    ASSERT_EQ(QProcess::execute(QStringLiteral("mkfifo"), {fifo}), 0);
+    // cat writes to a file: a QProcess's own stdout pipe would fill while this thread waits on
+    // the run, and hold cat, the FIFO and the run behind it.
+    const QString copy = dir.filePath(QStringLiteral("copy.csv"));
+    QProcess reader;
+    reader.setStandardOutputFile(copy);
+    reader.start(QStringLiteral("cat"), {fifo});
+    ASSERT_TRUE(reader.waitForStarted());
+    // A reader end held from the start (cat may not have opened it yet): see cli_run_test.cpp.
+    const int holder =
+        ::open(QFile::encodeName(fifo).constData(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    ASSERT_GE(holder, 0);
+    const CliResult r = runCli({QStringLiteral("run"), QStringLiteral("--virtual-time"),
+                                QStringLiteral("--trace"), fifo, prog});
+    ::close(holder);
+    EXPECT_EQ(r.exit, 0) << r.err.toStdString();
+    ASSERT_TRUE(reader.waitForFinished(60000));
+    const QByteArray got = readAll(copy);
+    EXPECT_EQ(got.count('\n'), 14931);
+    EXPECT_TRUE(got == readAll(file));
+    EXPECT_FALSE(QFileInfo::exists(fifo + QStringLiteral(".run.json")));  // none beside a FIFO
+    EXPECT_FALSE(QFileInfo::exists(dir.filePath(QStringLiteral("trace.run.json"))));
+}
+
+// A pipe whose reader goes away: the run's own result stands, the trace's failure is said naming
+// the FIFO (it was a SIGPIPE that killed the run unreported, exit 141).
+TEST_F(CliTrace, APipeWhoseReaderLeavesIsSaidNamingIt) {
+    const QString prog = trilho::test::writeIn(dir, QStringLiteral("long.G"), kLongProgram);
+    const QString fifo = dir.filePath(QStringLiteral("early.fifo"));
+    ASSERT_EQ(QProcess::execute(QStringLiteral("mkfifo"), {fifo}), 0);
+    // Close-on-exec: the run must not inherit a read end of its own FIFO (it would never see
+    // the reader leave).
+    const int readEnd =
+        ::open(QFile::encodeName(fifo).constData(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    ASSERT_GE(readEnd, 0);
+    ::fcntl(readEnd, F_SETFL, ::fcntl(readEnd, F_GETFL) & ~O_NONBLOCK);
+    QProcess run;
+    run.start(QStringLiteral(TRILHO_CLI), {QStringLiteral("run"), QStringLiteral("--virtual-time"),
+                                           QStringLiteral("--trace"), fifo, prog});
+    ASSERT_TRUE(run.waitForStarted());
+    // Take the first 1000 bytes, then leave: the trace is 786 KB, far over a pipe's 64 KB, so
+    // the run is still writing when the reader is gone.
+    // A FIFO's read end reads as ended until a writer opens it: wait for the first bytes
+    // (poll, not a sleep; Linux reports no hang-up to a reader that never had a writer).
+    char buf[1000];
+    std::size_t got = 0;
+    while (got < sizeof buf) {
+        pollfd p{readEnd, POLLIN, 0};
+        ASSERT_EQ(::poll(&p, 1, 60000), 1) << "no trace within 60 s";
+        const ssize_t n = ::read(readEnd, buf + got, sizeof buf - got);
+        ASSERT_GT(n, 0);
+        got += static_cast<std::size_t>(n);
+    }
+    ::close(readEnd);
+    ASSERT_TRUE(run.waitForFinished(60000));
+    const QString out = QString::fromUtf8(run.readAllStandardOutput());
+    const QString err = QString::fromUtf8(run.readAllStandardError());
+    EXPECT_EQ(run.exitStatus(), QProcess::NormalExit);
+    EXPECT_EQ(run.exitCode(), 2) << err.toStdString();
+    EXPECT_TRUE(out.contains(QStringLiteral("Program finished !"))) << out.toStdString();
+    EXPECT_EQ(err, QStringLiteral("trilho-cli run: cannot write trace '%1': the program reading it "
+                                  "closed the pipe\n")
+                       .arg(fifo));
+    EXPECT_TRUE(QByteArray(buf, 16) == QByteArray("t_s,block_n,setp"));
+}
+
+TEST_F(CliTrace, TheSidecarRecordsTheRunAndHowItEnded) {
+    const QString trace = dir.filePath(QStringLiteral("doc.csv"));
+    const CliResult ok = runCli({QStringLiteral("run"), QStringLiteral("--virtual-time"),
+                                 QStringLiteral("--trace"), trace, QStringLiteral("--mass-factor"),
+                                 QStringLiteral("2"), program("exemplo_documento.G")});
+    ASSERT_EQ(ok.exit, 0) << ok.err.toStdString();
+    const QJsonObject s = jsonFile(dir.filePath(QStringLiteral("doc.run.json")));
+    EXPECT_EQ(s.value(QStringLiteral("format")).toString(), QStringLiteral("trilho-run/1"));
+    EXPECT_EQ(s.value(QStringLiteral("machine")).toString(), QStringLiteral("rail"));
+    EXPECT_EQ(s.value(QStringLiteral("test")).toString(), program("exemplo_documento.G"));
+    const QByteArray csv = readAll(trace);
+    EXPECT_GT(csv.count('\n'), 800);
+    EXPECT_EQ(s.value(QStringLiteral("rows")).toDouble(), double(csv.count('\n') - 1));
+    EXPECT_EQ(s.value(QStringLiteral("mass_factor")).toDouble(), 2.0);
+    EXPECT_EQ(s.value(QStringLiteral("period_s")).toDouble(), 0.001);
+    EXPECT_EQ(s.value(QStringLiteral("abort_reason")).toString(), QString());
+    // The profile recorded is the one loaded: the mass factor is recorded on its own.
+    EXPECT_EQ(s.value(QStringLiteral("profile"))
+                  .toObject()
+                  .value(QStringLiteral("plant"))
+                  .toObject()
+                  .value(QStringLiteral("massFactor"))
+                  .toDouble(1.0),
+              1.0);
+
+    const QString alarm = dir.filePath(QStringLiteral("alarm.csv"));
+    const CliResult a = runCli({QStringLiteral("run"), QStringLiteral("--virtual-time"),
+                                QStringLiteral("--trace"), alarm, QStringLiteral("--fault"),
+                                QStringLiteral("stuck-encoder@1"), program("ciclo_continuo.G")});
+    ASSERT_EQ(a.exit, 3);
+    const QString reason = jsonFile(dir.filePath(QStringLiteral("alarm.run.json")))
+                               .value(QStringLiteral("abort_reason"))
+                               .toString();
+    EXPECT_TRUE(reason.startsWith(QStringLiteral("the run ended in an alarm: Alarm ")))
+        << reason.toStdString();
+
+    const CliResult limit = runCli(
+        {QStringLiteral("run"), QStringLiteral("--virtual-time"), QStringLiteral("--trace"), alarm,
+         QStringLiteral("--max-seconds"), QStringLiteral("2"), program("ciclo_continuo.G")});
+    ASSERT_EQ(limit.exit, 4);
+    EXPECT_EQ(jsonFile(dir.filePath(QStringLiteral("alarm.run.json")))
+                  .value(QStringLiteral("abort_reason"))
+                  .toString(),
+              QStringLiteral("stopped by --max-seconds 2 before the program's end"));
+}
+
+TEST_F(CliTrace, MetricsOfARunThatEndedInAnAlarmSaySoAndExitThree) {
+    const QString trace = dir.filePath(QStringLiteral("alarm.csv"));
+    ASSERT_EQ(
+        runCli({QStringLiteral("run"), QStringLiteral("--virtual-time"), QStringLiteral("--trace"),
+                trace, QStringLiteral("--fault"), QStringLiteral("stuck-encoder@0.5"),
+                trilho::test::writeIn(dir, QStringLiteral("m.G"), "N10 G1 X200 F50\nN20 M2\n")})
+            .exit,
+        3);
+    const CliResult text = runCli({QStringLiteral("tune"), QStringLiteral("metrics"), trace});
+    EXPECT_EQ(text.exit, 3) << text.err.toStdString();
+    EXPECT_TRUE(text.out.contains(QStringLiteral("ABORTED: the run ended in an alarm: Alarm ")))
+        << text.out.toStdString();
+    EXPECT_TRUE(text.out.contains(QStringLiteral("rise time 10-90 %")));  // still measured
+    const CliResult j = runCli(
+        {QStringLiteral("tune"), QStringLiteral("metrics"), trace, QStringLiteral("--json")});
+    EXPECT_EQ(j.exit, 3);
+    const QJsonObject o = QJsonDocument::fromJson(j.out.toUtf8()).object();
+    EXPECT_FALSE(o.value(QStringLiteral("ok")).toBool(true));
+    EXPECT_TRUE(o.value(QStringLiteral("aborted")).toBool());
+    EXPECT_FALSE(o.value(QStringLiteral("truncated")).toBool(true));
+    // The same trace without its sidecar is a bare trace: nothing says it ended in an alarm.
+    ASSERT_TRUE(QFile::remove(dir.filePath(QStringLiteral("alarm.run.json"))));
+    EXPECT_EQ(runCli({QStringLiteral("tune"), QStringLiteral("metrics"), trace}).exit, 0);
+}
+
+TEST_F(CliTrace, MetricsOfATruncatedTraceSaySoAndExitThree) {
+    const QString trace = dir.filePath(QStringLiteral("doc.csv"));
+    ASSERT_EQ(runCli({QStringLiteral("run"), QStringLiteral("--virtual-time"),
+                      QStringLiteral("--trace"), trace, program("exemplo_documento.G")})
+                  .exit,
+              0);
+    const CliResult whole = runCli({QStringLiteral("tune"), QStringLiteral("metrics"), trace});
+    ASSERT_EQ(whole.exit, 0) << whole.err.toStdString();
+    EXPECT_FALSE(whole.out.contains(QStringLiteral("TRUNCATED")));
+    const QByteArray bytes = readAll(trace);
+    auto rewrite = [&](const QByteArray& b) {
+        QFile f(trace);
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        ASSERT_EQ(f.write(b), b.size());
+    };
+    // Cut mid-row (a writer killed): the last row has no end of line.
+    rewrite(bytes.left(bytes.size() - 7));
+    const CliResult cut = runCli({QStringLiteral("tune"), QStringLiteral("metrics"), trace});
+    EXPECT_EQ(cut.exit, 3) << cut.err.toStdString();
+    EXPECT_TRUE(cut.out.contains(QStringLiteral("TRUNCATED: its last row has no end of line")))
+        << cut.out.toStdString();
+    // One tick fewer measured than the whole trace: the cut row is left out.
+    const qsizetype n = whole.out.indexOf(QStringLiteral(" ticks\n"));
+    const int wholeTicks = whole.out
+                               .mid(whole.out.lastIndexOf(QLatin1Char(' '), n - 1) + 1,
+                                    n - whole.out.lastIndexOf(QLatin1Char(' '), n - 1) - 1)
+                               .toInt();
+    EXPECT_GT(wholeTicks, 800);
+    EXPECT_TRUE(cut.out.contains(QStringLiteral(": %1 ticks\n").arg(wholeTicks - 1)))
+        << cut.out.toStdString();
+    // Cut between rows: whole rows, but fewer than the sidecar counts.
+    const qsizetype at = bytes.lastIndexOf('\n', bytes.size() - 2) + 1;  // the last row off
+    rewrite(bytes.left(at));
+    const CliResult j = runCli(
+        {QStringLiteral("tune"), QStringLiteral("metrics"), trace, QStringLiteral("--json")});
+    EXPECT_EQ(j.exit, 3);
+    const QJsonObject o = QJsonDocument::fromJson(j.out.toUtf8()).object();
+    EXPECT_TRUE(o.value(QStringLiteral("truncated")).toBool());
+    EXPECT_EQ(o.value(QStringLiteral("truncation")).toString(),
+              QStringLiteral("868 rows of the 869 its sidecar counts"));
+    EXPECT_EQ(o.value(QStringLiteral("rows")).toDouble(), 868.0);
+    EXPECT_FALSE(o.value(QStringLiteral("ok")).toBool(true));
+}
+
+}  // namespace
