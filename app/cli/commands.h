@@ -12,6 +12,8 @@ int latencyCommand(const QStringList& args);
 int serveCommand(const QStringList& args);
 /// tune identify | auto (tune_model_command.cpp); tune dispatches to them.
 int tuneModelCommand(const QStringList& args, bool autotune);
+/// tune margin (tune_margin_command.cpp): the plotter's speed and acceleration margin.
+int tuneMarginCommand(const QStringList& args);
 int tuneCommand(const QStringList& args);
 int calibrateCommand(const QStringList& args);
 

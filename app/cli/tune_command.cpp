@@ -31,6 +31,7 @@ const char* kTuneUsage =
     "            +-100 mm, back at its start within a count), judged on a held-out run\n"
     "  auto      identify, design the gains (SIMC), predict the verification moves on the\n"
     "            model, run them with the tuned gains, report prediction against measurement\n"
+    "  margin    the plotter's speed and acceleration margin against lost steps\n"
     "\n"
     "Run 'trilho-cli tune <subcommand> --help' for its options.\n";
 
@@ -475,9 +476,11 @@ int tuneCommand(const QStringList& args) {
     if (sub == QLatin1String("metrics")) return metricsCommand(rest);
     if (sub == QLatin1String("identify")) return tuneModelCommand(rest, false);
     if (sub == QLatin1String("auto")) return tuneModelCommand(rest, true);
+    if (sub == QLatin1String("margin")) return tuneMarginCommand(rest);
     return usageError(
         "tune",
-        QStringLiteral("unknown subcommand '%1' (step, metrics, identify or auto)").arg(sub));
+        QStringLiteral("unknown subcommand '%1' (step, metrics, identify, auto or margin)")
+            .arg(sub));
 }
 
 }  // namespace trilho::cli
