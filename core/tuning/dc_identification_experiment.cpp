@@ -25,6 +25,9 @@ constexpr Segment kFitPart[] = {{30.0, 0.2}, {0.0, 0.15}, {-30.0, 0.2}, {0.0, 0.
 // The part held out: other amplitudes and a direct reversal (20 % to -15 %: net 32 %), ending
 // at rest. 0.7 s.
 constexpr Segment kValidatePart[] = {{20.0, 0.15}, {-15.0, 0.25}, {12.0, 0.15}, {0.0, 0.15}};
+/// Room the experiment needs each side of its start, mm: its 21 mm of travel at the default
+/// motor and load, 30 % more for a faster motor, and the coast.
+constexpr double kRoomMm = 30.0;
 /// The return: a fifth of the rapid speed, the profile's own loop and acceleration.
 constexpr double kReturnSpeedFraction = 0.2;
 
@@ -51,6 +54,19 @@ IdentificationRecord runDcIdentificationExperiment(DcAxisRig& rig) {
         return std::copysign(100.0 * std::floor(std::abs(percent) * dutyMax / 100.0) / dutyMax,
                              percent);
     };
+    // The experiment travels about 21 mm each way from its start (the 30 % pulses): it starts
+    // only where that much room, and a margin for the coast, lies inside the soft limits.
+    if (rec.startMm - kRoomMm < travel.softMinMm || rec.startMm + kRoomMm > travel.softMaxMm) {
+        rec.error = QCoreApplication::translate(
+                        "trilho",
+                        "the experiment needs %1 mm each side of its start inside the soft "
+                        "limits [%2, %3] mm; the axis is at %4 mm")
+                        .arg(kRoomMm)
+                        .arg(travel.softMinMm)
+                        .arg(travel.softMaxMm)
+                        .arg(rec.startMm, 0, 'f', 2);
+        return rec;
+    }
     auto alarm = [&](const char* what) {
         rec.faulted = true;
         rec.error = QCoreApplication::translate("trilho", what)

@@ -6,7 +6,8 @@
 // start. Every change of drive keeps the net drive u - v/K far under the over-current trip
 // (45 % by default: at most 32 % at the reversals), so the experiment never raises an alarm.
 // It stays within +-100 mm of the start and inside the axis' soft limits, lasts under 3 s of
-// machine time, and ends within one count of where it began.
+// machine time, and ends within one count of where it began. It does not start (nothing
+// moves) closer than 30 mm to a soft limit.
 #include "core/tuning/dc_axis_rig.h"
 #include "core/tuning/identification_experiment.h"
 
