@@ -6,9 +6,11 @@
 // the test runs one axis through back-and-forth moves, each a trapezoid out and the same back
 // to its start, at rising figures, and detects the first that loses a step (in simulation the
 // true head is known: the steps it did not make, and where it stands after the return):
-//  - the speed sweep: the speed rising by 5 % a trial at the profile's acceleration;
+//  - the speed sweep: the speed rising by 5 % a trial (through the profile's own figure) at
+//    the profile's acceleration;
 //  - the acceleration sweep: the acceleration rising by 5 % a trial at the profile's rapid
-//    speed.
+//    speed;
+// each refined by bisection between the last trial with no loss and the first with one.
 // It reports the highest speed and acceleration with no lost step and the margin of the
 // profile's figures against them (limit / configured: above 1, room to spare).
 // Simulation only: the seed's board (xy.md A) reports neither its step count nor a sensor
@@ -43,7 +45,7 @@ struct MarginTrial {
 };
 
 struct MarginResult {
-    std::vector<MarginTrial> speedSweep;         ///< at the configured acceleration
+    std::vector<MarginTrial> speedSweep;         ///< at the configured acceleration, in order
     std::vector<MarginTrial> accelerationSweep;  ///< at the configured speed
     double configuredSpeedMmS = 0.0;             ///< motion.rapidSpeedMmS
     double configuredAccelerationMmS2 = 0.0;     ///< motion.accelerationMmS2

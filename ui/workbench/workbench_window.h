@@ -69,6 +69,12 @@ class WorkbenchWindow : public QMainWindow {
     void retranslate();
     void lawChanged();
     void setBusy(bool busy);
+    /// The rail and the DC table have a plant to identify; the plotter (no encoder) has not.
+    bool tunable() const { return profile_.kind != MachineKind::Plotter; }
+    void identifyTableAxis();
+    void autotuneTableAxis();
+    /// The middle of an axis' soft limits, mm: where `tune identify|auto` puts the table.
+    static double tableMiddle(const AxisTravel& t) { return 0.5 * (t.softMinMm + t.softMaxMm); }
     void addRun(StepTestResult result, const QString& label);
     void refreshRuns();
     void selectRun(int index);
