@@ -478,9 +478,8 @@ int tuneCommand(const QStringList& args) {
     if (sub == QLatin1String("auto")) return tuneModelCommand(rest, true);
     if (sub == QLatin1String("margin")) return tuneMarginCommand(rest);
     return usageError(
-        "tune",
-        QStringLiteral("unknown subcommand '%1' (step, metrics, identify, auto or margin)")
-            .arg(sub));
+        "tune", QStringLiteral("unknown subcommand '%1' (step, metrics, identify, auto or margin)")
+                    .arg(sub));
 }
 
 }  // namespace trilho::cli

@@ -103,18 +103,18 @@ int tuneDcTable(const TuneDcTableArgs& a) {
                             {QStringLiteral("kp_pct_per_mm"), d.gains.kp},
                             {QStringLiteral("ki_pct_per_mm_s"), d.gains.ki},
                             {QStringLiteral("kff_pct_per_mm_s"), d.gains.kff}};
-            o[QStringLiteral("design")] = QJsonObject{
-                {QStringLiteral("rule"),
-                 QStringLiteral("SIMC PI, integrating process with lag (half rule)")},
-                {QStringLiteral("closed_loop_time_constant_s"), d.tauC},
-                {QStringLiteral("delay_s"), d.thetaS},
-                {QStringLiteral("effective_delay_s"), d.thetaEffS},
-                {QStringLiteral("integral_time_s"), d.tauI},
-                {QStringLiteral("feed_forward_time_constant_s"), d.timeConstantS},
-                {QStringLiteral("feed_forward_coulomb_pct"), d.coulombPercent},
-                {QStringLiteral("acceleration_mm_s2"), d.accelerationMmS2},
-                {QStringLiteral("rapid_speed_mm_s"), d.rapidSpeedMmS},
-                {QStringLiteral("clamped"), d.note}};
+            o[QStringLiteral("design")] =
+                QJsonObject{{QStringLiteral("rule"),
+                             QStringLiteral("SIMC PI, integrating process with lag (half rule)")},
+                            {QStringLiteral("closed_loop_time_constant_s"), d.tauC},
+                            {QStringLiteral("delay_s"), d.thetaS},
+                            {QStringLiteral("effective_delay_s"), d.thetaEffS},
+                            {QStringLiteral("integral_time_s"), d.tauI},
+                            {QStringLiteral("feed_forward_time_constant_s"), d.timeConstantS},
+                            {QStringLiteral("feed_forward_coulomb_pct"), d.coulombPercent},
+                            {QStringLiteral("acceleration_mm_s2"), d.accelerationMmS2},
+                            {QStringLiteral("rapid_speed_mm_s"), d.rapidSpeedMmS},
+                            {QStringLiteral("clamped"), d.note}};
             o[QStringLiteral("frequency")] = frequencyJson(r.frequency);
             o[QStringLiteral("predicted")] =
                 QJsonObject{{QStringLiteral("step"), moveJson(r.predictedStep)},

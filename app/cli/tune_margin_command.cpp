@@ -19,27 +19,29 @@ namespace {
 QJsonArray trialsJson(const std::vector<MarginTrial>& trials) {
     QJsonArray a;
     for (const MarginTrial& t : trials)
-        a.append(QJsonObject{{QStringLiteral("speed_mm_s"), t.speedMmS},
-                             {QStringLiteral("acceleration_mm_s2"), t.accelerationMmS2},
-                             {QStringLiteral("lost_steps"), static_cast<double>(t.lostSteps)},
-                             {QStringLiteral("return_error_steps"),
-                              static_cast<double>(t.returnErrorSteps)},
-                             {QStringLiteral("ok"), t.ok()}});
+        a.append(QJsonObject{
+            {QStringLiteral("speed_mm_s"), t.speedMmS},
+            {QStringLiteral("acceleration_mm_s2"), t.accelerationMmS2},
+            {QStringLiteral("lost_steps"), static_cast<double>(t.lostSteps)},
+            {QStringLiteral("return_error_steps"), static_cast<double>(t.returnErrorSteps)},
+            {QStringLiteral("ok"), t.ok()}});
     return a;
 }
 
 QString limitText(const char* what, double max, bool found, double configured, double margin,
                   const char* unit) {
-    return found ? QStringLiteral("%1: no lost step up to %2 %3; the profile's %4 %3 has a margin "
-                                  "of %5 (%6 %)\n")
+    return found ? QStringLiteral(
+                       "%1: no lost step up to %2 %3; the profile's %4 %3 has a margin "
+                       "of %5 (%6 %)\n")
                        .arg(QString::fromLatin1(what))
                        .arg(max, 0, 'f', 0)
                        .arg(QString::fromLatin1(unit))
                        .arg(configured, 0, 'f', 0)
                        .arg(margin, 0, 'f', 2)
                        .arg((margin - 1.0) * 100.0, 0, 'f', 0)
-                 : QStringLiteral("%1: no lost step in the whole sweep, up to %2 %3 (margin at "
-                                  "least %4)\n")
+                 : QStringLiteral(
+                       "%1: no lost step in the whole sweep, up to %2 %3 (margin at "
+                       "least %4)\n")
                        .arg(QString::fromLatin1(what))
                        .arg(max, 0, 'f', 0)
                        .arg(QString::fromLatin1(unit))
@@ -124,8 +126,9 @@ int tuneMarginCommand(const QStringList& args) {
         out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
         return kOk;
     }
-    QString text = QStringLiteral("%1, axis %2: %3 trials of %4 mm out and back, %5 s of machine "
-                                  "time (simulation only)\n")
+    QString text = QStringLiteral(
+                       "%1, axis %2: %3 trials of %4 mm out and back, %5 s of machine "
+                       "time (simulation only)\n")
                        .arg(spec.profile.name, axis)
                        .arg(r.speedSweep.size() + r.accelerationSweep.size())
                        .arg(spec.moveMm, 0, 'f', 0)

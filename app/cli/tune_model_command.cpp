@@ -101,9 +101,10 @@ int tuneRail(const QStringList& args, bool autotune) {
         QStringLiteral("machine"),
         QStringLiteral("Machine profile: a file, or the name of a shipped one (default: rail)."),
         QStringLiteral("PROFILE"));
-    const QCommandLineOption axisOpt(QStringLiteral("axis"),
-                                     QStringLiteral("The axis to tune: x or y (DC table; the rail has only x)."),
-                                     QStringLiteral("x|y"), QStringLiteral("x"));
+    const QCommandLineOption axisOpt(
+        QStringLiteral("axis"),
+        QStringLiteral("The axis to tune: x or y (DC table; the rail has only x)."),
+        QStringLiteral("x|y"), QStringLiteral("x"));
     const QCommandLineOption massOpt(
         QStringLiteral("mass-factor"),
         QStringLiteral("Multiply the simulated moving mass (the tuning is not told)."),

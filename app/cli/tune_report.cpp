@@ -36,15 +36,15 @@ QJsonObject frequencyJson(const FrequencyView& f) {
     QJsonArray bode;
     for (const BodePoint& b : f.openLoop)
         bode.append(QJsonArray{b.frequencyRadS, b.magnitudeDb, b.phaseDeg});
-    return QJsonObject{
-        {QStringLiteral("gain_margin_db"), m.hasGainMargin ? QJsonValue(m.gainMarginDb) : QJsonValue()},
-        {QStringLiteral("phase_crossover_rad_s"), m.phaseCrossoverRadS},
-        {QStringLiteral("phase_margin_deg"), m.phaseMarginDeg},
-        {QStringLiteral("gain_crossover_rad_s"), m.gainCrossoverRadS},
-        {QStringLiteral("bode_columns"),
-         QJsonArray{QStringLiteral("frequency_rad_s"), QStringLiteral("magnitude_db"),
-                    QStringLiteral("phase_deg")}},
-        {QStringLiteral("bode"), bode}};
+    return QJsonObject{{QStringLiteral("gain_margin_db"),
+                        m.hasGainMargin ? QJsonValue(m.gainMarginDb) : QJsonValue()},
+                       {QStringLiteral("phase_crossover_rad_s"), m.phaseCrossoverRadS},
+                       {QStringLiteral("phase_margin_deg"), m.phaseMarginDeg},
+                       {QStringLiteral("gain_crossover_rad_s"), m.gainCrossoverRadS},
+                       {QStringLiteral("bode_columns"),
+                        QJsonArray{QStringLiteral("frequency_rad_s"),
+                                   QStringLiteral("magnitude_db"), QStringLiteral("phase_deg")}},
+                       {QStringLiteral("bode"), bode}};
 }
 
 QString marginsText(const FrequencyView& f) {

@@ -36,8 +36,8 @@ Verification verify(DcAxisRig& rig, const DcAutotuneOptions& o) {
     if (v.step.faulted) return v;
     v.stepBack = runDcVerificationMove(rig, start);
     if (v.stepBack.faulted || !(o.longMoveMm > 0.0)) return v;
-    v.longMove = runDcVerificationMove(
-        rig, dcLongMoveTarget(start, t.softMinMm, t.softMaxMm, o.longMoveMm));
+    v.longMove =
+        runDcVerificationMove(rig, dcLongMoveTarget(start, t.softMinMm, t.softMaxMm, o.longMoveMm));
     if (v.longMove.faulted) return v;
     v.longBack = runDcVerificationMove(rig, start);
     return v;
@@ -81,14 +81,14 @@ DcAutotuneResult autotuneDcAxis(DcAxisRig& rig, const DcAutotuneOptions& options
         !(options.longMoveMm > 0.0) || (passed(measured.longMove) && passed(measured.longBack));
     if (!passed(measured.step) || !passed(measured.stepBack) || !longOk) {
         const DcTableMotion& m = rig.motion();
-        r.error = m.fault() != AlarmCode::None
-                      ? QCoreApplication::translate(
-                            "trilho",
-                            "a verification move with the tuned gains was stopped by an alarm: %1")
-                            .arg(xyAlarmText(m.fault(), m.faultValue()))
-                      : QCoreApplication::translate(
-                            "trilho",
-                            "a verification move with the tuned gains did not end in position");
+        r.error =
+            m.fault() != AlarmCode::None
+                ? QCoreApplication::translate(
+                      "trilho",
+                      "a verification move with the tuned gains was stopped by an alarm: %1")
+                      .arg(xyAlarmText(m.fault(), m.faultValue()))
+                : QCoreApplication::translate(
+                      "trilho", "a verification move with the tuned gains did not end in position");
         return r;
     }
     r.ok = true;

@@ -35,7 +35,8 @@ void stepDcAxisModel(const DcAxisModel& model, double percent, double dtS,
 double dcAccelerationLimitMmS2(const DcAxisModel& model, double clampPercent,
                                double overCurrentPercent) {
     const double drive = std::min(clampPercent, overCurrentPercent) - model.coulombPercent;
-    return std::max(0.0, model.speedGainMmSPerPercent * drive / std::max(model.timeConstantS, 1e-4));
+    return std::max(0.0,
+                    model.speedGainMmSPerPercent * drive / std::max(model.timeConstantS, 1e-4));
 }
 
 }  // namespace trilho

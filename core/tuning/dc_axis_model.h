@@ -25,8 +25,7 @@ struct DcAxisModelState {
 
 /// Advances the model by dtS seconds with the drive held at `percent` (signed PWM %), in Euler
 /// sub-steps of at most 0.25 ms (an eighth of the lightest load's 15 ms time constant).
-void stepDcAxisModel(const DcAxisModel& model, double percent, double dtS,
-                     DcAxisModelState& state);
+void stepDcAxisModel(const DcAxisModel& model, double percent, double dtS, DcAxisModelState& state);
 
 /// The largest acceleration the drive may ask from rest without tripping the over-current
 /// comparator (or passing the PWM clamp), less friction, mm/s2: K (min(clamp, trip) - c) / tau.

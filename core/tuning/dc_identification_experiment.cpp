@@ -85,13 +85,15 @@ IdentificationRecord runDcIdentificationExperiment(DcAxisRig& rig) {
                 const double tickTime = rig.elapsedS() - begin;
                 rig.tick();
                 if (rig.motion().fault() != AlarmCode::None) {
-                    alarm(QT_TRANSLATE_NOOP("trilho", "the experiment was stopped by an alarm: %1"));
+                    alarm(
+                        QT_TRANSLATE_NOOP("trilho", "the experiment was stopped by an alarm: %1"));
                     return false;
                 }
                 const XySample s = rig.motion().sample();
                 const XyAxisSample& a = axis == 0 ? s.x : s.y;
                 out.push_back({tickTime, a.positionMm, applied(a.drive)});
-                rec.maxExcursionMm = std::max(rec.maxExcursionMm, std::abs(a.positionMm - rec.startMm));
+                rec.maxExcursionMm =
+                    std::max(rec.maxExcursionMm, std::abs(a.positionMm - rec.startMm));
                 if (a.positionMm < low || a.positionMm > high) {
                     rec.error = QCoreApplication::translate(
                         "trilho", "the axis left the experiment's +-100 mm or its soft limits");
@@ -125,10 +127,10 @@ IdentificationRecord runDcIdentificationExperiment(DcAxisRig& rig) {
     rec.endMm = rig.positionMm();
     rec.experimentTimeS = rig.elapsedS() - t0;
     if (ok && std::abs(rec.endMm - rec.startMm) > countMm * (1.0 + 1e-6))
-        rec.error = QCoreApplication::translate(
-                        "trilho",
-                        "the axis did not come back within one count of its start (%1 mm away)")
-                        .arg(rec.endMm - rec.startMm, 0, 'f', 3);
+        rec.error =
+            QCoreApplication::translate(
+                "trilho", "the axis did not come back within one count of its start (%1 mm away)")
+                .arg(rec.endMm - rec.startMm, 0, 'f', 3);
     return rec;
 }
 

@@ -71,13 +71,12 @@ DcLoopDesign designDcAxisLoop(const DcAxisIdentification& id, const MachineProfi
     const DcAxisParams& other = axis == 0 ? profile.dcTable.y : profile.dcTable.x;
     const double otherTop = other.noLoadSpeedMmS / 100.0 * (clamp - other.coulombPercent);
     const double otherAtSpeed = (otherTop - d.rapidSpeedMmS) / other.timeConstantS;
-    const double wanted = o.accelerationShare *
-                          std::min({atSpeed, otherAtSpeed, id.accelerationLimitMmS2});
-    d.accelerationMmS2 = held("motion.accelerationMmS2", wanted,
-                              rangeLo("motion.accelerationMmS2", 100.0),
-                              std::min(profile.motion.maxDecelerationMmS2,
-                                       rangeHi("motion.accelerationMmS2", 3000.0)),
-                              d);
+    const double wanted =
+        o.accelerationShare * std::min({atSpeed, otherAtSpeed, id.accelerationLimitMmS2});
+    d.accelerationMmS2 = held(
+        "motion.accelerationMmS2", wanted, rangeLo("motion.accelerationMmS2", 100.0),
+        std::min(profile.motion.maxDecelerationMmS2, rangeHi("motion.accelerationMmS2", 3000.0)),
+        d);
     return d;
 }
 

@@ -35,13 +35,13 @@ struct DcLoopDesign {
     DcEngineeredGains gains;  ///< kp %/mm, ki %/(mm.s), kff %/(mm/s)
     double kc = 0.0;          ///< SIMC proportional gain, %/mm
     double tauI = 0.0, thetaS = 0.0, thetaEffS = 0.0, tauC = 0.0;  ///< s
-    double speedGainMmSPerPercent = 0.0;  ///< identified K, mm/s per %
-    double timeConstantS = 0.0;      ///< the feed-forward's lag (identified), s
-    double coulombPercent = 0.0;     ///< the feed-forward's friction (identified), %
-    double accelerationMmS2 = 0.0;   ///< planning acceleration
-    double rapidSpeedMmS = 0.0;      ///< the profile's, or lowered (see the header)
-    bool clamped = false;            ///< a figure was held to the profile's allowed range
-    QString note;                    ///< which figure, if clamped
+    double speedGainMmSPerPercent = 0.0;                           ///< identified K, mm/s per %
+    double timeConstantS = 0.0;     ///< the feed-forward's lag (identified), s
+    double coulombPercent = 0.0;    ///< the feed-forward's friction (identified), %
+    double accelerationMmS2 = 0.0;  ///< planning acceleration
+    double rapidSpeedMmS = 0.0;     ///< the profile's, or lowered (see the header)
+    bool clamped = false;           ///< a figure was held to the profile's allowed range
+    QString note;                   ///< which figure, if clamped
 };
 
 DcLoopDesign designDcAxisLoop(const DcAxisIdentification& id, const MachineProfile& profile,

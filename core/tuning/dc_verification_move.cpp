@@ -19,12 +19,9 @@ MoveResult runDcVerificationMove(DcAxisRig& rig, double targetMm, double timeout
             rig.tick();
             const XySample s = motion.sample();
             const XyAxisSample& x = axis == 0 ? s.x : s.y;
-            return MoveTick{rig.elapsedS() - t0,
-                            motion.fault() != AlarmCode::None,
-                            ServoFault::None,
-                            x.positionMm,
-                            x.setpointMm - x.positionMm,
-                            !motion.busy()};
+            return MoveTick{
+                rig.elapsedS() - t0, motion.fault() != AlarmCode::None, ServoFault::None,
+                x.positionMm,        x.setpointMm - x.positionMm,       !motion.busy()};
         });
     r.machineTimeS = rig.elapsedS() - t0;
     return r;

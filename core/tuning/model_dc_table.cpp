@@ -30,7 +30,8 @@ void ModelDcTable::writePwm(int axis, std::uint16_t duty, bool reverse) {
 
 std::uint16_t ModelDcTable::readEncoder(int axis) {
     const auto k = axis == 0 ? 0u : 1u;
-    const auto count = static_cast<std::int64_t>(std::floor(states_[k].positionMm / mmPerCount_[k]));
+    const auto count =
+        static_cast<std::int64_t>(std::floor(states_[k].positionMm / mmPerCount_[k]));
     return static_cast<std::uint16_t>(static_cast<std::uint64_t>(count) & 0xffffu);
 }
 

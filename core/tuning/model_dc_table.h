@@ -16,8 +16,8 @@ namespace trilho {
 
 class ModelDcTable final : public DcTableIo {
   public:
-    ModelDcTable(const MachineProfile& profile, int axis, const DcAxisModel& model,
-                 double startXMm, double startYMm);
+    ModelDcTable(const MachineProfile& profile, int axis, const DcAxisModel& model, double startXMm,
+                 double startYMm);
 
     void writePwm(int axis, std::uint16_t duty, bool reverse) override;
     std::uint16_t readEncoder(int axis) override;
@@ -37,8 +37,8 @@ class ModelDcTable final : public DcTableIo {
 class ModelDcRig final : public DcAxisRig {
   public:
     /// The table at rest at (startXMm, startYMm), the motion holding there.
-    ModelDcRig(const MachineProfile& profile, int axis, const DcAxisModel& model,
-               double startXMm, double startYMm);
+    ModelDcRig(const MachineProfile& profile, int axis, const DcAxisModel& model, double startXMm,
+               double startYMm);
     DcTableMotion& motion() override { return *motion_; }
     int axis() const override { return axis_; }
     const MachineProfile& profile() const override { return profile_; }

@@ -54,12 +54,12 @@ MoveResult runVerificationMove(RailRig& rig, double targetMm, double timeoutS, d
     const double t0 = rig.elapsedS();
     servo.moveTo(targetMm, 1.0, false);
     MoveResult r = recordVerificationMove(
-        startMm, targetMm, servo.profile().plant.countsPerMm, rig.periodS(), timeoutS, holdS,
-        [&] {
+        startMm, targetMm, servo.profile().plant.countsPerMm, rig.periodS(), timeoutS, holdS, [&] {
             rig.tick();
             const ServoSample& s = servo.sample();
-            return MoveTick{rig.elapsedS() - t0,      s.mode == ServoMode::Fault, s.fault,
-                            s.positionMm,             s.errorMm,                  s.inPosition};
+            return MoveTick{
+                rig.elapsedS() - t0, s.mode == ServoMode::Fault, s.fault, s.positionMm, s.errorMm,
+                s.inPosition};
         });
     r.machineTimeS = rig.elapsedS() - t0;
     return r;

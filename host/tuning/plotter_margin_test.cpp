@@ -70,8 +70,8 @@ template <typename Run>
 std::pair<double, bool> sweep(const MarginTestSpec& spec, double configured,
                               std::vector<MarginTrial>& trials, Run run) {
     double best = 0.0;
-    const auto first = static_cast<int>(std::ceil(std::log(spec.fromFraction) /
-                                                  std::log(spec.ratio) - 1e-9));
+    const auto first =
+        static_cast<int>(std::ceil(std::log(spec.fromFraction) / std::log(spec.ratio) - 1e-9));
     for (int k = first;; ++k) {
         const double f = std::pow(spec.ratio, k);
         if (f > spec.toFraction * (1.0 + 1e-9)) return {best, false};
@@ -122,10 +122,9 @@ MarginResult runPlotterMarginTest(const MarginTestSpec& spec) {
     r.configuredSpeedMmS = spec.profile.motion.rapidSpeedMmS;
     r.configuredAccelerationMmS2 = spec.profile.motion.accelerationMmS2;
     double& time = r.machineTimeS;
-    const auto [speed, speedFound] =
-        sweep(spec, r.configuredSpeedMmS, r.speedSweep, [&](double v) {
-            return runTrial(spec, v, r.configuredAccelerationMmS2, time);
-        });
+    const auto [speed, speedFound] = sweep(spec, r.configuredSpeedMmS, r.speedSweep, [&](double v) {
+        return runTrial(spec, v, r.configuredAccelerationMmS2, time);
+    });
     const auto [accel, accelFound] =
         sweep(spec, r.configuredAccelerationMmS2, r.accelerationSweep,
               [&](double a) { return runTrial(spec, r.configuredSpeedMmS, a, time); });

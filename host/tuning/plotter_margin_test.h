@@ -26,20 +26,20 @@ namespace trilho {
 
 struct MarginTestSpec {
     MachineProfile profile = MachineProfile::xyPlotter();
-    char axis = 'x';           ///< 'x' or 'y'
-    double moveMm = 30.0;      ///< each move's length, out and back
-    double startMm = 0.0;      ///< 0: the middle of the axis
-    std::uint64_t seed = 1;    ///< the simulated plotter's randomness (its rate losses)
-    double fromFraction = 0.5; ///< the sweeps start at this fraction of the configured figure
-    double toFraction = 3.0;   ///< and stop (no loss found) above this one
-    double ratio = 1.05;       ///< each trial's figure over the last
+    char axis = 'x';            ///< 'x' or 'y'
+    double moveMm = 30.0;       ///< each move's length, out and back
+    double startMm = 0.0;       ///< 0: the middle of the axis
+    std::uint64_t seed = 1;     ///< the simulated plotter's randomness (its rate losses)
+    double fromFraction = 0.5;  ///< the sweeps start at this fraction of the configured figure
+    double toFraction = 3.0;    ///< and stop (no loss found) above this one
+    double ratio = 1.05;        ///< each trial's figure over the last
 };
 
 /// One back-and-forth move and what it did.
 struct MarginTrial {
     double speedMmS = 0.0;
     double accelerationMmS2 = 0.0;
-    std::uint64_t lostSteps = 0;    ///< pulses the motor did not follow (the simulation's truth)
+    std::uint64_t lostSteps = 0;  ///< pulses the motor did not follow (the simulation's truth)
     std::int64_t returnErrorSteps = 0;  ///< where the head stands after the return, from start
     bool ok() const { return lostSteps == 0 && returnErrorSteps == 0; }
 };
@@ -49,9 +49,9 @@ struct MarginResult {
     std::vector<MarginTrial> accelerationSweep;  ///< at the configured speed
     double configuredSpeedMmS = 0.0;             ///< motion.rapidSpeedMmS
     double configuredAccelerationMmS2 = 0.0;     ///< motion.accelerationMmS2
-    double maxSpeedMmS = 0.0;         ///< the highest speed with no lost step (0: none)
-    double maxAccelerationMmS2 = 0.0; ///< the highest acceleration with no lost step
-    bool speedLimitFound = false;     ///< a trial lost steps (else the limit is above the sweep)
+    double maxSpeedMmS = 0.0;                    ///< the highest speed with no lost step (0: none)
+    double maxAccelerationMmS2 = 0.0;            ///< the highest acceleration with no lost step
+    bool speedLimitFound = false;  ///< a trial lost steps (else the limit is above the sweep)
     bool accelerationLimitFound = false;
     double speedMargin = 0.0;         ///< maxSpeedMmS / configured
     double accelerationMargin = 0.0;  ///< maxAccelerationMmS2 / configured

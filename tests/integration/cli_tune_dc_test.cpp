@@ -23,9 +23,9 @@ QJsonObject jsonOf(const CliResult& r) {
 }
 
 QStringList table(const char* sub, const char* axis, QStringList more = {}) {
-    QStringList a{QStringLiteral("tune"),    QString::fromLatin1(sub),
+    QStringList a{QStringLiteral("tune"),      QString::fromLatin1(sub),
                   QStringLiteral("--machine"), QStringLiteral("xy_dc_table"),
-                  QStringLiteral("--axis"),  QString::fromLatin1(axis)};
+                  QStringLiteral("--axis"),    QString::fromLatin1(axis)};
     return a + more;
 }
 
@@ -50,8 +50,8 @@ TEST(CliTuneDcTable, IdentifyFindsEachAxisMotor) {
 TEST(CliTuneDcTable, AutoWritesAProfileThatRunTakes) {
     QTemporaryDir dir;
     const QString out = dir.filePath(QStringLiteral("tuned.json"));
-    const CliResult r =
-        runCli(table("auto", "x", {QStringLiteral("--json"), QStringLiteral("--write-profile"), out}));
+    const CliResult r = runCli(
+        table("auto", "x", {QStringLiteral("--json"), QStringLiteral("--write-profile"), out}));
     ASSERT_EQ(r.exit, 0) << r.err.toStdString() << r.out.toStdString();
     const QJsonObject o = jsonOf(r);
     for (const char* key : {"gains", "predicted", "measured", "identification", "frequency",
@@ -98,9 +98,9 @@ TEST(CliTuneDcTable, RefusalsAreUsageErrors) {
 }
 
 TEST(CliTuneMargin, ReportsTheLimitsAndTheMargins) {
-    const CliResult r = runCli({QStringLiteral("tune"), QStringLiteral("margin"),
-                                QStringLiteral("--machine"), QStringLiteral("xy_plotter"),
-                                QStringLiteral("--json")});
+    const CliResult r =
+        runCli({QStringLiteral("tune"), QStringLiteral("margin"), QStringLiteral("--machine"),
+                QStringLiteral("xy_plotter"), QStringLiteral("--json")});
     ASSERT_EQ(r.exit, 0) << r.err.toStdString();
     const QJsonObject o = jsonOf(r);
     EXPECT_TRUE(o[QStringLiteral("simulation_only")].toBool());

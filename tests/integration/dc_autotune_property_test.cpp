@@ -43,8 +43,8 @@ constexpr MassCase kMasses[] = {{0.5, 1.1, 0.20}, {1.0, 1.1, 0.40}};
 constexpr double kIdentifiedMasses[] = {0.5, 1.0, 3.0};
 
 /// The identification of one axis at one seed and mass against the figures.
-void checkIdentification(const DcAxisIdentification& id, const DcAxisParams& a,
-                         std::uint64_t seed, int axis, double massFactor) {
+void checkIdentification(const DcAxisIdentification& id, const DcAxisParams& a, std::uint64_t seed,
+                         int axis, double massFactor) {
     EXPECT_TRUE(id.accepted) << id.error.toStdString();
     EXPECT_LE(id.experimentTimeS, kIdentificationMaxTimeS);
     EXPECT_LE(id.maxExcursionMm, kIdentificationMaxExcursionMm);
@@ -138,8 +138,8 @@ void checkIdentifications(int seeds) {
         for (double mass : kIdentifiedMasses)
             for (int s = 1; s <= seeds; ++s) {
                 const auto seed = static_cast<std::uint64_t>(s);
-                SCOPED_TRACE(testing::Message() << "seed " << seed << " axis " << axis << " mass x"
-                                                << mass);
+                SCOPED_TRACE(testing::Message()
+                             << "seed " << seed << " axis " << axis << " mass x" << mass);
                 SimDcTableRig rig(profile, axis, seed, axis == 0 ? startFor(seed) : 150.0,
                                   axis == 1 ? startFor(seed) : 150.0, mass);
                 const IdentificationRecord rec = runDcIdentificationExperiment(rig);

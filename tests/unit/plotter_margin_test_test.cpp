@@ -41,7 +41,8 @@ TEST(PlotterMarginTest, FindsBothLimitsAndTheyAreWhereStepsAreLost) {
     EXPECT_DOUBLE_EQ(r.accelerationMargin, r.maxAccelerationMmS2 / r.configuredAccelerationMmS2);
     // The speed can never pass the pull-out rate (1000 steps/s and the simulation's 5 %).
     const double rateLimitMmS = spec.profile.plotter.maxStepRateHz *
-                                (1.0 + SimPlotter::kRateTolerance) * spec.profile.plotter.mmPerStepX;
+                                (1.0 + SimPlotter::kRateTolerance) *
+                                spec.profile.plotter.mmPerStepX;
     EXPECT_LT(r.maxSpeedMmS, rateLimitMmS);
     // Every trial up to the limit kept every step and came back; the first failing trial of
     // each sweep lost steps and says so in the head's true position or the lost count.

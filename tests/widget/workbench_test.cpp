@@ -279,8 +279,10 @@ class WorkbenchTest : public QObject {
         const QJsonObject predicted = tuned[QStringLiteral("predicted")].toObject();
         for (const QJsonObject& m : {measured, predicted})
             QVERIFY2(shows(text,
-                           m[QStringLiteral("step")].toObject()[QStringLiteral(
-                               "settling_time_1count_s")].toDouble() * 1e3,
+                           m[QStringLiteral("step")]
+                                   .toObject()[QStringLiteral("settling_time_1count_s")]
+                                   .toDouble() *
+                               1e3,
                            1),
                      qPrintable(text));
         QVERIFY(text.contains(QStringLiteral("Autotune passed")));

@@ -145,8 +145,8 @@ void ModelView::showAutotune(const AutotuneResult& r) {
 }
 
 QString ModelView::verificationHtml(const MoveResult& predictedStep, const MoveResult& measuredStep,
-                                   const MoveResult& predictedLong, const MoveResult& measuredLong,
-                                   double machineTimeS, bool ok, const QString& error) const {
+                                    const MoveResult& predictedLong, const MoveResult& measuredLong,
+                                    double machineTimeS, bool ok, const QString& error) const {
     QString h;
     auto row = [this](const QString& what, const MoveResult& p, const MoveResult& m) {
         return QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td><td>%5</td></tr>")
@@ -163,23 +163,23 @@ QString ModelView::verificationHtml(const MoveResult& predictedStep, const MoveR
                   tr("settling +-1 count predicted (ms)"), tr("measured"));
     h += row(tr("%1 mm step").arg(num(measuredStep.stepMm, 0)), predictedStep, measuredStep);
     if (measuredLong.stepMm != 0.0)
-        h += row(tr("%1 mm move").arg(num(measuredLong.stepMm, 0)), predictedLong,
-                 measuredLong);
+        h += row(tr("%1 mm move").arg(num(measuredLong.stepMm, 0)), predictedLong, measuredLong);
     h += QStringLiteral("</table>");
     h += QStringLiteral("<br>") +
          tr("Machine time of the whole autotune: %1 s").arg(num(machineTimeS, 2));
     h += QStringLiteral("<br>") + (ok ? tr("<b>Autotune passed</b>: the tuned gains are in the "
-                                             "step test's boxes; Save tuned profile... keeps "
-                                             "them in a profile.")
-                                        : QStringLiteral("<font color=\"#c00000\"><b>%1</b></font>")
-                                              .arg(tr("Autotune failed: %1").arg(error)));
+                                           "step test's boxes; Save tuned profile... keeps "
+                                           "them in a profile.")
+                                      : QStringLiteral("<font color=\"#c00000\"><b>%1</b></font>")
+                                            .arg(tr("Autotune failed: %1").arg(error)));
     return h;
 }
 
 QString ModelView::dcIdentificationHtml(const DcAxisIdentification& id) const {
     const DcAxisModel& m = id.model;
-    QString h = tr("<b>Identified model</b> (PWM-driven motor: G = K / (s (tau s + 1)), Coulomb "
-                   "friction)");
+    QString h =
+        tr("<b>Identified model</b> (PWM-driven motor: G = K / (s (tau s + 1)), Coulomb "
+           "friction)");
     h += QStringLiteral("<br>") +
          tr("speed gain K = %1 mm/s per PWM %").arg(num(m.speedGainMmSPerPercent, 3));
     h += QStringLiteral("<br>") + tr("time constant tau = %1 ms (inertia x%2 of the profile's)")
