@@ -7,7 +7,7 @@
 
 #include "core/tuning/levenberg_marquardt.h"
 #include "core/tuning/model_dc_table.h"
-#include "core/tuning/rail_identification.h"  // windowedVelocity, nrmseFitPct
+#include "core/tuning/rail_identification.h"  // windowedVelocity, nrmseFitPct, recordPositions
 
 namespace trilho {
 
@@ -30,14 +30,6 @@ std::vector<double> simulate(const DcAxisModel& m, const std::vector<Identificat
     return out;
 }
 
-std::vector<double> positions(const std::vector<IdentificationTick>& ticks) {
-    std::vector<double> out;
-    out.reserve(ticks.size());
-    for (const IdentificationTick& t : ticks)
-        out.push_back(t.positionMm);
-    return out;
-}
-
 }  // namespace
 
 DcAxisIdentification identifyDcAxis(const IdentificationRecord& rec, const MachineProfile& profile,
@@ -55,7 +47,7 @@ DcAxisIdentification identifyDcAxis(const IdentificationRecord& rec, const Machi
                        : rec.error;
         return id;
     }
-    const std::vector<double> yFit = windowedVelocity(positions(rec.fit), rec.periodS, w);
+    const std::vector<double> yFit = windowedVelocity(recordPositions(rec.fit), rec.periodS, w);
     const auto residuals = [&](const Eigen::VectorXd& p) {
         const std::vector<double> vm =
             windowedVelocity(simulate(fromVector(p), rec.fit, rec.periodS), rec.periodS, w);
@@ -81,10 +73,11 @@ DcAxisIdentification identifyDcAxis(const IdentificationRecord& rec, const Machi
                                                        params.overCurrentPercent);
     id.inertiaFactor = id.model.timeConstantS / params.timeConstantS;
 
-    const std::vector<double> yVal = windowedVelocity(positions(rec.validate), rec.periodS, w);
+    const std::vector<double> yVal =
+        windowedVelocity(recordPositions(rec.validate), rec.periodS, w);
     const std::vector<double> pVal = simulate(id.model, rec.validate, rec.periodS);
     id.fitVelocityPct = nrmseFitPct(yVal, windowedVelocity(pVal, rec.periodS, w));
-    id.fitPositionPct = nrmseFitPct(positions(rec.validate), pVal);
+    id.fitPositionPct = nrmseFitPct(recordPositions(rec.validate), pVal);
     id.fitVelocityTrainPct = nrmseFitPct(
         yFit, windowedVelocity(simulate(id.model, rec.fit, rec.periodS), rec.periodS, w));
 

@@ -36,19 +36,19 @@ std::vector<double> simulate(const RailModel& m, const std::vector<Identificatio
     return out;
 }
 
-std::vector<double> positions(const std::vector<IdentificationTick>& ticks) {
+int windowFor(double periodS) {
+    return std::max(1, static_cast<int>(std::lround(0.005 / periodS)));
+}
+
+}  // namespace
+
+std::vector<double> recordPositions(const std::vector<IdentificationTick>& ticks) {
     std::vector<double> out;
     out.reserve(ticks.size());
     for (const IdentificationTick& t : ticks)
         out.push_back(t.positionMm);
     return out;
 }
-
-int windowFor(double periodS) {
-    return std::max(1, static_cast<int>(std::lround(0.005 / periodS)));
-}
-
-}  // namespace
 
 std::vector<double> windowedVelocity(const std::vector<double>& p, double periodS, int w) {
     std::vector<double> v;
@@ -89,7 +89,7 @@ RailIdentification identifyRail(const IdentificationRecord& rec, const MachinePr
                        : rec.error;
         return id;
     }
-    const std::vector<double> yFit = windowedVelocity(positions(rec.fit), rec.periodS, w);
+    const std::vector<double> yFit = windowedVelocity(recordPositions(rec.fit), rec.periodS, w);
     const auto residuals = [&](const Eigen::Vector4d& p) {
         const std::vector<double> vm =
             windowedVelocity(simulate(fromVector(p), rec.fit, rec.periodS), rec.periodS, w);
@@ -113,10 +113,11 @@ RailIdentification identifyRail(const IdentificationRecord& rec, const MachinePr
     p = fit.parameters;
     id.model = fromVector(p);
 
-    const std::vector<double> yVal = windowedVelocity(positions(rec.validate), rec.periodS, w);
+    const std::vector<double> yVal =
+        windowedVelocity(recordPositions(rec.validate), rec.periodS, w);
     const std::vector<double> pVal = simulate(id.model, rec.validate, rec.periodS);
     id.fitVelocityPct = nrmseFitPct(yVal, windowedVelocity(pVal, rec.periodS, w));
-    id.fitPositionPct = nrmseFitPct(positions(rec.validate), pVal);
+    id.fitPositionPct = nrmseFitPct(recordPositions(rec.validate), pVal);
     id.fitVelocityTrainPct = nrmseFitPct(
         yFit, windowedVelocity(simulate(id.model, rec.fit, rec.periodS), rec.periodS, w));
     id.massKg = 1000.0 * peakForce / id.model.accelerationLimitMmS2;
