@@ -22,6 +22,8 @@ QJsonArray trialsJson(const std::vector<MarginTrial>& trials) {
         a.append(QJsonObject{
             {QStringLiteral("speed_mm_s"), t.speedMmS},
             {QStringLiteral("acceleration_mm_s2"), t.accelerationMmS2},
+            {QStringLiteral("move_mm"), t.moveMm},
+            {QStringLiteral("reached_speed"), t.reachedSpeed},
             {QStringLiteral("lost_steps"), static_cast<double>(t.lostSteps)},
             {QStringLiteral("return_error_steps"), static_cast<double>(t.returnErrorSteps)},
             {QStringLiteral("ok"), t.ok()}});
@@ -40,8 +42,8 @@ QString limitText(const char* what, double max, bool found, double configured, d
                        .arg(margin, 0, 'f', 2)
                        .arg((margin - 1.0) * 100.0, 0, 'f', 0)
                  : QStringLiteral(
-                       "%1: no lost step in the whole sweep, up to %2 %3 (margin at "
-                       "least %4)\n")
+                       "%1: no lost step in the whole sweep (or as far as the travel lets "
+                       "a move reach its speed), up to %2 %3 (margin at least %4)\n")
                        .arg(QString::fromLatin1(what))
                        .arg(max, 0, 'f', 0)
                        .arg(QString::fromLatin1(unit))
@@ -111,7 +113,7 @@ int tuneMarginCommand(const QStringList& args) {
             {QStringLiteral("axis"), axis},
             {QStringLiteral("seed"), QString::number(spec.seed)},
             {QStringLiteral("simulation_only"), true},
-            {QStringLiteral("move_mm"), spec.moveMm},
+            {QStringLiteral("min_move_mm"), spec.moveMm},
             {QStringLiteral("configured_speed_mm_s"), r.configuredSpeedMmS},
             {QStringLiteral("configured_acceleration_mm_s2"), r.configuredAccelerationMmS2},
             {QStringLiteral("max_speed_mm_s"), r.maxSpeedMmS},
@@ -127,8 +129,8 @@ int tuneMarginCommand(const QStringList& args) {
         return kOk;
     }
     QString text = QStringLiteral(
-                       "%1, axis %2: %3 trials of %4 mm out and back, %5 s of machine "
-                       "time (simulation only)\n")
+                       "%1, axis %2: %3 trials of at least %4 mm out and back, %5 s of "
+                       "machine time (simulation only)\n")
                        .arg(spec.profile.name, axis)
                        .arg(r.speedSweep.size() + r.accelerationSweep.size())
                        .arg(spec.moveMm, 0, 'f', 0)

@@ -42,9 +42,17 @@ MarginTrial runTrial(const MarginTestSpec& spec, double speedMmS, double accelMm
     plotter.placeAt(x ? start : 0.5 * (spec.profile.limits.x.softMaxMm),
                     x ? 0.5 * spec.profile.limits.y.softMaxMm : start);
     const std::int64_t from = x ? plotter.head().x : plotter.head().y;
-    const auto n = static_cast<std::int64_t>(std::llround(spec.moveMm / mmPerStep));
+    // Long enough that a fifth of the move cruises, within the room to the soft limit.
+    const double room = t.softMaxMm - start;
+    const double moveMm =
+        std::min(room, std::max(spec.moveMm, 1.2 * speedMmS * speedMmS / accelMmS2));
+    const auto n = static_cast<std::int64_t>(std::llround(moveMm / mmPerStep));
     const double v = speedMmS / mmPerStep, a = accelMmS2 / mmPerStep;
-    MarginTrial trial{speedMmS, accelMmS2, 0, 0};
+    MarginTrial trial;
+    trial.speedMmS = speedMmS;
+    trial.accelerationMmS2 = accelMmS2;
+    trial.moveMm = moveMm;
+    trial.reachedSpeed = static_cast<double>(n) >= v * v / a;
     for (bool positive : {true, false}) {
         plotter.setDirection(axis, positive);
         plotter.step(kDwellS);
@@ -77,6 +85,7 @@ std::pair<double, bool> sweep(const MarginTestSpec& spec, double configured,
         if (f > spec.toFraction * (1.0 + 1e-9)) return {best, false};
         const MarginTrial trial = run(configured * f);
         trials.push_back(trial);
+        if (!trial.reachedSpeed) return {best, false};  // the travel, not the motor, ends it
         if (trial.ok()) {
             best = configured * f;
             continue;

@@ -39,6 +39,9 @@ struct MarginTestSpec {
 struct MarginTrial {
     double speedMmS = 0.0;
     double accelerationMmS2 = 0.0;
+    double moveMm = 0.0;
+    /// The move reached its speed (else the travel, not the motor, ended the sweep).
+    bool reachedSpeed = true;
     std::uint64_t lostSteps = 0;  ///< pulses the motor did not follow (the simulation's truth)
     std::int64_t returnErrorSteps = 0;  ///< where the head stands after the return, from start
     bool ok() const { return lostSteps == 0 && returnErrorSteps == 0; }
