@@ -110,7 +110,7 @@ int tuneDcTable(const TuneDcTableArgs& a) {
                             {QStringLiteral("delay_s"), d.thetaS},
                             {QStringLiteral("effective_delay_s"), d.thetaEffS},
                             {QStringLiteral("integral_time_s"), d.tauI},
-                            {QStringLiteral("feed_forward_time_constant_s"), d.timeConstantS},
+                            {QStringLiteral("feed_forward_time_constant_s"), d.feedForwardLagS},
                             {QStringLiteral("feed_forward_coulomb_pct"), d.coulombPercent},
                             {QStringLiteral("acceleration_mm_s2"), d.accelerationMmS2},
                             {QStringLiteral("rapid_speed_mm_s"), d.rapidSpeedMmS},

@@ -55,6 +55,12 @@ DcLoopDesign designDcAxisLoop(const DcAxisIdentification& id, const MachineProfi
     d.gains.kff = held(kffKey, 1.0 / K, rangeLo(kffKey, 0.0), rangeHi(kffKey, 100.0), d);
     d.speedGainMmSPerPercent = K;
     d.timeConstantS = tau;
+    // The law computes its drive at the start of a period from the profile there and holds it
+    // for the period: the table follows half a period late, and the integral collects that lag
+    // over a move and spends it after (2 counts past a 10 mm step at x1, measured). Asking the
+    // acceleration feed-forward for tau + T/2 puts the drive half a period ahead (v(t + T/2)
+    // = v + (T/2) a): 0 to 1 count.
+    d.feedForwardLagS = tau + 0.5 * period;
     d.coulombPercent = m.coulombPercent;
 
     // The drive's headroom: at the rapid speed the feed-forward already asks v / K + c of the
@@ -85,7 +91,7 @@ MachineProfile tunedDcProfile(const MachineProfile& base, int axis, const DcLoop
     p.dcTable.law = DcLaw::Engineered;
     DcAxisParams& a = axis == 0 ? p.dcTable.x : p.dcTable.y;
     a.engineered = d.gains;
-    a.timeConstantS = d.timeConstantS;
+    a.timeConstantS = d.feedForwardLagS;
     a.coulombPercent = d.coulombPercent;
     a.noLoadSpeedMmS = 100.0 * d.speedGainMmSPerPercent;  // the encoder check's motor, too
     p.motion.accelerationMmS2 = d.accelerationMmS2;

@@ -2,9 +2,10 @@
 // The design of one DC table axis' loop from its identified model (issue 21 item 6). The
 // table's engineered law (core/control/dc_axis_loop.h) is feed-forward plus PI, no D:
 //   u = kff (v_cmd + tau a_cmd) + c sign(v_cmd) + kp e + ki integral(e)   (% PWM, e in mm)
-// - Feed-forward from the model: kff = 1 / K, tau and c the identified ones (written into the
-//   axis' timeConstantS and coulombPercent, which the law reads), so the feedback only sees
-//   what the model misses.
+// - Feed-forward from the model: kff = 1 / K, c the identified friction and tau + T/2 the lag
+//   (the identified lag and half a period of the PWM's hold: the table then follows the
+//   profile, not half a period behind it), written into the axis' timeConstantS and
+//   coulombPercent, which the law reads; the feedback only sees what the model misses.
 // - Feedback: SIMC (Skogestad 2003) PI on the integrator-plus-lag G = K e^(-theta s) /
 //   (s (tau s + 1)), the lag moved into the delay by SIMC's half rule (theta_eff = theta +
 //   tau / 2; no D to cancel it), theta = 1.5 periods (half a period of hold, one of reading):
@@ -36,7 +37,10 @@ struct DcLoopDesign {
     double kc = 0.0;          ///< SIMC proportional gain, %/mm
     double tauI = 0.0, thetaS = 0.0, thetaEffS = 0.0, tauC = 0.0;  ///< s
     double speedGainMmSPerPercent = 0.0;                           ///< identified K, mm/s per %
-    double timeConstantS = 0.0;     ///< the feed-forward's lag (identified), s
+    double timeConstantS = 0.0;                                    ///< identified tau, s
+    /// The feed-forward's lag, tau + half a period (the PWM is held a period), s: written as
+    /// the axis' timeConstantS, which the law's feed-forward reads.
+    double feedForwardLagS = 0.0;
     double coulombPercent = 0.0;    ///< the feed-forward's friction (identified), %
     double accelerationMmS2 = 0.0;  ///< planning acceleration
     double rapidSpeedMmS = 0.0;     ///< the profile's, or lowered (see the header)
@@ -47,10 +51,10 @@ struct DcLoopDesign {
 DcLoopDesign designDcAxisLoop(const DcAxisIdentification& id, const MachineProfile& profile,
                               int axis, const DcLoopDesignOptions& options = {});
 
-/// The profile with the design applied to the axis: engineered law, its gains, the identified
-/// motor figures the feed-forward reads, the planning acceleration (and rapid speed). The
-/// tuned profile thus describes the machine as identified, payload included: run it without
-/// --mass-factor.
+/// The profile with the design applied to the axis: engineered law, its gains, the motor
+/// figures the feed-forward reads (K, c identified; tau + T/2), the planning acceleration (and
+/// rapid speed). The tuned profile thus describes the machine as identified, payload included
+/// (its timeConstantS half a period longer than the motor's): run it without --mass-factor.
 MachineProfile tunedDcProfile(const MachineProfile& base, int axis, const DcLoopDesign& design);
 
 }  // namespace trilho
