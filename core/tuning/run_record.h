@@ -26,6 +26,13 @@ struct TuningGains {
 };
 
 /// What was run. axis: 0 on the rail, 'x' or 'y' on an XY table.
+/// A change of the loop's gains part-way through a step test (the rail's engineered law: the
+/// lesson of the bumpless gain change; `PositionLoop::setGains` keeps the drive continuous).
+struct GainChange {
+    double atS = 0.0;  ///< after the step's command, s
+    TuningGains gains;
+};
+
 struct RunConditions {
     MachineProfile profile;  ///< the machine's profile; massFactor multiplies its plant's mass
     char axis = 0;
@@ -44,7 +51,8 @@ struct RunConditions {
     double maxDurationS = 0.0;      ///< 0: automatic
     double envelopeMarginMm = 0.0;  ///< 0: automatic
     double countsPerMm = 22.8;
-    QString abortReason;  ///< empty when the test ran to its end
+    QString abortReason;                   ///< empty when the test ran to its end
+    std::optional<GainChange> gainChange;  ///< none: one set of gains throughout
 };
 
 /// Per tick, all the same length. Loop terms in DAC codes around 128 (rail) or PWM percent
