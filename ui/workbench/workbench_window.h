@@ -3,9 +3,9 @@
 // machine's simulated plant in virtual time, their metrics, an overlay of every run with a
 // table of metrics side by side, the P/I/D terms of a run tick by tick with the equation
 // substituted and "what if" re-simulation, and on the rail and each DC table axis
-// identification, autotune and the
-// Bode plot. Every figure comes from core/tuning and host/tuning, the same code
-// `trilho-cli tune` prints, so the screens and the CLI agree to the digit.
+// identification, autotune and the Bode plot. Every figure comes from core/tuning and
+// host/tuning, the same code `trilho-cli tune` prints, so the screens and the CLI agree to the
+// digit.
 #include <QMainWindow>
 #include <functional>
 #include <optional>
