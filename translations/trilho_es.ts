@@ -494,30 +494,6 @@
 <context>
     <name>trilho</name>
     <message>
-        <source>the servo refused the drive (a limit or an end switch)</source>
-        <translation>el servo rechazó el accionamiento (un límite o un final de carrera)</translation>
-    </message>
-    <message>
-        <source>the experiment was stopped by an alarm: %1</source>
-        <translation>el experimento fue detenido por una alarma: %1</translation>
-    </message>
-    <message>
-        <source>the platform left the experiment&apos;s +-100 mm</source>
-        <translation>la plataforma salió de los +-100 mm del experimento</translation>
-    </message>
-    <message>
-        <source>the return to the start was stopped by an alarm: %1</source>
-        <translation>el regreso al inicio fue detenido por una alarma: %1</translation>
-    </message>
-    <message>
-        <source>the platform did not come back within one count of its start (%1 mm away)</source>
-        <translation>la plataforma no volvió a menos de una cuenta de su inicio (quedó a %1 mm)</translation>
-    </message>
-    <message>
-        <source>%1 %2 held to %3</source>
-        <translation>%1 %2 limitado a %3</translation>
-    </message>
-    <message>
         <source>a verification move with the tuned gains was stopped by an alarm: %1</source>
         <translation>un movimiento de verificación con las ganancias sintonizadas fue detenido por una alarma: %1</translation>
     </message>
@@ -532,6 +508,46 @@
     <message>
         <source>the model fits the held-out run at %1 % on velocity, under %2 %</source>
         <translation>el modelo ajusta el ensayo de validación al %1 % en velocidad, por debajo del %2 %</translation>
+    </message>
+    <message>
+        <source>the experiment needs %1 mm each side of its start inside the soft limits [%2, %3] mm; the axis is at %4 mm</source>
+        <translation>el experimento necesita %1 mm a cada lado de su inicio dentro de los límites de software [%2, %3] mm; el eje está en %4 mm</translation>
+    </message>
+    <message>
+        <source>the table refused the drive (a limit, an alarm)</source>
+        <translation>la mesa rechazó el accionamiento (un límite, una alarma)</translation>
+    </message>
+    <message>
+        <source>the experiment was stopped by an alarm: %1</source>
+        <translation>el experimento fue detenido por una alarma: %1</translation>
+    </message>
+    <message>
+        <source>the axis left the experiment&apos;s +-100 mm or its soft limits</source>
+        <translation>el eje salió de los +-100 mm del experimento o de los límites de software</translation>
+    </message>
+    <message>
+        <source>the return to the start was stopped by an alarm: %1</source>
+        <translation>el regreso al inicio fue detenido por una alarma: %1</translation>
+    </message>
+    <message>
+        <source>the axis did not come back within one count of its start (%1 mm away)</source>
+        <translation>el eje no volvió a menos de una cuenta de su inicio (quedó a %1 mm)</translation>
+    </message>
+    <message>
+        <source>%1 %2 held to %3</source>
+        <translation>%1 %2 limitado a %3</translation>
+    </message>
+    <message>
+        <source>the servo refused the drive (a limit or an end switch)</source>
+        <translation>el servo rechazó el accionamiento (un límite o un final de carrera)</translation>
+    </message>
+    <message>
+        <source>the platform left the experiment&apos;s +-100 mm</source>
+        <translation>la plataforma salió de los +-100 mm del experimento</translation>
+    </message>
+    <message>
+        <source>the platform did not come back within one count of its start (%1 mm away)</source>
+        <translation>la plataforma no volvió a menos de una cuenta de su inicio (quedó a %1 mm)</translation>
     </message>
     <message>
         <source>the relay cycle left the experiment&apos;s +-100 mm</source>
@@ -1540,6 +1556,34 @@
         <translation>Autoajuste fallido: %1</translation>
     </message>
     <message>
+        <source>&lt;b&gt;Identified model&lt;/b&gt; (PWM-driven motor: G = K / (s (tau s + 1)), Coulomb friction)</source>
+        <translation>&lt;b&gt;Modelo identificado&lt;/b&gt; (motor accionado por PWM: G = K / (s (tau s + 1)), fricción de Coulomb)</translation>
+    </message>
+    <message>
+        <source>speed gain K = %1 mm/s per PWM %</source>
+        <translation>ganancia de velocidad K = %1 mm/s por % de PWM</translation>
+    </message>
+    <message>
+        <source>time constant tau = %1 ms (inertia x%2 of the profile&apos;s)</source>
+        <translation>constante de tiempo tau = %1 ms (inercia x%2 de la del perfil)</translation>
+    </message>
+    <message>
+        <source>Coulomb friction = %1 % PWM</source>
+        <translation>fricción de Coulomb = %1 % de PWM</translation>
+    </message>
+    <message>
+        <source>acceleration limit = %1 mm/s2 (the over-current trip)</source>
+        <translation>límite de aceleración = %1 mm/s2 (el disparo de sobrecorriente)</translation>
+    </message>
+    <message>
+        <source>Open loop with the profile&apos;s engineered gains (Kp %1, Ki %2, Kff %3):</source>
+        <translation>Lazo abierto con las ganancias de la ley de ingeniería del perfil (Kp %1, Ki %2, Kff %3):</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Design&lt;/b&gt; (SIMC PI, closed-loop time constant %1 ms, effective delay %2 ms): Kp %3, Ki %4, Kff %5; planning acceleration %6 mm/s2</source>
+        <translation>&lt;b&gt;Diseño&lt;/b&gt; (PI SIMC, constante de tiempo en lazo cerrado %1 ms, retardo efectivo %2 ms): Kp %3, Ki %4, Kff %5; aceleración de planificación %6 mm/s2</translation>
+    </message>
+    <message>
         <source>&lt;b&gt;Relay experiment&lt;/b&gt; (Astrom-Hagglund): a relay of +-%1 codes on the position error, hysteresis %2 counts</source>
         <translation>&lt;b&gt;Experimento del relé&lt;/b&gt; (Astrom-Hagglund): un relé de +-%1 códigos sobre el error de posición, histéresis de %2 cuentas</translation>
     </message>
@@ -2475,6 +2519,10 @@
     <message>
         <source>Identify, design (SIMC), predict, then verify with a 10 mm step and a 1000 mm move</source>
         <translation>Identifica, diseña (SIMC), predice y luego verifica con un escalón de 10 mm y un movimiento de 1000 mm</translation>
+    </message>
+    <message>
+        <source>Identify the axis, design (SIMC PI), predict, then verify with a 10 mm step and a 100 mm move</source>
+        <translation>Identificar el eje, diseñar (PI SIMC), predecir y luego verificar con un escalón de 10 mm y un movimiento de 100 mm</translation>
     </message>
     <message>
         <source>Relay experiment (Ziegler-Nichols)</source>

@@ -494,30 +494,6 @@
 <context>
     <name>trilho</name>
     <message>
-        <source>the servo refused the drive (a limit or an end switch)</source>
-        <translation>o servo recusou o acionamento (um limite ou uma chave de fim de curso)</translation>
-    </message>
-    <message>
-        <source>the experiment was stopped by an alarm: %1</source>
-        <translation>o experimento foi parado por um alarme: %1</translation>
-    </message>
-    <message>
-        <source>the platform left the experiment&apos;s +-100 mm</source>
-        <translation>a plataforma saiu dos +-100 mm do experimento</translation>
-    </message>
-    <message>
-        <source>the return to the start was stopped by an alarm: %1</source>
-        <translation>o retorno ao início foi parado por um alarme: %1</translation>
-    </message>
-    <message>
-        <source>the platform did not come back within one count of its start (%1 mm away)</source>
-        <translation>a plataforma não voltou a menos de uma contagem do início (ficou a %1 mm)</translation>
-    </message>
-    <message>
-        <source>%1 %2 held to %3</source>
-        <translation>%1 %2 limitado a %3</translation>
-    </message>
-    <message>
         <source>a verification move with the tuned gains was stopped by an alarm: %1</source>
         <translation>um movimento de verificação com os ganhos sintonizados foi parado por um alarme: %1</translation>
     </message>
@@ -532,6 +508,46 @@
     <message>
         <source>the model fits the held-out run at %1 % on velocity, under %2 %</source>
         <translation>o modelo ajusta o ensaio de validação a %1 % na velocidade, abaixo de %2 %</translation>
+    </message>
+    <message>
+        <source>the experiment needs %1 mm each side of its start inside the soft limits [%2, %3] mm; the axis is at %4 mm</source>
+        <translation>o experimento precisa de %1 mm de cada lado do início dentro dos limites de software [%2, %3] mm; o eixo está em %4 mm</translation>
+    </message>
+    <message>
+        <source>the table refused the drive (a limit, an alarm)</source>
+        <translation>a mesa recusou o acionamento (um limite, um alarme)</translation>
+    </message>
+    <message>
+        <source>the experiment was stopped by an alarm: %1</source>
+        <translation>o experimento foi parado por um alarme: %1</translation>
+    </message>
+    <message>
+        <source>the axis left the experiment&apos;s +-100 mm or its soft limits</source>
+        <translation>o eixo saiu dos +-100 mm do experimento ou dos limites de software</translation>
+    </message>
+    <message>
+        <source>the return to the start was stopped by an alarm: %1</source>
+        <translation>o retorno ao início foi parado por um alarme: %1</translation>
+    </message>
+    <message>
+        <source>the axis did not come back within one count of its start (%1 mm away)</source>
+        <translation>o eixo não voltou a menos de uma contagem do início (ficou a %1 mm)</translation>
+    </message>
+    <message>
+        <source>%1 %2 held to %3</source>
+        <translation>%1 %2 limitado a %3</translation>
+    </message>
+    <message>
+        <source>the servo refused the drive (a limit or an end switch)</source>
+        <translation>o servo recusou o acionamento (um limite ou uma chave de fim de curso)</translation>
+    </message>
+    <message>
+        <source>the platform left the experiment&apos;s +-100 mm</source>
+        <translation>a plataforma saiu dos +-100 mm do experimento</translation>
+    </message>
+    <message>
+        <source>the platform did not come back within one count of its start (%1 mm away)</source>
+        <translation>a plataforma não voltou a menos de uma contagem do início (ficou a %1 mm)</translation>
     </message>
     <message>
         <source>the relay cycle left the experiment&apos;s +-100 mm</source>
@@ -1540,6 +1556,34 @@
         <translation>Sintonia automática falhou: %1</translation>
     </message>
     <message>
+        <source>&lt;b&gt;Identified model&lt;/b&gt; (PWM-driven motor: G = K / (s (tau s + 1)), Coulomb friction)</source>
+        <translation>&lt;b&gt;Modelo identificado&lt;/b&gt; (motor acionado por PWM: G = K / (s (tau s + 1)), atrito de Coulomb)</translation>
+    </message>
+    <message>
+        <source>speed gain K = %1 mm/s per PWM %</source>
+        <translation>ganho de velocidade K = %1 mm/s por % de PWM</translation>
+    </message>
+    <message>
+        <source>time constant tau = %1 ms (inertia x%2 of the profile&apos;s)</source>
+        <translation>constante de tempo tau = %1 ms (inércia x%2 da do perfil)</translation>
+    </message>
+    <message>
+        <source>Coulomb friction = %1 % PWM</source>
+        <translation>atrito de Coulomb = %1 % de PWM</translation>
+    </message>
+    <message>
+        <source>acceleration limit = %1 mm/s2 (the over-current trip)</source>
+        <translation>limite de aceleração = %1 mm/s2 (o disparo de sobrecorrente)</translation>
+    </message>
+    <message>
+        <source>Open loop with the profile&apos;s engineered gains (Kp %1, Ki %2, Kff %3):</source>
+        <translation>Malha aberta com os ganhos da lei de engenharia do perfil (Kp %1, Ki %2, Kff %3):</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Design&lt;/b&gt; (SIMC PI, closed-loop time constant %1 ms, effective delay %2 ms): Kp %3, Ki %4, Kff %5; planning acceleration %6 mm/s2</source>
+        <translation>&lt;b&gt;Projeto&lt;/b&gt; (PI SIMC, constante de tempo em malha fechada %1 ms, atraso efetivo %2 ms): Kp %3, Ki %4, Kff %5; aceleração de planejamento %6 mm/s2</translation>
+    </message>
+    <message>
         <source>&lt;b&gt;Relay experiment&lt;/b&gt; (Astrom-Hagglund): a relay of +-%1 codes on the position error, hysteresis %2 counts</source>
         <translation>&lt;b&gt;Experimento do relé&lt;/b&gt; (Astrom-Hagglund): um relé de +-%1 códigos sobre o erro de posição, histerese de %2 contagens</translation>
     </message>
@@ -2475,6 +2519,10 @@
     <message>
         <source>Identify, design (SIMC), predict, then verify with a 10 mm step and a 1000 mm move</source>
         <translation>Identifica, projeta (SIMC), prevê e depois verifica com um degrau de 10 mm e um movimento de 1000 mm</translation>
+    </message>
+    <message>
+        <source>Identify the axis, design (SIMC PI), predict, then verify with a 10 mm step and a 100 mm move</source>
+        <translation>Identificar o eixo, projetar (PI SIMC), prever e então verificar com um degrau de 10 mm e um movimento de 100 mm</translation>
     </message>
     <message>
         <source>Relay experiment (Ziegler-Nichols)</source>

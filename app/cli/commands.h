@@ -14,6 +14,8 @@ int serveCommand(const QStringList& args);
 int tuneModelCommand(const QStringList& args, bool autotune);
 /// tune relay (tune_relay_command.cpp).
 int tuneRelayCommand(const QStringList& args);
+/// tune margin (tune_margin_command.cpp): the plotter's speed and acceleration margin.
+int tuneMarginCommand(const QStringList& args);
 int tuneCommand(const QStringList& args);
 int calibrateCommand(const QStringList& args);
 

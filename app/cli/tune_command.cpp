@@ -34,6 +34,7 @@ const char* kTuneUsage =
     "            model, run them with the tuned gains, report prediction against measurement\n"
     "  relay     the relay experiment (Astrom-Hagglund) and its Ziegler-Nichols gains, to\n"
     "            teach with, beside the model-based gains of 'auto'; both run the same step\n"
+    "  margin    the plotter's speed and acceleration margin against lost steps\n"
     "\n"
     "Run 'trilho-cli tune <subcommand> --help' for its options.\n";
 
@@ -178,9 +179,22 @@ int stepCommand(const QStringList& args) {
         QStringLiteral("FILE.csv"));
     const QCommandLineOption jsonOpt(QStringLiteral("json"),
                                      QStringLiteral("Print one JSON object."));
-    parser.addOptions({machineOpt, axisOpt, ampOpt, startOpt, lawOpt, kpOpt, kiOpt, kdOpt, kffOpt,
-                       b0Opt, b1Opt, periodOpt, massOpt, seedOpt, fracOpt, settleOpt, durationOpt,
-                       traceOpt, jsonOpt});
+    // The bumpless gain change (the rail's engineered law): new gains S seconds after the step.
+    const QCommandLineOption changeAtOpt(
+        QStringLiteral("change-at"),
+        QStringLiteral("Rail, engineered law: change the gains S seconds after the step "
+                       "(bumplessly) to --new-kp/--new-ki/--new-kd (unset: unchanged)."),
+        QStringLiteral("S"));
+    const QCommandLineOption newKpOpt(
+        QStringLiteral("new-kp"), QStringLiteral("Kp from --change-at on."), QStringLiteral("K"));
+    const QCommandLineOption newKiOpt(
+        QStringLiteral("new-ki"), QStringLiteral("Ki from --change-at on."), QStringLiteral("K"));
+    const QCommandLineOption newKdOpt(
+        QStringLiteral("new-kd"), QStringLiteral("Kd from --change-at on."), QStringLiteral("K"));
+    parser.addOptions({machineOpt, axisOpt,     ampOpt,   startOpt,  lawOpt,      kpOpt,
+                       kiOpt,      kdOpt,       kffOpt,   b0Opt,     b1Opt,       periodOpt,
+                       massOpt,    seedOpt,     fracOpt,  settleOpt, durationOpt, traceOpt,
+                       jsonOpt,    changeAtOpt, newKpOpt, newKiOpt,  newKdOpt});
     if (auto done = parseArguments(parser, args, "tune step")) return *done;
     auto usage = [](const QString& m) { return usageError("tune step", m); };
     if (!parser.positionalArguments().isEmpty())
@@ -195,7 +209,7 @@ int stepCommand(const QStringList& args) {
     if (spec.profile.kind == MachineKind::Plotter)
         return usage(QStringLiteral(
             "the plotter has no encoder to measure a step with; its speed and acceleration "
-            "margin test is not built yet"));
+            "margin test is `tune margin`"));
     if (parser.isSet(axisOpt)) {
         const QString a = parser.value(axisOpt);
         if (a != QLatin1String("x") && a != QLatin1String("y"))
@@ -266,6 +280,16 @@ int stepCommand(const QStringList& args) {
         anyGain = true;
     }
     if (anyGain) spec.gains = g;
+    if (parser.isSet(changeAtOpt)) {
+        GainChange change{0.0, g};
+        if (auto e = number(changeAtOpt, 0.0, 600.0, change.atS)) return *e;
+        if (auto e = number(newKpOpt, -1e6, 1e6, change.gains.kp)) return *e;
+        if (auto e = number(newKiOpt, -1e6, 1e6, change.gains.ki)) return *e;
+        if (auto e = number(newKdOpt, -1e6, 1e6, change.gains.kd)) return *e;
+        spec.gainChange = change;
+    } else if (parser.isSet(newKpOpt) || parser.isSet(newKiOpt) || parser.isSet(newKdOpt)) {
+        return usage(QStringLiteral("--new-kp, --new-ki and --new-kd need --change-at S"));
+    }
     if (parser.isSet(periodOpt)) {
         double p = 0.0;
         const double lo = table ? kMinTableSamplePeriodS : kMinSamplePeriodS;
@@ -513,9 +537,11 @@ int tuneCommand(const QStringList& args) {
     if (sub == QLatin1String("identify")) return tuneModelCommand(rest, false);
     if (sub == QLatin1String("auto")) return tuneModelCommand(rest, true);
     if (sub == QLatin1String("relay")) return tuneRelayCommand(rest);
+    if (sub == QLatin1String("margin")) return tuneMarginCommand(rest);
     return usageError(
-        "tune", QStringLiteral("unknown subcommand '%1' (step, metrics, identify, auto or relay)")
-                    .arg(sub));
+        "tune",
+        QStringLiteral("unknown subcommand '%1' (step, metrics, identify, auto, relay or margin)")
+            .arg(sub));
 }
 
 }  // namespace trilho::cli

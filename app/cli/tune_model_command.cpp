@@ -11,6 +11,8 @@
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
+#include "app/cli/tune_dc_table.h"
+#include "app/cli/tune_report.h"
 #include "core/machine/replace_target.h"
 #include "core/tuning/rail_autotune.h"
 #include "host/common/data_paths.h"
@@ -55,33 +57,6 @@ QJsonObject modelJson(const RailIdentification& id) {
     return o;
 }
 
-/// A number, or null when it was not reached (NaN: step_info's "never").
-QJsonValue number(double v) {
-    return std::isfinite(v) ? QJsonValue(v) : QJsonValue();
-}
-
-QJsonObject moveJson(const MoveResult& m) {
-    const StepMetrics& s = m.metrics;
-    QJsonObject o;
-    o[QStringLiteral("step_mm")] = m.stepMm;
-    o[QStringLiteral("rise_time_s")] = number(s.riseTimeS);
-    o[QStringLiteral("settling_time_s")] = number(s.settlingTimeS);
-    o[QStringLiteral("settling_time_1count_s")] = number(m.settlingTimeS);
-    o[QStringLiteral("overshoot_pct")] = m.overshootPct;
-    o[QStringLiteral("overshoot_counts")] = m.overshootCounts;
-    o[QStringLiteral("peak_mm")] = s.peakMm;
-    o[QStringLiteral("peak_time_s")] = s.peakTimeS;
-    o[QStringLiteral("in_position_time_s")] = m.inPositionTimeS;
-    o[QStringLiteral("steady_state_error_counts")] = m.finalErrorCounts;
-    o[QStringLiteral("iae")] = s.iae;
-    o[QStringLiteral("itae")] = s.itae;
-    o[QStringLiteral("ise")] = s.ise;
-    o[QStringLiteral("max_following_error_mm")] = m.maxFollowingErrorMm;
-    o[QStringLiteral("in_position")] = m.inPosition;
-    o[QStringLiteral("faulted")] = m.faulted;
-    return o;
-}
-
 QString modelText(const RailIdentification& id) {
     if (id.iterations == 0)  // stopped before there was anything to fit
         return QStringLiteral("experiment: %1 s, within %2 mm of its start; no model\n")
@@ -108,41 +83,28 @@ QString modelText(const RailIdentification& id) {
         .arg(id.fitVelocityTrainPct, 0, 'f', 1);
 }
 
-QString moveText(const char* name, const MoveResult& p, const MoveResult& m) {
-    return QStringLiteral(
-               "%1 (%2 mm): overshoot %3 / %4 counts, settling to 1 count %5 / %6 s, in position "
-               "%7 / %8 s, final error %9 / %10 counts (predicted / measured)\n")
-        .arg(QString::fromLatin1(name))
-        .arg(m.stepMm, 0, 'f', 1)
-        .arg(p.overshootCounts, 0, 'f', 0)
-        .arg(m.overshootCounts, 0, 'f', 0)
-        .arg(p.settlingTimeS, 0, 'f', 3)
-        .arg(m.settlingTimeS, 0, 'f', 3)
-        .arg(p.inPositionTimeS, 0, 'f', 3)
-        .arg(m.inPositionTimeS, 0, 'f', 3)
-        .arg(p.finalErrorCounts, 0, 'f', 0)
-        .arg(m.finalErrorCounts, 0, 'f', 0);
-}
-
 int tuneRail(const QStringList& args, bool autotune) {
     const char* name = autotune ? "tune auto" : "tune identify";
     QCommandLineParser parser;
     parser.setApplicationDescription(
-        autotune ? QStringLiteral("Identify the rail's model, design its gains (SIMC on the "
+        autotune ? QStringLiteral("Identify the plant's model, design its gains (SIMC on the "
                                   "identified integrator-plus-lag), predict and verify a 10 mm "
-                                  "step and a 1000 mm move. Simulated machine, virtual time; "
-                                  "the rail starts at rest at -500 mm.")
-                 : QStringLiteral("Identify the rail's model (speed gain, amplifier time "
-                                  "constant, acceleration limit, Coulomb friction) from a "
-                                  "bounded experiment. Simulated machine, virtual time; the "
-                                  "rail starts at rest at -500 mm."));
+                                  "step and a long move (rail 1000 mm, DC table axis 100 mm). "
+                                  "Simulated machine, virtual time; the rail starts at rest at "
+                                  "-500 mm, the DC table in the middle of its travel.")
+                 : QStringLiteral("Identify the plant's model (speed gain, time constant, "
+                                  "acceleration limit, Coulomb friction) from a bounded "
+                                  "experiment. Simulated machine, virtual time; the rail starts "
+                                  "at rest at -500 mm, the DC table in the middle of its "
+                                  "travel."));
     const QCommandLineOption machineOpt(
         QStringLiteral("machine"),
         QStringLiteral("Machine profile: a file, or the name of a shipped one (default: rail)."),
         QStringLiteral("PROFILE"));
-    const QCommandLineOption axisOpt(QStringLiteral("axis"),
-                                     QStringLiteral("The axis to tune: x (the rail has only x)."),
-                                     QStringLiteral("x|y"), QStringLiteral("x"));
+    const QCommandLineOption axisOpt(
+        QStringLiteral("axis"),
+        QStringLiteral("The axis to tune: x or y (DC table; the rail has only x)."),
+        QStringLiteral("x|y"), QStringLiteral("x"));
     const QCommandLineOption massOpt(
         QStringLiteral("mass-factor"),
         QStringLiteral("Multiply the simulated moving mass (the tuning is not told)."),
@@ -192,11 +154,11 @@ int tuneRail(const QStringList& args, bool autotune) {
     const ProfileLoad load = loadNamedMachineProfile(parser.value(machineOpt));
     if (!load.profile) return usage(load.error);
     const MachineProfile& profile = *load.profile;
-    if (profile.kind != MachineKind::Rail)
-        return usage(QStringLiteral("only the rail can be identified and tuned yet (the profile "
-                                    "'%1' is not a rail)")
+    if (profile.kind == MachineKind::Plotter)
+        return usage(QStringLiteral("the plotter has no encoder to identify it by (profile '%1'); "
+                                    "its test is `tune margin`")
                          .arg(profile.name));
-    if (axis == QLatin1String("y"))
+    if (profile.kind == MachineKind::Rail && axis == QLatin1String("y"))
         return usage(QStringLiteral("--axis y: the rail has only the x axis"));
     const bool json = parser.isSet(jsonOpt);
     QString outPath;
@@ -212,6 +174,11 @@ int tuneRail(const QStringList& args, bool autotune) {
             return usage(QStringLiteral("--write-profile: %1").arg(refused));
     }
 
+    if (profile.kind == MachineKind::DcTable && !parser.isSet(axisOpt))
+        return usage(QStringLiteral("the DC table needs an axis: --axis x or --axis y"));
+    if (profile.kind == MachineKind::DcTable)
+        return tuneDcTable({profile, axis == QLatin1String("y") ? 1 : 0, massFactor, seed,
+                            parser.isSet(jsonOpt), autotune, outPath});
     SimRailRig rig(profile, seed, kTuneStartMm, profile.plant.massFactor * massFactor);
     QJsonObject o;
     o[QStringLiteral("machine")] = profile.name;
@@ -254,20 +221,7 @@ int tuneRail(const QStringList& args, bool autotune) {
                 {QStringLiteral("acceleration_mm_s2"), d.accelerationMmS2},
                 {QStringLiteral("max_deceleration_mm_s2"), d.maxDecelerationMmS2},
                 {QStringLiteral("clamped"), d.note}};
-            const LoopMargins& m = r.frequency.margins;
-            QJsonArray bode;
-            for (const BodePoint& b : r.frequency.openLoop)
-                bode.append(QJsonArray{b.frequencyRadS, b.magnitudeDb, b.phaseDeg});
-            o[QStringLiteral("frequency")] = QJsonObject{
-                {QStringLiteral("gain_margin_db"),
-                 m.hasGainMargin ? QJsonValue(m.gainMarginDb) : QJsonValue()},
-                {QStringLiteral("phase_crossover_rad_s"), m.phaseCrossoverRadS},
-                {QStringLiteral("phase_margin_deg"), m.phaseMarginDeg},
-                {QStringLiteral("gain_crossover_rad_s"), m.gainCrossoverRadS},
-                {QStringLiteral("bode_columns"),
-                 QJsonArray{QStringLiteral("frequency_rad_s"), QStringLiteral("magnitude_db"),
-                            QStringLiteral("phase_deg")}},
-                {QStringLiteral("bode"), bode}};
+            o[QStringLiteral("frequency")] = frequencyJson(r.frequency);
             o[QStringLiteral("predicted")] =
                 QJsonObject{{QStringLiteral("step"), moveJson(r.predictedStep)},
                             {QStringLiteral("long_move"), moveJson(r.predictedLong)}};
@@ -281,11 +235,7 @@ int tuneRail(const QStringList& args, bool autotune) {
                         .arg(d.gains.ki, 0, 'f', 4)
                         .arg(d.gains.kd, 0, 'f', 5)
                         .arg(d.accelerationMmS2, 0, 'f', 0);
-            text += QStringLiteral("margins: gain %1 dB at %2 rad/s, phase %3 deg at %4 rad/s\n")
-                        .arg(m.gainMarginDb, 0, 'f', 1)
-                        .arg(m.phaseCrossoverRadS, 0, 'f', 1)
-                        .arg(m.phaseMarginDeg, 0, 'f', 1)
-                        .arg(m.gainCrossoverRadS, 0, 'f', 1);
+            text += marginsText(r.frequency);
             text += moveText("step", r.predictedStep, r.measuredStep);
             text += moveText("long move", r.predictedLong, r.measuredLong);
         }

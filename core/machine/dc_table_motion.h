@@ -44,6 +44,16 @@ class DcTableMotion final : public XyMotion {
     XyPoint commanded() const override { return commanded_; }
     XySample sample() const override { return sample_; }
 
+    /// Direct drive of one axis (identification, core/tuning/dc_identification_experiment): the
+    /// axis' loop is bypassed and `percent` (signed PWM %, held to the clamp) is written every
+    /// period until releaseDirect(); its setpoint follows the measurement (no following error),
+    /// while the other axis holds in its loop and the over-current and encoder checks stay in
+    /// force. Refused (false) while a move runs, after a fault, with the drives cut, under the
+    /// seed's law, or when the axis stands outside [lowMm, highMm] and the drive pushes further
+    /// out (the caller's soft limits).
+    bool setDirect(int axis, double percent, double lowMm, double highMm);
+    /// Back to the loop: the axis holds where it is now.
+    void releaseDirect();
     /// Measured position, mm (the centre of the encoder count).
     XyPoint measured() const { return {measuredMm_[0], measuredMm_[1]}; }
     /// The move's planned profile (tests check its timing against the seed's formula).
@@ -91,6 +101,8 @@ class DcTableMotion final : public XyMotion {
     AlarmCode fault_ = AlarmCode::None;
     double faultValue_ = 0.0;
     XySample sample_;
+    int directAxis_ = -1;  ///< the axis under setDirect(), -1 for none
+    double directPercent_ = 0.0;
 };
 
 }  // namespace trilho

@@ -5,11 +5,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/tuning/levenberg_marquardt.h"
+
 namespace trilho {
 
 namespace {
-
-constexpr int kParams = 4;  // K, tau, A, c
 
 RailModel fromVector(const Eigen::Vector4d& p) {
     return {p[0], p[1], p[2], p[3]};
@@ -36,19 +36,19 @@ std::vector<double> simulate(const RailModel& m, const std::vector<Identificatio
     return out;
 }
 
-std::vector<double> positions(const std::vector<IdentificationTick>& ticks) {
+int windowFor(double periodS) {
+    return std::max(1, static_cast<int>(std::lround(0.005 / periodS)));
+}
+
+}  // namespace
+
+std::vector<double> recordPositions(const std::vector<IdentificationTick>& ticks) {
     std::vector<double> out;
     out.reserve(ticks.size());
     for (const IdentificationTick& t : ticks)
         out.push_back(t.positionMm);
     return out;
 }
-
-int windowFor(double periodS) {
-    return std::max(1, static_cast<int>(std::lround(0.005 / periodS)));
-}
-
-}  // namespace
 
 std::vector<double> windowedVelocity(const std::vector<double>& p, double periodS, int w) {
     std::vector<double> v;
@@ -89,7 +89,7 @@ RailIdentification identifyRail(const IdentificationRecord& rec, const MachinePr
                        : rec.error;
         return id;
     }
-    const std::vector<double> yFit = windowedVelocity(positions(rec.fit), rec.periodS, w);
+    const std::vector<double> yFit = windowedVelocity(recordPositions(rec.fit), rec.periodS, w);
     const auto residuals = [&](const Eigen::Vector4d& p) {
         const std::vector<double> vm =
             windowedVelocity(simulate(fromVector(p), rec.fit, rec.periodS), rec.periodS, w);
@@ -106,46 +106,18 @@ RailIdentification identifyRail(const IdentificationRecord& rec, const MachinePr
     Eigen::Vector4d p(profile.plant.maxSpeedMmS() / 127.0, profile.plant.speedLoopTauS,
                       1000.0 * peakForce / nominalMass,
                       1000.0 * profile.plant.coulombFrictionN / nominalMass);
-    Eigen::VectorXd r = residuals(p);
-    double cost = r.squaredNorm();
-    double lambda = 1e-3;
-    for (int it = 0; it < 40; ++it) {
-        id.iterations = it + 1;
-        Eigen::MatrixXd J(r.size(), kParams);
-        for (int j = 0; j < kParams; ++j) {
-            Eigen::Vector4d q = p;
-            const double h = std::max(std::abs(p[j]) * 1e-4, 1e-6);
-            q[j] += h;
-            J.col(j) = (r - residuals(q)) / h;  // d(model)/dp = -dr/dp
-        }
-        const Eigen::Matrix4d JtJ = J.transpose() * J;
-        const Eigen::Vector4d Jtr = J.transpose() * r;
-        bool improved = false;
-        for (int tries = 0; tries < 10 && !improved; ++tries) {
-            Eigen::Matrix4d Aug = JtJ;
-            for (int j = 0; j < kParams; ++j)
-                Aug(j, j) += lambda * std::max(JtJ(j, j), 1e-12);
-            const Eigen::Vector4d step = Aug.ldlt().solve(Jtr);
-            const Eigen::Vector4d q = bounded(p + step);
-            const Eigen::VectorXd rq = residuals(q);
-            const double c = rq.squaredNorm();
-            if (c < cost) {
-                const double gain = (cost - c) / cost;
-                p = q, r = rq, cost = c, improved = true;
-                lambda = std::max(lambda * 0.3, 1e-9);
-                if (gain < 1e-9) it = 1000;  // converged
-            } else {
-                lambda *= 10.0;
-            }
-        }
-        if (!improved) break;
-    }
+    const LeastSquaresFit fit = fitLevenbergMarquardt(
+        p, [&](const Eigen::VectorXd& q) { return residuals(q); },
+        [](Eigen::VectorXd q) -> Eigen::VectorXd { return bounded(q); });
+    id.iterations = fit.iterations;
+    p = fit.parameters;
     id.model = fromVector(p);
 
-    const std::vector<double> yVal = windowedVelocity(positions(rec.validate), rec.periodS, w);
+    const std::vector<double> yVal =
+        windowedVelocity(recordPositions(rec.validate), rec.periodS, w);
     const std::vector<double> pVal = simulate(id.model, rec.validate, rec.periodS);
     id.fitVelocityPct = nrmseFitPct(yVal, windowedVelocity(pVal, rec.periodS, w));
-    id.fitPositionPct = nrmseFitPct(positions(rec.validate), pVal);
+    id.fitPositionPct = nrmseFitPct(recordPositions(rec.validate), pVal);
     id.fitVelocityTrainPct = nrmseFitPct(
         yFit, windowedVelocity(simulate(id.model, rec.fit, rec.periodS), rec.periodS, w));
     id.massKg = 1000.0 * peakForce / id.model.accelerationLimitMmS2;

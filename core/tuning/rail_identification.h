@@ -37,6 +37,8 @@ RailIdentification identifyRail(const IdentificationRecord& rec, const MachinePr
 /// +-windowTicks (10 ms at 1 ms: a count is 44 mm/s over one tick, 2.2 mm/s over this).
 std::vector<double> windowedVelocity(const std::vector<double>& positionsMm, double periodS,
                                      int windowTicks);
+/// The measured positions of a record's part, mm.
+std::vector<double> recordPositions(const std::vector<IdentificationTick>& ticks);
 /// MATLAB compare's NRMSE fit, %: 100 (1 - ||y - yhat|| / ||y - mean(y)||).
 double nrmseFitPct(const std::vector<double>& y, const std::vector<double>& yhat);
 

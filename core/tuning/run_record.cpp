@@ -152,6 +152,12 @@ QByteArray runConditionsToJson(const RunConditions& c, const StepMetrics* metric
     o[QStringLiteral("counts_per_mm")] = c.countsPerMm;
     o[QStringLiteral("abort_reason")] = c.abortReason;
     if (c.rows >= 0) o[QStringLiteral("rows")] = static_cast<double>(c.rows);
+    o[QStringLiteral("gain_change")] =
+        c.gainChange ? QJsonValue(QJsonObject{
+                           {QStringLiteral("at_s"), c.gainChange->atS},
+                           {QStringLiteral("gains"),
+                            tuningGainsToJson(c.gainChange->gains, c.profile.kind, c.law)}})
+                     : QJsonValue(QJsonValue::Null);
     o[QStringLiteral("profile")] =
         QJsonDocument::fromJson(machineProfileToJson(c.profile)).object();
     if (metrics) o[QStringLiteral("metrics")] = stepMetricsToJson(*metrics);
@@ -553,6 +559,28 @@ std::optional<RunConditions> runConditionsFromJson(const QByteArray& json, const
     else if (!rows.isUndefined())
         return bad(QStringLiteral("rows"),
                    QStringLiteral("must be a whole number from 0 to %1").arg(kMaxRunRows));
+    const QJsonValue change = o.value(QStringLiteral("gain_change"));
+    if (change.isObject()) {
+        const QJsonObject ch = change.toObject();
+        const QJsonValue at = ch.value(QStringLiteral("at_s"));
+        if (!at.isDouble() || !(at.toDouble() >= 0.0 && at.toDouble() <= 3600.0))
+            return bad(QStringLiteral("gain_change.at_s"),
+                       QStringLiteral("must be a number from 0 to 3600"));
+        GainChange gc;
+        gc.atS = at.toDouble();
+        const QJsonObject ng = ch.value(QStringLiteral("gains")).toObject();
+        for (const auto& [key, into] :
+             {std::pair{"kp", &gc.gains.kp}, {"ki", &gc.gains.ki}, {"kd", &gc.gains.kd}}) {
+            const QJsonValue v = ng.value(QLatin1String(key));
+            if (!v.isDouble() || !std::isfinite(v.toDouble()))
+                return bad(QStringLiteral("gain_change.gains.%1").arg(QLatin1String(key)),
+                           QStringLiteral("not a number"));
+            *into = v.toDouble();
+        }
+        c.gainChange = gc;
+    } else if (!change.isNull() && !change.isUndefined()) {
+        return bad(QStringLiteral("gain_change"), QStringLiteral("must be an object or null"));
+    }
     return c;
 }
 

@@ -26,6 +26,13 @@ struct TuningGains {
 };
 
 /// What was run. axis: 0 on the rail, 'x' or 'y' on an XY table.
+/// A change of the loop's gains part-way through a step test (the rail's engineered law: the
+/// lesson of the bumpless gain change; `PositionLoop::setGains` keeps the drive continuous).
+struct GainChange {
+    double atS = 0.0;  ///< after the step's command, s
+    TuningGains gains;
+};
+
 struct RunConditions {
     MachineProfile profile;  ///< the machine's profile; massFactor multiplies its plant's mass
     char axis = 0;
@@ -48,6 +55,7 @@ struct RunConditions {
     /// Data rows of the CSV as its writer finished it (-1: not recorded, an older sidecar): a
     /// CSV with fewer was cut short after it was written.
     long long rows = -1;
+    std::optional<GainChange> gainChange;  ///< none: one set of gains throughout
 };
 
 /// Per tick, all the same length. Loop terms in DAC codes around 128 (rail) or PWM percent

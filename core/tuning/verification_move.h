@@ -5,6 +5,8 @@
 // step (a commissioning engineer asks where the platform is against where it was sent, not
 // against the profile's moving setpoint): overshoot (counts and % of the step), settling to
 // +-1 count from the command, the servo's own in-position time and the final error.
+#include <functional>
+
 #include "core/tuning/rail_rig.h"
 #include "core/tuning/step_metrics.h"
 
@@ -24,6 +26,22 @@ struct MoveResult {
     ServoFault fault = ServoFault::None;
     StepMetrics metrics;  ///< the full step_info figures of the move against its target
 };
+
+/// One tick of a move as the recorder sees it, on any machine.
+struct MoveTick {
+    double timeS = 0.0;  ///< since the command, s
+    bool faulted = false;
+    ServoFault fault = ServoFault::None;  ///< the rail's; None on the DC table (faulted alone)
+    double positionMm = 0.0;
+    double followingErrorMm = 0.0;
+    bool inPosition = false;
+};
+
+/// Records a move already commanded from startMm to targetMm: tick() runs one period and says
+/// what it saw; until in position and holdS after, or timeoutS. Measures it against the target.
+MoveResult recordVerificationMove(double startMm, double targetMm, double countsPerMm,
+                                  double periodS, double timeoutS, double holdS,
+                                  const std::function<MoveTick()>& tick);
 
 /// Moves to target at the rapid speed, waits (at most timeoutS) for in position, then holds
 /// holdS more while measuring.

@@ -22,9 +22,35 @@ void SimPlotter::pulse(bool stepX, bool stepY) {
     if (moved && penTouching_) strokes_.back().points.push_back(head());
 }
 
+bool SimPlotter::beyondTorque(std::size_t i) {
+    const double t = timeS_;
+    const double last = lastPulseS_[i];
+    lastPulseS_[i] = t;
+    // A pause of more than 0.1 s (a tenth of the slowest rate used) is a start from rest.
+    if (last < 0.0 || t - last > 0.1 || !(t > last)) {
+        pulsesSinceRest_[i] = 1;
+        return false;
+    }
+    const double rate = 1.0 / (t - last);
+    const double mid = 0.5 * (t + last);
+    const double previousRate = lastIntervalRateHz_[i], previousMid = lastIntervalMidS_[i];
+    lastIntervalRateHz_[i] = rate, lastIntervalMidS_[i] = mid;
+    // The first interval from rest has no earlier rate to take a difference with.
+    if (++pulsesSinceRest_[i] < 3) return false;
+    const double accel = std::abs(rate - previousRate) / (mid - previousMid);  // steps/s2
+    const double mmPerStep = i == 0 ? params_.mmPerStepX : params_.mmPerStepY;
+    const double alpha0 = faults_.pullOutAccelerationG * 9810.0 / mmPerStep;  // steps/s2
+    const double available = alpha0 * (1.0 - 0.5 * (rate + previousRate) / pullOutRateHz());
+    return accel > available;
+}
+
 bool SimPlotter::stepAxis(std::size_t i) {
     ++pulses_[i];
     ++pulsesThisStep_[i];
+    if (faults_.torqueLimit && beyondTorque(i)) {
+        ++lost_[i];  // the rotor falls behind its field: the step is not made
+        return false;
+    }
     if (rateHz_[i] > pullOutRateHz() && faults_.lossProbability > 0.0) {
         std::uniform_real_distribution<double> u(0.0, 1.0);
         if (u(rng_) < faults_.lossProbability) {

@@ -26,6 +26,19 @@ struct PlotterFaults {
     double lossProbability = 0.5;
     /// The origin sensors never read (a cut cable): homing must give up with alarm 19.
     bool originSensorsDead = false;
+    /// The motor's torque limit on acceleration (the margin test, host/tuning/
+    /// plotter_margin_test): a pulse is lost when the acceleration its timing asks exceeds what
+    /// the torque left at that step rate gives, alpha_max(f) = alpha_0 (1 - f / f_pullout)
+    /// (the pull-out curve read as a straight line from alpha_0 at rest to nothing at the
+    /// pull-out rate). Off by default: the board's motion pulses at its tick boundaries and
+    /// starts without a ramp, whose jitter a per-pulse estimate reads as acceleration; the
+    /// margin test times each pulse exactly.
+    bool torqueLimit = false;
+    /// alpha_0, g (9.81 m/s2) of the head at rest. Chosen: the seed gives no motor data. A
+    /// TPP17 holds about 0.3 N.m; half of it as pull-out torque at low speed, 0.15 N.m, on the
+    /// rotor (5.4e-6 kg.m2) and a 0.4 kg head through the 40 mm-a-turn pulley (r 6.37 mm,
+    /// 1.6e-5 kg.m2) gives 6800 rad/s2, 4.4 g; two thirds of it for friction and belt: 3 g.
+    double pullOutAccelerationG = 3.0;
 };
 
 /// What the pen drew while down: the head's positions, one per step period, steps from the
@@ -94,6 +107,14 @@ class SimPlotter final : public PlotterIo, public XyPlant {
     std::array<std::uint64_t, 2> lost_{};
     std::array<std::uint32_t, 2> pulsesThisStep_{};
     std::array<double, 2> rateHz_{};
+    // The torque limit's per-pulse estimate: the last pulse's time, the rate of the last
+    // interval and the time of its middle (the rate between two pulses belongs there).
+    std::array<double, 2> lastPulseS_{-1.0, -1.0};
+    std::array<double, 2> lastIntervalRateHz_{};
+    std::array<double, 2> lastIntervalMidS_{};
+    std::array<int, 2> pulsesSinceRest_{};
+    /// True when the pulse on axis i asks more acceleration than the torque gives.
+    bool beyondTorque(std::size_t i);
     bool penCommandedDown_ = false;
     bool penTouching_ = false;
     double penTimerS_ = 0.0;  ///< time since the solenoid last switched

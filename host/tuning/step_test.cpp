@@ -142,6 +142,10 @@ StepTestResult runRail(const StepTestSpec& spec, StepTestResult r) {
     for (std::size_t k = 0; k <= ticks; ++k) {
         const double t = static_cast<double>(k) * dt;
         if (k == preTicks) servo.moveTo(target, c.speedFraction, false);
+        if (c.gainChange &&
+            k == preTicks + static_cast<std::size_t>(std::llround(c.gainChange->atS / dt)))
+            servo.setGains(c.law, LoopGains{c.gainChange->gains.kp, c.gainChange->gains.ki,
+                                            c.gainChange->gains.kd});
         servo.tick(dt);
         const ServoSample& s = servo.sample();
         const LoopOutput& o = s.loop;
@@ -295,11 +299,19 @@ StepTestResult runStepTest(const StepTestSpec& spec) {
     if (spec.profile.kind == MachineKind::Plotter)
         return refuse(std::move(r),
                       QStringLiteral("the plotter has no encoder: its speed and acceleration "
-                                     "margin test is not built yet"));
+                                     "margin test is `tune margin`"));
     if (table && spec.axis != 'x' && spec.axis != 'y')
         return refuse(std::move(r), QStringLiteral("the DC table needs an axis: x or y"));
     if (!table && spec.axis != 0)
         return refuse(std::move(r), QStringLiteral("the rail has one axis: no axis to choose"));
+    if (spec.gainChange && (table || (spec.law && *spec.law != LoopLaw::Engineered) ||
+                            (!spec.law && spec.profile.loop.law != LoopLaw::Engineered)))
+        return refuse(std::move(r), QStringLiteral("a gain change part-way is for the rail's "
+                                                   "engineered law (its bumpless gain change)"));
+    if (spec.gainChange && !(spec.gainChange->atS >= 0.0 && spec.gainChange->atS <= 600.0))
+        return refuse(std::move(r), QStringLiteral("the gain change must come 0 to 600 s after "
+                                                   "the step"));
+    c.gainChange = spec.gainChange;
     if (!std::isfinite(spec.amplitudeMm) || spec.amplitudeMm == 0.0)
         return refuse(std::move(r),
                       QStringLiteral("the amplitude must be a non-zero number of mm"));
@@ -377,6 +389,7 @@ StepTestSpec specFromConditions(const RunConditions& c) {
     s.settleS = c.settleS;
     s.maxDurationS = c.maxDurationS;
     s.envelopeMarginMm = c.envelopeMarginMm;
+    s.gainChange = c.gainChange;
     return s;
 }
 

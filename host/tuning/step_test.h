@@ -62,6 +62,9 @@ struct StepTestSpec {
     double maxDurationS = 0.0;  ///< 0: automatic (the move's time plus 3 s; classic rail 60 s)
     /// The envelope beyond start and target, mm; 0: automatic (max(2 mm, 50 % of |amplitude|)).
     double envelopeMarginMm = 0.0;
+    /// The rail's engineered law only: new gains part-way through the test (bumpless, as the
+    /// main screen's boxes change them: the integral absorbs the difference).
+    std::optional<GainChange> gainChange;
 };
 
 enum class StepAbort : std::uint8_t {

@@ -204,5 +204,47 @@ TEST(StepTest, EachDcTableAxisTakesAStep) {
     EXPECT_EQ(runStepTest(noAxis).abort, StepAbort::Refused);
 }
 
+// The bumpless gain change (the lesson of docs/teaching.md): at the change the P term jumps by
+// the new Kp times the error, the integral takes the difference, and the sum the drive comes
+// from moves no more than from one ordinary tick to the next; the change is in the record's
+// conditions and comes back from its JSON.
+TEST(StepTest, AGainChangePartWayIsBumpless) {
+    StepTestSpec spec;
+    spec.amplitudeMm = 100.0;
+    spec.gainChange = GainChange{0.1, profileGains(spec.profile, 0, LoopLaw::Engineered)};
+    spec.gainChange->gains.kp *= 2.0;
+    const StepTestResult r = runStepTest(spec);
+    ASSERT_TRUE(r.ok()) << r.abortReason.toStdString();
+    const RunChannels& c = r.record.channels;
+    const auto k = static_cast<std::size_t>(std::llround((spec.preRollS + 0.1) / 0.001));
+    ASSERT_LT(k + 1, c.size());
+    const double pJump = c.pCodes[k] - c.pCodes[k - 1];
+    const double iJump = c.iCodes[k] - c.iCodes[k - 1];
+    // P per mm of error doubled at the change; the integral took, at the last tick's inputs,
+    // what P added there (PositionLoop::setGains), so p + i + d + ff did not jump.
+    const double before = c.pCodes[k - 1] / c.errorMm[k - 1];
+    EXPECT_NEAR(c.pCodes[k] / c.errorMm[k], 2.0 * before, 1e-3 * std::abs(before));
+    EXPECT_GT(std::abs(pJump), 0.05);
+    EXPECT_NEAR(iJump, -c.pCodes[k - 1], 1e-3);
+    const double sumStep = std::abs(c.sumCodes[k] - c.sumCodes[k - 1]);
+    const double ordinary = std::abs(c.sumCodes[k - 1] - c.sumCodes[k - 2]);
+    EXPECT_LT(sumStep, ordinary + 0.05);
+    EXPECT_LT(sumStep, std::abs(pJump));
+    // Recorded, and read back.
+    ASSERT_TRUE(r.record.conditions.gainChange.has_value());
+    QString error;
+    const auto back =
+        runConditionsFromJson(runConditionsToJson(r.record.conditions, nullptr), QString(), &error);
+    ASSERT_TRUE(back && back->gainChange) << error.toStdString();
+    EXPECT_DOUBLE_EQ(back->gainChange->atS, 0.1);
+    EXPECT_DOUBLE_EQ(back->gainChange->gains.kp, spec.gainChange->gains.kp);
+    // The table's loop has no bumpless change: refused before anything runs.
+    StepTestSpec table;
+    table.profile = MachineProfile::xyDcTable();
+    table.axis = 'x';
+    table.gainChange = GainChange{0.1, {}};
+    EXPECT_EQ(runStepTest(table).abort, StepAbort::Refused);
+}
+
 }  // namespace
 }  // namespace trilho

@@ -255,7 +255,7 @@ class WorkbenchTest : public QObject {
             qPrintable(text));
     }
 
-    // The DC table: per axis; no autotune page (the rail's model only, for now).
+    // The DC table: per axis, with its model page.
     void theDcTableStepsEachAxis() {
         WorkbenchWindow w(MachineProfile::xyDcTable());
         auto* axis = w.findChild<QComboBox*>(QStringLiteral("axis"));
@@ -266,7 +266,66 @@ class WorkbenchTest : public QObject {
         QCOMPARE(w.runs().size(), std::size_t(1));
         QCOMPARE(w.runs()[0]->record.conditions.axis, 'y');
         QVERIFY2(w.runs()[0]->metrics.ok, w.runs()[0]->metrics.problem.c_str());
-        QCOMPARE(w.tabs()->count(), 2);
+        QCOMPARE(w.tabs()->count(), 3);
+    }
+
+    // The DC table's identification and autotune at the screens show the numbers `trilho-cli
+    // tune identify|auto --machine xy_dc_table --axis y` prints, as the CLI formats them.
+    void theDcTableAxisIdentifiesAndTunesWithTheCliNumbers() {
+        WorkbenchWindow w(MachineProfile::xyDcTable());
+        w.findChild<QComboBox*>(QStringLiteral("axis"))->setCurrentIndex(1);
+        auto* identify = w.findChild<QPushButton*>(QStringLiteral("identify"));
+        QVERIFY(identify && identify->isEnabled());
+        identify->click();
+        QVERIFY(waitRun(w));
+        const QString idText = w.model()->summary()->text();
+        const QJsonObject id =
+            cli({QStringLiteral("tune"), QStringLiteral("identify"), QStringLiteral("--machine"),
+                 QStringLiteral("xy_dc_table"), QStringLiteral("--axis"), QStringLiteral("y"),
+                 QStringLiteral("--json")});
+        QVERIFY2(id[QStringLiteral("ok")].toBool(), "trilho-cli tune identify failed");
+        auto shows = [](const QString& text, double v, int decimals) {
+            return text.contains(QString::number(v, 'f', decimals));
+        };
+        QVERIFY2(shows(idText, id[QStringLiteral("speed_gain_mm_s_per_pct")].toDouble(), 3),
+                 qPrintable(idText));
+        QVERIFY(shows(idText, id[QStringLiteral("time_constant_s")].toDouble() * 1e3, 2));
+        QVERIFY(shows(idText, id[QStringLiteral("coulomb_friction_pct")].toDouble(), 2));
+        QVERIFY(shows(idText, id[QStringLiteral("fit_velocity_pct")].toDouble(), 1));
+        QVERIFY(shows(idText, id[QStringLiteral("acceleration_limit_mm_s2")].toDouble(), 0));
+
+        w.findChild<QPushButton*>(QStringLiteral("autotune"))->click();
+        QVERIFY(waitRun(w));
+        QVERIFY2(w.tunedProfile().has_value(), qPrintable(w.model()->summary()->text()));
+        const QJsonObject tuned =
+            cli({QStringLiteral("tune"), QStringLiteral("auto"), QStringLiteral("--machine"),
+                 QStringLiteral("xy_dc_table"), QStringLiteral("--axis"), QStringLiteral("y"),
+                 QStringLiteral("--json")});
+        QVERIFY2(tuned[QStringLiteral("ok")].toBool(), "trilho-cli tune auto failed");
+        const QJsonObject gains = tuned[QStringLiteral("gains")].toObject();
+        // The boxes hold the designed gains to the digit, the tuned profile the same.
+        QCOMPARE(w.findChild<QDoubleSpinBox*>(QStringLiteral("kp"))->value(),
+                 std::round(gains[QStringLiteral("kp_pct_per_mm")].toDouble() * 1e6) / 1e6);
+        QCOMPARE(w.tunedProfile()->dcTable.y.engineered.kp,
+                 gains[QStringLiteral("kp_pct_per_mm")].toDouble());
+        QCOMPARE(w.tunedProfile()->dcTable.y.engineered.ki,
+                 gains[QStringLiteral("ki_pct_per_mm_s")].toDouble());
+        QCOMPARE(w.tunedProfile()->dcTable.y.engineered.kff,
+                 gains[QStringLiteral("kff_pct_per_mm_s")].toDouble());
+        // Prediction against measurement, in ms as the page shows it.
+        const QString text = w.model()->summary()->text();
+        const QJsonObject measured = tuned[QStringLiteral("measured")].toObject();
+        const QJsonObject predicted = tuned[QStringLiteral("predicted")].toObject();
+        for (const QJsonObject& m : {measured, predicted})
+            QVERIFY2(shows(text,
+                           m[QStringLiteral("step")]
+                                   .toObject()[QStringLiteral("settling_time_1count_s")]
+                                   .toDouble() *
+                               1e3,
+                           1),
+                     qPrintable(text));
+        QVERIFY(text.contains(QStringLiteral("Autotune passed")));
+        QVERIFY(w.model()->bode()->graphCount() == 2);
     }
 };
 

@@ -138,6 +138,16 @@ void ModelView::showAutotune(const AutotuneResult& r) {
                   num(d.gains.ki, 4), num(d.gains.kd, 4), num(d.accelerationMmS2, 0));
     if (d.clamped) h += QStringLiteral("<br>") + d.note;
     h += QStringLiteral("<br>") + marginsHtml(r.frequency);
+    h += verificationHtml(r.predictedStep, r.measuredStep, r.predictedLong, r.measuredLong,
+                          r.machineTimeS, r.ok, r.error);
+    summary_->setText(h);
+    plotBode(r.frequency);
+}
+
+QString ModelView::verificationHtml(const MoveResult& predictedStep, const MoveResult& measuredStep,
+                                    const MoveResult& predictedLong, const MoveResult& measuredLong,
+                                    double machineTimeS, bool ok, const QString& error) const {
+    QString h;
     auto row = [this](const QString& what, const MoveResult& p, const MoveResult& m) {
         return QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td><td>%5</td></tr>")
             .arg(what, num(p.overshootCounts, 2), num(m.overshootCounts, 2),
@@ -151,18 +161,71 @@ void ModelView::showAutotune(const AutotuneResult& r) {
              "<th>%1</th><th>%2</th><th>%3</th><th>%4</th></tr>")
              .arg(tr("overshoot predicted (counts)"), tr("measured"),
                   tr("settling +-1 count predicted (ms)"), tr("measured"));
-    h += row(tr("%1 mm step").arg(num(r.measuredStep.stepMm, 0)), r.predictedStep, r.measuredStep);
-    if (r.measuredLong.stepMm != 0.0)
-        h += row(tr("%1 mm move").arg(num(r.measuredLong.stepMm, 0)), r.predictedLong,
-                 r.measuredLong);
+    h += row(tr("%1 mm step").arg(num(measuredStep.stepMm, 0)), predictedStep, measuredStep);
+    if (measuredLong.stepMm != 0.0)
+        h += row(tr("%1 mm move").arg(num(measuredLong.stepMm, 0)), predictedLong, measuredLong);
     h += QStringLiteral("</table>");
     h += QStringLiteral("<br>") +
-         tr("Machine time of the whole autotune: %1 s").arg(num(r.machineTimeS, 2));
-    h += QStringLiteral("<br>") + (r.ok ? tr("<b>Autotune passed</b>: the tuned gains are in the "
-                                             "step test's boxes; Save tuned profile... keeps "
-                                             "them in a profile.")
-                                        : QStringLiteral("<font color=\"#c00000\"><b>%1</b></font>")
-                                              .arg(tr("Autotune failed: %1").arg(r.error)));
+         tr("Machine time of the whole autotune: %1 s").arg(num(machineTimeS, 2));
+    h += QStringLiteral("<br>") + (ok ? tr("<b>Autotune passed</b>: the tuned gains are in the "
+                                           "step test's boxes; Save tuned profile... keeps "
+                                           "them in a profile.")
+                                      : QStringLiteral("<font color=\"#c00000\"><b>%1</b></font>")
+                                            .arg(tr("Autotune failed: %1").arg(error)));
+    return h;
+}
+
+QString ModelView::dcIdentificationHtml(const DcAxisIdentification& id) const {
+    const DcAxisModel& m = id.model;
+    QString h =
+        tr("<b>Identified model</b> (PWM-driven motor: G = K / (s (tau s + 1)), Coulomb "
+           "friction)");
+    h += QStringLiteral("<br>") +
+         tr("speed gain K = %1 mm/s per PWM %").arg(num(m.speedGainMmSPerPercent, 3));
+    h += QStringLiteral("<br>") + tr("time constant tau = %1 ms (inertia x%2 of the profile's)")
+                                      .arg(num(m.timeConstantS * 1e3, 2), num(id.inertiaFactor, 2));
+    h += QStringLiteral("<br>") + tr("Coulomb friction = %1 % PWM").arg(num(m.coulombPercent, 2));
+    h += QStringLiteral("<br>") + tr("acceleration limit = %1 mm/s2 (the over-current trip)")
+                                      .arg(num(id.accelerationLimitMmS2, 0));
+    h += QStringLiteral("<br>") +
+         tr("fit on held-out velocity (NRMSE) = <b>%1 %</b>; on the fitted part %2 %; on "
+            "position %3 % (flattering: position integrates)")
+             .arg(num(id.fitVelocityPct, 1), num(id.fitVelocityTrainPct, 1),
+                  num(id.fitPositionPct, 1));
+    h += QStringLiteral("<br>") +
+         tr("experiment: %1 s of machine time, at most %2 mm from the start, back within %3 "
+            "counts")
+             .arg(num(id.experimentTimeS, 2), num(id.maxExcursionMm, 1),
+                  num(id.returnErrorCounts, 1));
+    if (!id.accepted)
+        h += QStringLiteral("<br><font color=\"#c00000\"><b>%1</b></font>")
+                 .arg(tr("Model refused: %1").arg(id.error));
+    return h;
+}
+
+void ModelView::showDcIdentification(const DcAxisIdentification& id, const FrequencyView& frequency,
+                                     const DcEngineeredGains& gains) {
+    QString h = dcIdentificationHtml(id);
+    h += QStringLiteral("<br><br>") +
+         tr("Open loop with the profile's engineered gains (Kp %1, Ki %2, Kff %3):")
+             .arg(num(gains.kp, 3), num(gains.ki, 3), num(gains.kff, 4));
+    h += QStringLiteral("<br>") + marginsHtml(frequency);
+    summary_->setText(h);
+    plotBode(frequency);
+}
+
+void ModelView::showDcAutotune(const DcAutotuneResult& r) {
+    QString h = dcIdentificationHtml(r.identification);
+    const DcLoopDesign& d = r.design;
+    h += QStringLiteral("<br><br>") +
+         tr("<b>Design</b> (SIMC PI, closed-loop time constant %1 ms, effective delay %2 ms): "
+            "Kp %3, Ki %4, Kff %5; planning acceleration %6 mm/s2")
+             .arg(num(d.tauC * 1e3, 1), num(d.thetaEffS * 1e3, 2), num(d.gains.kp, 3),
+                  num(d.gains.ki, 3), num(d.gains.kff, 4), num(d.accelerationMmS2, 0));
+    if (d.clamped) h += QStringLiteral("<br>") + d.note;
+    h += QStringLiteral("<br>") + marginsHtml(r.frequency);
+    h += verificationHtml(r.predictedStep, r.measuredStep, r.predictedLong, r.measuredLong,
+                          r.machineTimeS, r.ok, r.error);
     summary_->setText(h);
     plotBode(r.frequency);
 }

@@ -23,10 +23,13 @@
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include "core/tuning/dc_axis_autotune.h"
+#include "core/tuning/dc_identification_experiment.h"
 #include "core/tuning/frequency_response.h"
 #include "core/tuning/identification_experiment.h"
 #include "core/tuning/rail_autotune.h"
 #include "core/tuning/rail_identification.h"
+#include "host/session/sim_dc_table_rig.h"
 #include "host/session/sim_rail_rig.h"
 #include "host/tuning/relay_comparison.h"
 #include "ui/workbench/model_view.h"
@@ -157,7 +160,8 @@ void WorkbenchWindow::build() {
     t->addWidget(autotune_);
     t->addWidget(relay_);
     t->addWidget(saveTuned_);
-    tuneBox_->setVisible(rail_);
+    relay_->setVisible(rail_);  // the relay experiment is the rail's (`tune relay` refuses a table)
+    tuneBox_->setVisible(tunable());
 
     runsBox_ = new QGroupBox(form);
     auto* r = new QVBoxLayout(runsBox_);
@@ -195,7 +199,7 @@ void WorkbenchWindow::build() {
     tabs_ = new QTabWidget;
     tabs_->addTab(overlay_, QString());
     tabs_->addTab(terms_, QString());
-    if (rail_)
+    if (tunable())
         tabs_->addTab(model_, QString());
     else
         model_->hide();
@@ -274,9 +278,10 @@ void WorkbenchWindow::retranslate() {
         tr("At most 3 s of machine time, within 100 mm, back to the start "
            "within a count"));
     autotune_->setText(tr("Autotune"));
-    autotune_->setToolTip(
-        tr("Identify, design (SIMC), predict, then verify with a 10 mm step "
-           "and a 1000 mm move"));
+    autotune_->setToolTip(rail_ ? tr("Identify, design (SIMC), predict, then verify with a 10 mm "
+                                     "step and a 1000 mm move")
+                                : tr("Identify the axis, design (SIMC PI), predict, then verify "
+                                     "with a 10 mm step and a 100 mm move"));
     relay_->setText(tr("Relay experiment (Ziegler-Nichols)"));
     relay_->setToolTip(
         tr("To teach with, never the default: a relay of +-3 codes provokes a limit cycle, "
@@ -290,7 +295,7 @@ void WorkbenchWindow::retranslate() {
     clearRuns_->setText(tr("Clear"));
     tabs_->setTabText(0, tr("Responses"));
     tabs_->setTabText(1, tr("P, I, D terms"));
-    if (rail_) tabs_->setTabText(2, tr("Model"));
+    if (tunable()) tabs_->setTabText(2, tr("Model"));
 }
 
 void WorkbenchWindow::changeEvent(QEvent* e) {
@@ -453,7 +458,8 @@ void WorkbenchWindow::whatIfRun(const TuningGains& gains) {
 }
 
 void WorkbenchWindow::identify() {
-    if (busy_ || !rail_) return;
+    if (busy_ || !tunable()) return;
+    if (!rail_) return identifyTableAxis();
     const MachineProfile profile = currentSpec().profile;
     const auto seed = static_cast<std::uint64_t>(seed_->value());
     const double mass = mass_->value();
@@ -484,7 +490,8 @@ void WorkbenchWindow::identify() {
 }
 
 void WorkbenchWindow::autotune() {
-    if (busy_ || !rail_) return;
+    if (busy_ || !tunable()) return;
+    if (!rail_) return autotuneTableAxis();
     MachineProfile profile = currentSpec().profile;
     profile.loop.law = LoopLaw::Engineered;
     profile.loop.samplePeriodS = profile_.loop.samplePeriodS;
@@ -533,6 +540,70 @@ void WorkbenchWindow::relayExperiment() {
                                                .arg(c.relay.periodS * 1e3, 0, 'f', 1)
                                          : tr("Relay experiment failed: %1").arg(c.relay.error),
                                      10000);
+        });
+}
+
+void WorkbenchWindow::identifyTableAxis() {
+    // As `trilho-cli tune identify --machine P --axis x|y`: the table at rest in the middle of
+    // both axes, the same seed and mass: the same numbers.
+    const MachineProfile profile = currentSpec().profile;
+    const int axis = axis_->currentData().toInt() == 'y' ? 1 : 0;
+    const auto seed = static_cast<std::uint64_t>(seed_->value());
+    const double mass = mass_->value();
+    struct Out {
+        DcAxisIdentification id;
+        FrequencyView frequency;
+        DcEngineeredGains gains;
+    };
+    inBackground<Out>(
+        [profile, axis, seed, mass] {
+            SimDcTableRig rig(profile, axis, seed, tableMiddle(profile.limits.x),
+                              tableMiddle(profile.limits.y), mass);
+            Out o;
+            o.id = identifyDcAxis(runDcIdentificationExperiment(rig), profile, axis);
+            o.gains = (axis == 0 ? profile.dcTable.x : profile.dcTable.y).engineered;
+            o.frequency = dcFrequencyView(o.id.model, o.gains, profile.dcTable.samplePeriodS);
+            return o;
+        },
+        [this](Out o) {
+            model_->showDcIdentification(o.id, o.frequency, o.gains);
+            tabs_->setCurrentWidget(model_);
+            statusBar()->showMessage(o.id.accepted
+                                         ? tr("Identified: fit %1 % on held-out velocity.")
+                                               .arg(o.id.fitVelocityPct, 0, 'f', 1)
+                                         : tr("Model refused: %1").arg(o.id.error),
+                                     10000);
+        });
+}
+
+void WorkbenchWindow::autotuneTableAxis() {
+    MachineProfile profile = currentSpec().profile;
+    profile.dcTable.law = DcLaw::Engineered;
+    const int axis = axis_->currentData().toInt() == 'y' ? 1 : 0;
+    const auto seed = static_cast<std::uint64_t>(seed_->value());
+    const double mass = mass_->value();
+    inBackground<DcAutotuneResult>(
+        [profile, axis, seed, mass] {
+            SimDcTableRig rig(profile, axis, seed, tableMiddle(profile.limits.x),
+                              tableMiddle(profile.limits.y), mass);
+            return autotuneDcAxis(rig);
+        },
+        [this](DcAutotuneResult r) {
+            model_->showDcAutotune(r);
+            tabs_->setCurrentWidget(model_);
+            if (r.ok) {
+                tuned_ = r.tuned;
+                saveTuned_->setEnabled(true);
+                kp_->setValue(r.design.gains.kp);
+                ki_->setValue(r.design.gains.ki);
+                kd_->setValue(r.design.gains.kff);  // the table's third box is Kff
+                profile_.motion = r.tuned.motion;
+                profile_.dcTable = r.tuned.dcTable;
+            }
+            statusBar()->showMessage(
+                r.ok ? tr("Autotune passed in %1 s of machine time.").arg(r.machineTimeS, 0, 'f', 2)
+                     : tr("Autotune failed: %1").arg(r.error),
+                10000);
         });
 }
 

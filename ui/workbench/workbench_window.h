@@ -2,10 +2,11 @@
 // The tuning and teaching workbench (issue 21): step and ramp tests without G-code on the
 // machine's simulated plant in virtual time, their metrics, an overlay of every run with a
 // table of metrics side by side, the P/I/D terms of a run tick by tick with the equation
-// substituted and "what if" re-simulation, and on the rail identification, autotune and the
-// Bode plot, and the relay (Ziegler-Nichols) experiment beside the autotune to teach with. Every
-// figure comes from core/tuning and host/tuning, the same code `trilho-cli tune` prints, so the
-// screens and the CLI agree to the digit.
+// substituted and "what if" re-simulation, and on the rail and each DC table axis
+// identification, autotune and the Bode plot, and on the rail the relay (Ziegler-Nichols)
+// experiment beside the autotune to teach with. Every figure comes from core/tuning and
+// host/tuning, the same code `trilho-cli tune` prints, so the screens and the CLI agree to the
+// digit.
 #include <QMainWindow>
 #include <functional>
 #include <optional>
@@ -73,6 +74,12 @@ class WorkbenchWindow : public QMainWindow {
     void retranslate();
     void lawChanged();
     void setBusy(bool busy);
+    /// The rail and the DC table have a plant to identify; the plotter (no encoder) has not.
+    bool tunable() const { return profile_.kind != MachineKind::Plotter; }
+    void identifyTableAxis();
+    void autotuneTableAxis();
+    /// The middle of an axis' soft limits, mm: where `tune identify|auto` puts the table.
+    static double tableMiddle(const AxisTravel& t) { return 0.5 * (t.softMinMm + t.softMaxMm); }
     void addRun(StepTestResult result, const QString& label);
     void refreshRuns();
     void selectRun(int index);
