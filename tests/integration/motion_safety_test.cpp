@@ -678,8 +678,9 @@ struct DriftRun {
     /// Where the platform really stands less where the count says, mm, at the end (at rest).
     double lostMm = 0.0;
     bool finished = false;
-    AlarmCode alarm = AlarmCode::None;
+    AlarmCode alarm = AlarmCode::None;  ///< the first raised (a warning 14 may come first)
     double alarmValue = 0.0;
+    bool countsLost = false;  ///< alarm 21 was raised
 };
 
 DriftRun runForDrift(const std::string& text, double massFactor, const FaultInjection& faults,
@@ -712,9 +713,12 @@ DriftRun runForDrift(const std::string& text, double massFactor, const FaultInje
         c.status().state == ControllerState::Alarm ? 3.0 : 0.0, &events);
     r.finished = c.status().programFinished;
     r.lostMm = cell.x() - c.status().servo.positionMm;
-    for (const ControllerEvent& e : events)
+    for (const ControllerEvent& e : events) {
         if (e.kind == EventKind::AlarmRaised && r.alarm == AlarmCode::None)
             r.alarm = e.alarm, r.alarmValue = e.value;
+        if (e.kind == EventKind::AlarmRaised && e.alarm == AlarmCode::CountsLost)
+            r.countsLost = true;
+    }
     return r;
 }
 
@@ -729,6 +733,23 @@ TEST(CountsLost, NearTheSoftLimitTheyStopTheMachineNeverFinishSilently) {
     EXPECT_FALSE(r.finished);
     EXPECT_EQ(r.alarm, AlarmCode::CountsLost);
     EXPECT_LT(r.maxPlantMm, MachineProfile::rail().limits.x.softMaxMm);
+}
+
+TEST(CountsLost, ARapidThatNeverCruisesStopsAtRestBeforeTheLimit) {
+    // The same card, the rapid to 1000 mm first: it peaks at 1581 mm/s without cruising, so the
+    // steady check never looks, and the counts lost over its top (4.5 mm) made the program end
+    // "Program finished !" with the platform at 1274.5 mm (issue 20 item 11, the remaining gap).
+    // The rest-to-rest check stops it in the first block's in-position, at 1004.5 mm.
+    FaultInjection f;
+    f.maxCountRateHz = 30000;
+    const DriftRun r = runForDrift("G0 X1000\nG0 X1268\nG0 X1270\nM2\n", 1.0, f);
+    std::printf(
+        "lost counts over the top of a rapid: alarm %d (%.2f mm), platform reached %.2f mm\n",
+        static_cast<int>(r.alarm), r.alarmValue, r.maxPlantMm);
+    EXPECT_FALSE(r.finished);
+    EXPECT_EQ(r.alarm, AlarmCode::CountsLost);
+    EXPECT_GT(r.alarmValue, 3.5);
+    EXPECT_LT(r.maxPlantMm, 1010.0);
 }
 
 TEST(CountsLost, AProfileThatKnowsTheCardsRateIsSlowedAndLosesNone) {
@@ -818,7 +839,10 @@ TEST(CountsLost, AnywhereInAMoveTheyNeverEndInSilentSuccess) {
             EXPECT_LT(r.maxPlantMm, p.limits.x.softMaxMm + allowed);
         } else {
             ++stopped;
-            EXPECT_EQ(r.alarm, AlarmCode::CountsLost) << r.alarmValue;
+            // Alarm 21; a move that crossed the centre mark may have said warning 14 first
+            // (the mark corrected the count): the card still lost counts in it.
+            EXPECT_TRUE(r.countsLost)
+                << "alarm " << static_cast<int>(r.alarm) << " (" << r.alarmValue << ")";
         }
     }
     std::printf(
