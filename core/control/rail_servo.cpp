@@ -17,6 +17,14 @@ RailServo::RailServo(const MachineProfile& profile, RailIo& io)
       speedPerCode_(profile.plant.maxSpeedMmS() / 127.0),
       countLimitMmS_(0.95 * profile.plant.counterMaxRateHz / profile.plant.countsPerMm),
       plantAccelBound_(1.5 * profile.motion.maxDecelerationMmS2) {
+    // The slowest acceleration of a saturated amplifier: the peak force less the friction at
+    // top speed on three times the moving mass (the payloads tested, x0.5-x3), mm/s2; half of
+    // it, so that the counted acceleration's noise and its 20 ms lag do not hide a saturation.
+    const PlantParams& pl = profile.plant;
+    const double frictionN =
+        pl.coulombFrictionN + pl.viscousFrictionNsPerM * pl.maxSpeedMmS() / 1000.0;
+    saturatedAccel_ = 0.5 * 1000.0 * std::max(0.0, pl.peakForceN() - frictionN) /
+                      (3.0 * pl.movingMassKg + pl.reflectedMassKg);
     countLimitCodes_ =
         std::clamp(static_cast<int>(std::floor(countLimitMmS_ / speedPerCode_)), 1, 127);
     switches_.reset(io_.readSwitches());
@@ -262,13 +270,45 @@ std::uint8_t RailServo::counterSafeCode(std::uint8_t code) const {
                                                 kDacZero + countLimitCodes_));
 }
 
+void RailServo::resetGapBlocks() {
+    // At rest: the block before the first is a block at rest.
+    blocks_ = {GapBlock{0.0, 0.0, kGapBlockS}, GapBlock{}, GapBlock{}};
+}
+
 bool RailServo::checkCountDrift(bool reset) {
     const double drift = sample_.countDriftMm;
     const double allowed =
         profile_.loop.countLossMm + profile_.loop.countLossFraction * driftTravelMm_;
     if (reset) sample_.countDriftMm = driftTravelMm_ = 0.0;
-    if (drift <= allowed) return true;
-    fault(ServoFault::CountsLost, drift);
+    if (drift > allowed) {
+        fault(ServoFault::CountsLost, drift);
+        return false;
+    }
+    if (!reset) return true;
+    // At rest again (in position): the rest-to-rest check. Whatever the mass, an amplifier
+    // speed loop that is not at its current limit obeys tau dv/dt = v_ref - v; integrated
+    // between two rests (v = 0 at both ends) the platform's travel equals the integral of the
+    // speed reference. Only the current limit (a heavy payload's lag) breaks the identity, and
+    // a lag while accelerating and the lag while braking have opposite signs; what is left is
+    // bounded by restCountLossMm plus restCountLossFraction of the travel (measured over masses
+    // x0.5-x3, see motion_safety_test.cpp CountsLost). Counts lost anywhere in the move, at any
+    // speed, make the counted travel short of the reference's by as much.
+    const double counted = countedTravelMm_;
+    // The blocks not decided yet are at rest: kept.
+    const double gap =
+        (referenceTravelMm_ + blocks_[1].gapMm + blocks_[2].gapMm) * (counted >= 0.0 ? 1.0 : -1.0);
+    sample_.moveGapMm = gap;
+    sample_.travelGapMm = referenceTravelMm_ = countedTravelMm_ = 0.0;
+    resetGapBlocks();
+    // The classic law's in-position (the VB's 0.5 mm) is no rest: it releases the drive as
+    // the platform passes the target or coasts back from an overshoot of tens of mm at full
+    // code, so the identity's ends are not at rest. Its moves are left to the steady check
+    // and the centre mark (profile_extremes_test.cpp: false alarms at 8 ms without this).
+    if (profile_.loop.law == LoopLaw::Classic) return true;
+    if (gap <=
+        profile_.loop.restCountLossMm + profile_.loop.restCountLossFraction * std::abs(counted))
+        return true;
+    fault(ServoFault::CountsLost, gap);
     return false;
 }
 
@@ -304,10 +344,50 @@ bool RailServo::checkEncoder(double dtS, bool counted, double countedMm) {
             sample_.countDriftMm += (0.5 * (before + modelVelocity_) * dtS - countedMm) *
                                     (modelVelocity_ > 0.0 ? 1.0 : -1.0);
         driftTravelMm_ += std::abs(countedMm);
+        // The rest-to-rest identity, tick by tick: the code written last tick was held over
+        // this period; tau dv/dt = v_ref - v integrated over it gives the travel the platform
+        // makes, v_ref dt - tau dv (dv from the 20 ms mean speed: the sum telescopes to zero
+        // between rests whatever the estimate, and this one is quiet); less the travel counted,
+        // it is the gap of this tick. Only the amplifier's current limit breaks the identity:
+        // there the platform accelerates at (peak force - friction) / mass, at least
+        // 2 x saturatedAccel_ for the heaviest payload (x3), and it lags: the gap grows in the
+        // direction of that acceleration. The gap is summed in blocks of 10 ms (a count's
+        // quantisation telescopes within a block: at most one count per block), and a block
+        // is left out as saturation when its gap exceeds two counts in the direction the
+        // counted speed changes, by at least saturatedAccel_, from the block before it to the
+        // block after it (a central difference: no lag, 0.3 m/s2 of quantisation noise).
+        // Counts lost do not accelerate the count: where the card misses counts above its rate
+        // the counted speed stays flat, and the block is kept.
+        const double dSlow = measuredSlow_ - restVelocityMmS_;
+        restVelocityMmS_ = measuredSlow_;
+        blocks_[2].gapMm += commanded * dtS - countedMm - profile_.plant.speedLoopTauS * dSlow;
+        blocks_[2].travelMm += countedMm;
+        blocks_[2].s += dtS;
+        countedTravelMm_ += countedMm;
+        if (blocks_[2].s >= kGapBlockS) {
+            // blocks_[1] is decided now that the one after it is known.
+            const GapBlock &prev = blocks_[0], &block = blocks_[1], &next = blocks_[2];
+            if (block.s > 0.0) {
+                const double accel = (next.travelMm / next.s - prev.travelMm / prev.s) /
+                                     (0.5 * prev.s + block.s + 0.5 * next.s);
+                const bool saturated = std::abs(accel) >= saturatedAccel_ &&
+                                       block.gapMm * accel > 0.0 &&
+                                       std::abs(block.gapMm) > 2.0 / profile_.plant.countsPerMm;
+                if (!saturated) referenceTravelMm_ += block.gapMm;
+            }
+            blocks_[0] = blocks_[1];
+            blocks_[1] = blocks_[2];
+            blocks_[2] = GapBlock{};
+        }
+        sample_.travelGapMm = referenceTravelMm_ * (countedTravelMm_ >= 0.0 ? 1.0 : -1.0);
         if (!checkCountDrift(false)) return false;
     } else {
-        sample_.countDriftMm = driftTravelMm_ = 0.0;  // manual drive, homing, idle: no check
+        // Manual drive, homing, idle: no check.
+        sample_.countDriftMm = driftTravelMm_ = 0.0;
+        sample_.travelGapMm = referenceTravelMm_ = countedTravelMm_ = 0.0;
+        resetGapBlocks();
     }
+    restVelocityMmS_ = measuredSlow_;
     if (counted || sample_.mode == ServoMode::Idle || sample_.mode == ServoMode::Fault) {
         stallTravel_ = 0.0;
         return true;

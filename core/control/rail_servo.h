@@ -3,6 +3,7 @@
 // samples the motion, runs the position loop, checks the limits and writes the drive once.
 // Time is passed in; nothing here allocates, locks, sleeps or logs, so tests and the
 // command-line tool run whole moves in virtual time.
+#include <array>
 #include <cstdint>
 
 #include "core/control/counter_reader.h"
@@ -70,6 +71,12 @@ struct ServoSample {
     /// the direction of motion, summed while both speeds are steady, since the platform was
     /// last in position (lost counts make it grow; issue 20 item 11).
     double countDriftMm = 0.0;
+    /// Rest to rest (issue 20 item 11, counts lost while the speed changes): the travel the
+    /// drive's speed reference makes integrated over time (codes x mm/s per code x s) less the
+    /// travel counted, mm, in the direction counted, since the platform was last in position;
+    /// moveGapMm is its value at the last in-position (where it is checked).
+    double travelGapMm = 0.0;
+    double moveGapMm = 0.0;
 };
 
 class RailServo {
@@ -156,6 +163,19 @@ class RailServo {
     double countLimitMmS_ = 0.0;
     int countLimitCodes_ = 127;   ///< the same in DAC codes from 128
     double driftTravelMm_ = 0.0;  ///< mm counted (absolute) since the drift was last reset
+    /// Since the platform was last in position: the speed reference integrated, mm (signed),
+    /// and the travel counted, mm (signed).
+    double referenceTravelMm_ = 0.0, countedTravelMm_ = 0.0;
+    double restVelocityMmS_ = 0.0;  ///< mm/s: the 20 ms mean speed at the last tick
+    /// 10 ms blocks of the rest-to-rest gap: the gap, mm; the travel counted, mm; the time, s.
+    struct GapBlock {
+        double gapMm = 0.0, travelMm = 0.0, s = 0.0;
+    };
+    static constexpr double kGapBlockS = 0.01;
+    /// The block before the one to decide, the one to decide, the one being summed.
+    std::array<GapBlock, 3> blocks_{GapBlock{0.0, 0.0, kGapBlockS}, GapBlock{}, GapBlock{}};
+    void resetGapBlocks();
+    double saturatedAccel_ = 0.0;  ///< mm/s2: below it, the amplifier is not at its limit
     double modelSlow_ = 0.0, measuredSlow_ = 0.0;  ///< mm/s, 20 ms means: is the speed steady
     /// The plant accelerates up to its current limit, above the planner's braking figure.
     double plantAccelBound_ = 0.0;

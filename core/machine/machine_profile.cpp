@@ -121,6 +121,8 @@ void forEachRailNumber(MachineProfile& p, F&& f) {
     f("loop.encoderStallMm", l.encoderStallMm, 0.1, 1000.0);
     f("loop.countLossMm", l.countLossMm, 0.1, 1000.0);
     f("loop.countLossFraction", l.countLossFraction, 0.0, 1.0);
+    f("loop.restCountLossMm", l.restCountLossMm, 0.1, 1000.0);
+    f("loop.restCountLossFraction", l.restCountLossFraction, 0.0, 1.0);
     f("loop.inPositionTimeoutS", l.inPositionTimeoutS, 0.1, 600.0);
     f("loop.classicInPositionTimeoutS", l.classicInPositionTimeoutS, 0.1, 3600.0);
     f("loop.finalPositionWindowMm", l.finalPositionWindowMm, 0.001, 100.0);

@@ -101,6 +101,13 @@ struct LoopParams {
     /// motion_safety_test.cpp (CountsLost).
     double countLossMm = 2.0;
     double countLossFraction = 0.002;
+    /// Counts lost while the speed changes (issue 20 item 11): at each in-position the travel
+    /// of the drive's speed reference since the last one (rest to rest) less the travel counted
+    /// above restCountLossMm plus restCountLossFraction of the travel stops the machine (alarm
+    /// 21). Chosen from the fault-free spread over masses x0.5-x3, feeds and late ticks, see
+    /// motion_safety_test.cpp (CountsLost).
+    double restCountLossMm = 3.5;
+    double restCountLossFraction = 0.0005;
     /// A move whose profile has ended must settle in the window within this time, s.
     double inPositionTimeoutS = 2.0;
     /// The same for the classic law, whose integral creeps over the last half millimetre for

@@ -153,6 +153,22 @@ void TableHost::answered(const table_wire::DecodedAnswer& a, double nowS) {
     moves_ = a.moves;
     // A NAK starts nothing: the board still holds the set point before (its answer says which).
     movesAt_ = a.code == table_wire::kNak ? a.before : current_;
+    if (askingCount_) {
+        // The check before the first set point: the board's count and the set point it last
+        // started, before the program moves it. A check is refused by every table.
+        if (a.code != table_wire::kNak) {
+            moves_.reset();
+            fail("the table did not refuse " + name(current_) +
+                 ", which is outside every table: its answers cannot be trusted");
+            return;
+        }
+        inFlight_ = false;
+        checking_ = askingCount_ = false;
+        timeouts_ = garbled_ = 0;
+        mayStillAnswer_ = current_;  // a copy of the check sent again may still be answered
+        poll(nowS);
+        return;
+    }
     if (checking_) {
         // The check is a set point outside every table: refused, nothing moves, and no other
         // answer names it, so a late answer to a repeat is never taken for it. It says which set
@@ -217,7 +233,9 @@ void TableHost::poll(double nowS) {
         ++stats_.timeouts;
         if (++timeouts_ > config_.maxTimeouts) {
             fail("no answer from the table to " +
-                 (checking_ && reached_ ? "the check after " + name(*reached_) : name(current_)) +
+                 (askingCount_ && !queue_.empty() ? "the check before " + name(queue_.front())
+                  : checking_ && reached_         ? "the check after " + name(*reached_)
+                                                  : name(current_)) +
                  " after " + std::to_string(timeouts_) + " tries: is it connected and on?");
             return;
         }
@@ -235,8 +253,19 @@ void TableHost::poll(double nowS) {
         send(nowS);
         return;
     }
+    if (!moves_ && config_.askCountFirst) {
+        // The board's count is not known (start, restart(), clear()): ask it with the check
+        // before the first set point, so that the first answer is checked too: a detour of the
+        // first set point whose answer was lost counts a move the host never sent.
+        current_ = table_wire::kCheck;
+        checking_ = askingCount_ = true;
+        copies_ = 0;
+        ++stats_.countRequests;
+        send(nowS);
+        return;
+    }
     // The next set point's answer says where its move started: it checks the one before.
-    needCheck_ = checking_ = false;
+    needCheck_ = checking_ = askingCount_ = false;
     checks_ = 0;
     current_ = queue_.front();
     queue_.pop_front();
@@ -285,7 +314,7 @@ void TableHost::clear() {
     inFlight_ = false;
     failed_ = false;
     offPath_ = false;
-    needCheck_ = checking_ = false;
+    needCheck_ = checking_ = askingCount_ = false;
     checks_ = 0;
     error_.clear();
     timeouts_ = garbled_ = 0;

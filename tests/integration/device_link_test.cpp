@@ -114,8 +114,10 @@ TEST(DeviceLink, TheDcTableOverAPseudoTerminal) {
     EXPECT_DOUBLE_EQ(axis(r, "x"), 0.0);  // the program ends at the origin
     EXPECT_DOUBLE_EQ(axis(r, "y"), 0.0);
     const QString said = d.stop();
-    // Homing's (0, 0) and the program's nine moves: each set point acknowledged.
-    EXPECT_TRUE(said.contains(QStringLiteral("set points 10, ACK 10"))) << said.toStdString();
+    // The check before the first set point (the board's move count, refused: nothing moves),
+    // homing's (0, 0) and the program's nine moves: each set point acknowledged.
+    EXPECT_TRUE(said.contains(QStringLiteral("set points 11, ACK 10, NAK 1")))
+        << said.toStdString();
 }
 
 TEST(DeviceLink, EveryTenthByteCorruptedEndsTheSameWithResendsCounted) {

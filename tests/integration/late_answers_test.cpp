@@ -5,6 +5,7 @@
 // a run it cannot vouch for ends with a failure that says why. Seeded: each schedule repeats.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -271,6 +272,10 @@ Schedule randomSchedule(std::mt19937_64& rng, bool table) {
     return s;
 }
 
+/// Schedules (their index in the draw from seed 20) that once ended "done" with a detour the
+/// board ran: the default run takes them too.
+constexpr int kTableHardSchedules[] = {260};
+
 std::string describe(const Schedule& s) {
     char b[256];
     std::snprintf(b, sizeof b,
@@ -321,23 +326,37 @@ TEST(LateAnswersProperty, ThePlotterDrawsThePathOrSaysItFailed) {
 }
 
 TEST(LateAnswersProperty, TheTableRunsThePathOrSaysItFailed) {
+    // The schedules are drawn in turn from one seed (20). The default run takes the first 40
+    // and the ones of the first 400 that once ended "done" off the path (kept so that every
+    // build runs them); TRILHO_LINK_SEEDS=N runs the first N.
+    const char* env = std::getenv("TRILHO_LINK_SEEDS");
+    const int drawn = env ? std::atoi(env) : 400;
+    const auto chosen = [&](int i) {
+        if (env || i < 40) return true;
+        for (int k : kTableHardSchedules)
+            if (i == k) return true;
+        return false;
+    };
     std::mt19937_64 rng(20);
-    const int runs =
-        std::getenv("TRILHO_LINK_SEEDS") ? std::atoi(std::getenv("TRILHO_LINK_SEEDS")) : 40;
     std::vector<table_wire::SetPointMm> path;
     for (int i = 0; i < 8; ++i)
         path.push_back({static_cast<std::uint16_t>(20 + 30 * i),
                         static_cast<std::uint16_t>(i % 2 == 0 ? 40 : 90)});
-    int ok = 0, failed = 0, offPath = 0;
-    for (int i = 0; i < runs; ++i) {
+    int runs = 0, ok = 0, failed = 0, offPath = 0, doneOffPath = 0;
+    for (int i = 0; i < drawn; ++i) {
         const Schedule s = randomSchedule(rng, true);
+        if (!chosen(i)) continue;
+        ++runs;
         const TableRun r = runTable(path, s, 3600.0);
         if (r.ok) {
             ++ok;
-            EXPECT_TRUE(sameSetPoints(collapsed(r.ran), path))
-                << describe(s) << ": called done; the board ran" << describe(r.ran);
-            EXPECT_NEAR(r.xMm, path.back().x, 0.1) << describe(s);
-            EXPECT_NEAR(r.yMm, path.back().y, 0.1) << describe(s);
+            const bool right = sameSetPoints(collapsed(r.ran), path) &&
+                               std::abs(r.xMm - path.back().x) <= 0.1 &&
+                               std::abs(r.yMm - path.back().y) <= 0.1;
+            if (!right) ++doneOffPath;
+            EXPECT_TRUE(right) << "schedule " << i << ", " << describe(s)
+                               << ": called done; the board ran" << describe(r.ran)
+                               << ", ended at (" << r.xMm << ", " << r.yMm << ") mm";
         } else {
             ++failed;
             EXPECT_TRUE(r.failed) << describe(s) << ": neither done nor failed in an hour";
@@ -346,9 +365,10 @@ TEST(LateAnswersProperty, TheTableRunsThePathOrSaysItFailed) {
         }
     }
     std::printf(
-        "table, %d seeded schedules: %d ran right, %d failed saying why (%d off the "
-        "path: line noise changed a set point the board then ran)\n",
-        runs, ok, failed, offPath);
+        "table, %d seeded schedules: %d called done (%d of them off the path), %d failed saying "
+        "why (%d off the path: line noise changed a set point the board then ran)\n",
+        runs, ok, doneOffPath, failed, offPath);
+    EXPECT_EQ(doneOffPath, 0);
     // The seed's set point has no checksum: at up to 3 % of bytes corrupted or duplicated
     // towards the board, a third of these runs see the table leave the path, and say so.
     EXPECT_GT(ok, runs / 3);

@@ -6,7 +6,9 @@
 #include <QCoreApplication>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
+#include <random>
 
 #include "core/gcode/compiler.h"
 #include "core/gcode/source_file.h"
@@ -627,21 +629,34 @@ TEST(MotionlessLoop, ACycleWithADwellIsNotOne) {
 
 // ---- lost counts and cable slip are corrected at the centre mark, and said ----------------------
 
-TEST(CentreMark, LostCountsTheDriftCheckMissesAreCorrectedThereAndSaid) {
-    // Lost counts are compared with the amplifier model only while the speeds are steady
-    // (CountsLost below). A card that misses counts above 37,000 counts/s (1623 mm/s) loses
-    // them only around the top of these rapids, where the speed is still changing: 6.8 mm
-    // that only the centre mark sees, and corrects (30,000 counts/s now stops with alarm 21).
+TEST(CentreMark, LostCountsOverTheTopOfRapidsStopAtRestBeforeTheMark) {
+    // A card that misses counts above 37,000 counts/s (1623 mm/s) loses them only around the
+    // top of these rapids, where the speed is still changing (6.8 mm a rapid). The amplifier
+    // model's steady check does not see them; until issue 20 item 11 the centre mark corrected
+    // them (warning 14) when it was crossed, and moves that never crossed it ended "finished"
+    // off their count. The rest-to-rest check stops the first rapid at rest, alarm 21.
     test::ProgramRunSpec spec;
     spec.faults.maxCountRateHz = 37000;
+    const auto r = test::runProgram(compileText("G0 X1000\nG0 X-1000\nG0 X0\nM2\n"), spec);
+    EXPECT_TRUE(hasAlarm(r, AlarmCode::CountsLost));
+    EXPECT_FALSE(r.finished);
+}
+
+TEST(CentreMark, CableSlipIsCorrectedThereAndSaid) {
+    // The drum turns more than the platform moves (0.5 % above the slip force): the count runs
+    // ahead of the platform, which no drive check can tell from a lighter payload; the centre
+    // mark corrects it when crossed, and says so (warning 14).
+    test::ProgramRunSpec spec;
+    spec.faults.slipFraction = 0.005;
     const auto r = test::runProgram(compileText("G0 X1000\nG0 X-1000\nG0 X0\nM2\n"), spec);
     ASSERT_TRUE(hasAlarm(r, AlarmCode::CounterCorrected));
     const auto e = std::find_if(r.events.begin(), r.events.end(), [](const auto& ev) {
         return ev.alarm == AlarmCode::CounterCorrected;
     });
     EXPECT_GT(std::abs(e->value), 3.0 * kCount);  // the warning's threshold
+    EXPECT_FALSE(hasAlarm(r, AlarmCode::CountsLost));
     EXPECT_TRUE(r.finished);
-    std::printf("lost counts: the centre mark corrected %.2f mm\n", e->value);
+    std::printf("cable slip: the centre mark corrected %.2f mm\n", e->value);
 }
 
 TEST(CentreMark, ACleanRunReportsNoCorrection) {
@@ -657,9 +672,15 @@ TEST(CentreMark, ACleanRunReportsNoCorrection) {
 /// while moving, the plant's extremes, and how it ended.
 struct DriftRun {
     double worstDriftMm = 0.0, maxPlantMm = 0.0;
+    /// The rest-to-rest check's gap at each in-position (reference travel less counted, mm):
+    /// the largest, and the largest fraction of its move's travel counted.
+    double worstGapMm = 0.0;
+    /// Where the platform really stands less where the count says, mm, at the end (at rest).
+    double lostMm = 0.0;
     bool finished = false;
-    AlarmCode alarm = AlarmCode::None;
+    AlarmCode alarm = AlarmCode::None;  ///< the first raised (a warning 14 may come first)
     double alarmValue = 0.0;
+    bool countsLost = false;  ///< alarm 21 was raised
 };
 
 DriftRun runForDrift(const std::string& text, double massFactor, const FaultInjection& faults,
@@ -677,6 +698,7 @@ DriftRun runForDrift(const std::string& text, double massFactor, const FaultInje
         [&] {
             const auto& st = c.status();
             r.worstDriftMm = std::max(r.worstDriftMm, std::abs(st.servo.countDriftMm));
+            r.worstGapMm = std::max(r.worstGapMm, st.servo.moveGapMm);
             r.maxPlantMm = std::max(r.maxPlantMm, cell.x());
             return st.programFinished || st.state == ControllerState::Alarm;
         },
@@ -690,9 +712,13 @@ DriftRun runForDrift(const std::string& text, double massFactor, const FaultInje
         },
         c.status().state == ControllerState::Alarm ? 3.0 : 0.0, &events);
     r.finished = c.status().programFinished;
-    for (const ControllerEvent& e : events)
+    r.lostMm = cell.x() - c.status().servo.positionMm;
+    for (const ControllerEvent& e : events) {
         if (e.kind == EventKind::AlarmRaised && r.alarm == AlarmCode::None)
             r.alarm = e.alarm, r.alarmValue = e.value;
+        if (e.kind == EventKind::AlarmRaised && e.alarm == AlarmCode::CountsLost)
+            r.countsLost = true;
+    }
     return r;
 }
 
@@ -709,6 +735,23 @@ TEST(CountsLost, NearTheSoftLimitTheyStopTheMachineNeverFinishSilently) {
     EXPECT_LT(r.maxPlantMm, MachineProfile::rail().limits.x.softMaxMm);
 }
 
+TEST(CountsLost, ARapidThatNeverCruisesStopsAtRestBeforeTheLimit) {
+    // The same card, the rapid to 1000 mm first: it peaks at 1581 mm/s without cruising, so the
+    // steady check never looks, and the counts lost over its top (4.5 mm) made the program end
+    // "Program finished !" with the platform at 1274.5 mm (issue 20 item 11, the remaining gap).
+    // The rest-to-rest check stops it in the first block's in-position, at 1004.5 mm.
+    FaultInjection f;
+    f.maxCountRateHz = 30000;
+    const DriftRun r = runForDrift("G0 X1000\nG0 X1268\nG0 X1270\nM2\n", 1.0, f);
+    std::printf(
+        "lost counts over the top of a rapid: alarm %d (%.2f mm), platform reached %.2f mm\n",
+        static_cast<int>(r.alarm), r.alarmValue, r.maxPlantMm);
+    EXPECT_FALSE(r.finished);
+    EXPECT_EQ(r.alarm, AlarmCode::CountsLost);
+    EXPECT_GT(r.alarmValue, 3.5);
+    EXPECT_LT(r.maxPlantMm, 1010.0);
+}
+
 TEST(CountsLost, AProfileThatKnowsTheCardsRateIsSlowedAndLosesNone) {
     MachineProfile p = MachineProfile::rail();
     p.plant.counterMaxRateHz = 30000;  // 95 %: 1250 mm/s
@@ -722,20 +765,90 @@ TEST(CountsLost, AProfileThatKnowsTheCardsRateIsSlowedAndLosesNone) {
 
 TEST(CountsLost, NoFalseAlarmAtAnyMassFeedOrLength) {
     // The model's own error: masses x0.5 to x3, rapids and feeds, long and short moves, the
-    // soft limits. The worst drift is printed against the allowance (2 mm + 0.2 % of travel).
-    double worst = 0.0;
-    for (double mass : {0.5, 1.0, 2.0, 3.0}) {
-        for (const char* program :
-             {"G0 X1270\nG0 X-1270\nG0 X0\nM2\n", "G1 X600 F10\nG1 X0 F50\nG1 X3 F100\nM2\n",
-              "G0 X0.5\nG0 X1\nG1 X200 F30\nG0 X-200\nM2\n"}) {
-            const DriftRun r = runForDrift(program, mass, {}, MachineProfile::rail(), 120.0);
-            SCOPED_TRACE(std::string(program) + " mass x" + std::to_string(mass));
-            EXPECT_TRUE(r.finished);
-            EXPECT_EQ(r.alarm, AlarmCode::None) << r.alarmValue;
-            worst = std::max(worst, r.worstDriftMm);
+    // soft limits, on time and with late ticks (20 ms, 5 % of the ticks). The worst drift and
+    // the worst rest-to-rest gap are printed against their allowances (2 mm + 0.2 % of the
+    // travel; restCountLossMm + restCountLossFraction of the move's travel).
+    double worst = 0.0, worstGap = 0.0;
+    for (double jitter : {0.0, 0.020}) {
+        for (double mass : {0.5, 1.0, 2.0, 3.0}) {
+            for (const char* program :
+                 {"G0 X1270\nG0 X-1270\nG0 X0\nM2\n", "G1 X600 F10\nG1 X0 F50\nG1 X3 F100\nM2\n",
+                  "G0 X0.5\nG0 X1\nG1 X200 F30\nG0 X-200\nM2\n",
+                  "G0 X1000\nG0 X1268\nG0 X1270\nG0 X-1000\nG0 X-1270\nM2\n"}) {
+                FaultInjection f;
+                f.tickJitterMaxS = jitter;
+                f.tickJitterRate = 0.05;
+                const DriftRun r = runForDrift(program, mass, f, MachineProfile::rail(), 120.0);
+                SCOPED_TRACE(std::string(program) + " mass x" + std::to_string(mass) +
+                             " late ticks " + std::to_string(jitter));
+                EXPECT_TRUE(r.finished);
+                EXPECT_EQ(r.alarm, AlarmCode::None) << r.alarmValue;
+                worst = std::max(worst, r.worstDriftMm);
+                worstGap = std::max(worstGap, r.worstGapMm);
+                std::printf("  mass x%.1f, late ticks %.0f ms: worst gap %.3f mm\n", mass,
+                            jitter * 1e3, r.worstGapMm);
+            }
         }
     }
-    std::printf("count drift without lost counts: worst %.3f mm\n", worst);
+    std::printf("count drift without lost counts: worst %.3f mm; rest-to-rest gap: worst %.3f mm\n",
+                worst, worstGap);
+}
+
+// Counts lost anywhere (issue 20 item 11): seeded moves (positions, rapids and feeds, masses
+// x0.5-x3, card rates from 20,000 to 45,000 counts/s, below and above the rates the moves
+// reach). Whatever the card loses, the program never ends "finished" with the platform off
+// its count by more than the rest-to-rest check's allowance for the moves it ran, and a loss
+// above it stops the machine with alarm 21. TRILHO_COUNT_SEEDS runs more than the default 24.
+TEST(CountsLost, AnywhereInAMoveTheyNeverEndInSilentSuccess) {
+    const char* env = std::getenv("TRILHO_COUNT_SEEDS");
+    const int runs = env ? std::atoi(env) : 24;
+    const MachineProfile p = MachineProfile::rail();
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    int finished = 0, stopped = 0, lossy = 0;
+    double worstSilentMm = 0.0;
+    for (int i = 0; i < runs; ++i) {
+        const double a = std::round((u(rng) * 2.0 - 1.0) * 1270.0);
+        const double b = std::round((u(rng) * 2.0 - 1.0) * 1270.0);
+        const bool rapid = u(rng) < 0.6;
+        const int feed = 10 + static_cast<int>(u(rng) * 90.0);
+        const double mass = 0.5 + 2.5 * u(rng);
+        FaultInjection f;
+        f.maxCountRateHz = 20000.0 + 25000.0 * u(rng);
+        char text[160];
+        std::snprintf(text, sizeof text, "G0 X%.0f\n%s X%.0f%s\nM2\n", a, rapid ? "G0" : "G1", b,
+                      rapid ? "" : (" F" + std::to_string(feed)).c_str());
+        const DriftRun r = runForDrift(text, mass, f, p, 120.0);
+        // The allowance of the two moves (0 to a, a to b), mm.
+        const double allowed = 2.0 * p.loop.restCountLossMm +
+                               p.loop.restCountLossFraction * (std::abs(a) + std::abs(b - a));
+        SCOPED_TRACE("run " + std::to_string(i) + ": " + text + " mass x" + std::to_string(mass) +
+                     ", card " + std::to_string(f.maxCountRateHz) + " counts/s");
+        if (std::abs(r.lostMm) > 2.0 * kCount) ++lossy;
+        if (std::getenv("TRILHO_COUNT_VERBOSE"))
+            std::printf(
+                "run %d: X%.0f %s X%.0f mass x%.2f card %.0f: %s, alarm %d (%.3f), lost "
+                "%.3f mm, worst gap %.3f mm\n",
+                i, a, rapid ? "G0" : "G1", b, mass, f.maxCountRateHz,
+                r.finished ? "finished" : "stopped", static_cast<int>(r.alarm), r.alarmValue,
+                r.lostMm, r.worstGapMm);
+        if (r.finished) {
+            ++finished;
+            EXPECT_LE(std::abs(r.lostMm), allowed) << "finished with the count off";
+            worstSilentMm = std::max(worstSilentMm, std::abs(r.lostMm));
+            EXPECT_LT(r.maxPlantMm, p.limits.x.softMaxMm + allowed);
+        } else {
+            ++stopped;
+            // Alarm 21; a move that crossed the centre mark may have said warning 14 first
+            // (the mark corrected the count): the card still lost counts in it.
+            EXPECT_TRUE(r.countsLost)
+                << "alarm " << static_cast<int>(r.alarm) << " (" << r.alarmValue << ")";
+        }
+    }
+    std::printf(
+        "counts lost, %d seeded runs: %d lost counts, %d stopped on alarm 21, %d finished (the "
+        "worst count off at a finish %.3f mm)\n",
+        runs, lossy, stopped, finished, worstSilentMm);
 }
 
 // ---- after an alarm, the next legal action works ---------------------------------------------

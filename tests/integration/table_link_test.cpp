@@ -110,7 +110,9 @@ TEST(TableLink, ASquareReachesEachCornerWithAnAck) {
     }
     expectWithinACount(link);
     EXPECT_EQ(link.device.stats().reached, kSquare.size());
-    EXPECT_EQ(link.host.stats().sent, kSquare.size());
+    // The set points and the check before the first (its answer gives the board's count).
+    EXPECT_EQ(link.host.stats().countRequests, 1u);
+    EXPECT_EQ(link.host.stats().sent, kSquare.size() + 1);
     EXPECT_EQ(link.host.stats().timeouts, 0u);
     EXPECT_EQ(link.host.stats().unexpected, 0u);
     std::printf("square of %zu set points at 9600 bit/s: %.3f s of virtual time\n", kSquare.size(),
@@ -141,8 +143,9 @@ TEST(TableLink, DroppedBytesCostRepeatsNotThePositions) {
         expectWithinACount(link);
         EXPECT_NEAR(link.device.table().positionMm(0), path.back().x, link.mmPerCount(0));
         EXPECT_NEAR(link.device.table().positionMm(1), path.back().y, link.mmPerCount(1));
-        EXPECT_EQ(link.host.stats().sent,
-                  path.size() + link.host.stats().timeouts + link.host.stats().checks);
+        EXPECT_EQ(link.host.stats().sent, path.size() + link.host.stats().timeouts +
+                                              link.host.stats().checks +
+                                              link.host.stats().countRequests);
         timeouts += link.host.stats().timeouts;
         std::printf(
             "2 %% of bytes dropped (seed %llu): %llu down, %llu up; %llu timeouts, %llu stale "
@@ -164,7 +167,7 @@ TEST(TableLink, ASetPointOutsideTheTableIsRefusedAndNothingMoves) {
     link.run(30.0);
     ASSERT_TRUE(link.host.failed());
     EXPECT_EQ(link.host.error(), "the table refused set point (400, 100) mm: outside the table");
-    EXPECT_EQ(link.device.stats().refused, 1u);
+    EXPECT_EQ(link.device.stats().refused, 2u);  // the check before the first set point, too
     const double x = link.device.table().positionMm(0);
     for (int i = 0; i < 500; ++i)
         link.step();

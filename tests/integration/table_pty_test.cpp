@@ -92,15 +92,18 @@ TEST(TablePty, TheHostDrivesTrilhoDeviceTableUntilAck) {
     ASSERT_TRUE(host.reached());
     EXPECT_EQ(host.reached()->x, 10);
     EXPECT_EQ(host.reached()->y, 40);
-    EXPECT_EQ(line.bytesWritten(), 8u);
-    EXPECT_EQ(line.bytesRead(), 2 * table_wire::kAnswerBytes);  // two answers of 11 bytes
+    // The check before the first set point (the board's move count; refused, nothing moves),
+    // then the two set points: three packets of 4 bytes, three answers of 11.
+    EXPECT_EQ(host.stats().countRequests, 1u);
+    EXPECT_EQ(line.bytesWritten(), 12u);
+    EXPECT_EQ(line.bytesRead(), 3 * table_wire::kAnswerBytes);
     std::printf("through %s: two set points acknowledged in %.3f s\n", qPrintable(device.path),
                 now());
     line.close();
     device.process.terminate();
     ASSERT_TRUE(device.process.waitForFinished(5000));
     const QString summary = QString::fromUtf8(device.process.readAllStandardOutput());
-    EXPECT_TRUE(summary.contains(QStringLiteral("set points 2, ACK 2, NAK 0, CAN 0")))
+    EXPECT_TRUE(summary.contains(QStringLiteral("set points 3, ACK 2, NAK 1, CAN 0")))
         << summary.toStdString();
 }
 

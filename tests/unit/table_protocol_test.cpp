@@ -86,10 +86,17 @@ double run(TableHost& host, ScriptedTable& table, double maxS, double t = 0.0) {
 std::optional<std::uint8_t> silent(const SetPointMm&) {
     return std::nullopt;
 }
+/// The host without the check before its first set point: the tests of the other rules script
+/// the board's answers from the first set point on (the count request has its own tests).
+TableHostConfig rulesOnly() {
+    TableHostConfig c;
+    c.askCountFirst = false;
+    return c;
+}
 }  // namespace
 
 TEST(TableHost, GoldenBytesOneSetPointInFlight) {
-    TableHost host;
+    TableHost host(rulesOnly());
     ASSERT_TRUE(host.moveTo(100, 50));
     ASSERT_TRUE(host.moveTo(180, 120));
     host.poll(0.0);
@@ -107,7 +114,7 @@ TEST(TableHost, GoldenBytesOneSetPointInFlight) {
 }
 
 TEST(TableHost, NonIntegerMillimetresRoundToTheNearestAndOutOfRangeIsRefused) {
-    TableHost host;
+    TableHost host(rulesOnly());
     ASSERT_TRUE(host.moveTo(99.5, 50.49));  // halves away from zero: 100, 50
     ASSERT_TRUE(host.moveTo(-0.4, 65535.4));
     std::string why;
@@ -123,7 +130,8 @@ TEST(TableHost, NonIntegerMillimetresRoundToTheNearestAndOutOfRangeIsRefused) {
 }
 
 TEST(TableHost, NoAnswerRepeatsTheSameSetPointThenFailsNamingIt) {
-    TableHost host;  // vmax 150 mm/s: (150, 0) from the origin is 1 s; deadline 2 + 2 x 1 s
+    TableHost host(
+        rulesOnly());  // vmax 150 mm/s: (150, 0) from the origin is 1 s; deadline 2 + 2 x 1 s
     ScriptedTable table{silent, {}, {}};
     ASSERT_TRUE(host.moveTo(150, 30));
     const double t = run(host, table, 60.0);
@@ -140,7 +148,7 @@ TEST(TableHost, NoAnswerRepeatsTheSameSetPointThenFailsNamingIt) {
 }
 
 TEST(TableHost, ALostAnswerCostsOneRepeat) {
-    TableHost host;
+    TableHost host(rulesOnly());
     int calls = 0;
     ScriptedTable table{[&](const SetPointMm&) -> std::optional<std::uint8_t> {
                             if (++calls == 1) return std::nullopt;  // the ACK was lost
@@ -161,7 +169,7 @@ TEST(TableHost, ALostAnswerCostsOneRepeat) {
 }
 
 TEST(TableHost, NakFailsOutsideTheTableAndRetryResendsIt) {
-    TableHost host;
+    TableHost host(rulesOnly());
     bool refuse = true;
     ScriptedTable table{[&](const SetPointMm& sp) -> std::optional<std::uint8_t> {
                             return refuse && sp.x > 300 ? kNak : kAck;
@@ -186,7 +194,7 @@ TEST(TableHost, NakFailsOutsideTheTableAndRetryResendsIt) {
 }
 
 TEST(TableHost, CanFailsOverCurrentAndForgetsWhereTheTableIs) {
-    TableHost host;
+    TableHost host(rulesOnly());
     ScriptedTable table{[](const SetPointMm& sp) -> std::optional<std::uint8_t> {
                             return sp.x == 200 ? kCan : kAck;
                         },
@@ -206,7 +214,7 @@ TEST(TableHost, CanFailsOverCurrentAndForgetsWhereTheTableIs) {
 }
 
 TEST(TableHost, GarbageIsCountedNotObeyed) {
-    TableHost host;
+    TableHost host(rulesOnly());
     answerWith(host, kAck, 5, 5, 0.0);  // nothing asked yet
     EXPECT_EQ(host.stats().unexpected, 1u);
     ASSERT_TRUE(host.moveTo(5, 5));
@@ -227,7 +235,7 @@ TEST(TableHost, GarbageIsCountedNotObeyed) {
 }
 
 TEST(TableHost, AnAnswerNamesItsSetPointAndALateOneIsNotTakenForTheNext) {
-    TableHost host;
+    TableHost host(rulesOnly());
     ASSERT_TRUE(host.moveTo(10, 20));
     ASSERT_TRUE(host.moveTo(30, 40));
     host.poll(0.0);
@@ -247,7 +255,7 @@ TEST(TableHost, AnAnswerNamesItsSetPointAndALateOneIsNotTakenForTheNext) {
 // Issue 20 item 12: line noise was told as "the table refused set point (0, 0) mm: outside the
 // table". A NAK naming another set point is noise on the way: nothing moved, sent again.
 TEST(TableHost, ANakOfASetPointChangedOnTheWayIsNoiseAndSendsItAgain) {
-    TableHost host;
+    TableHost host(rulesOnly());
     ASSERT_TRUE(host.moveTo(0, 0));
     host.poll(0.0);
     (void)host.takeOutput();
@@ -267,7 +275,7 @@ TEST(TableHost, ANakOfASetPointChangedOnTheWayIsNoiseAndSendsItAgain) {
 }
 
 TEST(TableHost, AMoveFromASetPointNotHeardOfIsTheTableOffThePath) {
-    TableHost host;
+    TableHost host(rulesOnly());
     ASSERT_TRUE(host.moveTo(20, 40));
     ASSERT_TRUE(host.moveTo(50, 90));
     host.poll(0.0);
@@ -284,7 +292,7 @@ TEST(TableHost, AMoveFromASetPointNotHeardOfIsTheTableOffThePath) {
 }
 
 TEST(TableHost, ALastSetPointSentTwiceIsCheckedOnceMore) {
-    TableHost host;
+    TableHost host(rulesOnly());
     ASSERT_TRUE(host.moveTo(30, 40));
     host.poll(0.0);
     (void)host.takeOutput();
@@ -311,7 +319,7 @@ TEST(TableHost, ALastSetPointSentTwiceIsCheckedOnceMore) {
 // late repeat's answer came. The check's answer comes after every copy (the line keeps the
 // order) and names the check alone: it counts the detour.
 TEST(TableHost, TheChecksAnswerCountsACopyChangedOnTheWay) {
-    TableHost host;
+    TableHost host(rulesOnly());
     ASSERT_TRUE(host.moveTo(30, 40));
     host.poll(0.0);
     (void)host.takeOutput();
@@ -330,7 +338,7 @@ TEST(TableHost, TheChecksAnswerCountsACopyChangedOnTheWay) {
 }
 
 TEST(TableHost, AnAckOfASetPointNeverSentIsTheTableOffThePath) {
-    TableHost host;
+    TableHost host(rulesOnly());
     ASSERT_TRUE(host.moveTo(50, 50));
     ASSERT_TRUE(host.moveTo(150, 50));
     host.poll(0.0);
@@ -351,7 +359,7 @@ TEST(TableHost, AnAckOfASetPointNeverSentIsTheTableOffThePath) {
 }
 
 TEST(TableHost, TheDeadlineGrowsWithTheLongerTravel) {
-    TableHostConfig c;
+    TableHostConfig c = rulesOnly();
     c.vmaxMmS = 100.0;
     TableHost host(c);
     ASSERT_TRUE(host.moveTo(300, 100));
@@ -392,7 +400,7 @@ TEST(TableWire, AnswersByteForByteWithTheMoveCount) {
 // finds the table at (50, 90): a zero move, answered "from (50, 90)" as any repeat. Only the
 // count tells: three moves started where the program had two sent and answered.
 TEST(TableHost, ADetourWhoseAnswerAndTheNextAreLostIsSeenByTheCount) {
-    TableHost host;
+    TableHost host(rulesOnly());
     ASSERT_TRUE(host.moveTo(20, 40));
     ASSERT_TRUE(host.moveTo(50, 90));
     host.poll(0.0);
@@ -421,7 +429,7 @@ TEST(TableHost, ADetourWhoseAnswerAndTheNextAreLostIsSeenByTheCount) {
 // run finishes. The count wraps at 256. After the end, an answer that counts one move more (a
 // copy still on its way ran) fails the host that was idle.
 TEST(TableHost, RepeatsAreNoMovesAndTheCountWraps) {
-    TableHost host;
+    TableHost host(rulesOnly());
     ASSERT_TRUE(host.moveTo(10, 10));
     ASSERT_TRUE(host.moveTo(20, 20));
     ASSERT_TRUE(host.moveTo(30, 30));
@@ -446,4 +454,66 @@ TEST(TableHost, RepeatsAreNoMovesAndTheCountWraps) {
     EXPECT_NE(host.error().find("counts 3 moves started where the program had 1 sent"),
               std::string::npos)
         << host.error();
+}
+
+// Issue 20 item 10, the last gap: the first set point's detour. (20, 40) arrived as (18, 40),
+// ran, and its answer was lost; the repeat ran (20, 40) from there and was answered. Without a
+// count known before, the first answer set the base (2) and the host went on as if nothing had
+// happened. The check before the first set point gives the count (5, from a board that has run
+// before): the answer counts 7 where the program had sent one move.
+TEST(TableHost, TheFirstSetPointsDetourIsSeenByTheCountAskedBefore) {
+    TableHost host;
+    ASSERT_TRUE(host.moveTo(20, 40));
+    ASSERT_TRUE(host.moveTo(50, 90));
+    host.poll(0.0);
+    // First the check: refused by every table, nothing moves; its answer carries the count.
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{255, 255, 255, 255}));
+    EXPECT_EQ(host.stats().countRequests, 1u);
+    EXPECT_FALSE(host.idle());
+    answerWith(host, kNak, 65535, 65535, 0.1, 0, 0, 5);
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 20, 0, 40}));
+    host.poll(10.0);  // past the deadline: sent again
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 20, 0, 40}));
+    answerWith(host, kAck, 20, 40, 10.5, 18, 40, 7);
+    ASSERT_TRUE(host.failed());
+    EXPECT_TRUE(host.offPath());
+    EXPECT_NE(host.error().find("counts 7 moves started where the program had 6 sent"),
+              std::string::npos)
+        << host.error();
+}
+
+// The same first set point run right: the check's count, one move, done. A second copy of the
+// check, answered late, is no answer to the set point.
+TEST(TableHost, TheCountAskedBeforeTheFirstSetPointLetsARightRunEnd) {
+    TableHost host;
+    ASSERT_TRUE(host.moveTo(20, 40));
+    host.poll(0.0);
+    (void)host.takeOutput();
+    host.poll(10.0);  // the check's 10 s deadline: sent again
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{255, 255, 255, 255}));
+    answerWith(host, kNak, 65535, 65535, 10.1, 7, 7, 3);  // the board ran before: (7, 7), 3
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 20, 0, 40}));
+    answerWith(host, kNak, 65535, 65535, 10.2, 7, 7, 3);  // the second copy's: late
+    EXPECT_FALSE(host.failed()) << host.error();
+    answerWith(host, kAck, 20, 40, 10.8, 7, 7, 4);
+    EXPECT_TRUE(host.idle()) << host.error();
+    EXPECT_EQ(host.stats().countRequests, 1u);
+    // clear() forgets the count (a set point abandoned may still run): asked again.
+    host.clear();
+    ASSERT_TRUE(host.moveTo(30, 40));
+    host.poll(11.0);
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{255, 255, 255, 255}));
+}
+
+TEST(TableHost, NoAnswerToTheCountRequestFailsNamingTheFirstSetPoint) {
+    TableHost host;
+    ScriptedTable table{silent, {}, {}};
+    ASSERT_TRUE(host.moveTo(150, 30));
+    run(host, table, 60.0);
+    ASSERT_TRUE(host.failed());
+    EXPECT_EQ(host.error(),
+              "no answer from the table to the check before set point (150, 30) mm after 4 "
+              "tries: is it connected and on?");
+    EXPECT_FALSE(host.offPath());
+    EXPECT_EQ(host.queued(), 1u);  // nothing was sent of the program
 }
