@@ -255,6 +255,15 @@ class WorkbenchTest : public QObject {
             qPrintable(text));
     }
 
+    // A window with no Model tab (the plotter: no model to tune) still owns its model page: the
+    // page was left without a parent and leaked (LeakSanitizer, widget.xy_screens).
+    void theModelPageIsOwnedEvenWithoutItsTab() {
+        WorkbenchWindow w(MachineProfile::xyPlotter());
+        QCOMPARE(w.tabs()->count(), 2);
+        QVERIFY(w.model());
+        QCOMPARE(w.findChild<ModelView*>(), w.model());
+    }
+
     // The DC table: per axis, with its model page.
     void theDcTableStepsEachAxis() {
         WorkbenchWindow w(MachineProfile::xyDcTable());

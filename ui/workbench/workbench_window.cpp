@@ -195,7 +195,7 @@ void WorkbenchWindow::build() {
 
     overlay_ = new RunOverlay;
     terms_ = new TermsView;
-    model_ = new ModelView;
+    model_ = new ModelView(this);  // owned by the window even when no tab shows it (the plotter)
     tabs_ = new QTabWidget;
     tabs_->addTab(overlay_, QString());
     tabs_->addTab(terms_, QString());
