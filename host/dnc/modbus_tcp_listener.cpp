@@ -285,9 +285,24 @@ bool ModbusTcpListener::serve(Connection& c) {
                 if (!flush(c)) return false;
                 if (eof) drop(fd, QString());  // the client closed: nothing more will come
                 return false;
-            case MbapScan::Close:
-                drop(fd, QString::fromStdString(f.reason));
+            case MbapScan::Close: {
+                // The requests before the bad frame were carried out: their answers go first.
+                // The line goes through the refusal summary (a client that does this in a loop
+                // must not flood the history: issue 20 item 2).
+                const QString name = c.name;
+                if (!flush(c)) return false;
+                // Closed with unread bytes in the kernel, the socket would send a reset, which
+                // may throw away the answers just sent: end our side, then read what waits.
+                ::shutdown(fd, SHUT_WR);
+                char junk[4096];
+                for (int reads = 0; reads < 16 && ::recv(fd, junk, sizeof junk, MSG_DONTWAIT) > 0;
+                     ++reads) {
+                }
+                drop(fd, QString());
+                emit refusal(name, QStringLiteral("DNC: connection from %1 closed: %2")
+                                       .arg(name, QString::fromStdString(f.reason)));
                 return false;
+            }
             case MbapScan::SkipFrame:
                 emit refusal(c.name, QStringLiteral("DNC: a frame from %1 dropped unanswered: %2")
                                          .arg(c.name, QString::fromStdString(f.reason)));
