@@ -2,6 +2,7 @@
 // What `trilho-cli run` shares between the rail and the XY machines: the options, the report
 // (history lines, alarms) and the --trace file.
 #include <fcntl.h>
+#include <pthread.h>
 #include <unistd.h>
 #include <QFile>
 #include <QFileInfo>
@@ -10,6 +11,7 @@
 #include <QSaveFile>
 #include <QStringList>
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -182,10 +184,24 @@ class TraceFile {
         buffer_.clear();
     }
     void write(const char* data, qint64 len) {
+        // A pipe whose reader left is EPIPE here, said after the run, never a SIGPIPE that
+        // kills the whole command unreported (exit 141): blocked around the write, and the
+        // signal the write raised taken back before it is unblocked, on whichever thread
+        // writes (trace_queue.h's writer, or `tune step`'s own).
+        sigset_t pipe, before;
+        sigemptyset(&pipe);
+        sigaddset(&pipe, SIGPIPE);
+        pthread_sigmask(SIG_BLOCK, &pipe, &before);
         errno = 0;
-        if (file_->write(data, len) == len || !error_.isEmpty()) return;
-        // The system's reason where there is one (QFile on a descriptor says "Unknown error").
+        const bool whole = file_->write(data, len) == len;
         const int e = errno;
+        if (e == EPIPE && !sigismember(&before, SIGPIPE)) {
+            const timespec now{};
+            sigtimedwait(&pipe, nullptr, &now);
+        }
+        pthread_sigmask(SIG_SETMASK, &before, nullptr);
+        if (whole || !error_.isEmpty()) return;
+        // The system's reason where there is one (QFile on a descriptor says "Unknown error").
         if (e == EPIPE)
             error_ = QStringLiteral("the program reading it closed the pipe");
         else if (e != 0)

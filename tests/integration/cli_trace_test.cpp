@@ -134,44 +134,78 @@ TEST_F(CliTrace, AFifoGetsTheSameBytesAsAFile) {
 
 // A pipe whose reader goes away: the run's own result stands, the trace's failure is said naming
 // the FIFO (it was a SIGPIPE that killed the run unreported, exit 141).
-TEST_F(CliTrace, APipeWhoseReaderLeavesIsSaidNamingIt) {
-    const QString prog = trilho::test::writeIn(dir, QStringLiteral("long.G"), kLongProgram);
+/// What a command said when the reader of its --trace FIFO took the first 1000 bytes and left.
+struct LeftPipe {
+    int exit = -1;
+    bool normalExit = false;
+    QString out, err;
+    QByteArray first;  ///< the bytes the reader took
+};
+
+/// Runs trilho-cli args with "--trace fifo" (a new FIFO in dir) and a reader that leaves early.
+LeftPipe readerLeavesEarly(const QTemporaryDir& dir, QStringList args) {
+    LeftPipe r;
     const QString fifo = dir.filePath(QStringLiteral("early.fifo"));
-    ASSERT_EQ(QProcess::execute(QStringLiteral("mkfifo"), {fifo}), 0);
-    // Close-on-exec: the run must not inherit a read end of its own FIFO (it would never see
-    // the reader leave).
+    if (QProcess::execute(QStringLiteral("mkfifo"), {fifo}) != 0) return r;
+    // Close-on-exec: the command must not inherit a read end of its own FIFO (it would never
+    // see the reader leave).
     const int readEnd =
         ::open(QFile::encodeName(fifo).constData(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-    ASSERT_GE(readEnd, 0);
+    if (readEnd < 0) return r;
     ::fcntl(readEnd, F_SETFL, ::fcntl(readEnd, F_GETFL) & ~O_NONBLOCK);
     QProcess run;
-    run.start(QStringLiteral(TRILHO_CLI), {QStringLiteral("run"), QStringLiteral("--virtual-time"),
-                                           QStringLiteral("--trace"), fifo, prog});
-    ASSERT_TRUE(run.waitForStarted());
-    // Take the first 1000 bytes, then leave: the trace is 786 KB, far over a pipe's 64 KB, so
-    // the run is still writing when the reader is gone.
-    // A FIFO's read end reads as ended until a writer opens it: wait for the first bytes
-    // (poll, not a sleep; Linux reports no hang-up to a reader that never had a writer).
+    args << QStringLiteral("--trace") << fifo;
+    run.start(QStringLiteral(TRILHO_CLI), args);
+    if (!run.waitForStarted()) return r;
+    // Take the first 1000 bytes, then leave, while the command is still writing. A FIFO's read
+    // end reads as ended until a writer opens it: wait for the first bytes (poll, not a sleep;
+    // Linux reports no hang-up to a reader that never had a writer).
     char buf[1000];
     std::size_t got = 0;
     while (got < sizeof buf) {
         pollfd p{readEnd, POLLIN, 0};
-        ASSERT_EQ(::poll(&p, 1, 60000), 1) << "no trace within 60 s";
+        if (::poll(&p, 1, 60000) != 1) break;
         const ssize_t n = ::read(readEnd, buf + got, sizeof buf - got);
-        ASSERT_GT(n, 0);
+        if (n <= 0) break;
         got += static_cast<std::size_t>(n);
     }
     ::close(readEnd);
-    ASSERT_TRUE(run.waitForFinished(60000));
-    const QString out = QString::fromUtf8(run.readAllStandardOutput());
-    const QString err = QString::fromUtf8(run.readAllStandardError());
-    EXPECT_EQ(run.exitStatus(), QProcess::NormalExit);
-    EXPECT_EQ(run.exitCode(), 2) << err.toStdString();
-    EXPECT_TRUE(out.contains(QStringLiteral("Program finished !"))) << out.toStdString();
-    EXPECT_EQ(err, QStringLiteral("trilho-cli run: cannot write trace '%1': the program reading it "
-                                  "closed the pipe\n")
-                       .arg(fifo));
-    EXPECT_TRUE(QByteArray(buf, 16) == QByteArray("t_s,block_n,setp"));
+    if (!run.waitForFinished(60000)) return r;
+    r.first = QByteArray(buf, static_cast<qsizetype>(got));
+    r.normalExit = run.exitStatus() == QProcess::NormalExit;
+    r.exit = run.exitCode();
+    r.out = QString::fromUtf8(run.readAllStandardOutput());
+    r.err = QString::fromUtf8(run.readAllStandardError());
+    return r;
+}
+
+TEST_F(CliTrace, APipeWhoseReaderLeavesIsSaidNamingIt) {
+    const QString prog = trilho::test::writeIn(dir, QStringLiteral("long.G"), kLongProgram);
+    // The trace is 786 KB, far over a pipe's 64 KB: the run still writes when the reader leaves.
+    const LeftPipe r =
+        readerLeavesEarly(dir, {QStringLiteral("run"), QStringLiteral("--virtual-time"), prog});
+    EXPECT_TRUE(r.normalExit);
+    EXPECT_EQ(r.exit, 2) << r.err.toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral("Program finished !"))) << r.out.toStdString();
+    EXPECT_EQ(r.err, QStringLiteral("trilho-cli run: cannot write trace '%1': the program reading "
+                                    "it closed the pipe\n")
+                         .arg(dir.filePath(QStringLiteral("early.fifo"))));
+    EXPECT_TRUE(r.first.startsWith("t_s,block_n,setp"));
+}
+
+// `tune step` writes its trace from its own thread: a reader that leaves was a SIGPIPE that
+// killed it with nothing said (exit 141, the outside tester); now it is said, as for `run`.
+TEST_F(CliTrace, TuneStepSaysAPipeWhoseReaderLeft) {
+    const LeftPipe r =
+        readerLeavesEarly(dir, {QStringLiteral("tune"), QStringLiteral("step"),
+                                QStringLiteral("--amplitude"), QStringLiteral("100")});
+    EXPECT_TRUE(r.normalExit);
+    EXPECT_EQ(r.exit, 2) << r.err.toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("cannot write trace '%1': the program reading it "
+                                              "closed the pipe")
+                                   .arg(dir.filePath(QStringLiteral("early.fifo")))))
+        << r.err.toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral("following error max"))) << r.out.toStdString();
 }
 
 TEST_F(CliTrace, TheSidecarRecordsTheRunAndHowItEnded) {
