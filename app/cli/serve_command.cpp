@@ -167,6 +167,9 @@ int serveCommand(const QStringList& args) {
     if (!integer(baudOpt, 50, 4000000, baud))
         return usage(QStringLiteral("--baud must be 50-4000000"));
     if (!integer(unitOpt, 1, 247, unit)) return usage(QStringLiteral("--unit must be 1-247"));
+    if ((parser.isSet(baudOpt) || parser.isSet(unitOpt)) && !parser.isSet(rtuOpt))
+        return usage(
+            QStringLiteral("--baud and --unit are the RTU line's: they need --modbus-rtu"));
     if (!integer(scaleOpt, 1, 10000, scale))
         return usage(QStringLiteral("--time-scale must be 1-10000 periods per millisecond"));
     if (parser.isSet(scaleOpt) && !parser.isSet(virtualOpt))
@@ -177,8 +180,6 @@ int serveCommand(const QStringList& args) {
         if (!parsed.fault) return usage(QString::fromStdString(parsed.error));
         faults.push_back(*parsed.fault);
     }
-    if (!faults.empty() && !parser.isSet(virtualOpt))
-        return usage(QStringLiteral("--fault needs --virtual-time"));
     double reportS = 0.0;
     if (parser.isSet(reportOpt)) {
         bool ok = false;
@@ -213,6 +214,8 @@ int serveCommand(const QStringList& args) {
         return usage(
             QStringLiteral("--fault is for the rail (the XY machines' faults are in "
                            "the screens' Simulation dock)"));
+    if (!faults.empty() && !parser.isSet(virtualOpt))
+        return usage(QStringLiteral("--fault needs --virtual-time"));
 
     if (profile.kind != MachineKind::Rail && parser.isSet(reportOpt))
         return usage(

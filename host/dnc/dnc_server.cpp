@@ -347,6 +347,16 @@ QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& serv
                             .arg(client));
         return QModbusExceptionResponse(fc, toQt(e));
     }
+    if (machine_.profile().kind != MachineKind::Rail && d.write.start < hold::kKd + 2 &&
+        std::size_t{d.write.start} + d.write.values.size() > hold::kKp) {
+        // The rail's gains: an XY machine has none (exception 06, as documented, and why).
+        refused(client, QStringLiteral("DNC: write refused (the XY machines have no rail gains): "
+                                       "function %1 at %2 from %3")
+                            .arg(int(fc))
+                            .arg(d.write.start)
+                            .arg(client));
+        return QModbusExceptionResponse(fc, QModbusPdu::ServerDeviceBusy);
+    }
     const bool intoDownload =
         std::size_t{d.write.start} + d.write.values.size() > hold::kDownloadNumber;
     if (intoDownload && !takeDownloadBlock(client)) {
@@ -597,6 +607,14 @@ void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq,
             if (pending_) return finish(CommandResult::Busy);
             return finish(CommandResult::Applied, machine_.send(CommandKind::SelectManual));
         case Command::SetLaw:
+            if (machine_.profile().kind != MachineKind::Rail) {
+                // The rail's law: an XY machine has none to choose (result 4, and why).
+                refused(client, QStringLiteral("DNC: command set law (sequence %1) from %2 "
+                                               "refused: the XY machines have no rail law")
+                                    .arg(seq)
+                                    .arg(client));
+                return finishCommand(seq, CommandResult::Busy, std::nullopt, client);
+            }
             // The law comes with its period (issue 22 item 1); never changed under a program.
             if (pending_ || runningState(s.state)) return finish(CommandResult::Busy);
             return finish(CommandResult::Applied,

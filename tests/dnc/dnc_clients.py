@@ -726,6 +726,7 @@ def run_xy(cli):
                 check(p.ir(IN_MACHINE)[0] == kind and p.ir(IN_AXES)[0] == 2,
                       f"{machine}: machine {kind}, two axes")
                 check(p.exc(p.write(H_KP, regs_of(2.0))) == 6, f"{machine}: the rail's gains refused")
+                check(p.command(9, 0) == 4, f"{machine}: the rail's law refused (result 4)")
                 text = "N10 G01 X030 Y020 F050\nN20 M02\n"
                 check(download(p, 7, text) == APPLIED, f"{machine}: program 7 downloaded")
                 check(p.command(AUTO) == APPLIED, f"{machine}: Automatic applied")
@@ -742,7 +743,10 @@ def run_xy(cli):
                 rc, out = srv.stop()
             check(rc == 0, f"{machine}: server exit status {rc} after SIGTERM")
             check("program 7 started" in out, f"{machine}: the history says program 7 started")
-            check("rail" not in out, f"{machine}: no line of the link's history speaks of the rail")
+            check("no rail gains" in out and "no rail law" in out and "machine is busy" not in out,
+                  f"{machine}: the gains and the law refused as the XY machine's, not as busy")
+            check("rail" not in out.replace("no rail gains", "").replace("no rail law", ""),
+                  f"{machine}: no other line of the link's history speaks of the rail")
 
 
 def mbpoll(port, *args):
