@@ -286,6 +286,10 @@ int stepCommand(const QStringList& args) {
         if (auto e = number(newKpOpt, -1e6, 1e6, change.gains.kp)) return *e;
         if (auto e = number(newKiOpt, -1e6, 1e6, change.gains.ki)) return *e;
         if (auto e = number(newKdOpt, -1e6, 1e6, change.gains.kd)) return *e;
+        if (!parser.isSet(newKpOpt) && !parser.isSet(newKiOpt) && !parser.isSet(newKdOpt))
+            return usage(
+                QStringLiteral("--change-at needs the gains it changes to (--new-kp, "
+                               "--new-ki, --new-kd)"));
         spec.gainChange = change;
     } else if (parser.isSet(newKpOpt) || parser.isSet(newKiOpt) || parser.isSet(newKdOpt)) {
         return usage(QStringLiteral("--new-kp, --new-ki and --new-kd need --change-at S"));
@@ -376,6 +380,14 @@ int stepCommand(const QStringList& args) {
         o[QStringLiteral("abort_reason")] =
             r.ok() ? QJsonValue(QJsonValue::Null) : QJsonValue(r.abortReason);
         o[QStringLiteral("ok")] = r.ok() && r.metrics.ok;
+        o[QStringLiteral("gain_change")] =
+            c.gainChange ? QJsonValue(QJsonObject{
+                               {QStringLiteral("at_s"), c.gainChange->atS},
+                               {QStringLiteral("gains"),
+                                tuningGainsToJson(c.gainChange->gains, c.profile.kind, c.law)}})
+                         : QJsonValue(QJsonValue::Null);
+        if (!r.gainChangeMissed.isEmpty())
+            o[QStringLiteral("gain_change_missed")] = r.gainChangeMissed;
         out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
     } else {
         QString gainsText;
@@ -393,6 +405,17 @@ int stepCommand(const QStringList& args) {
                 .arg(c.periodS * 1000.0)
                 .arg(c.massFactor)
                 .arg(c.seed));
+        if (c.gainChange) {
+            QString changed;
+            const QJsonObject cj = tuningGainsToJson(c.gainChange->gains, c.profile.kind, c.law);
+            for (auto it = cj.begin(); it != cj.end(); ++it)
+                changed += QStringLiteral(" %1 %2").arg(it.key()).arg(it.value().toDouble());
+            out(QStringLiteral("gains changed %1 s after the step (bumpless) to%2\n")
+                    .arg(c.gainChange->atS)
+                    .arg(changed));
+        }
+        if (!r.gainChangeMissed.isEmpty())
+            out(QStringLiteral("NOTE: %1: the run had one set of gains\n").arg(r.gainChangeMissed));
         if (!r.ok()) out(QStringLiteral("ABORTED: %1\n").arg(r.abortReason));
         out(metricsText(r.metrics));
     }

@@ -139,13 +139,16 @@ StepTestResult runRail(const StepTestSpec& spec, StepTestResult r) {
     ch.hasLoopTerms = ch.hasSaturation = true;
     const auto preTicks = static_cast<std::size_t>(std::llround(spec.preRollS / dt));
     double inPositionSince = -1.0;
+    bool changed = false;
     for (std::size_t k = 0; k <= ticks; ++k) {
         const double t = static_cast<double>(k) * dt;
         if (k == preTicks) servo.moveTo(target, c.speedFraction, false);
         if (c.gainChange &&
-            k == preTicks + static_cast<std::size_t>(std::llround(c.gainChange->atS / dt)))
+            k == preTicks + static_cast<std::size_t>(std::llround(c.gainChange->atS / dt))) {
             servo.setGains(c.law, LoopGains{c.gainChange->gains.kp, c.gainChange->gains.ki,
                                             c.gainChange->gains.kd});
+            changed = true;
+        }
         servo.tick(dt);
         const ServoSample& s = servo.sample();
         const LoopOutput& o = s.loop;
@@ -179,6 +182,15 @@ StepTestResult runRail(const StepTestSpec& spec, StepTestResult r) {
         if (inPositionSince >= 0 && t - inPositionSince >= spec.settleS - 1e-9) break;
     }
     if (r.abort == StepAbort::None && inPositionSince < 0) endedEarly(r, ch);
+    // A change the test ended before is not in the record: the run had one set of gains.
+    if (c.gainChange && !changed) {
+        r.gainChangeMissed = QStringLiteral(
+                                 "the gain change at %1 s never came: the test ended "
+                                 "%2 s after the step")
+                                 .arg(c.gainChange->atS)
+                                 .arg(ch.timeS.empty() ? 0.0 : ch.timeS.back() - spec.preRollS);
+        c.gainChange.reset();
+    }
     return r;
 }
 

@@ -81,6 +81,9 @@ struct StepTestResult {
     StepMetrics metrics;
     StepAbort abort = StepAbort::None;
     QString abortReason;  ///< human text, empty when None
+    /// A gain change asked for after the test ended: why the record has none (empty: none
+    /// asked, or it came).
+    QString gainChangeMissed;
     bool ok() const { return abort == StepAbort::None; }
 };
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <QDir>
+#include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
@@ -348,3 +349,45 @@ TEST_F(CliTune, ADcTableAxisStepMeasuresInItsCounts) {
 }
 
 }  // namespace
+
+// A gain change asked for after the test ended did not happen: the run says so and its record
+// has none (the outside tester: the sidecar recorded a change that never came); a change the
+// test reached is said and in the JSON; --change-at without the gains it changes to is refused.
+TEST_F(CliTune, AGainChangeIsSaidOnlyWhenItCame) {
+    const QString trace = dir.filePath(QStringLiteral("late.csv"));
+    const CliResult late =
+        runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--amplitude"),
+                QStringLiteral("10"), QStringLiteral("--change-at"), QStringLiteral("99"),
+                QStringLiteral("--new-kp"), QStringLiteral("2"), QStringLiteral("--trace"), trace,
+                QStringLiteral("--json")});
+    ASSERT_EQ(late.exit, 0) << late.err.toStdString();
+    const QJsonObject j = json(late);
+    EXPECT_TRUE(j.value(QStringLiteral("gain_change")).isNull());
+    EXPECT_TRUE(j.value(QStringLiteral("gain_change_missed"))
+                    .toString()
+                    .contains(QStringLiteral("never came")));
+    QFile side(dir.filePath(QStringLiteral("late.run.json")));
+    ASSERT_TRUE(side.open(QIODevice::ReadOnly));
+    EXPECT_TRUE(QJsonDocument::fromJson(side.readAll())
+                    .object()
+                    .value(QStringLiteral("gain_change"))
+                    .isNull());
+
+    const CliResult came =
+        runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--amplitude"),
+                QStringLiteral("100"), QStringLiteral("--change-at"), QStringLiteral("0.1"),
+                QStringLiteral("--new-kp"), QStringLiteral("2.4"), QStringLiteral("--json")});
+    ASSERT_EQ(came.exit, 0) << came.err.toStdString();
+    const QJsonObject change = json(came).value(QStringLiteral("gain_change")).toObject();
+    EXPECT_DOUBLE_EQ(change.value(QStringLiteral("at_s")).toDouble(), 0.1);
+    EXPECT_DOUBLE_EQ(
+        change.value(QStringLiteral("gains")).toObject().value(QStringLiteral("kp")).toDouble(),
+        2.4);
+
+    const CliResult bare =
+        runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--amplitude"),
+                QStringLiteral("10"), QStringLiteral("--change-at"), QStringLiteral("0.2")});
+    EXPECT_EQ(bare.exit, 2);
+    EXPECT_TRUE(bare.err.contains(QStringLiteral("--change-at needs the gains")))
+        << bare.err.toStdString();
+}
