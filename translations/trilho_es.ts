@@ -606,6 +606,10 @@
         <translation>cuentas perdidas</translation>
     </message>
     <message>
+        <source>late ticks</source>
+        <translation>ticks retrasados</translation>
+    </message>
+    <message>
         <source>unknown fault</source>
         <translation>falla desconocida</translation>
     </message>

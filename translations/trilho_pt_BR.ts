@@ -606,6 +606,10 @@
         <translation>contagens perdidas</translation>
     </message>
     <message>
+        <source>late ticks</source>
+        <translation>ticks atrasados</translation>
+    </message>
+    <message>
         <source>unknown fault</source>
         <translation>falha desconhecida</translation>
     </message>

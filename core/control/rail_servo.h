@@ -34,6 +34,7 @@ enum class ServoFault : std::uint8_t {
     EncoderStall,  ///< the drive ran encoderStallMm with no change of the counter
     InPositionTimeout,  ///< the move ended but never settled in the window
     CountsLost,  ///< the move ended with the counted travel short of the drive's (lost counts)
+    LateTicks,   ///< late ticks kept restarting the settling until the in-position timeout
 };
 
 /// Everything one tick knew, for the controller, the screens and traces.
@@ -151,6 +152,10 @@ class RailServo {
     double settledFor_ = 0.0;       ///< s inside the in-position window
     double settledErrorSum_ = 0.0;  ///< mm.s of error summed while settling (mean = sum / time)
     double unsettledFor_ = 0.0;     ///< s since the profile ended without settling
+    double settlingFor_ = 0.0;      ///< s since the profile ended, late ticks included
+    int lateRestarts_ = 0;          ///< settlings in the band that a late tick restarted, this move
+    /// In-position timeouts a settling late ticks keep restarting may take before alarm 8.
+    static constexpr double kLateSettleTimeouts = 5.0;
     double moveTime_ = 0.0;         ///< s since moveTo (classic: its in-position deadline)
     double classicDeadline_ = 0.0;  ///< s: a classic move must be in position by then
     double stallTravel_ = 0.0;      ///< mm the drive commanded since the counter last changed

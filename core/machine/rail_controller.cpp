@@ -480,6 +480,9 @@ void RailController::checkServoFault() {
         case ServoFault::CountsLost:
             raiseAlarm(AlarmCode::CountsLost, servo_.sample().faultValue);
             break;
+        case ServoFault::LateTicks:
+            raiseAlarm(AlarmCode::LoopOverrun);  // the computer ran the control too late
+            break;
         default:
             break;
     }

@@ -26,6 +26,8 @@ QString servoFaultName(ServoFault fault) {
             return QCoreApplication::translate("trilho", "in-position timeout");
         case ServoFault::CountsLost:
             return QCoreApplication::translate("trilho", "counts lost");
+        case ServoFault::LateTicks:
+            return QCoreApplication::translate("trilho", "late ticks");
     }
     return QCoreApplication::translate("trilho", "unknown fault");
 }

@@ -43,6 +43,8 @@ QString servoFaultText(ServoFault f, double value) {
                 .arg(value);
         case ServoFault::CountsLost:
             return QStringLiteral("counts lost");
+        case ServoFault::LateTicks:
+            return QStringLiteral("late ticks restarted the settling %1 times").arg(value);
     }
     return QStringLiteral("servo fault");
 }

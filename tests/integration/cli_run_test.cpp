@@ -190,6 +190,30 @@ TEST_F(CliRun, LateTicksAreInjectedReproduciblyAndReported) {
     EXPECT_NE(a.out, c.out);
 }
 
+// Late ticks on half the ticks kept restarting the settling, and restarted its timeout too:
+// `G00 X100` neither ended nor alarmed until --max-seconds (the outside tester). The timeout
+// now also runs in real time: the move ends in alarm 8 (the computer ran the control too late)
+// within five in-position timeouts (10 s), or in position.
+TEST_F(CliRun, LateTicksThatNeverLetAMoveSettleEndInAnAlarm) {
+    const QString prog = dir.filePath(QStringLiteral("short.G"));
+    QFile f(prog);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write("G90\nG00 X100\nM02\n");
+    f.close();
+    const Result r =
+        run({QStringLiteral("--virtual-time"), QStringLiteral("--json"),
+             QStringLiteral("--max-seconds"), QStringLiteral("60"), QStringLiteral("--tick-jitter"),
+             QStringLiteral("2"), QStringLiteral("--jitter-rate"), QStringLiteral("0.5"), prog});
+    const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+    ASSERT_FALSE(o.isEmpty()) << r.out.toStdString() << r.err.toStdString();
+    EXPECT_EQ(r.exit, 3) << r.out.toStdString();
+    bool overrun = false;
+    for (const QJsonValue a : o[QStringLiteral("alarms")].toArray())
+        overrun = overrun || a.toObject()[QStringLiteral("code")].toInt() == 8;
+    EXPECT_TRUE(overrun) << r.out.toStdString();
+    EXPECT_LT(o[QStringLiteral("duration_s")].toDouble(60.0), 15.0) << r.out.toStdString();
+}
+
 TEST_F(CliRun, BadFaultsAndJitterNameWhatIsWrong) {
     struct Case {
         QStringList args;
