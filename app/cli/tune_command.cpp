@@ -499,20 +499,32 @@ int metricsCommand(const QStringList& args) {
         cut = QStringLiteral(
             "its last row has no end of line (the writer stopped mid-row); "
             "measured without it");
-    if (rec.hasConditions && rec.conditions.rows >= 0 &&
-        static_cast<long long>(rec.channels.size()) < rec.conditions.rows)
+    const auto rows = static_cast<long long>(rec.channels.size());
+    if (rec.hasConditions && rec.conditions.rows >= 0 && rows < rec.conditions.rows)
         cut += QStringLiteral("%1%2 rows of the %3 its sidecar counts")
                    .arg(cut.isEmpty() ? QString() : QStringLiteral("; "))
-                   .arg(rec.channels.size())
+                   .arg(rows)
+                   .arg(rec.conditions.rows);
+    // More rows than its sidecar counts: not the run the sidecar describes (or a sidecar
+    // edited): no clean record either.
+    const bool mismatch =
+        rec.hasConditions && rec.conditions.rows >= 0 && rows > rec.conditions.rows;
+    if (mismatch)
+        cut += QStringLiteral(
+                   "%1%2 rows, more than the %3 its sidecar counts: not the run it "
+                   "describes")
+                   .arg(cut.isEmpty() ? QString() : QStringLiteral("; "))
+                   .arg(rows)
                    .arg(rec.conditions.rows);
     const bool truncated = !cut.isEmpty();
+    const QString label = mismatch ? QStringLiteral("MISMATCH: ") : QStringLiteral("TRUNCATED: ");
     if (!m.ok) {
         const QString why = QStringLiteral("%1: no step to measure: %2")
                                 .arg(files.front(), QString::fromStdString(m.problem));
         if (!aborted && !truncated) return usage(why);
         err(QStringLiteral("trilho-cli tune metrics: %1; %2\n")
                 .arg(why, aborted ? QStringLiteral("ABORTED: ") + rec.conditions.abortReason
-                                  : QStringLiteral("TRUNCATED: ") + cut));
+                                  : label + cut));
         return kAlarm;
     }
     if (parser.isSet(jsonOpt)) {
@@ -532,7 +544,7 @@ int metricsCommand(const QStringList& args) {
     } else {
         out(QStringLiteral("%1: %2 ticks\n").arg(files.front()).arg(m.samples));
         if (aborted) out(QStringLiteral("ABORTED: %1\n").arg(rec.conditions.abortReason));
-        if (truncated) out(QStringLiteral("TRUNCATED: %1\n").arg(cut));
+        if (truncated) out(label + cut + QLatin1Char('\n'));
         out(metricsText(m));
     }
     // Measured either way; a record that is not clean is no success (as `tune step` aborted).

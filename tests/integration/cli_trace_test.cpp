@@ -321,6 +321,20 @@ TEST_F(CliTrace, MetricsOfATruncatedTraceSaySoAndExitThree) {
               QStringLiteral("868 rows of the 869 its sidecar counts"));
     EXPECT_EQ(o.value(QStringLiteral("rows")).toDouble(), 868.0);
     EXPECT_FALSE(o.value(QStringLiteral("ok")).toBool(true));
+    // The whole trace, a sidecar that counts one row fewer: not the run it describes.
+    rewrite(bytes);
+    const QString sidecar = dir.filePath(QStringLiteral("doc.run.json"));
+    QJsonObject side = QJsonDocument::fromJson(readAll(sidecar)).object();
+    side[QStringLiteral("rows")] = 868;
+    QFile sf(sidecar);
+    ASSERT_TRUE(sf.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    sf.write(QJsonDocument(side).toJson());
+    sf.close();
+    const CliResult more = runCli({QStringLiteral("tune"), QStringLiteral("metrics"), trace});
+    EXPECT_EQ(more.exit, 3) << more.err.toStdString();
+    EXPECT_TRUE(more.out.contains(QStringLiteral(
+        "MISMATCH: 869 rows, more than the 868 its sidecar counts: not the run it describes")))
+        << more.out.toStdString();
 }
 
 }  // namespace
