@@ -380,12 +380,7 @@ int stepCommand(const QStringList& args) {
         o[QStringLiteral("abort_reason")] =
             r.ok() ? QJsonValue(QJsonValue::Null) : QJsonValue(r.abortReason);
         o[QStringLiteral("ok")] = r.ok() && r.metrics.ok;
-        o[QStringLiteral("gain_change")] =
-            c.gainChange ? QJsonValue(QJsonObject{
-                               {QStringLiteral("at_s"), c.gainChange->atS},
-                               {QStringLiteral("gains"),
-                                tuningGainsToJson(c.gainChange->gains, c.profile.kind, c.law)}})
-                         : QJsonValue(QJsonValue::Null);
+        o[QStringLiteral("gain_change")] = gainChangeToJson(c);
         if (!r.gainChangeMissed.isEmpty())
             o[QStringLiteral("gain_change_missed")] = r.gainChangeMissed;
         out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));

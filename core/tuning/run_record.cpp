@@ -127,6 +127,13 @@ QJsonObject tuningGainsToJson(const TuningGains& g, MachineKind kind, LoopLaw la
     return o;
 }
 
+QJsonValue gainChangeToJson(const RunConditions& c) {
+    if (!c.gainChange) return QJsonValue(QJsonValue::Null);
+    return QJsonObject{
+        {QStringLiteral("at_s"), c.gainChange->atS},
+        {QStringLiteral("gains"), tuningGainsToJson(c.gainChange->gains, c.profile.kind, c.law)}};
+}
+
 QByteArray runConditionsToJson(const RunConditions& c, const StepMetrics* metrics) {
     QJsonObject o;
     o[QStringLiteral("format")] = QStringLiteral("trilho-run/1");
@@ -152,12 +159,7 @@ QByteArray runConditionsToJson(const RunConditions& c, const StepMetrics* metric
     o[QStringLiteral("counts_per_mm")] = c.countsPerMm;
     o[QStringLiteral("abort_reason")] = c.abortReason;
     if (c.rows >= 0) o[QStringLiteral("rows")] = static_cast<double>(c.rows);
-    o[QStringLiteral("gain_change")] =
-        c.gainChange ? QJsonValue(QJsonObject{
-                           {QStringLiteral("at_s"), c.gainChange->atS},
-                           {QStringLiteral("gains"),
-                            tuningGainsToJson(c.gainChange->gains, c.profile.kind, c.law)}})
-                     : QJsonValue(QJsonValue::Null);
+    o[QStringLiteral("gain_change")] = gainChangeToJson(c);
     o[QStringLiteral("profile")] =
         QJsonDocument::fromJson(machineProfileToJson(c.profile)).object();
     if (metrics) o[QStringLiteral("metrics")] = stepMetricsToJson(*metrics);

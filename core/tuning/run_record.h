@@ -118,6 +118,9 @@ std::optional<double> commandedTarget(const RunRecord& r);
 bool saveRunRecord(const RunRecord& r, const QString& csvPath, const StepMetrics* metrics,
                    QString* error);
 QByteArray runConditionsToJson(const RunConditions& c, const StepMetrics* metrics);
+/// The run's gain change as the sidecar and `tune step --json` write it (`at_s`, `gains`), or
+/// null when it had one set of gains.
+QJsonValue gainChangeToJson(const RunConditions& c);
 
 struct RunLoad {
     std::optional<RunRecord> record;
