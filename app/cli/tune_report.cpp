@@ -57,6 +57,13 @@ QString marginsText(const FrequencyView& f) {
 }
 
 QString moveText(const char* name, const MoveResult& p, const MoveResult& m) {
+    // A move the autotune never got to (it failed before) is said so, not printed as zeros;
+    // a time the move never reached is "never", not a placeholder (-1, nan).
+    if (m.machineTimeS <= 0.0 && m.stepMm == 0.0)
+        return QStringLiteral("%1: not run\n").arg(QString::fromLatin1(name));
+    const auto time = [](double s) {
+        return std::isfinite(s) && s >= 0.0 ? QString::number(s, 'f', 3) : QStringLiteral("never");
+    };
     return QStringLiteral(
                "%1 (%2 mm): overshoot %3 / %4 counts, settling to 1 count %5 / %6 s, in position "
                "%7 / %8 s, final error %9 / %10 counts (predicted / measured)\n")
@@ -64,10 +71,8 @@ QString moveText(const char* name, const MoveResult& p, const MoveResult& m) {
         .arg(m.stepMm, 0, 'f', 1)
         .arg(p.overshootCounts, 0, 'f', 0)
         .arg(m.overshootCounts, 0, 'f', 0)
-        .arg(p.settlingTimeS, 0, 'f', 3)
-        .arg(m.settlingTimeS, 0, 'f', 3)
-        .arg(p.inPositionTimeS, 0, 'f', 3)
-        .arg(m.inPositionTimeS, 0, 'f', 3)
+        .arg(time(p.settlingTimeS), time(m.settlingTimeS), time(p.inPositionTimeS),
+             time(m.inPositionTimeS))
         .arg(p.finalErrorCounts, 0, 'f', 0)
         .arg(m.finalErrorCounts, 0, 'f', 0);
 }

@@ -156,3 +156,15 @@ TEST(CliTuneModel, AnExperimentStoppedByAnAlarmIsThree) {
 }
 
 }  // namespace
+
+// An autotune that fails before its long move says the move was not run and that the step
+// never settled, instead of printing -1 and 0 s as if they were times (the outside tester).
+TEST(CliTuneModel, AFailedAutotuneSaysWhatNeverRan) {
+    const CliResult r =
+        runCli(tune("auto", {QStringLiteral("--machine"), QStringLiteral("rail"),
+                             QStringLiteral("--mass-factor"), QStringLiteral("0.1")}));
+    EXPECT_EQ(r.exit, 3) << r.out.toStdString() << r.err.toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral("long move: not run"))) << r.out.toStdString();
+    EXPECT_FALSE(r.out.contains(QStringLiteral("-1.000"))) << r.out.toStdString();
+    EXPECT_FALSE(r.out.contains(QStringLiteral("nan"))) << r.out.toStdString();
+}
