@@ -24,6 +24,7 @@
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
 #include "app/cli/diagnostics_text.h"
+#include "app/cli/option_values.h"
 #include "app/cli/rail_trace.h"
 #include "app/cli/rail_virtual_run.h"
 #include "app/cli/run_sidecar.h"
@@ -221,15 +222,7 @@ int runCommand(const QStringList& args) {
     if (!number(rateOpt, 0.0, 1.0, options.jitterRate))
         return usage(QStringLiteral("--jitter-rate must be a probability from 0 to 1 (got '%1')")
                          .arg(parser.value(rateOpt)));
-    if (parser.isSet(seedOpt)) {
-        bool ok = false;
-        options.seed = parser.value(seedOpt).toULongLong(&ok);
-        if (!ok)
-            return usage(
-                QStringLiteral(
-                    "--seed must be a whole number from 0 to 18446744073709551615 (got '%1')")
-                    .arg(parser.value(seedOpt)));
-    }
+    if (auto m = readSeed(parser, seedOpt, options.seed)) return usage(*m);
     for (const QString& f : parser.values(faultOpt)) {
         const FaultParse parsed = parseFault(f.toStdString());
         if (!parsed.fault) return usage(QString::fromStdString(parsed.error));

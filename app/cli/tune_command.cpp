@@ -12,6 +12,7 @@
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
+#include "app/cli/option_values.h"
 #include "app/cli/run_support.h"
 #include "core/machine/replace_target.h"
 #include "core/tuning/run_record.h"
@@ -211,27 +212,15 @@ int stepCommand(const QStringList& args) {
             "the plotter has no encoder to measure a step with; its speed and acceleration "
             "margin test is `tune margin`"));
     if (parser.isSet(axisOpt)) {
-        const QString a = parser.value(axisOpt);
-        if (a != QLatin1String("x") && a != QLatin1String("y"))
-            return usage(QStringLiteral("--axis must be x or y (got '%1')").arg(a));
+        if (auto m = readAxis(parser, axisOpt, spec.axis)) return usage(*m);
         if (!table)
             return usage(QStringLiteral("--axis is for the DC table: the rail has one axis"));
-        spec.axis = a.at(0).toLatin1();
     } else if (table) {
         return usage(QStringLiteral("the DC table has two axes: choose one with --axis x or y"));
     }
     auto number = [&](const QCommandLineOption& opt, double lo, double hi,
                       double& into) -> std::optional<int> {
-        if (!parser.isSet(opt)) return std::nullopt;
-        bool ok = false;
-        const double v = parser.value(opt).toDouble(&ok);
-        if (!ok || !std::isfinite(v) || v < lo || v > hi)
-            return usage(QStringLiteral("--%1 must be a number from %2 to %3 (got '%4')")
-                             .arg(opt.names().front())
-                             .arg(lo)
-                             .arg(hi)
-                             .arg(parser.value(opt)));
-        into = v;
+        if (auto m = readNumber(parser, opt, lo, hi, into)) return usage(*m);
         return std::nullopt;
     };
     if (!parser.isSet(ampOpt)) return usage(QStringLiteral("--amplitude MM is required"));
@@ -313,14 +302,7 @@ int stepCommand(const QStringList& args) {
     if (auto e = number(fracOpt, 0.001, 1.0, spec.speedFraction)) return *e;
     if (auto e = number(settleOpt, 0.0, 60.0, spec.settleS)) return *e;
     if (auto e = number(durationOpt, 0.01, 600.0, spec.maxDurationS)) return *e;
-    if (parser.isSet(seedOpt)) {
-        bool ok = false;
-        spec.seed = parser.value(seedOpt).toULongLong(&ok);
-        if (!ok)
-            return usage(QStringLiteral("--seed must be a whole number from 0 to "
-                                        "18446744073709551615 (got '%1')")
-                             .arg(parser.value(seedOpt)));
-    }
+    if (auto m = readSeed(parser, seedOpt, spec.seed)) return usage(*m);
     const QString tracePath = parser.value(traceOpt);
     if (!tracePath.isEmpty()) {
         // Never overwrite the profile the test runs on, with the trace or with its sidecar.
@@ -446,12 +428,7 @@ int metricsCommand(const QStringList& args) {
     if (files.size() != 1)
         return usage(QStringLiteral("expected exactly one TRACE.csv, got %1").arg(files.size()));
     char axis = 0;
-    if (parser.isSet(axisOpt)) {
-        const QString a = parser.value(axisOpt);
-        if (a != QLatin1String("x") && a != QLatin1String("y"))
-            return usage(QStringLiteral("--axis must be x or y (got '%1')").arg(a));
-        axis = a.at(0).toLatin1();
-    }
+    if (auto m = readAxis(parser, axisOpt, axis)) return usage(*m);
     const RunLoad load = loadRunRecord(QString::fromLocal8Bit(localPath(files.front())), axis);
     if (!load.record) return usage(load.error);
     const RunRecord& rec = *load.record;

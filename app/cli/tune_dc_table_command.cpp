@@ -17,48 +17,26 @@ namespace trilho::cli {
 namespace {
 
 QJsonObject modelJson(const DcAxisIdentification& id) {
-    QJsonObject o;
-    o[QStringLiteral("accepted")] = id.accepted;
-    o[QStringLiteral("experiment_time_s")] = id.experimentTimeS;
-    o[QStringLiteral("max_excursion_mm")] = id.maxExcursionMm;
-    o[QStringLiteral("return_error_counts")] = id.returnErrorCounts;
-    if (!id.error.isEmpty()) o[QStringLiteral("error")] = id.error;
-    if (id.iterations == 0) return o;  // stopped before there was anything to fit
-    o[QStringLiteral("speed_gain_mm_s_per_pct")] = id.model.speedGainMmSPerPercent;
-    o[QStringLiteral("time_constant_s")] = id.model.timeConstantS;
-    o[QStringLiteral("coulomb_friction_pct")] = id.model.coulombPercent;
-    o[QStringLiteral("acceleration_limit_mm_s2")] = id.accelerationLimitMmS2;
-    o[QStringLiteral("inertia_factor")] = id.inertiaFactor;
-    o[QStringLiteral("fit_velocity_pct")] = id.fitVelocityPct;
-    o[QStringLiteral("fit_velocity_train_pct")] = id.fitVelocityTrainPct;
-    o[QStringLiteral("fit_position_pct")] = id.fitPositionPct;
-    o[QStringLiteral("iterations")] = id.iterations;
-    return o;
+    return identificationJson(id, [&](QJsonObject& o) {
+        o[QStringLiteral("speed_gain_mm_s_per_pct")] = id.model.speedGainMmSPerPercent;
+        o[QStringLiteral("time_constant_s")] = id.model.timeConstantS;
+        o[QStringLiteral("coulomb_friction_pct")] = id.model.coulombPercent;
+        o[QStringLiteral("acceleration_limit_mm_s2")] = id.accelerationLimitMmS2;
+        o[QStringLiteral("inertia_factor")] = id.inertiaFactor;
+    });
 }
 
 QString modelText(const DcAxisIdentification& id) {
-    if (id.iterations == 0)
-        return QStringLiteral("experiment: %1 s, within %2 mm of its start; no model\n")
-            .arg(id.experimentTimeS, 0, 'f', 3)
-            .arg(id.maxExcursionMm, 0, 'f', 1);
-    return QStringLiteral(
-               "experiment: %1 s, within %2 mm of its start, back within %3 counts\n"
-               "speed gain: %4 mm/s per PWM %\n"
-               "time constant: %5 s (inertia x%6 of the profile's motor)\n"
-               "Coulomb friction: %7 % PWM\n"
-               "acceleration limit: %8 mm/s2 (the over-current trip, from rest)\n"
-               "fit on the held-out run, velocity: %9 % (position %10 %; fitted part %11 %)\n")
-        .arg(id.experimentTimeS, 0, 'f', 3)
-        .arg(id.maxExcursionMm, 0, 'f', 1)
-        .arg(id.returnErrorCounts, 0, 'f', 0)
-        .arg(id.model.speedGainMmSPerPercent, 0, 'f', 3)
-        .arg(id.model.timeConstantS, 0, 'f', 4)
-        .arg(id.inertiaFactor, 0, 'f', 2)
-        .arg(id.model.coulombPercent, 0, 'f', 2)
-        .arg(id.accelerationLimitMmS2, 0, 'f', 0)
-        .arg(id.fitVelocityPct, 0, 'f', 1)
-        .arg(id.fitPositionPct, 0, 'f', 1)
-        .arg(id.fitVelocityTrainPct, 0, 'f', 1);
+    return identificationText(
+        id, QStringLiteral("speed gain: %1 mm/s per PWM %\n"
+                           "time constant: %2 s (inertia x%3 of the profile's motor)\n"
+                           "Coulomb friction: %4 % PWM\n"
+                           "acceleration limit: %5 mm/s2 (the over-current trip, from rest)\n")
+                .arg(id.model.speedGainMmSPerPercent, 0, 'f', 3)
+                .arg(id.model.timeConstantS, 0, 'f', 4)
+                .arg(id.inertiaFactor, 0, 'f', 2)
+                .arg(id.model.coulombPercent, 0, 'f', 2)
+                .arg(id.accelerationLimitMmS2, 0, 'f', 0));
 }
 
 void merge(QJsonObject& into, const QJsonObject& from) {

@@ -9,6 +9,7 @@
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
+#include "app/cli/option_values.h"
 #include "host/common/data_paths.h"
 #include "host/tuning/plotter_margin_test.h"
 
@@ -85,18 +86,11 @@ int tuneMarginCommand(const QStringList& args) {
     if (!parser.positionalArguments().isEmpty())
         return usage(
             QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().front()));
-    const QString axis = parser.value(axisOpt);
-    if (axis != QLatin1String("x") && axis != QLatin1String("y"))
-        return usage(QStringLiteral("--axis must be x or y (got '%1')").arg(axis));
+    char axisName = 'x';
+    if (auto m = readAxis(parser, axisOpt, axisName)) return usage(*m);
+    const QString axis(QChar::fromLatin1(axisName));
     MarginTestSpec spec;
-    if (parser.isSet(seedOpt)) {
-        bool ok = false;
-        spec.seed = parser.value(seedOpt).toULongLong(&ok);
-        if (!ok)
-            return usage(QStringLiteral("--seed must be a whole number from 0 to "
-                                        "18446744073709551615 (got '%1')")
-                             .arg(parser.value(seedOpt)));
-    }
+    if (auto m = readSeed(parser, seedOpt, spec.seed)) return usage(*m);
     const ProfileLoad load = loadNamedMachineProfile(parser.value(machineOpt));
     if (!load.profile) return usage(load.error);
     if (load.profile->kind != MachineKind::Plotter)
@@ -104,7 +98,7 @@ int tuneMarginCommand(const QStringList& args) {
                                     "encoder: use `tune step`, `tune identify` or `tune auto`")
                          .arg(load.profile->name));
     spec.profile = *load.profile;
-    spec.axis = axis == QLatin1String("y") ? 'y' : 'x';
+    spec.axis = axisName;
     const MarginResult r = runPlotterMarginTest(spec);
     if (!r.error.isEmpty()) return usage(r.error);
     if (parser.isSet(jsonOpt)) {

@@ -11,6 +11,7 @@
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
+#include "app/cli/option_values.h"
 #include "app/cli/tune_dc_table.h"
 #include "app/cli/tune_report.h"
 #include "core/machine/replace_target.h"
@@ -37,50 +38,28 @@ QString tuneExitHelp() {
 }
 
 QJsonObject modelJson(const RailIdentification& id) {
-    QJsonObject o;
-    o[QStringLiteral("accepted")] = id.accepted;
-    o[QStringLiteral("experiment_time_s")] = id.experimentTimeS;
-    o[QStringLiteral("max_excursion_mm")] = id.maxExcursionMm;
-    o[QStringLiteral("return_error_counts")] = id.returnErrorCounts;
-    if (!id.error.isEmpty()) o[QStringLiteral("error")] = id.error;
-    if (id.iterations == 0) return o;  // stopped before there was anything to fit
-    o[QStringLiteral("speed_gain_mm_s_per_code")] = id.model.speedGainMmSPerCode;
-    o[QStringLiteral("time_constant_s")] = id.model.timeConstantS;
-    o[QStringLiteral("acceleration_limit_mm_s2")] = id.model.accelerationLimitMmS2;
-    o[QStringLiteral("coulomb_friction_mm_s2")] = id.model.coulombMmS2;
-    o[QStringLiteral("coulomb_friction_n")] = id.coulombN;
-    o[QStringLiteral("mass_kg")] = id.massKg;
-    o[QStringLiteral("fit_velocity_pct")] = id.fitVelocityPct;
-    o[QStringLiteral("fit_velocity_train_pct")] = id.fitVelocityTrainPct;
-    o[QStringLiteral("fit_position_pct")] = id.fitPositionPct;
-    o[QStringLiteral("iterations")] = id.iterations;
-    return o;
+    return identificationJson(id, [&](QJsonObject& o) {
+        o[QStringLiteral("speed_gain_mm_s_per_code")] = id.model.speedGainMmSPerCode;
+        o[QStringLiteral("time_constant_s")] = id.model.timeConstantS;
+        o[QStringLiteral("acceleration_limit_mm_s2")] = id.model.accelerationLimitMmS2;
+        o[QStringLiteral("coulomb_friction_mm_s2")] = id.model.coulombMmS2;
+        o[QStringLiteral("coulomb_friction_n")] = id.coulombN;
+        o[QStringLiteral("mass_kg")] = id.massKg;
+    });
 }
 
 QString modelText(const RailIdentification& id) {
-    if (id.iterations == 0)  // stopped before there was anything to fit
-        return QStringLiteral("experiment: %1 s, within %2 mm of its start; no model\n")
-            .arg(id.experimentTimeS, 0, 'f', 3)
-            .arg(id.maxExcursionMm, 0, 'f', 1);
-    return QStringLiteral(
-               "experiment: %1 s, within %2 mm of its start, back within %3 counts\n"
-               "speed gain: %4 mm/s per code\n"
-               "time constant: %5 s\n"
-               "acceleration limit: %6 mm/s2 (mass %7 kg at the profile's peak force)\n"
-               "Coulomb friction: %8 mm/s2 (%9 N)\n"
-               "fit on the held-out run, velocity: %10 % (position %11 %; fitted part %12 %)\n")
-        .arg(id.experimentTimeS, 0, 'f', 3)
-        .arg(id.maxExcursionMm, 0, 'f', 1)
-        .arg(id.returnErrorCounts, 0, 'f', 0)
-        .arg(id.model.speedGainMmSPerCode, 0, 'f', 3)
-        .arg(id.model.timeConstantS, 0, 'f', 4)
-        .arg(id.model.accelerationLimitMmS2, 0, 'f', 0)
-        .arg(id.massKg, 0, 'f', 1)
-        .arg(id.model.coulombMmS2, 0, 'f', 0)
-        .arg(id.coulombN, 0, 'f', 1)
-        .arg(id.fitVelocityPct, 0, 'f', 1)
-        .arg(id.fitPositionPct, 0, 'f', 1)
-        .arg(id.fitVelocityTrainPct, 0, 'f', 1);
+    return identificationText(
+        id, QStringLiteral("speed gain: %1 mm/s per code\n"
+                           "time constant: %2 s\n"
+                           "acceleration limit: %3 mm/s2 (mass %4 kg at the profile's peak force)\n"
+                           "Coulomb friction: %5 mm/s2 (%6 N)\n")
+                .arg(id.model.speedGainMmSPerCode, 0, 'f', 3)
+                .arg(id.model.timeConstantS, 0, 'f', 4)
+                .arg(id.model.accelerationLimitMmS2, 0, 'f', 0)
+                .arg(id.massKg, 0, 'f', 1)
+                .arg(id.model.coulombMmS2, 0, 'f', 0)
+                .arg(id.coulombN, 0, 'f', 1));
 }
 
 int tuneRail(const QStringList& args, bool autotune) {
@@ -131,26 +110,12 @@ int tuneRail(const QStringList& args, bool autotune) {
         return usage(
             QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().front()));
     double massFactor = 1.0;
-    if (parser.isSet(massOpt)) {
-        bool ok = false;
-        massFactor = parser.value(massOpt).toDouble(&ok);
-        if (!ok || !std::isfinite(massFactor) || massFactor < 0.1 || massFactor > 20.0)
-            return usage(QStringLiteral("--mass-factor must be a number from 0.1 to 20 (got '%1')")
-                             .arg(parser.value(massOpt)));
-    }
+    if (auto m = readNumber(parser, massOpt, 0.1, 20.0, massFactor)) return usage(*m);
     std::uint64_t seed = 1;
-    if (parser.isSet(seedOpt)) {
-        bool ok = false;
-        seed = parser.value(seedOpt).toULongLong(&ok);
-        if (!ok)
-            return usage(
-                QStringLiteral("--seed must be a whole number from 0 to 18446744073709551615 (got "
-                               "'%1')")
-                    .arg(parser.value(seedOpt)));
-    }
-    const QString axis = parser.value(axisOpt);
-    if (axis != QLatin1String("x") && axis != QLatin1String("y"))
-        return usage(QStringLiteral("--axis must be x or y (got '%1')").arg(axis));
+    if (auto m = readSeed(parser, seedOpt, seed)) return usage(*m);
+    char axisName = 'x';
+    if (auto m = readAxis(parser, axisOpt, axisName)) return usage(*m);
+    const QString axis(QChar::fromLatin1(axisName));
     const ProfileLoad load = loadNamedMachineProfile(parser.value(machineOpt));
     if (!load.profile) return usage(load.error);
     const MachineProfile& profile = *load.profile;

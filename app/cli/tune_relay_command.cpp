@@ -13,6 +13,7 @@
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
+#include "app/cli/option_values.h"
 #include "core/tuning/run_record.h"
 #include "host/common/data_paths.h"
 #include "host/tuning/relay_comparison.h"
@@ -105,15 +106,7 @@ int tuneRelayCommand(const QStringList& args) {
             QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().front()));
     auto number = [&](const QCommandLineOption& opt, double lo, double hi,
                       double& into) -> std::optional<int> {
-        bool ok = false;
-        const double v = parser.value(opt).toDouble(&ok);
-        if (!ok || !std::isfinite(v) || v < lo || v > hi)
-            return usage(QStringLiteral("--%1 must be a number from %2 to %3 (got '%4')")
-                             .arg(opt.names().front())
-                             .arg(lo)
-                             .arg(hi)
-                             .arg(parser.value(opt)));
-        into = v;
+        if (auto m = readNumber(parser, opt, lo, hi, into)) return usage(*m);
         return std::nullopt;
     };
     double codes = 3.0, hysteresis = 2.0, massFactor = 1.0;
@@ -124,18 +117,10 @@ int tuneRelayCommand(const QStringList& args) {
     if (auto e = number(hystOpt, 0.5, 20.0, hysteresis)) return *e;
     if (auto e = number(massOpt, 0.1, 20.0, massFactor)) return *e;
     std::uint64_t seed = 1;
-    if (parser.isSet(seedOpt)) {
-        bool ok = false;
-        seed = parser.value(seedOpt).toULongLong(&ok);
-        if (!ok)
-            return usage(
-                QStringLiteral("--seed must be a whole number from 0 to 18446744073709551615 (got "
-                               "'%1')")
-                    .arg(parser.value(seedOpt)));
-    }
-    const QString axis = parser.value(axisOpt);
-    if (axis != QLatin1String("x") && axis != QLatin1String("y"))
-        return usage(QStringLiteral("--axis must be x or y (got '%1')").arg(axis));
+    if (auto m = readSeed(parser, seedOpt, seed)) return usage(*m);
+    char axisName = 'x';
+    if (auto m = readAxis(parser, axisOpt, axisName)) return usage(*m);
+    const QString axis(QChar::fromLatin1(axisName));
     const ProfileLoad load = loadNamedMachineProfile(parser.value(machineOpt));
     if (!load.profile) return usage(load.error);
     if (!load.error.isEmpty()) err(QStringLiteral("trilho-cli tune relay: %1\n").arg(load.error));

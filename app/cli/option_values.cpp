@@ -1,0 +1,47 @@
+#include "app/cli/option_values.h"
+
+#include <QCommandLineParser>
+#include <cmath>
+
+namespace trilho::cli {
+
+std::optional<QString> readNumber(const QCommandLineParser& parser, const QCommandLineOption& opt,
+                                  double lo, double hi, double& into) {
+    if (!parser.isSet(opt)) return std::nullopt;
+    bool ok = false;
+    const double v = parser.value(opt).toDouble(&ok);
+    if (!ok || !std::isfinite(v) || v < lo || v > hi)
+        return QStringLiteral("--%1 must be a number from %2 to %3 (got '%4')")
+            .arg(opt.names().front())
+            .arg(lo)
+            .arg(hi)
+            .arg(parser.value(opt));
+    into = v;
+    return std::nullopt;
+}
+
+std::optional<QString> readSeed(const QCommandLineParser& parser, const QCommandLineOption& opt,
+                                std::uint64_t& seed) {
+    if (!parser.isSet(opt)) return std::nullopt;
+    bool ok = false;
+    const std::uint64_t v = parser.value(opt).toULongLong(&ok);
+    if (!ok)
+        return QStringLiteral(
+                   "--%1 must be a whole number from 0 to 18446744073709551615 (got "
+                   "'%2')")
+            .arg(opt.names().front(), parser.value(opt));
+    seed = v;
+    return std::nullopt;
+}
+
+std::optional<QString> readAxis(const QCommandLineParser& parser, const QCommandLineOption& opt,
+                                char& axis) {
+    if (!parser.isSet(opt)) return std::nullopt;
+    const QString a = parser.value(opt);
+    if (a != QLatin1String("x") && a != QLatin1String("y"))
+        return QStringLiteral("--%1 must be x or y (got '%2')").arg(opt.names().front(), a);
+    axis = a.at(0).toLatin1();
+    return std::nullopt;
+}
+
+}  // namespace trilho::cli

@@ -1,0 +1,26 @@
+#pragma once
+// The values of trilho-cli's common options, checked the same way in every command: a number
+// in its range, a seed, an axis. Each returns the one-line message naming the option and the
+// value typed when the value is wrong (the command reports it with usageError), nothing when
+// it is right or not given.
+#include <QString>
+#include <cstdint>
+#include <optional>
+
+class QCommandLineParser;
+class QCommandLineOption;
+
+namespace trilho::cli {
+
+/// A finite number from lo to hi into `into` (unchanged when the option is not given):
+/// "--NAME must be a number from LO to HI (got 'TEXT')".
+std::optional<QString> readNumber(const QCommandLineParser& parser, const QCommandLineOption& opt,
+                                  double lo, double hi, double& into);
+/// --seed N (any 64-bit unsigned integer) into `seed`, unchanged when not given.
+std::optional<QString> readSeed(const QCommandLineParser& parser, const QCommandLineOption& opt,
+                                std::uint64_t& seed);
+/// --axis x|y into `axis` ('x' or 'y'), unchanged when not given.
+std::optional<QString> readAxis(const QCommandLineParser& parser, const QCommandLineOption& opt,
+                                char& axis);
+
+}  // namespace trilho::cli
