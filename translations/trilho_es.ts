@@ -1458,6 +1458,81 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::MarginView</name>
+    <message>
+        <source>%1: no lost step up to %2 %3; the profile&apos;s %4 %3 has a margin of %5 (%6 %)</source>
+        <translation>%1: ningún paso perdido hasta %2 %3; los %4 %3 del perfil tienen un margen de %5 (%6 %)</translation>
+    </message>
+    <message>
+        <source>%1: no lost step in the whole sweep (or as far as the travel lets a move reach its speed), up to %2 %3 (margin at least %4)</source>
+        <translation>%1: ningún paso perdido en todo el barrido (o hasta donde el recorrido deja que un movimiento alcance su velocidad), hasta %2 %3 (margen de al menos %4)</translation>
+    </message>
+    <message>
+        <source>Margin test refused: %1</source>
+        <translation>Prueba de margen rechazada: %1</translation>
+    </message>
+    <message>
+        <source>Axis %1: %2 trials out and back, %3 s of machine time (simulation only: the board reports no step count; on the machine, check a pen mark at the start).</source>
+        <translation>Eje %1: %2 ensayos de ida y vuelta, %3 s de tiempo de máquina (solo simulación: la placa no informa la cuenta de pasos; en la máquina, compruebe una marca de lápiz en el inicio).</translation>
+    </message>
+    <message>
+        <source>Speed at the profile&apos;s acceleration</source>
+        <translation>Velocidad con la aceleración del perfil</translation>
+    </message>
+    <message>
+        <source>Acceleration at the profile&apos;s speed</source>
+        <translation>Aceleración a la velocidad del perfil</translation>
+    </message>
+    <message>
+        <source>no loss</source>
+        <translation>sin pérdida</translation>
+    </message>
+    <message>
+        <source>lost steps</source>
+        <translation>pasos perdidos</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>velocidad</translation>
+    </message>
+    <message>
+        <source>acceleration</source>
+        <translation>aceleración</translation>
+    </message>
+    <message>
+        <source>Sweep</source>
+        <translation>Barrido</translation>
+    </message>
+    <message>
+        <source>Speed (mm/s)</source>
+        <translation>Velocidad (mm/s)</translation>
+    </message>
+    <message>
+        <source>Acceleration (mm/s²)</source>
+        <translation>Aceleración (mm/s²)</translation>
+    </message>
+    <message>
+        <source>Move (mm)</source>
+        <translation>Movimiento (mm)</translation>
+    </message>
+    <message>
+        <source>Lost steps</source>
+        <translation>Pasos perdidos</translation>
+    </message>
+    <message>
+        <source>Return error (steps)</source>
+        <translation>Error al volver (pasos)</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Resultado</translation>
+    </message>
+    <message>
+        <source>The plotter has no encoder: its test is the margin of its speed and acceleration against lost steps. Choose the axis and press Run margin test.</source>
+        <translation>El plotter no tiene encoder: su prueba es el margen de su velocidad y aceleración frente a pasos perdidos. Elija el eje y pulse Ejecutar prueba de margen.</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::ModelView</name>
     <message>
         <source>Identify or autotune the rail to see its model, its fit and its Bode plot.</source>
@@ -2421,8 +2496,44 @@
         <translation>Banco de sintonía: %1</translation>
     </message>
     <message>
+        <source>Margin test (simulated plotter, virtual time)</source>
+        <translation>Prueba de margen (plotter simulado, tiempo virtual)</translation>
+    </message>
+    <message>
         <source>Step test (simulated plant, virtual time)</source>
         <translation>Prueba de escalón (planta simulada, tiempo virtual)</translation>
+    </message>
+    <message>
+        <source>Run margin test</source>
+        <translation>Ejecutar prueba de margen</translation>
+    </message>
+    <message>
+        <source>Moves out and back at rising speed, then at rising acceleration, until one loses a step: the profile&apos;s margin against each</source>
+        <translation>Movimientos de ida y vuelta a velocidad creciente, luego a aceleración creciente, hasta que uno pierde un paso: el margen del perfil frente a cada una</translation>
+    </message>
+    <message>
+        <source>Change gains during the test</source>
+        <translation>Cambiar las ganancias durante la prueba</translation>
+    </message>
+    <message>
+        <source>Bumpless: the integral takes the difference, the drive does not jump</source>
+        <translation>Sin salto: la integral absorbe la diferencia, el accionamiento no salta</translation>
+    </message>
+    <message>
+        <source>At (s after the step)</source>
+        <translation>En (s tras el escalón)</translation>
+    </message>
+    <message>
+        <source>New Kp</source>
+        <translation>Nuevo Kp</translation>
+    </message>
+    <message>
+        <source>New Ki</source>
+        <translation>Nuevo Ki</translation>
+    </message>
+    <message>
+        <source>New Kd</source>
+        <translation>Nuevo Kd</translation>
     </message>
     <message>
         <source>Axis</source>
@@ -2561,6 +2672,10 @@
         <translation>Borrar</translation>
     </message>
     <message>
+        <source>Margin</source>
+        <translation>Margen</translation>
+    </message>
+    <message>
         <source>Responses</source>
         <translation>Respuestas</translation>
     </message>
@@ -2585,6 +2700,10 @@
         <translation>%1 %2, %3 mm a %4 ms, masa x%5</translation>
     </message>
     <message>
+        <source>, then Kp %1 Ki %2 Kd %3 from %4 s</source>
+        <translation>, luego Kp %1 Ki %2 Kd %3 desde %4 s</translation>
+    </message>
+    <message>
         <source>Running in virtual time...</source>
         <translation>Ejecutando en tiempo virtual...</translation>
     </message>
@@ -2595,6 +2714,10 @@
     <message>
         <source>Run %1 stopped: %2</source>
         <translation>Ensayo %1 detenido: %2</translation>
+    </message>
+    <message>
+        <source>The gain change never came (%1): the run had one set of gains.</source>
+        <translation>El cambio de ganancias no llegó (%1): la ejecución tuvo un solo juego de ganancias.</translation>
     </message>
     <message>
         <source>what if (from run %1): %2</source>
@@ -2623,6 +2746,14 @@
     <message>
         <source>Relay experiment failed: %1</source>
         <translation>El experimento del relé falló: %1</translation>
+    </message>
+    <message>
+        <source>Margin test done: speed margin %1, acceleration margin %2.</source>
+        <translation>Prueba de margen hecha: margen de velocidad %1, margen de aceleración %2.</translation>
+    </message>
+    <message>
+        <source>Margin test refused: %1</source>
+        <translation>Prueba de margen rechazada: %1</translation>
     </message>
     <message>
         <source>%1: the run has no samples</source>
@@ -2888,8 +3019,8 @@
         <translation>Polígono por &amp;puntos...</translation>
     </message>
     <message>
-        <source>The plotter has no encoder: there is no response to measure</source>
-        <translation>El plotter no tiene encoder: no hay respuesta que medir</translation>
+        <source>The plotter has no encoder: its workbench is the speed and acceleration margin test against lost steps</source>
+        <translation>El plotter no tiene encoder: su banco es la prueba de margen de velocidad y aceleración frente a pasos perdidos</translation>
     </message>
     <message>
         <source>Program: %1</source>

@@ -1458,6 +1458,81 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::MarginView</name>
+    <message>
+        <source>%1: no lost step up to %2 %3; the profile&apos;s %4 %3 has a margin of %5 (%6 %)</source>
+        <translation>%1: nenhum passo perdido até %2 %3; os %4 %3 do perfil têm margem de %5 (%6 %)</translation>
+    </message>
+    <message>
+        <source>%1: no lost step in the whole sweep (or as far as the travel lets a move reach its speed), up to %2 %3 (margin at least %4)</source>
+        <translation>%1: nenhum passo perdido em toda a varredura (ou até onde o curso deixa um movimento atingir sua velocidade), até %2 %3 (margem de pelo menos %4)</translation>
+    </message>
+    <message>
+        <source>Margin test refused: %1</source>
+        <translation>Teste de margem recusado: %1</translation>
+    </message>
+    <message>
+        <source>Axis %1: %2 trials out and back, %3 s of machine time (simulation only: the board reports no step count; on the machine, check a pen mark at the start).</source>
+        <translation>Eixo %1: %2 ensaios de ida e volta, %3 s de tempo de máquina (só simulação: a placa não informa a contagem de passos; na máquina, confira uma marca de caneta no início).</translation>
+    </message>
+    <message>
+        <source>Speed at the profile&apos;s acceleration</source>
+        <translation>Velocidade na aceleração do perfil</translation>
+    </message>
+    <message>
+        <source>Acceleration at the profile&apos;s speed</source>
+        <translation>Aceleração na velocidade do perfil</translation>
+    </message>
+    <message>
+        <source>no loss</source>
+        <translation>sem perda</translation>
+    </message>
+    <message>
+        <source>lost steps</source>
+        <translation>passos perdidos</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>velocidade</translation>
+    </message>
+    <message>
+        <source>acceleration</source>
+        <translation>aceleração</translation>
+    </message>
+    <message>
+        <source>Sweep</source>
+        <translation>Varredura</translation>
+    </message>
+    <message>
+        <source>Speed (mm/s)</source>
+        <translation>Velocidade (mm/s)</translation>
+    </message>
+    <message>
+        <source>Acceleration (mm/s²)</source>
+        <translation>Aceleração (mm/s²)</translation>
+    </message>
+    <message>
+        <source>Move (mm)</source>
+        <translation>Movimento (mm)</translation>
+    </message>
+    <message>
+        <source>Lost steps</source>
+        <translation>Passos perdidos</translation>
+    </message>
+    <message>
+        <source>Return error (steps)</source>
+        <translation>Erro no retorno (passos)</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Resultado</translation>
+    </message>
+    <message>
+        <source>The plotter has no encoder: its test is the margin of its speed and acceleration against lost steps. Choose the axis and press Run margin test.</source>
+        <translation>O plotter não tem encoder: seu teste é a margem da velocidade e da aceleração contra passos perdidos. Escolha o eixo e pressione Executar teste de margem.</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::ModelView</name>
     <message>
         <source>Identify or autotune the rail to see its model, its fit and its Bode plot.</source>
@@ -2421,8 +2496,44 @@
         <translation>Bancada de sintonia: %1</translation>
     </message>
     <message>
+        <source>Margin test (simulated plotter, virtual time)</source>
+        <translation>Teste de margem (plotter simulado, tempo virtual)</translation>
+    </message>
+    <message>
         <source>Step test (simulated plant, virtual time)</source>
         <translation>Teste de degrau (planta simulada, tempo virtual)</translation>
+    </message>
+    <message>
+        <source>Run margin test</source>
+        <translation>Executar teste de margem</translation>
+    </message>
+    <message>
+        <source>Moves out and back at rising speed, then at rising acceleration, until one loses a step: the profile&apos;s margin against each</source>
+        <translation>Movimentos de ida e volta a velocidade crescente, depois a aceleração crescente, até um perder um passo: a margem do perfil contra cada uma</translation>
+    </message>
+    <message>
+        <source>Change gains during the test</source>
+        <translation>Mudar os ganhos durante o teste</translation>
+    </message>
+    <message>
+        <source>Bumpless: the integral takes the difference, the drive does not jump</source>
+        <translation>Sem solavanco: a integral absorve a diferença, o acionamento não salta</translation>
+    </message>
+    <message>
+        <source>At (s after the step)</source>
+        <translation>Em (s após o degrau)</translation>
+    </message>
+    <message>
+        <source>New Kp</source>
+        <translation>Novo Kp</translation>
+    </message>
+    <message>
+        <source>New Ki</source>
+        <translation>Novo Ki</translation>
+    </message>
+    <message>
+        <source>New Kd</source>
+        <translation>Novo Kd</translation>
     </message>
     <message>
         <source>Axis</source>
@@ -2561,6 +2672,10 @@
         <translation>Limpar</translation>
     </message>
     <message>
+        <source>Margin</source>
+        <translation>Margem</translation>
+    </message>
+    <message>
         <source>Responses</source>
         <translation>Respostas</translation>
     </message>
@@ -2585,6 +2700,10 @@
         <translation>%1 %2, %3 mm a %4 ms, massa x%5</translation>
     </message>
     <message>
+        <source>, then Kp %1 Ki %2 Kd %3 from %4 s</source>
+        <translation>, depois Kp %1 Ki %2 Kd %3 a partir de %4 s</translation>
+    </message>
+    <message>
         <source>Running in virtual time...</source>
         <translation>Executando em tempo virtual...</translation>
     </message>
@@ -2595,6 +2714,10 @@
     <message>
         <source>Run %1 stopped: %2</source>
         <translation>Ensaio %1 parado: %2</translation>
+    </message>
+    <message>
+        <source>The gain change never came (%1): the run had one set of gains.</source>
+        <translation>A mudança de ganhos não chegou (%1): a execução teve um só conjunto de ganhos.</translation>
     </message>
     <message>
         <source>what if (from run %1): %2</source>
@@ -2623,6 +2746,14 @@
     <message>
         <source>Relay experiment failed: %1</source>
         <translation>O experimento do relé falhou: %1</translation>
+    </message>
+    <message>
+        <source>Margin test done: speed margin %1, acceleration margin %2.</source>
+        <translation>Teste de margem feito: margem de velocidade %1, margem de aceleração %2.</translation>
+    </message>
+    <message>
+        <source>Margin test refused: %1</source>
+        <translation>Teste de margem recusado: %1</translation>
     </message>
     <message>
         <source>%1: the run has no samples</source>
@@ -2888,8 +3019,8 @@
         <translation>Polígono por &amp;pontos...</translation>
     </message>
     <message>
-        <source>The plotter has no encoder: there is no response to measure</source>
-        <translation>O plotter não tem encoder: não há resposta a medir</translation>
+        <source>The plotter has no encoder: its workbench is the speed and acceleration margin test against lost steps</source>
+        <translation>O plotter não tem encoder: sua bancada é o teste de margem de velocidade e aceleração contra passos perdidos</translation>
     </message>
     <message>
         <source>Program: %1</source>

@@ -72,7 +72,9 @@ struct Options {
         QStringLiteral("workbench"),
         QStringLiteral("Open the tuning workbench and run a demonstration in it: on the rail the "
                        "1996 law against the engineered one and an autotune, on the DC table a "
-                       "step (with --screenshot the workbench is saved).")};
+                       "step and the X axis' autotune, on the plotter its margin test (with "
+                       "--screenshot the workbench is "
+                       "saved).")};
     QCommandLineOption baud{QStringLiteral("baud"),
                             QStringLiteral("Bit rate of --port (default: the board's)."),
                             QStringLiteral("N")};
@@ -342,10 +344,18 @@ int main(int argc, char* argv[]) {
         });
         if (xyWindow) {
             if (parser.isSet(options.workbench) && xyWindow->workbenchAction()->isEnabled()) {
-                xyWindow->openWorkbench();  // the DC table: a step on each axis
+                xyWindow->openWorkbench();
                 ui::WorkbenchWindow* bench = xyWindow->workbench();
                 if (parser.isSet(sizeOpt)) bench->resize(window->size());
-                bench->runStep();
+                if (bench->plotter()) {
+                    bench->marginTest();  // the plotter: its margin test
+                } else {
+                    bench->runStep();  // the DC table: a step on X, then X's autotune
+                    QObject::connect(bench, &ui::WorkbenchWindow::runFinished, bench, [bench] {
+                        static bool tuned = false;
+                        if (!std::exchange(tuned, true)) bench->autotune();
+                    });
+                }
             }
             if (parser.isSet(runOpt))
                 xyWindow->startProgram(false);  // --run: chosen; Automatic homes first

@@ -4,17 +4,22 @@
 #include <qcustomplot.h>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QGroupBox>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLabel>
 #include <QProcess>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QSpinBox>
+#include <QStatusBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 
 #include "translations/i18n.h"
+#include "ui/workbench/margin_view.h"
 #include "ui/workbench/model_view.h"
 #include "ui/workbench/run_overlay.h"
 #include "ui/workbench/terms_view.h"
@@ -259,9 +264,112 @@ class WorkbenchTest : public QObject {
     // page was left without a parent and leaked (LeakSanitizer, widget.xy_screens).
     void theModelPageIsOwnedEvenWithoutItsTab() {
         WorkbenchWindow w(MachineProfile::xyPlotter());
-        QCOMPARE(w.tabs()->count(), 2);
+        QCOMPARE(w.tabs()->count(), 1);  // the plotter's margin test only
         QVERIFY(w.model());
         QCOMPARE(w.findChild<ModelView*>(), w.model());
+        QCOMPARE(w.findChild<RunOverlay*>(), w.overlay());
+        QCOMPARE(w.findChild<TermsView*>(), w.terms());
+        WorkbenchWindow rail(MachineProfile::rail());
+        QCOMPARE(rail.findChild<MarginView*>(), rail.marginView());
+    }
+
+    // The plotter (no encoder): its margin test at the screens, with the numbers and the
+    // trials `trilho-cli tune margin --machine xy_plotter --axis y` prints.
+    void thePlotterMarginTestShowsTheCliNumbers() {
+        WorkbenchWindow w(MachineProfile::xyPlotter());
+        w.show();
+        QVERIFY(w.plotter());
+        QCOMPARE(w.tabs()->widget(0), static_cast<QWidget*>(w.marginView()));
+        auto* run = w.findChild<QPushButton*>(QStringLiteral("marginTest"));
+        QVERIFY(run && run->isVisible() && run->isEnabled());
+        QVERIFY(!w.findChild<QPushButton*>(QStringLiteral("runStep"))->isVisible());
+        QVERIFY(!w.findChild<QDoubleSpinBox*>(QStringLiteral("amplitude"))->isVisible());
+        w.findChild<QComboBox*>(QStringLiteral("axis"))->setCurrentIndex(1);
+        w.findChild<QSpinBox*>(QStringLiteral("seed"))->setValue(3);
+        run->click();
+        QVERIFY(!run->isEnabled());  // on a worker thread
+        QVERIFY(waitRun(w));
+        const QJsonObject j =
+            cli({QStringLiteral("tune"), QStringLiteral("margin"), QStringLiteral("--machine"),
+                 QStringLiteral("xy_plotter"), QStringLiteral("--axis"), QStringLiteral("y"),
+                 QStringLiteral("--seed"), QStringLiteral("3"), QStringLiteral("--json")});
+        QVERIFY2(!j.isEmpty(), "trilho-cli tune margin printed no JSON");
+        const QString text = w.marginView()->summary()->text();
+        QVERIFY2(text.startsWith(QStringLiteral("Axis Y:")), qPrintable(text));
+        const auto fixed = [](double v, int d) { return QString::number(v, 'f', d); };
+        for (const QString& s :
+             {fixed(j[QStringLiteral("max_speed_mm_s")].toDouble(), 0) + QStringLiteral(" mm/s"),
+              fixed(j[QStringLiteral("max_acceleration_mm_s2")].toDouble(), 0) +
+                  QStringLiteral(" mm/s²"),
+              QStringLiteral("margin of ") + fixed(j[QStringLiteral("speed_margin")].toDouble(), 2),
+              fixed(j[QStringLiteral("machine_time_s")].toDouble(), 1) + QStringLiteral(" s")})
+            QVERIFY2(text.contains(s), qPrintable(s + QStringLiteral(" not in: ") + text));
+        // Every trial, in the CLI's order, lost steps as counted.
+        const QJsonArray speed = j[QStringLiteral("speed_sweep")].toArray();
+        const QJsonArray accel = j[QStringLiteral("acceleration_sweep")].toArray();
+        QTableWidget* table = w.marginView()->trials();
+        QCOMPARE(table->rowCount(), speed.size() + accel.size());
+        for (int row = 0; row < table->rowCount(); ++row) {
+            const QJsonObject t =
+                (row < speed.size() ? speed[row] : accel[row - speed.size()]).toObject();
+            QCOMPARE(table->item(row, 1)->text(),
+                     fixed(t[QStringLiteral("speed_mm_s")].toDouble(), 1));
+            QCOMPARE(table->item(row, 4)->text(),
+                     QString::number(t[QStringLiteral("lost_steps")].toInteger()));
+        }
+        QVERIFY(j[QStringLiteral("speed_limit_found")].toBool());  // the sweep found a loss
+    }
+
+    // A bumpless gain change part-way through a step, as `tune step --change-at S --new-kp K`:
+    // the same metrics, the change in the run's conditions and its label.
+    void aGainChangeDuringTheStepRunsAsTheCli() {
+        WorkbenchWindow w(MachineProfile::rail());
+        auto* change = w.findChild<QGroupBox*>(QStringLiteral("gainChange"));
+        QVERIFY(change && change->isVisible() == false);  // not shown yet: the window is hidden
+        QVERIFY(change->isCheckable() && !change->isChecked());
+        // Unchecked, the new gains follow the test's own.
+        w.findChild<QDoubleSpinBox*>(QStringLiteral("kp"))->setValue(1.5);
+        QCOMPARE(w.findChild<QDoubleSpinBox*>(QStringLiteral("newKp"))->value(), 1.5);
+        w.findChild<QDoubleSpinBox*>(QStringLiteral("kp"))->setValue(1.2);
+        change->setChecked(true);
+        w.findChild<QDoubleSpinBox*>(QStringLiteral("changeAt"))->setValue(0.1);
+        w.findChild<QDoubleSpinBox*>(QStringLiteral("newKp"))->setValue(2.0);
+        QVERIFY(w.currentSpec().gainChange.has_value());
+        w.runStep();
+        QVERIFY(waitRun(w));
+        const WorkbenchRun& run = *w.runs()[0];
+        QVERIFY(run.record.conditions.gainChange.has_value());
+        QCOMPARE(run.record.conditions.gainChange->atS, 0.1);
+        QCOMPARE(run.record.conditions.gainChange->gains.kp, 2.0);
+        QVERIFY2(run.name.contains(QStringLiteral("then Kp 2 ")), qPrintable(run.name));
+        const QJsonObject json =
+            cli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--machine"),
+                 QStringLiteral("rail"), QStringLiteral("--amplitude"), QStringLiteral("10"),
+                 QStringLiteral("--kp"), QStringLiteral("1.2"), QStringLiteral("--change-at"),
+                 QStringLiteral("0.1"), QStringLiteral("--new-kp"), QStringLiteral("2"),
+                 QStringLiteral("--json")});
+        QVERIFY2(json.contains(QStringLiteral("gain_change")), "the CLI made no change");
+        QCOMPARE(json[QStringLiteral("settling_time_1count_s")].toDouble(),
+                 run.metrics.settlingTime1CountS);
+        QCOMPARE(json[QStringLiteral("iae")].toDouble(), run.metrics.iae);
+        QCOMPARE(json[QStringLiteral("overshoot_pct")].toDouble(), run.metrics.overshootPct);
+        // The law without a bumpless transfer cannot have one.
+        w.findChild<QComboBox*>(QStringLiteral("law"))->setCurrentIndex(1);
+        QVERIFY(!change->isEnabled());
+        QVERIFY(!w.currentSpec().gainChange.has_value());
+    }
+
+    // A change set after the test has ended never comes: the run says it had one set of gains.
+    void aGainChangeThatNeverCameIsSaid() {
+        WorkbenchWindow w(MachineProfile::rail());
+        w.findChild<QGroupBox*>(QStringLiteral("gainChange"))->setChecked(true);
+        w.findChild<QDoubleSpinBox*>(QStringLiteral("changeAt"))->setValue(500.0);
+        w.findChild<QDoubleSpinBox*>(QStringLiteral("newKp"))->setValue(2.0);
+        w.runStep();
+        QVERIFY(waitRun(w));
+        QVERIFY(!w.runs()[0]->record.conditions.gainChange.has_value());
+        const QString said = w.statusBar()->currentMessage();
+        QVERIFY2(said.contains(QStringLiteral("never came")), qPrintable(said));
     }
 
     // The DC table: per axis, with its model page.

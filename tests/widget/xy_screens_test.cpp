@@ -649,8 +649,9 @@ class XyScreensTest : public QObject {
         }
     }
 
-    // Issue 21: the workbench from the DC table's window, per axis; greyed on the plotter.
-    void theDcTableOpensTheWorkbenchAndThePlotterSaysWhyNot() {
+    // Issue 21: the workbench from the DC table's window, per axis; on the plotter (no encoder)
+    // its margin test.
+    void theDcTableOpensTheWorkbenchAndThePlotterItsMarginTest() {
         QTemporaryDir dir;
         QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
         {
@@ -672,10 +673,15 @@ class XyScreensTest : public QObject {
         }
         auto link = virtualLink(shipped("xy_plotter.json"));
         XyMainWindow w(*link, settings);
-        QVERIFY(!w.workbenchAction()->isEnabled());
-        QVERIFY(w.workbenchAction()->toolTip().contains(QStringLiteral("no encoder")));
+        QVERIFY(w.workbenchAction()->isEnabled());
+        QVERIFY(w.workbenchAction()->toolTip().contains(QStringLiteral("margin test")));
         w.openWorkbench();
-        QVERIFY(!w.workbench());
+        QVERIFY(w.workbench() && w.workbench()->plotter());
+        auto* margin = w.workbench()->findChild<QPushButton*>(QStringLiteral("marginTest"));
+        QVERIFY(margin && margin->isVisibleTo(w.workbench()));
+        QVERIFY(!w.workbench()
+                     ->findChild<QPushButton*>(QStringLiteral("runStep"))
+                     ->isVisibleTo(w.workbench()));
     }
 
     void plotterJogStopsOnSpace() {

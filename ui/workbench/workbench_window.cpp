@@ -31,7 +31,9 @@
 #include "core/tuning/rail_identification.h"
 #include "host/session/sim_dc_table_rig.h"
 #include "host/session/sim_rail_rig.h"
+#include "host/tuning/plotter_margin_test.h"
 #include "host/tuning/relay_comparison.h"
+#include "ui/workbench/margin_view.h"
 #include "ui/workbench/model_view.h"
 #include "ui/workbench/run_overlay.h"
 #include "ui/workbench/terms_view.h"
@@ -78,6 +80,7 @@ WorkbenchWindow::WorkbenchWindow(const MachineProfile& profile, QWidget* parent)
     build();
     retranslate();
     lawChanged();
+    fitForm();
     resize(1280, 720);
 }
 
@@ -136,8 +139,42 @@ void WorkbenchWindow::build() {
     run_->setObjectName(QStringLiteral("runStep"));
     compare_ = new QPushButton(testBox_);
     compare_->setObjectName(QStringLiteral("compareLaws"));
+    // A bumpless gain change part-way through the test (the rail's engineered law, as `tune
+    // step --change-at S --new-kp K`): the lesson of bumpless transfer.
+    changeBox_ = new QGroupBox(testBox_);
+    changeBox_->setObjectName(QStringLiteral("gainChange"));
+    changeBox_->setCheckable(true);
+    changeBox_->setChecked(false);
+    auto* cf = new QFormLayout(changeBox_);
+    changeAtLabel_ = new QLabel(changeBox_);
+    changeAt_ = spinBox(changeBox_, "changeAt", 0.0, 600.0, 3, 0.05);
+    changeAt_->setValue(0.05);
+    newKpLabel_ = new QLabel(changeBox_);
+    newKiLabel_ = new QLabel(changeBox_);
+    newKdLabel_ = new QLabel(changeBox_);
+    newKp_ = spinBox(changeBox_, "newKp", 0.0, 1000.0, 6, 0.1);
+    newKi_ = spinBox(changeBox_, "newKi", 0.0, 1000.0, 6, 0.1);
+    newKd_ = spinBox(changeBox_, "newKd", 0.0, 1000.0, 6, 0.01);
+    cf->addRow(changeAtLabel_, changeAt_);
+    cf->addRow(newKpLabel_, newKp_);
+    cf->addRow(newKiLabel_, newKi_);
+    cf->addRow(newKdLabel_, newKd_);
+    f->addRow(changeBox_);
+    changeBox_->setVisible(rail_);
     f->addRow(run_);
     f->addRow(compare_);
+    // The plotter's test: the margin of its speed and acceleration against lost steps (it has
+    // no encoder to measure a step with): only the axis and the seed apply.
+    margin_ = new QPushButton(testBox_);
+    margin_->setObjectName(QStringLiteral("marginTest"));
+    f->addRow(margin_);
+    margin_->setVisible(plotter());
+    if (plotter()) {
+        for (QWidget* w : std::initializer_list<QWidget*>{amplitude_, speed_, law_, period_, kp_,
+                                                          ki_, kd_, mass_})
+            f->setRowVisible(w, false);
+        run_->hide();
+    }
     if (!rail_) {
         // The table's classic law has other gains (b0, b1): the boxes are the engineered law's.
         law_->setEnabled(false);
@@ -184,25 +221,39 @@ void WorkbenchWindow::build() {
     fv->addWidget(testBox_);
     fv->addWidget(tuneBox_);
     fv->addWidget(runsBox_, 1);
+    if (plotter()) {
+        runsBox_->hide();  // no step runs to overlay
+        fv->addStretch(1);
+    }
     auto* scroll = new QScrollArea;
+    formScroll_ = scroll;
     scroll->setWidget(form);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
-    // Wide enough for the form: the boxes are never cut, the runs' list scrolls instead.
-    scroll->setMinimumWidth(form->sizeHint().width() +
-                            scroll->verticalScrollBar()->sizeHint().width() + 8);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
 
     overlay_ = new RunOverlay;
     terms_ = new TermsView;
     model_ = new ModelView(this);  // owned by the window even when no tab shows it (the plotter)
+    marginView_ = new MarginView(this);  // the same: only the plotter has its tab
     tabs_ = new QTabWidget;
-    tabs_->addTab(overlay_, QString());
-    tabs_->addTab(terms_, QString());
-    if (tunable())
-        tabs_->addTab(model_, QString());
-    else
+    if (plotter()) {
+        // The plotter's only page: no response to overlay, no loop terms, no model.
+        tabs_->addTab(marginView_, QString());
+        overlay_->setParent(this);
+        terms_->setParent(this);
+        overlay_->hide();
+        terms_->hide();
         model_->hide();
+    } else {
+        tabs_->addTab(overlay_, QString());
+        tabs_->addTab(terms_, QString());
+        marginView_->hide();
+        if (tunable())
+            tabs_->addTab(model_, QString());
+        else
+            model_->hide();
+    }
     auto* split = new QSplitter(Qt::Horizontal);
     split->addWidget(scroll);
     split->addWidget(tabs_);
@@ -212,12 +263,21 @@ void WorkbenchWindow::build() {
     statusBar();
 
     connect(law_, &QComboBox::currentIndexChanged, this, &WorkbenchWindow::lawChanged);
+    // Until the teacher sets a change, the gains it changes to are the test's own (an autotune
+    // or a typed gain carries over): checking the box then changes only what is typed in it.
+    const std::pair<QDoubleSpinBox*, QDoubleSpinBox*> follows[] = {
+        {kp_, newKp_}, {ki_, newKi_}, {kd_, newKd_}};
+    for (const auto& [from, to] : follows)
+        connect(from, &QDoubleSpinBox::valueChanged, this, [this, to = to](double v) {
+            if (!changeBox_->isChecked()) to->setValue(v);
+        });
     connect(axis_, &QComboBox::currentIndexChanged, this, &WorkbenchWindow::lawChanged);
     connect(run_, &QPushButton::clicked, this, &WorkbenchWindow::runStep);
     connect(compare_, &QPushButton::clicked, this, &WorkbenchWindow::compareLaws);
     connect(identify_, &QPushButton::clicked, this, &WorkbenchWindow::identify);
     connect(autotune_, &QPushButton::clicked, this, &WorkbenchWindow::autotune);
     connect(relay_, &QPushButton::clicked, this, &WorkbenchWindow::relayExperiment);
+    connect(margin_, &QPushButton::clicked, this, &WorkbenchWindow::marginTest);
     connect(saveTuned_, &QPushButton::clicked, this, &WorkbenchWindow::saveTunedProfile);
     connect(overlay_, &RunOverlay::runSelected, this, &WorkbenchWindow::selectRun);
     connect(terms_, &TermsView::whatIfRequested, this, &WorkbenchWindow::whatIfRun);
@@ -248,7 +308,19 @@ void WorkbenchWindow::build() {
 
 void WorkbenchWindow::retranslate() {
     setWindowTitle(tr("Tuning workbench: %1").arg(profile_.name));
-    testBox_->setTitle(tr("Step test (simulated plant, virtual time)"));
+    testBox_->setTitle(plotter() ? tr("Margin test (simulated plotter, virtual time)")
+                                 : tr("Step test (simulated plant, virtual time)"));
+    margin_->setText(tr("Run margin test"));
+    margin_->setToolTip(
+        tr("Moves out and back at rising speed, then at rising acceleration, until one loses "
+           "a step: the profile's margin against each"));
+    changeBox_->setTitle(tr("Change gains during the test"));
+    changeBox_->setToolTip(
+        tr("Bumpless: the integral takes the difference, the drive does not jump"));
+    changeAtLabel_->setText(tr("At (s after the step)"));
+    newKpLabel_->setText(tr("New Kp"));
+    newKiLabel_->setText(tr("New Ki"));
+    newKdLabel_->setText(tr("New Kd"));
     axisLabel_->setText(tr("Axis"));
     amplitudeLabel_->setText(tr("Amplitude (mm)"));
     amplitude_->setToolTip(tr("The sign is the direction"));
@@ -293,14 +365,30 @@ void WorkbenchWindow::retranslate() {
     loadRun_->setText(tr("Load run..."));
     removeRun_->setText(tr("Remove"));
     clearRuns_->setText(tr("Clear"));
+    if (plotter()) {
+        tabs_->setTabText(0, tr("Margin"));
+        return;
+    }
     tabs_->setTabText(0, tr("Responses"));
     tabs_->setTabText(1, tr("P, I, D terms"));
     if (tunable()) tabs_->setTabText(2, tr("Model"));
 }
 
 void WorkbenchWindow::changeEvent(QEvent* e) {
-    if (e->type() == QEvent::LanguageChange) retranslate();
+    if (e->type() == QEvent::LanguageChange) {
+        retranslate();
+        fitForm();
+    }
     QMainWindow::changeEvent(e);
+}
+
+void WorkbenchWindow::fitForm() {
+    // Wide enough for the form with its texts: the boxes are never cut, the runs' list
+    // scrolls instead.
+    QWidget* form = formScroll_->widget();
+    form->adjustSize();
+    formScroll_->setMinimumWidth(form->sizeHint().width() +
+                                 formScroll_->verticalScrollBar()->sizeHint().width() + 8);
 }
 
 void WorkbenchWindow::lawChanged() {
@@ -311,6 +399,8 @@ void WorkbenchWindow::lawChanged() {
     kp_->setValue(g.kp);
     ki_->setValue(g.ki);
     kd_->setValue(rail_ ? g.kd : g.kff);
+    // Only the engineered law changes gains bumplessly (the 1996 law has no such transfer).
+    changeBox_->setEnabled(rail_ && law == LoopLaw::Engineered);
     if (rail_)
         period_->setValue(law == LoopLaw::Classic ? kClassicPeriodMs
                                                   : profile_.loop.samplePeriodS * 1e3);
@@ -336,6 +426,13 @@ StepTestSpec WorkbenchWindow::currentSpec() const {
         g.ki = ki_->value();
         g.kd = kd_->value();
         s.gains = g;
+        if (changeBox_->isChecked() && law == LoopLaw::Engineered) {
+            GainChange change{changeAt_->value(), g};
+            change.gains.kp = newKp_->value();
+            change.gains.ki = newKi_->value();
+            change.gains.kd = newKd_->value();
+            s.gainChange = change;
+        }
     } else if (profile_.dcTable.law == DcLaw::Engineered) {
         TuningGains g = profileGains(profile_, s.axis, LoopLaw::Engineered);
         g.kp = kp_->value();
@@ -361,6 +458,12 @@ QString WorkbenchWindow::runLabel(const RunConditions& c) const {
                        .arg(c.amplitudeMm, 0, 'g', 5)
                        .arg(c.periodS * 1e3, 0, 'g', 3)
                        .arg(c.massFactor, 0, 'g', 3);
+    if (c.gainChange)
+        text += tr(", then Kp %1 Ki %2 Kd %3 from %4 s")
+                    .arg(c.gainChange->gains.kp, 0, 'g', 4)
+                    .arg(c.gainChange->gains.ki, 0, 'g', 4)
+                    .arg(c.gainChange->gains.kd, 0, 'g', 4)
+                    .arg(c.gainChange->atS, 0, 'g', 4);
     if (c.axis) text = QStringLiteral("%1: ").arg(QChar::fromLatin1(c.axis).toUpper()) + text;
     return text;
 }
@@ -368,7 +471,7 @@ QString WorkbenchWindow::runLabel(const RunConditions& c) const {
 void WorkbenchWindow::setBusy(bool busy) {
     busy_ = busy;
     for (QWidget* w : std::initializer_list<QWidget*>{run_, compare_, identify_, autotune_, relay_,
-                                                      terms_->whatIfButton()})
+                                                      margin_, terms_->whatIfButton()})
         w->setEnabled(!busy);
     if (busy) statusBar()->showMessage(tr("Running in virtual time..."));
 }
@@ -385,10 +488,15 @@ void WorkbenchWindow::addRun(StepTestResult result, const QString& label) {
     runs_.push_back(run);
     refreshRuns();
     selectRun(static_cast<int>(runs_.size()) - 1);
-    statusBar()->showMessage(run->abortReason.isEmpty()
-                                 ? tr("Run %1 done.").arg(number)
-                                 : tr("Run %1 stopped: %2").arg(number).arg(run->abortReason),
-                             10000);
+    QString said = run->abortReason.isEmpty()
+                       ? tr("Run %1 done.").arg(number)
+                       : tr("Run %1 stopped: %2").arg(number).arg(run->abortReason);
+    // A change asked for after the test ended never came: the run had one set of gains.
+    if (!result.gainChangeMissed.isEmpty())
+        said +=
+            QLatin1Char(' ') + tr("The gain change never came (%1): the run had one set of gains.")
+                                   .arg(result.gainChangeMissed);
+    statusBar()->showMessage(said, 15000);
 }
 
 void WorkbenchWindow::refreshRuns() {
@@ -541,6 +649,28 @@ void WorkbenchWindow::relayExperiment() {
                                          : tr("Relay experiment failed: %1").arg(c.relay.error),
                                      10000);
         });
+}
+
+void WorkbenchWindow::marginTest() {
+    if (busy_ || !plotter()) return;
+    MarginTestSpec spec;
+    spec.profile = profile_;
+    spec.axis = static_cast<char>(axis_->currentData().toInt());
+    spec.seed = static_cast<std::uint64_t>(seed_->value());
+    const char axis = spec.axis;
+    inBackground<MarginResult>([spec] { return runPlotterMarginTest(spec); },
+                               [this, axis](MarginResult r) {
+                                   marginView_->showResult(r, axis);
+                                   tabs_->setCurrentWidget(marginView_);
+                                   statusBar()->showMessage(
+                                       r.error.isEmpty()
+                                           ? tr("Margin test done: speed margin %1, acceleration "
+                                                "margin %2.")
+                                                 .arg(r.speedMargin, 0, 'f', 2)
+                                                 .arg(r.accelerationMargin, 0, 'f', 2)
+                                           : tr("Margin test refused: %1").arg(r.error),
+                                       10000);
+                               });
 }
 
 void WorkbenchWindow::identifyTableAxis() {

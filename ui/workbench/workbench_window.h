@@ -4,7 +4,8 @@
 // table of metrics side by side, the P/I/D terms of a run tick by tick with the equation
 // substituted and "what if" re-simulation, and on the rail and each DC table axis
 // identification, autotune and the Bode plot, and on the rail the relay (Ziegler-Nichols)
-// experiment beside the autotune to teach with. Every figure comes from core/tuning and
+// experiment beside the autotune to teach with; on the plotter (no encoder) the speed and
+// acceleration margin test against lost steps. Every figure comes from core/tuning and
 // host/tuning, the same code `trilho-cli tune` prints, so the screens and the CLI agree to the
 // digit.
 #include <QMainWindow>
@@ -23,12 +24,14 @@ class QGroupBox;
 class QLabel;
 class QListWidget;
 class QPushButton;
+class QScrollArea;
 class QSpinBox;
 class QTabWidget;
 
 namespace trilho {
 namespace ui {
 
+class MarginView;
 class ModelView;
 class RunOverlay;
 class TermsView;
@@ -50,7 +53,12 @@ class WorkbenchWindow : public QMainWindow {
     /// The relay experiment and its Ziegler-Nichols gains beside the model-based autotune, both
     /// run on the same 10 mm step (host/tuning/relay_comparison.h; `tune relay`'s numbers).
     void relayExperiment();
+    /// The plotter's speed and acceleration margin test on the form's axis and seed
+    /// (`trilho-cli tune margin`'s numbers).
+    void marginTest();
     bool busy() const { return busy_; }
+    /// The plotter's workbench has only the margin test (no encoder to measure a step with).
+    bool plotter() const { return profile_.kind == MachineKind::Plotter; }
     const std::vector<WorkbenchRunPtr>& runs() const { return runs_; }
     bool addRecord(RunRecord record, const QString& name, QString* error = nullptr);
     bool saveRun(int index, const QString& csvPath, QString* error);
@@ -61,6 +69,7 @@ class WorkbenchWindow : public QMainWindow {
     RunOverlay* overlay() const { return overlay_; }
     TermsView* terms() const { return terms_; }
     ModelView* model() const { return model_; }
+    MarginView* marginView() const { return marginView_; }
     QTabWidget* tabs() const { return tabs_; }
 
   signals:
@@ -72,6 +81,8 @@ class WorkbenchWindow : public QMainWindow {
   private:
     void build();
     void retranslate();
+    /// The form's column as wide as the form in the current language: never cut.
+    void fitForm();
     void lawChanged();
     void setBusy(bool busy);
     /// The rail and the DC table have a plant to identify; the plotter (no encoder) has not.
@@ -101,10 +112,17 @@ class WorkbenchWindow : public QMainWindow {
     std::optional<MachineProfile> tuned_;
 
     QTabWidget* tabs_;
+    QScrollArea* formScroll_;
     RunOverlay* overlay_;
     TermsView* terms_;
     ModelView* model_;
+    MarginView* marginView_;
     QGroupBox *testBox_, *tuneBox_, *runsBox_;
+    /// The rail's engineered law: new gains part-way through the test (`--change-at`).
+    QGroupBox* changeBox_;
+    QLabel *changeAtLabel_, *newKpLabel_, *newKiLabel_, *newKdLabel_;
+    QDoubleSpinBox *changeAt_, *newKp_, *newKi_, *newKd_;
+    QPushButton* margin_;
     QLabel *axisLabel_, *amplitudeLabel_, *speedLabel_, *lawLabel_, *periodLabel_, *kpLabel_,
         *kiLabel_, *kdLabel_, *massLabel_, *seedLabel_;
     QComboBox *axis_, *law_;

@@ -288,9 +288,9 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     buildFrame(dnc, estopPush_, resetPush_, ackPush_, homeButton);
     // As the run keys: Ctrl+O wherever the focus is in the program's windows.
     select_->setShortcutContext(Qt::ApplicationShortcut);
-    // The tuning workbench, as on the rail (issue 21): step tests per axis on the DC table; the
-    // plotter has no encoder, so nothing to measure a response with.
-    workbench_->setEnabled(profile.kind == MachineKind::DcTable);
+    // The tuning workbench, as on the rail (issue 21): step tests, identification and autotune
+    // per axis on the DC table; on the plotter (no encoder to measure a response with) the
+    // speed and acceleration margin test against lost steps.
     // The docks: plots, history and simulation in tabs under the work area, the plots in
     // front, the program library beside them; each can be moved, and Windows > Reset layout
     // puts them back.
@@ -752,9 +752,11 @@ void XyMainWindow::retranslate() {
     connection_->setText(tr("&Connection..."));
     if (calibration_) calibration_->setText(tr("Ca&libration..."));
     if (polygon_) polygon_->setText(tr("Polygon from &points..."));
-    workbench_->setToolTip(workbench_->isEnabled()
-                               ? QString()
-                               : tr("The plotter has no encoder: there is no response to measure"));
+    workbench_->setToolTip(
+        link_.profile().kind == MachineKind::Plotter
+            ? tr("The plotter has no encoder: its workbench is the speed and acceleration margin "
+                 "test against lost steps")
+            : QString());
     if (simulation_) showArmedFaults(simulation_->armedText());
     program_label_->setText(program_ ? tr("Program: %1").arg(programName_)
                                      : tr("No program loaded"));
