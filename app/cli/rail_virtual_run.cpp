@@ -12,6 +12,18 @@
 
 namespace trilho::cli {
 
+namespace {
+TraceRow traceRowOf(const ControllerStatus& s) {
+    return {s.timeS,
+            s.blockN,
+            s.servo.setpointMm,
+            s.servo.positionMm,
+            s.servo.errorMm,
+            s.servo.velocityMmS,
+            s.servo.loop.code};
+}
+}  // namespace
+
 Outcome runRailVirtual(const MachineProfile& profile, std::shared_ptr<const Program> program,
                        const RunOptions& options, Report& report, TraceFile& trace,
                        ControllerStatus& last, double& plantMm) {
@@ -43,25 +55,25 @@ Outcome runRailVirtual(const MachineProfile& profile, std::shared_ptr<const Prog
         if (startedAt >= 0 &&
             applyDueFaults(schedule, session.elapsedS() - startedAt, rail.state().timeS, faults))
             rail.setFaults(faults);
-        if (traceQueue)
-            traceQueue->push({s.timeS, s.blockN, s.servo.setpointMm, s.servo.positionMm,
-                              s.servo.errorMm, s.servo.velocityMmS, s.servo.loop.code});
+        if (traceQueue) traceQueue->push(traceRowOf(s));
         bool press = false;
         if (sup.check(s, s.timeS, outcome, press)) break;
         if (press) c.pressContinue();
     }
-    if (traceQueue) traceQueue->finish();  // every row given to the file before it is closed
     if (outcome == Outcome::Alarm) {
         // The drive is off; the platform coasts and brakes on. Follow it to rest (10 s at most)
-        // so the report says where it really stopped.
+        // so the report says where it really stopped, and the trace shows the coast to the
+        // same rest (it stopped at the alarm: the report and the trace disagreed by the coast).
         const double end = session.elapsedS() + 10.0;
         double still = 0.0;
         while (session.elapsedS() < end && still < 0.1) {
             session.step();
             c.drainEvents([&](const ControllerEvent& e) { report.add(e); });
+            if (traceQueue) traceQueue->push(traceRowOf(c.status()));
             still = std::abs(rail.state().velocityMmS) < 1e-6 ? still + 0.001 : 0.0;
         }
     }
+    if (traceQueue) traceQueue->finish();  // every row given to the file before it is closed
     plantMm = rail.state().positionMm;
     last = c.status();
     for (const ScheduledFault& f : schedule)

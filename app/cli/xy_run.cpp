@@ -133,14 +133,19 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
         if (over(s, s.timeS, options, pausedSince, outcome, press)) break;
         if (press) c.pressContinue();
     }
-    if (traceQueue) traceQueue->finish();  // every row given to the file before it is closed
     if (outcome == Outcome::Alarm && !link) {
-        // Drives off: follow the table to rest (2 s at most) so the report says where it is.
+        // Drives off: follow the table to rest (2 s at most) so the report says where it is,
+        // and the trace with it (it stopped at the alarm).
         for (int i = 0; i < 400; ++i) {
             session.step();
             c.drainEvents([&](const ControllerEvent& e) { report.add(e); });
+            if (traceQueue)
+                traceQueue->push(xyTraceRow(c.status()));
+            else if (trace.active())
+                traceRow(trace, c.status());
         }
     }
+    if (traceQueue) traceQueue->finish();  // every row given to the file before it is closed
     const QString traceFailure = finishTrace(trace, options, session.periodS(), outcome, report);
     const XyStatus last = c.status();
     const double x = last.sample.x.positionMm, y = last.sample.y.positionMm;
