@@ -100,7 +100,8 @@ enum class CommandResult : std::uint16_t {
     Busy = 4,           ///< StartProgram while a program runs: Stop it first
     SaveFailed = 5,     ///< CommitDownload could not write the file
     BadDownload = 6,    ///< CommitDownload: number or length do not match the block
-    NotReady = 7,       ///< StartProgram in alarm or E-stop: acknowledge (reset) first
+    NotReady = 7,       ///< StartProgram in alarm or E-stop (acknowledge, reset first); Continue
+                        ///< with nothing paused
 };
 
 constexpr std::uint16_t kMaxProgramNumber = 9999;

@@ -595,6 +595,18 @@ void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq,
         case Command::Hold:
             return finish(CommandResult::Applied, machine_.send(CommandKind::Hold));
         case Command::Continue:
+            // Only a pause (a hold, an m00, single block) has anything to continue: after a
+            // Stop, in E-stop or at rest the Continue would be answered "applied" and do
+            // nothing (F14). A command still on its way (a Hold just sent) has not shown in the
+            // snapshot yet: that Continue goes to the machine as before.
+            if (!pending_ && s.state != ControllerState::Paused) {
+                refused(client, QStringLiteral("DNC: command continue (sequence %1) from %2 "
+                                               "refused: nothing is paused (%3)")
+                                    .arg(seq)
+                                    .arg(client)
+                                    .arg(QLatin1String(controllerStateName(s.state))));
+                return finishCommand(seq, CommandResult::NotReady, std::nullopt, client);
+            }
             return finish(CommandResult::Applied, machine_.send(CommandKind::Continue));
         case Command::Stop:
             return finish(CommandResult::Applied, machine_.requestStop());

@@ -23,7 +23,7 @@ IN_MACHINE, IN_AXES, IN_Y_POSITION = 34, 35, 36
 H_KP, H_FEED, H_COMMAND, H_DL_NUMBER, H_DL_LENGTH, H_DL_DATA, H_COUNT = 0, 6, 8, 16, 17, 18, 18 + 4096
 MANUAL, AUTO_IDLE, HOMING, RUNNING, WAITING, PAUSED, ALARM = 0, 1, 2, 3, 4, 5, 6
 START, HOLD, CONTINUE, STOP, ACK, AUTO, MANUAL_CMD, COMMIT = 1, 2, 3, 4, 5, 6, 7, 8
-APPLIED, NO_PROGRAM, COMPILE_ERRORS = 1, 2, 3
+APPLIED, NO_PROGRAM, COMPILE_ERRORS, NOT_READY = 1, 2, 3, 7
 
 # A slow move (so hold, continue and stop find it running), an m00, and back.
 PROGRAM = ("( downloaded over Modbus )\nN0010 G01 X0200 F010\nN0020 M00\n"
@@ -203,6 +203,9 @@ def run_pymodbus(cli):
             wait_for(lambda: p.state() == RUNNING, "running after m00")
             check(p.command(STOP) == APPLIED, "stop applied")
             wait_for(lambda: p.state() == AUTO_IDLE, "idle after stop")
+            # nothing paused: a Continue is refused, never "applied" for nothing (F14)
+            check(p.command(CONTINUE) == NOT_READY, "continue after stop refused (not ready)")
+            check(p.state() == AUTO_IDLE, "still idle after the refused continue")
             # a whole run to the end
             check(p.command(START, 42) == APPLIED, "start program 42 again")
             wait_for(lambda: p.state() == PAUSED and p.ir(IN_PAUSE)[0] == 1, "m00 again", 60)

@@ -342,7 +342,8 @@ class DncScreensTest : public QObject {
         // start again; only Reset E-stop at the screens does.
         window_->emergencyButton()->click();
         QTRY_COMPARE_WITH_TIMEOUT(link_->status().state, ControllerState::EStop, 5000);
-        QCOMPARE(command(dnc::Command::Continue, 0, 2), quint16(dnc::CommandResult::Applied));
+        // Nothing is paused: the Continue is refused, not answered "applied" (F14).
+        QCOMPARE(command(dnc::Command::Continue, 0, 2), quint16(dnc::CommandResult::NotReady));
         QCOMPARE(command(dnc::Command::Acknowledge, 0, 3), quint16(dnc::CommandResult::Applied));
         QCOMPARE(command(dnc::Command::StartProgram, 42, 4), quint16(dnc::CommandResult::NotReady));
         QCOMPARE(command(dnc::Command::SelectAutomatic, 0, 5),
@@ -367,7 +368,7 @@ class DncScreensTest : public QObject {
         const double stopTarget = link_->status().servo.targetMm;
         QTRY_VERIFY_WITH_TIMEOUT(std::abs(link_->status().servo.setpointMm - stopTarget) < 1e-9,
                                  30000);
-        QCOMPARE(command(dnc::Command::Continue, 0, 7), quint16(dnc::CommandResult::Applied));
+        QCOMPARE(command(dnc::Command::Continue, 0, 7), quint16(dnc::CommandResult::NotReady));
         QCOMPARE(link_->status().state, ControllerState::AutoIdle);
         // Continue did not bring the program back: neither the target nor the setpoint moves
         // toward X150 in the next 0.2 s of the controller's own time (200 servo ticks).
