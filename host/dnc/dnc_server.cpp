@@ -269,18 +269,23 @@ bool DncServer::refreshIfStale() {
     return true;
 }
 
-void DncServer::refresh() {
-    refreshedNs_ = clock_.nsecsElapsed();
-    const ControllerStatus s = machine_.snapshot();
+void DncServer::drainMachineEvents() {
     machine_.drainEvents([this](const ControllerEvent& e) {
         if (e.kind == EventKind::AlarmRaised) ++link_.alarmSeq;
         // The XY machines' lines say their axes (xy_event_text.h), as their screens' history.
         emit historyLine(machine_.profile().kind == MachineKind::Rail ? trilho::historyLine(e)
                                                                       : xyHistoryLine(e));
     });
+}
+
+void DncServer::refresh() {
+    refreshedNs_ = clock_.nsecsElapsed();
+    const ControllerStatus s = machine_.snapshot();
+    drainMachineEvents();
     if (pending_ && machine_.applied(pending_->ticket)) {
         link_.commandSeq = pending_->seq;
         link_.commandResult = pending_->result;
+        if (!pending_->appliedLine.isEmpty()) emit historyLine(pending_->appliedLine);
         pending_.reset();
     }
     fillInputRegisters(s, link_, input_, machine_.profile().kind, machine_.yAxis());
@@ -511,7 +516,7 @@ bool DncServer::applyWrite(const HoldingWrite& w, const QString& client) {
 }
 
 void DncServer::finishCommand(std::uint16_t seq, CommandResult r, std::optional<Ticket> ticket,
-                              const QString& client) {
+                              const QString& client, const QString& appliedLine) {
     if (ticket && ticket->refused) {
         refused(client, QStringLiteral("DNC: command (sequence %1) from %2 refused: the machine "
                                        "is busy with the commands before it")
@@ -520,9 +525,15 @@ void DncServer::finishCommand(std::uint16_t seq, CommandResult r, std::optional<
         r = CommandResult::Busy;
         ticket.reset();
     }
+    const QString said = r == CommandResult::Applied ? appliedLine : QString();
     if (ticket && !machine_.applied(*ticket)) {
-        pending_ = Pending{seq, r, *ticket};  // a later queued command: the earlier go first
+        // A later queued command: the earlier go first.
+        pending_ = Pending{seq, r, *ticket, said};
         return;
+    }
+    if (!said.isEmpty()) {
+        drainMachineEvents();  // what the machine said on its way (a mode change) comes first
+        emit historyLine(said);
     }
     // A result known now (busy, no program, ...) is echoed now, and leaves a command still on
     // its way to the machine pending: it is echoed once applied, and keeps Starts serialised.
@@ -588,9 +599,9 @@ void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq,
             const Ticket start = machine_.send(CommandKind::Start);
             if (start.refused) return finish(CommandResult::Busy, start);
             link_.program = argument;
-            emit historyLine(
+            return finishCommand(
+                seq, CommandResult::Applied, start, client,
                 QStringLiteral("DNC: program %1 started by %2").arg(argument).arg(client));
-            return finish(CommandResult::Applied, start);
         }
         case Command::Hold:
             return finish(CommandResult::Applied, machine_.send(CommandKind::Hold));

@@ -96,9 +96,14 @@ class DncServer : public QObject {
                               const QString& client);
     void runCommand(Command c, std::uint16_t argument, std::uint16_t seq, const QString& client);
     /// Echoes the result now, or once the ticket is applied; a refused ticket is Busy now.
+    /// appliedLine (if any) goes to the history when the machine has applied the ticket, after
+    /// the machine's own lines of that moment (F13: "program 42 started" came before the
+    /// mode lines of the Automatic it asked for, and before anything had started).
     void finishCommand(std::uint16_t seq, CommandResult r, std::optional<Ticket> ticket = {},
-                       const QString& client = {});
+                       const QString& client = {}, const QString& appliedLine = {});
     void noteDiagnostics(int number, const Program& p);
+    /// The machine's events to the history (and the alarm count), in order.
+    void drainMachineEvents();
 
     DncMachine& machine_;
     ProgramLibrary library_;
@@ -127,6 +132,7 @@ class DncServer : public QObject {
         std::uint16_t seq;
         CommandResult result;
         Ticket ticket;
+        QString appliedLine;  ///< said once applied (empty: nothing)
     };
     std::optional<Pending> pending_;
 };

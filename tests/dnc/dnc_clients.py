@@ -217,6 +217,13 @@ def run_pymodbus(cli):
             rc, out = srv.stop()
         check(rc == 0, f"server exit status {rc} after SIGTERM")
         check("program 42 saved" in out and "program 42 started" in out, "history lines of the link")
+        # The start from Manual selects Automatic first: the history says so before it says the
+        # program started, which it says once the machine has taken the Start (F13).
+        lines = out.splitlines()
+        started = next((i for i, l in enumerate(lines) if "program 42 started" in l), -1)
+        automatic = next((i for i, l in enumerate(lines) if "Automatic mode." in l), -1)
+        check(0 <= automatic < started,
+              f"'Automatic mode.' (line {automatic}) before 'program 42 started' (line {started})")
 
 
 def run_alarm(cli):
