@@ -127,13 +127,21 @@ int serveCommand(const QStringList& args) {
         QStringLiteral("Close a TCP connection that sends nothing for SECONDS, or does not read "
                        "its answers that long (default 60; 0: never)."),
         QStringLiteral("SECONDS"));
+    const QCommandLineOption busyPollOpt(
+        QStringLiteral("busy-poll"),
+        QStringLiteral("Microseconds to poll a lone TCP client that sends back to back for its "
+                       "next request after each answer, instead of sleeping (default 50; 0: "
+                       "never). Costs up to that much CPU per request, only while one client "
+                       "keeps the link that busy."),
+        QStringLiteral("US"));
     const QCommandLineOption supervisorOpt(
         QStringLiteral("supervisor"),
         QStringLiteral("Keep the last of the 64 TCP connections for this address (the cell's "
                        "supervisor), so other clients can never lock it out."),
         QStringLiteral("ADDRESS"));
     parser.addOptions({machineOpt, tcpOpt, rtuOpt, baudOpt, unitOpt, programsOpt, remoteOpt,
-                       virtualOpt, scaleOpt, faultOpt, reportOpt, idleOpt, supervisorOpt});
+                       virtualOpt, scaleOpt, faultOpt, reportOpt, idleOpt, supervisorOpt,
+                       busyPollOpt});
     auto usage = [](const QString& message) { return usageError("serve", message); };
     if (auto done = parseArguments(parser, args, "serve")) return *done;
     if (!parser.positionalArguments().isEmpty())
@@ -198,6 +206,14 @@ int serveCommand(const QStringList& args) {
             tcpLimits.idleTimeoutS > 86400)
             return usage(QStringLiteral("--idle-timeout must be 0-86400 seconds (got '%1')")
                              .arg(parser.value(idleOpt)));
+    }
+    tcpLimits.busyPollUs = 50;
+    if (parser.isSet(busyPollOpt)) {
+        bool ok = false;
+        tcpLimits.busyPollUs = parser.value(busyPollOpt).toInt(&ok);
+        if (!ok || tcpLimits.busyPollUs < 0 || tcpLimits.busyPollUs > 1000)
+            return usage(QStringLiteral("--busy-poll must be 0-1000 microseconds (got '%1')")
+                             .arg(parser.value(busyPollOpt)));
     }
     if (parser.isSet(supervisorOpt) &&
         !tcpLimits.supervisor.setAddress(parser.value(supervisorOpt)))

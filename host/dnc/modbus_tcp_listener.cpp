@@ -4,12 +4,14 @@
 #include <fcntl.h>
 #include <netinet/in.h>
 #include <netinet/tcp.h>
+#include <sched.h>
 #include <sys/socket.h>
 #include <unistd.h>
 #include <QEvent>
 #include <QScopeGuard>
 #include <QSocketNotifier>
 #include <QTcpServer>
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -76,6 +78,7 @@ ModbusTcpListener::ModbusTcpListener(Handler handler, TcpLimits limits, QObject*
     connect(&turn_, &QTimer::timeout, this, &ModbusTcpListener::serveTurn);
     watch_.setInterval(1000);
     connect(&watch_, &QTimer::timeout, this, &ModbusTcpListener::checkTimeouts);
+    clock_.start();
 }
 
 ModbusTcpListener::~ModbusTcpListener() {
@@ -192,7 +195,28 @@ bool ModbusTcpListener::flush(Connection& c) {
         return false;
     }
     c.writable->setEnabled(!c.out.isEmpty());
+    if (c.out.isEmpty() && limits_.busyPollUs > 0) c.answeredNs = clock_.nsecsElapsed();
     return true;
+}
+
+bool ModbusTcpListener::pollForNext(Connection& c, qint64 untilNs) {
+    // Only while this connection is alone, its answers all taken, and its client has been
+    // sending back to back: anyone else's request, or a client that paused, ends it at once.
+    if (connections_.size() != 1 || !ready_.empty() || !c.out.isEmpty() || !c.backToBack)
+        return false;
+    const qint64 end = std::min(untilNs, c.answeredNs + qint64(limits_.busyPollUs) * 1000);
+    char probe;
+    while (clock_.nsecsElapsed() < end) {
+        const ssize_t got = ::recv(c.fd, &probe, 1, MSG_PEEK | MSG_DONTWAIT);
+        if (got > 0) return true;
+        if (got == 0 || (got < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR))
+            return true;  // closed or failed: serve() finds out and drops it
+        // A busy machine's other threads (the client itself, on a small machine) go first:
+        // polling must never take the CPU the next request needs.
+        sched_yield();
+    }
+    c.backToBack = false;  // it paused: sleep until it sends again
+    return false;
 }
 
 void ModbusTcpListener::markReady(Connection& c) {
@@ -203,7 +227,15 @@ void ModbusTcpListener::markReady(Connection& c) {
         const int fd = c.fd;
         const std::shared_ptr<Connection> keep = connections_.value(fd);  // serve() may drop it
         serving_ = true;
-        const bool more = serve(c);
+        bool more = serve(c);
+        if (limits_.busyPollUs > 0) {
+            // Busy polling (TcpLimits::busyPollUs): the next request of a client that sends
+            // back to back is answered here, without the event loop's sleep and wake-up.
+            const qint64 untilNs = clock_.nsecsElapsed() + static_cast<qint64>(kMaxBusyCallS * 1e9);
+            while (!more && connections_.contains(fd) && !c.stalled.isValid() &&
+                   pollForNext(c, untilNs))
+                more = serve(c);
+        }
         serving_ = false;
         if (!connections_.contains(fd)) return;
         if (c.stalled.isValid()) c.readable->setEnabled(false);  // not read until it reads
@@ -308,6 +340,9 @@ bool ModbusTcpListener::serve(Connection& c) {
                                          .arg(c.name, QString::fromStdString(f.reason)));
                 break;
             case MbapScan::Frame: {
+                if (limits_.busyPollUs > 0)
+                    c.backToBack = c.answeredNs >= 0 && clock_.nsecsElapsed() - c.answeredNs <=
+                                                            qint64(kBackToBackS * 1e9);
                 // The answer goes straight into the send buffer, after room for its header.
                 const qsizetype at = c.out.size();
                 c.out.resize(at + static_cast<qsizetype>(kMbapHeaderBytes));
