@@ -1,9 +1,8 @@
 // Issue 21 items 5-7 on the DC table ("the same, per axis at 5 ms, on the DC table"):
 // identification and autotune of each axis of the simulated table in virtual time, over seeds
-// and masses (x0.5, x1, x3): identification, first-try autotune with no alarm and overshoot and
-// final error within a count at every mass; the times, machine time and settling prediction at
-// x0.5 and x1 (see MassCase for x3). The default run takes 3 seeds;
-// DcAutotuneProperty.TwentySeedsSoak (label soak) takes 20.
+// and masses (x0.5, x1, x3): identification, first-try autotune with no alarm, overshoot and
+// final error within a count, the machine time, the times and the settling prediction, at every
+// mass. The default run takes 3 seeds; DcAutotuneProperty.TwentySeedsSoak (label soak) takes 20.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -35,17 +34,12 @@ double trueCoulombPercent(const DcAxisParams& a, std::uint64_t seed, int axis) {
 
 struct MassCase {
     double factor;
-    double longMoveLimitS;  ///< 100 mm in position within (20 seeds: 0.83 to 1.41 s)
-    double stepSettleS;     ///< 10 mm to +-1 count within (20 seeds: 0.175 to 0.185 s)
-    /// The times, the 10 s of machine time and the prediction of the settling are asserted.
-    /// At x3 they are not: the PI SIMC gives the heavy load (kp 2.4, ki 5.7) settles the last
-    /// count against friction in 1.1 to 3.9 s, the autotune takes up to 12.9 s, and the
-    /// prediction of that creep is off by up to 2x (docs/tuning.md). First try, no alarm,
-    /// overshoot and final error within a count are asserted at every mass.
-    bool timesAsserted;
+    double longMoveLimitS;  ///< 100 mm in position within (20 seeds: 0.83 to 0.85 s at x0.5,
+                            ///< 0.83 to 0.89 s at x1, 1.11 to 1.24 s at x3)
+    double stepSettleS;     ///< 10 mm to +-1 count within (20 seeds: 0.18 to 0.185 s at x0.5
+                            ///< and x1, 0.305 to 0.36 s at x3)
 };
-constexpr MassCase kMasses[] = {
-    {0.5, 1.5, 0.20, true}, {1.0, 1.5, 0.20, true}, {3.0, 0.0, 0.0, false}};
+constexpr MassCase kMasses[] = {{0.5, 1.0, 0.20}, {1.0, 1.0, 0.20}, {3.0, 1.4, 0.40}};
 constexpr double kIdentifiedMasses[] = {0.5, 1.0, 3.0};
 
 /// The identification of one axis at one seed and mass against the issue's figures.
@@ -101,11 +95,13 @@ void checkAutotune(std::uint64_t seed, int axis, const MassCase& mc,
     EXPECT_LE(r.measuredStep.finalErrorCounts, 1.0);
     EXPECT_NEAR(r.predictedStep.overshootCounts, r.measuredStep.overshootCounts, 1.0);
     EXPECT_NEAR(r.predictedLong.overshootCounts, r.measuredLong.overshootCounts, 1.0);
-    if (!mc.timesAsserted) return;
+    // The issue's bound: the whole autotune, experiment and verification moves, within 10 s of
+    // machine time (20 seeds: at most 4.7 s at x0.5 and x1, 6.1 s at x3).
     EXPECT_LE(r.machineTimeS, 10.0);
     EXPECT_LE(r.measuredLong.inPositionTimeS, mc.longMoveLimitS);
     EXPECT_LE(r.measuredStep.settlingTimeS, mc.stepSettleS);
-    // Prediction honesty: the settling to +-1 count within 15 % (20 seeds: within 3 %).
+    // Prediction honesty, the issue's bound: the settling to +-1 count within 15 % (20 seeds:
+    // within 3 % at x0.5 and x1; at x3 within 1 % on the long move, 8 % on the step).
     EXPECT_NEAR(r.predictedStep.settlingTimeS / r.measuredStep.settlingTimeS, 1.0, 0.15);
     EXPECT_NEAR(r.predictedLong.settlingTimeS / r.measuredLong.settlingTimeS, 1.0, 0.15);
 }
@@ -162,6 +158,35 @@ TEST(DcAutotuneProperty, TunesThreeSeedsThreeMassesBothAxes) {
 TEST(DcAutotuneProperty, DISABLED_TwentySeedsBothAxes) {
     checkIdentifications(20);
     checkSeeds(20);
+}
+
+// Issue 21 items 5-6 at three times the payload: the cases of the 20-seed soak that took the
+// longest (seed 2 x: 12.9 s of machine time, its 100 mm move in position after 2.9 s) and whose
+// settling the prediction missed most (seed 12 x: 100 mm predicted 1.07 s, measured 2.37 s;
+// seed 15 y: the 10 mm step predicted 0.33 s, measured 1.50 s). The axis stopped a count off its
+// target at the end of the profile and the PI crept the last count against friction: the
+// integral had to wind through the friction band (3 % of PWM at ki 5.7 %/(mm.s)) first.
+// Bounds, the issue's: the whole autotune (experiment and verification moves) within 10 s of
+// machine time; the predicted settling to +-1 count within 15 % of the measured, on the step
+// and on the long move.
+TEST(DcAutotuneProperty, HeavyLoadFinishesAgainstFrictionAsPredicted) {
+    struct Case {
+        std::uint64_t seed;
+        int axis;
+    };
+    for (const Case c : {Case{2, 0}, Case{12, 0}, Case{15, 1}}) {
+        SCOPED_TRACE(testing::Message() << "seed " << c.seed << " axis " << c.axis);
+        const MachineProfile profile = MachineProfile::xyDcTable();
+        SimDcTableRig rig(profile, c.axis, c.seed, c.axis == 0 ? startFor(c.seed) : 150.0,
+                          c.axis == 1 ? startFor(c.seed) : 150.0, 3.0);
+        const DcAutotuneResult r = autotuneDcAxis(rig);
+        ASSERT_TRUE(r.ok) << r.error.toStdString();
+        EXPECT_LE(r.machineTimeS, 10.0);
+        EXPECT_NEAR(r.predictedStep.settlingTimeS / r.measuredStep.settlingTimeS, 1.0, 0.15);
+        EXPECT_NEAR(r.predictedLong.settlingTimeS / r.measuredLong.settlingTimeS, 1.0, 0.15);
+        EXPECT_LE(r.measuredStep.overshootCounts, 1.0);
+        EXPECT_LE(r.measuredLong.overshootCounts, 1.0);
+    }
 }
 
 // The experiment does not start where it could leave the table: near a soft limit nothing
