@@ -46,7 +46,12 @@ double DcAxisLoop::update(double setpointMm, double velocityMmS, double accelMmS
         return u_;
     }
     const DcEngineeredGains& g = axis_.engineered;
-    if (phase_ == Phase::InPosition) return u_ = 0.0;
+    if (phase_ == Phase::InPosition) {
+        // At rest the table needs no drive (its axes are level; friction holds it): the
+        // integral's last approach is no bias to keep (see Phase::InPosition).
+        integral_ = 0.0;
+        return u_ = 0.0;
+    }
     // Friction opposes the motion the loop asks for: the profile's while it moves. Once the
     // profile has ended (Settling: its velocity is 0, the axis outside the window) it is the
     // error's, so the feedback still sees the frictionless plant and closes the last counts at

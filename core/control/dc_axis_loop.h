@@ -46,9 +46,11 @@ class DcAxisLoop {
                      ///< last count is closed by the linear loop, not by an integral winding
                      ///< through the friction band; the integral runs kSettleIntegralBoost
                      ///< times faster, to spend the bias it carries out of the move
-        InPosition,  ///< inside the window at rest: the integral is held and the drive rests;
-                     ///< friction holds the table, and the integral does not wind against it
-                     ///< to jump the axis a count past its target (a limit cycle)
+        InPosition,  ///< inside the window at rest: the drive rests and the integral is
+                     ///< dropped; friction holds the table, the integral does not wind against
+                     ///< it to jump the axis a count past its target (a limit cycle), and what
+                     ///< it gathered on the approach does not push the next correction (a
+                     ///< knock, the next move) the way the axis last came
     };
     void setPhase(Phase p) { phase_ = p; }
     DcLaw law() const { return law_; }

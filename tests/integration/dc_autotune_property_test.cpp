@@ -35,11 +35,11 @@ double trueCoulombPercent(const DcAxisParams& a, std::uint64_t seed, int axis) {
 struct MassCase {
     double factor;
     double longMoveLimitS;  ///< 100 mm in position within (20 seeds: 0.83 to 0.85 s at x0.5,
-                            ///< 0.83 to 0.89 s at x1, 1.11 to 1.24 s at x3)
-    double stepSettleS;     ///< 10 mm to +-1 count within (20 seeds: 0.18 to 0.185 s at x0.5
-                            ///< and x1, 0.305 to 0.36 s at x3)
+                            ///< 0.83 to 0.89 s at x1, 1.1 to 1.24 s at x3)
+    double stepSettleS;     ///< 10 mm to +-1 count within (20 seeds: 0.175 to 0.185 s at x0.5
+                            ///< and x1, 0.305 to 0.39 s at x3)
 };
-constexpr MassCase kMasses[] = {{0.5, 1.0, 0.20}, {1.0, 1.0, 0.20}, {3.0, 1.4, 0.40}};
+constexpr MassCase kMasses[] = {{0.5, 1.0, 0.20}, {1.0, 1.0, 0.20}, {3.0, 1.4, 0.45}};
 constexpr double kIdentifiedMasses[] = {0.5, 1.0, 3.0};
 
 /// The identification of one axis at one seed and mass against the figures.
@@ -101,7 +101,7 @@ void checkAutotune(std::uint64_t seed, int axis, const MassCase& mc,
     EXPECT_LE(r.measuredLong.inPositionTimeS, mc.longMoveLimitS);
     EXPECT_LE(r.measuredStep.settlingTimeS, mc.stepSettleS);
     // Prediction honesty, the bound: the settling to +-1 count within 15 % (20 seeds:
-    // within 3 % at x0.5 and x1; at x3 within 1 % on the long move, 8 % on the step).
+    // within 3 % at x0.5 and x1; at x3 within 1 % on the long move, 14 % on the step).
     EXPECT_NEAR(r.predictedStep.settlingTimeS / r.measuredStep.settlingTimeS, 1.0, 0.15);
     EXPECT_NEAR(r.predictedLong.settlingTimeS / r.measuredLong.settlingTimeS, 1.0, 0.15);
 }
@@ -186,6 +186,72 @@ TEST(DcAutotuneProperty, HeavyLoadFinishesAgainstFrictionAsPredicted) {
         EXPECT_NEAR(r.predictedLong.settlingTimeS / r.measuredLong.settlingTimeS, 1.0, 0.15);
         EXPECT_LE(r.measuredStep.overshootCounts, 1.0);
         EXPECT_LE(r.measuredLong.overshootCounts, 1.0);
+    }
+}
+
+// The tuned axis holding at rest, pushed off its count (a knock, a hand on the table) by 1 to
+// 4 counts either way, at each mass: the settling law (friction in the error's direction, one
+// duty step more) brings it back into its count within the mass' bound, at most a count past
+// it, with no alarm, and then rests: over 2 s it enters its count at most twice (a count past
+// and back; no hunting) and the drive is 0 while it stays there. Seeded random cases: where in
+// the count it lands, how far, which way. Before the settling law (the integral winding
+// through friction): back within 0.28 / 0.61 / 1.6 s at x0.5 / x1 / x3, up to 3 / 3 / 6 counts
+// past; with the friction term but the approach's integral kept in the window: 0.08 / 0.105 /
+// 0.23 s.
+TEST(DcAutotuneProperty, KnockedOffItsCountItComesBackAndRests) {
+    struct Mass {
+        double factor;
+        double backWithinS;  ///< bound, s (measured over these cases: 0.035 / 0.055 / 0.135 s)
+    };
+    std::mt19937_64 rng(2106);
+    std::uniform_int_distribution<int> counts(1, 4), side(0, 1);
+    std::uniform_real_distribution<double> within(0.05, 0.95);
+    for (const Mass m : {Mass{0.5, 0.06}, Mass{1.0, 0.1}, Mass{3.0, 0.2}}) {
+        const double mass = m.factor;
+        const MachineProfile profile = MachineProfile::xyDcTable();
+        SimDcTableRig rig(profile, 0, 5, startFor(5), 150.0, mass);
+        const DcAutotuneResult r = autotuneDcAxis(rig);
+        ASSERT_TRUE(r.ok) << r.error.toStdString();
+        const double mmPerCount = rig.table().axis(0).mmPerCount();
+        double worstBackS = 0.0, maxOvershoot = 0.0;
+        int maxEntries = 0;
+        for (int trial = 0; trial < 20; ++trial) {
+            SCOPED_TRACE(testing::Message() << "mass x" << mass << " trial " << trial);
+            // Where it holds, in the simulation's frame (the encoder counts from its origin).
+            const double heldAt = rig.table().positionMm(0);
+            const double targetCount = std::floor(heldAt / mmPerCount);
+            const int n = counts(rng) * (side(rng) != 0 ? 1 : -1);
+            rig.table().axis(0).placeAt((targetCount + n + within(rng)) * mmPerCount);
+            double backAt = -1.0, overshoot = 0.0;
+            int entries = 0;
+            bool wasIn = false, driveInWindow = false;
+            for (int tick = 0; tick < 400; ++tick) {  // 2 s
+                rig.tick();
+                const double t = (tick + 1) * rig.periodS();
+                ASSERT_EQ(rig.motion().fault(), AlarmCode::None);
+                const double c = std::floor(rig.table().positionMm(0) / mmPerCount) - targetCount;
+                const bool in = c == 0.0;
+                if (in && !wasIn) ++entries;
+                if (in && backAt < 0.0) backAt = t;
+                // Past the count it was held at, on the far side from where it was pushed.
+                if (c * n < 0.0) overshoot = std::max(overshoot, std::abs(c));
+                // The drive the loop wrote this period, with the count it saw.
+                if (in && wasIn && rig.motion().sample().x.drive != 0.0) driveInWindow = true;
+                wasIn = in;
+            }
+            EXPECT_GT(backAt, 0.0);
+            EXPECT_LE(backAt, m.backWithinS);
+            EXPECT_LE(overshoot, 1.0);
+            EXPECT_LE(entries, 2);
+            maxEntries = std::max(maxEntries, entries);
+            maxOvershoot = std::max(maxOvershoot, overshoot);
+            EXPECT_FALSE(driveInWindow);
+            worstBackS = std::max(worstBackS, backAt);
+        }
+        std::printf(
+            "x%.1f: knocked 1-4 counts off, back in its count within %.3f s, overshoot %.0f "
+            "counts, entered it %d times\n",
+            mass, worstBackS, maxOvershoot, maxEntries);
     }
 }
 

@@ -116,6 +116,27 @@ TEST(DcAxisLoop, SettlingPushesThroughFrictionTowardsTheTarget) {
     }
 }
 
+// In its window the axis rests (drive 0, friction holds it); what the integral gathered on the
+// approach is dropped there, not carried into the next correction (a knock, the next move),
+// where it pushed the axis the way it last came: at x3 a knock of 1 to 4 counts took up to
+// 0.23 s to come back with it (tests/integration/dc_autotune_property_test.cpp), 0.135 s without.
+TEST(DcAxisLoop, InPositionDropsTheApproachsIntegral) {
+    const DcTableParams t;
+    const double step = 100.0 / t.pwmDutyMax, dt = 0.005, count = 0.106;
+    DcAxisLoop loop(t.x, t.pwmClampPercent, DcLaw::Engineered, step);
+    loop.setPhase(DcAxisLoop::Phase::Settling);
+    for (int i = 0; i < 50; ++i)
+        loop.update(count, 0.0, 0.0, 0.0, dt);  // a count short for 0.25 s
+    loop.setPhase(DcAxisLoop::Phase::InPosition);
+    EXPECT_EQ(loop.update(0.0, 0.0, 0.0, 0.0, dt), 0.0);
+    // Knocked a count the other way: the same drive as a loop that never settled before.
+    loop.setPhase(DcAxisLoop::Phase::Settling);
+    DcAxisLoop fresh(t.x, t.pwmClampPercent, DcLaw::Engineered, step);
+    fresh.setPhase(DcAxisLoop::Phase::Settling);
+    EXPECT_DOUBLE_EQ(loop.update(-count, 0.0, 0.0, 0.0, dt),
+                     fresh.update(-count, 0.0, 0.0, 0.0, dt));
+}
+
 TEST(SimDcAxis, SteadySpeedAndEncoderQuantisation) {
     DcAxisParams p;  // 400 mm/s at 100 %, 3 % friction, 2 mm per turn, 0.314 rad per count
     SimDcAxis axis(p);
