@@ -160,6 +160,39 @@ TEST(DcAutotuneProperty, DISABLED_TwentySeedsBothAxes) {
     checkSeeds(20);
 }
 
+// Beyond the soak, at x3 only (where the last count is slowest): 100 seeds x 2 axes, each start
+// a different fraction of a count (the soak's 20 places, shifted 0.0137 mm a seed). What holds:
+// every autotune first try with no alarm within 10 s of machine time, overshoot within a count,
+// the 100 mm move's settling predicted within 15 %; the step's within 15 % in at least 98 % of
+// the cases and within 20 % in all. Measured: 198 of 200 within 15 %, the two others 0.84 (the
+// table stopped 0.75 count short at the end of the profile where the model arrived, and crept the
+// rest of the count in 50 ms; see docs/tuning.md).
+TEST(DcAutotuneProperty, DISABLED_HeavyLoadHundredSeedsBothAxes) {
+    int outside15 = 0, cases = 0;
+    double worstStep = 1.0;
+    for (int axis = 0; axis < 2; ++axis)
+        for (int s = 1; s <= 100; ++s) {
+            SCOPED_TRACE(testing::Message() << "seed " << s << " axis " << axis);
+            const double start = 110.0 + 3.71 * (s % 20) + 0.0137 * s;
+            SimDcTableRig rig(MachineProfile::xyDcTable(), axis, static_cast<std::uint64_t>(s),
+                              axis == 0 ? start : 150.0, axis == 1 ? start : 150.0, 3.0);
+            const DcAutotuneResult r = autotuneDcAxis(rig);
+            ASSERT_TRUE(r.ok) << r.error.toStdString();
+            EXPECT_LE(r.machineTimeS, 10.0);
+            EXPECT_LE(r.measuredStep.overshootCounts, 1.0);
+            EXPECT_LE(r.measuredLong.overshootCounts, 1.0);
+            EXPECT_NEAR(r.predictedLong.settlingTimeS / r.measuredLong.settlingTimeS, 1.0, 0.15);
+            const double step = r.predictedStep.settlingTimeS / r.measuredStep.settlingTimeS;
+            EXPECT_NEAR(step, 1.0, 0.20);
+            ++cases;
+            if (std::abs(step - 1.0) > 0.15) ++outside15;
+            if (std::abs(step - 1.0) > std::abs(worstStep - 1.0)) worstStep = step;
+        }
+    std::printf("x3, %d autotunes: step settling predicted within 15 %% in %d, worst %.2f\n", cases,
+                cases - outside15, worstStep);
+    EXPECT_LE(outside15, cases / 50);
+}
+
 // Issue 21 items 5-6 at three times the payload: the cases of the 20-seed soak that took the
 // longest (seed 2 x: 12.9 s of machine time, its 100 mm move in position after 2.9 s) and whose
 // settling the prediction missed most (seed 12 x: 100 mm predicted 1.07 s, measured 2.37 s;
