@@ -12,7 +12,8 @@
 //    + ki integral(e), e in mm: the feed-forward runs the profile through the motor's lag (tau,
 //    timeConstantS) and its friction (coulombPercent), both the profile's figures of the axis,
 //    so the feedback only corrects what the model misses; the integral stops while the output
-//    is clamped and pushing further into the clamp (anti-windup).
+//    is clamped and pushing further into the clamp (anti-windup). After the profile, while the
+//    axis is outside its window, the friction term takes the error's sign (Phase::Settling).
 #include "core/control/dc_law.h"
 #include "core/machine/dc_table_params.h"
 
@@ -20,7 +21,9 @@ namespace trilho {
 
 class DcAxisLoop {
   public:
-    DcAxisLoop(const DcAxisParams& axis, double clampPercent, DcLaw law);
+    /// dutyStepPercent: the drive's resolution, one duty step of the board's PWM in percent
+    /// (100 / pwmDutyMax: 0.405 % on seed 004's ICR1 = 247), which floors the drive.
+    DcAxisLoop(const DcAxisParams& axis, double clampPercent, DcLaw law, double dutyStepPercent);
 
     /// One period: setpoint, commanded velocity and acceleration (mm, mm/s, mm/s2), measured
     /// position (mm). Returns the signed PWM percent.
@@ -39,11 +42,15 @@ class DcAxisLoop {
     enum class Phase : unsigned char {
         Tracking,    ///< following a profile
         Settling,    ///< the profile ended, the axis is outside the in-position window: the
-                     ///< integral runs kSettleIntegralBoost times faster, so a count of error
-                     ///< breaks the screw's stiction in a fraction of a second, not seconds
-        InPosition,  ///< inside the window at rest: the integral is held and the drive rests;
-                     ///< friction holds the table, and the integral does not wind against it
-                     ///< to jump the axis a count past its target (a limit cycle)
+                     ///< friction term follows the error's sign (plus one duty step), so the
+                     ///< last count is closed by the linear loop, not by an integral winding
+                     ///< through the friction band; the integral runs kSettleIntegralBoost
+                     ///< times faster, to spend the bias it carries out of the move
+        InPosition,  ///< inside the window at rest: the drive rests and the integral is
+                     ///< dropped; friction holds the table, the integral does not wind against
+                     ///< it to jump the axis a count past its target (a limit cycle), and what
+                     ///< it gathered on the approach does not push the next correction (a
+                     ///< knock, the next move) the way the axis last came
     };
     void setPhase(Phase p) { phase_ = p; }
     DcLaw law() const { return law_; }
@@ -53,6 +60,7 @@ class DcAxisLoop {
     DcAxisParams axis_;
     double clamp_;
     DcLaw law_;
+    double dutyStep_;         ///< one PWM duty step, % (see the constructor)
     double ePrevRad_ = 0.0;   ///< seed laws: the last error, rad (|e| under Seed)
     double direction_ = 1.0;  ///< seed law: the move's direction bit as a sign
     double integral_ = 0.0;   ///< engineered: integral of e, mm.s

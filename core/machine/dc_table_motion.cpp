@@ -28,8 +28,9 @@ DcTableMotion::DcTableMotion(const MachineProfile& profile, DcTableIo& io)
       rapidMmS_(profile.motion.rapidSpeedMmS),
       accelMmS2_(profile.motion.accelerationMmS2),
       io_(io),
-      loops_{DcAxisLoop(params_.x, params_.pwmClampPercent, params_.law),
-             DcAxisLoop(params_.y, params_.pwmClampPercent, params_.law)} {
+      loops_{
+          DcAxisLoop(params_.x, params_.pwmClampPercent, params_.law, 100.0 / params_.pwmDutyMax),
+          DcAxisLoop(params_.y, params_.pwmClampPercent, params_.law, 100.0 / params_.pwmDutyMax)} {
     const std::array<const DcAxisParams*, 2> axes{&params_.x, &params_.y};
     for (int i = 0; i < 2; ++i) {
         const auto k = static_cast<std::size_t>(i);

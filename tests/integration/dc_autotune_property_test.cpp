@@ -1,9 +1,8 @@
 // Issue 21 items 5-7 on the DC table ("the same, per axis at 5 ms, on the DC table"):
 // identification and autotune of each axis of the simulated table in virtual time, over seeds
-// and masses (x0.5, x1, x3): identification, first-try autotune with no alarm and overshoot and
-// final error within a count at every mass; the times, machine time and settling prediction at
-// x0.5 and x1 (see MassCase for x3). The default run takes 3 seeds;
-// DcAutotuneProperty.TwentySeedsSoak (label soak) takes 20.
+// and masses (x0.5, x1, x3): identification, first-try autotune with no alarm, overshoot and
+// final error within a count, the machine time, the times and the settling prediction, at every
+// mass. The default run takes 3 seeds; DcAutotuneProperty.TwentySeedsSoak (label soak) takes 20.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -35,17 +34,12 @@ double trueCoulombPercent(const DcAxisParams& a, std::uint64_t seed, int axis) {
 
 struct MassCase {
     double factor;
-    double longMoveLimitS;  ///< 100 mm in position within (20 seeds: 0.83 to 1.41 s)
-    double stepSettleS;     ///< 10 mm to +-1 count within (20 seeds: 0.175 to 0.185 s)
-    /// The times, the 10 s of machine time and the prediction of the settling are asserted.
-    /// At x3 they are not: the PI SIMC gives the heavy load (kp 2.4, ki 5.7) settles the last
-    /// count against friction in 1.1 to 3.9 s, the autotune takes up to 12.9 s, and the
-    /// prediction of that creep is off by up to 2x (docs/tuning.md). First try, no alarm,
-    /// overshoot and final error within a count are asserted at every mass.
-    bool timesAsserted;
+    double longMoveLimitS;  ///< 100 mm in position within (20 seeds: 0.83 to 0.85 s at x0.5,
+                            ///< 0.83 to 0.89 s at x1, 1.1 to 1.24 s at x3)
+    double stepSettleS;     ///< 10 mm to +-1 count within (20 seeds: 0.175 to 0.185 s at x0.5
+                            ///< and x1, 0.305 to 0.39 s at x3)
 };
-constexpr MassCase kMasses[] = {
-    {0.5, 1.5, 0.20, true}, {1.0, 1.5, 0.20, true}, {3.0, 0.0, 0.0, false}};
+constexpr MassCase kMasses[] = {{0.5, 1.0, 0.20}, {1.0, 1.0, 0.20}, {3.0, 1.4, 0.45}};
 constexpr double kIdentifiedMasses[] = {0.5, 1.0, 3.0};
 
 /// The identification of one axis at one seed and mass against the issue's figures.
@@ -101,11 +95,13 @@ void checkAutotune(std::uint64_t seed, int axis, const MassCase& mc,
     EXPECT_LE(r.measuredStep.finalErrorCounts, 1.0);
     EXPECT_NEAR(r.predictedStep.overshootCounts, r.measuredStep.overshootCounts, 1.0);
     EXPECT_NEAR(r.predictedLong.overshootCounts, r.measuredLong.overshootCounts, 1.0);
-    if (!mc.timesAsserted) return;
+    // The issue's bound: the whole autotune, experiment and verification moves, within 10 s of
+    // machine time (20 seeds: at most 4.7 s at x0.5 and x1, 6.1 s at x3).
     EXPECT_LE(r.machineTimeS, 10.0);
     EXPECT_LE(r.measuredLong.inPositionTimeS, mc.longMoveLimitS);
     EXPECT_LE(r.measuredStep.settlingTimeS, mc.stepSettleS);
-    // Prediction honesty: the settling to +-1 count within 15 % (20 seeds: within 3 %).
+    // Prediction honesty, the issue's bound: the settling to +-1 count within 15 % (20 seeds:
+    // within 3 % at x0.5 and x1; at x3 within 1 % on the long move, 14 % on the step).
     EXPECT_NEAR(r.predictedStep.settlingTimeS / r.measuredStep.settlingTimeS, 1.0, 0.15);
     EXPECT_NEAR(r.predictedLong.settlingTimeS / r.measuredLong.settlingTimeS, 1.0, 0.15);
 }
@@ -162,6 +158,178 @@ TEST(DcAutotuneProperty, TunesThreeSeedsThreeMassesBothAxes) {
 TEST(DcAutotuneProperty, DISABLED_TwentySeedsBothAxes) {
     checkIdentifications(20);
     checkSeeds(20);
+}
+
+// Beyond the soak, at x3 only (where the last count is slowest): 100 seeds x 2 axes, each start
+// a different fraction of a count (the soak's 20 places, shifted 0.0137 mm a seed). What holds:
+// every autotune first try with no alarm within 10 s of machine time, overshoot within a count,
+// the 100 mm move's settling predicted within 15 %; the step's within 15 % in at least 98 % of
+// the cases and within 20 % in all. Measured: 198 of 200 within 15 %, the two others 0.84 (the
+// table stopped 0.75 count short at the end of the profile where the model arrived, and crept the
+// rest of the count in 50 ms; see docs/tuning.md).
+TEST(DcAutotuneProperty, DISABLED_HeavyLoadHundredSeedsBothAxes) {
+    int outside15 = 0, cases = 0;
+    double worstStep = 1.0;
+    for (int axis = 0; axis < 2; ++axis)
+        for (int s = 1; s <= 100; ++s) {
+            SCOPED_TRACE(testing::Message() << "seed " << s << " axis " << axis);
+            const double start = 110.0 + 3.71 * (s % 20) + 0.0137 * s;
+            SimDcTableRig rig(MachineProfile::xyDcTable(), axis, static_cast<std::uint64_t>(s),
+                              axis == 0 ? start : 150.0, axis == 1 ? start : 150.0, 3.0);
+            const DcAutotuneResult r = autotuneDcAxis(rig);
+            ASSERT_TRUE(r.ok) << r.error.toStdString();
+            EXPECT_LE(r.machineTimeS, 10.0);
+            EXPECT_LE(r.measuredStep.overshootCounts, 1.0);
+            EXPECT_LE(r.measuredLong.overshootCounts, 1.0);
+            EXPECT_NEAR(r.predictedLong.settlingTimeS / r.measuredLong.settlingTimeS, 1.0, 0.15);
+            const double step = r.predictedStep.settlingTimeS / r.measuredStep.settlingTimeS;
+            EXPECT_NEAR(step, 1.0, 0.20);
+            ++cases;
+            if (std::abs(step - 1.0) > 0.15) ++outside15;
+            if (std::abs(step - 1.0) > std::abs(worstStep - 1.0)) worstStep = step;
+        }
+    std::printf("x3, %d autotunes: step settling predicted within 15 %% in %d, worst %.2f\n", cases,
+                cases - outside15, worstStep);
+    EXPECT_LE(outside15, cases / 50);
+}
+
+// Issue 21 items 5-6 at three times the payload: the cases of the 20-seed soak that took the
+// longest (seed 2 x: 12.9 s of machine time, its 100 mm move in position after 2.9 s) and whose
+// settling the prediction missed most (seed 12 x: 100 mm predicted 1.07 s, measured 2.37 s;
+// seed 15 y: the 10 mm step predicted 0.33 s, measured 1.50 s). The axis stopped a count off its
+// target at the end of the profile and the PI crept the last count against friction: the
+// integral had to wind through the friction band (3 % of PWM at ki 5.7 %/(mm.s)) first.
+// Bounds, the issue's: the whole autotune (experiment and verification moves) within 10 s of
+// machine time; the predicted settling to +-1 count within 15 % of the measured, on the step
+// and on the long move.
+TEST(DcAutotuneProperty, HeavyLoadFinishesAgainstFrictionAsPredicted) {
+    struct Case {
+        std::uint64_t seed;
+        int axis;
+    };
+    for (const Case c : {Case{2, 0}, Case{12, 0}, Case{15, 1}}) {
+        SCOPED_TRACE(testing::Message() << "seed " << c.seed << " axis " << c.axis);
+        const MachineProfile profile = MachineProfile::xyDcTable();
+        SimDcTableRig rig(profile, c.axis, c.seed, c.axis == 0 ? startFor(c.seed) : 150.0,
+                          c.axis == 1 ? startFor(c.seed) : 150.0, 3.0);
+        const DcAutotuneResult r = autotuneDcAxis(rig);
+        ASSERT_TRUE(r.ok) << r.error.toStdString();
+        EXPECT_LE(r.machineTimeS, 10.0);
+        EXPECT_NEAR(r.predictedStep.settlingTimeS / r.measuredStep.settlingTimeS, 1.0, 0.15);
+        EXPECT_NEAR(r.predictedLong.settlingTimeS / r.measuredLong.settlingTimeS, 1.0, 0.15);
+        EXPECT_LE(r.measuredStep.overshootCounts, 1.0);
+        EXPECT_LE(r.measuredLong.overshootCounts, 1.0);
+    }
+}
+
+// The tuned axis holding at rest, pushed off its count (a knock, a hand on the table) by 1 to
+// 4 counts either way, at each mass: the settling law (friction in the error's direction, one
+// duty step more) brings it back into its count within the mass' bound, at most a count past
+// it, with no alarm, and then rests: over 2 s it enters its count at most twice (a count past
+// and back; no hunting) and the drive is 0 while it stays there. Seeded random cases: where in
+// the count it lands, how far, which way. Before the settling law (the integral winding
+// through friction): back within 0.28 / 0.61 / 1.6 s at x0.5 / x1 / x3, up to 3 / 3 / 6 counts
+// past; with the friction term but the approach's integral kept in the window: 0.08 / 0.105 /
+// 0.23 s.
+TEST(DcAutotuneProperty, KnockedOffItsCountItComesBackAndRests) {
+    struct Mass {
+        double factor;
+        double backWithinS;  ///< bound, s (measured over these cases: 0.035 / 0.055 / 0.135 s)
+    };
+    std::mt19937_64 rng(2106);
+    std::uniform_int_distribution<int> counts(1, 4), side(0, 1);
+    std::uniform_real_distribution<double> within(0.05, 0.95);
+    for (const Mass m : {Mass{0.5, 0.06}, Mass{1.0, 0.1}, Mass{3.0, 0.2}}) {
+        const double mass = m.factor;
+        const MachineProfile profile = MachineProfile::xyDcTable();
+        SimDcTableRig rig(profile, 0, 5, startFor(5), 150.0, mass);
+        const DcAutotuneResult r = autotuneDcAxis(rig);
+        ASSERT_TRUE(r.ok) << r.error.toStdString();
+        const double mmPerCount = rig.table().axis(0).mmPerCount();
+        double worstBackS = 0.0, maxOvershoot = 0.0;
+        int maxEntries = 0;
+        for (int trial = 0; trial < 20; ++trial) {
+            SCOPED_TRACE(testing::Message() << "mass x" << mass << " trial " << trial);
+            // Where it holds, in the simulation's frame (the encoder counts from its origin).
+            const double heldAt = rig.table().positionMm(0);
+            const double targetCount = std::floor(heldAt / mmPerCount);
+            const int n = counts(rng) * (side(rng) != 0 ? 1 : -1);
+            rig.table().axis(0).placeAt((targetCount + n + within(rng)) * mmPerCount);
+            double backAt = -1.0, overshoot = 0.0;
+            int entries = 0;
+            bool wasIn = false, driveInWindow = false;
+            for (int tick = 0; tick < 400; ++tick) {  // 2 s
+                rig.tick();
+                const double t = (tick + 1) * rig.periodS();
+                ASSERT_EQ(rig.motion().fault(), AlarmCode::None);
+                const double c = std::floor(rig.table().positionMm(0) / mmPerCount) - targetCount;
+                const bool in = c == 0.0;
+                if (in && !wasIn) ++entries;
+                if (in && backAt < 0.0) backAt = t;
+                // Past the count it was held at, on the far side from where it was pushed.
+                if (c * n < 0.0) overshoot = std::max(overshoot, std::abs(c));
+                // The drive the loop wrote this period, with the count it saw.
+                if (in && wasIn && rig.motion().sample().x.drive != 0.0) driveInWindow = true;
+                wasIn = in;
+            }
+            EXPECT_GT(backAt, 0.0);
+            EXPECT_LE(backAt, m.backWithinS);
+            EXPECT_LE(overshoot, 1.0);
+            EXPECT_LE(entries, 2);
+            maxEntries = std::max(maxEntries, entries);
+            maxOvershoot = std::max(maxOvershoot, overshoot);
+            EXPECT_FALSE(driveInWindow);
+            worstBackS = std::max(worstBackS, backAt);
+        }
+        std::printf(
+            "x%.1f: knocked 1-4 counts off, back in its count within %.3f s, overshoot %.0f "
+            "counts, entered it %d times\n",
+            mass, worstBackS, maxOvershoot, maxEntries);
+    }
+}
+
+// The settling law drives an axis at rest with friction and a duty step more, under the
+// encoder check's dead band (1.5 x friction): the check counts no travel there. An encoder that
+// dies while the axis settles a knock must still be caught: alarm 16 within 1 s, the table within
+// 3.9 mm of where the count froze (docs/architecture.md's bound for a stuck encoder). Measured,
+// shipped and tuned gains at x0.5 / x1 / x3: at most 0.91 s and 3.61 mm (x3, tuned, a count);
+// before the settling law 2.37 s and 3.70 mm.
+TEST(DcAutotuneProperty, AnEncoderThatDiesWhileSettlingIsCaught) {
+    for (const double mass : {0.5, 1.0, 3.0})
+        for (const bool tuned : {false, true})
+            for (const int knock : {-3, -1, 1, 3}) {
+                SCOPED_TRACE(testing::Message()
+                             << "mass x" << mass << (tuned ? " tuned" : "") << " knock " << knock);
+                MachineProfile profile = MachineProfile::xyDcTable();
+                if (tuned) {
+                    SimDcTableRig t(profile, 0, 5, startFor(5), 150.0, mass);
+                    const DcAutotuneResult r = autotuneDcAxis(t);
+                    ASSERT_TRUE(r.ok) << r.error.toStdString();
+                    profile = r.tuned;
+                }
+                SimDcTableRig rig(profile, 0, 5, startFor(5), 150.0, mass);
+                for (int i = 0; i < 20; ++i)
+                    rig.tick();
+                const double mmPerCount = rig.table().axis(0).mmPerCount();
+                rig.table().axis(0).placeAt(rig.table().positionMm(0) + knock * mmPerCount);
+                rig.tick();  // the loop sees the knock: settling
+                rig.table().setEncoderStuck(0, true);
+                const double frozenAt = rig.table().positionMm(0);
+                double travel = 0.0, caughtAt = -1.0;
+                for (int i = 1; i <= 400 && caughtAt < 0.0; ++i) {
+                    rig.tick();
+                    travel = std::max(travel, std::abs(rig.table().positionMm(0) - frozenAt));
+                    if (rig.motion().fault() != AlarmCode::None) caughtAt = i * rig.periodS();
+                }
+                EXPECT_EQ(rig.motion().fault(), AlarmCode::EncoderStalled);
+                EXPECT_GT(caughtAt, 0.0);
+                EXPECT_LE(caughtAt, 1.0);
+                // After the cut the table coasts to rest within its time constant.
+                for (int i = 0; i < 100; ++i)
+                    rig.tick();
+                travel = std::max(travel, std::abs(rig.table().positionMm(0) - frozenAt));
+                EXPECT_LE(travel, 3.9);
+            }
 }
 
 // The experiment does not start where it could leave the table: near a soft limit nothing
