@@ -205,7 +205,7 @@ int runCommand(const QStringList& args) {
         into = v;
         return true;
     };
-    if (!number(massOpt, 0.1, 20.0, options.massFactor))
+    if (!number(massOpt, kMinMassFactor, kMaxMassFactor, options.massFactor))
         return usage(QStringLiteral("--mass-factor must be a number from 0.1 to 20 (got '%1')")
                          .arg(parser.value(massOpt)));
     if (!number(continueOpt, 0.0, 1e6, options.continueAfterS))
@@ -291,6 +291,19 @@ int runCommand(const QStringList& args) {
     switch (profile.kind) {
         case MachineKind::Rail:
             profile.plant.massFactor *= options.massFactor;
+            // The profile's factor and the option's multiply; the servo's count checks hold
+            // over the payloads a profile may give (issue 20 item 11), so the product must be
+            // one of them too.
+            if (profile.plant.massFactor < kMinMassFactor ||
+                profile.plant.massFactor > kMaxMassFactor)
+                return usage(QStringLiteral("--mass-factor %1 times the profile's plant.massFactor "
+                                            "%2 is x%3, outside the payloads the rail takes "
+                                            "(x%4 to x%5)")
+                                 .arg(options.massFactor)
+                                 .arg(profile.plant.massFactor / options.massFactor)
+                                 .arg(profile.plant.massFactor)
+                                 .arg(kMinMassFactor)
+                                 .arg(kMaxMassFactor));
             break;
         case MachineKind::DcTable:
             profile.dcTable.massFactor *= options.massFactor;

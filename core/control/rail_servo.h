@@ -78,6 +78,11 @@ struct ServoSample {
     /// moveGapMm is its value at the last in-position (where it is checked).
     double travelGapMm = 0.0;
     double moveGapMm = 0.0;
+    /// The moves' gaps summed since the count was last referenced (homing, or the centre mark
+    /// that clears the counter), mm: small losses add up over moves that never cross the mark.
+    double referenceGapMm = 0.0;
+    double referenceTravelMm = 0.0;  ///< mm counted over those moves (the bound's fraction)
+    std::uint32_t restChecks = 0;    ///< rest-to-rest checks made (one per in-position)
 };
 
 class RailServo {
@@ -171,16 +176,42 @@ class RailServo {
     /// Since the platform was last in position: the speed reference integrated, mm (signed),
     /// and the travel counted, mm (signed).
     double referenceTravelMm_ = 0.0, countedTravelMm_ = 0.0;
-    double restVelocityMmS_ = 0.0;  ///< mm/s: the 20 ms mean speed at the last tick
-    /// 10 ms blocks of the rest-to-rest gap: the gap, mm; the travel counted, mm; the time, s.
+    /// 10 ms blocks of the rest-to-rest gap: the speed reference's travel (codes x mm/s per code
+    /// x s), mm; the travel counted, mm; the time, s.
     struct GapBlock {
-        double gapMm = 0.0, travelMm = 0.0, s = 0.0;
+        double referenceMm = 0.0, travelMm = 0.0, s = 0.0;
     };
     static constexpr double kGapBlockS = 0.01;
-    /// The block before the one to decide, the one to decide, the one being summed.
-    std::array<GapBlock, 3> blocks_{GapBlock{0.0, 0.0, kGapBlockS}, GapBlock{}, GapBlock{}};
+    /// Blocks each side of the one decided: the counted acceleration is the difference of their
+    /// mean speeds, so its count quantisation (one count per side) stays under half the
+    /// slowest saturated acceleration (heaviest payload): 3 x 10 ms a side, at most 73 mm/s2.
+    static constexpr int kGapSideBlocks = 3;
+    static constexpr int kGapBlocks = 2 * kGapSideBlocks + 1;
+    /// The window: kGapSideBlocks before the block to decide (at rest after a reset), the block
+    /// to decide, the blocks after it; the last is being summed. gapCount_: blocks in it.
+    std::array<GapBlock, kGapBlocks> blocks_{};
+    int gapCount_ = 0;
+    /// mm/s: the counted speed at the start of the block to decide (0 at rest).
+    double gapBoundaryMmS_ = 0.0;
+    /// The last block decided had a steady counted speed (|acceleration| < saturatedAccel_).
+    bool countedSteady_ = true;
     void resetGapBlocks();
+    /// Decides the middle block of a full window: its gap is kept unless the current limit
+    /// made it.
+    void decideGapBlock();
+    /// The gap of the blocks not decided yet, mm, the platform's speed at their end being
+    /// endSpeedMmS (0 at rest).
+    double pendingGapMm(double endSpeedMmS) const;
     double saturatedAccel_ = 0.0;  ///< mm/s2: below it, the amplifier is not at its limit
+    /// mm/s2: half the slowest saturated acceleration of payloads up to x3, above the fast
+    /// scale's count quantisation (526 mm/s2 on the stock rail).
+    double fastSaturatedAccel_ = 0.0;
+    /// Since the count was last referenced (homing, the centre mark): the moves' gaps summed,
+    /// mm, in machine coordinates (the platform less the count: a shuttle's lags cancel, a
+    /// loss in one direction adds up), and the travel counted, mm.
+    double referenceSumMm_ = 0.0, referenceTravelSumMm_ = 0.0;
+    /// A new reference of the count: the sums start again (from the move in progress).
+    void restartReferenceSum();
     double modelSlow_ = 0.0, measuredSlow_ = 0.0;  ///< mm/s, 20 ms means: is the speed steady
     /// The plant accelerates up to its current limit, above the planner's braking figure.
     double plantAccelBound_ = 0.0;

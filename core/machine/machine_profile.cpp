@@ -95,7 +95,7 @@ void forEachRailNumber(MachineProfile& p, F&& f) {
     f("plant.gearEfficiency", pl.gearEfficiency, 0.1, 1.0);
     f("plant.movingMassKg", pl.movingMassKg, 1.0, 5000.0);
     f("plant.reflectedMassKg", pl.reflectedMassKg, 0.0, 1000.0);
-    f("plant.massFactor", pl.massFactor, 0.1, 20.0);
+    f("plant.massFactor", pl.massFactor, kMinMassFactor, kMaxMassFactor);
     f("plant.speedLoopTauS", pl.speedLoopTauS, 0.001, 1.0);
     f("plant.coulombFrictionN", pl.coulombFrictionN, 0.0, 1000.0);
     f("plant.viscousFrictionNsPerM", pl.viscousFrictionNsPerM, 0.0, 1000.0);
@@ -123,6 +123,8 @@ void forEachRailNumber(MachineProfile& p, F&& f) {
     f("loop.countLossFraction", l.countLossFraction, 0.0, 1.0);
     f("loop.restCountLossMm", l.restCountLossMm, 0.1, 1000.0);
     f("loop.restCountLossFraction", l.restCountLossFraction, 0.0, 1.0);
+    f("loop.referenceCountLossMm", l.referenceCountLossMm, 0.1, 1000.0);
+    f("loop.referenceCountLossFraction", l.referenceCountLossFraction, 0.0, 1.0);
     f("loop.inPositionTimeoutS", l.inPositionTimeoutS, 0.1, 600.0);
     f("loop.classicInPositionTimeoutS", l.classicInPositionTimeoutS, 0.1, 3600.0);
     f("loop.finalPositionWindowMm", l.finalPositionWindowMm, 0.001, 100.0);

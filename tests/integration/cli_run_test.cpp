@@ -154,6 +154,25 @@ TEST_F(CliRun, BadOptionsExitTwo) {
     }
 }
 
+// Issue 20 item 11: the profile's payload and --mass-factor multiply; a product outside the
+// payloads the rail takes (x0.1 to x20, where the count checks hold) is refused, not run.
+TEST_F(CliRun, AMassFactorBeyondTheProfilesRangeIsRefused) {
+    const QString heavy = write(QStringLiteral("heavy.json"), R"({"plant": {"massFactor": 10}})");
+    Result r =
+        run({QStringLiteral("--virtual-time"), QStringLiteral("--machine"), heavy,
+             QStringLiteral("--mass-factor"), QStringLiteral("3"), program("exemplo_documento.G")});
+    EXPECT_EQ(r.exit, 2) << r.err.toStdString();
+    EXPECT_TRUE(
+        r.err.contains(QStringLiteral("is x30, outside the payloads the rail takes (x0.1 "
+                                      "to x20)")))
+        << r.err.toStdString();
+    Result ok =
+        run({QStringLiteral("--virtual-time"), QStringLiteral("--machine"), heavy,
+             QStringLiteral("--mass-factor"), QStringLiteral("0.5"),
+             QStringLiteral("--max-seconds"), QStringLiteral("1"), program("exemplo_documento.G")});
+    EXPECT_NE(ok.exit, 2) << ok.err.toStdString();
+}
+
 // Issue 8: faults and late ticks for people.
 TEST_F(CliRun, AStuckEncoderIsAnAlarmAndThePlantIsFollowedToRest) {
     Result r =

@@ -764,13 +764,13 @@ TEST(CountsLost, AProfileThatKnowsTheCardsRateIsSlowedAndLosesNone) {
 }
 
 TEST(CountsLost, NoFalseAlarmAtAnyMassFeedOrLength) {
-    // The model's own error: masses x0.5 to x3, rapids and feeds, long and short moves, the
+    // The model's own error: masses x0.5 to x5, rapids and feeds, long and short moves, the
     // soft limits, on time and with late ticks (20 ms, 5 % of the ticks). The worst drift and
-    // the worst rest-to-rest gap are printed against their allowances (2 mm + 0.2 % of the
-    // travel; restCountLossMm + restCountLossFraction of the move's travel).
+    // the worst rest-to-rest gap are printed against their allowances (countLossMm +
+    // countLossFraction of the travel; restCountLossMm + restCountLossFraction of the move's).
     double worst = 0.0, worstGap = 0.0;
     for (double jitter : {0.0, 0.020}) {
-        for (double mass : {0.5, 1.0, 2.0, 3.0}) {
+        for (double mass : {0.5, 1.0, 2.0, 3.0, 5.0}) {
             for (const char* program :
                  {"G0 X1270\nG0 X-1270\nG0 X0\nM2\n", "G1 X600 F10\nG1 X0 F50\nG1 X3 F100\nM2\n",
                   "G0 X0.5\nG0 X1\nG1 X200 F30\nG0 X-200\nM2\n",
@@ -781,8 +781,14 @@ TEST(CountsLost, NoFalseAlarmAtAnyMassFeedOrLength) {
                 const DriftRun r = runForDrift(program, mass, f, MachineProfile::rail(), 120.0);
                 SCOPED_TRACE(std::string(program) + " mass x" + std::to_string(mass) +
                              " late ticks " + std::to_string(jitter));
-                EXPECT_TRUE(r.finished);
-                EXPECT_EQ(r.alarm, AlarmCode::None) << r.alarmValue;
+                EXPECT_FALSE(r.countsLost) << r.alarmValue;
+                if (mass > 3.0 && jitter > 0.0 && r.alarm == AlarmCode::FollowingError) {
+                    // x5 with late ticks: the platform can lag its plan beyond the following
+                    // error limit (alarm 3, a real one), never alarm 21.
+                } else {
+                    EXPECT_TRUE(r.finished);
+                    EXPECT_EQ(r.alarm, AlarmCode::None) << r.alarmValue;
+                }
                 worst = std::max(worst, r.worstDriftMm);
                 worstGap = std::max(worstGap, r.worstGapMm);
                 std::printf("  mass x%.1f, late ticks %.0f ms: worst gap %.3f mm\n", mass,
@@ -795,7 +801,7 @@ TEST(CountsLost, NoFalseAlarmAtAnyMassFeedOrLength) {
 }
 
 // Counts lost anywhere (issue 20 item 11): seeded moves (positions, rapids and feeds, masses
-// x0.5-x3, card rates from 20,000 to 45,000 counts/s, below and above the rates the moves
+// x0.5-x5, card rates from 20,000 to 45,000 counts/s, below and above the rates the moves
 // reach). Whatever the card loses, the program never ends "finished" with the platform off
 // its count by more than the rest-to-rest check's allowance for the moves it ran, and a loss
 // above it stops the machine with alarm 21. TRILHO_COUNT_SEEDS runs more than the default 24.
@@ -806,13 +812,13 @@ TEST(CountsLost, AnywhereInAMoveTheyNeverEndInSilentSuccess) {
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     int finished = 0, stopped = 0, lossy = 0;
-    double worstSilentMm = 0.0;
+    double worstSilentMm = 0.0, worstStoppedMm = 0.0;
     for (int i = 0; i < runs; ++i) {
         const double a = std::round((u(rng) * 2.0 - 1.0) * 1270.0);
         const double b = std::round((u(rng) * 2.0 - 1.0) * 1270.0);
         const bool rapid = u(rng) < 0.6;
         const int feed = 10 + static_cast<int>(u(rng) * 90.0);
-        const double mass = 0.5 + 2.5 * u(rng);
+        const double mass = 0.5 + 4.5 * u(rng);
         FaultInjection f;
         f.maxCountRateHz = 20000.0 + 25000.0 * u(rng);
         char text[160];
@@ -839,6 +845,7 @@ TEST(CountsLost, AnywhereInAMoveTheyNeverEndInSilentSuccess) {
             EXPECT_LT(r.maxPlantMm, p.limits.x.softMaxMm + allowed);
         } else {
             ++stopped;
+            worstStoppedMm = std::max(worstStoppedMm, std::abs(r.lostMm));
             // Alarm 21; a move that crossed the centre mark may have said warning 14 first
             // (the mark corrected the count): the card still lost counts in it.
             EXPECT_TRUE(r.countsLost)
@@ -846,9 +853,243 @@ TEST(CountsLost, AnywhereInAMoveTheyNeverEndInSilentSuccess) {
         }
     }
     std::printf(
-        "counts lost, %d seeded runs: %d lost counts, %d stopped on alarm 21, %d finished (the "
-        "worst count off at a finish %.3f mm)\n",
-        runs, lossy, stopped, finished, worstSilentMm);
+        "counts lost, %d seeded runs: %d lost counts, %d stopped on alarm 21 (the platform off "
+        "its count by at most %.2f mm at rest), %d finished (the worst count off at a finish "
+        "%.3f mm)\n",
+        runs, lossy, stopped, worstStoppedMm, finished, worstSilentMm);
+}
+
+/// Every in-position of a run: the rest-to-rest gap of the move that ended there (mm), and the
+/// sum of those gaps since the count was last referenced (homing, the centre mark).
+struct GapRun {
+    std::vector<double> gaps;
+    double worstSumMm = 0.0;         ///< the largest |sum since the reference| seen
+    double worstSumPerTravel = 0.0;  ///< the largest (|sum| - 1 mm) / travel since the reference
+    bool finished = false;
+    AlarmCode alarm = AlarmCode::None;
+    double alarmValue = 0.0;
+    double lostMm = 0.0;  ///< the platform less the count, at the end, mm
+};
+
+GapRun runForGaps(const std::string& text, double massFactor, const FaultInjection& faults,
+                  MachineProfile p = MachineProfile::rail(), double seconds = 600.0,
+                  std::uint64_t seed = 1) {
+    Cell cell(p, seed);
+    cell.session.rail().setMassFactor(massFactor);
+    RailController& c = cell.c();
+    EXPECT_TRUE(c.loadProgram(compileText(text)));
+    EXPECT_TRUE(c.start());
+    cell.session.rail().setFaults(faults);
+    GapRun r;
+    std::vector<ControllerEvent> events;
+    std::uint32_t checks = c.status().servo.restChecks;
+    runWatching(
+        cell,
+        [&] {
+            const auto& st = c.status();
+            if (st.servo.restChecks != checks) r.gaps.push_back(st.servo.moveGapMm);
+            checks = st.servo.restChecks;
+            r.worstSumMm = std::max(r.worstSumMm, std::abs(st.servo.referenceGapMm));
+            r.worstSumPerTravel =
+                std::max(r.worstSumPerTravel, (std::abs(st.servo.referenceGapMm) - 1.0) /
+                                                  std::max(1.0, st.servo.referenceTravelMm));
+            return st.programFinished || st.state == ControllerState::Alarm;
+        },
+        seconds, &events);
+    runWatching(
+        cell, [&] { return false; }, c.status().state == ControllerState::Alarm ? 3.0 : 0.0,
+        &events);
+    r.finished = c.status().programFinished;
+    r.lostMm = cell.x() - c.status().servo.positionMm;
+    for (const ControllerEvent& e : events)
+        if (e.kind == EventKind::AlarmRaised && r.alarm == AlarmCode::None)
+            r.alarm = e.alarm, r.alarmValue = e.value;
+    return r;
+}
+
+/// A seeded program of n moves between lo and hi mm: rapids and feeds F5-F100, long and short.
+std::string seededMoves(std::mt19937_64& rng, int n, double lo, double hi) {
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::string text;
+    double at = 0.0;
+    for (int k = 0; k < n; ++k) {
+        double to = lo + (hi - lo) * u(rng);
+        if (u(rng) < 0.3) to = std::clamp(at + (u(rng) - 0.5) * 20.0, lo, hi);  // short
+        to = std::round(to * 10.0) / 10.0;
+        char line[64];
+        if (u(rng) < 0.5)
+            std::snprintf(line, sizeof line, "G0 X%.1f\n", to);
+        else
+            std::snprintf(line, sizeof line, "G1 X%.1f F%d\n", to,
+                          5 + static_cast<int>(u(rng) * 95.0));
+        text += line;
+        at = to;
+    }
+    return text + "M2\n";
+}
+
+// Measures (TRILHO_GAP_MEASURE=n moves): the fault-free rest-to-rest gap of every move and
+// their running sum, per mass, on time and with late ticks. Prints; asserts only no alarm.
+TEST(CountsLost, MeasureFaultFreeGaps) {
+    const char* env = std::getenv("TRILHO_GAP_MEASURE");
+    if (!env) GTEST_SKIP() << "set TRILHO_GAP_MEASURE=<moves> to measure";
+    const int n = std::atoi(env);
+    const char* masses = std::getenv("TRILHO_GAP_MASSES");
+    std::vector<double> ms = {0.1, 0.5, 1.0, 2.0, 3.0, 5.0, 10.0, 20.0};
+    if (masses) {
+        ms.clear();
+        for (const char* q = masses; *q;) {
+            char* end = nullptr;
+            ms.push_back(std::strtod(q, &end));
+            q = *end ? end + 1 : end;
+        }
+    }
+    for (double jitter : {0.0, 0.020}) {
+        for (double mass : ms) {
+            std::mt19937_64 rng(static_cast<std::uint64_t>(mass * 100 + jitter * 1e4));
+            FaultInjection f;
+            f.tickJitterMaxS = jitter;
+            f.tickJitterRate = 0.05;
+            std::string program = seededMoves(rng, n, 20.0, 1270.0);
+            if (std::getenv("TRILHO_GAP_SHUTTLE")) {
+                // Rapids one way, slow feeds back: the lags of the rapids do not cancel.
+                program.clear();
+                for (int k = 0; k < n / 2; ++k)
+                    program += "G1 X100 F20\nG0 X1100\n";
+                program += "M2\n";
+            }
+            const GapRun r = runForGaps(program, mass, f, MachineProfile::rail(), 3600.0);
+            double sum = 0.0, worstSum = 0.0, worst = 0.0, sq = 0.0;
+            for (double g : r.gaps) {
+                sum += g;
+                sq += g * g;
+                worstSum = std::max(worstSum, std::abs(sum));
+                worst = std::max(worst, std::abs(g));
+            }
+            const double k = static_cast<double>(std::max<std::size_t>(1, r.gaps.size()));
+            std::printf(
+                "mass x%.1f late %2.0f ms: %zu moves, %s alarm %d (%.2f); gap mean %+.4f sd %.4f "
+                "max|gap| %.3f; sum %+.3f, max|sum| %.3f, servo max|ref sum| %.3f, "
+                "(|sum|-1)/travel %.5f\n",
+                mass, jitter * 1e3, r.gaps.size(), r.finished ? "finished" : "STOPPED",
+                static_cast<int>(r.alarm), r.alarmValue, sum / k,
+                std::sqrt(std::max(0.0, sq / k - (sum / k) * (sum / k))), worst, sum, worstSum,
+                r.worstSumMm, r.worstSumPerTravel);
+        }
+    }
+}
+
+// Item 1 of the remaining issue 20 item 11: losses under each move's bound add up over moves
+// that never cross the centre mark. Twelve cycles of a slow feed back and an 800 mm rapid out
+// on a 28,000 counts/s card: each rapid loses under its own bound; without the sum since the
+// reference the program ended "finished" with the platform off its count by the sum.
+TEST(CountsLost, SmallLossesThatAddUpOverMovesStopTheMachine) {
+    std::string text;
+    for (int k = 0; k < 12; ++k)
+        text += "G1 X100 F20\nG0 X900\n";
+    text += "M2\n";
+    FaultInjection f;
+    f.maxCountRateHz = 28000;
+    MachineProfile unsummed = MachineProfile::rail();
+    unsummed.loop.referenceCountLossMm = 1000.0;  // no sum: what the program did before
+    const GapRun before = runForGaps(text, 1.0, f, unsummed);
+    const GapRun after = runForGaps(text, 1.0, f);
+    std::printf(
+        "12 x (G1 X100 F20 / G0 X900), 28,000 counts/s: without the sum %s %.2f mm off "
+        "(%zu moves); with it alarm %d (%.2f mm) after %zu moves, %.2f mm off\n",
+        before.finished ? "finished" : "stopped", before.lostMm, before.gaps.size(),
+        static_cast<int>(after.alarm), after.alarmValue, after.gaps.size(), after.lostMm);
+    EXPECT_TRUE(before.finished);
+    EXPECT_GT(std::abs(before.lostMm), 10.0);
+    EXPECT_FALSE(after.finished);
+    EXPECT_EQ(after.alarm, AlarmCode::CountsLost);
+    const MachineProfile p = MachineProfile::rail();
+    // Stopped within the bound plus the move that passed it (at most its own bound).
+    EXPECT_LT(std::abs(after.lostMm),
+              p.loop.referenceCountLossMm + p.loop.referenceCountLossFraction * 24 * 800.0 +
+                  p.loop.restCountLossMm + p.loop.restCountLossFraction * 800.0);
+    // The issue's eight cycles on a 34,000 counts/s card (figure for the report).
+    std::string eight = "G0 X100\n";
+    for (int k = 0; k < 8; ++k)
+        eight += "G01 X100 F20\nG00 X1100\n";
+    eight += "M2\n";
+    f.maxCountRateHz = 34000;
+    const GapRun issue = runForGaps(eight + "", 1.0, f);
+    std::printf(
+        "8 x (G01 X100 F20 / G00 X1100), 34,000 counts/s: %s, alarm %d, %.2f mm off, "
+        "sum since the reference %.2f mm\n",
+        issue.finished ? "finished" : "stopped", static_cast<int>(issue.alarm), issue.lostMm,
+        issue.worstSumMm);
+}
+
+// The sum since the reference does not drift without lost counts: seeded moves both ways and
+// rapids one way with feeds back (where a heavy payload's lag does not cancel), masses up to
+// the heaviest that follows a rapid (x5.5; x6 and more: alarm 3), on time and with late ticks.
+// The sum stays inside referenceCountLossMm + referenceCountLossFraction of the travel.
+// TRILHO_COUNT_SUM_MOVES (default 40) makes the programs longer.
+TEST(CountsLost, TheSumSinceTheReferenceDoesNotDriftWithoutLosses) {
+    const char* env = std::getenv("TRILHO_COUNT_SUM_MOVES");
+    const int n = env ? std::atoi(env) : 40;
+    const MachineProfile p = MachineProfile::rail();
+    for (bool shuttle : {false, true}) {
+        for (double jitter : {0.0, 0.020}) {
+            for (double mass : {0.5, 1.0, 3.0, 5.0}) {
+                std::mt19937_64 rng(static_cast<std::uint64_t>(mass * 100 + jitter * 1e4));
+                std::string text = seededMoves(rng, n, 20.0, 1270.0);
+                if (shuttle) {
+                    text.clear();
+                    for (int k = 0; k < n / 2; ++k)
+                        text += "G1 X100 F20\nG0 X1100\n";
+                    text += "M2\n";
+                }
+                FaultInjection f;
+                f.tickJitterMaxS = jitter;
+                f.tickJitterRate = 0.05;
+                const GapRun r = runForGaps(text, mass, f, p, 3600.0);
+                SCOPED_TRACE(std::string(shuttle ? "shuttle" : "seeded") + " mass x" +
+                             std::to_string(mass) + " late ticks " + std::to_string(jitter));
+                EXPECT_NE(r.alarm, AlarmCode::CountsLost) << r.alarmValue;
+                // Heavy payloads with late ticks can be a following error (alarm 3): real.
+                if (r.alarm != AlarmCode::None) {
+                    EXPECT_EQ(r.alarm, AlarmCode::FollowingError);
+                }
+                double sum = 0.0;
+                for (double g : r.gaps)
+                    sum += g;
+                std::printf(
+                    "  %s x%.1f late %2.0f ms: %zu moves, gap mean %+.3f mm, max |sum| "
+                    "%.2f mm%s\n",
+                    shuttle ? "shuttle" : "seeded ", mass, jitter * 1e3, r.gaps.size(),
+                    r.gaps.empty() ? 0.0 : sum / static_cast<double>(r.gaps.size()), r.worstSumMm,
+                    r.alarm == AlarmCode::None ? "" : " (alarm 3)");
+            }
+        }
+    }
+}
+
+// Item 3: the saturation threshold assumed payloads up to x3, and `run --mass-factor 5` with
+// rapids read a heavy rapid's lag as lost counts (alarm 21, 2.06 mm, from the steady check).
+// Over the whole range the profile allows (kMaxMassFactor, x20), no alarm 21 without lost
+// counts: up to x5.5 the rapids finish; heavier, the platform cannot follow the gentlest plan
+// (alarm 3) or, at x20, does not count within the stall check's 5 mm (alarm 16).
+TEST(CountsLost, NoPayloadTheProfileAllowsReadsAsLostCounts) {
+    const char* text = "G0 X1000\nG0 X-1000\nG0 X0\nG0 X2\nG1 X600 F50\nG0 X-1200\nM2\n";
+    for (double mass : {kMinMassFactor, 0.5, 4.0, 5.0, 5.5, 6.0, 8.0, 10.0, 15.0, kMaxMassFactor}) {
+        for (double jitter : {0.0, 0.020}) {
+            FaultInjection f;
+            f.tickJitterMaxS = jitter;
+            f.tickJitterRate = 0.05;
+            const DriftRun r = runForDrift(text, mass, f, MachineProfile::rail(), 120.0);
+            SCOPED_TRACE("mass x" + std::to_string(mass) + " late " + std::to_string(jitter));
+            EXPECT_FALSE(r.countsLost) << r.alarmValue;
+            if (mass >= 4.0 && mass <= 5.0 && jitter == 0.0) {
+                EXPECT_TRUE(r.finished);
+            }
+            std::printf("  x%.1f late %2.0f ms: %s, alarm %d, worst gap %.2f mm\n", mass,
+                        jitter * 1e3, r.finished ? "finished" : "stopped",
+                        static_cast<int>(r.alarm), r.worstGapMm);
+        }
+    }
 }
 
 // ---- after an alarm, the next legal action works ---------------------------------------------
