@@ -130,8 +130,9 @@ int serveCommand(const QStringList& args) {
     const QCommandLineOption busyPollOpt(
         QStringLiteral("busy-poll"),
         QStringLiteral("Microseconds to poll a lone TCP client that sends back to back for its "
-                       "next request after each answer, instead of sleeping (default 50; 0: "
-                       "never). Costs up to that much CPU per request, only while one client "
+                       "next request after each answer, instead of sleeping (default 50, 0 with "
+                       "--virtual-time; 0: never). Costs up to that much CPU per request, only "
+                       "while one client "
                        "keeps the link that busy."),
         QStringLiteral("US"));
     const QCommandLineOption supervisorOpt(
@@ -207,7 +208,8 @@ int serveCommand(const QStringList& args) {
             return usage(QStringLiteral("--idle-timeout must be 0-86400 seconds (got '%1')")
                              .arg(parser.value(idleOpt)));
     }
-    tcpLimits.busyPollUs = 50;
+    // In virtual time the event loop steps the machine itself: it is never left waiting.
+    tcpLimits.busyPollUs = parser.isSet(virtualOpt) ? 0 : 50;
     if (parser.isSet(busyPollOpt)) {
         bool ok = false;
         tcpLimits.busyPollUs = parser.value(busyPollOpt).toInt(&ok);

@@ -189,7 +189,17 @@ def run_pymodbus(cli):
             check(p.ir(IN_PROGRAM)[0] == 42, "program number 42 in the status")
             check(p.command(HOLD) == APPLIED, "hold applied")
             wait_for(lambda: p.state() == PAUSED and p.ir(IN_PAUSE)[0] == 2, "paused by hold")
-            if not wait_for(lambda: abs(f32(*p.ir(IN_SPEED, 2))) < 0.5, "at rest while held"):
+            # Held: the setpoint has come to rest (the hold's braking plan ended). Waited on the
+            # plan, not on the measured speed: a held platform may hunt by a count (the
+            # quantized drive's dither), which the speed estimate reads as a few mm/s.
+            last = [None]
+
+            def setpoint_still():
+                sp = f32(*p.ir(IN_SETPOINT, 2))
+                still = last[0] is not None and sp == last[0] and p.ir(IN_STATE)[0] == PAUSED
+                last[0] = sp
+                return still
+            if not wait_for(setpoint_still, "the hold's setpoint at rest"):
                 print(f"  held: state {p.state()} pause {p.ir(IN_PAUSE)[0]} speed "
                       f"{f32(*p.ir(IN_SPEED, 2)):.3f} mm/s at {f32(*p.ir(IN_POSITION, 2)):.3f} mm "
                       f"setpoint {f32(*p.ir(IN_SETPOINT, 2)):.3f} mm alarms {p.ir(IN_ALARMS, 2)}")
