@@ -1,18 +1,20 @@
 #pragma once
-// What `trilho-cli run` does with the rail's controller after each period, in virtual and in
-// real time: when the run is over (finished, an alarm, a hold, --max-seconds) and when to press
-// Continue after an m00 (--continue-after).
+// What `trilho-cli run` does with a controller after each period, in virtual and in real time,
+// on the rail and on the XY machines: when the run is over (finished, an alarm, a hold,
+// --max-seconds) and when to press Continue after an m00 (--continue-after).
 #include "app/cli/run_support.h"
 #include "core/machine/rail_controller.h"
 
 namespace trilho::cli {
 
-/// Shared by both time bases; elapsedS in s of the run's clock.
+/// Shared by both time bases and every machine; elapsedS in s of the run's clock.
 struct Supervisor {
     const RunOptions& options;
     double pausedSince = -1.0;
-    /// Returns true when the run is over, setting outcome.
-    bool check(const ControllerStatus& s, double elapsedS, Outcome& outcome, bool& pressContinue) {
+    /// Returns true when the run is over, setting outcome. Status: the rail's ControllerStatus
+    /// or the XY machines' XyStatus (the same state, pause and end fields).
+    template <class Status>
+    bool check(const Status& s, double elapsedS, Outcome& outcome, bool& pressContinue) {
         pressContinue = false;
         if (s.programFinished && s.state == ControllerState::AutoIdle)
             return outcome = Outcome::Finished, true;

@@ -11,6 +11,7 @@
 #include <QCoreApplication>
 
 #include "app/cli/run_sidecar.h"
+#include "app/cli/run_supervisor.h"
 #include "app/cli/trace_queue.h"
 #include "app/cli/xy_trace.h"
 #include "core/machine/serial_link_motion.h"
@@ -37,28 +38,6 @@ void traceRow(TraceFile& trace, const XyStatus& s) {
     CsvRow row;
     formatXyTraceRow(xyTraceRow(s), row);
     trace.line(row.data(), static_cast<qint64>(row.size()));
-}
-
-/// Returns true when the run is over (as the rail's Supervisor).
-bool over(const XyStatus& s, double elapsedS, const RunOptions& options, double& pausedSince,
-          Outcome& outcome, bool& pressContinue) {
-    pressContinue = false;
-    if (s.programFinished && s.state == ControllerState::AutoIdle)
-        return outcome = Outcome::Finished, true;
-    if (s.state == ControllerState::Alarm || s.state == ControllerState::EStop)
-        return outcome = Outcome::Alarm, true;
-    if (s.state == ControllerState::Paused && s.heldByController)
-        return outcome = Outcome::Alarm, true;
-    if (options.maxSeconds >= 0 && elapsedS >= options.maxSeconds - 1e-9)
-        return outcome = Outcome::TimeLimit, true;
-    if (s.state == ControllerState::Paused && s.pause == PauseReason::M00) {
-        if (pausedSince < 0) pausedSince = elapsedS;
-        if (options.continueAfterS >= 0 && elapsedS - pausedSince >= options.continueAfterS - 1e-9)
-            pressContinue = true, pausedSince = -1.0;
-    } else {
-        pausedSince = -1.0;
-    }
-    return false;
 }
 
 }  // namespace
@@ -90,7 +69,7 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
     c.loadProgram(std::move(program));
     c.start(0);
     Outcome outcome = Outcome::Finished;
-    double pausedSince = -1.0;
+    Supervisor sup{options};
     // Late periods (--tick-jitter), from the program's start on, as on the rail; a board on a
     // line (--port) keeps its own time (the option is refused there).
     LateTicks ticks(options.tickJitterMs / 1000.0, options.jitterRate, options.seed);
@@ -130,7 +109,7 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
             outcome = Outcome::Alarm;
             break;
         }
-        if (over(s, s.timeS, options, pausedSince, outcome, press)) break;
+        if (sup.check(s, s.timeS, outcome, press)) break;
         if (press) c.pressContinue();
     }
     if (outcome == Outcome::Alarm && !link) {
