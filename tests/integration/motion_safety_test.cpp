@@ -52,6 +52,13 @@ struct Cell {
     }
     RailController& c() { return session.controller(); }
     double x() { return session.rail().state().positionMm; }
+    /// Starts a program on a payload of massFactor, with faults switched on at its start.
+    void start(const std::string& text, double massFactor, const FaultInjection& faults) {
+        session.rail().setMassFactor(massFactor);
+        EXPECT_TRUE(c().loadProgram(compileText(text)));
+        EXPECT_TRUE(c().start());
+        session.rail().setFaults(faults);
+    }
 };
 
 // ---- the reported defect: one late tick during ciclo_continuo.G -----------------------------
@@ -686,11 +693,8 @@ struct DriftRun {
 DriftRun runForDrift(const std::string& text, double massFactor, const FaultInjection& faults,
                      MachineProfile p = MachineProfile::rail(), double seconds = 60.0) {
     Cell cell(p);
-    cell.session.rail().setMassFactor(massFactor);
+    cell.start(text, massFactor, faults);
     RailController& c = cell.c();
-    EXPECT_TRUE(c.loadProgram(compileText(text)));
-    EXPECT_TRUE(c.start());
-    cell.session.rail().setFaults(faults);
     DriftRun r;
     std::vector<ControllerEvent> events;
     runWatching(
@@ -875,11 +879,8 @@ GapRun runForGaps(const std::string& text, double massFactor, const FaultInjecti
                   MachineProfile p = MachineProfile::rail(), double seconds = 600.0,
                   std::uint64_t seed = 1) {
     Cell cell(p, seed);
-    cell.session.rail().setMassFactor(massFactor);
+    cell.start(text, massFactor, faults);
     RailController& c = cell.c();
-    EXPECT_TRUE(c.loadProgram(compileText(text)));
-    EXPECT_TRUE(c.start());
-    cell.session.rail().setFaults(faults);
     GapRun r;
     std::vector<ControllerEvent> events;
     std::uint32_t checks = c.status().servo.restChecks;
