@@ -35,6 +35,8 @@ struct RunOptions {
     double maxSeconds = -1.0;      ///< < 0: unbounded (real time) / 3600 s (virtual time)
     bool json = false;
     QString tracePath;
+    /// --trace-format binary: records of the columns' numbers (binary_trace.h), not CSV rows.
+    bool traceBinary = false;
     double tickJitterMs = 0.0;  ///< late ticks: each period lengthened by up to this
     double jitterRate = 0.01;   ///< with this probability
     std::uint64_t seed = 1;
@@ -181,7 +183,24 @@ class TraceFile {
   private:
     void flushBuffer() {
         if (!buffer_.empty()) write(buffer_.data(), static_cast<qint64>(buffer_.size()));
+        written_ += static_cast<long long>(buffer_.size());
         buffer_.clear();
+        startWriteBack();
+    }
+    /// A regular file is committed with fdatasync (QSaveFile: the trace is on disk before it
+    /// replaces the old one). Left to the end, that waited for the whole trace to reach the disk
+    /// (4 ms of a 13 ms run for 5 MB); the disk is asked to start on each MB as it is written
+    /// (sync_file_range, which does not wait), so the commit waits only for the last of it.
+    void startWriteBack() {
+#if defined(__linux__)
+        constexpr long long kWriteBackBytes = 1 << 20;
+        if (!dynamic_cast<QSaveFile*>(file_.get()) || written_ - writtenBack_ < kWriteBackBytes)
+            return;
+        const int fd = file_->handle();
+        if (fd >= 0)
+            ::sync_file_range(fd, writtenBack_, written_ - writtenBack_, SYNC_FILE_RANGE_WRITE);
+        writtenBack_ = written_;
+#endif
     }
     void write(const char* data, qint64 len) {
         // A pipe whose reader left is EPIPE here, said after the run, never a SIGPIPE that
@@ -214,6 +233,7 @@ class TraceFile {
     std::string buffer_;
     QString path_, error_;
     long long rows_ = 0;
+    long long written_ = 0, writtenBack_ = 0;  ///< bytes written, and given to sync_file_range
 };
 
 /// The JSON fields every run reports, rail or XY: ok, history (and how many lines were left

@@ -37,7 +37,6 @@ class TraceQueue {
     /// file must be open (active()) and outlive this; only the writer thread touches it until
     /// finish() returns.
     TraceQueue(TraceFile& file, Format format) : file_(file), format_(format) {
-        current_.reserve(kChunkRows);
         writer_ = std::thread([this] { writeLoop(); });
     }
     ~TraceQueue() { finish(); }
@@ -46,14 +45,14 @@ class TraceQueue {
 
     /// One tick's row; waits only when kMaxQueued chunks are already waiting.
     void push(const Row& r) {
-        current_.push_back(r);
-        if (current_.size() >= kChunkRows) handOff();
+        current_.rows[current_.count] = r;
+        if (++current_.count >= kChunkRows) handOff();
     }
     /// Hands over the last rows and returns once every row has been given to the file (the
     /// caller then closes it).
     void finish() {
         if (!writer_.joinable()) return;
-        if (!current_.empty()) handOff();
+        if (current_.count > 0) handOff();
         {
             std::lock_guard lock(mutex_);
             closing_ = true;
@@ -68,8 +67,20 @@ class TraceQueue {
     }
 
   private:
+    /// kChunkRows rows, of which the first count are filled.
+    struct Chunk {
+        std::vector<Row> rows;
+        std::size_t count = 0;
+    };
+
+    static Chunk newChunk() {
+        Chunk c;
+        c.rows.resize(kChunkRows);
+        return c;
+    }
+
     void handOff() {
-        std::vector<Row> next;
+        Chunk next;
         {
             std::unique_lock lock(mutex_);
             if (queued_.size() >= kMaxQueued) {
@@ -83,9 +94,8 @@ class TraceQueue {
             }
         }
         ready_.notify_one();
-        current_ = std::move(next);
-        current_.clear();
-        current_.reserve(kChunkRows);
+        current_ = next.rows.empty() ? newChunk() : std::move(next);
+        current_.count = 0;
     }
 
     void writeLoop() {
@@ -97,12 +107,11 @@ class TraceQueue {
         sigaddset(&pipe, SIGPIPE);
         pthread_sigmask(SIG_BLOCK, &pipe, nullptr);
         CsvRow row;
-        std::vector<Row> chunk;
+        Chunk chunk;
         while (true) {
             {
                 std::unique_lock lock(mutex_);
-                if (chunk.capacity() > 0) {
-                    chunk.clear();
+                if (!chunk.rows.empty()) {
                     spare_.push_back(std::move(chunk));
                     chunk = {};
                 }
@@ -112,8 +121,8 @@ class TraceQueue {
                 queued_.pop_front();
             }
             room_.notify_one();
-            for (const Row& r : chunk) {
-                format_(r, row);
+            for (std::size_t k = 0; k < chunk.count; ++k) {
+                format_(chunk.rows[k], row);
                 file_.line(row.data(), static_cast<qint64>(row.size()));
             }
         }
@@ -121,12 +130,12 @@ class TraceQueue {
 
     TraceFile& file_;
     const Format format_;
-    std::vector<Row> current_;  ///< the run's thread only
+    Chunk current_ = newChunk();  ///< the run's thread only
     mutable std::mutex mutex_;
     std::condition_variable ready_;  ///< a chunk is queued, or closing
     std::condition_variable room_;   ///< the queue has room
-    std::deque<std::vector<Row>> queued_;
-    std::vector<std::vector<Row>> spare_;  ///< written chunks, their memory reused
+    std::deque<Chunk> queued_;
+    std::vector<Chunk> spare_;  ///< written chunks, their memory reused
     bool closing_ = false;
     std::uint64_t waits_ = 0;
     std::thread writer_;
