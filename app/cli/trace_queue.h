@@ -31,7 +31,7 @@ class TraceQueue {
     /// nothing beside them.
     static constexpr std::size_t kChunkRows = 4096;
     /// Full chunks waiting for the writer at most: the memory bound, (kMaxQueued + 2) chunks of
-    /// kChunkRows rows (about 2.5 MB for the rail's 48-byte row).
+    /// kChunkRows rows (about 2.3 MB for the rail's 56-byte row).
     static constexpr std::size_t kMaxQueued = 8;
 
     /// file must be open (active()) and outlive this; only the writer thread touches it until
