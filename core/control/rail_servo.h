@@ -213,6 +213,30 @@ class RailServo {
     /// A new reference of the count: the sums start again (from the move in progress).
     void restartReferenceSum();
     double modelSlow_ = 0.0, measuredSlow_ = 0.0;  ///< mm/s, 20 ms means: is the speed steady
+    /// The counter card's ceiling (issue 20 item 11): a spell in which the amplifier model runs
+    /// faster than the count by more than two codes of speed, entered while the count was
+    /// following the model at speed for 250 ms. It stays eligible while the counted speed is
+    /// flat (its kCeilingBlockS blocks within 1.5 counts of each other). lossMm: the model's
+    /// travel less the count's, mm.
+    struct CeilingSpell {
+        double s = 0.0, lossMm = 0.0;
+        double followedS = 0.0;              ///< the following before it, s
+        double blockMm = 0.0, blockS = 0.0;  ///< the block being summed
+        double minMmS = 0.0, maxMmS = 0.0;   ///< counted speed of the complete blocks
+        int blocks = 0;                      ///< complete blocks
+        bool eligible = false;
+    };
+    static constexpr double kCeilingBlockS = 0.01;
+    static constexpr int kMinCeilingBlocks = 1;  ///< complete blocks before a spell counts
+    CeilingSpell ceiling_;
+    double followingS_ = 0.0;  ///< s the count has followed the model at speed, up to now
+    /// mm lost in the flat spells since the count was last referenced.
+    double ceilingLossMm_ = 0.0;
+    /// Counts lost at the counter card's ceiling: false (and alarm 21) when the flat spells
+    /// since the reference have lost more than countLossMm.
+    bool checkCountCeiling(double dtS, double before, double countedMm);
+    /// A spell ended: a flat one's loss is added to ceilingLossMm_.
+    void endCeilingSpell();
     /// The plant accelerates up to its current limit, above the planner's braking figure.
     double plantAccelBound_ = 0.0;
     bool useOverride_ = true;

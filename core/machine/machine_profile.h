@@ -107,7 +107,9 @@ struct LoopParams {
     /// counted only where the counted speed is steady too (no heavy payload's lag), and
     /// without lost counts it stays under 0.25 mm (masses x0.5-x5, late ticks), see
     /// motion_safety_test.cpp (CountsLost); 2 mm + 0.2 % let a 30,000 counts/s card run
-    /// 1268 mm past the soft limit once the drift waited for steady blocks.
+    /// 1268 mm past the soft limit once the drift waited for steady blocks. The same bound
+    /// holds the ceiling check's sum (counts lost where the counted speed stays flat at the
+    /// card's rate while the drive runs faster, rail_servo.cpp checkCountCeiling).
     double countLossMm = 1.0;
     double countLossFraction = 0.0005;
     /// Counts lost while the speed changes (issue 20 item 11): at each in-position the travel
