@@ -451,8 +451,13 @@ bool RailServo::checkCountCeiling(double dtS, double before, double countedMm) {
     const double dir = modelVelocity_ > 0.0 ? 1.0 : -1.0;
     const double lead = (modelVelocity_ - velocity_) * dir;
     // A late tick leaves the velocity estimate behind for a few filter times: those ticks are
-    // left out, of the following and of the spell alike.
-    if (sinceLateS_ <= kSteadyAfterLateS) return true;
+    // not judged. A following under way goes on through them (their time counts: with 5 % of
+    // the ticks late, a third of the ticks are such, and 250 ms of judged following came
+    // after 0.4 s); a spell leaves them out.
+    if (sinceLateS_ <= kSteadyAfterLateS) {
+        if (followingS_ > 0.0 && ceiling_.s == 0.0) followingS_ += dtS;
+        return true;
+    }
     // Both at speed: a count that stopped (a dead encoder) is the stall check's (alarm 16).
     const bool atSpeed = std::abs(modelVelocity_) > kSpeedCodes * speedPerCode_ &&
                          velocity_ * dir > kSpeedCodes * speedPerCode_;

@@ -1149,6 +1149,26 @@ TEST(CountsLost, ACardSlowerThanItsProfileStopsInTheFirstRapidThatPassesItsRate)
             EXPECT_LT(std::abs(r.lostMm), 2.5);
         }
     }
+    // With late ticks (5 % of them, up to 5 or 20 ms late): the ticks after each are not
+    // judged and the spells are shorter, but they still stop the program (17.3 mm off before).
+    for (double jitter : {0.005, 0.020}) {
+        for (double card : {30000.0, 34000.0}) {
+            FaultInjection f;
+            f.maxCountRateHz = card;
+            f.tickJitterMaxS = jitter;
+            f.tickJitterRate = 0.05;
+            const GapRun r = runForGaps(eight, 1.0, f);
+            SCOPED_TRACE("late ticks, card " + std::to_string(card));
+            std::printf(
+                "late ticks up to %.0f ms, card %.0f counts/s: %s, alarm %d (%.2f mm), "
+                "%zu moves ended, %.2f mm off\n",
+                jitter * 1e3, card, r.finished ? "finished" : "stopped", static_cast<int>(r.alarm),
+                r.alarmValue, r.gaps.size(), r.lostMm);
+            EXPECT_FALSE(r.finished);
+            EXPECT_EQ(r.alarm, AlarmCode::CountsLost);
+            EXPECT_LT(std::abs(r.lostMm), 12.0);
+        }
+    }
 }
 
 }  // namespace
