@@ -83,6 +83,10 @@ struct ServoSample {
     double referenceGapMm = 0.0;
     double referenceTravelMm = 0.0;  ///< mm counted over those moves (the bound's fraction)
     std::uint32_t restChecks = 0;    ///< rest-to-rest checks made (one per in-position)
+    /// The classic law released the drive at its in-position (the VB's 0.5 mm) with the
+    /// platform still moving: its rest-to-rest check waits for the platform's first true rest,
+    /// and the program's end waits for that check (issue 20 item 11).
+    bool restCheckPending = false;
 };
 
 class RailServo {
@@ -178,8 +182,12 @@ class RailServo {
     double referenceTravelMm_ = 0.0, countedTravelMm_ = 0.0;
     /// 10 ms blocks of the rest-to-rest gap: the speed reference's travel (codes x mm/s per code
     /// x s), mm; the travel counted, mm; the time, s.
+    /// motionMm: the travel counted plus a correction of the count at the centre mark, mm: the
+    /// counted speeds and accelerations are taken from it (a correction the lag of a 10 ms
+    /// tick made at a full-code start read as a deceleration and kept 18.7 mm of the current
+    /// limit's lag), the gap from travelMm.
     struct GapBlock {
-        double referenceMm = 0.0, travelMm = 0.0, s = 0.0;
+        double referenceMm = 0.0, travelMm = 0.0, motionMm = 0.0, s = 0.0;
     };
     static constexpr double kGapBlockS = 0.01;
     /// Blocks each side of the one decided: the counted acceleration is the difference of their
@@ -212,6 +220,18 @@ class RailServo {
     double referenceSumMm_ = 0.0, referenceTravelSumMm_ = 0.0;
     /// A new reference of the count: the sums start again (from the move in progress).
     void restartReferenceSum();
+    /// At rest (v = 0 at both ends): the rest-to-rest gap since the last rest and the sum since
+    /// the reference against their bounds; false (and alarm 21) above them. Resets the gap.
+    bool checkRestGap();
+    /// The classic law's coast after its in-position: the count within two counts of
+    /// restStillMm_ for restStillS_ s. At rest: the pending check is made.
+    bool checkClassicRest(double dtS);
+    double restStillMm_ = 0.0, restStillS_ = 0.0;
+    /// Blocks pending when the count was last referenced in a move: decided later, their gaps
+    /// are before the reference (restartReferenceSum).
+    int preReferenceBlocks_ = 0;
+    double restPathMm_ = 0.0;  ///< mm counted (absolute) since the last rest check
+    double jumpMm_ = 0.0;      ///< this tick's correction of the count at the centre mark, mm
     double modelSlow_ = 0.0, measuredSlow_ = 0.0;  ///< mm/s, 20 ms means: is the speed steady
     /// The counter card's ceiling (issue 20 item 11): a spell in which the amplifier model runs
     /// faster than the count by more than two codes of speed, entered while the count was

@@ -300,6 +300,9 @@ void RailController::stepEnding(double dtS) {
     stillForS_ += dtS;
     const bool holding = s.mode == ServoMode::Hold && s.inPosition;
     if (!holding && stillForS_ < kStillTimeS) return;
+    // The classic law's count check waits for the platform's first true rest after the drive
+    // was released: no "Program finished !" before it (a failed check is alarm 21).
+    if (s.restCheckPending) return;
     ending_ = false;
     // A program never reports success with the platform away from where it sent it (the
     // classic law releases the drive at 0.5 mm and may coast on): it says how far instead.

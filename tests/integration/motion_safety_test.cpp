@@ -1171,6 +1171,63 @@ TEST(CountsLost, ACardSlowerThanItsProfileStopsInTheFirstRapidThatPassesItsRate)
     }
 }
 
+// The classic law (the VB's: a step setpoint, full code, the drive released at 0.5 mm) has no
+// rest at its in-position: the platform passes the target or coasts back. Its rest-to-rest
+// check waits for the platform's first true rest after the release, covering the coast and
+// any move begun meanwhile, and the program's end waits for it. A 38,000 counts/s card under
+// a profile of 50,000 ended "finished" 5.1 mm off on G0 X1000 / X100 / X1100 / X100 / X1100
+// (the approach's falling speed escapes the steady and ceiling checks); now alarm 21 at the
+// first rest, in the VB's 10 ms period.
+TEST(CountsLost, TheClassicLawChecksTheCountAtTheFirstRestAfterItsRelease) {
+    MachineProfile p = MachineProfile::rail();
+    p.loop.law = LoopLaw::Classic;
+    p.loop.samplePeriodS = 0.01;
+    const char* five = "G0 X1000\nG0 X100\nG0 X1100\nG0 X100\nG0 X1100\nM2\n";
+    for (double card : {36000.0, 38000.0}) {
+        FaultInjection f;
+        f.maxCountRateHz = card;
+        const GapRun r = runForGaps(five, 1.0, f, p);
+        SCOPED_TRACE("card " + std::to_string(card));
+        std::printf("classic law, card %.0f counts/s: %s, alarm %d (%.2f mm), %.2f mm off\n", card,
+                    r.finished ? "finished" : "stopped", static_cast<int>(r.alarm), r.alarmValue,
+                    r.lostMm);
+        EXPECT_FALSE(r.finished);
+        EXPECT_EQ(r.alarm, AlarmCode::CountsLost);
+        ASSERT_FALSE(r.gaps.empty());
+        EXPECT_GT(r.gaps.back(), p.loop.restCountLossMm);  // the first rest's check stopped it
+        EXPECT_LT(std::abs(r.lostMm), 16.0);               // 30.2 mm on a 36,000 card before
+    }
+    // Without lost counts: seeded programs at the payloads the classic law runs (x0.5-x2), on
+    // time and with late ticks, never read as counts lost, and every rest's gap stays under
+    // the bound (the VB's untuned law stops some of them on soft limits: the same as before).
+    double worst = 0.0;
+    int checks = 0, finished = 0;
+    for (double mass : {0.5, 1.0, 2.0}) {
+        for (double jitter : {0.0, 0.02}) {
+            for (int seed = 0; seed < 10; ++seed) {
+                std::mt19937_64 rng(static_cast<std::uint64_t>(seed) * 7919 + 17);
+                FaultInjection f;
+                f.tickJitterMaxS = jitter;
+                f.tickJitterRate = jitter > 0.0 ? 0.05 : 0.0;
+                const GapRun r = runForGaps(seededMoves(rng, 10, -1200, 1200), mass, f, p, 900.0,
+                                            static_cast<std::uint64_t>(seed) + 1);
+                SCOPED_TRACE("mass x" + std::to_string(mass) + " seed " + std::to_string(seed));
+                EXPECT_NE(r.alarm, AlarmCode::CountsLost) << r.alarmValue;
+                EXPECT_LT(std::abs(r.lostMm), 0.1);
+                for (double g : r.gaps)
+                    worst = std::max(worst, std::abs(g)), ++checks;
+                finished += r.finished ? 1 : 0;
+            }
+        }
+    }
+    std::printf(
+        "classic law without lost counts: 60 programs, %d finished, %d rest checks, the "
+        "worst gap %.2f mm\n",
+        finished, checks, worst);
+    EXPECT_GT(finished, 20);
+    EXPECT_LT(worst, p.loop.restCountLossMm);
+}
+
 }  // namespace
 }  // namespace trilho
 
