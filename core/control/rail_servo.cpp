@@ -348,10 +348,17 @@ void RailServo::decideGapBlock() {
     const bool saturated = std::abs(gap) > 2.0 / profile_.plant.countsPerMm &&
                            (fastAccel * dir >= fastSaturatedAccel_ ||
                             (accel * dir >= saturatedAccel_ && fastAccel * dir >= saturatedAccel_));
-    if (!saturated) referenceTravelMm_ += gap;
+    // Kept less a dead band of half a code of speed over the block: a heavy payload's loop
+    // dithers a code up and down and the current limit slows some of the steps, so the
+    // platform cruises a few mm/s off the reference's mean (x10 at 220 mm/s: 5.5 mm/s, 24 mm
+    // over a 1200 mm feed, a false alarm 21). The count's quantisation (a count a block) is
+    // inside the band too. Counts lost at a card's ceiling run hundreds of mm/s off.
+    const double band = 0.5 * speedPerCode_ * block.s;
+    const double kept = std::copysign(std::max(0.0, std::abs(gap) - band), gap);
+    if (!saturated) referenceTravelMm_ += kept;
     if (preReferenceBlocks_ > 0) {
         // A block pending when the count was referenced: its gap is before the reference.
-        if (!saturated) referenceSumMm_ -= gap;
+        if (!saturated) referenceSumMm_ -= kept;
         --preReferenceBlocks_;
     }
     // The steady check's drift of the block counts only where the counted speed is steady too
@@ -588,9 +595,17 @@ bool RailServo::checkEncoder(double dtS, bool counted, double countedMm) {
         // does not change at a heavy payload's saturated acceleration either (a 20 ms mean
         // cannot tell x5's 640 mm/s2 from steady: 2.06 mm of false drift on a rapid; the
         // blocks can, 40 ms late).
+        // Less a dead band of one code of speed, the sum kept at or above zero (a CUSUM): a
+        // heavy payload's loop dithers a code up and down, the current limit slows each step
+        // up and not the steps down, and the platform cruises a few mm/s under the model's
+        // mean (x5-x10 at 150-280 mm/s: 1.4 mm over a 1200 mm feed, a false alarm 21 at the
+        // screens). Counts lost at a card's ceiling run the model ahead by hundreds of mm/s.
         if (steady && countedSteady_ && counted && std::abs(modelVelocity_) > speedPerCode_)
-            sample_.countDriftMm += (0.5 * (before + modelVelocity_) * dtS - countedMm) *
-                                    (modelVelocity_ > 0.0 ? 1.0 : -1.0);
+            sample_.countDriftMm =
+                std::max(0.0, sample_.countDriftMm +
+                                  (0.5 * (before + modelVelocity_) * dtS - countedMm) *
+                                      (modelVelocity_ > 0.0 ? 1.0 : -1.0) -
+                                  speedPerCode_ * dtS);
         driftTravelMm_ += std::abs(countedMm);
         // The rest-to-rest identity: the code written last tick was held over this period;
         // tau dv/dt = v_ref - v integrated gives the travel the platform makes, v_ref dt less

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <memory>
 #include <random>
 
@@ -1150,7 +1151,8 @@ TEST(CountsLost, ACardSlowerThanItsProfileStopsInTheFirstRapidThatPassesItsRate)
         }
     }
     // With late ticks (5 % of them, up to 5 or 20 ms late): the ticks after each are not
-    // judged and the spells are shorter, but they still stop the program (17.3 mm off before).
+    // judged and the spells are shorter, but they still stop the program (17.3 mm off,
+    // finished, before the ceiling check went on through them).
     for (double jitter : {0.005, 0.020}) {
         for (double card : {30000.0, 34000.0}) {
             FaultInjection f;
@@ -1166,7 +1168,14 @@ TEST(CountsLost, ACardSlowerThanItsProfileStopsInTheFirstRapidThatPassesItsRate)
                 r.alarmValue, r.gaps.size(), r.lostMm);
             EXPECT_FALSE(r.finished);
             EXPECT_EQ(r.alarm, AlarmCode::CountsLost);
-            EXPECT_LT(std::abs(r.lostMm), 12.0);
+            // Within the documented bounds: the sum since the reference over the moves run
+            // (1000 mm each, the one that stopped included) plus the last move's own (16.6 mm
+            // after nine moves on a 30,000 card with 20 ms late ticks).
+            const MachineProfile p = MachineProfile::rail();
+            const double travel = 1000.0 * static_cast<double>(r.gaps.size() + 1);
+            EXPECT_LT(std::abs(r.lostMm),
+                      p.loop.referenceCountLossMm + p.loop.referenceCountLossFraction * travel +
+                          p.loop.restCountLossMm + p.loop.restCountLossFraction * 1000.0);
         }
     }
 }
@@ -1226,6 +1235,69 @@ TEST(CountsLost, TheClassicLawChecksTheCountAtTheFirstRestAfterItsRelease) {
         finished, checks, worst);
     EXPECT_GT(finished, 20);
     EXPECT_LT(worst, p.loop.restCountLossMm);
+}
+
+// A heavy payload on a slow feed, the override raised in the move (found by attack): the
+// loop dithers a code up and down and the current limit slows some of the steps, so the
+// platform cruises a few mm/s off the amplifier model's mean (x5 at 250 mm/s, x10 at 220
+// mm/s). Summed over a 1200 mm feed that read as counts lost: alarm 21 in 44 of 128 runs of
+// the first program at x5-x20. The steady check and the rest-to-rest gap now take it as a
+// dead band (half a code of speed a block; a code for the steady check, a CUSUM).
+TEST(CountsLost, AHeavyPayloadOnASlowFeedWithTheOverrideRaisedIsNoLoss) {
+    int runs = 0, finished = 0;
+    std::map<int, int> alarms;
+    for (const char* text :
+         {"G1 X1200 F10\nG1 X-1000 F15\nM2\n", "G1 X1200 F13\nM2\n", "G1 X1200 F5\nM2\n"}) {
+        for (double mass : {3.0, 5.0, 10.0, 20.0}) {
+            for (double from : {0.1, 0.3, 0.8, 1.0}) {
+                for (double to : {1.0, 1.5}) {
+                    for (double afterS : {0.3, 1.0}) {
+                        Cell cell;
+                        RailController& c = cell.c();
+                        c.setFeedOverride(from);
+                        cell.start(text, mass, FaultInjection{});
+                        const double raiseAt = cell.session.elapsedS() + afterS;
+                        std::vector<ControllerEvent> events;
+                        runWatching(
+                            cell,
+                            [&] {
+                                if (cell.session.elapsedS() >= raiseAt &&
+                                    c.status().feedOverride != to)
+                                    c.setFeedOverride(to);
+                                const auto& st = c.status();
+                                return st.programFinished || st.state == ControllerState::Alarm;
+                            },
+                            600.0, &events);
+                        ++runs;
+                        SCOPED_TRACE(std::string(text) + " mass x" + std::to_string(mass) +
+                                     " override " + std::to_string(from) + " then " +
+                                     std::to_string(to));
+                        EXPECT_FALSE(raised(events, AlarmCode::CountsLost));
+                        // Finished at rest on its count (nothing was lost); a run the heaviest
+                        // payloads cannot follow ends on its following error (alarm 3).
+                        if (c.status().programFinished) {
+                            EXPECT_NEAR(cell.x(), c.status().servo.positionMm, 2.0 * kCount);
+                        }
+                        finished += c.status().programFinished ? 1 : 0;
+                        for (const ControllerEvent& e : events)
+                            if (e.kind == EventKind::AlarmRaised)
+                                ++alarms[static_cast<int>(e.alarm)];
+                    }
+                }
+            }
+        }
+    }
+    EXPECT_EQ(runs, 192);
+    std::printf("heavy payloads, slow feeds, override raised: %d runs, %d finished", runs,
+                finished);
+    for (const auto& [code, n] : alarms)
+        std::printf(", alarm %d x%d", code, n);
+    std::printf("\n");
+    // The rest stop on their following error (x10 and x20 cannot follow the raised feed),
+    // the truth; 85 of 192 finished when measured.
+    EXPECT_GE(finished, 80);
+    for (const auto& [code, n] : alarms)
+        EXPECT_EQ(code, static_cast<int>(AlarmCode::FollowingError)) << n;
 }
 
 }  // namespace
