@@ -1381,6 +1381,40 @@ TEST(CountsLost, DISABLED_SeededLossyProgramsSoak) {
     lossyProgramsProperty(5000);
 }
 
+// What the count cannot tell (a 37,000 counts/s card under a 50,000 profile loses 0.06 mm on a
+// 1068 mm rapid, 0.002 % of the travel: the fault-free sum since the reference drifts as much
+// at x1) adds up over a program that never crosses the centre mark. The end switch, 10 mm past
+// the soft limit, is the bound: the drift reaches it and stops there on alarm 2, never beyond,
+// never "finished" past it (150 cycles finished 6.8 mm past the soft limit, inside it; 400
+// stop at the switch after about 200).
+TEST(CountsLost, ALossTooSmallToTellStopsAtTheEndSwitchNeverBeyond) {
+    const MachineProfile p = MachineProfile::rail();
+    std::string text = "G0 X200\n";
+    for (int k = 0; k < 400; ++k)
+        text += "G0 X1268\nG1 X200 F30\n";
+    text += "M2\n";
+    FaultInjection f;
+    f.maxCountRateHz = 37000.0;
+    Cell cell(p);
+    cell.start(text, 1.0, f);
+    std::vector<ControllerEvent> events;
+    const double far = runWatching(
+        cell,
+        [&] {
+            const auto& st = cell.c().status();
+            return st.programFinished || st.state == ControllerState::Alarm;
+        },
+        3000.0, &events);
+    std::printf(
+        "a loss too small to tell: %s, the platform at most %.2f mm, %.2f mm off its count\n",
+        cell.c().status().programFinished ? "finished" : "stopped", far,
+        cell.x() - cell.c().status().servo.positionMm);
+    EXPECT_FALSE(cell.c().status().programFinished);
+    EXPECT_TRUE(raised(events, AlarmCode::RightEndSwitch) || raised(events, AlarmCode::CountsLost));
+    EXPECT_GT(far, p.limits.x.softMaxMm);  // the loss is real: it passed the soft limit
+    EXPECT_LT(far, p.plant.endSwitchMm + 1.0);
+}
+
 }  // namespace
 }  // namespace trilho
 
