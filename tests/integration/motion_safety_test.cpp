@@ -315,6 +315,17 @@ double runWatching(Cell& cell, Pred pred, double maxS, std::vector<ControllerEve
     return far;
 }
 
+/// Runs until the program finishes or an alarm stops it, or maxS; the largest |x| reached.
+double runToTheEnd(Cell& cell, double maxS, std::vector<ControllerEvent>* events) {
+    return runWatching(
+        cell,
+        [&] {
+            const auto& st = cell.c().status();
+            return st.programFinished || st.state == ControllerState::Alarm;
+        },
+        maxS, events);
+}
+
 bool raised(const std::vector<ControllerEvent>& events, AlarmCode code) {
     return std::any_of(events.begin(), events.end(), [&](const ControllerEvent& e) {
         return e.kind == EventKind::AlarmRaised && e.alarm == code;
@@ -378,13 +389,7 @@ TEST(SoftLimits, TheClassicLawNeverPassesASoftLimit) {
     ASSERT_TRUE(cell.c().loadProgram(compileText("G0 X1000\nM2\n")));
     ASSERT_TRUE(cell.c().start());
     std::vector<ControllerEvent> events;
-    const double far = runWatching(
-        cell,
-        [&] {
-            const auto& st = cell.c().status();
-            return st.programFinished || st.state == ControllerState::Alarm;
-        },
-        120.0, &events);
+    const double far = runToTheEnd(cell, 120.0, &events);
     runWatching(
         cell, [] { return false; }, 2.0, &events);  // until the platform is at rest
     std::printf("classic G0 X1000: platform reached %.2f mm, rests at %.2f mm\n", far, cell.x());
@@ -1398,13 +1403,7 @@ TEST(CountsLost, ALossTooSmallToTellStopsAtTheEndSwitchNeverBeyond) {
     Cell cell(p);
     cell.start(text, 1.0, f);
     std::vector<ControllerEvent> events;
-    const double far = runWatching(
-        cell,
-        [&] {
-            const auto& st = cell.c().status();
-            return st.programFinished || st.state == ControllerState::Alarm;
-        },
-        3000.0, &events);
+    const double far = runToTheEnd(cell, 3000.0, &events);
     std::printf(
         "a loss too small to tell: %s, the platform at most %.2f mm, %.2f mm off its count\n",
         cell.c().status().programFinished ? "finished" : "stopped", far,
