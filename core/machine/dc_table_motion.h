@@ -71,7 +71,7 @@ class DcTableMotion final : public XyMotion {
     void raise(AlarmCode code, double value);
     void writeDrives(const std::array<double, 2>& percent);
     /// The encoder plausibility check of one axis; false (raised) when it ran without counts.
-    bool checkEncoder(std::size_t k, bool counted, double dtS);
+    bool checkEncoder(std::size_t k, std::int64_t counted, double dtS);
 
     DcTableParams params_;
     double rapidMmS_, accelMmS2_;
@@ -84,6 +84,7 @@ class DcTableMotion final : public XyMotion {
     std::array<double, 2> drivePercent_{};
     std::array<double, 2> modelSpeedMmS_{};  ///< the motor model of the encoder check, mm/s
     std::array<double, 2> stallTravelMm_{};  ///< mm the model ran since the count last changed
+    std::array<double, 2> sinceCountS_{};    ///< s since each axis' count last changed
     Phase phase_ = Phase::Idle;
     SyncTrapezoid plan_;
     double planTimeS_ = 0.0;
