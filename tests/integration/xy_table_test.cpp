@@ -333,6 +333,24 @@ TEST(XyTableProgram, MotionlessLoopIsHeld) {
     EXPECT_EQ(c.status().lastAlarm, AlarmCode::MotionlessLoop);
 }
 
+/// A seeded program of 3 to 6 random g00/g01 moves over the whole table (feeds F10-F100).
+std::string randomTableProgram(std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> coord(0.0, 300.0), feed(10.0, 100.0);
+    std::uniform_int_distribution<int> moves(3, 6), kind(0, 1);
+    std::ostringstream text;
+    text.setf(std::ios::fixed);
+    text.precision(1);
+    const int n = moves(rng);
+    for (int i = 0; i < n; ++i) {
+        if (kind(rng))
+            text << "G01 X" << coord(rng) << " Y" << coord(rng) << " F" << feed(rng) << "\n";
+        else
+            text << "G00 X" << coord(rng) << " Y" << coord(rng) << "\n";
+    }
+    text << "M02\n";
+    return text.str();
+}
+
 // A heavy payload is no dead encoder (found by attack: `trilho-cli run --machine xy_dc_table
 // --mass-factor 5 mesa_xy_exemplo_anexo7.G` stopped on alarm 16 at (69, 70) mm, the encoder
 // fine). The encoder check's motor model had the profile's time constant; a payload x5 turns
@@ -342,31 +360,18 @@ TEST(XyTableProgram, MotionlessLoopIsHeld) {
 // 12, and the twelfth's slow start reads as alarm 16: docs/limits.md.)
 TEST(XyTableFaults, NoPayloadTheProfileAllowsReadsAsADeadEncoder) {
     std::mt19937_64 rng(20261205);
-    std::uniform_real_distribution<double> coord(0.0, 300.0), feed(10.0, 100.0);
-    std::uniform_int_distribution<int> moves(3, 6), kind(0, 1);
     int runs = 0, finished = 0;
     for (double mass : {kMinMassFactor, 0.5, 1.0, 3.0, 5.0, 8.0, 12.0}) {
         MachineProfile profile = MachineProfile::xyDcTable();
         profile.dcTable.massFactor = mass;
         for (int prog = 0; prog < 12; ++prog) {
-            std::ostringstream text;
-            text.setf(std::ios::fixed);
-            text.precision(1);
-            const int n = moves(rng);
-            for (int i = 0; i < n; ++i) {
-                if (kind(rng))
-                    text << "G01 X" << coord(rng) << " Y" << coord(rng) << " F" << feed(rng)
-                         << "\n";
-                else
-                    text << "G00 X" << coord(rng) << " Y" << coord(rng) << "\n";
-            }
-            text << "M02\n";
+            const std::string text = randomTableProgram(rng);
             XySessionMake made =
                 makeXySession(profile, static_cast<std::uint64_t>(prog) + 1, {0, 0});
             XySession& s = *made.session;
             XyController& c = s.controller();
             c.selectAutomatic();
-            c.loadProgram(compileFor(profile, text.str().c_str()));
+            c.loadProgram(compileFor(profile, text.c_str()));
             c.start(0);
             s.runUntil(
                 [&] {
@@ -375,7 +380,7 @@ TEST(XyTableFaults, NoPayloadTheProfileAllowsReadsAsADeadEncoder) {
                 300.0);
             ++runs;
             finished += c.status().programFinished ? 1 : 0;
-            SCOPED_TRACE("mass x" + std::to_string(mass) + ":\n" + text.str());
+            SCOPED_TRACE("mass x" + std::to_string(mass) + ":\n" + text);
             EXPECT_NE(c.status().lastAlarm, AlarmCode::EncoderStalled)
                 << "at (" << s.plant().positionMm(0) << ", " << s.plant().positionMm(1) << ")";
             if (c.status().state == ControllerState::Alarm)
@@ -390,22 +395,10 @@ TEST(XyTableSoak, RandomProgramsStayOnTheLine) {
     // Fixed seed: 100 programs of 3 to 6 random g00/g01 moves over the whole table.
     const MachineProfile profile = MachineProfile::xyDcTable();
     std::mt19937_64 rng(20261201);
-    std::uniform_real_distribution<double> coord(0.0, 300.0), feed(10.0, 100.0);
-    std::uniform_int_distribution<int> moves(3, 6), kind(0, 1);
     double worstDev = 0.0, worstFinal = 0.0;
     for (int prog = 0; prog < 100; ++prog) {
-        std::ostringstream text;
-        text.setf(std::ios::fixed);
-        text.precision(1);
-        const int n = moves(rng);
-        for (int i = 0; i < n; ++i) {
-            if (kind(rng))
-                text << "G01 X" << coord(rng) << " Y" << coord(rng) << " F" << feed(rng) << "\n";
-            else
-                text << "G00 X" << coord(rng) << " Y" << coord(rng) << "\n";
-        }
-        text << "M02\n";
-        auto program = compileFor(profile, text.str().c_str());
+        const std::string text = randomTableProgram(rng);
+        auto program = compileFor(profile, text.c_str());
         XySessionMake made = makeXySession(profile, static_cast<std::uint64_t>(prog) + 1, {0, 0});
         XySession& s = *made.session;
         XyController& c = s.controller();
@@ -438,8 +431,8 @@ TEST(XyTableSoak, RandomProgramsStayOnTheLine) {
                          py = s.plant().positionMm(1) - from.y;
             dev = std::max(dev, std::abs(dx * py - dy * px) / len);
         }
-        ASSERT_TRUE(c.status().programFinished) << "program " << prog << "\n" << text.str();
-        ASSERT_FALSE(alarm) << "program " << prog << "\n" << text.str();
+        ASSERT_TRUE(c.status().programFinished) << "program " << prog << "\n" << text;
+        ASSERT_FALSE(alarm) << "program " << prog << "\n" << text;
         const std::size_t last = program->blocks.size() - 2;  // the block before M02
         for (int k = 0; k < 2; ++k) {
             const double target = k == 0 ? program->blocks[last].x : program->y[last];
@@ -449,7 +442,7 @@ TEST(XyTableSoak, RandomProgramsStayOnTheLine) {
             EXPECT_LE(err, 1.0) << "program " << prog << " axis " << k;
         }
         worstDev = std::max(worstDev, dev);
-        EXPECT_LE(dev, 0.5) << "program " << prog << "\n" << text.str();
+        EXPECT_LE(dev, 0.5) << "program " << prog << "\n" << text;
     }
     std::printf("soak: 100 programs, worst path deviation %.3f mm, worst final error %.2f counts\n",
                 worstDev, worstFinal);
