@@ -12,13 +12,13 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <QTimer>
 #include <cmath>
 #include <numbers>
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
+#include "core/files/atomic_file.h"
 #include "core/machine/dc_calibration.h"
 #include "core/machine/machine_profile.h"
 #include "core/machine/replace_target.h"
@@ -203,10 +203,8 @@ int calibrateCommand(const QStringList& args) {
         if (!again.profile) return usageError(kCommand, again.error);
         if (const QString refused = refuseToReplace(parser.value(writeOpt)); !refused.isEmpty())
             return usageError(kCommand, QStringLiteral("--write-profile: %1").arg(refused));
-        QSaveFile out(parser.value(writeOpt));
-        if (!out.open(QIODevice::WriteOnly) || out.write(bytes) != bytes.size() || !out.commit())
-            return usageError(kCommand, QStringLiteral("cannot write profile %1: %2")
-                                            .arg(parser.value(writeOpt), out.errorString()));
+        if (QString why; !saveFileAtomically(parser.value(writeOpt), bytes, &why))
+            return usageError(kCommand, QStringLiteral("cannot write profile: %1").arg(why));
     }
 
     const double oldMmPerPulse = params.mmPerTurn * params.radPerCount / (2.0 * std::numbers::pi);

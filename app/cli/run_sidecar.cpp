@@ -3,9 +3,9 @@
 #include <QDateTime>
 #include <QFileInfo>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <numbers>
 
+#include "core/files/atomic_file.h"
 #include "core/machine/replace_target.h"
 #include "core/tuning/run_record.h"
 #include "host/tuning/step_test.h"
@@ -74,10 +74,8 @@ QString writeRunSidecar(const QString& tracePath, const MachineProfile& profile,
     const QString path = runSidecarPath(tracePath);
     if (const QString refused = refuseToReplace(path); !refused.isEmpty())
         return QStringLiteral("cannot write %1").arg(refused);
-    QSaveFile f(path);
-    const QByteArray json = runConditionsToJson(c, nullptr);
-    if (!f.open(QIODevice::WriteOnly) || f.write(json) != json.size() || !f.commit())
-        return QStringLiteral("cannot write '%1': %2").arg(path, f.errorString());
+    QString error;
+    if (!saveFileAtomically(path, runConditionsToJson(c, nullptr), &error)) return error;
     return {};
 }
 

@@ -6,7 +6,6 @@
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <cmath>
 #include <numbers>
 
@@ -14,6 +13,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/option_values.h"
 #include "app/cli/run_support.h"
+#include "core/files/atomic_file.h"
 #include "core/machine/replace_target.h"
 #include "core/tuning/run_record.h"
 #include "host/common/data_paths.h"
@@ -343,14 +343,12 @@ int stepCommand(const QStringList& args) {
         if (!traceOk) traceFailure = trace.error();
         // The sidecar beside a regular file (not beside a pipe or a device).
         if (traceOk && QFileInfo(tracePath).isFile()) {
-            QSaveFile side(runSidecarPath(tracePath));
             RunConditions written = r.record.conditions;
             written.rows = static_cast<long long>(c.size());  // a shorter CSV was cut
-            const QByteArray json = runConditionsToJson(written, &r.metrics);
-            if (!side.open(QIODevice::WriteOnly) || side.write(json) != json.size() ||
-                !side.commit()) {
-                traceFailure = QStringLiteral("cannot write '%1': %2")
-                                   .arg(runSidecarPath(tracePath), side.errorString());
+            QString error;
+            if (!saveFileAtomically(runSidecarPath(tracePath),
+                                    runConditionsToJson(written, &r.metrics), &error)) {
+                traceFailure = error;
                 traceOk = false;
             }
         }

@@ -1,11 +1,12 @@
 #include "core/machine/journal.h"
 
+#include "core/files/atomic_file.h"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <QFile>
-#include <QSaveFile>
 #include <cerrno>
 #include <cstring>
 #include <deque>
@@ -299,38 +300,33 @@ QList<JournalEntry> Journal::readLast(const QString& path, qsizetype maxEntries)
 }
 
 bool Journal::exportCsv(const QList<JournalEntry>& entries, const QString& path, QString* error) {
-    QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly)) {
-        if (error) *error = QStringLiteral("cannot write '%1': %2").arg(path, f.errorString());
-        return false;
-    }
-    f.write(kCsvHeader);
-    for (const JournalEntry& e : entries)
-        f.write(csvRow(e));
-    if (!f.commit()) {
-        if (error) *error = QStringLiteral("cannot write '%1': %2").arg(path, f.errorString());
+    AtomicFile f(path);
+    bool ok = f.open() && f.write(kCsvHeader);
+    for (qsizetype i = 0; ok && i < entries.size(); ++i)
+        ok = f.write(csvRow(entries[i]));
+    if (!ok || !f.commit()) {
+        if (error) *error = f.error();
         return false;
     }
     return true;
 }
 
 bool Journal::exportJournalCsv(const QString& journalPath, const QString& csvPath, QString* error) {
-    QSaveFile out(csvPath);
-    if (!out.open(QIODevice::WriteOnly)) {
-        if (error) *error = QStringLiteral("cannot write '%1': %2").arg(csvPath, out.errorString());
+    AtomicFile out(csvPath);
+    if (!out.open() || !out.write(kCsvHeader)) {
+        if (error) *error = out.error();
         return false;
     }
-    out.write(kCsvHeader);
     for (const QString& name : files(journalPath)) {
         QFile in(name);
         if (!in.open(QIODevice::ReadOnly)) continue;
         forEachLine(in, [&](QByteArrayView line) {
             JournalEntry e;
-            if (parseLine(line, e)) out.write(csvRow(e));
+            if (!out.failed() && parseLine(line, e)) out.write(csvRow(e));
         });
     }
     if (!out.commit()) {
-        if (error) *error = QStringLiteral("cannot write '%1': %2").arg(csvPath, out.errorString());
+        if (error) *error = out.error();
         return false;
     }
     return true;

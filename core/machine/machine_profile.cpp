@@ -1,5 +1,7 @@
 #include "core/machine/machine_profile.h"
 
+#include "core/files/atomic_file.h"
+
 #include "core/machine/replace_target.h"
 
 #include <QFile>
@@ -7,7 +9,6 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QMap>
-#include <QSaveFile>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -567,12 +568,9 @@ bool saveMachineProfile(const MachineProfile& profile, const QString& path, QStr
         if (error) *error = QStringLiteral("cannot save machine profile: %1").arg(refused);
         return false;
     }
-    QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly) || f.write(machineProfileToJson(profile)) < 0 ||
-        !f.commit()) {
-        if (error)
-            *error =
-                QStringLiteral("cannot save machine profile '%1': %2").arg(path, f.errorString());
+    QString why;
+    if (!saveFileAtomically(path, machineProfileToJson(profile), &why)) {
+        if (error) *error = QStringLiteral("cannot save machine profile: %1").arg(why);
         return false;
     }
     return true;

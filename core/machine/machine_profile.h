@@ -202,7 +202,8 @@ struct NumberRange {
 };
 /// The range the reader allows for a number key ("loop.samplePeriodS"); nullopt for others.
 std::optional<NumberRange> machineProfileRange(const QString& key);
-/// Writes atomically (QSaveFile): a crash never leaves half a profile.
+/// Writes atomically (AtomicFile): a crash or a full disk never leaves half a profile, and a
+/// failure keeps the old file and says why in *error.
 bool saveMachineProfile(const MachineProfile& profile, const QString& path, QString* error);
 
 }  // namespace trilho

@@ -1,12 +1,13 @@
 #include "core/tuning/run_record.h"
 
+#include "core/files/atomic_file.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -199,9 +200,9 @@ bool writeAtomically(const QString& path, const QByteArray& head, const RunChann
         *error = QStringLiteral("cannot write %1").arg(refused);
         return false;
     }
-    QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly)) {
-        *error = QStringLiteral("cannot write '%1': %2").arg(path, f.errorString());
+    AtomicFile f(path);
+    if (!f.open()) {
+        *error = f.error();
         return false;
     }
     QByteArray buffer = head;
@@ -214,14 +215,13 @@ bool writeAtomically(const QString& path, const QByteArray& head, const RunChann
             formatRunCsvRow(c, k, integerDrive, row);
             buffer.append(row.data(), static_cast<qsizetype>(row.size()));
             if (buffer.size() > (1 << 20)) {
-                if (f.write(buffer) != buffer.size()) break;
+                if (!f.write(buffer)) break;
                 buffer.clear();
             }
         }
     }
-    if (f.write(buffer) != buffer.size() || !f.commit()) {
-        *error = QStringLiteral("cannot write '%1': %2").arg(path, f.errorString());
-        f.cancelWriting();
+    if (!f.write(buffer) || !f.commit()) {
+        *error = f.error();
         return false;
     }
     return true;

@@ -9,7 +9,6 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QSpinBox>
 #include <QVBoxLayout>
 #include <cmath>
@@ -209,10 +208,8 @@ void CalibrationDialog::save() {
     const QString path = QFileDialog::getSaveFileName(this, tr("Save profile"), QString(),
                                                       tr("Machine profiles (*.json)"));
     if (path.isEmpty()) return;
-    QSaveFile f(path);
-    const QByteArray bytes = machineProfileToJson(*p);
-    if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size() || !f.commit()) {
-        result_->setText(tr("Cannot write %1: %2").arg(path, f.errorString()));
+    if (QString why; !saveMachineProfile(*p, path, &why)) {
+        result_->setText(why);
         return;
     }
     result_->setText(tr("Saved: %1").arg(path));

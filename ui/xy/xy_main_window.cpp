@@ -32,6 +32,7 @@
 #include <QRadioButton>
 #include <QSerialPortInfo>
 
+#include "core/files/atomic_file.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/source_file.h"
@@ -624,12 +625,10 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
 
 bool XyMainWindow::plotPolygon(const QString& program) {
     const QString path = QDir(QDir::tempPath()).filePath(QStringLiteral("trilho-poligono.G"));
-    QFile f(path);
-    if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) || f.write(program.toUtf8()) < 0) {
-        addHistory(tr("Cannot write %1: %2").arg(path, f.errorString()), true);
+    if (QString why; !saveFileAtomically(path, program.toUtf8(), &why)) {
+        addHistory(why, true);
         return false;
     }
-    f.close();
     if (!selectProgram(path)) return false;
     startProgram(true);
     return true;
