@@ -179,11 +179,13 @@ void MainWindow::addOptionItems(QMenu* options) {
     auto* laws = new QActionGroup(this);
     classicLaw_ = lawMenu_->addAction(QString(), this, [this] {
         settings_.setValue(QStringLiteral("law"), QStringLiteral("classic"));
+        rememberSettings();
         link_.setLaw(LoopLaw::Classic);
         loadGainsFromSettings();
     });
     engineeredLaw_ = lawMenu_->addAction(QString(), this, [this] {
         settings_.setValue(QStringLiteral("law"), QStringLiteral("engineered"));
+        rememberSettings();
         link_.setLaw(LoopLaw::Engineered);
         loadGainsFromSettings();
     });
@@ -194,10 +196,12 @@ void MainWindow::addOptionItems(QMenu* options) {
     standardDialect_ = dialectMenu_->addAction(QString(), this, [this] {
         dialect_ = Dialect::Standard;
         settings_.setValue(QStringLiteral("dialect"), QStringLiteral("standard"));
+        rememberSettings();
     });
     classicDialect_ = dialectMenu_->addAction(QString(), this, [this] {
         dialect_ = Dialect::Classic;
         settings_.setValue(QStringLiteral("dialect"), QStringLiteral("classic"));
+        rememberSettings();
     });
     for (QAction* a : {standardDialect_, classicDialect_})
         a->setCheckable(true), dialects->addAction(a);
@@ -352,6 +356,7 @@ QString MainWindow::armedFaultsHint() const {
 void MainWindow::setTheme(Theme theme) {
     applyTheme(*qApp, theme);
     settings_.setValue(QStringLiteral("theme"), themeName(theme));
+    rememberSettings();
     (theme == Theme::Classic ? classicTheme_ : systemTheme_)->setChecked(true);
     panel_->setAutomaticMode(last_.automatic);
 }
@@ -362,6 +367,7 @@ void MainWindow::chooseFile() {
     if (dialog.exec() == QDialog::Accepted && !dialog.selectedFile().isEmpty())
         selectProgram(dialog.selectedFile());
     settings_.setValue(QStringLiteral("lastFolder"), dialog.currentFolder());
+    rememberSettings();
 }
 
 bool MainWindow::selectProgram(const QString& path) {
@@ -378,6 +384,7 @@ bool MainWindow::selectProgram(const QString& path) {
     showProgramName();
     settings_.setValue(QStringLiteral("lastProgram"), path);
     settings_.setValue(QStringLiteral("lastFolder"), QFileInfo(path).absolutePath());
+    rememberSettings();
     return true;
 }
 
@@ -624,6 +631,7 @@ void MainWindow::applyGain(int which, double value) {
     settings_.setValue(prefix + QStringLiteral("kp"), g.kp);
     settings_.setValue(prefix + QStringLiteral("ki"), g.ki);
     settings_.setValue(prefix + QStringLiteral("kd"), g.kd);
+    rememberSettings();
 }
 
 void MainWindow::onStatus(const ControllerStatus& s) {

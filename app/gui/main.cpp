@@ -18,6 +18,7 @@
 #include "ui/execution_panel.h"
 #include "ui/machine_link.h"
 #include "ui/main_window.h"
+#include "ui/settings_saved.h"
 #include "ui/start_screen.h"
 #include "ui/theme.h"
 #include "ui/workbench/workbench_window.h"
@@ -178,6 +179,11 @@ int main(int argc, char* argv[]) {
     // Remembered at once (the rail's screen did it on its own): a later reconnection or
     // machine switch reopens a screen in the language last chosen, here or in a menu.
     settings->setValue(QStringLiteral("language"), lang);
+    if (!ui::settingsSaved(*settings))  // the screens say it again at each change
+        std::fprintf(stderr,
+                     "trilho: settings not saved: cannot write %s (a full disk or a folder that "
+                     "cannot be written); the old settings are kept\n",
+                     qPrintable(settings->fileName()));
     const ui::Theme theme = ui::themeFromName(
         parser.isSet(themeOpt)
             ? parser.value(themeOpt)

@@ -13,7 +13,7 @@ namespace {
 
 using trilho::test::CliResult;
 using trilho::test::runCli;
-using trilho::testing::FullDisk;
+using trilho::test::FullDisk;
 
 QByteArray putGood(const FullDisk& disk, const QString& name, const QByteArray& good) {
     QFile f(disk.path(name));

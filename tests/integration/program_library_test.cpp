@@ -472,7 +472,7 @@ TEST(ProgramLibraryFullDisk, ADownloadOnAFullDiskKeepsTheOldProgram) {
     EXPECT_FALSE(replaceFolderEntry(disk.dir(), QStringLiteral("0007.G"),
                                     QByteArray(20000, ';') + "G00 X20\nM02\n", &error));
     EXPECT_TRUE(error.contains(QStringLiteral("No space left on device"))) << error.toStdString();
-    EXPECT_EQ(::trilho::testing::FullDisk::read(disk.path(QStringLiteral("0007.G"))), good);
+    EXPECT_EQ(::trilho::test::FullDisk::read(disk.path(QStringLiteral("0007.G"))), good);
     EXPECT_EQ(disk.entries(), QStringList{QStringLiteral("0007.G")});
 }
 

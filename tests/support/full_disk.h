@@ -16,7 +16,7 @@
 #include <cstring>
 #include <string>
 
-namespace trilho::testing {
+namespace trilho::test {
 
 class FullDisk {
   public:
@@ -91,13 +91,13 @@ class FullDisk {
     bool mounted_ = false;
 };
 
-}  // namespace trilho::testing
+}  // namespace trilho::test
 
 /// Declares `disk`, a FullDisk, or skips the test with the reason: GoogleTest ...
 #define TRILHO_FULL_DISK(disk)        \
-    ::trilho::testing::FullDisk disk; \
+    ::trilho::test::FullDisk disk; \
     if (!disk.ready()) GTEST_SKIP() << disk.why();
 /// ... and QtTest.
 #define TRILHO_FULL_DISK_QT(disk)     \
-    ::trilho::testing::FullDisk disk; \
+    ::trilho::test::FullDisk disk; \
     if (!disk.ready()) QSKIP(disk.why().c_str());

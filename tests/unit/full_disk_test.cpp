@@ -17,7 +17,7 @@
 namespace trilho {
 namespace {
 
-using testing::FullDisk;
+using test::FullDisk;
 
 /// A good file of some KB, then the disk filled.
 QByteArray putGoodFileAndFill(FullDisk& disk, const QString& name, QByteArray good = {}) {

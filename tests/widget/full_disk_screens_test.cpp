@@ -4,17 +4,22 @@
 #include <QDir>
 #include <QFile>
 #include <QPlainTextEdit>
+#include <QSettings>
+#include <QStatusBar>
 #include <QTest>
 
 #include "tests/support/full_disk.h"
 #include "translations/i18n.h"
 #include "ui/code_editor.h"
+#include "ui/machine_link.h"
+#include "ui/main_window.h"
+#include "ui/theme.h"
 #include "ui/plot_panel.h"
 #include "ui/program_panel.h"
 
 using namespace trilho;
 using namespace trilho::ui;
-using trilho::testing::FullDisk;
+using trilho::test::FullDisk;
 
 class FullDiskScreensTest : public QObject {
     Q_OBJECT
@@ -71,6 +76,35 @@ class FullDiskScreensTest : public QObject {
         QCOMPARE(FullDisk::read(disk.path(QStringLiteral("p.csv"))), good);
         QCOMPARE(FullDisk::read(disk.path(QStringLiteral("p.png"))), good);
         QCOMPARE(disk.entries().size(), 2);
+    }
+
+    // QSettings keeps its old file on a full disk (its status says AccessError); the screens
+    // said nothing and the operator believed the choice was remembered.
+    void settingsThatCannotBeWrittenAreSaid() {
+        TRILHO_FULL_DISK_QT(disk);
+        const QString path = disk.path(QStringLiteral("trilho.ini"));
+        QSettings settings(path, QSettings::IniFormat);
+        settings.setValue(QStringLiteral("theme"), QStringLiteral("system"));
+        settings.sync();
+        QCOMPARE(settings.status(), QSettings::NoError);
+        MachineLink link(MachineProfile::rail());
+        MainWindow window(link, settings);
+        settings.sync();
+        const QByteArray good = FullDisk::read(path);
+        QVERIFY(good.contains("theme=system"));
+        QVERIFY(disk.fill());
+        window.setTheme(Theme::Classic);
+        const QString said = window.statusBar()->currentMessage();
+        QVERIFY2(said.contains(QStringLiteral("Settings not saved")), qPrintable(said));
+        QVERIFY2(said.contains(path), qPrintable(said));
+        QCOMPARE(FullDisk::read(path), good);
+        // Room again: the next change is written and nothing more is said of it.
+        disk.drain();
+        window.statusBar()->clearMessage();
+        window.setTheme(Theme::System);
+        QVERIFY2(window.statusBar()->currentMessage().isEmpty(),
+                 qPrintable(window.statusBar()->currentMessage()));
+        QVERIFY(FullDisk::read(path).contains("theme=system"));
     }
 };
 

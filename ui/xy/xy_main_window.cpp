@@ -454,6 +454,7 @@ bool XyMainWindow::selectProgram(const QString& path) {
         plotter_->setPointCount(points);
     }
     settings_.setValue(QStringLiteral("xyLastProgram"), path);
+    rememberSettings();
     link_.post([program](XyController& c) { c.loadProgram(program); });
     retranslate();
     onUpdate({}, {}, last_);  // the run controls follow the program just loaded
@@ -522,6 +523,7 @@ void XyMainWindow::chooseFile() {
                                                       tr("G-code programs (*.G *.g)"));
     if (path.isEmpty()) return;
     settings_.setValue(QStringLiteral("xyLastFolder"), QFileInfo(path).absolutePath());
+    rememberSettings();
     selectProgram(path);
 }
 
