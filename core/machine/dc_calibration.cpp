@@ -2,24 +2,94 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 namespace trilho {
 
+CalibrationRecorder::CalibrationRecorder(CalibrationLimits limits) : limits_(limits) {}
+
 void CalibrationRecorder::receive(std::uint8_t byte, double tS) {
+    if (!refused_.empty()) return;  // nothing more is kept, whatever the board sends
+    if (firstByteS_ < 0.0) firstByteS_ = tS;
     lastByteS_ = tS;
-    const std::optional<std::uint16_t> c = decoder_.feed(byte, tS);
-    if (!c) return;
-    if (!samples_.empty() && *c < samples_.back().count) {
-        ++dropped_;  // pulsos only rises: a pair broken by a lost byte
+    ++bytes_;
+    if (auto why = flooded(bytes_, firstByteS_, tS, limits_)) {
+        refused_ = *why;
         return;
     }
-    samples_.push_back({tS, *c});
+    const std::uint64_t resyncsBefore = decoder_.resyncs();
+    const std::optional<std::uint16_t> c = decoder_.feed(byte, tS);
+    if (decoder_.resyncs() != resyncsBefore) {
+        badPair("a lone byte (the other byte of its count was lost)");
+        if (!refused_.empty()) return;
+    }
+    if (c) count(*c, tS);
+}
+
+void CalibrationRecorder::badPair(const std::string& why) {
+    const std::uint64_t bad = dropped_ + decoder_.resyncs();
+    if (bad <= limits_.maxBadPairs) return;
+    refused_ = std::to_string(bad) + " counts the program cannot have sent (the last: " + why +
+               "): garbage on the line, a board that restarted, or another program";
+}
+
+void CalibrationRecorder::count(std::uint16_t c, double tS) {
+    const CalibrationSample s{tS, c};
+    const CalibrationSample* before = samples_.empty() ? nullptr : &samples_.back();
+    // The board's periods since the count before: one, and one more for each pair lost since.
+    const double periods = 1.0 + static_cast<double>(dropped_ + decoder_.resyncs() - badAtKept_);
+    if (before) {
+        if (auto why = gapBefore(*before, s, periods, limits_)) {
+            refused_ = *why;  // not line noise: the counts of a silence are lost
+            return;
+        }
+    }
+    if (auto why = implausibleCount(before, s, periods, limits_)) {
+        ++dropped_;
+        badPair(*why);
+        return;
+    }
+    stillCounts_ = before && before->count == c ? stillCounts_ + 1 : 0;
+    if (auto why = stalled(s, stillCounts_, limits_)) {
+        refused_ = *why;
+        return;
+    }
+    if (samples_.size() >= limits_.maxSamples) {
+        char buf[256];
+        std::snprintf(buf, sizeof buf,
+                      "more than %zu counts (%.1f minutes at one every %.0f ms) without the "
+                      "program's stop at %u: too slow to be its run, or another program",
+                      limits_.maxSamples,
+                      static_cast<double>(limits_.maxSamples) * limits_.periodS / 60.0,
+                      limits_.periodS * 1e3, unsigned{limits_.stopCount});
+        refused_ = buf;
+        return;
+    }
+    // Grown by hand so that the memory held never passes maxSamples counts (a vector's own
+    // doubling could reserve up to twice what it holds).
+    if (samples_.size() == samples_.capacity())
+        samples_.reserve(
+            std::min(limits_.maxSamples, std::max<std::size_t>(64, 2 * samples_.size())));
+    samples_.push_back(s);
+    badAtKept_ = dropped_ + decoder_.resyncs();
+}
+
+CalibrationInput CalibrationRecorder::input() const {
+    CalibrationInput in;
+    in.samples = samples_;
+    in.limits = limits_;
+    in.refused = refused_;
+    return in;
 }
 
 CalibrationResult calibrate(const CalibrationInput& in) {
     CalibrationResult r;
     r.samples = in.samples.size();
+    if (!in.refused.empty()) {
+        r.error = in.refused;
+        return r;
+    }
     if (in.samples.empty()) {
         r.error = "no count came from the board: is it running its calibration program?";
         return r;
@@ -31,6 +101,21 @@ CalibrationResult calibrate(const CalibrationInput& in) {
     const CalibrationSample& last = in.samples.back();
     r.lastS = last.tS;
     r.lastCount = last.count;
+    // The counts one by one, as the recorder took them (the motor's rate is checked on the
+    // run below: the counts lost between these are not known here).
+    std::size_t still = 0;
+    for (std::size_t i = 0; i < in.samples.size(); ++i) {
+        const CalibrationSample* before = i ? &in.samples[i - 1] : nullptr;
+        if (auto why = implausibleCount(before, in.samples[i], std::nullopt, in.limits)) {
+            r.error = *why;
+            return r;
+        }
+        still = before && before->count == in.samples[i].count ? still + 1 : 0;
+        if (auto why = stalled(in.samples[i], still, in.limits)) {
+            r.error = *why;
+            return r;
+        }
+    }
     std::size_t first = 0;
     while (first < in.samples.size() && in.samples[first].count == 0)
         ++first;
@@ -64,8 +149,12 @@ CalibrationResult calibrate(const CalibrationInput& in) {
         return r;
     }
     r.pulsesPerS = stc / stt;
-    r.pulsesAtStop = std::max(static_cast<double>(in.stopCount),
-                              static_cast<double>(last.count) + r.pulsesPerS * in.periodS);
+    if (auto why = implausibleRun(in.samples, first, r.pulsesPerS, in.limits)) {
+        r.error = *why;
+        return r;
+    }
+    r.pulsesAtStop = std::max(static_cast<double>(in.limits.stopCount),
+                              static_cast<double>(last.count) + r.pulsesPerS * in.limits.periodS);
     if (in.travelMm) {
         r.mmPerPulse = *in.travelMm / r.pulsesAtStop;
         r.mmPerTurn = *r.mmPerPulse * 2.0 * std::numbers::pi / in.radPerCount;
