@@ -31,7 +31,8 @@ void CalibrationRecorder::badPair(const std::string& why) {
     const std::uint64_t bad = dropped_ + decoder_.resyncs();
     if (bad <= limits_.maxBadPairs) return;
     refused_ = std::to_string(bad) + " counts the program cannot have sent (the last: " + why +
-               "): garbage on the line, a board that restarted, or another program";
+               "): garbage on the line (a wrong bit rate?), a board that restarted, or another "
+               "program";
 }
 
 void CalibrationRecorder::count(std::uint16_t c, double tS) {
@@ -39,20 +40,23 @@ void CalibrationRecorder::count(std::uint16_t c, double tS) {
     const CalibrationSample* before = samples_.empty() ? nullptr : &samples_.back();
     // The board's periods since the count before: one, and one more for each pair lost since.
     const double periods = 1.0 + static_cast<double>(dropped_ + decoder_.resyncs() - badAtKept_);
-    if (before) {
-        if (auto why = gapBefore(*before, s, periods, limits_)) {
-            refused_ = *why;  // not line noise: the counts of a silence are lost
+    // Above the stop or going back first: such a count after a silence is no gap.
+    std::optional<std::string> why = implausibleCount(before, s, std::nullopt, limits_);
+    if (!why && before) {
+        if (auto gap = gapBefore(*before, s, periods, limits_)) {
+            refused_ = *gap;  // not line noise: the counts of a silence are lost
             return;
         }
+        why = implausibleCount(before, s, periods, limits_);
     }
-    if (auto why = implausibleCount(before, s, periods, limits_)) {
+    if (why) {
         ++dropped_;
         badPair(*why);
         return;
     }
     stillCounts_ = before && before->count == c ? stillCounts_ + 1 : 0;
-    if (auto why = stalled(s, stillCounts_, limits_)) {
-        refused_ = *why;
+    if (auto stall = stalled(s, stillCounts_, limits_)) {
+        refused_ = *stall;
         return;
     }
     if (samples_.size() >= limits_.maxSamples) {

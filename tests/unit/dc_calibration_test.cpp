@@ -239,6 +239,23 @@ TEST(DcCalibrationStream, AGoodStreamSurvivesABusyHostALostByteAndALateStart) {
     }
 }
 
+TEST(DcCalibrationStream, ACountAboveTheStopAfterASilenceIsABrokenPairNotAGap) {
+    // A count of 60000, 10 s after 300: the motor could have made the rise in the time, but no
+    // count of the program is above 1300; dropped (one of the 3 taken), the stream goes on.
+    CalibrationRecorder rec;
+    auto send = [&](std::uint16_t c, double t) {
+        rec.receive(static_cast<std::uint8_t>(c & 0xFF), t);
+        rec.receive(static_cast<std::uint8_t>(c >> 8), t + test::kByteS);
+    };
+    send(300, 0.032);
+    send(60000, 10.032);
+    EXPECT_TRUE(rec.refused().empty()) << rec.refused();
+    EXPECT_EQ(rec.dropped(), 1u);
+    // A count the motor could make only over the silence is a gap: refused at once.
+    send(1200, 10.064);
+    EXPECT_NE(rec.refused().find("counts are missing"), std::string::npos) << rec.refused();
+}
+
 TEST(DcCalibrationStream, TheBoundsComeFromTheProfilesMotor) {
     DcAxisParams x;
     x.mmPerTurn = 2.12;
