@@ -18,28 +18,92 @@ void CalibrationRecorder::receive(std::uint8_t byte, double tS) {
         refused_ = *why;
         return;
     }
-    const std::uint64_t resyncsBefore = decoder_.resyncs();
-    const std::optional<std::uint16_t> c = decoder_.feed(byte, tS);
-    if (decoder_.resyncs() != resyncsBefore) {
-        badPair("a lone byte (the other byte of its count was lost)");
-        if (!refused_.empty()) return;
+    if (havePartial_) {
+        havePartial_ = false;
+        const auto c = static_cast<std::uint16_t>(partial_ | (byte << 8));
+        if (tS - partialT_ <= limits_.pairGapS) {
+            if (c < limits_.stopCount) {
+                count(c, tS);
+                return;
+            }
+            // No MSB of the program's: the pair is out of step (the port opened at an MSB, a
+            // byte lost) or a byte was corrupted. Dropped, and this byte may start the next
+            // count: it does if its partner follows within the gap.
+            ++dropped_;
+            badPair(*implausibleCount(nullptr, {tS, c}, std::nullopt, limits_));
+            if (!refused_.empty()) return;
+            partial_ = byte;
+            partialT_ = tS;
+            havePartial_ = true;
+            leftover_ = true;
+            return;
+        }
+        if (completesLate(c, tS)) {
+            count(c, tS);
+            return;
+        }
+        // The first byte stood alone: its other byte was lost (a byte left over from a
+        // dropped pair is counted already); this one starts a new count.
+        if (!leftover_) {
+            ++resyncs_;
+            badPair("a lone byte (the other byte of its count was lost)");
+            if (!refused_.empty()) return;
+        }
     }
-    if (c) count(*c, tS);
+    partial_ = byte;
+    partialT_ = tS;
+    havePartial_ = true;
+    leftover_ = false;
+}
+
+double CalibrationRecorder::periodsSinceKept() const {
+    // The board's periods since the last count kept: one, and one more for each pair lost.
+    return 1.0 + static_cast<double>(dropped_ + resyncs_ - badAtKept_);
+}
+
+bool CalibrationRecorder::completesLate(std::uint16_t c, double tS) const {
+    if (samples_.empty()) return false;  // nothing to judge it by: a lone byte
+    const CalibrationSample s{tS, c};
+    const double periods = periodsSinceKept();
+    return !implausibleCount(&samples_.back(), s, periods, limits_) &&
+           !gapBefore(samples_.back(), s, periods, limits_);
 }
 
 void CalibrationRecorder::badPair(const std::string& why) {
-    const std::uint64_t bad = dropped_ + decoder_.resyncs();
-    if (bad <= limits_.maxBadPairs) return;
+    const std::uint64_t bad = dropped_ + resyncs_;
+    const double allowed = static_cast<double>(limits_.maxBadPairs) +
+                           limits_.maxBadFraction * static_cast<double>(samples_.size());
+    if (static_cast<double>(bad) <= allowed) return;
     refused_ = std::to_string(bad) + " counts the program cannot have sent (the last: " + why +
                "): garbage on the line (a wrong bit rate?), a board that restarted, or another "
                "program";
 }
 
+void CalibrationRecorder::dropSpikeBefore(const CalibrationSample& s) {
+    // s is lower than the last count kept but goes on from the one before it: the last was the
+    // bad one (a corrupted byte raised it), dropped, or every count after it would go back.
+    if (samples_.size() < 2) return;
+    const CalibrationSample& spike = samples_.back();
+    const CalibrationSample& twoBack = samples_[samples_.size() - 2];
+    if (implausibleCount(&twoBack, s, periodsSinceKept() + 1.0, limits_)) return;
+    char why[160];
+    std::snprintf(why, sizeof why, "count %u at %.3f s, above the %u that came after it: a spike",
+                  unsigned{spike.count}, spike.tS, unsigned{s.count});
+    samples_.pop_back();
+    ++dropped_;
+    stillCounts_ = 0;
+    for (std::size_t i = samples_.size() - 1; i > 0 && samples_[i - 1].count == samples_[i].count;
+         --i)
+        ++stillCounts_;
+    badPair(why);
+}
+
 void CalibrationRecorder::count(std::uint16_t c, double tS) {
     const CalibrationSample s{tS, c};
+    if (!samples_.empty() && c < samples_.back().count) dropSpikeBefore(s);
+    if (!refused_.empty()) return;
     const CalibrationSample* before = samples_.empty() ? nullptr : &samples_.back();
-    // The board's periods since the count before: one, and one more for each pair lost since.
-    const double periods = 1.0 + static_cast<double>(dropped_ + decoder_.resyncs() - badAtKept_);
+    const double periods = periodsSinceKept();
     // Above the stop or going back first: such a count after a silence is no gap.
     std::optional<std::string> why = implausibleCount(before, s, std::nullopt, limits_);
     if (!why && before) {
@@ -76,7 +140,7 @@ void CalibrationRecorder::count(std::uint16_t c, double tS) {
         samples_.reserve(
             std::min(limits_.maxSamples, std::max<std::size_t>(64, 2 * samples_.size())));
     samples_.push_back(s);
-    badAtKept_ = dropped_ + decoder_.resyncs();
+    badAtKept_ = dropped_ + resyncs_;
 }
 
 CalibrationInput CalibrationRecorder::input() const {

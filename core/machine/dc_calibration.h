@@ -32,13 +32,16 @@ struct CalibrationInput {
     std::optional<double> travelMm;
 };
 
-/// Collects the stream: pairs bytes into counts by time (table_wire::EncoderStreamDecoder),
-/// keeps those the program can have sent and drops the others (a count at or above the stop,
-/// lower than the one before, or rising faster than the motor can: a pair broken by a lost or
-/// corrupted byte), counted. It refuses the stream, with the reason, when more are dropped
-/// than line noise explains, when the count stands (a stall), when more bytes come than the
-/// program sends (a flood) or more counts than it sends in a run; refused, it ignores every
-/// later byte. Memory: at most limits.maxSamples counts.
+/// Collects the stream: pairs bytes into counts, LSB then MSB, by time (the two of a count
+/// within limits.pairGapS; a later second byte completes its count only when the two make one
+/// the program can send there: the host read it late), keeps the counts the program can have
+/// sent and drops the others (a count at or above the stop, lower than the one before, or
+/// rising faster than the motor can; a count the next shows was a spike; a lone byte: pairs
+/// broken by a lost or corrupted byte), counted. It refuses the stream, with the reason, when
+/// more are dropped than line noise explains, when counts are missing after a silence, when
+/// the count stands (a stall), when more bytes come than the program sends (a flood) or more
+/// counts than it sends in a run; refused, it ignores every later byte. Memory: at most
+/// limits.maxSamples counts.
 class CalibrationRecorder {
   public:
     explicit CalibrationRecorder(CalibrationLimits limits = {});
@@ -46,9 +49,9 @@ class CalibrationRecorder {
     const std::vector<CalibrationSample>& samples() const { return samples_; }
     /// Why the stream is not the program's, in one sentence; empty while it may be.
     const std::string& refused() const { return refused_; }
-    std::uint64_t dropped() const { return dropped_; }
-    std::uint64_t resyncs() const { return decoder_.resyncs(); }
-    std::uint64_t bytes() const { return bytes_; }  ///< received until refused
+    std::uint64_t dropped() const { return dropped_; }  ///< counts dropped
+    std::uint64_t resyncs() const { return resyncs_; }  ///< lone bytes
+    std::uint64_t bytes() const { return bytes_; }      ///< received until refused
     /// Time of the last byte, s (negative before the first).
     double lastByteS() const { return lastByteS_; }
     const CalibrationLimits& limits() const { return limits_; }
@@ -59,12 +62,19 @@ class CalibrationRecorder {
   private:
     void count(std::uint16_t c, double tS);
     void badPair(const std::string& why);
+    void dropSpikeBefore(const CalibrationSample& s);
+    bool completesLate(std::uint16_t c, double tS) const;
+    double periodsSinceKept() const;
 
     CalibrationLimits limits_;
-    table_wire::EncoderStreamDecoder decoder_;
     std::vector<CalibrationSample> samples_;
     std::string refused_;
+    bool havePartial_ = false;  ///< the first byte (LSB) of a count, waiting for its MSB
+    std::uint8_t partial_ = 0;
+    double partialT_ = 0.0;
+    bool leftover_ = false;  ///< the partial is the second byte of a pair dropped
     std::uint64_t dropped_ = 0;
+    std::uint64_t resyncs_ = 0;
     std::uint64_t bytes_ = 0;
     std::uint64_t badAtKept_ = 0;  ///< dropped + resyncs when the last count was kept
     std::size_t stillCounts_ = 0;  ///< counts equal to the one before, in a row

@@ -45,12 +45,22 @@ struct CalibrationLimits {
     /// kRateMargin. Default: the shipped table's X (400 mm/s, 2.12 mm a turn, 0.314 rad a
     /// count: about 3776 pulses/s) x 2. forAxis() takes the profile's axis.
     double maxPulsesPerS = 400.0 / 2.12 * 2.0 * std::numbers::pi / 0.314 * kRateMargin;
-    /// pairs: what the recorder drops before it refuses the stream: a count at or above the
-    /// stop, lower than the one before or rising faster than maxPulsesPerS, and a lone byte (a
-    /// count whose other byte was lost; one when the host opens the port between the two bytes
-    /// of a count). Line noise may break a pair or two; garbage, counts of another program or of
-    /// a board that restarted break every pair and are refused within 4 periods (0.13 s).
+    /// s: the two bytes of a count come back to back (1 ms at 9600 bit/s; the seed waits 10 ms
+    /// between them), counts 32 ms apart: a byte later than this after the first of a count
+    /// starts a new count (the other was lost), unless the two make a count the program can
+    /// send there (the host read the second late: a busy host stamps bytes when it reads them).
+    double pairGapS = 0.016;
+    /// pairs: what the recorder drops before it refuses the stream, plus maxBadFraction of the
+    /// counts kept: a count at or above the stop, lower than the one before or rising faster
+    /// than maxPulsesPerS, a count the next one shows was a spike, and a lone byte (a count
+    /// whose other byte was lost; one when the host opens the port between the two bytes of a
+    /// count). Line noise breaks a pair here and there; garbage, counts of another program or
+    /// of a board that restarted break every pair and are refused within a few periods (4 at
+    /// the start, 0.13 s; 6 after 40 good counts).
     std::size_t maxBadPairs = 3;
+    /// of the counts kept: see maxBadPairs. A long run on a line that corrupts one byte in a
+    /// hundred (a few per cent of its counts) is taken.
+    double maxBadFraction = 0.05;
     /// s, counted in the board's periods (not the host's clock: a busy host receives late
     /// counts together, which is no stall): after the first pulse the count may stand this
     /// long; longer, the axis stalled. The slowest run the seed describes (its start-up duty,
