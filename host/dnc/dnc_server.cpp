@@ -119,13 +119,14 @@ DncServer::DncServer(DncMachine& machine, ProgramLibrary library, QObject* paren
     refresh();
 }
 
-bool DncServer::takeDownloadBlock(const QString& client) {
-    if (!downloadOwner_.isEmpty() && downloadOwner_ != client &&
-        double(downloadTouched_.elapsed()) / 1000.0 < kDownloadOwnershipS)
-        return false;
+bool DncServer::mayWriteDownload(const QString& client) const {
+    return downloadOwner_.isEmpty() || downloadOwner_ == client ||
+           double(downloadTouched_.elapsed()) / 1000.0 >= kDownloadOwnershipS;
+}
+
+void DncServer::ownDownload(const QString& client) {
     downloadOwner_ = client;
     downloadTouched_.restart();
-    return true;
 }
 
 void DncServer::acceptedLine(const QString& client, const QString& line) {
@@ -284,7 +285,8 @@ void DncServer::refresh() {
     drainMachineEvents();
     if (pending_ && machine_.applied(pending_->ticket)) {
         link_.commandSeq = pending_->seq;
-        link_.commandResult = pending_->result;
+        link_.commandResult =
+            appliedOutcome(pending_->command, pending_->result, pending_->seq, pending_->client);
         if (!pending_->appliedLine.isEmpty()) emit historyLine(pending_->appliedLine);
         pending_.reset();
     }
@@ -364,7 +366,7 @@ QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& serv
     }
     const bool intoDownload =
         std::size_t{d.write.start} + d.write.values.size() > hold::kDownloadNumber;
-    if (intoDownload && !takeDownloadBlock(client)) {
+    if (intoDownload && !mayWriteDownload(client)) {
         refused(client, QStringLiteral("DNC: write refused (the download block is %1's until it "
                                        "commits): function %2 at %3 from %4")
                             .arg(downloadOwner_)
@@ -378,10 +380,17 @@ QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& serv
     if (response.isException()) return response;
     for (std::size_t i = 0; i < d.write.values.size(); ++i)
         holding_[d.write.start + i] = d.write.values[i];
+    // Owned from the write that stored something there, before a command in the same request
+    // (a commit) runs; given back if the machine refuses the write.
+    const QString ownerBefore = downloadOwner_;
+    const QElapsedTimer touchedBefore = downloadTouched_;
+    if (intoDownload) ownDownload(client);
     if (!applyWrite(d.write, client)) {
         // Not taken by the machine: the write is undone (the registers read back what the
         // machine has) and the client reads "busy", never a success.
         holding_ = before;
+        downloadOwner_ = ownerBefore;
+        downloadTouched_ = touchedBefore;
         refresh();
         for (QModbusServer* s : servers_)
             publish(*s);
@@ -447,7 +456,7 @@ QModbusResponse DncServer::readFile(QModbusPdu::FunctionCode fc, const std::uint
 QModbusResponse DncServer::writeFile(const QModbusPdu& request, const std::uint8_t* data,
                                      std::size_t size, const QString& client) {
     const auto fc = request.functionCode();
-    if (!takeDownloadBlock(client)) {
+    if (!mayWriteDownload(client)) {
         refused(client, QStringLiteral("DNC: file record write refused (the download block is "
                                        "%1's until it commits) from %2")
                             .arg(downloadOwner_, client));
@@ -473,6 +482,7 @@ QModbusResponse DncServer::writeFile(const QModbusPdu& request, const std::uint8
         return QModbusExceptionResponse(fc, toQt(e));
     }
     holding_ = after;
+    ownDownload(client);  // only now: a refused write leaves the block as it was (issue 30 item 11)
     // The download block as clients read it with function 03.
     QModbusDataUnit block(QModbusDataUnit::HoldingRegisters, hold::kDownloadNumber,
                           hold::kCount - hold::kDownloadNumber);
@@ -515,8 +525,22 @@ bool DncServer::applyWrite(const HoldingWrite& w, const QString& client) {
     return true;
 }
 
+CommandResult DncServer::appliedOutcome(Command command, CommandResult r, std::uint16_t seq,
+                                        const QString& client) {
+    if (command != Command::Hold || r != CommandResult::Applied) return r;
+    // Looked at after applied() said so: this snapshot has the Hold in it.
+    const ControllerStatus s = machine_.snapshot();
+    if (s.state == ControllerState::Paused && s.pause == PauseReason::Hold) return r;
+    refused(client, QStringLiteral("DNC: command hold (sequence %1) from %2: nothing to do: no "
+                                   "program was running when it reached the machine (%3)")
+                        .arg(seq)
+                        .arg(client)
+                        .arg(QLatin1String(controllerStateName(s.state))));
+    return CommandResult::NothingToDo;
+}
+
 void DncServer::finishCommand(std::uint16_t seq, CommandResult r, std::optional<Ticket> ticket,
-                              const QString& client, const QString& appliedLine) {
+                              const QString& client, const QString& appliedLine, Command command) {
     if (ticket && ticket->refused) {
         refused(client, QStringLiteral("DNC: command (sequence %1) from %2 refused: the machine "
                                        "is busy with the commands before it")
@@ -528,7 +552,7 @@ void DncServer::finishCommand(std::uint16_t seq, CommandResult r, std::optional<
     const QString said = r == CommandResult::Applied ? appliedLine : QString();
     if (ticket && !machine_.applied(*ticket)) {
         // A later queued command: the earlier go first.
-        pending_ = Pending{seq, r, *ticket, said};
+        pending_ = Pending{seq, r, *ticket, said, command, client};
         return;
     }
     if (!said.isEmpty()) {
@@ -539,7 +563,7 @@ void DncServer::finishCommand(std::uint16_t seq, CommandResult r, std::optional<
     // its way to the machine pending: it is echoed once applied, and keeps Starts serialised.
     if (ticket) pending_.reset();
     link_.commandSeq = seq;
-    link_.commandResult = r;
+    link_.commandResult = ticket ? appliedOutcome(command, r, seq, client) : r;
 }
 
 void DncServer::noteDiagnostics(int number, const Program& p) {
@@ -566,7 +590,7 @@ void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq,
                                      .arg(QLatin1String(commandName(c)))
                                      .arg(seq)
                                      .arg(client));
-        finishCommand(seq, r, ticket, client);
+        finishCommand(seq, r, ticket, client, {}, c);
     };
     switch (c) {
         case Command::StartProgram: {
@@ -604,6 +628,20 @@ void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq,
                 QStringLiteral("DNC: program %1 started by %2").arg(argument).arg(client));
         }
         case Command::Hold:
+            // Only a program running (or dwelling) is held: at rest, in Manual, while homing,
+            // paused already, in alarm or E-stop the controller does nothing with a Hold, and
+            // it was answered "applied" (issue 30 item 11). A command still on its way (a Start
+            // just sent) has not shown in the snapshot yet: that Hold goes to the machine, and
+            // what it did is looked at once it is applied (appliedOutcome).
+            if (!pending_ && s.state != ControllerState::Running &&
+                s.state != ControllerState::Waiting) {
+                refused(client, QStringLiteral("DNC: command hold (sequence %1) from %2: nothing "
+                                               "to do: no program is running (%3)")
+                                    .arg(seq)
+                                    .arg(client)
+                                    .arg(QLatin1String(controllerStateName(s.state))));
+                return finishCommand(seq, CommandResult::NothingToDo, std::nullopt, client);
+            }
             return finish(CommandResult::Applied, machine_.send(CommandKind::Hold));
         case Command::Continue:
             // Only a pause (a hold, an m00, single block) has anything to continue: after a
@@ -643,9 +681,20 @@ void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq,
             return finish(CommandResult::Applied,
                           machine_.send(CommandKind::SetLaw, argument == 0 ? 0 : 1));
         case Command::CommitDownload: {
-            // Only the client whose download it is commits it; the block is free afterwards.
-            if (!takeDownloadBlock(client)) return finish(CommandResult::Busy);
-            downloadOwner_.clear();
+            // Only the client whose download it is commits it: another's, still being written,
+            // is busy; with no download of this client's since the last commit that saved
+            // (its writes all refused, or none) there is nothing to commit: it would save what
+            // another client left in the block (issue 30 item 11).
+            if (downloadOwner_ != client) {
+                if (!mayWriteDownload(client)) return finish(CommandResult::Busy);
+                refused(client,
+                        QStringLiteral("DNC: command commit download (sequence %1) from %2: "
+                                       "nothing to do: it wrote no download since the last "
+                                       "commit")
+                            .arg(seq)
+                            .arg(client));
+                return finishCommand(seq, CommandResult::NothingToDo, std::nullopt, client);
+            }
             const std::uint16_t length = holding_[hold::kDownloadLength];
             if (holding_[hold::kDownloadNumber] != argument || length > hold::kDownloadMaxBytes)
                 return finish(CommandResult::BadDownload);
@@ -669,6 +718,10 @@ void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq,
                                      .arg(library_.pathOf(argument), error));
                 return finish(CommandResult::SaveFailed);
             }
+            // Saved: the block is free. A commit refused above leaves it its owner's, who may
+            // correct it and commit again (another client may take it once the owner has not
+            // written for 30 s).
+            downloadOwner_.clear();
             emit historyLine(
                 QStringLiteral("DNC: program %1 saved (%2 bytes)").arg(argument).arg(length));
             return finish(CommandResult::Applied);

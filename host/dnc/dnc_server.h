@@ -65,8 +65,10 @@ class DncServer : public QObject {
 
   private:
     /// Whether client may write into the download block now: it is free, or client's, or its
-    /// owner has not written for kDownloadOwnershipS. True makes client its owner.
-    bool takeDownloadBlock(const QString& client);
+    /// owner has not written for kDownloadOwnershipS.
+    bool mayWriteDownload(const QString& client) const;
+    /// client wrote into the download block: it is its owner until it commits.
+    void ownDownload(const QString& client);
     /// A refused request's history line, through the summary (refusal_summary.h).
     void refused(const QString& client, const QString& line);
     /// An accepted write's history line, through its own summary.
@@ -100,7 +102,13 @@ class DncServer : public QObject {
     /// the machine's own lines of that moment (F13: "program 42 started" came before the
     /// mode lines of the Automatic it asked for, and before anything had started).
     void finishCommand(std::uint16_t seq, CommandResult r, std::optional<Ticket> ticket = {},
-                       const QString& client = {}, const QString& appliedLine = {});
+                       const QString& client = {}, const QString& appliedLine = {},
+                       Command command = Command::None);
+    /// A command's result once the machine has applied it: a Hold the controller did not take
+    /// (no program was running when it arrived: it ended, or a Start before it was still
+    /// homing) did nothing, and is answered so (issue 30 item 11).
+    CommandResult appliedOutcome(Command command, CommandResult r, std::uint16_t seq,
+                                 const QString& client);
     void noteDiagnostics(int number, const Program& p);
     /// The machine's events to the history (and the alarm count), in order.
     void drainMachineEvents();
@@ -113,7 +121,9 @@ class DncServer : public QObject {
     QTimer timer_;
     std::vector<QModbusServer*> servers_;  ///< owned (children)
     /// The download block belongs to one client from its first write to its commit (issue 20
-    /// item 8: two clients interleaving downloads saved a program neither sent).
+    /// item 8: two clients interleaving downloads saved a program neither sent). Empty: no
+    /// write since the last commit that saved, so a commit has nothing to do (issue 30 item
+    /// 11: a client whose writes were all refused committed the last client's program).
     QString downloadOwner_;
     QElapsedTimer downloadTouched_;
     static constexpr double kDownloadOwnershipS = 30.0;
@@ -133,6 +143,8 @@ class DncServer : public QObject {
         CommandResult result;
         Ticket ticket;
         QString appliedLine;  ///< said once applied (empty: nothing)
+        Command command = Command::None;
+        QString client;
     };
     std::optional<Pending> pending_;
 };

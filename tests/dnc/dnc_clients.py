@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The DNC link against real Modbus clients (issue 13): pymodbus and mbpoll talk to
 `trilho-cli serve --virtual-time` on 127.0.0.1. Usage: dnc_clients.py CLI {pymodbus,mbpoll,
-refused,alarm,files,rtu,frames,bounds,xy}. Exits 77 (ctest SKIP_RETURN_CODE) when the client is not installed.
+refused,alarm,files,rtu,frames,bounds,xy,nothing}. Exits 77 (ctest SKIP_RETURN_CODE) when the client is not installed.
 Every wait is on a condition with a deadline, never a fixed sleep."""
 import math
 import os
@@ -23,7 +23,7 @@ IN_MACHINE, IN_AXES, IN_Y_POSITION = 34, 35, 36
 H_KP, H_FEED, H_COMMAND, H_DL_NUMBER, H_DL_LENGTH, H_DL_DATA, H_COUNT = 0, 6, 8, 16, 17, 18, 18 + 4096
 MANUAL, AUTO_IDLE, HOMING, RUNNING, WAITING, PAUSED, ALARM = 0, 1, 2, 3, 4, 5, 6
 START, HOLD, CONTINUE, STOP, ACK, AUTO, MANUAL_CMD, COMMIT = 1, 2, 3, 4, 5, 6, 7, 8
-APPLIED, NO_PROGRAM, COMPILE_ERRORS, NOT_READY = 1, 2, 3, 7
+APPLIED, NO_PROGRAM, COMPILE_ERRORS, BUSY, NOT_READY, NOTHING_TO_DO = 1, 2, 3, 4, 7, 8
 
 # A slow move (so hold, continue and stop find it running), an m00, and back.
 PROGRAM = ("( downloaded over Modbus )\nN0010 G01 X0200 F010\nN0020 M00\n"
@@ -288,6 +288,31 @@ def run_refused(cli):
         # (Over TCP Qt's store answers 08 with 01 anyway: the history tells consent apart.)
         check(out.count("write refused (Remote is off): function 8 ") == 1,
               "08/04 refused for consent, 08/00 not: " + " | ".join(l for l in out.splitlines() if "function 8 " in l))
+
+
+def run_nothing(cli):
+    # Issue 30 item 11: "nothing to do" (8), never "applied", for a Hold with nothing running
+    # and for a commit by a client whose writes were all refused.
+    text = "N10 G01 X0010 F050\nN20 M02\n"
+    with tempfile.TemporaryDirectory() as programs:
+        srv = Server(cli, programs)
+        try:
+            p, other = Py(srv.port), Py(srv.port)
+            check(p.command(HOLD) == NOTHING_TO_DO, "hold in Manual: nothing to do")
+            check(p.command(AUTO) == APPLIED, "automatic")
+            wait_for(lambda: p.state() == AUTO_IDLE and p.ir(IN_HOMED)[0] == 1, "homed")
+            check(p.command(HOLD) == NOTHING_TO_DO, "hold at rest in Automatic: nothing to do")
+            check(download(p, 42, text) == APPLIED, "program 42 downloaded by one client")
+            check(other.exc(other.write(H_DL_DATA, [0xFF00])) == 3, "the other's write is refused (03)")
+            check(other.command(COMMIT, 42) == NOTHING_TO_DO, "and its commit is nothing to do")
+            check(p.command(COMMIT, 42) == NOTHING_TO_DO, "a second commit with nothing new: nothing to do")
+            p.c.close()
+            other.c.close()
+        finally:
+            rc, out = srv.stop()
+        check(out.count("program 42 saved") == 1, "saved once")
+        check(f"command hold (sequence 101) from {p.peer}: nothing to do" in out,
+              "the history says the hold had nothing to do, naming the client")
 
 
 # ---------------------------------------------------------------- file records (20, 21)
@@ -828,7 +853,8 @@ def main():
             print("pymodbus not installed: skipped (scripts/deps.sh installs python3-pymodbus)")
             return 77
         {"pymodbus": run_pymodbus, "alarm": run_alarm, "refused": run_refused,
-         "files": run_files, "rtu": run_rtu, "frames": run_frames, "bounds": run_bounds, "xy": run_xy}[mode](cli)
+         "files": run_files, "rtu": run_rtu, "frames": run_frames, "bounds": run_bounds, "xy": run_xy,
+         "nothing": run_nothing}[mode](cli)
     if failures:
         print(f"{len(failures)} failed: " + "; ".join(failures))
         return 1
