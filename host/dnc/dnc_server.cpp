@@ -1,8 +1,10 @@
 #include "host/dnc/dnc_server.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <QModbusRtuSerialServer>
+#include <QScopeGuard>
 #include <QSerialPort>
 #include <QStringList>
 #include <QUrl>
@@ -111,9 +113,9 @@ DncServer::DncServer(DncMachine& machine, ProgramLibrary library, QObject* paren
     timer_.start(20);
     clock_.start();
     connect(&summaryTimer_, &QTimer::timeout, this, [this] {
-        const double now = static_cast<double>(clock_.elapsed()) / 1000.0;
         for (RefusalSummary* summary : {&refusals_, &accepted_})
-            if (const QString line = summary->roll(now); !line.isEmpty()) emit historyLine(line);
+            for (const QString& line : summary->roll(nowS()))
+                emit historyLine(line);
     });
     summaryTimer_.start(1000);
     refresh();
@@ -130,13 +132,25 @@ void DncServer::ownDownload(const QString& client) {
 }
 
 void DncServer::acceptedLine(const QString& client, const QString& line) {
-    for (const QString& l : accepted_.note(client, line, double(clock_.elapsed()) / 1000.0))
+    for (const QString& l : accepted_.note(client, line, nowS()))
+        emit historyLine(l);
+}
+
+void DncServer::acceptedChange(const QString& client, const QString& subject, const QString& where,
+                               const QList<ValueChange>& changes) {
+    for (const QString& l : accepted_.noteChange(client, subject, where, changes, nowS()))
         emit historyLine(l);
 }
 
 void DncServer::refused(const QString& client, const QString& line) {
-    for (const QString& l : refusals_.note(client, line, double(clock_.elapsed()) / 1000.0))
+    for (const QString& l : refusals_.note(client, line, nowS()))
         emit historyLine(l);
+}
+
+void DncServer::flushHistory() {
+    for (RefusalSummary* summary : {&refusals_, &accepted_})
+        for (const QString& line : summary->flush(nowS()))
+            emit historyLine(line);
 }
 
 DncServer::~DncServer() {
@@ -342,7 +356,11 @@ QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& serv
                              .arg(client));
     if (fc == QModbusPdu::WriteFileRecord) return writeFile(request, bytes, size, client);
     if (!d.isWrite) return base(request);  // coils: none in the map (an exception)
-    resolveMask(d, holding_);              // function 22: the value it leaves, checked as a write
+    // Checked and stored over the values on their way; what clients read of holding 0-7 is the
+    // machine's again afterwards, whichever way this returns.
+    overlayInFlight();
+    const auto live = qScopeGuard([this] { fillLiveHolding(machine_.snapshot(), holding_); });
+    resolveMask(d, holding_);  // function 22: the value it leaves, checked as a write
     Exception e = d.error;
     if (e == Exception::None) e = checkHoldingWrite(d.write, holding_, machine_.snapshot().law);
     if (e != Exception::None) {
@@ -385,7 +403,7 @@ QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& serv
     const QString ownerBefore = downloadOwner_;
     const QElapsedTimer touchedBefore = downloadTouched_;
     if (intoDownload) ownDownload(client);
-    if (!applyWrite(d.write, client)) {
+    if (!applyWrite(d.write, before, client)) {
         // Not taken by the machine: the write is undone (the registers read back what the
         // machine has) and the client reads "busy", never a success.
         holding_ = before;
@@ -493,29 +511,57 @@ QModbusResponse DncServer::writeFile(const QModbusPdu& request, const std::uint8
     return QModbusResponse(fc, request.data());  // function 21 answers with its request
 }
 
-bool DncServer::applyWrite(const HoldingWrite& w, const QString& client) {
+void DncServer::overlayInFlight() {
+    // applied() first, then a snapshot taken after it: that snapshot holds what was applied.
+    bool arrived = false;
+    for (std::optional<InFlight>* f : {&gainsInFlight_, &overrideInFlight_})
+        if (*f && machine_.applied((*f)->ticket)) f->reset(), arrived = true;
+    if (arrived) fillLiveHolding(machine_.snapshot(), holding_);
+    if (gainsInFlight_) std::copy_n(gainsInFlight_->regs.begin(), 6, holding_.begin() + hold::kKp);
+    if (overrideInFlight_)
+        std::copy_n(overrideInFlight_->regs.begin(), 2, holding_.begin() + hold::kFeedOverride);
+}
+
+bool DncServer::applyWrite(const HoldingWrite& w, const HoldingImage& before,
+                           const QString& client) {
     auto touches = [&w](std::uint16_t from, std::uint16_t to) {
         return w.start < to && w.start + w.values.size() > from;
     };
     auto f = [this](std::uint16_t a) { return double(joinFloat(holding_[a], holding_[a + 1])); };
+    auto was = [&before](std::uint16_t a) { return double(joinFloat(before[a], before[a + 1])); };
+    // As the history says them: gains to 6 significant digits (the float's 1.2 is 1.2), the
+    // override in percent.
+    auto gain = [](double v) { return QString::number(v, 'g', 6); };
+    auto percent = [](double v) {
+        return QString::number(v * 100.0, 'g', 4) + QStringLiteral(" %");
+    };
     if (touches(hold::kKp, hold::kKd + 2)) {
-        if (machine_
-                .send(CommandKind::SetGains, static_cast<int>(machine_.snapshot().law),
-                      f(hold::kKp), f(hold::kKi), f(hold::kKd))
-                .refused)
-            return false;
-        acceptedLine(client, QStringLiteral("DNC: gains kp %1, ki %2, kd %3 set by %4")
-                                 .arg(f(hold::kKp))
-                                 .arg(f(hold::kKi))
-                                 .arg(f(hold::kKd))
-                                 .arg(client));
+        const LoopLaw law = machine_.snapshot().law;
+        const Ticket t = machine_.send(CommandKind::SetGains, static_cast<int>(law), f(hold::kKp),
+                                       f(hold::kKi), f(hold::kKd));
+        if (t.refused) return false;
+        gainsInFlight_ = InFlight{t, {}};
+        std::copy_n(holding_.begin() + hold::kKp, 6, gainsInFlight_->regs.begin());
+        // Issue 30 item 5: the values, before and after, whatever the summary holds back.
+        acceptedChange(client, QStringLiteral("gains"),
+                       QStringLiteral("%1 law, holding %2-%3")
+                           .arg(law == LoopLaw::Classic ? QStringLiteral("classic")
+                                                        : QStringLiteral("engineered"))
+                           .arg(hold::kKp)
+                           .arg(hold::kKd + 1),
+                       {{QStringLiteral("kp"), gain(was(hold::kKp)), gain(f(hold::kKp))},
+                        {QStringLiteral("ki"), gain(was(hold::kKi)), gain(f(hold::kKi))},
+                        {QStringLiteral("kd"), gain(was(hold::kKd)), gain(f(hold::kKd))}});
     }
     if (touches(hold::kFeedOverride, hold::kFeedOverride + 2)) {
-        if (machine_.send(CommandKind::FeedOverride, 0, f(hold::kFeedOverride)).refused)
-            return false;
-        acceptedLine(client, QStringLiteral("DNC: feed override %1 % set by %2")
-                                 .arg(std::lround(f(hold::kFeedOverride) * 100.0))
-                                 .arg(client));
+        const Ticket t = machine_.send(CommandKind::FeedOverride, 0, f(hold::kFeedOverride));
+        if (t.refused) return false;
+        overrideInFlight_ = InFlight{t, {}};
+        std::copy_n(holding_.begin() + hold::kFeedOverride, 2, overrideInFlight_->regs.begin());
+        acceptedChange(
+            client, QStringLiteral("feed override"),
+            QStringLiteral("holding %1-%2").arg(hold::kFeedOverride).arg(hold::kFeedOverride + 1),
+            {{QString(), percent(was(hold::kFeedOverride)), percent(f(hold::kFeedOverride))}});
     }
     if (touches(hold::kCommand, hold::kCommand + 1)) {
         const auto c = static_cast<Command>(holding_[hold::kCommand]);
@@ -678,6 +724,7 @@ void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq,
             }
             // The law comes with its period (issue 22 item 1); never changed under a program.
             if (pending_ || runningState(s.state)) return finish(CommandResult::Busy);
+            gainsInFlight_.reset();  // those were the other law's
             return finish(CommandResult::Applied,
                           machine_.send(CommandKind::SetLaw, argument == 0 ? 0 : 1));
         case Command::CommitDownload: {

@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """The DNC link against real Modbus clients (issue 13): pymodbus and mbpoll talk to
 `trilho-cli serve --virtual-time` on 127.0.0.1. Usage: dnc_clients.py CLI {pymodbus,mbpoll,
-refused,alarm,files,rtu,frames,bounds,xy,nothing}. Exits 77 (ctest SKIP_RETURN_CODE) when the client is not installed.
+refused,alarm,files,rtu,frames,bounds,xy,accepted,nothing}. Exits 77 (ctest SKIP_RETURN_CODE) when the client is not installed.
 Every wait is on a condition with a deadline, never a fixed sleep."""
 import math
 import os
 import shutil
+import signal
 import socket
 import struct
 import subprocess
@@ -71,8 +72,8 @@ class Server:
                 break
         raise SystemExit("server did not start: " + "".join(self.lines))
 
-    def stop(self):
-        self.proc.terminate()
+    def stop(self, sig=signal.SIGTERM):
+        self.proc.send_signal(sig)
         out, _ = self.proc.communicate(timeout=20)
         self.lines.append(out)
         return self.proc.returncode, "".join(self.lines)
@@ -288,6 +289,43 @@ def run_refused(cli):
         # (Over TCP Qt's store answers 08 with 01 anyway: the history tells consent apart.)
         check(out.count("write refused (Remote is off): function 8 ") == 1,
               "08/04 refused for consent, 08/00 not: " + " | ".join(l for l in out.splitlines() if "function 8 " in l))
+
+
+def run_accepted(cli):
+    # Issue 30 item 5: a gains change (kp 1.2 -> 2.0) and an override of 25 %, past the three
+    # lines a client has written whole in a window, came out only as "5 refused requests", and
+    # the lines held back were lost when serve stopped. Accepted writes are lines with their
+    # values, the summary calls them accepted, and it is written when serve stops, by SIGTERM
+    # as by SIGINT (Ctrl-C).
+    for sig in (signal.SIGTERM, signal.SIGINT):
+        name = signal.Signals(sig).name
+        with tempfile.TemporaryDirectory() as programs:
+            srv = Server(cli, programs)
+            try:
+                p = Py(srv.port)
+                check(p.ir(IN_LAW)[0] == 1 and abs(f32(*p.hr(H_KP, 2)) - 1.2) < 1e-6,
+                      "the engineered law, kp 1.2")
+                for f in (0.5, 0.75, 1.0):
+                    check(not p.write(H_FEED, regs_of(f)).isError(), f"override {f} written")
+                check(not p.write(H_KP, regs_of(2.0) + regs_of(0.5) + regs_of(0.02)).isError(),
+                      "gains kp 2.0 written")
+                check(not p.write(H_FEED, regs_of(0.25)).isError(), "override 0.25 written")
+                p.c.close()
+            finally:
+                rc, out = srv.stop(sig)
+            check(rc == 0, f"{name}: exit status {rc}")
+            lines = out.splitlines()
+            gains = f"DNC: gains kp 1.2 -> 2, ki 0.5, kd 0.02 (engineered law, holding 0-5) set by {p.peer}"
+            feed = f"DNC: feed override 100 % -> 25 % (holding 6-7) set by {p.peer}"
+            said = [next((i for i, l in enumerate(lines) if l.startswith(t)), -1)
+                    for t in (gains, feed, "DNC: 5 accepted writes in the last ", "trilho-cli serve: stopped")]
+            check(said[0] >= 0, f"{name}: the gains change with its values: '{gains}'")
+            check(said[1] >= 0, f"{name}: the override with its values: '{feed}'")
+            check(said[2] >= 0, f"{name}: the summary counts accepted writes")
+            check(not any("refused" in l for l in lines), f"{name}: nothing said refused")
+            check(-1 not in said and all(i < said[3] for i in said[:3]), f"{name}: all said before 'stopped' ({said})")
+            if failures:
+                print(out)
 
 
 def run_nothing(cli):
@@ -854,7 +892,7 @@ def main():
             return 77
         {"pymodbus": run_pymodbus, "alarm": run_alarm, "refused": run_refused,
          "files": run_files, "rtu": run_rtu, "frames": run_frames, "bounds": run_bounds, "xy": run_xy,
-         "nothing": run_nothing}[mode](cli)
+         "accepted": run_accepted, "nothing": run_nothing}[mode](cli)
     if failures:
         print(f"{len(failures)} failed: " + "; ".join(failures))
         return 1

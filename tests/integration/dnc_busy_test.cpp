@@ -146,6 +146,46 @@ TEST(DncBusy, ASecondStartBeforeTheFirstReachedTheMachineIsBusy) {
     rig.worker.stopThread();
 }
 
+TEST(DncBusy, AWriteOnItsWayIsTheValueTheNextReplacesAndBuildsOn) {
+    // Issue 30 item 5 at the screens' worker, whose queue applies a write later: the next
+    // write's "before" was the machine's older value (100 % -> 60 % after a 50 %), and a kp
+    // written alone took ki and kd from the machine, undoing the ki and kd still on their way.
+    int argc = 0;
+    QCoreApplication app(argc, nullptr);
+    Rig rig;  // not started: every write waits in the queue
+    auto floats = [&rig](std::uint16_t at, std::initializer_list<float> values) {
+        std::vector<std::uint16_t> regs;
+        for (float v : values) {
+            const Words w = splitFloat(v);
+            regs.push_back(w.hi);
+            regs.push_back(w.lo);
+        }
+        return rig.write(at, regs);
+    };
+    ASSERT_FALSE(floats(hold::kFeedOverride, {0.5f}).isException());
+    ASSERT_FALSE(floats(hold::kFeedOverride, {0.25f}).isException());
+    ASSERT_FALSE(floats(hold::kKp, {2.0f, 1.0f, 0.03f}).isException());
+    ASSERT_FALSE(floats(hold::kKp, {1.5f}).isException());
+    rig.dnc->flushHistory();  // the fourth write of this client is held back
+    const QString said = rig.history.join(QLatin1Char('\n'));
+    EXPECT_TRUE(said.contains(QStringLiteral("DNC: feed override 50 % -> 25 % (holding 6-7)")))
+        << said.toStdString();
+    EXPECT_TRUE(said.contains(QStringLiteral("DNC: gains kp 2 -> 1.5, ki 1, kd 0.03 ")))
+        << said.toStdString();
+    // The machine ends with every value written, none undone by a later write.
+    rig.worker.start(false);
+    QElapsedTimer waited;
+    waited.start();
+    while (rig.worker.snapshot().gains.kp != double(1.5f) && waited.elapsed() < 20000)
+        QCoreApplication::processEvents();
+    const ControllerStatus s = rig.worker.snapshot();
+    EXPECT_EQ(s.gains.kp, double(1.5f));
+    EXPECT_EQ(s.gains.ki, double(1.0f));
+    EXPECT_EQ(s.gains.kd, double(0.03f));
+    EXPECT_EQ(s.feedOverride, double(0.25f));
+    rig.worker.stopThread();
+}
+
 TEST(DncBusy, AHoldBehindAStartStillHomingIsNothingToDoNeverApplied) {
     // Issue 30 item 11: a Hold sent while a Start is on its way goes to the machine (the
     // snapshot cannot say yet whether a program runs); what it did is looked at once applied.
