@@ -153,6 +153,9 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
 
 MainWindow::~MainWindow() {
     qApp->removeEventFilter(this);
+    // The link's last lines (what its summaries hold back) reach the history while it is
+    // still here, as on the XY machines' screens.
+    dncLink()->stop();
     // Children are destroyed after this body: a focused gain field then loses focus and emits
     // editingFinished. Nothing may reach this half-destroyed window any more.
     for (QObject* child : findChildren<QObject*>())

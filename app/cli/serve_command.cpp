@@ -333,6 +333,9 @@ int serveCommand(const QStringList& args) {
         reportTimer.start(static_cast<int>(std::lround(reportS * 1000.0)));
     }
     QCoreApplication::exec();
+    // The history lines the summaries still hold (the last 10 s window's), before "stopped"
+    // (issue 30 item 5: they were lost).
+    server.flushHistory();
     if (realTime) say(timingLine(*realTime));  // since the last report, while the thread runs
     say(QStringLiteral("trilho-cli serve: stopped\n"));
     return kOk;
