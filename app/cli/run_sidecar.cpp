@@ -54,6 +54,10 @@ QString writeRunSidecar(const QString& tracePath, const MachineProfile& profile,
     c.periodS = periodS;
     c.rows = rows;
     c.abortReason = abortReason;
+    // Late periods lengthen the trace's steps: recorded, so that they are not read as another
+    // period (runSidecarContradiction).
+    c.tickJitterMs = options.tickJitterMs;
+    c.jitterRate = options.tickJitterMs > 0.0 ? options.jitterRate : 0.0;
     switch (profile.kind) {
         case MachineKind::Rail:
             c.law = profile.loop.law;

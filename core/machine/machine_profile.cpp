@@ -396,6 +396,8 @@ QString checkAcrossKeys(const MachineProfile& p) {
     return {};
 }
 
+QJsonObject plainJson(const MachineProfile& profile);  // below, beside machineProfileToJson
+
 }  // namespace
 
 ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin) {
@@ -510,6 +512,7 @@ ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin
         result.error = error;
         return result;
     }
+    p.origin = {root, plainJson(p)};
     result.profile = p;
     return result;
 }
@@ -527,7 +530,10 @@ ProfileLoad loadMachineProfile(const QString& path) {
         QByteArray(file.bytes.data(), static_cast<qsizetype>(file.bytes.size())), path);
 }
 
-QByteArray machineProfileToJson(const MachineProfile& profile) {
+namespace {
+
+/// The profile's keys and values, as for a profile made in code (no notes).
+QJsonObject plainJson(const MachineProfile& profile) {
     MachineProfile p = profile;
     QJsonObject root;
     auto lawName = [](LoopLaw law) {
@@ -549,6 +555,33 @@ QByteArray machineProfileToJson(const MachineProfile& profile) {
     forEachNumber(p, [&](const char* key, double& value, double, double) {
         insert(root, QString::fromLatin1(key).split(QLatin1Char('.')), 0, value);
     });
+    return root;
+}
+
+/// given, with every value of now that differs from asRead (changed since given was read) and
+/// every key of now that given lacks (the profile in full); given's other keys, its notes among
+/// them, as they were. Sections recursively.
+QJsonObject keptOver(QJsonObject given, const QJsonObject& asRead, const QJsonObject& now) {
+    for (auto it = now.begin(); it != now.end(); ++it) {
+        const QJsonValue was = given.value(it.key());
+        if (it.value().isObject())
+            given.insert(it.key(), keptOver(was.toObject(), asRead.value(it.key()).toObject(),
+                                            it.value().toObject()));
+        else if (was.isUndefined() || it.value() != asRead.value(it.key()))
+            given.insert(it.key(), it.value());
+    }
+    return given;
+}
+
+}  // namespace
+
+QByteArray machineProfileToJson(const MachineProfile& profile) {
+    QJsonObject root = plainJson(profile);
+    const ProfileOrigin& origin = profile.origin;
+    // Another kind's keys would not read back (a rail's "plant" in a DC table's profile).
+    if (!origin.given.isEmpty() &&
+        origin.asRead.value(QStringLiteral("kind")) == root.value(QStringLiteral("kind")))
+        root = keptOver(origin.given, origin.asRead, root);
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 

@@ -4,6 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QMap>
 #include <QTemporaryDir>
 #include <string>
 
@@ -143,6 +147,106 @@ TEST(MachineProfileStrict, SourceAndCommentStringsAreAllowedAnywhere) {
     EXPECT_EQ(load.profile->plant.gearRatio, 5.0);
     EXPECT_EQ(load.profile->loop.engineered.kp, 1.5);
     EXPECT_EQ(load.profile->limits.x.softMinMm, -100.0);
+}
+
+namespace {
+
+/// Every leaf of o by its dotted path ("loop.engineered.kp").
+void leaves(const QJsonObject& o, const QString& prefix, QMap<QString, QJsonValue>& into) {
+    for (auto it = o.begin(); it != o.end(); ++it) {
+        const QString path = prefix.isEmpty() ? it.key() : prefix + QLatin1Char('.') + it.key();
+        if (it.value().isObject())
+            leaves(it.value().toObject(), path, into);
+        else
+            into.insert(path, it.value());
+    }
+}
+
+QMap<QString, QJsonValue> leavesOf(const QByteArray& json) {
+    QMap<QString, QJsonValue> out;
+    leaves(QJsonDocument::fromJson(json).object(), QString(), out);
+    return out;
+}
+
+std::string shown(const QJsonValue& v) {
+    return QJsonDocument(QJsonArray{v}).toJson(QJsonDocument::Compact).toStdString();
+}
+
+}  // namespace
+
+// Issue 30 item 12: `tune auto --write-profile` wrote the tuned profile without the notes of
+// the one it read ("source", "comment"; `calibrate` keeps them). A profile read from JSON is
+// written back with every key of that JSON it does not change, notes included, and in full.
+TEST(MachineProfile, WritingBackKeepsTheNotesAndEveryKeyNotChanged) {
+    const QByteArray original = R"({"source": "the cell's drawings", "comment": "c",
+        "name": "rail-2",
+        "plant": {"source": "datasheet", "gearRatio": 5},
+        "loop": {"comment": "law chosen 2024", "samplePeriodS": 0.0010,
+                 "engineered": {"source": "tuned by hand", "kp": 1.5, "ki": 0.5}},
+        "limits": {"x": {"source": "drawing 3", "softMinMm": -100}}})";
+    const ProfileLoad load = machineProfileFromJson(original, QStringLiteral("t.json"));
+    ASSERT_TRUE(load.profile) << load.error.toStdString();
+    MachineProfile tuned = *load.profile;
+    tuned.loop.engineered.kp = 2.25;  // what a tuning changes
+    tuned.motion.accelerationMmS2 = 2000.0;
+    const QByteArray written = machineProfileToJson(tuned);
+    const QMap<QString, QJsonValue> before = leavesOf(original), after = leavesOf(written);
+    for (auto it = before.begin(); it != before.end(); ++it) {
+        if (it.key() == QLatin1String("loop.engineered.kp")) continue;
+        EXPECT_EQ(after.value(it.key()), it.value())
+            << it.key().toStdString() << ": " << shown(after.value(it.key())) << " written for "
+            << shown(it.value());
+    }
+    EXPECT_EQ(after.value(QStringLiteral("loop.engineered.kp")), QJsonValue(2.25));
+    EXPECT_EQ(after.value(QStringLiteral("motion.accelerationMmS2")), QJsonValue(2000.0));
+    // In full: every key of the plain profile is there.
+    const QMap<QString, QJsonValue> plain = leavesOf(machineProfileToJson(MachineProfile::rail()));
+    for (auto it = plain.begin(); it != plain.end(); ++it)
+        EXPECT_TRUE(after.contains(it.key())) << it.key().toStdString();
+    // It reads back as the tuned profile, and writes back the same bytes.
+    const ProfileLoad again = machineProfileFromJson(written, QStringLiteral("w.json"));
+    ASSERT_TRUE(again.profile) << again.error.toStdString();
+    EXPECT_EQ(again.profile->loop.engineered.kp, 2.25);
+    EXPECT_EQ(again.profile->plant.gearRatio, 5.0);
+    EXPECT_EQ(machineProfileToJson(*again.profile), written);
+    // A profile made in code has no notes to keep.
+    EXPECT_FALSE(machineProfileToJson(MachineProfile::rail()).contains("\"source\""));
+}
+
+TEST(MachineProfile, TheShippedTablesNotesAreWrittenBack) {
+    QFile f(QStringLiteral(TRILHO_RESOURCES_DIR "/machines/xy_dc_table.json"));
+    ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+    const QByteArray original = f.readAll();
+    const ProfileLoad load = machineProfileFromJson(original, QStringLiteral("xy_dc_table.json"));
+    ASSERT_TRUE(load.profile) << load.error.toStdString();
+    const QMap<QString, QJsonValue> before = leavesOf(original);
+    const QMap<QString, QJsonValue> after = leavesOf(machineProfileToJson(*load.profile));
+    int notes = 0;
+    for (auto it = before.begin(); it != before.end(); ++it) {
+        EXPECT_EQ(after.value(it.key()), it.value())
+            << it.key().toStdString() << ": " << shown(after.value(it.key())) << " written for "
+            << shown(it.value());
+        notes += it.key().endsWith(QLatin1String("source")) ||
+                 it.key().endsWith(QLatin1String("comment"));
+    }
+    EXPECT_GE(notes, 9);
+}
+
+// A profile whose kind was changed after it was read keeps none of the old kind's keys: what is
+// written is a profile of its new kind that reads back.
+TEST(MachineProfile, AProfileOfAnotherKindNowWritesNoKeyOfTheOld) {
+    const ProfileLoad load = machineProfileFromJson(R"({"source": "s", "plant": {"gearRatio": 5}})",
+                                                    QStringLiteral("t.json"));
+    ASSERT_TRUE(load.profile) << load.error.toStdString();
+    MachineProfile other = *load.profile;
+    const MachineProfile table = MachineProfile::xyDcTable();
+    other.kind = table.kind;
+    other.limits = table.limits;
+    other.motion = table.motion;
+    other.dcTable = table.dcTable;
+    const ProfileLoad again =
+        machineProfileFromJson(machineProfileToJson(other), QStringLiteral("w.json"));
+    EXPECT_TRUE(again.profile) << again.error.toStdString();
 }
 
 TEST(MachineProfileStrict, FiguresThatContradictEachOtherAreErrors) {
