@@ -185,8 +185,9 @@ TEST(TableLink, AJamCutsTheDrivesThenTheTableRunsAgain) {
     link.run(10.0);
     ASSERT_TRUE(link.host.failed());
     EXPECT_EQ(link.host.error(),
-              "the table cut its drives on the way to set point (200, 100) mm: over-current (a "
-              "jam or a collision?)");
+              "the table cut its drives on the way to set point (200, 100) mm: an over-current, "
+              "a following error, a move that never settled or its soft-limit guard (a CAN "
+              "does not say which)");
     EXPECT_EQ(link.device.stats().cut, 1u);
     std::printf("jam at 0.5 s: CAN at %.3f s (alarm %d behind it)\n", link.t,
                 static_cast<int>(link.device.stats().lastCut));
