@@ -384,6 +384,18 @@ QString checkAcrossKeys(const MachineProfile& p) {
                      QString::number(
                          static_cast<qint64>(plotterStepsFromOrigin(e.mm, e.origin, e.mmPerStep))));
         }
+        // Every run starts with a travel to the machine's zero (gcode.md, XyController): the
+        // wire must carry it too, or no run could start on the board.
+        for (const auto& e : {edges[0], edges[2]}) {
+            if (plotterWireSteps(0.0, e.origin, e.mmPerStep)) continue;
+            const QString axis = QString::fromLatin1(e.axis);
+            return QStringLiteral(
+                       "plotter.origin%1: every run starts at %2 0 mm, which the wire carries "
+                       "only with the origin at 0 mm or below, within 65535 steps: with "
+                       "plotter.mmPerStep%1 %3 that is %4 to 0 mm (got %5)")
+                .arg(axis, axis.toLower(), num(e.mmPerStep),
+                     num(-kPlotterWireMaxSteps * e.mmPerStep), num(e.origin));
+        }
     }
     if (rail && p.plant.endSwitchMm >= p.plant.hardStopMm)
         return QStringLiteral("plant.endSwitchMm must be inside plant.hardStopMm (got %1 and %2)")

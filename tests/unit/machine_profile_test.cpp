@@ -296,6 +296,11 @@ TEST(MachineProfileStrict, PlotterSoftLimitsMustFitTheWiresSixteenBitSteps) {
               "p.json: limits.x.softMinMm: the plotter's wire carries 0 to 65535 steps from the "
               "origin (16 bits); with plotter.originX 10 and plotter.mmPerStepX 0.1 that is 10 "
               "to 6563.5 mm (got 0, -100 steps)");
+    // Every run starts at (0, 0) mm: the wire must carry it as well.
+    EXPECT_EQ(error(R"({"x": {"softMinMm": 10, "softMaxMm": 300}})", R"({"originX": 10})"),
+              "p.json: plotter.originX: every run starts at x 0 mm, which the wire carries only "
+              "with the origin at 0 mm or below, within 65535 steps: with plotter.mmPerStepX 0.1 "
+              "that is -6553.5 to 0 mm (got 10)");
     // The edges: what rounds to a step the wire carries is carried (the host sends the
     // nearest step).
     EXPECT_EQ(error(R"({"x": {"softMinMm": 0, "softMaxMm": 6553.5}})"), "");
