@@ -268,6 +268,10 @@
         <translation>Cuentas perdidas: la cuenta difiere en %1 mm del recorrido que hizo el accionamiento, la posición es errónea y se cortó el accionamiento. Reduzca la velocidad o revise el encoder y la tarjeta contadora, reconozca y vuelva a referenciar.</translation>
     </message>
     <message>
+        <source>Runaway: seed 004&apos;s law drove an axis on, away from its set point (it acts on |e| with the direction fixed for the move, so an axis past its set point is driven further), and the drives were cut at the soft limit at %1 mm. Acknowledge, then move it back inside the limits.</source>
+        <translation>Embalamiento: la ley de la semilla 004 llevó un eje adelante, lejos de su punto de consigna (actúa sobre |e| con el sentido fijado para el movimiento, así que un eje que pasa su punto de consigna es llevado aún más lejos), y se cortaron los accionamientos en el límite de software en %1 mm. Reconozca y llévela de vuelta dentro de los límites.</translation>
+    </message>
+    <message>
         <source>%1: Travel to x=%2 y=%4 at maximum speed.</source>
         <translation>%1: Desplazamiento a x=%2 y=%4 a velocidad máxima.</translation>
     </message>
@@ -330,6 +334,10 @@
     <message>
         <source>Over-current: a motor of the table (x or y axis) drew too much current at %1 % PWM and the drives were cut. Free the axis, acknowledge, then home again.</source>
         <translation>Sobrecorriente: un motor de la mesa (eje x o y) consumió demasiada corriente a %1 % de PWM y se cortaron los accionamientos. Libere el eje, reconozca y vuelva a referenciar.</translation>
+    </message>
+    <message>
+        <source>Runaway: seed 004&apos;s law drove an axis of the table (x or y) on, away from its set point: it acts on |e| with the direction fixed for the move, so an axis that passes its set point is driven further. Both drives were cut at the soft limit at %1 mm. Acknowledge, then move the table back inside the limits (the seed-signed and engineered laws drive back instead).</source>
+        <translation>Embalamiento: la ley de la semilla 004 llevó un eje de la mesa (x o y) adelante, lejos de su punto de consigna: actúa sobre |e| con el sentido fijado para el movimiento, así que un eje que pasa su punto de consigna es llevado aún más lejos. Se cortaron ambos accionamientos en el límite de software en %1 mm. Reconozca y lleve la mesa de vuelta dentro de los límites (las leyes seed-signed y engineered la traen de vuelta).</translation>
     </message>
 </context>
 <context>

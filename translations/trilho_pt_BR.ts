@@ -268,6 +268,10 @@
         <translation>Contagens perdidas: a contagem difere em %1 mm do percurso que o acionamento fez, a posição está errada e o acionamento foi cortado. Reduza a velocidade ou verifique o encoder e a placa contadora, reconheça e refaça o referenciamento.</translation>
     </message>
     <message>
+        <source>Runaway: seed 004&apos;s law drove an axis on, away from its set point (it acts on |e| with the direction fixed for the move, so an axis past its set point is driven further), and the drives were cut at the soft limit at %1 mm. Acknowledge, then move it back inside the limits.</source>
+        <translation>Disparo: a lei da semente 004 levou um eixo adiante, para longe do seu ponto de ajuste (ela age sobre |e| com o sentido fixado para o movimento, então um eixo que passa do ponto de ajuste é levado ainda mais longe), e os acionamentos foram cortados no limite de software em %1 mm. Reconheça e leve-a de volta para dentro dos limites.</translation>
+    </message>
+    <message>
         <source>%1: Travel to x=%2 y=%4 at maximum speed.</source>
         <translation>%1: Deslocamento para x=%2 y=%4 com velocidade máxima.</translation>
     </message>
@@ -330,6 +334,10 @@
     <message>
         <source>Over-current: a motor of the table (x or y axis) drew too much current at %1 % PWM and the drives were cut. Free the axis, acknowledge, then home again.</source>
         <translation>Sobrecorrente: um motor da mesa (eixo x ou y) puxou corrente demais a %1 % de PWM e os acionamentos foram cortados. Libere o eixo, reconheça e refaça o referenciamento.</translation>
+    </message>
+    <message>
+        <source>Runaway: seed 004&apos;s law drove an axis of the table (x or y) on, away from its set point: it acts on |e| with the direction fixed for the move, so an axis that passes its set point is driven further. Both drives were cut at the soft limit at %1 mm. Acknowledge, then move the table back inside the limits (the seed-signed and engineered laws drive back instead).</source>
+        <translation>Disparo: a lei da semente 004 levou um eixo da mesa (x ou y) adiante, para longe do seu ponto de ajuste: ela age sobre |e| com o sentido fixado para o movimento, então um eixo que passa do ponto de ajuste é levado ainda mais longe. Os dois acionamentos foram cortados no limite de software em %1 mm. Reconheça e leve a mesa de volta para dentro dos limites (as leis seed-signed e engineered a trazem de volta).</translation>
     </message>
 </context>
 <context>

@@ -17,6 +17,7 @@
 
 #include "core/gcode/source_file.h"
 #include "core/machine/json_duplicate_keys.h"
+#include "core/machine/plotter_wire_steps.h"
 
 namespace trilho {
 
@@ -358,6 +359,45 @@ QString checkAcrossKeys(const MachineProfile& p) {
     const bool rail = p.kind == MachineKind::Rail;  // plant and loop are the rail's
     if (!rail && !p.limits.hasY)
         return QStringLiteral("limits.hasY: an XY machine has a y axis (got false)");
+    if (p.kind == MachineKind::Plotter) {
+        // Issue 30 item 4: every target the compiler lets through (inside the soft limits) must
+        // be one the wire carries (plotter_wire_steps.h); a limit outside it was clamped on the
+        // wire and reported reached.
+        const PlotterParams& pl = p.plotter;
+        const struct {
+            const char* key;
+            double mm;
+            const char* axis;
+            double origin, mmPerStep;
+        } edges[] = {{"limits.x.softMinMm", x.softMinMm, "X", pl.originX, pl.mmPerStepX},
+                     {"limits.x.softMaxMm", x.softMaxMm, "X", pl.originX, pl.mmPerStepX},
+                     {"limits.y.softMinMm", y.softMinMm, "Y", pl.originY, pl.mmPerStepY},
+                     {"limits.y.softMaxMm", y.softMaxMm, "Y", pl.originY, pl.mmPerStepY}};
+        for (const auto& e : edges) {
+            if (plotterWireSteps(e.mm, e.origin, e.mmPerStep)) continue;
+            const QString axis = QString::fromLatin1(e.axis);
+            return QStringLiteral(
+                       "%1: the plotter's wire carries 0 to 65535 steps from the origin (16 "
+                       "bits); with plotter.origin%2 %3 and plotter.mmPerStep%2 %4 that is %3 to "
+                       "%5 mm (got %6, %7 steps)")
+                .arg(QString::fromLatin1(e.key), axis, num(e.origin), num(e.mmPerStep),
+                     num(e.origin + kPlotterWireMaxSteps * e.mmPerStep), num(e.mm),
+                     QString::number(
+                         static_cast<qint64>(plotterStepsFromOrigin(e.mm, e.origin, e.mmPerStep))));
+        }
+        // Every run starts with a travel to the machine's zero (gcode.md, XyController): the
+        // wire must carry it too, or no run could start on the board.
+        for (const auto& e : {edges[0], edges[2]}) {
+            if (plotterWireSteps(0.0, e.origin, e.mmPerStep)) continue;
+            const QString axis = QString::fromLatin1(e.axis);
+            return QStringLiteral(
+                       "plotter.origin%1: every run starts at %2 0 mm, which the wire carries "
+                       "only with the origin at 0 mm or below, within 65535 steps: with "
+                       "plotter.mmPerStep%1 %3 that is %4 to 0 mm (got %5)")
+                .arg(axis, axis.toLower(), num(e.mmPerStep),
+                     num(-kPlotterWireMaxSteps * e.mmPerStep), num(e.origin));
+        }
+    }
     if (rail && p.plant.endSwitchMm >= p.plant.hardStopMm)
         return QStringLiteral("plant.endSwitchMm must be inside plant.hardStopMm (got %1 and %2)")
             .arg(num(p.plant.endSwitchMm), num(p.plant.hardStopMm));

@@ -41,7 +41,6 @@ class PlotterLinkMotion final : public SerialLinkMotion {
     void hostRetry() override { host_.retry(); }
     void hostRestart() override { host_.restart(); }
     void hostClear() override { host_.clear(); }
-    std::uint16_t toSteps(double mm, double mmPerStep) const;
 
     PlotterParams params_;
     PlotterHost host_;

@@ -52,6 +52,7 @@ void SerialLinkMotion::stop() {
 }
 
 AlarmCode SerialLinkMotion::fault() const {
+    if (refused_ != AlarmCode::None) return refused_;
     return hostFailed() || !lost_.empty() ? AlarmCode::DeviceLink : AlarmCode::None;
 }
 

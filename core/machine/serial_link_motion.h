@@ -35,9 +35,10 @@ class SerialLinkMotion : public XyMotion {
     void stop() override;
     void cut() override { stop(); }
     AlarmCode fault() const override;
-    double faultValue() const override { return 0.0; }
-    /// The link's fault clears by resume() (a retry) or stop(), not by an acknowledge.
-    void clearFault() override {}
+    double faultValue() const override { return refused_ != AlarmCode::None ? refusedValue_ : 0.0; }
+    /// The link's fault clears by resume() (a retry) or stop(), not by an acknowledge; a refused
+    /// target (refuse()) by the acknowledge.
+    void clearFault() override { refused_ = AlarmCode::None, refusedValue_ = 0.0; }
     bool homed() const override { return homed_; }
     XyPoint commanded() const override { return commanded_; }
     XySample sample() const override;
@@ -53,6 +54,10 @@ class SerialLinkMotion : public XyMotion {
   protected:
     /// A move (or homing) was handed to the host: it is done when the host is idle again.
     void asked(XyPoint target, bool homing, PenState pen);
+    /// A target the board's wire cannot carry (issue 30 item 4): nothing was sent for it, and
+    /// fault() is code (value: the wire's bound, mm) until the alarm is acknowledged, so the run
+    /// stops there instead of going on as if the board had been told.
+    void refuse(AlarmCode code, double value) { refused_ = code, refusedValue_ = value; }
     double nowS() const { return nowS_; }
 
     virtual void hostReceive(std::uint8_t byte, double nowS) = 0;
@@ -77,6 +82,8 @@ class SerialLinkMotion : public XyMotion {
     XyPoint pending_{};
     XyPoint confirmed_{};  ///< the last point the board confirmed
     PenState pen_ = PenState::None;
+    AlarmCode refused_ = AlarmCode::None;  ///< refuse()
+    double refusedValue_ = 0.0;
 };
 
 }  // namespace trilho

@@ -99,6 +99,9 @@ void XyController::moveProgram(XyPoint target, XyMove kind, double speedFraction
     status_.target = target;
     motion_->beginMove(target, kind, std::clamp(speedFraction * status_.feedOverride, 0.001, 1.0));
     haveTarget_ = true, lastTarget_ = target;
+    // A move the motion refused at once (a target the plotter's wire cannot carry, issue 30
+    // item 4) stops the run here: the blocks after it are neither started nor said.
+    if (motion_->fault() != AlarmCode::None) checkMotionFault();
 }
 
 void XyController::startMove(const Block& b) {

@@ -219,9 +219,12 @@ void TableHost::answered(const table_wire::DecodedAnswer& a, double nowS) {
             return;
         default:  // kCan
             // The table stopped where the cut found it: where it stands is no longer known.
+            // The seed's answer carries no cause: every cut the board makes is named (issue 30
+            // item 6: its soft-limit guard is one).
             reached_.reset();
             fail("the table cut its drives on the way to " + name(current_) +
-                 ": over-current (a jam or a collision?)");
+                 ": an over-current, a following error, a move that never settled or its "
+                 "soft-limit guard (a CAN does not say which)");
             return;
     }
 }

@@ -366,6 +366,57 @@ TEST(MachineProfileStrict, SeedTableProfileCarriesTheSeedsPlant) {
     EXPECT_NEAR(-t.y.classic.b1 * 0.005 / (t.y.classic.b0 + t.y.classic.b1), 0.03, 1e-4);
 }
 
+// Issue 30 item 4: the plotter's wire carries unsigned 16-bit step counts from the origin
+// (seed 001 3.1.3.1): 0..65535 steps an axis. A profile whose soft limits reach outside was
+// accepted, and the host then sent 0 steps for x -20 and 65535 for x 7000 and ended "Program
+// finished !" there. Such a profile is refused, naming the key, its value and the range.
+TEST(MachineProfileStrict, PlotterSoftLimitsMustFitTheWiresSixteenBitSteps) {
+    auto error = [](const char* limits, const char* plotter = "") {
+        const std::string json = std::string(R"({"kind": "xy-plotter", "limits": )") + limits +
+                                 (*plotter ? std::string(R"(, "plotter": )") + plotter : "") + "}";
+        return machineProfileFromJson(QByteArray::fromStdString(json), QStringLiteral("p.json"))
+            .error.toStdString();
+    };
+    EXPECT_EQ(error(R"({"x": {"softMinMm": -20}})"),
+              "p.json: limits.x.softMinMm: the plotter's wire carries 0 to 65535 steps from the "
+              "origin (16 bits); with plotter.originX 0 and plotter.mmPerStepX 0.1 that is 0 to "
+              "6553.5 mm (got -20, -200 steps)");
+    EXPECT_EQ(error(R"({"x": {"softMaxMm": 7000}})"),
+              "p.json: limits.x.softMaxMm: the plotter's wire carries 0 to 65535 steps from the "
+              "origin (16 bits); with plotter.originX 0 and plotter.mmPerStepX 0.1 that is 0 to "
+              "6553.5 mm (got 7000, 70000 steps)");
+    EXPECT_EQ(error(R"({"y": {"softMinMm": -0.1, "softMaxMm": 210}})"),
+              "p.json: limits.y.softMinMm: the plotter's wire carries 0 to 65535 steps from the "
+              "origin (16 bits); with plotter.originY 0 and plotter.mmPerStepY 0.1 that is 0 to "
+              "6553.5 mm (got -0.1, -1 steps)");
+    // Through the steps a millimetre and the origin: a finer step shrinks the range...
+    EXPECT_EQ(error(R"({"x": {"softMaxMm": 300}})", R"({"mmPerStepX": 0.001})"),
+              "p.json: limits.x.softMaxMm: the plotter's wire carries 0 to 65535 steps from the "
+              "origin (16 bits); with plotter.originX 0 and plotter.mmPerStepX 0.001 that is 0 "
+              "to 65.535 mm (got 300, 300000 steps)");
+    // ... and an origin off the corner moves it.
+    EXPECT_EQ(error(R"({"x": {"softMinMm": -20, "softMaxMm": 300}})", R"({"originX": -20})"), "");
+    EXPECT_EQ(error(R"({"x": {"softMinMm": 0, "softMaxMm": 300}})", R"({"originX": 10})"),
+              "p.json: limits.x.softMinMm: the plotter's wire carries 0 to 65535 steps from the "
+              "origin (16 bits); with plotter.originX 10 and plotter.mmPerStepX 0.1 that is 10 "
+              "to 6563.5 mm (got 0, -100 steps)");
+    // Every run starts at (0, 0) mm: the wire must carry it as well.
+    EXPECT_EQ(error(R"({"x": {"softMinMm": 10, "softMaxMm": 300}})", R"({"originX": 10})"),
+              "p.json: plotter.originX: every run starts at x 0 mm, which the wire carries only "
+              "with the origin at 0 mm or below, within 65535 steps: with plotter.mmPerStepX 0.1 "
+              "that is -6553.5 to 0 mm (got 10)");
+    // The edges: what rounds to a step the wire carries is carried (the host sends the
+    // nearest step).
+    EXPECT_EQ(error(R"({"x": {"softMinMm": 0, "softMaxMm": 6553.5}})"), "");
+    EXPECT_EQ(error(R"({"x": {"softMinMm": -0.04, "softMaxMm": 6553.54}})"), "");
+    EXPECT_NE(error(R"({"x": {"softMaxMm": 6553.56}})").find("(got 6553.56, 65536 steps)"),
+              std::string::npos);
+    // The shipped profile fits.
+    const ProfileLoad shipped =
+        loadMachineProfile(QStringLiteral(TRILHO_RESOURCES_DIR "/machines/xy_plotter.json"));
+    EXPECT_TRUE(shipped.profile) << shipped.error.toStdString();
+}
+
 TEST(MachineProfileStrict, OnlyRegularFilesOfAtMostOneMegabyteAreRead) {
     const ProfileLoad zero = loadMachineProfile(QStringLiteral("/dev/zero"));
     EXPECT_EQ(zero.error.toStdString(),

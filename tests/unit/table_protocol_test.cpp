@@ -205,8 +205,9 @@ TEST(TableHost, CanFailsOverCurrentAndForgetsWhereTheTableIs) {
     run(host, table, 30.0);
     ASSERT_TRUE(host.failed());
     EXPECT_EQ(host.error(),
-              "the table cut its drives on the way to set point (200, 100) mm: over-current (a "
-              "jam or a collision?)");
+              "the table cut its drives on the way to set point (200, 100) mm: an over-current, "
+              "a following error, a move that never settled or its soft-limit guard (a CAN "
+              "does not say which)");
     EXPECT_FALSE(host.reached());
     host.poll(100.0);  // failed: nothing is sent, nothing times out
     EXPECT_TRUE(host.takeOutput().empty());
