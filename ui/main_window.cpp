@@ -329,8 +329,8 @@ void MainWindow::selectManual() {
     link_.selectManual();
 }
 
-void MainWindow::emergencyStop() {
-    link_.emergencyStop();
+void MainWindow::emergencyStop(std::int64_t requestedNs) {
+    link_.emergencyStop(requestedNs);
 }
 
 void MainWindow::resetEmergencyStop() {

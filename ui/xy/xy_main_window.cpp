@@ -396,8 +396,9 @@ void XyMainWindow::selectManual() {
     link_.post([](XyController& c) { c.selectManual(); });
 }
 
-void XyMainWindow::emergencyStop() {
-    link_.post([](XyController& c) { c.emergencyStop(); });
+void XyMainWindow::emergencyStop(std::int64_t requestedNs) {
+    // Past the command queue and its lock: the worker cuts the drives first in its next period.
+    link_.requestEmergencyStop(requestedNs);
 }
 
 void XyMainWindow::resetEmergencyStop() {

@@ -90,7 +90,7 @@ class XyMainWindow : public OperatorFrame {
     void selectManual() override;
     void requestAutomatic() override;
     void requestHome() override;
-    void emergencyStop() override;
+    void emergencyStop(std::int64_t requestedNs) override;
     void resetEmergencyStop() override;
     void acknowledgeAlarms() override;
     void controlledStop() override;
