@@ -300,10 +300,7 @@ void WorkbenchWindow::build() {
         runs_.erase(runs_.begin() + row);
         refreshRuns();
     });
-    connect(clearRuns_, &QPushButton::clicked, this, [this] {
-        runs_.clear();
-        refreshRuns();
-    });
+    connect(clearRuns_, &QPushButton::clicked, this, &WorkbenchWindow::clearRuns);
 }
 
 void WorkbenchWindow::retranslate() {
@@ -513,6 +510,11 @@ void WorkbenchWindow::refreshRuns() {
     overlay_->setRuns(runs_);
     if (selected_ >= static_cast<int>(runs_.size())) selected_ = -1;
     terms_->setRun(selected_ >= 0 ? runs_[static_cast<std::size_t>(selected_)] : nullptr);
+}
+
+void WorkbenchWindow::clearRuns() {
+    runs_.clear();
+    refreshRuns();
 }
 
 void WorkbenchWindow::selectRun(int index) {
@@ -761,12 +763,17 @@ bool WorkbenchWindow::saveRun(int index, const QString& csvPath, QString* error)
 }
 
 bool WorkbenchWindow::loadRun(const QString& csvPath, QString* error) {
-    RunLoad load = loadRunRecord(csvPath);
+    RunLoad load = runReader_(csvPath);
     if (!load.record) {
         if (error) *error = load.error;
+        emit runLoaded(load.error);
         return false;
     }
-    return addRecord(std::move(*load.record), QFileInfo(csvPath).fileName(), error);
+    QString why;
+    const bool ok = addRecord(std::move(*load.record), QFileInfo(csvPath).fileName(), &why);
+    if (error) *error = why;
+    emit runLoaded(ok ? QString() : why);
+    return ok;
 }
 
 void WorkbenchWindow::saveSelectedRun() {

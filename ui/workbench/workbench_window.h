@@ -60,9 +60,16 @@ class WorkbenchWindow : public QMainWindow {
     /// The plotter's workbench has only the margin test (no encoder to measure a step with).
     bool plotter() const { return profile_.kind == MachineKind::Plotter; }
     const std::vector<WorkbenchRunPtr>& runs() const { return runs_; }
+    /// Runs > Clear: every run goes.
+    void clearRuns();
     bool addRecord(RunRecord record, const QString& name, QString* error = nullptr);
     bool saveRun(int index, const QString& csvPath, QString* error);
     bool loadRun(const QString& csvPath, QString* error);
+    /// A run file being read and measured now.
+    bool loadingRun() const { return loadingRuns_ > 0; }
+    /// Reads a run file (core/tuning's loadRunRecord); tests replace it to hold a load.
+    using RunReader = std::function<RunLoad(const QString& csvPath)>;
+    void setRunReader(RunReader reader) { runReader_ = std::move(reader); }
     /// The profile with the last autotune's gains, if one passed.
     const std::optional<MachineProfile>& tunedProfile() const { return tuned_; }
 
@@ -74,6 +81,8 @@ class WorkbenchWindow : public QMainWindow {
 
   signals:
     void runFinished();
+    /// A load asked for with loadRun ended: error is empty when the run was added.
+    void runLoaded(const QString& error);
 
   protected:
     void changeEvent(QEvent* e) override;
@@ -110,6 +119,8 @@ class WorkbenchWindow : public QMainWindow {
     int selected_ = -1;
     int nextNumber_ = 1;
     std::optional<MachineProfile> tuned_;
+    RunReader runReader_ = [](const QString& path) { return loadRunRecord(path); };
+    int loadingRuns_ = 0;
 
     QTabWidget* tabs_;
     QScrollArea* formScroll_;
