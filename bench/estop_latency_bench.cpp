@@ -7,10 +7,12 @@
 // thread wrote the drive to zero (EStopStamp). Then the screens reset the E-stop and start the
 // program again, and the next key waits for it to run.
 //   trilho-bench-estop [--machine rail|dc_table|both] [--samples N] [--run-seconds S]
-//                      [--run FILE.csv] [--seed K]
+//                      [--run FILE.csv] [--seed K] [--stall-stacks MS]
 // Prints, per machine: key event to drive at zero (median, p99, max), of which key event to the
 // filter (the screens' thread's queue) and filter to drive at zero (the machine's thread), and
 // the longest the screens' thread did not answer a 2 ms timer. QT_QPA_PLATFORM=offscreen.
+// --stall-stacks MS: what holds the screens' thread: each time it has not answered for MS, a
+// watcher thread interrupts it (SIGUSR2) and prints its stack to stderr (c++filt reads it).
 #include <QApplication>
 #include <QDockWidget>
 #include <QElapsedTimer>
@@ -19,6 +21,10 @@
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QTimer>
+
+#include <execinfo.h>
+#include <pthread.h>
+#include <signal.h>
 
 #include <algorithm>
 #include <atomic>
@@ -43,12 +49,52 @@ using namespace trilho;
 
 namespace {
 
+/// --stall-stacks: the screens' thread's stack whenever it has not answered for a while.
+namespace stacks {
+pthread_t screens;
+std::atomic<std::int64_t> beatNs{0};  ///< the screens' thread's last 2 ms tick
+void* frames[64];
+std::atomic<int> depth{0};
+void onSignal(int) {
+    depth = backtrace(frames, 64);  // on the screens' thread, interrupted where it is
+}
+void start(double thresholdMs) {
+    screens = pthread_self();
+    signal(SIGUSR2, onSignal);
+    void* warm[1];
+    backtrace(warm, 1);  // loads what backtrace needs before a signal handler calls it
+    auto* beat = new QTimer(qApp);
+    beat->setInterval(2);
+    QObject::connect(beat, &QTimer::timeout, [] { beatNs = monotonicNs(); });
+    beat->start();
+    const auto threshold = static_cast<std::int64_t>(thresholdMs * 1e6);
+    std::thread([threshold] {
+        std::int64_t reported = 0;
+        while (true) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+            const std::int64_t last = beatNs.load();
+            const std::int64_t late = monotonicNs() - last;
+            if (last == 0 || last == reported || late < threshold) continue;
+            reported = last;
+            depth = 0;
+            pthread_kill(screens, SIGUSR2);
+            for (int i = 0; i < 1000 && depth == 0; ++i)
+                std::this_thread::sleep_for(std::chrono::microseconds(100));
+            std::fprintf(stderr, "=== the screens' thread has not answered for %.1f ms:\n",
+                         static_cast<double>(late) / 1e6);
+            backtrace_symbols_fd(frames, depth, 2);
+        }
+    }).detach();
+}
+}  // namespace stacks
+
 struct Options {
     QString machine = QStringLiteral("both");
     int samples = 100;
     double runSeconds = 600.0;  // the 10-minute run
     QString run;                // an existing run instead of the generated one
     std::uint64_t seed = 1;
+    double stallStacksMs = 0.0;  ///< 0: off
 };
 
 /// A run of the rail at 1 kHz with every channel (loop terms too), seconds long: a shuttle of
@@ -155,18 +201,15 @@ void openEveryDock(QMainWindow* w) {
     }
 }
 
-/// The workbench loads the run again and again: a load is always under way or about to be.
-/// Each load adds a run; the earlier ones are cleared so memory holds about two.
+/// The workbench loads the run again and again: one load always under way, the next asked as
+/// the last one's run is added (and the run before it cleared, so memory holds about two).
 void keepLoading(ui::WorkbenchWindow* bench, const QString& path, std::atomic<bool>& stop) {
-    auto* timer = new QTimer(bench);
-    timer->setInterval(50);
-    QObject::connect(timer, &QTimer::timeout, bench, [bench, path, &stop] {
+    QObject::connect(bench, &ui::WorkbenchWindow::runLoaded, bench, [bench, path, &stop] {
         if (stop.load()) return;
-        if (!bench->runs().empty()) bench->clearRuns();
-        QString error;
-        bench->loadRun(path, &error);
+        if (bench->runs().size() > 1) bench->clearRuns();
+        bench->loadRun(path);
     });
-    timer->start();
+    bench->loadRun(path);
 }
 
 Samples measure(Machine& m, const Options& o, const QString& runPath, double* stallMs) {
@@ -191,8 +234,14 @@ Samples measure(Machine& m, const Options& o, const QString& runPath, double* st
         std::mt19937_64 rng(o.seed);
         std::uniform_real_distribution<double> pause(0.1, 2.0);  // s after the program started
         for (int k = 0; k < o.samples; ++k) {
-            while (!m.running())
+            for (int waited = 0; !m.running(); ++waited) {
                 std::this_thread::sleep_for(std::chrono::milliseconds(1));
+                if (waited == 60000)
+                    std::fprintf(stderr,
+                                 "trilho-bench-estop: the program has not run again for 60 s "
+                                 "(sample %d)\n",
+                                 k + 1);
+            }
             std::this_thread::sleep_for(std::chrono::duration<double>(pause(rng)));
             if (!m.running()) {
                 --k;  // it stopped on its own (an alarm): not a sample of a running program
@@ -244,16 +293,19 @@ int main(int argc, char** argv) {
             o.run = args[++i];
         else if (a == QLatin1String("--seed") && more)
             o.seed = args[++i].toULongLong();
+        else if (a == QLatin1String("--stall-stacks") && more)
+            o.stallStacksMs = std::max(1.0, args[++i].toDouble());
         else {
             std::fprintf(stderr,
                          "usage: trilho-bench-estop [--machine rail|dc_table|both] [--samples N] "
-                         "[--run-seconds S] [--run FILE.csv] [--seed K]\n");
+                         "[--run-seconds S] [--run FILE.csv] [--seed K] [--stall-stacks MS]\n");
             return 2;
         }
     }
     // The offscreen platform has no keyboard: the first key event makes one, here on the
     // screens' thread rather than in the thread that posts the keys.
     { const QKeyEvent first(QEvent::KeyPress, Qt::Key_F1, Qt::NoModifier); }
+    if (o.stallStacksMs > 0.0) stacks::start(o.stallStacksMs);
     QTemporaryDir dir;
     QString runPath = o.run;
     if (runPath.isEmpty()) {
@@ -279,11 +331,16 @@ int main(int argc, char** argv) {
         Machine m;
         m.window = &window;
         m.workbench = window.workbench();
-        m.running = [&] { return link.worker().snapshot().state == ControllerState::Running; };
+        m.running = [&] {
+            const ControllerState s = link.worker().snapshot().state;
+            return s == ControllerState::Running || s == ControllerState::Waiting;
+        };
         m.keepRunning = [&] {
             const ControllerStatus& s = link.status();
             if (s.state == ControllerState::EStop)
                 link.resetEmergencyStop();
+            else if (s.state == ControllerState::Alarm)
+                link.acknowledge();
             else if (s.state == ControllerState::Manual)
                 link.selectAutomatic();
             else if (s.state == ControllerState::AutoIdle && s.homed && !window.compiling())
@@ -321,11 +378,16 @@ int main(int argc, char** argv) {
         Machine m;
         m.window = &window;
         m.workbench = window.workbench();
-        m.running = [&] { return link.status().state == ControllerState::Running; };
+        m.running = [&] {
+            const ControllerState s = link.status().state;
+            return s == ControllerState::Running || s == ControllerState::Waiting;
+        };
         m.keepRunning = [&] {
             const XyStatus s = link.status();
             if (s.state == ControllerState::EStop)
                 link.post([](XyController& c) { c.resetEmergencyStop(); });
+            else if (s.state == ControllerState::Alarm)
+                link.post([](XyController& c) { c.acknowledgeAlarms(); });
             else if (s.state == ControllerState::Manual || s.state == ControllerState::AutoIdle)
                 window.startProgram(false);
             else

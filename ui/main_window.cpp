@@ -26,6 +26,7 @@
 #include "core/gcode/modal_state.h"
 #include "core/machine/event_text.h"
 #include "host/common/data_paths.h"
+#include "ui/background_pool.h"
 #include "ui/code_editor.h"
 #include "ui/dnc_link.h"
 #include "ui/dro_panel.h"
@@ -460,7 +461,7 @@ void MainWindow::compileEditor(bool showInAlarms,
         watcher->deleteLater();
         finish(watcher->result());
     });
-    watcher->setFuture(QtConcurrent::run([text = std::move(text), options] {
+    watcher->setFuture(QtConcurrent::run(backgroundPool(), [text = std::move(text), options] {
         return std::make_shared<Program>(compile(*text, options));
     }));
 }

@@ -20,6 +20,7 @@
 #include <QVBoxLayout>
 #include "core/gcode/source_file.h"
 
+#include "ui/background_pool.h"
 #include "ui/code_editor.h"
 #include "ui/gcode_highlighter.h"
 #include "ui/large_program_view.h"
@@ -171,7 +172,7 @@ bool ProgramPanel::load(const QString& path, QString* error) {
         apply(std::move(l));
         emit loaded();
     });
-    watcher->setFuture(QtConcurrent::run([path] { return read(path); }));
+    watcher->setFuture(QtConcurrent::run(backgroundPool(), [path] { return read(path); }));
     return true;
 }
 

@@ -11,13 +11,16 @@
 #include <QMenuBar>
 #include <QProcess>
 #include <QPushButton>
+#include <QSemaphore>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTextBlock>
+#include <QThreadPool>
 #include <QToolButton>
 #include <QWheelEvent>
+#include <atomic>
 
 #include <QCheckBox>
 #include <QLabel>
@@ -36,6 +39,7 @@
 #include "ui/simulation_panel.h"
 #include "ui/start_screen.h"
 #include "ui/theme.h"
+#include "ui/workbench/workbench_window.h"
 
 using namespace trilho;
 using namespace trilho::ui;
@@ -506,6 +510,58 @@ class MainWindowTest : public QObject {
         QTRY_COMPARE(status().state, ControllerState::EStop);
         QCOMPARE(link_->rail().driveCode(), 128);
         QVERIFY(window_->emergencyButton()->isVisible());
+    }
+
+    // Issue 30 item 3: the workbench ran on the screens' thread, so loading a 10-minute run held
+    // F1 for 1.7-1.9 s while the rail went on. A load now returns to the event loop before the
+    // file is read, and an E-stop pressed meanwhile reaches the drive before the load ends. The
+    // reader is held on purpose (a gate) until the drive has been seen at zero: no timing.
+    void anEStopDuringARunLoadReachesTheDriveBeforeTheLoadEnds() {
+        RunRecord record;
+        record.conditions.profile = MachineProfile::rail();
+        for (int k = 0; k < 100; ++k) {
+            record.channels.timeS.push_back(k * 0.001);
+            record.channels.blockN.push_back(10);
+            for (auto* c : {&record.channels.setpointMm, &record.channels.positionMm,
+                            &record.channels.errorMm, &record.channels.velocityMmS})
+                c->push_back(k < 10 ? 0.0 : 10.0);
+            record.channels.drive.push_back(128);
+        }
+        const QString path = dir_.filePath(QStringLiteral("held.csv"));
+        QString error;
+        QVERIFY2(saveRunRecord(record, path, nullptr, &error), qPrintable(error));
+        QTest::keyClick(window_.get(), '>');  // the drive on, as a moving rail's
+        QTRY_COMPARE(int(status().manualCode), 129);
+        window_->openWorkbench();
+        WorkbenchWindow* bench = window_->workbench();
+        QSemaphore gate;
+        std::atomic<bool> read{false};
+        bench->setRunReader([&gate, &read](const QString& csv) {
+            gate.tryAcquire(1, 5000);  // held until the test has seen the E-stop (5 s at most)
+            read = true;
+            return loadRunRecord(csv);
+        });
+        QSignalSpy loaded(bench, &WorkbenchWindow::runLoaded);
+        bench->loadRun(path);
+        // Back at the event loop while the reader is still held: nothing read, nothing added.
+        QVERIFY(bench->loadingRun());
+        QVERIFY(!read);
+        QCOMPARE(loaded.count(), 0);
+        // Not on Qt's global pool: Qt paints with it, and a repaint waited there for the load.
+        QCOMPARE(QThreadPool::globalInstance()->activeThreadCount(), 0);
+        const std::uint64_t before = link_->lastEmergencyStop().count;
+        QCoreApplication::postEvent(bench,
+                                    new QKeyEvent(QEvent::KeyPress, Qt::Key_F1, Qt::NoModifier));
+        QTRY_VERIFY(link_->lastEmergencyStop().count > before);
+        QVERIFY(!read);  // the drive went to zero while the load was still held
+        QCOMPARE(link_->rail().driveCode(), 128);
+        QTRY_COMPARE(status().state, ControllerState::EStop);
+        gate.release();
+        QTRY_COMPARE(loaded.count(), 1);
+        QVERIFY2(loaded.at(0).at(0).toString().isEmpty(),
+                 qPrintable(loaded.at(0).at(0).toString()));
+        QCOMPARE(bench->runs().size(), std::size_t(1));
+        QVERIFY(!bench->loadingRun());
     }
 
     void editingAGainReachesTheLoop() {
