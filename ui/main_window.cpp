@@ -411,7 +411,8 @@ void MainWindow::compileEditor(bool showInAlarms,
     CompileOptions options;
     options.dialect = dialect_;
     options.machine = link_.profile().limits;
-    options.maxDiagnostics = 1000;  // a file of garbage lists the first thousand, counts the rest
+    // A file of garbage lists the first hundred, counts the rest (kListedDiagnostics).
+    options.maxDiagnostics = static_cast<std::size_t>(kListedDiagnostics);
     // What the operator sees is what runs: the editor's text, saved or not.
     std::shared_ptr<const std::string> text = program_->source();
     // What compiles must still be what is selected and shown when it ends: another program
@@ -432,7 +433,7 @@ void MainWindow::compileEditor(bool showInAlarms,
         QStringList messages;
         for (const Diagnostic& d : program->diagnostics)
             messages << diagnosticMessage(d);
-        program_->showDiagnostics(program->diagnostics, messages);
+        program_->showDiagnostics(program->diagnostics, messages, program->diagnosticsOmitted);
         if (showInAlarms) {
             panel_->clearAlarms();
             for (qsizetype i = 0; i < messages.size(); ++i)

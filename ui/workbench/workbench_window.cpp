@@ -794,9 +794,8 @@ bool WorkbenchWindow::saveRun(int index, const QString& csvPath, QString* error)
         emit runSaved(csvPath, why);
     });
     watcher->setFuture(QtConcurrent::run(backgroundPool(), [run = std::move(run), csvPath] {
-        QString why;
-        if (!saveRunRecord(run->record, csvPath, &run->metrics, &why) && why.isEmpty())
-            why = tr("cannot save '%1'").arg(csvPath);
+        QString why;  // set whenever saveRunRecord fails ("cannot write 'run.csv': ...")
+        saveRunRecord(run->record, csvPath, &run->metrics, &why);
         return why;
     }));
     return true;
