@@ -2764,12 +2764,28 @@
         <translation>Prueba de margen rechazada: %1</translation>
     </message>
     <message>
-        <source>%1: the run has no samples</source>
-        <translation>%1: el ensayo no tiene muestras</translation>
-    </message>
-    <message>
         <source>No run is selected.</source>
         <translation>Ningún ensayo seleccionado.</translation>
+    </message>
+    <message>
+        <source>Saving %1...</source>
+        <translation>Guardando %1...</translation>
+    </message>
+    <message>
+        <source>Saved %1 and %2.</source>
+        <translation>Guardados %1 y %2.</translation>
+    </message>
+    <message>
+        <source>Loading %1...</source>
+        <translation>Cargando %1...</translation>
+    </message>
+    <message>
+        <source>Load run</source>
+        <translation>Cargar ensayo</translation>
+    </message>
+    <message>
+        <source>%1: the run has no samples</source>
+        <translation>%1: el ensayo no tiene muestras</translation>
     </message>
     <message>
         <source>Save run</source>
@@ -2778,14 +2794,6 @@
     <message>
         <source>Run records (*.csv)</source>
         <translation>Registros de ensayo (*.csv)</translation>
-    </message>
-    <message>
-        <source>Saved %1 and %2.</source>
-        <translation>Guardados %1 y %2.</translation>
-    </message>
-    <message>
-        <source>Load run</source>
-        <translation>Cargar ensayo</translation>
     </message>
     <message>
         <source>Run records and traces (*.csv)</source>
@@ -2849,6 +2857,10 @@
     <message>
         <source>Feed override %1 %</source>
         <translation>Corrección de avance %1 %</translation>
+    </message>
+    <message>
+        <source>Loading %1 (%2 MB)...</source>
+        <translation>Cargando %1 (%2 MB)...</translation>
     </message>
     <message>
         <source>the pen lifts and the carriage runs to the origin sensors, where both axes are zeroed (0, 0).</source>

@@ -12,6 +12,7 @@
 #include <QtConcurrent/QtConcurrentRun>
 
 #include "core/machine/journal.h"
+#include "ui/background_pool.h"
 
 namespace trilho {
 namespace ui {
@@ -48,7 +49,7 @@ HistoryPanel::HistoryPanel(QWidget* parent) : QWidget(parent) {
                 QMessageBox::warning(this, tr("Export history"), watcher->result());
             emit exported();
         });
-        watcher->setFuture(QtConcurrent::run([journal = journal_, f] {
+        watcher->setFuture(QtConcurrent::run(backgroundPool(), [journal = journal_, f] {
             QString error;
             return Journal::exportJournalCsv(journal, f, &error) ? QString() : error;
         }));

@@ -52,7 +52,10 @@ class MachineLink : public QObject {
     void hold() { send(CommandKind::Hold); }
     void resume() { send(CommandKind::Resume); }
     void stop() { worker_->requestStop(); }
-    void emergencyStop() { worker_->requestEmergencyStop(); }
+    /// requestedNs (monotonicNs()): when the request arrived (0: now); see lastEmergencyStop().
+    void emergencyStop(std::int64_t requestedNs = 0) { worker_->requestEmergencyStop(requestedNs); }
+    /// The last E-stop: its request's arrival and the servo tick's drive at zero (issue 30).
+    EStopStamp lastEmergencyStop() const { return worker_->lastEmergencyStop(); }
     void resetEmergencyStop() { send(CommandKind::ResetEStop); }
     void acknowledge() { send(CommandKind::Acknowledge); }
     void setSingleBlock(bool on) { send(CommandKind::SingleBlock, on ? 1 : 0); }

@@ -26,6 +26,7 @@
 #include "core/gcode/modal_state.h"
 #include "core/machine/event_text.h"
 #include "host/common/data_paths.h"
+#include "ui/background_pool.h"
 #include "ui/code_editor.h"
 #include "ui/dnc_link.h"
 #include "ui/dro_panel.h"
@@ -336,8 +337,8 @@ void MainWindow::selectManual() {
     link_.selectManual();
 }
 
-void MainWindow::emergencyStop() {
-    link_.emergencyStop();
+void MainWindow::emergencyStop(std::int64_t requestedNs) {
+    link_.emergencyStop(requestedNs);
 }
 
 void MainWindow::resetEmergencyStop() {
@@ -420,7 +421,8 @@ void MainWindow::compileEditor(bool showInAlarms,
     CompileOptions options;
     options.dialect = dialect_;
     options.machine = link_.profile().limits;
-    options.maxDiagnostics = 1000;  // a file of garbage lists the first thousand, counts the rest
+    // A file of garbage lists the first hundred, counts the rest (kListedDiagnostics).
+    options.maxDiagnostics = static_cast<std::size_t>(kListedDiagnostics);
     // What the operator sees is what runs: the editor's text, saved or not.
     std::shared_ptr<const std::string> text = program_->source();
     // What compiles must still be what is selected and shown when it ends: another program
@@ -441,7 +443,7 @@ void MainWindow::compileEditor(bool showInAlarms,
         QStringList messages;
         for (const Diagnostic& d : program->diagnostics)
             messages << diagnosticMessage(d);
-        program_->showDiagnostics(program->diagnostics, messages);
+        program_->showDiagnostics(program->diagnostics, messages, program->diagnosticsOmitted);
         if (showInAlarms) {
             panel_->clearAlarms();
             for (qsizetype i = 0; i < messages.size(); ++i)
@@ -470,7 +472,7 @@ void MainWindow::compileEditor(bool showInAlarms,
         watcher->deleteLater();
         finish(watcher->result());
     });
-    watcher->setFuture(QtConcurrent::run([text = std::move(text), options] {
+    watcher->setFuture(QtConcurrent::run(backgroundPool(), [text = std::move(text), options] {
         return std::make_shared<Program>(compile(*text, options));
     }));
 }

@@ -80,7 +80,7 @@ class MainWindow : public OperatorFrame {
     void selectManual() override;
     void requestAutomatic() override;
     void requestHome() override;
-    void emergencyStop() override;
+    void emergencyStop(std::int64_t requestedNs) override;
     void resetEmergencyStop() override;
     void acknowledgeAlarms() override;
     void controlledStop() override;  ///< Esc, Space, PARA and Stop: in either mode

@@ -19,6 +19,7 @@
 #include <QToolBar>
 #include <QToolButton>
 
+#include "core/runtime/estop_stamp.h"
 #include "translations/i18n.h"
 #include "ui/confirm_box.h"
 #include "ui/dnc_dialog.h"
@@ -138,7 +139,7 @@ void OperatorFrame::buildFrame(DncLink* dnc, QAbstractButton* estop, QAbstractBu
                        "padding: 4px 10px; }"));
     faultArmedAction_ = safetyBar_->addWidget(faultArmed_);
     faultArmedAction_->setVisible(false);
-    connect(estop_, &QAbstractButton::clicked, this, [this] { emergencyStop(); });
+    connect(estop_, &QAbstractButton::clicked, this, [this] { emergencyStop(monotonicNs()); });
     connect(resetEstop_, &QAbstractButton::clicked, this, [this] { resetEmergencyStop(); });
     connect(ack_, &QAbstractButton::clicked, this, [this] { acknowledgeAlarms(); });
     connect(homeButton_, &QAbstractButton::clicked, this, [this] { requestHome(); });
@@ -390,9 +391,10 @@ bool OperatorFrame::eventFilter(QObject* watched, QEvent* event) {
     if (event->type() != QEvent::KeyPress) return QMainWindow::eventFilter(watched, event);
     auto* key = static_cast<QKeyEvent*>(event);
     // E-stop keys (Pause/Break and F1): no menu, list or dialog uses them, so they trip
-    // wherever the focus is, in any of the program's windows, popups included.
+    // wherever the focus is, in any of the program's windows, popups included. The key's
+    // arrival is stamped first: the machine keeps it with the time its drive went to zero.
     if (key->key() == Qt::Key_Pause || key->key() == Qt::Key_F1) {
-        emergencyStop();
+        emergencyStop(monotonicNs());
         return true;
     }
     // Esc closes the menu, drop-down or dialog that is open; only on the bare main screen is

@@ -11,6 +11,7 @@
 #include <QByteArray>
 #include <QList>
 #include <QMainWindow>
+#include <cstdint>
 #include <functional>
 
 #include "core/machine/machine_kind.h"
@@ -96,8 +97,10 @@ class OperatorFrame : public QMainWindow {
     /// Command > Automatic and Home: each asks first, naming what moves.
     virtual void requestAutomatic() = 0;
     virtual void requestHome() = 0;
-    /// Pause/Break and F1, wherever the focus is.
-    virtual void emergencyStop() = 0;
+    /// Pause/Break and F1, wherever the focus is, and the E-stop button. requestedNs
+    /// (monotonicNs()) is when the key reached the screens' thread (or the button was clicked):
+    /// the machine keeps it beside the time its drive was written to zero (issue 30 item 3).
+    virtual void emergencyStop(std::int64_t requestedNs) = 0;
     virtual void resetEmergencyStop() = 0;
     virtual void acknowledgeAlarms() = 0;
     /// Esc and Space on the bare main screen: a controlled stop, never the E-stop.

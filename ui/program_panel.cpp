@@ -18,8 +18,10 @@
 #include <QStackedWidget>
 #include <QVBoxLayout>
 #include "core/files/atomic_file.h"
+#include "core/gcode/diagnostic_text.h"
 #include "core/gcode/source_file.h"
 
+#include "ui/background_pool.h"
 #include "ui/code_editor.h"
 #include "ui/gcode_highlighter.h"
 #include "ui/large_program_view.h"
@@ -65,12 +67,13 @@ ProgramPanel::ProgramPanel(QWidget* parent) : QWidget(parent) {
         if (!save(&error)) QMessageBox::warning(this, tr("Save"), error);
     });
     connect(startHere_, &QPushButton::clicked, this, &ProgramPanel::startFromCursorRequested);
-    connect(list_, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
-        goToLine(item->data(Qt::UserRole).toInt(), item->data(Qt::UserRole + 1).toInt());
-    });
-    connect(list_, &QListWidget::itemClicked, this, [this](QListWidgetItem* item) {
-        goToLine(item->data(Qt::UserRole).toInt(), item->data(Qt::UserRole + 1).toInt());
-    });
+    // A diagnostic's line (the last line, "... and N more", has none).
+    auto goToItem = [this](QListWidgetItem* item) {
+        if (const int line = item->data(Qt::UserRole).toInt(); line > 0)
+            goToLine(line, item->data(Qt::UserRole + 1).toInt());
+    };
+    connect(list_, &QListWidget::itemActivated, this, goToItem);
+    connect(list_, &QListWidget::itemClicked, this, goToItem);
     connect(editor_->document(), &QTextDocument::modificationChanged, this,
             &ProgramPanel::dirtyChanged);
     retranslate();
@@ -171,7 +174,7 @@ bool ProgramPanel::load(const QString& path, QString* error) {
         apply(std::move(l));
         emit loaded();
     });
-    watcher->setFuture(QtConcurrent::run([path] { return read(path); }));
+    watcher->setFuture(QtConcurrent::run(backgroundPool(), [path] { return read(path); }));
     return true;
 }
 
@@ -249,7 +252,7 @@ void ProgramPanel::setExecutingLine(int line) {
 }
 
 void ProgramPanel::showDiagnostics(const std::vector<Diagnostic>& diagnostics,
-                                   const QStringList& messages) {
+                                   const QStringList& messages, std::size_t omitted) {
     list_->clear();
     for (std::size_t i = 0; i < diagnostics.size() && static_cast<qsizetype>(i) < messages.size();
          ++i) {
@@ -264,6 +267,10 @@ void ProgramPanel::showDiagnostics(const std::vector<Diagnostic>& diagnostics,
         item->setData(Qt::UserRole, static_cast<int>(d.line));
         item->setData(Qt::UserRole + 1, static_cast<int>(std::max<std::uint32_t>(1, d.column)));
         item->setForeground(Qt::darkRed);
+    }
+    if (omitted > 0) {
+        auto* more = new QListWidgetItem(omittedDiagnostics(omitted), list_);
+        more->setFlags(Qt::ItemIsEnabled);  // no line to go to
     }
     if (large_mode_)
         large_->setDiagnostics(diagnostics);

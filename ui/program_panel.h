@@ -21,14 +21,21 @@ namespace ui {
 class CodeEditor;
 class LargeProgramView;
 
-/// Above either bound a program opens read-only in LargeProgramView: a QPlainTextEdit holding
-/// 50,000 lines already takes about 40 MB and half a second; the rail's programs are hundreds
-/// of lines.
-inline constexpr std::size_t kLargeProgramBytes = 2 * 1024 * 1024;
-inline constexpr int kLargeProgramLines = 50000;
+/// Above either bound a program opens read-only in LargeProgramView (issue 30 item 3): no
+/// handler may hold the screens' thread, and with it the E-stop key, longer than 20 ms, and the
+/// editor takes its whole text at once (its colours with it), on that thread: measured in the
+/// rail's window on the 2-core development machine (other builds running), 1,000 lines 10 ms,
+/// 2,000 lines 15-19 ms, 9,000 lines 150-230 ms, 49,000 lines 0.4-0.5 s; 2,000 lines of 36
+/// characters 14-17 ms. The shipped programs are at most 82 lines; the 1996 ones hundreds.
+inline constexpr std::size_t kLargeProgramBytes = 32 * 1024;
+inline constexpr int kLargeProgramLines = 1000;
 /// A file larger than this is read and indexed on a worker thread, so that the screens (E-stop
-/// and Stop among them) keep answering while it loads.
-inline constexpr qint64 kAsyncLoadBytes = 1024 * 1024;
+/// and Stop among them) keep answering while it loads: every file the editor may not take.
+inline constexpr qint64 kAsyncLoadBytes = static_cast<qint64>(kLargeProgramBytes);
+/// Diagnostics the screens list (and mark) at most; the rest are counted ("... and 800 more
+/// diagnostic(s) not listed") and the summary counts all: listing 1,000 held the screens'
+/// thread 30-50 ms, 100 3-5 ms.
+inline constexpr int kListedDiagnostics = 100;
 
 class ProgramPanel : public QWidget {
     Q_OBJECT
@@ -51,7 +58,10 @@ class ProgramPanel : public QWidget {
     /// A read-only large program whose file changed (time or size) since it was read.
     bool changedOnDisk() const;
     bool dirty() const;
-    void showDiagnostics(const std::vector<Diagnostic>& diagnostics, const QStringList& messages);
+    /// The compile's diagnostics (at most kListedDiagnostics) and, when omitted is not 0, a last
+    /// line saying how many more were found.
+    void showDiagnostics(const std::vector<Diagnostic>& diagnostics, const QStringList& messages,
+                         std::size_t omitted = 0);
     void setExecutingLine(int line);
     /// 1-based line of the cursor (for "start from the selected block").
     int cursorLine() const;

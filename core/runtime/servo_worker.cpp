@@ -76,6 +76,7 @@ std::uint64_t ServoWorker::pushLocked(CommandKind kind, std::int64_t i, double a
         refusedCommands_.fetch_add(1);
         return 0;
     }
+    lastQueuedSeq_.store(nextSeq_, std::memory_order_release);
     return nextSeq_++;
 }
 
@@ -101,6 +102,26 @@ std::uint64_t ServoWorker::loadProgram(std::shared_ptr<const Program> program,
         pendingProgram_ = std::move(program);
     }
     return pushLocked(CommandKind::LoadProgram, 0, 0.0, 0.0, 0.0);
+}
+
+void ServoWorker::requestEmergencyStop(std::int64_t requestedNs) {
+    if (requestedNs <= 0) requestedNs = monotonicNs();
+    // The fence first (raised, never lowered), then the request that publishes it.
+    const std::uint64_t queued = lastQueuedSeq_.load(std::memory_order_acquire);
+    std::uint64_t fence = estopFence_.load(std::memory_order_relaxed);
+    while (fence < queued && !estopFence_.compare_exchange_weak(fence, queued)) {
+    }
+    // A request already pending keeps its (earlier) time: the latency is the first key's.
+    std::int64_t none = 0;
+    estopRequestNs_.compare_exchange_strong(none, requestedNs);
+}
+
+void ServoWorker::serveEmergencyStop() {
+    const std::int64_t requested = estopRequestNs_.exchange(0);
+    if (requested == 0) return;
+    controller_.emergencyStop();  // writes the drive to zero (RailServo::emergencyStop)
+    const std::int64_t zero = monotonicNs();
+    estopStamp_.store({requested, zero, ++estopCount_});
 }
 
 void ServoWorker::apply(const Command& c) {
@@ -145,7 +166,10 @@ void ServoWorker::run() {
         const double dt = static_cast<double>(wake - lastWake) * 1e-9;
         lastWake = wake;
 
-        if (estopFlag_.exchange(false)) controller_.emergencyStop();
+        serveEmergencyStop();
+        // Commands queued before the last E-stop request are older than it: each is followed
+        // by the E-stop again, so the state is the E-stop's whatever they were.
+        const std::uint64_t fence = estopFence_.load(std::memory_order_acquire);
         if (stopFlag_.exchange(false)) {
             controller_.stop();
             controller_.jogStop();
@@ -153,9 +177,14 @@ void ServoWorker::run() {
         }
         if (watchdogFlag_.exchange(false)) controller_.raiseAlarm(AlarmCode::LoopOverrun);
         Command cmd;
-        if (deferredLoad_) apply(*deferredLoad_);
+        auto applyInOrder = [&](const Command& c) {
+            apply(c);
+            if (c.seq <= fence && controller_.status().state != ControllerState::EStop)
+                controller_.emergencyStop();
+        };
+        if (deferredLoad_) applyInOrder(*deferredLoad_);
         for (int k = 0; k < 16 && !deferredLoad_ && commands_.pop(cmd); ++k)
-            apply(cmd);
+            applyInOrder(cmd);
         if (tickHook_) tickHook_();
         // A law change (a command just applied) brings its period: the next wake is one new
         // period after this one.

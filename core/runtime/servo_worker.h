@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "core/machine/rail_controller.h"
+#include "core/runtime/estop_stamp.h"
 #include "core/runtime/event_ring.h"
 #include "core/runtime/latency_stats.h"
 #include "core/runtime/seqlock.h"
@@ -112,7 +113,14 @@ class ServoWorker {
     std::uint64_t refusedCommands() const { return refusedCommands_.load(); }
     /// Bypass the queue: acted on at the very next tick.
     void requestStop() { stopFlag_.store(true); }
-    void requestEmergencyStop() { estopFlag_.store(true); }
+    /// The E-stop, past the queue: the next tick writes the drive to zero before anything else.
+    /// requestedNs (monotonicNs()) is when the request arrived, the E-stop key's arrival at the
+    /// screens; 0 means now. Lock-free and wait-free: one compare-and-swap, safe from any
+    /// thread. Commands queued before the request are older than it: the tick that applies one
+    /// applies the E-stop again after it (a Reset E-stop queued before F1 never undoes it).
+    void requestEmergencyStop(std::int64_t requestedNs = 0);
+    /// The last E-stop served: its request's time and the time the drive was written to zero.
+    EStopStamp lastEmergencyStop() const { return estopStamp_.load(); }
 
     ControllerStatus snapshot() const { return status_.load(); }
     std::uint64_t snapshotVersion() const { return status_.version(); }
@@ -170,7 +178,17 @@ class ServoWorker {
     bool fixedPeriod_;  ///< the constructor gave the period: a law change does not change it
     std::thread thread_, watchdogThread_;
     std::atomic<bool> running_{false};
-    std::atomic<bool> stopFlag_{false}, estopFlag_{false}, tracing_{false};
+    std::atomic<bool> stopFlag_{false}, tracing_{false};
+    /// The pending E-stop's request time (monotonicNs), 0 when none is pending.
+    std::atomic<std::int64_t> estopRequestNs_{0};
+    /// The last sequence number queued before the latest E-stop request: a command numbered
+    /// up to it is followed by the E-stop again when it is applied.
+    std::atomic<std::uint64_t> estopFence_{0};
+    std::atomic<std::uint64_t> lastQueuedSeq_{0};
+    SeqLock<EStopStamp> estopStamp_;
+    std::uint64_t estopCount_ = 0;  ///< servo thread only
+    /// Serves a pending E-stop request (servo thread): the drive to zero, then the stamp.
+    void serveEmergencyStop();
     std::atomic<bool> watchdogFlag_{false};
     std::atomic<std::uint64_t> watchdogTrips_{0};
     std::atomic<std::int64_t> heartbeatNs_{0};
@@ -205,8 +223,5 @@ class ServoWorker {
     std::uint64_t lateTickSeedUsed_ = 0;
     std::mt19937_64 lateTickRng_{1};
 };
-
-/// Current CLOCK_MONOTONIC time, ns.
-std::int64_t monotonicNs();
 
 }  // namespace trilho

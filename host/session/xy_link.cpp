@@ -1,5 +1,6 @@
 #include "host/session/xy_link.h"
 
+#include <QThread>
 #include <algorithm>
 #include <chrono>
 
@@ -41,14 +42,40 @@ XyLink::~XyLink() {
 
 void XyLink::post(std::function<void(XyController&)> cmd) {
     std::lock_guard<std::mutex> lock(mutex_);
-    commands_.push_back([cmd = std::move(cmd)](XyRunnable& r) { cmd(r.controller()); });
+    commands_.emplace_back(++posted_,
+                           [cmd = std::move(cmd)](XyRunnable& r) { cmd(r.controller()); });
+    lastPosted_.store(posted_, std::memory_order_release);
 }
 
 void XyLink::postToPlant(std::function<void(XyPlant&)> cmd) {
     std::lock_guard<std::mutex> lock(mutex_);
-    commands_.push_back([cmd = std::move(cmd)](XyRunnable& r) {
+    commands_.emplace_back(++posted_, [cmd = std::move(cmd)](XyRunnable& r) {
         if (XyPlant* plant = r.plant()) cmd(*plant);
     });
+    lastPosted_.store(posted_, std::memory_order_release);
+}
+
+void XyLink::requestEmergencyStop(std::int64_t requestedNs) {
+    if (requestedNs <= 0) requestedNs = monotonicNs();
+    // The fence first (raised, never lowered), then the request that publishes it.
+    const std::uint64_t posted = lastPosted_.load(std::memory_order_acquire);
+    std::uint64_t fence = estopFence_.load(std::memory_order_relaxed);
+    while (fence < posted && !estopFence_.compare_exchange_weak(fence, posted)) {
+    }
+    // A request already pending keeps its (earlier) time.
+    std::int64_t none = 0;
+    estopRequestNs_.compare_exchange_strong(none, requestedNs);
+    // A board on a line: its controller runs on this thread, between two of its steps; the
+    // drives are cut now rather than at the step timer (which waits behind every other event).
+    if (drive_ == Drive::EventLoop && QThread::currentThread() == thread()) serveEmergencyStop();
+}
+
+void XyLink::serveEmergencyStop() {
+    const std::int64_t requested = estopRequestNs_.exchange(0);
+    if (requested == 0) return;
+    machine_->controller().emergencyStop();  // cuts both drives (XyMotion::cut)
+    const std::int64_t zero = monotonicNs();
+    estopStamp_.store({requested, zero, ++estopCount_});
 }
 
 XyStatus XyLink::status() const {
@@ -65,14 +92,20 @@ void XyLink::advance(double seconds) {
 }
 
 void XyLink::stepOnce(double dtS) {
-    std::vector<std::function<void(XyRunnable&)>> commands;
+    // The E-stop first, before the lock the GUI and the DNC link take to post.
+    serveEmergencyStop();
+    const std::uint64_t fence = estopFence_.load(std::memory_order_acquire);
+    std::vector<std::pair<std::uint64_t, std::function<void(XyRunnable&)>>> commands;
     {
         std::lock_guard<std::mutex> lock(mutex_);
         commands.swap(commands_);
     }
     XyController& c = machine_->controller();
-    for (auto& cmd : commands)
+    for (auto& [number, cmd] : commands) {
         cmd(*machine_);
+        // Posted before the last E-stop request: the E-stop stands after it.
+        if (number <= fence && c.status().state != ControllerState::EStop) c.emergencyStop();
+    }
     machine_->step(dtS);
     timeS_ += dtS;
     std::lock_guard<std::mutex> lock(mutex_);

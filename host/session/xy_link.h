@@ -16,6 +16,8 @@
 #include <vector>
 
 #include "core/machine/xy_controller.h"
+#include "core/runtime/estop_stamp.h"
+#include "core/runtime/seqlock.h"
 #include "hal/sim/xy_plant.h"
 
 namespace trilho {
@@ -52,6 +54,16 @@ class XyLink : public QObject {
     const MachineProfile& profile() const { return profile_; }
     /// Runs cmd on the controller before the next period (thread-safe, never blocks long).
     void post(std::function<void(XyController&)> cmd);
+    /// The E-stop, past the command queue and its lock (issue 30 item 3): the worker's next
+    /// period cuts the drives before it takes any command; a board on a line (its controller
+    /// runs on the link's thread) is cut at once when asked from that thread; in tests, at the next
+    /// advance(). requestedNs (monotonicNs()) is when the request arrived, the E-stop key's arrival
+    /// at the screens; 0 means now. Thread-safe and wait-free. Commands posted before the request
+    /// are older than it: the E-stop is applied again after them (a Reset E-stop posted before F1
+    /// never undoes it).
+    void requestEmergencyStop(std::int64_t requestedNs = 0);
+    /// The last E-stop served: its request's time and the time the drives were cut.
+    EStopStamp lastEmergencyStop() const { return estopStamp_.load(); }
     /// Runs cmd on the simulated plant before the next period (the Simulation dock's faults);
     /// nothing when the machine is a board on a line.
     void postToPlant(std::function<void(XyPlant&)> cmd);
@@ -73,6 +85,7 @@ class XyLink : public QObject {
 
   private:
     void stepOnce(double dtS);  ///< worker side: commands, step, publish
+    void serveEmergencyStop();  ///< worker side: a pending E-stop request, before the commands
     void run();                 ///< the worker thread's loop
     void poll();                ///< GUI side: takes what the worker published
 
@@ -83,7 +96,14 @@ class XyLink : public QObject {
     double clockS_ = 0.0;
     QTimer stepTimer_;
     mutable std::mutex mutex_;  ///< guards everything below it
-    std::vector<std::function<void(XyRunnable&)>> commands_;
+    /// Commands with the number they were posted under (the E-stop's fence compares it).
+    std::vector<std::pair<std::uint64_t, std::function<void(XyRunnable&)>>> commands_;
+    std::uint64_t posted_ = 0;                     ///< commands posted so far (mutex_)
+    std::atomic<std::uint64_t> lastPosted_{0};     ///< posted_, readable without the lock
+    std::atomic<std::int64_t> estopRequestNs_{0};  ///< the pending request's time; 0: none
+    std::atomic<std::uint64_t> estopFence_{0};     ///< the last command posted before it
+    SeqLock<EStopStamp> estopStamp_;
+    std::uint64_t estopCount_ = 0;  ///< worker side
     bool simulated_ = false;
     std::deque<XyTraceRow> rows_;
     std::vector<ControllerEvent> events_;

@@ -135,6 +135,59 @@ TEST(ServoWorker, EmergencyStopBypassesTheQueue) {
     rig.worker.stopThread();
 }
 
+// Issue 30 item 3: the E-stop bypasses the queue, so it must not be undone by a command that was
+// queued before it: a Reset E-stop waiting behind a client's commands when F1 is pressed (the
+// tick used to apply the E-stop first and the older reset after it: the rail was released).
+TEST(ServoWorker, ACommandQueuedBeforeTheEStopNeverUndoesIt) {
+    Rig rig;
+    rig.worker.start(false);
+    rig.worker.requestEmergencyStop();
+    ASSERT_TRUE(eventually([&] { return rig.worker.snapshot().state == ControllerState::EStop; }));
+    rig.worker.stopThread();
+    // Not running: the reset waits in the queue, then F1; both are taken at the next tick.
+    const std::uint64_t reset = rig.worker.send(CommandKind::ResetEStop);
+    ASSERT_NE(reset, 0u);
+    rig.worker.requestEmergencyStop();
+    rig.worker.start(false);
+    ASSERT_TRUE(eventually([&] { return rig.worker.snapshot().lastCommandSeq >= reset; }));
+    EXPECT_EQ(rig.worker.snapshot().state, ControllerState::EStop);
+    EXPECT_EQ(rig.rail.driveCode(), 128);
+    // A reset queued after the E-stop is the operator's next step: it applies.
+    const std::uint64_t after = rig.worker.send(CommandKind::ResetEStop);
+    ASSERT_TRUE(eventually([&] { return rig.worker.snapshot().lastCommandSeq >= after; }));
+    EXPECT_EQ(rig.worker.snapshot().state, ControllerState::Manual);
+    rig.worker.stopThread();
+}
+
+// Issue 30 item 3: the machine keeps the two times of an E-stop, the request's arrival and the
+// tick that wrote the drive to zero, for the benchmark and the tests to read.
+TEST(ServoWorker, AnEStopKeepsItsRequestAndDriveZeroTimes) {
+    Rig rig;
+    rig.worker.start(false);
+    for (int k = 0; k < 20; ++k)
+        rig.worker.send(CommandKind::ManualRight);
+    ASSERT_TRUE(eventually([&] { return rig.rail.driveCode() > 128; }));
+    EXPECT_EQ(rig.worker.lastEmergencyStop().count, 0u);
+    const std::int64_t keyNs = monotonicNs();
+    rig.worker.requestEmergencyStop(keyNs);
+    ASSERT_TRUE(eventually([&] { return rig.worker.lastEmergencyStop().count == 1; }));
+    const EStopStamp stamp = rig.worker.lastEmergencyStop();
+    EXPECT_EQ(stamp.requestNs, keyNs);
+    EXPECT_GE(stamp.driveZeroNs, keyNs);
+    EXPECT_LT(stamp.driveZeroNs, monotonicNs() + 1);
+    EXPECT_EQ(rig.rail.driveCode(), 128);
+    // Two requests before a tick are one E-stop, timed from the first.
+    rig.worker.stopThread();
+    const std::int64_t first = monotonicNs();
+    rig.worker.requestEmergencyStop(first);
+    rig.worker.requestEmergencyStop(first + 5'000'000);
+    rig.worker.start(false);
+    ASSERT_TRUE(eventually([&] { return rig.worker.lastEmergencyStop().count == 2; }));
+    EXPECT_EQ(rig.worker.lastEmergencyStop().requestNs, first);
+    rig.worker.stopThread();
+    EXPECT_EQ(rig.worker.lastEmergencyStop().count, 2u);
+}
+
 TEST(ServoWorker, AStalledLoopTripsTheWatchdog) {
     Rig rig;
     std::atomic<bool> stall{false};

@@ -9,6 +9,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLabel>
+#include <QListWidget>
 #include <QProcess>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -22,6 +23,7 @@
 #include "ui/workbench/margin_view.h"
 #include "ui/workbench/model_view.h"
 #include "ui/workbench/run_overlay.h"
+#include "ui/workbench/run_plot.h"
 #include "ui/workbench/terms_view.h"
 #include "ui/workbench/workbench_window.h"
 
@@ -164,7 +166,8 @@ class WorkbenchTest : public QObject {
         QVERIFY2(eq.contains(QStringLiteral("x (10.0000 - 10.0000) = 0.000")), qPrintable(eq));
     }
 
-    // A run saved (CSV + JSON sidecar) and loaded back has the same channels and metrics.
+    // A run saved (CSV + JSON sidecar) and loaded back has the same channels and metrics. Both
+    // on a worker thread (issue 30 item 3): each returns at once and says when it ended.
     void aRunSavedLoadsBackTheSame() {
         QTemporaryDir dir;
         WorkbenchWindow w(MachineProfile::rail());
@@ -172,9 +175,21 @@ class WorkbenchTest : public QObject {
         QVERIFY(waitRun(w));
         const QString path = dir.filePath(QStringLiteral("run.csv"));
         QString error;
+        QSignalSpy saved(&w, &WorkbenchWindow::runSaved);
         QVERIFY2(w.saveRun(0, path, &error), qPrintable(error));
+        QTRY_COMPARE(saved.count(), 1);
+        QCOMPARE(saved.at(0).at(0).toString(), path);
+        QVERIFY2(saved.at(0).at(1).toString().isEmpty(), qPrintable(saved.at(0).at(1).toString()));
+        QVERIFY(!w.savingRun());
         QVERIFY(QFile::exists(dir.filePath(QStringLiteral("run.run.json"))));
-        QVERIFY2(w.loadRun(path, &error), qPrintable(error));
+        QVERIFY(!w.saveRun(5, path, &error));  // no such run: said at once
+        QVERIFY(!error.isEmpty());
+        QSignalSpy loaded(&w, &WorkbenchWindow::runLoaded);
+        w.loadRun(path);
+        QVERIFY(w.loadingRun());
+        QTRY_COMPARE(loaded.count(), 1);
+        QVERIFY2(loaded.at(0).at(0).toString().isEmpty(),
+                 qPrintable(loaded.at(0).at(0).toString()));
         QCOMPARE(w.runs().size(), std::size_t(2));
         const WorkbenchRun& a = *w.runs()[0];
         const WorkbenchRun& b = *w.runs()[1];
@@ -188,9 +203,60 @@ class WorkbenchTest : public QObject {
         QVERIFY(bad.open(QIODevice::WriteOnly));
         bad.write("this,is\nnot,a run\n");
         bad.close();
-        QVERIFY(!w.loadRun(bad.fileName(), &error));
+        w.loadRun(bad.fileName());
+        QTRY_COMPARE(loaded.count(), 2);
+        error = loaded.at(1).at(0).toString();
         QVERIFY2(error.contains(QStringLiteral("bad.csv")), qPrintable(error));
         QCOMPARE(w.runs().size(), std::size_t(2));
+        QVERIFY(!w.loadingRun());
+    }
+
+    // Issue 30 item 3: a long run is drawn from at most kMaxPlotPoints points a graph, made with
+    // the run off the screens' thread, and every peak and dip is still on the plot.
+    void aLongRunIsDrawnFromItsEnvelopeWithEveryPeak() {
+        QTemporaryDir dir;
+        RunRecord r;
+        r.conditions.profile = MachineProfile::rail();
+        const std::size_t n = 300000;  // 5 minutes at 1 kHz
+        for (std::size_t k = 0; k < n; ++k) {
+            r.channels.timeS.push_back(static_cast<double>(k) * 1e-3);
+            r.channels.blockN.push_back(10);
+            const double x = k == 123457   ? 77.0
+                             : k == 234567 ? -55.0
+                                           : std::sin(static_cast<double>(k) * 1e-3);
+            for (auto* c : {&r.channels.setpointMm, &r.channels.positionMm, &r.channels.errorMm,
+                            &r.channels.velocityMmS})
+                c->push_back(x);
+            r.channels.drive.push_back(128);
+        }
+        const QString path = dir.filePath(QStringLiteral("long.csv"));
+        QString error;
+        QVERIFY2(saveRunRecord(r, path, nullptr, &error), qPrintable(error));
+        WorkbenchWindow w(MachineProfile::rail());
+        QSignalSpy loaded(&w, &WorkbenchWindow::runLoaded);
+        w.loadRun(path);
+        QTRY_VERIFY_WITH_TIMEOUT(loaded.count() == 1, 30000);
+        QVERIFY2(loaded.at(0).at(0).toString().isEmpty(),
+                 qPrintable(loaded.at(0).at(0).toString()));
+        QCOMPARE(w.runs()[0]->record.channels.size(), n);  // every tick kept for the numbers
+        QCustomPlot* plot = w.overlay()->plot();
+        QCOMPARE(plot->graphCount(), 2);
+        const auto data = plot->graph(0)->data();
+        QVERIFY(data->size() <= int(kMaxPlotPoints));
+        QVERIFY(data->size() >= int(kMaxPlotPoints) - 2);
+        bool found = false;
+        const QCPRange values = data->valueRange(found);
+        QVERIFY(found);
+        const double y0 = w.runs()[0]->metrics.ok ? w.runs()[0]->metrics.startMm : 0.0;
+        QCOMPARE(values.upper + y0, 77.0);   // the one-tick peak
+        QCOMPARE(values.lower + y0, -55.0);  // and the one-tick dip
+        // Hiding and showing it again shares the same points: nothing is made again.
+        w.findChild<QListWidget*>(QStringLiteral("runList"))->item(0)->setCheckState(Qt::Unchecked);
+        QCOMPARE(plot->graphCount(), 0);
+        QVERIFY(!w.runShown(0));
+        w.findChild<QListWidget*>(QStringLiteral("runList"))->item(0)->setCheckState(Qt::Checked);
+        QCOMPARE(plot->graphCount(), 2);
+        QCOMPARE(plot->graph(0)->data().data(), data.data());
     }
 
     // Autotune from the screens: the model page shows the fit, the design and prediction

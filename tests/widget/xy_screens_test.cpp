@@ -360,10 +360,12 @@ class XyScreensTest : public QObject {
         for (int i = 0; i < 5000; ++i)
             v.addFollowed({150 + 100 * std::cos(i * 0.01), 150 + 100 * std::sin(i * 0.01)}, true);
         v.grab();
+        // Above kSyncPathSegments the path is drawn on a worker thread (issue 30 item 3).
+        QVERIFY(v.followedCount() > WorkAreaView::kSyncPathSegments);
+        QTRY_VERIFY(!v.drawingPaths());
+        v.grab();
         const int rebuilds = v.cacheRebuilds();
         const std::size_t painted = v.segmentsPainted();
-        QVERIFY(v.followedCount() > 1000);
-        QCOMPARE(painted, v.followedCount() - 1);
         v.addFollowed({10, 10}, true);
         v.setTool({10, 10}, PenState::Down);
         v.grab();
@@ -372,6 +374,84 @@ class XyScreensTest : public QObject {
         v.resize(600, 500);  // a new size draws the picture again, once
         v.grab();
         QCOMPARE(v.cacheRebuilds(), rebuilds + 1);
+    }
+
+    // Issue 30 item 3: a 49,000-block program's path held the screens' thread 0.3 s to draw,
+    // a 200,000-block one 1.2 s. A long path is drawn on a worker thread: the picture returns
+    // without it, and shows it once drawn.
+    void aLongPathIsDrawnOffTheScreensThread() {
+        WorkAreaView v;
+        v.resize(500, 500);
+        v.setArea(QRectF(0, 0, 300, 300), {0, 0});
+        std::vector<PathSegment> path;
+        for (std::size_t i = 0; i <= WorkAreaView::kSyncPathSegments; ++i)
+            path.push_back({QPointF(0.1 * double(i % 2000), 153), QPointF(300, 153), true});
+        v.setPlannedPath(std::move(path));
+        v.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&v));
+        const QPoint on = v.toPixel({203, 153}).toPoint();  // off the grid lines
+        const QImage before = v.grab().toImage();
+        QVERIFY(v.drawingPaths());
+        QCOMPARE(before.pixelColor(on), QColor(250, 250, 245));  // the table, not yet the path
+        QTRY_VERIFY(!v.drawingPaths());
+        const QColor drawn = v.grab().toImage().pixelColor(on);
+        QVERIFY2(drawn.blue() > drawn.red() + 60, qPrintable(drawn.name()));  // the path's blue
+    }
+
+    // The followed path thinned (every 50,000 points) moved its indices and redrew the whole
+    // picture, up to 100,000 segments, on the screens' thread: now the picture stays.
+    void thinningTheFollowedPathDoesNotRedrawThePicture() {
+        WorkAreaView v;
+        v.resize(400, 400);
+        v.setArea(QRectF(0, 0, 300, 300), {0, 0});
+        v.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&v));
+        for (std::size_t i = 0; i + 1 < WorkAreaView::kMaxFollowed; ++i)
+            v.addFollowed({std::fmod(double(i) * 0.37, 300.0), std::fmod(double(i) * 0.11, 300.0)},
+                          true);
+        v.grab();
+        QTRY_VERIFY_WITH_TIMEOUT(!v.drawingPaths(), 30000);
+        v.grab();
+        const int rebuilds = v.cacheRebuilds();
+        const std::size_t painted = v.segmentsPainted();
+        v.addFollowed({1, 1}, true);  // the list is full: thinned
+        v.addFollowed({2, 2}, true);
+        QVERIFY(v.followedCount() < WorkAreaView::kMaxFollowed);
+        v.grab();
+        QCOMPARE(v.cacheRebuilds(), rebuilds);
+        QCOMPARE(v.segmentsPainted(), painted + 2);
+        QVERIFY(!v.drawingPaths());
+    }
+
+    // Issue 30 item 3 on the XY machines: a program the editor would not take is read, compiled
+    // and planned on a worker thread; nothing runs meanwhile, and a Start asked then runs once
+    // it is ready.
+    void aLargeProgramIsReadOffTheScreensThread() {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        w.setConfirmer([](const QString&, const QString&) { return true; });
+        QByteArray text = "G90\n";
+        for (int i = 0; i < 49000; ++i)
+            text += i % 2 ? "G01 X120.5 Y30 F40\n" : "G00 X10 Y200\n";
+        text += "M02\n";
+        const QString path = dir.filePath(QStringLiteral("big.G"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(text);
+        f.close();
+        QSignalSpy loaded(&w, &XyMainWindow::programLoaded);
+        QVERIFY(w.selectProgram(path));
+        QVERIFY(w.loadingProgram());  // returned before the file was read
+        QVERIFY(!w.program());
+        w.startProgram(false);  // kept until it is ready
+        QTRY_COMPARE_WITH_TIMEOUT(loaded.count(), 1, 30000);
+        QCOMPARE(loaded.at(0).at(0).toBool(), true);
+        QVERIFY(w.program());
+        QCOMPARE(w.workArea()->plannedPath().size(), std::size_t(49000));
+        QVERIFY(advanceUntil(
+            *link, [&] { return link->status().state == ControllerState::Running; }, 5.0));
     }
 
     void plotsRedrawOnlyOnceASecondWhileNothingMoves() {

@@ -1,5 +1,7 @@
 #include "ui/workbench/run_overlay.h"
 
+#include "ui/workbench/run_plot.h"
+
 #include <qcustomplot.h>
 #include <QEvent>
 #include <QHeaderView>
@@ -7,6 +9,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <cmath>
+#include <utility>
 
 namespace trilho {
 namespace ui {
@@ -105,8 +108,10 @@ QString RunOverlay::metricText(const WorkbenchRun& run, int row) {
     return QString::number(v, 'f', kRows[row].decimals);
 }
 
-void RunOverlay::setRuns(const std::vector<WorkbenchRunPtr>& runs) {
+void RunOverlay::setRuns(const std::vector<WorkbenchRunPtr>& runs, const std::vector<bool>& shown) {
     runs_ = runs;
+    shown_ = shown;
+    shown_.resize(runs_.size(), true);
     rebuild();
 }
 
@@ -115,37 +120,34 @@ void RunOverlay::changeEvent(QEvent* e) {
     QWidget::changeEvent(e);
 }
 
+void RunOverlay::showEvent(QShowEvent* e) {
+    QWidget::showEvent(e);
+    if (std::exchange(stale_, false)) plot_->replot();
+}
+
 void RunOverlay::rebuild() {
     plot_->clearGraphs();
     plot_->xAxis->setLabel(tr("time from the step (s)"));
     plot_->yAxis->setLabel(tr("displacement (mm)"));
     double maxT = 0.1;
-    for (const WorkbenchRunPtr& run : runs_) {
-        if (!run->shown) continue;
-        const RunChannels& c = run->record.channels;
-        const double t0 = run->metrics.ok ? run->metrics.stepTimeS : (c.size() ? c.timeS[0] : 0.0);
-        const double y0 =
-            run->metrics.ok ? run->metrics.startMm : (c.size() ? c.setpointMm[0] : 0.0);
-        QVector<double> t(static_cast<qsizetype>(c.size())), y(t.size()), sp(t.size());
-        for (std::size_t i = 0; i < c.size(); ++i) {
-            const auto k = static_cast<qsizetype>(i);
-            t[k] = c.timeS[i] - t0;
-            y[k] = c.positionMm[i] - y0;
-            sp[k] = c.setpointMm[i] - y0;
-        }
-        if (!t.isEmpty()) maxT = std::max(maxT, t.back());
+    for (std::size_t k = 0; k < runs_.size(); ++k) {
+        const WorkbenchRunPtr& run = runs_[k];
+        if (!shown_[k] || !run->plot) continue;
+        const RunPlot& points = *run->plot;
+        if (!points.response->isEmpty())
+            maxT = std::max(maxT, (points.response->constEnd() - 1)->key);
         QCPGraph* g = plot_->addGraph();
         g->setName(run->name);
-        g->setPen(QPen(run->color, 1.6));
-        g->setData(t, y, true);
+        g->setData(points.response);
+        setRunPen(g, QPen(run->color, 1.6));
         QCPGraph* s = plot_->addGraph();
-        s->setPen(QPen(run->color, 1, Qt::DashLine));
-        s->setData(t, sp, true);
+        s->setData(points.setpoint);
+        setRunPen(s, QPen(run->color, 1, Qt::DashLine));
         s->removeFromLegend();
     }
     plot_->rescaleAxes();
     plot_->xAxis->setRange(std::min(-0.01, plot_->xAxis->range().lower), maxT);
-    plot_->replot();
+    replotIfShown(this, plot_, stale_);
 
     table_->clear();
     table_->setRowCount(kMetricRows + 1);

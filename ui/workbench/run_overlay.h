@@ -18,7 +18,9 @@ class RunOverlay : public QWidget {
     Q_OBJECT
   public:
     explicit RunOverlay(QWidget* parent = nullptr);
-    void setRuns(const std::vector<WorkbenchRunPtr>& runs);
+    /// The runs, and for each whether its curves are drawn (empty: all); the points are the
+    /// runs' own (RunPlot), shared, so this never walks a run's ticks.
+    void setRuns(const std::vector<WorkbenchRunPtr>& runs, const std::vector<bool>& shown = {});
     QCustomPlot* plot() const { return plot_; }
     QTableWidget* table() const { return table_; }
     /// The metric rows' labels, in order (for tests and the CSV of the table).
@@ -31,12 +33,16 @@ class RunOverlay : public QWidget {
 
   protected:
     void changeEvent(QEvent* e) override;
+    /// A replot skipped while hidden (a tab not in front) is done when shown.
+    void showEvent(QShowEvent* e) override;
 
   private:
     void rebuild();
     QCustomPlot* plot_;
+    bool stale_ = false;  ///< a replot was skipped while hidden
     QTableWidget* table_;
     std::vector<WorkbenchRunPtr> runs_;
+    std::vector<bool> shown_;
 };
 
 }  // namespace ui

@@ -1,5 +1,7 @@
 #include "ui/workbench/terms_view.h"
 
+#include "ui/workbench/run_plot.h"
+
 #include <qcustomplot.h>
 #include <QDoubleSpinBox>
 #include <QEvent>
@@ -11,6 +13,7 @@
 #include <QSlider>
 #include <QSpinBox>
 #include <QVBoxLayout>
+#include <utility>
 
 namespace trilho {
 namespace ui {
@@ -145,29 +148,27 @@ void TermsView::setRun(WorkbenchRunPtr run) {
         equation_->setText(run_ ? tr("This run has no loop terms (a trace of a program): "
                                      "record a step test to see them.")
                                 : tr("Run a step test, then choose its column in the table."));
-        plot_->replot();
+        replotIfShown(this, plot_, stale_);
         return;
     }
     const RunChannels& c = run_->record.channels;
-    const bool table = isTable(run_->record);
-    QVector<double> t(c.timeS.begin(), c.timeS.end());
-    auto add = [&](const QString& name, const std::vector<double>& values, const QPen& pen,
-                   double offset = 0.0) {
-        if (values.size() != c.size()) return;
-        QVector<double> y(static_cast<qsizetype>(values.size()));
-        for (std::size_t i = 0; i < values.size(); ++i)
-            y[static_cast<qsizetype>(i)] = values[i] - offset;
+    // The points were made with the run, on a worker thread (RunPlot): nothing here walks the
+    // run's ticks, however long it is.
+    const RunPlot& points = *run_->plot;
+    auto add = [&](const QString& name, const QSharedPointer<QCPGraphDataContainer>& channel,
+                   const QPen& pen) {
+        if (!channel) return;
         QCPGraph* g = plot_->addGraph();
         g->setName(name);
-        g->setPen(pen);
-        g->setData(t, y, true);
+        g->setData(channel);
+        setRunPen(g, pen);
     };
-    add(tr("P"), c.pCodes, QPen(QColor(31, 119, 180), 1.2));
-    add(tr("I"), c.iCodes, QPen(QColor(44, 160, 44), 1.2));
-    if (!table) add(tr("D"), c.dCodes, QPen(QColor(214, 39, 40), 1.2));
-    add(tr("FF"), c.ffCodes, QPen(QColor(148, 103, 189), 1.2));
-    add(tr("sum before the clamp"), c.sumCodes, QPen(Qt::gray, 1, Qt::DashLine));
-    add(tr("drive written"), c.drive, QPen(Qt::black, 1.4), table ? 0.0 : 128.0);
+    add(tr("P"), points.p, QPen(QColor(31, 119, 180), 1.2));
+    add(tr("I"), points.i, QPen(QColor(44, 160, 44), 1.2));
+    add(tr("D"), points.d, QPen(QColor(214, 39, 40), 1.2));
+    add(tr("FF"), points.ff, QPen(QColor(148, 103, 189), 1.2));
+    add(tr("sum before the clamp"), points.sum, QPen(Qt::gray, 1, Qt::DashLine));
+    add(tr("drive written"), points.drive, QPen(Qt::black, 1.4));
     plot_->rescaleAxes();
     const int last = static_cast<int>(c.size()) - 1;
     for (auto* w : std::initializer_list<QWidget*>{slider_, tickBox_})
@@ -177,12 +178,14 @@ void TermsView::setRun(WorkbenchRunPtr run) {
     for (auto* w : std::initializer_list<QWidget*>{slider_, tickBox_})
         w->blockSignals(false);
     // Start at the step: that is where the lessons begin.
-    std::size_t first = 0;
-    while (first + 1 < c.size() && c.setpointMm[first] == c.setpointMm[0])
-        ++first;
     setWhatIfGains(run_->record.conditions.gains);
     retranslate();
-    setTick(static_cast<int>(first));
+    setTick(static_cast<int>(points.firstStepTick));
+}
+
+void TermsView::showEvent(QShowEvent* e) {
+    QWidget::showEvent(e);
+    if (std::exchange(stale_, false)) plot_->replot();
 }
 
 int TermsView::tick() const {
@@ -206,7 +209,7 @@ void TermsView::showTick() {
     const double t = at(c.timeS, k);
     cursor_->point1->setCoords(t, 0);
     cursor_->point2->setCoords(t, 1);
-    plot_->replot();
+    replotIfShown(this, plot_, stale_);
     equation_->setText(equationHtml(run_->record, k));
 }
 

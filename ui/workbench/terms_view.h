@@ -42,11 +42,14 @@ class TermsView : public QWidget {
 
   protected:
     void changeEvent(QEvent* e) override;
+    /// A replot skipped while hidden (a tab not in front) is done when shown.
+    void showEvent(QShowEvent* e) override;
 
   private:
     void retranslate();
     void showTick();
     QCustomPlot* plot_;
+    bool stale_ = false;  ///< a replot was skipped while hidden
     QCPItemStraightLine* cursor_ = nullptr;
     QSlider* slider_;
     QSpinBox* tickBox_;

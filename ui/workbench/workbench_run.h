@@ -1,6 +1,8 @@
 #pragma once
-// One run in the workbench: a recorded step test (or a loaded record) with its metrics, the
-// name the table and the legend show, and its colour in the overlay.
+// One run in the workbench: a recorded step test (or a loaded record) with its metrics and its
+// plot's points (made on the worker thread that ran or loaded it: ui/workbench/run_plot.h), the
+// name the table and the legend show, and its colour in the overlay. Shared and never changed
+// once added: a worker thread may still be saving it.
 #include <QColor>
 #include <QString>
 #include <memory>
@@ -11,13 +13,15 @@
 namespace trilho {
 namespace ui {
 
+struct RunPlot;
+
 struct WorkbenchRun {
     RunRecord record;
     StepMetrics metrics;
-    QString name;         ///< "1: engineered kp 1.2 ki 0.5 kd 0.02, 10 mm"
-    QString abortReason;  ///< empty when the test ran to its end
+    std::shared_ptr<const RunPlot> plot;  ///< never null once added
+    QString name;                         ///< "1: engineered kp 1.2 ki 0.5 kd 0.02, 10 mm"
+    QString abortReason;                  ///< empty when the test ran to its end
     QColor color;
-    bool shown = true;
 };
 
 using WorkbenchRunPtr = std::shared_ptr<const WorkbenchRun>;

@@ -32,9 +32,11 @@
 #include "host/session/sim_rail_rig.h"
 #include "host/tuning/plotter_margin_test.h"
 #include "host/tuning/relay_comparison.h"
+#include "ui/background_pool.h"
 #include "ui/workbench/margin_view.h"
 #include "ui/workbench/model_view.h"
 #include "ui/workbench/run_overlay.h"
+#include "ui/workbench/run_plot.h"
 #include "ui/workbench/terms_view.h"
 
 namespace trilho {
@@ -57,6 +59,24 @@ QDoubleSpinBox* spinBox(QWidget* parent, const char* name, double lo, double hi,
     return s;
 }
 
+/// A run as the workbench shows it, made on the worker thread that ran it: metrics as measured
+/// when it ran, and the plot's points.
+struct Prepared {
+    std::shared_ptr<WorkbenchRun> run;
+    QString gainChangeMissed;
+};
+
+Prepared prepare(StepTestResult r) {
+    Prepared p;
+    p.run = std::make_shared<WorkbenchRun>();
+    p.run->abortReason = std::move(r.abortReason);
+    p.run->metrics = r.metrics;
+    p.run->record = std::move(r.record);
+    p.run->plot = makeRunPlot(p.run->record, p.run->metrics);
+    p.gainChangeMissed = std::move(r.gainChangeMissed);
+    return p;
+}
+
 }  // namespace
 
 template <typename T>
@@ -66,10 +86,11 @@ void WorkbenchWindow::inBackground(std::function<T()> work, std::function<void(T
     connect(watcher, &QFutureWatcher<T>::finished, this, [this, watcher, done] {
         watcher->deleteLater();
         setBusy(false);
-        done(watcher->result());
+        // Taken out of the future: it keeps no copy that would free a run here later.
+        done(watcher->future().takeResult());
         emit runFinished();
     });
-    watcher->setFuture(QtConcurrent::run(std::move(work)));
+    watcher->setFuture(QtConcurrent::run(backgroundPool(), std::move(work)));
 }
 
 WorkbenchWindow::WorkbenchWindow(const MachineProfile& profile, QWidget* parent)
@@ -285,24 +306,22 @@ void WorkbenchWindow::build() {
         const int row = runList_->row(item);
         if (row < 0 || row >= static_cast<int>(runs_.size())) return;
         const bool shown = item->checkState() == Qt::Checked;
-        if (runs_[static_cast<std::size_t>(row)]->shown == shown) return;
-        auto copy = std::make_shared<WorkbenchRun>(*runs_[static_cast<std::size_t>(row)]);
-        copy->shown = shown;
-        runs_[static_cast<std::size_t>(row)] = copy;
-        overlay_->setRuns(runs_);
+        if (shown_[static_cast<std::size_t>(row)] == shown) return;
+        shown_[static_cast<std::size_t>(row)] = shown;
+        overlay_->setRuns(runs_, shown_);
     });
     connect(saveRun_, &QPushButton::clicked, this, &WorkbenchWindow::saveSelectedRun);
     connect(loadRun_, &QPushButton::clicked, this, &WorkbenchWindow::loadRunFromFile);
     connect(removeRun_, &QPushButton::clicked, this, [this] {
         const int row = runList_->currentRow();
         if (row < 0 || row >= static_cast<int>(runs_.size())) return;
+        std::vector<WorkbenchRunPtr> removed{runs_[static_cast<std::size_t>(row)]};
         runs_.erase(runs_.begin() + row);
+        shown_.erase(shown_.begin() + row);
         refreshRuns();
+        releaseInBackground(std::move(removed));
     });
-    connect(clearRuns_, &QPushButton::clicked, this, [this] {
-        runs_.clear();
-        refreshRuns();
-    });
+    connect(clearRuns_, &QPushButton::clicked, this, &WorkbenchWindow::clearRuns);
 }
 
 void WorkbenchWindow::retranslate() {
@@ -475,27 +494,32 @@ void WorkbenchWindow::setBusy(bool busy) {
     if (busy) statusBar()->showMessage(tr("Running in virtual time..."));
 }
 
-void WorkbenchWindow::addRun(StepTestResult result, const QString& label) {
-    auto run = std::make_shared<WorkbenchRun>();
+void WorkbenchWindow::addRun(std::shared_ptr<WorkbenchRun> run, const QString& label,
+                             const QString& gainChangeMissed) {
     const int number = nextNumber_++;
     run->name = QStringLiteral("%1: %2").arg(number).arg(
-        label.isEmpty() ? runLabel(result.record.conditions) : label);
-    run->abortReason = result.abortReason;
-    run->metrics = result.metrics;
-    run->record = std::move(result.record);
+        label.isEmpty() ? runLabel(run->record.conditions) : label);
     run->color = workbenchColor(number - 1);
     runs_.push_back(run);
+    shown_.push_back(true);
     refreshRuns();
     selectRun(static_cast<int>(runs_.size()) - 1);
     QString said = run->abortReason.isEmpty()
                        ? tr("Run %1 done.").arg(number)
                        : tr("Run %1 stopped: %2").arg(number).arg(run->abortReason);
     // A change asked for after the test ended never came: the run had one set of gains.
-    if (!result.gainChangeMissed.isEmpty())
+    if (!gainChangeMissed.isEmpty())
         said +=
             QLatin1Char(' ') + tr("The gain change never came (%1): the run had one set of gains.")
-                                   .arg(result.gainChangeMissed);
+                                   .arg(gainChangeMissed);
     statusBar()->showMessage(said, 15000);
+}
+
+void WorkbenchWindow::releaseInBackground(std::vector<WorkbenchRunPtr> runs) {
+    // The overlay and the teaching view no longer hold them; a save may still (it keeps its
+    // own reference, and the last one frees them wherever it is).
+    if (runs.empty()) return;
+    (void)QtConcurrent::run(backgroundPool(), [runs = std::move(runs)]() mutable { runs.clear(); });
 }
 
 void WorkbenchWindow::refreshRuns() {
@@ -505,13 +529,22 @@ void WorkbenchWindow::refreshRuns() {
         auto* item = new QListWidgetItem(r->name, runList_);
         item->setForeground(r->color);
         item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
-        item->setCheckState(r->shown ? Qt::Checked : Qt::Unchecked);
+        item->setCheckState(
+            shown_[static_cast<std::size_t>(runList_->count() - 1)] ? Qt::Checked : Qt::Unchecked);
         if (!r->abortReason.isEmpty()) item->setToolTip(r->abortReason);
     }
     runList_->blockSignals(false);
-    overlay_->setRuns(runs_);
+    overlay_->setRuns(runs_, shown_);
     if (selected_ >= static_cast<int>(runs_.size())) selected_ = -1;
     terms_->setRun(selected_ >= 0 ? runs_[static_cast<std::size_t>(selected_)] : nullptr);
+}
+
+void WorkbenchWindow::clearRuns() {
+    std::vector<WorkbenchRunPtr> removed;
+    removed.swap(runs_);
+    shown_.clear();
+    refreshRuns();
+    releaseInBackground(std::move(removed));
 }
 
 void WorkbenchWindow::selectRun(int index) {
@@ -526,8 +559,8 @@ void WorkbenchWindow::selectRun(int index) {
 void WorkbenchWindow::runStep() {
     if (busy_) return;
     const StepTestSpec spec = currentSpec();
-    inBackground<StepTestResult>([spec] { return runStepTest(spec); },
-                                 [this](StepTestResult r) { addRun(std::move(r), QString()); });
+    inBackground<Prepared>([spec] { return prepare(runStepTest(spec)); },
+                           [this](Prepared p) { addRun(p.run, QString(), p.gainChangeMissed); });
 }
 
 void WorkbenchWindow::compareLaws() {
@@ -542,12 +575,14 @@ void WorkbenchWindow::compareLaws() {
     engineered.profile.loop.law = LoopLaw::Engineered;
     engineered.profile.loop.samplePeriodS = profile_.loop.samplePeriodS;
     engineered.gains = profileGains(profile_, 0, LoopLaw::Engineered);
-    using Pair = std::pair<StepTestResult, StepTestResult>;
+    using Pair = std::pair<Prepared, Prepared>;
     inBackground<Pair>(
-        [classic, engineered] { return Pair(runStepTest(classic), runStepTest(engineered)); },
+        [classic, engineered] {
+            return Pair(prepare(runStepTest(classic)), prepare(runStepTest(engineered)));
+        },
         [this](Pair r) {
-            addRun(std::move(r.first), QString());
-            addRun(std::move(r.second), QString());
+            addRun(r.first.run, QString(), r.first.gainChangeMissed);
+            addRun(r.second.run, QString(), r.second.gainChangeMissed);
         });
 }
 
@@ -555,13 +590,13 @@ void WorkbenchWindow::whatIfRun(const TuningGains& gains) {
     const int index = selected_;
     if (busy_ || index < 0 || index >= static_cast<int>(runs_.size())) return;
     const RunConditions conditions = runs_[static_cast<std::size_t>(index)]->record.conditions;
-    inBackground<StepTestResult>(
-        [conditions, gains] { return whatIf(conditions, gains); },
-        [this, index](StepTestResult r) {
-            const QString label =
-                tr("what if (from run %1): %2").arg(index + 1).arg(runLabel(r.record.conditions));
-            addRun(std::move(r), label);
-        });
+    inBackground<Prepared>([conditions, gains] { return prepare(whatIf(conditions, gains)); },
+                           [this, index](Prepared p) {
+                               const QString label = tr("what if (from run %1): %2")
+                                                         .arg(index + 1)
+                                                         .arg(runLabel(p.run->record.conditions));
+                               addRun(p.run, label, p.gainChangeMissed);
+                           });
 }
 
 void WorkbenchWindow::identify() {
@@ -736,36 +771,85 @@ void WorkbenchWindow::autotuneTableAxis() {
         });
 }
 
-bool WorkbenchWindow::addRecord(RunRecord record, const QString& name, QString* error) {
-    if (record.channels.size() == 0) {
-        if (error) *error = tr("%1: the run has no samples").arg(name);
-        return false;
-    }
-    StepTestResult r;
-    // A step test's record is measured against its commanded target, as when it ran.
-    r.metrics = measureRun(record.channels, record.conditions.countsPerMm, commandedTarget(record));
-    r.abortReason = record.conditions.abortReason;
-    r.record = std::move(record);
-    addRun(std::move(r), name);
-    return true;
-}
-
 bool WorkbenchWindow::saveRun(int index, const QString& csvPath, QString* error) {
     if (index < 0 || index >= static_cast<int>(runs_.size())) {
         if (error) *error = tr("No run is selected.");
         return false;
     }
-    const WorkbenchRun& run = *runs_[static_cast<std::size_t>(index)];
-    return saveRunRecord(run.record, csvPath, &run.metrics, error);
+    // The run is shared: removed or cleared meanwhile, it lives until it is written.
+    WorkbenchRunPtr run = runs_[static_cast<std::size_t>(index)];
+    ++savingRuns_;
+    statusBar()->showMessage(tr("Saving %1...").arg(csvPath));
+    auto* watcher = new QFutureWatcher<QString>(this);
+    connect(watcher, &QFutureWatcher<QString>::finished, this, [this, watcher, csvPath] {
+        watcher->deleteLater();
+        --savingRuns_;
+        const QString why = watcher->future().takeResult();
+        if (why.isEmpty())
+            statusBar()->showMessage(tr("Saved %1 and %2.").arg(csvPath, runSidecarPath(csvPath)),
+                                     10000);
+        else
+            statusBar()->showMessage(why, 15000);
+        emit runSaved(csvPath, why);
+    });
+    watcher->setFuture(QtConcurrent::run(backgroundPool(), [run = std::move(run), csvPath] {
+        QString why;  // set whenever saveRunRecord fails ("cannot write 'run.csv': ...")
+        saveRunRecord(run->record, csvPath, &run->metrics, &why);
+        return why;
+    }));
+    return true;
 }
 
-bool WorkbenchWindow::loadRun(const QString& csvPath, QString* error) {
-    RunLoad load = loadRunRecord(csvPath);
-    if (!load.record) {
-        if (error) *error = load.error;
-        return false;
-    }
-    return addRecord(std::move(*load.record), QFileInfo(csvPath).fileName(), error);
+void WorkbenchWindow::loadRun(const QString& csvPath) {
+    startLoad(csvPath, false);
+}
+
+void WorkbenchWindow::startLoad(const QString& csvPath, bool tell) {
+    const QString name = QFileInfo(csvPath).fileName();
+    ++loadingRuns_;
+    statusBar()->showMessage(tr("Loading %1...").arg(name));
+    struct Loaded {
+        Prepared prepared;
+        QString error;
+    };
+    auto* watcher = new QFutureWatcher<Loaded>(this);
+    connect(watcher, &QFutureWatcher<Loaded>::finished, this, [this, watcher, name, tell] {
+        watcher->deleteLater();
+        --loadingRuns_;
+        // Taken out of the future, and the run moved into the list: no copy is left here or in
+        // the future that would free it on this thread if it is removed.
+        Loaded l = watcher->future().takeResult();
+        if (!l.error.isEmpty()) {
+            statusBar()->showMessage(l.error, 15000);
+            emit runLoaded(l.error);
+            if (tell) QMessageBox::warning(this, tr("Load run"), l.error);
+            return;
+        }
+        addRun(std::move(l.prepared.run), name);
+        emit runLoaded(QString());
+    });
+    // Read, parsed, measured and its plot made on a worker thread: the screens (E-stop among
+    // them) never wait for a run of hundreds of MB.
+    watcher->setFuture(QtConcurrent::run(backgroundPool(), [reader = runReader_, csvPath, name] {
+        Loaded l;
+        RunLoad load = reader(csvPath);
+        if (!load.record) {
+            l.error = load.error;
+            return l;
+        }
+        if (load.record->channels.size() == 0) {
+            l.error = tr("%1: the run has no samples").arg(name);
+            return l;
+        }
+        StepTestResult r;
+        // A step test's record is measured against its commanded target, as when it ran.
+        r.metrics = measureRun(load.record->channels, load.record->conditions.countsPerMm,
+                               commandedTarget(*load.record));
+        r.abortReason = load.record->conditions.abortReason;
+        r.record = std::move(*load.record);
+        l.prepared = prepare(std::move(r));
+        return l;
+    }));
 }
 
 void WorkbenchWindow::saveSelectedRun() {
@@ -777,19 +861,26 @@ void WorkbenchWindow::saveSelectedRun() {
     const QString path =
         QFileDialog::getSaveFileName(this, tr("Save run"), QString(), tr("Run records (*.csv)"));
     if (path.isEmpty()) return;
+    // Written on a worker thread; a failure is said in a dialog when it ends.
+    auto* tell = new QObject(this);
+    connect(this, &WorkbenchWindow::runSaved, tell,
+            [this, tell, path](const QString& saved, const QString& error) {
+                if (saved != path) return;
+                tell->deleteLater();
+                if (!error.isEmpty()) QMessageBox::warning(this, tr("Save run"), error);
+            });
     QString error;
-    if (!saveRun(index, path, &error))
+    if (!saveRun(index, path, &error)) {
+        tell->deleteLater();
         QMessageBox::warning(this, tr("Save run"), error);
-    else
-        statusBar()->showMessage(tr("Saved %1 and %2.").arg(path, runSidecarPath(path)), 10000);
+    }
 }
 
 void WorkbenchWindow::loadRunFromFile() {
     const QString path = QFileDialog::getOpenFileName(this, tr("Load run"), QString(),
                                                       tr("Run records and traces (*.csv)"));
     if (path.isEmpty()) return;
-    QString error;
-    if (!loadRun(path, &error)) QMessageBox::warning(this, tr("Load run"), error);
+    startLoad(path, true);
 }
 
 void WorkbenchWindow::saveTunedProfile() {

@@ -60,9 +60,25 @@ class WorkbenchWindow : public QMainWindow {
     /// The plotter's workbench has only the margin test (no encoder to measure a step with).
     bool plotter() const { return profile_.kind == MachineKind::Plotter; }
     const std::vector<WorkbenchRunPtr>& runs() const { return runs_; }
-    bool addRecord(RunRecord record, const QString& name, QString* error = nullptr);
-    bool saveRun(int index, const QString& csvPath, QString* error);
-    bool loadRun(const QString& csvPath, QString* error);
+    /// Whether run i is drawn in the overlay (its box in the runs' list).
+    bool runShown(std::size_t i) const { return i < shown_.size() && shown_[i]; }
+    /// Runs > Clear: every run goes.
+    void clearRuns();
+    /// Writes run index to csvPath and its sidecar on a worker thread (issue 30 item 3: a long
+    /// run is hundreds of MB); runSaved says how it ended. False (and error) when there is no
+    /// such run.
+    bool saveRun(int index, const QString& csvPath, QString* error = nullptr);
+    /// Reads, measures and prepares the plot of a run file on a worker thread (issue 30 item 3:
+    /// the screens, E-stop among them, never wait for a run); the run is added when it is ready
+    /// and runLoaded says how it ended. Returns at once.
+    void loadRun(const QString& csvPath);
+    /// Runs being read, measured or saved now.
+    bool loadingRun() const { return loadingRuns_ > 0; }
+    bool savingRun() const { return savingRuns_ > 0; }
+    /// Reads a run file (core/tuning's loadRunRecord) on the worker thread; tests replace it to
+    /// hold a load.
+    using RunReader = std::function<RunLoad(const QString& csvPath)>;
+    void setRunReader(RunReader reader) { runReader_ = std::move(reader); }
     /// The profile with the last autotune's gains, if one passed.
     const std::optional<MachineProfile>& tunedProfile() const { return tuned_; }
 
@@ -74,6 +90,10 @@ class WorkbenchWindow : public QMainWindow {
 
   signals:
     void runFinished();
+    /// A load asked for with loadRun ended: error is empty when the run was added.
+    void runLoaded(const QString& error);
+    /// A save asked for with saveRun ended: error is empty when both files were written.
+    void runSaved(const QString& csvPath, const QString& error);
 
   protected:
     void changeEvent(QEvent* e) override;
@@ -91,7 +111,15 @@ class WorkbenchWindow : public QMainWindow {
     void autotuneTableAxis();
     /// The middle of an axis' soft limits, mm: where `tune identify|auto` puts the table.
     static double tableMiddle(const AxisTravel& t) { return 0.5 * (t.softMinMm + t.softMaxMm); }
-    void addRun(StepTestResult result, const QString& label);
+    /// A run made on a worker thread (record, metrics and plot), added with its number, name
+    /// and colour; gainChangeMissed as StepTestResult's.
+    void addRun(std::shared_ptr<WorkbenchRun> run, const QString& label,
+                const QString& gainChangeMissed = {});
+    /// loadRun, and when tell, a dialog if it fails (Load run...).
+    void startLoad(const QString& csvPath, bool tell);
+    /// Runs no longer listed: their memory (hundreds of MB for a long run) is freed on a worker
+    /// thread, never on this one.
+    void releaseInBackground(std::vector<WorkbenchRunPtr> runs);
     void refreshRuns();
     void selectRun(int index);
     void whatIfRun(const TuningGains& gains);
@@ -107,9 +135,13 @@ class WorkbenchWindow : public QMainWindow {
     bool rail_;
     bool busy_ = false;
     std::vector<WorkbenchRunPtr> runs_;
+    std::vector<bool> shown_;  ///< per run: drawn in the overlay
     int selected_ = -1;
     int nextNumber_ = 1;
     std::optional<MachineProfile> tuned_;
+    RunReader runReader_ = [](const QString& path) { return loadRunRecord(path); };
+    int loadingRuns_ = 0;
+    int savingRuns_ = 0;
 
     QTabWidget* tabs_;
     QScrollArea* formScroll_;

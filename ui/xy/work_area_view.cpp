@@ -1,13 +1,16 @@
 #include "ui/xy/work_area_view.h"
 
 #include <QEvent>
+#include <QFutureWatcher>
 #include <QPaintEvent>
 #include <QPainter>
 #include <QPainterPath>
 #include <QResizeEvent>
+#include <QtConcurrent/QtConcurrentRun>
 #include <cmath>
 
 #include "core/gcode/program.h"
+#include "ui/background_pool.h"
 
 namespace trilho {
 namespace ui {
@@ -28,7 +31,8 @@ void WorkAreaView::setArea(const QRectF& areaMm, const QPointF& originMm) {
 }
 
 void WorkAreaView::setPlannedPath(std::vector<PathSegment> path) {
-    planned_ = std::move(path);
+    planned_ = std::make_shared<const std::vector<PathSegment>>(std::move(path));
+    ++content_;
     invalidate();
 }
 
@@ -49,7 +53,13 @@ void WorkAreaView::addFollowed(const QPointF& mm, bool penDown) {
         thinned.insert(thinned.end(), followed_.begin() + static_cast<std::ptrdiff_t>(half),
                        followed_.end());
         followed_.swap(thinned);
-        invalidate();  // the indices moved: once in 50,000 points, the picture is redrawn
+        // The picture already holds those segments: only the indices of what it holds move
+        // (it was redrawn whole here, 100,000 segments on the screens' thread, issue 30).
+        const std::size_t kept = (half + 1) / 2;
+        auto moved = [half, kept](std::size_t i) { return i < half ? i / 2 : i - half + kept; };
+        painted_ = moved(painted_);
+        pathsFollowed_ = moved(pathsFollowed_);
+        ++thinnings_;  // an image being drawn counted the old indices: it is drawn again
     }
     followed_.push_back({mm, penDown});
     if (!cacheValid_) return;
@@ -59,6 +69,7 @@ void WorkAreaView::addFollowed(const QPointF& mm, bool penDown) {
 
 void WorkAreaView::clearFollowed() {
     followed_.clear();
+    ++content_;
     invalidate();
 }
 
@@ -107,18 +118,86 @@ std::vector<PathSegment> WorkAreaView::plan(const Program& program, QPointF star
     return path;
 }
 
+double WorkAreaView::Geometry::scale() const {
+    const double w = std::max(1.0, widget.width() - 2 * kMarginPx);
+    const double h = std::max(1.0, widget.height() - 2 * kMarginPx);
+    return std::min(w / std::max(1e-9, area.width()), h / std::max(1e-9, area.height()));
+}
+
+QPointF WorkAreaView::Geometry::toPixel(const QPointF& mm) const {
+    const double s = scale();
+    // Centre the area in the widget; y up.
+    const double x0 = (widget.width() - area.width() * s) / 2.0;
+    const double y0 = (widget.height() + area.height() * s) / 2.0;
+    return {x0 + (mm.x() - area.left()) * s, y0 - (mm.y() - area.top()) * s};
+}
+
 double WorkAreaView::scale() const {
-    const double w = std::max(1.0, width() - 2 * kMarginPx);
-    const double h = std::max(1.0, height() - 2 * kMarginPx);
-    return std::min(w / std::max(1e-9, area_.width()), h / std::max(1e-9, area_.height()));
+    return geometry().scale();
 }
 
 QPointF WorkAreaView::toPixel(const QPointF& mm) const {
-    const double s = scale();
-    // Centre the area in the widget; y up.
-    const double x0 = (width() - area_.width() * s) / 2.0;
-    const double y0 = (height() + area_.height() * s) / 2.0;
-    return {x0 + (mm.x() - area_.left()) * s, y0 - (mm.y() - area_.top()) * s};
+    return geometry().toPixel(mm);
+}
+
+void WorkAreaView::drawPlanned(QPainter& p, const Geometry& g,
+                               const std::vector<PathSegment>& path) {
+    // Planned path: travel dashed grey, drawing solid dark blue.
+    const QPen travel(QColor(140, 140, 140), 1, Qt::DashLine);
+    const QPen draw(QColor(20, 40, 140), 1.5);
+    for (const PathSegment& seg : path) {
+        p.setPen(seg.draw ? draw : travel);
+        p.drawLine(g.toPixel(seg.from), g.toPixel(seg.to));
+    }
+}
+
+void WorkAreaView::drawFollowed(QPainter& p, const Geometry& g,
+                                const std::vector<Followed>& followed, std::size_t from) {
+    // Followed path: red where the pen was down (or the table moved), light when up.
+    const QPen down(QColor(210, 30, 30), 2);
+    const QPen up(QColor(240, 160, 160), 1);
+    for (std::size_t i = std::max<std::size_t>(from, 1); i < followed.size(); ++i) {
+        p.setPen(followed[i].penDown && followed[i - 1].penDown ? down : up);
+        p.drawLine(g.toPixel(followed[i - 1].mm), g.toPixel(followed[i].mm));
+    }
+}
+
+QImage WorkAreaView::drawPaths(QSize pixels, qreal dpr, Geometry g,
+                               std::shared_ptr<const std::vector<PathSegment>> planned,
+                               std::vector<Followed> followed) {
+    QImage image(pixels, QImage::Format_ARGB32_Premultiplied);
+    image.setDevicePixelRatio(dpr);
+    image.fill(Qt::transparent);
+    QPainter p(&image);
+    p.setRenderHint(QPainter::Antialiasing);
+    drawPlanned(p, g, *planned);
+    drawFollowed(p, g, followed, 1);
+    return image;
+}
+
+void WorkAreaView::drawPathsInBackground() {
+    if (pathsPending_) return;  // one at a time: the picture it ends with is checked then
+    pathsPending_ = true;
+    const qreal dpr = devicePixelRatioF();
+    const QSize pixels = (QSizeF(size()) * dpr).toSize();
+    const Geometry g = geometry();
+    const int content = content_, thinnings = thinnings_;
+    const std::size_t followed = followed_.size();
+    auto* watcher = new QFutureWatcher<QImage>(this);
+    connect(watcher, &QFutureWatcher<QImage>::finished, this,
+            [this, watcher, g, content, thinnings, followed] {
+                watcher->deleteLater();
+                pathsPending_ = false;
+                paths_ = watcher->future().takeResult();
+                pathsGeometry_ = g;
+                pathsContent_ = thinnings == thinnings_ ? content : -1;
+                pathsFollowed_ = followed;
+                invalidate();  // shown if still this picture; drawn again if not
+            });
+    watcher->setFuture(QtConcurrent::run(
+        backgroundPool(), [pixels, dpr, g, planned = planned_, copy = followed_]() mutable {
+            return drawPaths(pixels, dpr, g, std::move(planned), std::move(copy));
+        }));
 }
 
 void WorkAreaView::rebuildCache() {
@@ -170,14 +249,20 @@ void WorkAreaView::rebuildCache() {
     p.setBrush(Qt::NoBrush);
     p.drawRect(table);
 
-    // Planned path: travel dashed grey, drawing solid dark blue.
-    QPen travel(QColor(140, 140, 140), 1, Qt::DashLine);
-    QPen draw(QColor(20, 40, 140), 1.5);
-    for (const PathSegment& seg : planned_) {
-        p.setPen(seg.draw ? draw : travel);
-        p.drawLine(toPixel(seg.from), toPixel(seg.to));
+    // The paths: drawn here when few; else the image drawn on a worker thread, once it is of
+    // this picture, and the followed segments since then on top of it.
+    const Geometry g = geometry();
+    const bool imageFits = pathsContent_ == content_ && pathsGeometry_.widget == g.widget &&
+                           pathsGeometry_.area == g.area && paths_.size() == cache_.size();
+    if (planned_->size() + followed_.size() <= kSyncPathSegments) {
+        drawPlanned(p, g, *planned_);
+    } else if (imageFits) {
+        p.drawImage(QPointF(0, 0), paths_);
+        painted_ = std::min(pathsFollowed_, followed_.size());
+    } else {
+        drawPathsInBackground();
+        painted_ = followed_.size();  // the image will hold them; only newer ones go here
     }
-
     p.end();
     paintNewSegments();
 }

@@ -2,10 +2,12 @@
 // Top-down view of an XY machine's work area, to scale (xy.md A and B): the planned path of the
 // loaded program (travel dashed, drawing solid), the path the tool actually followed, drawn
 // live, the tool (or pen) marker and the origin. Y grows upwards, as on the table.
+#include <QImage>
 #include <QPixmap>
 #include <QPointF>
 #include <QRectF>
 #include <QWidget>
+#include <memory>
 #include <vector>
 
 #include "core/machine/xy_motion.h"
@@ -38,7 +40,7 @@ class WorkAreaView : public QWidget {
     /// followed: each block's move is drawn once).
     static std::vector<PathSegment> plan(const Program& program, QPointF startMm);
 
-    const std::vector<PathSegment>& plannedPath() const { return planned_; }
+    const std::vector<PathSegment>& plannedPath() const { return *planned_; }
     std::size_t followedCount() const { return followed_.size(); }
     /// Widget pixel of a point in mm (for tests).
     QPointF toPixel(const QPointF& mm) const;
@@ -52,6 +54,15 @@ class WorkAreaView : public QWidget {
     /// Times the cached picture (grid, planned path, followed path) was rebuilt whole.
     int cacheRebuilds() const { return cacheRebuilds_; }
 
+    /// Above this many segments (planned and followed) the paths are drawn on a worker thread
+    /// into an image (issue 30 item 3: no handler may hold the screens' thread, and the E-stop
+    /// key, longer than 20 ms: a 49,000-block program's path took 0.3 s to draw, a 200,000-
+    /// block one 1.2 s); the grid and the segments followed since are drawn here. Up to it
+    /// (about 10 ms) they are drawn at once.
+    static constexpr std::size_t kSyncPathSegments = 2000;
+    /// The paths are being drawn on a worker thread (the picture shows them when done).
+    bool drawingPaths() const { return pathsPending_; }
+
   protected:
     void paintEvent(QPaintEvent* e) override;
     void resizeEvent(QResizeEvent* e) override;
@@ -64,6 +75,24 @@ class WorkAreaView : public QWidget {
         QPointF mm;
         bool penDown;
     };
+    /// Where the picture is: the widget's size and the area in mm (toPixel's inputs).
+    struct Geometry {
+        QSizeF widget;
+        QRectF area;
+        QPointF toPixel(const QPointF& mm) const;
+        double scale() const;
+    };
+    Geometry geometry() const { return {QSizeF(size()), area_}; }
+    /// The planned path and followed[from..] drawn with p (any thread).
+    static void drawPlanned(QPainter& p, const Geometry& g, const std::vector<PathSegment>& path);
+    static void drawFollowed(QPainter& p, const Geometry& g, const std::vector<Followed>& followed,
+                             std::size_t from);
+    /// The paths drawn on a worker thread, on a transparent image of the widget's size.
+    static QImage drawPaths(QSize pixels, qreal dpr, Geometry g,
+                            std::shared_ptr<const std::vector<PathSegment>> planned,
+                            std::vector<Followed> followed);
+    /// Starts drawing the paths on a worker thread (one at a time).
+    void drawPathsInBackground();
     double scale() const;  ///< px per mm
     /// Grid, planned path and the whole followed path into cache_ (size, area, plan changed).
     void rebuildCache();
@@ -77,11 +106,23 @@ class WorkAreaView : public QWidget {
     QPixmap cache_;
     bool cacheValid_ = false;
     std::size_t painted_ = 0;  ///< followed_ points whose segment is in cache_
+    /// The paths drawn on a worker thread, with the followed points up to pathsFollowed_, for
+    /// pathsGeometry_ and the plan and followed path of pathsContent_ (valid when it is
+    /// content_); pending while a drawing runs.
+    QImage paths_;
+    Geometry pathsGeometry_;
+    std::size_t pathsFollowed_ = 0;
+    int pathsContent_ = -1;
+    int content_ = 0;    ///< changes with the plan and when the followed path is cleared
+    int thinnings_ = 0;  ///< the followed path thinned (its indices moved)
+    bool pathsPending_ = false;
     std::size_t segmentsPainted_ = 0;
     int cacheRebuilds_ = 0;
     QRectF area_{0, 0, 300, 300};
     QPointF origin_;
-    std::vector<PathSegment> planned_;
+    /// Shared with a drawing on a worker thread (never copied: a million segments is 40 MB).
+    std::shared_ptr<const std::vector<PathSegment>> planned_ =
+        std::make_shared<const std::vector<PathSegment>>();
     std::vector<Followed> followed_;
     QPointF tool_;
     PenState pen_ = PenState::None;

@@ -24,13 +24,16 @@
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <QComboBox>
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QFormLayout>
+#include <QFutureWatcher>
 #include <QRadioButton>
 #include <QSerialPortInfo>
+#include <QtConcurrent/QtConcurrentRun>
 
 #include "core/files/atomic_file.h"
 #include "core/gcode/compiler.h"
@@ -43,8 +46,10 @@
 #include "core/machine/xy_event_text.h"
 #include "host/common/data_paths.h"
 #include "host/dnc/xy_dnc_machine.h"
+#include "ui/background_pool.h"
 #include "ui/dnc_link.h"
 #include "ui/machine_choice.h"
+#include "ui/program_panel.h"
 #include "ui/xy/calibration_dialog.h"
 #include "ui/xy/dc_table_panel.h"
 #include "ui/xy/plotter_comm_log.h"
@@ -397,8 +402,9 @@ void XyMainWindow::selectManual() {
     link_.post([](XyController& c) { c.selectManual(); });
 }
 
-void XyMainWindow::emergencyStop() {
-    link_.post([](XyController& c) { c.emergencyStop(); });
+void XyMainWindow::emergencyStop(std::int64_t requestedNs) {
+    // Past the command queue and its lock: the worker cuts the drives first in its next period.
+    link_.requestEmergencyStop(requestedNs);
 }
 
 void XyMainWindow::resetEmergencyStop() {
@@ -417,18 +423,78 @@ bool XyMainWindow::typesSpace(QWidget* focus) const {
     return qobject_cast<QPlainTextEdit*>(focus) || qobject_cast<QLineEdit*>(focus);
 }
 
+struct XyMainWindow::ProgramRead {
+    SourceFile file;  ///< its error when it could not be read (the bytes are let go)
+    std::shared_ptr<const Program> program;
+    std::vector<PathSegment> path;  ///< planned from where the tool stood when selected
+};
+
+XyMainWindow::ProgramRead XyMainWindow::readProgram(const QString& path,
+                                                    const MachineProfile& profile,
+                                                    QPointF startMm) {
+    ProgramRead r;
+    r.file = readSourceFile(QFile::encodeName(path).toStdString());
+    if (!r.file.ok) return r;
+    CompileOptions options;
+    options.machine = profile.limits;
+    options.maxDiagnostics = 50;
+    auto program = std::make_shared<Program>(compile(r.file.bytes, options));
+    r.file.bytes.clear();
+    r.file.bytes.shrink_to_fit();
+    if (program->ok()) r.path = WorkAreaView::plan(*program, startMm);
+    r.program = std::move(program);
+    return r;
+}
+
 bool XyMainWindow::selectProgram(const QString& path) {
-    const SourceFile file = readSourceFile(QFile::encodeName(path).toStdString());
-    if (!file.ok) {
-        const QString why = QString::fromStdString(file.error);
+    const int generation = ++programGeneration_;
+    startWhenLoaded_.reset();
+    const QPointF start(last_.sample.x.positionMm, last_.sample.y.positionMm);
+    const QFileInfo info(path);
+    if (!info.isFile() || info.size() <= kAsyncLoadBytes) {
+        loadingProgram_ = false;
+        return applyProgram(path, readProgram(path, link_.profile(), start));
+    }
+    // Large: read, compiled and planned on a worker thread; no program until it is ready, so
+    // nothing runs or shows a program that is not the one selected.
+    loadingProgram_ = true;
+    program_.reset();
+    programName_ = info.fileName();
+    view_->setPlannedPath({});
+    statusBar()->showMessage(
+        tr("Loading %1 (%2 MB)...").arg(info.fileName()).arg(double(info.size()) / 1e6, 0, 'f', 1));
+    retranslate();
+    onUpdate({}, {}, last_);
+    auto* watcher = new QFutureWatcher<ProgramRead>(this);
+    connect(watcher, &QFutureWatcher<ProgramRead>::finished, this,
+            [this, watcher, generation, path] {
+                watcher->deleteLater();
+                if (generation != programGeneration_) return;  // another program was selected
+                loadingProgram_ = false;
+                const bool ok = applyProgram(path, watcher->future().takeResult());
+                statusBar()->clearMessage();
+                emit programLoaded(ok);
+                if (ok && startWhenLoaded_)
+                    startProgram(*std::exchange(startWhenLoaded_, std::nullopt));
+            });
+    watcher->setFuture(QtConcurrent::run(
+        backgroundPool(),
+        [path, profile = link_.profile(), start] { return readProgram(path, profile, start); }));
+    return true;
+}
+
+bool XyMainWindow::applyProgram(const QString& path, ProgramRead read) {
+    if (!read.file.ok) {
+        const QString why = QString::fromStdString(read.file.error);
         statusBar()->showMessage(why, 8000);
         addHistory(why, true);
+        program_.reset();
+        view_->setPlannedPath({});
+        retranslate();
+        onUpdate({}, {}, last_);
         return false;
     }
-    CompileOptions options;
-    options.machine = link_.profile().limits;
-    options.maxDiagnostics = 50;
-    auto program = std::make_shared<Program>(compile(file.bytes, options));
+    const std::shared_ptr<const Program>& program = read.program;
     programName_ = QFileInfo(path).fileName();
     if (!program->ok()) {
         for (const Diagnostic& d : program->diagnostics)
@@ -444,8 +510,7 @@ bool XyMainWindow::selectProgram(const QString& path) {
     }
     program_ = program;
     programPath_ = path;
-    const XySample s = last_.sample;
-    view_->setPlannedPath(WorkAreaView::plan(*program, {s.x.positionMm, s.y.positionMm}));
+    view_->setPlannedPath(std::move(read.path));
     view_->clearFollowed();
     if (plotter_) {
         int points = 0;
@@ -494,6 +559,10 @@ void XyMainWindow::requestHome() {
 }
 
 void XyMainWindow::startProgram(bool ask) {
+    if (loadingProgram_) {
+        startWhenLoaded_ = ask;  // asked (or run) once it is read
+        return;
+    }
     if (!program_) return;
     const XySample& at = last_.sample;
     if (ask && !confirm(tr("Cycle start"),

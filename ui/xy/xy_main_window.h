@@ -6,8 +6,10 @@
 // frame around both is one class (OperatorFrame, issue 19): menus, safety bar, keys, docks,
 // DNC link. This screen supplies its panels, its run keys and its machine's behaviour.
 #include <QElapsedTimer>
+#include <QPointF>
 #include <functional>
 #include <memory>
+#include <optional>
 
 #include "core/gcode/program.h"
 #include "host/session/xy_link.h"
@@ -40,8 +42,13 @@ class XyMainWindow : public OperatorFrame {
     ~XyMainWindow() override;
 
     /// Reads and compiles a .G file for this machine; false (and the reason in the status bar
-    /// and the history) when it cannot be read or has errors.
+    /// and the history) when it cannot be read or has errors. A file larger than
+    /// kAsyncLoadBytes is read, compiled and planned on a worker thread (issue 30 item 3: the
+    /// screens, E-stop among them, never wait for it): true at once, no program until it is
+    /// ready, and programLoaded(ok) when it ends.
     bool selectProgram(const QString& path);
+    /// A program being read and compiled on a worker thread.
+    bool loadingProgram() const { return loadingProgram_; }
     /// Automatic (homes first when needed), then runs the program; asks first naming what
     /// moves where unless ask is false (the command line's --run, a deliberate choice).
     void startProgram(bool ask = true);
@@ -79,6 +86,8 @@ class XyMainWindow : public OperatorFrame {
   signals:
     /// Options > Connection chose another backend: port empty for the simulated machine.
     void connectionChosen(const QString& port, int baud);
+    /// A program read on a worker thread (selectProgram) is ready (ok) or was refused.
+    void programLoaded(bool ok);
 
   protected:
     void closeEvent(QCloseEvent* e) override;
@@ -90,7 +99,7 @@ class XyMainWindow : public OperatorFrame {
     void selectManual() override;
     void requestAutomatic() override;
     void requestHome() override;
-    void emergencyStop() override;
+    void emergencyStop(std::int64_t requestedNs) override;
     void resetEmergencyStop() override;
     void acknowledgeAlarms() override;
     void controlledStop() override;
@@ -128,6 +137,15 @@ class XyMainWindow : public OperatorFrame {
         *resetPush_, *ackPush_;
     std::shared_ptr<const Program> program_;
     QString programPath_;  ///< the file program_ came from
+    bool loadingProgram_ = false;
+    std::optional<bool> startWhenLoaded_;  ///< a Start asked while loading: its ask
+    int programGeneration_ = 0;            ///< a newer selection makes an older load's result stale
+    struct ProgramRead;
+    /// Reads, compiles and plans path (any thread).
+    static ProgramRead readProgram(const QString& path, const MachineProfile& profile,
+                                   QPointF startMm);
+    /// Takes what readProgram made: the program, or its errors said.
+    bool applyProgram(const QString& path, ProgramRead read);
     QString programName_;
     QLabel* linkLabel_;
     SerialLinkMotion* deviceLink_ = nullptr;
