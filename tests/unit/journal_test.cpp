@@ -375,6 +375,49 @@ TEST(JournalLock, TheFileIsFreeAgainAfterClose) {
     EXPECT_EQ(third.path().toStdString(), path.toStdString());
 }
 
+// A lock file whose text is not "pid<TAB>host" (written over by something else) still keeps
+// the second journal off the file; the holder is then not named (pid 0).
+TEST(JournalLock, AGarbledLockFileStillLocksAndNamesNoOne) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("history.log"));
+    Journal first;
+    ASSERT_TRUE(first.open(path));
+    {
+        QFile lock(path + QStringLiteral(".lock"));
+        ASSERT_TRUE(lock.open(QIODevice::WriteOnly));
+        lock.write(QByteArray(4096, '\xff'));
+    }
+    Journal second;
+    ASSERT_TRUE(second.open(path));
+    EXPECT_TRUE(second.opening().heldByAnother);
+    EXPECT_EQ(second.opening().holderPid, 0);
+    EXPECT_NE(second.path(), path);
+}
+
+// Opening and closing again and again leaves no descriptor behind (the lock's and the file's).
+TEST(JournalLock, ReopeningLeaksNoDescriptor) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("history.log"));
+    auto openFds = [] {
+        return QDir(QStringLiteral("/proc/self/fd")).entryList(QDir::Files | QDir::System).size();
+    };
+    Journal j;
+    ASSERT_TRUE(j.open(path));
+    j.close();
+    const auto before = openFds();
+    for (int i = 0; i < 500; ++i) {
+        ASSERT_TRUE(j.open(path));
+        ASSERT_TRUE(j.markStart(QStringLiteral("pid 1")));
+    }
+    j.close();
+    EXPECT_EQ(openFds(), before);
+    // Each open closed the one before: 500 starts, 500 stops, in pairs.
+    const QList<JournalEntry> all = Journal::read(path);
+    ASSERT_EQ(all.size(), 1000);
+    EXPECT_EQ(all.last().kind.toStdString(), "stop");
+    EXPECT_FALSE(j.opening().stoppedWithoutMark);
+}
+
 TEST(JournalLock, OwnPathIsBeforeTheLogSuffix) {
     EXPECT_EQ(Journal::ownPath(QStringLiteral("/d/history.log"), 42).toStdString(),
               "/d/history-42.log");
