@@ -500,6 +500,21 @@
     </message>
 </context>
 <context>
+    <name>JournalNotice</name>
+    <message>
+        <source>The history is kept by another trilho (pid %1 on %2): this one writes %3.</source>
+        <translation>El historial lo lleva otro trilho (pid %1 en %2): este escribe %3.</translation>
+    </message>
+    <message>
+        <source>The history is kept by another trilho: this one writes %1.</source>
+        <translation>El historial lo lleva otro trilho: este escribe %1.</translation>
+    </message>
+    <message>
+        <source>The screens started %1 (%2) stopped without their end mark: they were killed, crashed or lost power.</source>
+        <translation>Las pantallas iniciadas el %1 (%2) se detuvieron sin su marca de fin: se las mató, fallaron o se quedaron sin energía.</translation>
+    </message>
+</context>
+<context>
     <name>trilho</name>
     <message>
         <source>a verification move with the tuned gains was stopped by an alarm: %1</source>
@@ -714,10 +729,6 @@
     <message>
         <source>Machine profiles (*.json)</source>
         <translation>Perfiles de máquina (*.json)</translation>
-    </message>
-    <message>
-        <source>Cannot write %1: %2</source>
-        <translation>No se puede escribir %1: %2</translation>
     </message>
     <message>
         <source>Saved: %1</source>
@@ -1070,6 +1081,14 @@
         <translation>estado</translation>
     </message>
     <message>
+        <source>start</source>
+        <translation>inicio</translation>
+    </message>
+    <message>
+        <source>stop</source>
+        <translation>fin</translation>
+    </message>
+    <message>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
@@ -1177,6 +1196,10 @@
 </context>
 <context>
     <name>trilho::ui::MachineLink</name>
+    <message>
+        <source>The simulated rail started again at x = 0 mm: the run that was going is lost; Execute homes it first.</source>
+        <translation>El riel simulado volvió a empezar en x = 0 mm: la ejecución en curso se perdió; Ejecutar lo referencia antes.</translation>
+    </message>
     <message>
         <source>Command not taken: the servo thread&apos;s queue is full. Press again.</source>
         <translation>Comando no aceptado: la cola del servo está llena. Pulse de nuevo.</translation>
@@ -1912,6 +1935,10 @@
         <source>drive (DAC code)</source>
         <translation>accionamiento (código DAC)</translation>
     </message>
+    <message>
+        <source>cannot write &apos;%1&apos;: the image could not be encoded</source>
+        <translation>no se puede escribir &apos;%1&apos;: la imagen no se pudo codificar</translation>
+    </message>
 </context>
 <context>
     <name>trilho::ui::PlotterCommLog</name>
@@ -2094,10 +2121,6 @@
     <message>
         <source>No program is selected: there is no file to save to.</source>
         <translation>Ningún programa seleccionado: no hay archivo donde guardar.</translation>
-    </message>
-    <message>
-        <source>cannot save &apos;%1&apos;: %2</source>
-        <translation>no se pudo guardar &apos;%1&apos;: %2</translation>
     </message>
 </context>
 <context>
@@ -2808,10 +2831,6 @@
         <translation>Perfiles de máquina (*.json)</translation>
     </message>
     <message>
-        <source>cannot save &apos;%1&apos;: %2</source>
-        <translation>no se pudo guardar &apos;%1&apos;: %2</translation>
-    </message>
-    <message>
         <source>Saved %1: trilho-cli run --machine %1 uses it.</source>
         <translation>Guardado %1: trilho-cli run --machine %1 lo usa.</translation>
     </message>
@@ -2915,16 +2934,32 @@
         <translation>No se pudo escribir el historial: %1</translation>
     </message>
     <message>
+        <source>The simulated machine started again at its origin: the run that was going is lost.</source>
+        <translation>La máquina simulada volvió a empezar en su origen: la ejecución en curso se perdió.</translation>
+    </message>
+    <message>
+        <source>Positions are unknown until homed: the plotter&apos;s protocol has no question the board answers with where it stands.</source>
+        <translation>Las posiciones son desconocidas hasta la referencia: el protocolo del plotter no tiene pregunta a la que la placa responda dónde está.</translation>
+    </message>
+    <message>
+        <source>Positions are unknown until homed; the board is asked which set point it last ran.</source>
+        <translation>Las posiciones son desconocidas hasta la referencia; se pregunta a la placa el último punto de consigna que ejecutó.</translation>
+    </message>
+    <message>
+        <source>unknown until homed</source>
+        <translation>desconocida hasta la referencia</translation>
+    </message>
+    <message>
+        <source>the board&apos;s last set point, not homed</source>
+        <translation>último punto de consigna de la placa, sin referencia</translation>
+    </message>
+    <message>
         <source>Block N%1, line %2</source>
         <translation>Bloque N%1, línea %2</translation>
     </message>
     <message>
         <source>Line %1</source>
         <translation>Línea %1</translation>
-    </message>
-    <message>
-        <source>Cannot write %1: %2</source>
-        <translation>No se puede escribir %1: %2</translation>
     </message>
     <message>
         <source>Simulated machine</source>
@@ -2935,12 +2970,16 @@
         <translation>%1 a %2 bit/s: %3 - paquetes %4, RESENDs %5, tiempos agotados %6</translation>
     </message>
     <message>
+        <source>LINK LOST</source>
+        <translation>ENLACE PERDIDO</translation>
+    </message>
+    <message>
         <source>link up</source>
         <translation>enlace activo</translation>
     </message>
     <message>
-        <source>LINK LOST</source>
-        <translation>ENLACE PERDIDO</translation>
+        <source>port open, no answer yet</source>
+        <translation>puerto abierto, aún sin respuesta</translation>
     </message>
     <message>
         <source>Connection</source>

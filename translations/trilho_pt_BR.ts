@@ -500,6 +500,21 @@
     </message>
 </context>
 <context>
+    <name>JournalNotice</name>
+    <message>
+        <source>The history is kept by another trilho (pid %1 on %2): this one writes %3.</source>
+        <translation>O histórico é mantido por outro trilho (pid %1 em %2): este escreve %3.</translation>
+    </message>
+    <message>
+        <source>The history is kept by another trilho: this one writes %1.</source>
+        <translation>O histórico é mantido por outro trilho: este escreve %1.</translation>
+    </message>
+    <message>
+        <source>The screens started %1 (%2) stopped without their end mark: they were killed, crashed or lost power.</source>
+        <translation>As telas iniciadas em %1 (%2) pararam sem a marca de fim: foram encerradas à força, falharam ou ficaram sem energia.</translation>
+    </message>
+</context>
+<context>
     <name>trilho</name>
     <message>
         <source>a verification move with the tuned gains was stopped by an alarm: %1</source>
@@ -714,10 +729,6 @@
     <message>
         <source>Machine profiles (*.json)</source>
         <translation>Perfis de máquina (*.json)</translation>
-    </message>
-    <message>
-        <source>Cannot write %1: %2</source>
-        <translation>Não foi possível gravar %1: %2</translation>
     </message>
     <message>
         <source>Saved: %1</source>
@@ -1070,6 +1081,14 @@
         <translation>estado</translation>
     </message>
     <message>
+        <source>start</source>
+        <translation>início</translation>
+    </message>
+    <message>
+        <source>stop</source>
+        <translation>fim</translation>
+    </message>
+    <message>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
@@ -1177,6 +1196,10 @@
 </context>
 <context>
     <name>trilho::ui::MachineLink</name>
+    <message>
+        <source>The simulated rail started again at x = 0 mm: the run that was going is lost; Execute homes it first.</source>
+        <translation>O trilho simulado recomeçou em x = 0 mm: a execução em curso se perdeu; Executar faz a referência antes.</translation>
+    </message>
     <message>
         <source>Command not taken: the servo thread&apos;s queue is full. Press again.</source>
         <translation>Comando não aceito: a fila do servo está cheia. Pressione de novo.</translation>
@@ -1912,6 +1935,10 @@
         <source>drive (DAC code)</source>
         <translation>acionamento (código DAC)</translation>
     </message>
+    <message>
+        <source>cannot write &apos;%1&apos;: the image could not be encoded</source>
+        <translation>não é possível gravar &apos;%1&apos;: a imagem não pôde ser codificada</translation>
+    </message>
 </context>
 <context>
     <name>trilho::ui::PlotterCommLog</name>
@@ -2094,10 +2121,6 @@
     <message>
         <source>No program is selected: there is no file to save to.</source>
         <translation>Nenhum programa selecionado: não há arquivo onde salvar.</translation>
-    </message>
-    <message>
-        <source>cannot save &apos;%1&apos;: %2</source>
-        <translation>não foi possível salvar &apos;%1&apos;: %2</translation>
     </message>
 </context>
 <context>
@@ -2808,10 +2831,6 @@
         <translation>Perfis de máquina (*.json)</translation>
     </message>
     <message>
-        <source>cannot save &apos;%1&apos;: %2</source>
-        <translation>não foi possível salvar &apos;%1&apos;: %2</translation>
-    </message>
-    <message>
         <source>Saved %1: trilho-cli run --machine %1 uses it.</source>
         <translation>Salvo %1: trilho-cli run --machine %1 o usa.</translation>
     </message>
@@ -2915,16 +2934,32 @@
         <translation>O histórico não pôde ser gravado: %1</translation>
     </message>
     <message>
+        <source>The simulated machine started again at its origin: the run that was going is lost.</source>
+        <translation>A máquina simulada recomeçou na origem: a execução em curso se perdeu.</translation>
+    </message>
+    <message>
+        <source>Positions are unknown until homed: the plotter&apos;s protocol has no question the board answers with where it stands.</source>
+        <translation>As posições são desconhecidas até a referência: o protocolo do plotter não tem pergunta à qual a placa responda onde está.</translation>
+    </message>
+    <message>
+        <source>Positions are unknown until homed; the board is asked which set point it last ran.</source>
+        <translation>As posições são desconhecidas até a referência; a placa é consultada sobre o último ponto de ajuste que executou.</translation>
+    </message>
+    <message>
+        <source>unknown until homed</source>
+        <translation>desconhecida até a referência</translation>
+    </message>
+    <message>
+        <source>the board&apos;s last set point, not homed</source>
+        <translation>último ponto de ajuste da placa, sem referência</translation>
+    </message>
+    <message>
         <source>Block N%1, line %2</source>
         <translation>Bloco N%1, linha %2</translation>
     </message>
     <message>
         <source>Line %1</source>
         <translation>Linha %1</translation>
-    </message>
-    <message>
-        <source>Cannot write %1: %2</source>
-        <translation>Não foi possível gravar %1: %2</translation>
     </message>
     <message>
         <source>Simulated machine</source>
@@ -2935,12 +2970,16 @@
         <translation>%1 a %2 bit/s: %3 - pacotes %4, RESENDs %5, tempos esgotados %6</translation>
     </message>
     <message>
+        <source>LINK LOST</source>
+        <translation>LIGAÇÃO PERDIDA</translation>
+    </message>
+    <message>
         <source>link up</source>
         <translation>ligação ativa</translation>
     </message>
     <message>
-        <source>LINK LOST</source>
-        <translation>LIGAÇÃO PERDIDA</translation>
+        <source>port open, no answer yet</source>
+        <translation>porta aberta, ainda sem resposta</translation>
     </message>
     <message>
         <source>Connection</source>

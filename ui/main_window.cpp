@@ -115,6 +115,10 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     statusBar()->addPermanentWidget(compileProgress_);
     statusBar()->addPermanentWidget(stateLabel_);
     connect(&link_, &MachineLink::journalFailed, this, &MainWindow::reportJournalProblem);
+    connect(&link_, &MachineLink::journalNotice, this, &MainWindow::showJournalNotice);
+    // The journal is opened before the screen (main): what it had to say, said now.
+    for (const QString& line : link_.journalNotices())
+        showJournalNotice(line);
     // A command the servo thread's queue could not take is said, never passed over.
     connect(&link_, &MachineLink::commandRefused, this,
             [this](const QString& what) { statusBar()->showMessage(what, 8000); });
@@ -703,6 +707,16 @@ void MainWindow::refreshOnline() {
     // Recomputed, never stored as text: a language switch or a state change shows at once.
     const QString text = online_ ? online_() : QString();
     if (panel_->onlineStatusField()->text() != text) panel_->setOnlineStatus(text);
+}
+
+void MainWindow::showJournalNotice(const QString& line) {
+    panel_->addStatusLine(line);
+    history_->add(QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")),
+                  QStringLiteral("status"), 0, line);
+    history_->setJournalPath(link_.journalPath());  // this process' own file, when it is one
+    // Every notice at once, for a minute (the status lines and the history keep them).
+    journalNoticesShown_ << line;
+    statusBar()->showMessage(journalNoticesShown_.join(QStringLiteral("  ")), 60000);
 }
 
 void MainWindow::reportJournalProblem(const QString& reason) {

@@ -251,6 +251,11 @@ int main(int argc, char* argv[]) {
         xyLink = std::make_unique<XyLink>(
             std::move(runnable), device ? XyLink::Drive::EventLoop : XyLink::Drive::Thread);
         xyWindow = std::make_unique<ui::XyMainWindow>(*xyLink, *settings);
+        // The board first: what the journal's notices say of the position depends on it.
+        if (device)
+            xyWindow->setDeviceLink(
+                device, port,
+                baud > 0 ? baud : (machine.kind == MachineKind::Plotter ? 57600 : 9600));
         {
             // Each XY machine keeps its own journal beside the rail's history.log.
             const QString dataDir =
@@ -267,10 +272,6 @@ int main(int argc, char* argv[]) {
         }
         // The language the operator chose last (on this screen before a reconnection too).
         xyWindow->setLanguage(settings->value(QStringLiteral("language"), lang).toString());
-        if (device)
-            xyWindow->setDeviceLink(
-                device, port,
-                baud > 0 ? baud : (machine.kind == MachineKind::Plotter ? 57600 : 9600));
         QObject::connect(xyWindow.get(), &ui::XyMainWindow::connectionChosen, &app,
                          [&, machine](const QString& newPort, int newBaud) {
                              // Rebuilt after this signal returns: its sender goes with it.

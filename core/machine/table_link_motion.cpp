@@ -13,7 +13,16 @@ TableHostConfig configFor(const MachineProfile& p) {
 }  // namespace
 
 TableLinkMotion::TableLinkMotion(const MachineProfile& profile, Send send)
-    : SerialLinkMotion(std::move(send)), host_(configFor(profile)) {}
+    : SerialLinkMotion(std::move(send)), host_(configFor(profile)) {
+    host_.askWhere();  // sent at the first tick
+}
+
+std::optional<SerialLinkMotion::BoardSaid> TableLinkMotion::boardSaid() const {
+    const std::optional<TableBoardReport>& r = host_.boardReport();
+    if (!r) return std::nullopt;
+    return BoardSaid{{static_cast<double>(r->lastStarted.x), static_cast<double>(r->lastStarted.y)},
+                     r->cut};
+}
 
 void TableLinkMotion::beginMove(XyPoint target, XyMove, double) {
     if (busy() || fault() != AlarmCode::None) return;

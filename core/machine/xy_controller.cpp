@@ -8,11 +8,13 @@ namespace trilho {
 XyController::XyController(const MachineProfile& profile, std::unique_ptr<XyMotion> motion)
     : profile_(profile), motion_(std::move(motion)) {
     status_.sample = motion_->sample();
+    status_.positionBasis = motion_->positionBasis();
     status_.target = motion_->commanded();
 }
 
 const XyStatus& XyController::status() const {
     status_.sample = motion_->sample();
+    status_.positionBasis = motion_->positionBasis();
     status_.homed = motion_->homed();
     status_.motionBusy = motion_->busy();
     return status_;
@@ -289,6 +291,7 @@ void XyController::step(double dtS) {
             break;
     }
     status_.sample = motion_->sample();
+    status_.positionBasis = motion_->positionBasis();
     status_.homed = motion_->homed();
 }
 
