@@ -715,6 +715,14 @@
         <translation>Recibiendo las cuentas en %1...</translation>
     </message>
     <message>
+        <source>The stream is refused, nothing to save: %1. Press Start for a new run.</source>
+        <translation>El flujo fue rechazado, nada que guardar: %1. Pulse Iniciar para una nueva ejecución.</translation>
+    </message>
+    <message>
+        <source>Nothing to save: %1</source>
+        <translation>Nada que guardar: %1</translation>
+    </message>
+    <message>
         <source>%1 counts, %2 pulses/s; the board stopped at about %3 pulses. %4 mm per pulse, %5 mm per turn (the profile has %6).</source>
         <translation>%1 cuentas, %2 pulsos/s; la placa se detuvo en unos %3 pulsos. %4 mm por pulso, %5 mm por vuelta (el perfil tiene %6).</translation>
     </message>
@@ -815,6 +823,10 @@
     <message>
         <source>Modbus RTU needs the serial device, e.g. /dev/ttyUSB0 (or turn RTU off).</source>
         <translation>Modbus RTU necesita el dispositivo serie, p. ej. /dev/ttyUSB0 (o desactive RTU).</translation>
+    </message>
+    <message>
+        <source>The DNC settings could not be saved to %1 (a full disk or a folder that cannot be written): they hold until trilho closes.</source>
+        <translation>La configuración del DNC no pudo guardarse en %1 (disco lleno o carpeta sin permiso de escritura): vale hasta que trilho se cierre.</translation>
     </message>
     <message>
         <source>Warning: %1 can be reached from other computers. Modbus has no password and no encryption: anyone on that network can read this machine and, while Remote is on, change its gains and run programs. Use 127.0.0.1 unless the cell&apos;s network is closed.</source>
@@ -1772,6 +1784,10 @@
 </context>
 <context>
     <name>trilho::ui::OperatorFrame</name>
+    <message>
+        <source>Settings not saved: cannot write %1 (a full disk or a folder that cannot be written). The old settings are kept; this change holds until trilho closes.</source>
+        <translation>Configuración no guardada: no se puede escribir %1 (disco lleno o carpeta sin permiso de escritura). Se conserva la configuración anterior; este cambio vale hasta que trilho se cierre.</translation>
+    </message>
     <message>
         <source>Machine</source>
         <translation>Máquina</translation>

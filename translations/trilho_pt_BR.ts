@@ -715,6 +715,14 @@
         <translation>Recebendo as contagens em %1...</translation>
     </message>
     <message>
+        <source>The stream is refused, nothing to save: %1. Press Start for a new run.</source>
+        <translation>O fluxo foi recusado, nada a salvar: %1. Pressione Iniciar para uma nova execução.</translation>
+    </message>
+    <message>
+        <source>Nothing to save: %1</source>
+        <translation>Nada a salvar: %1</translation>
+    </message>
+    <message>
         <source>%1 counts, %2 pulses/s; the board stopped at about %3 pulses. %4 mm per pulse, %5 mm per turn (the profile has %6).</source>
         <translation>%1 contagens, %2 pulsos/s; a placa parou em cerca de %3 pulsos. %4 mm por pulso, %5 mm por volta (o perfil tem %6).</translation>
     </message>
@@ -815,6 +823,10 @@
     <message>
         <source>Modbus RTU needs the serial device, e.g. /dev/ttyUSB0 (or turn RTU off).</source>
         <translation>O Modbus RTU precisa do dispositivo serial, p. ex. /dev/ttyUSB0 (ou desligue o RTU).</translation>
+    </message>
+    <message>
+        <source>The DNC settings could not be saved to %1 (a full disk or a folder that cannot be written): they hold until trilho closes.</source>
+        <translation>As configurações do DNC não puderam ser salvas em %1 (disco cheio ou pasta sem permissão de escrita): valem até o trilho fechar.</translation>
     </message>
     <message>
         <source>Warning: %1 can be reached from other computers. Modbus has no password and no encryption: anyone on that network can read this machine and, while Remote is on, change its gains and run programs. Use 127.0.0.1 unless the cell&apos;s network is closed.</source>
@@ -1772,6 +1784,10 @@
 </context>
 <context>
     <name>trilho::ui::OperatorFrame</name>
+    <message>
+        <source>Settings not saved: cannot write %1 (a full disk or a folder that cannot be written). The old settings are kept; this change holds until trilho closes.</source>
+        <translation>Configurações não salvas: não é possível gravar %1 (disco cheio ou pasta sem permissão de escrita). As configurações antigas são mantidas; esta mudança vale até o trilho fechar.</translation>
+    </message>
     <message>
         <source>Machine</source>
         <translation>Máquina</translation>
