@@ -398,6 +398,8 @@ int main(int argc, char** argv) {
         double stall = 0.0;
         const Samples s = measure(m, o, runPath, &stall);
         print("DC table", s, stall);
+        std::printf("  the table's thread %s SCHED_FIFO\n",
+                    link.realtime() ? "ran" : "did not run");
     }
     return 0;
 }

@@ -3,7 +3,8 @@
 // loading, measuring and saving runs, step tests and autotune, reading the history. Qt paints
 // with its global pool (it splits large fills and image conversions across it and the screens'
 // thread waits for the parts): a load of seconds queued there held a repaint, and with it the
-// E-stop key, for as long as the load (1.5 s measured). Nothing of trilho's runs there.
+// E-stop key, for as long as the load (1.5 s measured). Nothing of trilho's runs there. Its
+// threads run at nice 10: they yield the core to the screens' thread.
 class QThreadPool;
 
 namespace trilho {

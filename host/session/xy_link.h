@@ -67,6 +67,8 @@ class XyLink : public QObject {
     void requestEmergencyStop(std::int64_t requestedNs = 0);
     /// The last E-stop served: its request's time and the time the drives were cut.
     EStopStamp lastEmergencyStop() const { return estopStamp_.load(); }
+    /// The worker thread runs SCHED_FIFO (Drive::Thread, when permitted).
+    bool realtime() const { return realtime_.load(); }
     /// Runs cmd on the simulated plant before the next period (the Simulation dock's faults);
     /// nothing when the machine is a board on a line.
     void postToPlant(std::function<void(XyPlant&)> cmd);
@@ -114,6 +116,7 @@ class XyLink : public QObject {
     std::size_t droppedRows_ = 0;
     double timeS_ = 0.0;  ///< worker only
     std::atomic<bool> quit_{false};
+    std::atomic<bool> realtime_{false};
     std::thread worker_;
     QTimer poll_;
 };

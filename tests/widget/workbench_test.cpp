@@ -19,7 +19,13 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <sys/resource.h>
+#include <unistd.h>
+#include <QThreadPool>
+#include <QtConcurrent/QtConcurrentRun>
+
 #include "translations/i18n.h"
+#include "ui/background_pool.h"
 #include "ui/workbench/margin_view.h"
 #include "ui/workbench/model_view.h"
 #include "ui/workbench/run_overlay.h"
@@ -209,6 +215,22 @@ class WorkbenchTest : public QObject {
         QVERIFY2(error.contains(QStringLiteral("bad.csv")), qPrintable(error));
         QCOMPARE(w.runs().size(), std::size_t(2));
         QVERIFY(!w.loadingRun());
+    }
+
+    // Issue 30 item 3: the screens' long work (runs, programs, plots' paths) runs on their own
+    // pool, never Qt's global one (Qt paints with it), at a nice value above the screens' own,
+    // so a load never takes the core the E-stop key needs.
+    void theScreensBackgroundWorkYieldsToTheScreens() {
+        QVERIFY(backgroundPool() != QThreadPool::globalInstance());
+        const int screens = getpriority(PRIO_PROCESS, static_cast<id_t>(gettid()));
+        for (int i = 0; i < backgroundPool()->maxThreadCount() + 1; ++i) {
+            QFuture<int> nice = QtConcurrent::run(backgroundPool(), [] {
+                return getpriority(PRIO_PROCESS, static_cast<id_t>(gettid()));
+            });
+            // Waited for, not asked: result() on a task not yet started runs it on this thread.
+            QTRY_VERIFY(nice.isFinished());
+            QCOMPARE(nice.result(), screens + 10);
+        }
     }
 
     // Issue 30 item 3: a long run is drawn from at most kMaxPlotPoints points a graph, made with
