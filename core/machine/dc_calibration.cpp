@@ -200,23 +200,35 @@ CalibrationResult calibrate(const CalibrationInput& in) {
         r.error = "only one count above zero came: too few to measure a speed";
         return r;
     }
+    // Times from the first pulse's, so that counts stamped at one instant (one read of a busy
+    // host) give exact zeros: from absolute times their mean can come out a rounding error
+    // off, and a slope fitted to that noise is no speed.
+    const double t0 = in.samples[first].tS;
     double st = 0, sc = 0;
     for (std::size_t i = first; i < in.samples.size(); ++i) {
-        st += in.samples[i].tS;
+        st += in.samples[i].tS - t0;
         sc += static_cast<double>(in.samples[i].count);
     }
     const double mt = st / static_cast<double>(n), mc = sc / static_cast<double>(n);
     double stt = 0, stc = 0;
     for (std::size_t i = first; i < in.samples.size(); ++i) {
-        const double dt = in.samples[i].tS - mt;
+        const double dt = in.samples[i].tS - t0 - mt;
         stt += dt * dt;
         stc += dt * (static_cast<double>(in.samples[i].count) - mc);
     }
-    if (!(stt > 0.0)) {
+    if (!(last.tS > t0) || !(stt > 0.0)) {
         r.error = "the counts came all at once: their times do not measure a speed";
         return r;
     }
     r.pulsesPerS = stc / stt;
+    if (!(std::isfinite(r.pulsesPerS) && r.pulsesPerS > 0.0)) {
+        char why[160];
+        std::snprintf(why, sizeof why,
+                      "the counts do not rise with time (%.3g pulses/s fitted from %zu counts)",
+                      r.pulsesPerS, n);
+        r.error = why;
+        return r;
+    }
     if (auto why = implausibleRun(in.samples, first, r.pulsesPerS, in.limits)) {
         r.error = *why;
         return r;

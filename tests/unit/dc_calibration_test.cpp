@@ -60,6 +60,25 @@ TEST(DcCalibration, StreamsThatMeasureNothingSayWhy) {
     EXPECT_NE(calibrate(in).error.find("positive"), std::string::npos);
 }
 
+// Found by the calibration_stream fuzz target (CI, stop 36): counts that came in one read, all
+// stamped 0.045 s. Their mean time is 0.045000000000000005 in doubles, so the spread of the
+// times came out a rounding error above zero and the slope was taken from noise: a run called
+// good with 0 pulses/s. The times are measured from the first pulse's, where equal is zero.
+TEST(DcCalibration, CountsStampedAtOneInstantMeasureNoSpeedWhateverTheRounding) {
+    CalibrationInput in;
+    in.samples = {{0.045, 51}, {0.045, 272}, {0.045, 674}};
+    in.travelMm = 140.0;
+    const CalibrationResult r = calibrate(in);
+    EXPECT_FALSE(r.ok);
+    EXPECT_NE(r.error.find("all at once"), std::string::npos) << r.error;
+    // The same counts a period apart measure a speed.
+    in.samples = {{0.045, 51}, {0.077, 272}, {0.109, 674}};
+    in.limits.maxPulsesPerS = 1e6;
+    const CalibrationResult q = calibrate(in);
+    EXPECT_TRUE(q.ok) << q.error;
+    EXPECT_GT(q.pulsesPerS, 0.0);
+}
+
 TEST(DcCalibration, TheRecorderPairsBytesByTimeAndDropsABrokenPair) {
     CalibrationRecorder rec;
     auto send = [&](std::uint16_t c, double t) {
