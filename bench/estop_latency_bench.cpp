@@ -413,8 +413,12 @@ int main(int argc, char** argv) {
                 link.post([](XyController& c) { c.resetEmergencyStop(); });
             else if (s.state == ControllerState::Alarm)
                 link.post([](XyController& c) { c.acknowledgeAlarms(); });
+            else if (s.state == ControllerState::AutoIdle && !s.homed)
+                link.post([](XyController& c) { c.home(); });
             else if (s.state == ControllerState::Manual || s.state == ControllerState::AutoIdle)
                 window.startProgram(false);
+            else if (s.state == ControllerState::Paused)
+                link.post([](XyController& c) { c.resume(); });
             else
                 return false;
             return true;
