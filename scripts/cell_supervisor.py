@@ -29,7 +29,7 @@ APPLIED = 1
 STATES = ["Manual", "AutoIdle", "Homing", "Running", "Waiting", "Paused", "Alarm", "EStop"]
 AUTO_IDLE, ALARM, ESTOP = 1, 6, 7
 RESULTS = ["none", "applied", "no such program", "compile errors", "busy", "save failed",
-           "bad download block", "not ready"]
+           "bad download block", "not ready", "nothing to do"]
 TOLERANCE_MM = 0.5  # the rail's in-position band is tighter; this only tells a wrong target
 
 

@@ -268,6 +268,10 @@
         <translation>Cuentas perdidas: la cuenta difiere en %1 mm del recorrido que hizo el accionamiento, la posición es errónea y se cortó el accionamiento. Reduzca la velocidad o revise el encoder y la tarjeta contadora, reconozca y vuelva a referenciar.</translation>
     </message>
     <message>
+        <source>Runaway: seed 004&apos;s law drove an axis on, away from its set point (it acts on |e| with the direction fixed for the move, so an axis past its set point is driven further), and the drives were cut at the soft limit at %1 mm. Acknowledge, then move it back inside the limits.</source>
+        <translation>Embalamiento: la ley de la semilla 004 llevó un eje adelante, lejos de su punto de consigna (actúa sobre |e| con el sentido fijado para el movimiento, así que un eje que pasa su punto de consigna es llevado aún más lejos), y se cortaron los accionamientos en el límite de software en %1 mm. Reconozca y llévela de vuelta dentro de los límites.</translation>
+    </message>
+    <message>
         <source>%1: Travel to x=%2 y=%4 at maximum speed.</source>
         <translation>%1: Desplazamiento a x=%2 y=%4 a velocidad máxima.</translation>
     </message>
@@ -330,6 +334,10 @@
     <message>
         <source>Over-current: a motor of the table (x or y axis) drew too much current at %1 % PWM and the drives were cut. Free the axis, acknowledge, then home again.</source>
         <translation>Sobrecorriente: un motor de la mesa (eje x o y) consumió demasiada corriente a %1 % de PWM y se cortaron los accionamientos. Libere el eje, reconozca y vuelva a referenciar.</translation>
+    </message>
+    <message>
+        <source>Runaway: seed 004&apos;s law drove an axis of the table (x or y) on, away from its set point: it acts on |e| with the direction fixed for the move, so an axis that passes its set point is driven further. Both drives were cut at the soft limit at %1 mm. Acknowledge, then move the table back inside the limits (the seed-signed and engineered laws drive back instead).</source>
+        <translation>Embalamiento: la ley de la semilla 004 llevó un eje de la mesa (x o y) adelante, lejos de su punto de consigna: actúa sobre |e| con el sentido fijado para el movimiento, así que un eje que pasa su punto de consigna es llevado aún más lejos. Se cortaron ambos accionamientos en el límite de software en %1 mm. Reconozca y lleve la mesa de vuelta dentro de los límites (las leyes seed-signed y engineered la traen de vuelta).</translation>
     </message>
 </context>
 <context>
@@ -489,6 +497,21 @@
     <message>
         <source>... and %1 more diagnostic(s) not listed</source>
         <translation>... y %1 diagnóstico(s) más no listado(s)</translation>
+    </message>
+</context>
+<context>
+    <name>JournalNotice</name>
+    <message>
+        <source>The history is kept by another trilho (pid %1 on %2): this one writes %3.</source>
+        <translation>El historial lo lleva otro trilho (pid %1 en %2): este escribe %3.</translation>
+    </message>
+    <message>
+        <source>The history is kept by another trilho: this one writes %1.</source>
+        <translation>El historial lo lleva otro trilho: este escribe %1.</translation>
+    </message>
+    <message>
+        <source>The screens started %1 (%2) stopped without their end mark: they were killed, crashed or lost power.</source>
+        <translation>Las pantallas iniciadas el %1 (%2) se detuvieron sin su marca de fin: se las mató, fallaron o se quedaron sin energía.</translation>
     </message>
 </context>
 <context>
@@ -692,6 +715,14 @@
         <translation>Recibiendo las cuentas en %1...</translation>
     </message>
     <message>
+        <source>The stream is refused, nothing to save: %1. Press Start for a new run.</source>
+        <translation>El flujo fue rechazado, nada que guardar: %1. Pulse Iniciar para una nueva ejecución.</translation>
+    </message>
+    <message>
+        <source>Nothing to save: %1</source>
+        <translation>Nada que guardar: %1</translation>
+    </message>
+    <message>
         <source>%1 counts, %2 pulses/s; the board stopped at about %3 pulses. %4 mm per pulse, %5 mm per turn (the profile has %6).</source>
         <translation>%1 cuentas, %2 pulsos/s; la placa se detuvo en unos %3 pulsos. %4 mm por pulso, %5 mm por vuelta (el perfil tiene %6).</translation>
     </message>
@@ -706,10 +737,6 @@
     <message>
         <source>Machine profiles (*.json)</source>
         <translation>Perfiles de máquina (*.json)</translation>
-    </message>
-    <message>
-        <source>Cannot write %1: %2</source>
-        <translation>No se puede escribir %1: %2</translation>
     </message>
     <message>
         <source>Saved: %1</source>
@@ -796,6 +823,10 @@
     <message>
         <source>Modbus RTU needs the serial device, e.g. /dev/ttyUSB0 (or turn RTU off).</source>
         <translation>Modbus RTU necesita el dispositivo serie, p. ej. /dev/ttyUSB0 (o desactive RTU).</translation>
+    </message>
+    <message>
+        <source>The DNC settings could not be saved to %1 (a full disk or a folder that cannot be written): they hold until trilho closes.</source>
+        <translation>La configuración del DNC no pudo guardarse en %1 (disco lleno o carpeta sin permiso de escritura): vale hasta que trilho se cierre.</translation>
     </message>
     <message>
         <source>Warning: %1 can be reached from other computers. Modbus has no password and no encryption: anyone on that network can read this machine and, while Remote is on, change its gains and run programs. Use 127.0.0.1 unless the cell&apos;s network is closed.</source>
@@ -1062,6 +1093,14 @@
         <translation>estado</translation>
     </message>
     <message>
+        <source>start</source>
+        <translation>inicio</translation>
+    </message>
+    <message>
+        <source>stop</source>
+        <translation>fin</translation>
+    </message>
+    <message>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
@@ -1169,6 +1208,10 @@
 </context>
 <context>
     <name>trilho::ui::MachineLink</name>
+    <message>
+        <source>The simulated rail started again at x = 0 mm: the run that was going is lost; Execute homes it first.</source>
+        <translation>El riel simulado volvió a empezar en x = 0 mm: la ejecución en curso se perdió; Ejecutar lo referencia antes.</translation>
+    </message>
     <message>
         <source>Command not taken: the servo thread&apos;s queue is full. Press again.</source>
         <translation>Comando no aceptado: la cola del servo está llena. Pulse de nuevo.</translation>
@@ -1742,6 +1785,10 @@
 <context>
     <name>trilho::ui::OperatorFrame</name>
     <message>
+        <source>Settings not saved: cannot write %1 (a full disk or a folder that cannot be written). The old settings are kept; this change holds until trilho closes.</source>
+        <translation>Configuración no guardada: no se puede escribir %1 (disco lleno o carpeta sin permiso de escritura). Se conserva la configuración anterior; este cambio vale hasta que trilho se cierre.</translation>
+    </message>
+    <message>
         <source>Machine</source>
         <translation>Máquina</translation>
     </message>
@@ -1903,6 +1950,10 @@
     <message>
         <source>drive (DAC code)</source>
         <translation>accionamiento (código DAC)</translation>
+    </message>
+    <message>
+        <source>cannot write &apos;%1&apos;: the image could not be encoded</source>
+        <translation>no se puede escribir &apos;%1&apos;: la imagen no se pudo codificar</translation>
     </message>
 </context>
 <context>
@@ -2086,10 +2137,6 @@
     <message>
         <source>No program is selected: there is no file to save to.</source>
         <translation>Ningún programa seleccionado: no hay archivo donde guardar.</translation>
-    </message>
-    <message>
-        <source>cannot save &apos;%1&apos;: %2</source>
-        <translation>no se pudo guardar &apos;%1&apos;: %2</translation>
     </message>
 </context>
 <context>
@@ -2800,10 +2847,6 @@
         <translation>Perfiles de máquina (*.json)</translation>
     </message>
     <message>
-        <source>cannot save &apos;%1&apos;: %2</source>
-        <translation>no se pudo guardar &apos;%1&apos;: %2</translation>
-    </message>
-    <message>
         <source>Saved %1: trilho-cli run --machine %1 uses it.</source>
         <translation>Guardado %1: trilho-cli run --machine %1 lo usa.</translation>
     </message>
@@ -2907,16 +2950,32 @@
         <translation>No se pudo escribir el historial: %1</translation>
     </message>
     <message>
+        <source>The simulated machine started again at its origin: the run that was going is lost.</source>
+        <translation>La máquina simulada volvió a empezar en su origen: la ejecución en curso se perdió.</translation>
+    </message>
+    <message>
+        <source>Positions are unknown until homed: the plotter&apos;s protocol has no question the board answers with where it stands.</source>
+        <translation>Las posiciones son desconocidas hasta la referencia: el protocolo del plotter no tiene pregunta a la que la placa responda dónde está.</translation>
+    </message>
+    <message>
+        <source>Positions are unknown until homed; the board is asked which set point it last ran.</source>
+        <translation>Las posiciones son desconocidas hasta la referencia; se pregunta a la placa el último punto de consigna que ejecutó.</translation>
+    </message>
+    <message>
+        <source>unknown until homed</source>
+        <translation>desconocida hasta la referencia</translation>
+    </message>
+    <message>
+        <source>the board&apos;s last set point, not homed</source>
+        <translation>último punto de consigna de la placa, sin referencia</translation>
+    </message>
+    <message>
         <source>Block N%1, line %2</source>
         <translation>Bloque N%1, línea %2</translation>
     </message>
     <message>
         <source>Line %1</source>
         <translation>Línea %1</translation>
-    </message>
-    <message>
-        <source>Cannot write %1: %2</source>
-        <translation>No se puede escribir %1: %2</translation>
     </message>
     <message>
         <source>Simulated machine</source>
@@ -2927,12 +2986,16 @@
         <translation>%1 a %2 bit/s: %3 - paquetes %4, RESENDs %5, tiempos agotados %6</translation>
     </message>
     <message>
+        <source>LINK LOST</source>
+        <translation>ENLACE PERDIDO</translation>
+    </message>
+    <message>
         <source>link up</source>
         <translation>enlace activo</translation>
     </message>
     <message>
-        <source>LINK LOST</source>
-        <translation>ENLACE PERDIDO</translation>
+        <source>port open, no answer yet</source>
+        <translation>puerto abierto, aún sin respuesta</translation>
     </message>
     <message>
         <source>Connection</source>

@@ -268,6 +268,10 @@
         <translation>Contagens perdidas: a contagem difere em %1 mm do percurso que o acionamento fez, a posição está errada e o acionamento foi cortado. Reduza a velocidade ou verifique o encoder e a placa contadora, reconheça e refaça o referenciamento.</translation>
     </message>
     <message>
+        <source>Runaway: seed 004&apos;s law drove an axis on, away from its set point (it acts on |e| with the direction fixed for the move, so an axis past its set point is driven further), and the drives were cut at the soft limit at %1 mm. Acknowledge, then move it back inside the limits.</source>
+        <translation>Disparo: a lei da semente 004 levou um eixo adiante, para longe do seu ponto de ajuste (ela age sobre |e| com o sentido fixado para o movimento, então um eixo que passa do ponto de ajuste é levado ainda mais longe), e os acionamentos foram cortados no limite de software em %1 mm. Reconheça e leve-a de volta para dentro dos limites.</translation>
+    </message>
+    <message>
         <source>%1: Travel to x=%2 y=%4 at maximum speed.</source>
         <translation>%1: Deslocamento para x=%2 y=%4 com velocidade máxima.</translation>
     </message>
@@ -330,6 +334,10 @@
     <message>
         <source>Over-current: a motor of the table (x or y axis) drew too much current at %1 % PWM and the drives were cut. Free the axis, acknowledge, then home again.</source>
         <translation>Sobrecorrente: um motor da mesa (eixo x ou y) puxou corrente demais a %1 % de PWM e os acionamentos foram cortados. Libere o eixo, reconheça e refaça o referenciamento.</translation>
+    </message>
+    <message>
+        <source>Runaway: seed 004&apos;s law drove an axis of the table (x or y) on, away from its set point: it acts on |e| with the direction fixed for the move, so an axis that passes its set point is driven further. Both drives were cut at the soft limit at %1 mm. Acknowledge, then move the table back inside the limits (the seed-signed and engineered laws drive back instead).</source>
+        <translation>Disparo: a lei da semente 004 levou um eixo da mesa (x ou y) adiante, para longe do seu ponto de ajuste: ela age sobre |e| com o sentido fixado para o movimento, então um eixo que passa do ponto de ajuste é levado ainda mais longe. Os dois acionamentos foram cortados no limite de software em %1 mm. Reconheça e leve a mesa de volta para dentro dos limites (as leis seed-signed e engineered a trazem de volta).</translation>
     </message>
 </context>
 <context>
@@ -489,6 +497,21 @@
     <message>
         <source>... and %1 more diagnostic(s) not listed</source>
         <translation>... e mais %1 diagnóstico(s) não listado(s)</translation>
+    </message>
+</context>
+<context>
+    <name>JournalNotice</name>
+    <message>
+        <source>The history is kept by another trilho (pid %1 on %2): this one writes %3.</source>
+        <translation>O histórico é mantido por outro trilho (pid %1 em %2): este escreve %3.</translation>
+    </message>
+    <message>
+        <source>The history is kept by another trilho: this one writes %1.</source>
+        <translation>O histórico é mantido por outro trilho: este escreve %1.</translation>
+    </message>
+    <message>
+        <source>The screens started %1 (%2) stopped without their end mark: they were killed, crashed or lost power.</source>
+        <translation>As telas iniciadas em %1 (%2) pararam sem a marca de fim: foram encerradas à força, falharam ou ficaram sem energia.</translation>
     </message>
 </context>
 <context>
@@ -692,6 +715,14 @@
         <translation>Recebendo as contagens em %1...</translation>
     </message>
     <message>
+        <source>The stream is refused, nothing to save: %1. Press Start for a new run.</source>
+        <translation>O fluxo foi recusado, nada a salvar: %1. Pressione Iniciar para uma nova execução.</translation>
+    </message>
+    <message>
+        <source>Nothing to save: %1</source>
+        <translation>Nada a salvar: %1</translation>
+    </message>
+    <message>
         <source>%1 counts, %2 pulses/s; the board stopped at about %3 pulses. %4 mm per pulse, %5 mm per turn (the profile has %6).</source>
         <translation>%1 contagens, %2 pulsos/s; a placa parou em cerca de %3 pulsos. %4 mm por pulso, %5 mm por volta (o perfil tem %6).</translation>
     </message>
@@ -706,10 +737,6 @@
     <message>
         <source>Machine profiles (*.json)</source>
         <translation>Perfis de máquina (*.json)</translation>
-    </message>
-    <message>
-        <source>Cannot write %1: %2</source>
-        <translation>Não foi possível gravar %1: %2</translation>
     </message>
     <message>
         <source>Saved: %1</source>
@@ -796,6 +823,10 @@
     <message>
         <source>Modbus RTU needs the serial device, e.g. /dev/ttyUSB0 (or turn RTU off).</source>
         <translation>O Modbus RTU precisa do dispositivo serial, p. ex. /dev/ttyUSB0 (ou desligue o RTU).</translation>
+    </message>
+    <message>
+        <source>The DNC settings could not be saved to %1 (a full disk or a folder that cannot be written): they hold until trilho closes.</source>
+        <translation>As configurações do DNC não puderam ser salvas em %1 (disco cheio ou pasta sem permissão de escrita): valem até o trilho fechar.</translation>
     </message>
     <message>
         <source>Warning: %1 can be reached from other computers. Modbus has no password and no encryption: anyone on that network can read this machine and, while Remote is on, change its gains and run programs. Use 127.0.0.1 unless the cell&apos;s network is closed.</source>
@@ -1062,6 +1093,14 @@
         <translation>estado</translation>
     </message>
     <message>
+        <source>start</source>
+        <translation>início</translation>
+    </message>
+    <message>
+        <source>stop</source>
+        <translation>fim</translation>
+    </message>
+    <message>
         <source>Time</source>
         <translation>Hora</translation>
     </message>
@@ -1169,6 +1208,10 @@
 </context>
 <context>
     <name>trilho::ui::MachineLink</name>
+    <message>
+        <source>The simulated rail started again at x = 0 mm: the run that was going is lost; Execute homes it first.</source>
+        <translation>O trilho simulado recomeçou em x = 0 mm: a execução em curso se perdeu; Executar faz a referência antes.</translation>
+    </message>
     <message>
         <source>Command not taken: the servo thread&apos;s queue is full. Press again.</source>
         <translation>Comando não aceito: a fila do servo está cheia. Pressione de novo.</translation>
@@ -1742,6 +1785,10 @@
 <context>
     <name>trilho::ui::OperatorFrame</name>
     <message>
+        <source>Settings not saved: cannot write %1 (a full disk or a folder that cannot be written). The old settings are kept; this change holds until trilho closes.</source>
+        <translation>Configurações não salvas: não é possível gravar %1 (disco cheio ou pasta sem permissão de escrita). As configurações antigas são mantidas; esta mudança vale até o trilho fechar.</translation>
+    </message>
+    <message>
         <source>Machine</source>
         <translation>Máquina</translation>
     </message>
@@ -1903,6 +1950,10 @@
     <message>
         <source>drive (DAC code)</source>
         <translation>acionamento (código DAC)</translation>
+    </message>
+    <message>
+        <source>cannot write &apos;%1&apos;: the image could not be encoded</source>
+        <translation>não é possível gravar &apos;%1&apos;: a imagem não pôde ser codificada</translation>
     </message>
 </context>
 <context>
@@ -2086,10 +2137,6 @@
     <message>
         <source>No program is selected: there is no file to save to.</source>
         <translation>Nenhum programa selecionado: não há arquivo onde salvar.</translation>
-    </message>
-    <message>
-        <source>cannot save &apos;%1&apos;: %2</source>
-        <translation>não foi possível salvar &apos;%1&apos;: %2</translation>
     </message>
 </context>
 <context>
@@ -2800,10 +2847,6 @@
         <translation>Perfis de máquina (*.json)</translation>
     </message>
     <message>
-        <source>cannot save &apos;%1&apos;: %2</source>
-        <translation>não foi possível salvar &apos;%1&apos;: %2</translation>
-    </message>
-    <message>
         <source>Saved %1: trilho-cli run --machine %1 uses it.</source>
         <translation>Salvo %1: trilho-cli run --machine %1 o usa.</translation>
     </message>
@@ -2907,16 +2950,32 @@
         <translation>O histórico não pôde ser gravado: %1</translation>
     </message>
     <message>
+        <source>The simulated machine started again at its origin: the run that was going is lost.</source>
+        <translation>A máquina simulada recomeçou na origem: a execução em curso se perdeu.</translation>
+    </message>
+    <message>
+        <source>Positions are unknown until homed: the plotter&apos;s protocol has no question the board answers with where it stands.</source>
+        <translation>As posições são desconhecidas até a referência: o protocolo do plotter não tem pergunta à qual a placa responda onde está.</translation>
+    </message>
+    <message>
+        <source>Positions are unknown until homed; the board is asked which set point it last ran.</source>
+        <translation>As posições são desconhecidas até a referência; a placa é consultada sobre o último ponto de ajuste que executou.</translation>
+    </message>
+    <message>
+        <source>unknown until homed</source>
+        <translation>desconhecida até a referência</translation>
+    </message>
+    <message>
+        <source>the board&apos;s last set point, not homed</source>
+        <translation>último ponto de ajuste da placa, sem referência</translation>
+    </message>
+    <message>
         <source>Block N%1, line %2</source>
         <translation>Bloco N%1, linha %2</translation>
     </message>
     <message>
         <source>Line %1</source>
         <translation>Linha %1</translation>
-    </message>
-    <message>
-        <source>Cannot write %1: %2</source>
-        <translation>Não foi possível gravar %1: %2</translation>
     </message>
     <message>
         <source>Simulated machine</source>
@@ -2927,12 +2986,16 @@
         <translation>%1 a %2 bit/s: %3 - pacotes %4, RESENDs %5, tempos esgotados %6</translation>
     </message>
     <message>
+        <source>LINK LOST</source>
+        <translation>LIGAÇÃO PERDIDA</translation>
+    </message>
+    <message>
         <source>link up</source>
         <translation>ligação ativa</translation>
     </message>
     <message>
-        <source>LINK LOST</source>
-        <translation>LIGAÇÃO PERDIDA</translation>
+        <source>port open, no answer yet</source>
+        <translation>porta aberta, ainda sem resposta</translation>
     </message>
     <message>
         <source>Connection</source>

@@ -17,6 +17,7 @@
 #include <QVBoxLayout>
 
 #include "ui/dnc_link.h"
+#include "ui/settings_saved.h"
 
 namespace trilho {
 namespace ui {
@@ -166,10 +167,19 @@ bool DncDialog::apply() {
     const std::optional<DncSettings> s = fields(&error);
     if (s) {
         s->save(settings_);
+        // Said here when it cannot be written (issue 30 item 1).
+        const QString notSaved =
+            settingsSaved(settings_)
+                ? QString()
+                : tr("The DNC settings could not be saved to %1 (a full disk or a folder that "
+                     "cannot be written): they hold until trilho closes.")
+                      .arg(settings_.fileName());
         if (!s->enabled)
             link_.stop();
         else
             link_.start(*s, &error);  // the error also shows in the state line
+        if (!notSaved.isEmpty())
+            error = error.isEmpty() ? notSaved : error + QLatin1Char('\n') + notSaved;
         emit applied(*s);
     }
     message_->setText(error);

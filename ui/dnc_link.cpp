@@ -103,7 +103,8 @@ void DncLink::stop() {
     error_.clear();
     shortError_.clear();
     if (!server_) return;
-    server_.reset();  // closes the port and drops the clients
+    server_->flushHistory();  // what its summaries hold back goes to the history first
+    server_.reset();          // closes the port and drops the clients
     machine_.reset();
     emit historyLine(QStringLiteral("DNC: stopped"));
     emit stateChanged();

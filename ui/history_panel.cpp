@@ -61,6 +61,9 @@ QString HistoryPanel::kindText(const QString& kind) {
     if (kind == QLatin1String("alarm")) return tr("alarm");
     if (kind == QLatin1String("ack")) return tr("acknowledged");
     if (kind == QLatin1String("status")) return tr("status");
+    // The screens' marks (Journal::markStart and close).
+    if (kind == QLatin1String("start")) return tr("start");
+    if (kind == QLatin1String("stop")) return tr("stop");
     return kind;
 }
 

@@ -3,6 +3,7 @@
 #include <QDateTime>
 
 #include "core/machine/event_text.h"
+#include "ui/journal_notice.h"
 
 namespace trilho {
 namespace ui {
@@ -39,7 +40,21 @@ MachineLink::~MachineLink() {
 }
 
 bool MachineLink::openJournal(const QString& path, QString* error) {
-    return journal_.open(path, error);
+    journalNotices_.clear();
+    if (!journal_.open(path, error)) return false;
+    journal_.markStart(Journal::whoAmI());
+    // The simulated rail is made with the screens, placed at x = 0 with its counter at zero
+    // there (placeAt(0) above): after a kill it is where the screens say, and nothing of the
+    // killed session's rail or run survives.
+    journalNotices_ = journalOpeningNotices(
+        journal_.opening(),
+        tr("The simulated rail started again at x = 0 mm: the run that was going is lost; "
+           "Execute homes it first."));
+    for (const QString& line : std::as_const(journalNotices_)) {
+        journalNote(QStringLiteral("status"), 0, line);
+        emit journalNotice(line);
+    }
+    return true;
 }
 
 void MachineLink::journalNote(const QString& kind, int code, const QString& text) {

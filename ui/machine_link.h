@@ -28,9 +28,16 @@ class MachineLink : public QObject {
     ServoWorker& worker() { return *worker_; }
     SimRail& rail() { return *rail_; }
 
-    /// Opens the persistent history (append-only) at path.
+    /// Opens the persistent history (append-only) at path, or this process' own file beside
+    /// it when another trilho keeps that one, and marks the screens' start (the stop is marked
+    /// when the link goes). What there is to say about it (journalNotices()) is written to it
+    /// and emitted as journalNotice.
     bool openJournal(const QString& path, QString* error);
+    /// The file written (path, or this process' own).
     QString journalPath() const { return journal_.path(); }
+    /// The lines the last openJournal() had to say (another trilho keeps the file; the last
+    /// screens stopped without their end mark), for a window made after it.
+    const QStringList& journalNotices() const { return journalNotices_; }
     void journalNote(const QString& kind, int code, const QString& text);
 
     // commands
@@ -85,6 +92,8 @@ class MachineLink : public QObject {
     void eventArrived(const trilho::ControllerEvent& event);
     /// The history could not be written (the text says why); emitted once per failure.
     void journalFailed(const QString& reason);
+    /// Something to say about the journal just opened (journalNotices(), one line each).
+    void journalNotice(const QString& line);
     /// The servo thread's command queue had no room: the command was not taken (never said
     /// applied). Says which; the screens show it and the operator can press again.
     void commandRefused(const QString& what);
@@ -103,6 +112,7 @@ class MachineLink : public QObject {
     Journal journal_;
     QElapsedTimer clock_;  ///< journal batching
     bool journalWarned_ = false;
+    QStringList journalNotices_;
     FaultInjection faults_;                 ///< GUI thread's copy
     SeqLock<FaultInjection> faultHandoff_;  ///< to the plant, on the servo thread
     std::atomic<std::uint64_t> faultVersion_{0};

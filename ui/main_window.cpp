@@ -115,6 +115,10 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     statusBar()->addPermanentWidget(compileProgress_);
     statusBar()->addPermanentWidget(stateLabel_);
     connect(&link_, &MachineLink::journalFailed, this, &MainWindow::reportJournalProblem);
+    connect(&link_, &MachineLink::journalNotice, this, &MainWindow::showJournalNotice);
+    // The journal is opened before the screen (main): what it had to say, said now.
+    for (const QString& line : link_.journalNotices())
+        showJournalNotice(line);
     // A command the servo thread's queue could not take is said, never passed over.
     connect(&link_, &MachineLink::commandRefused, this,
             [this](const QString& what) { statusBar()->showMessage(what, 8000); });
@@ -154,6 +158,9 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
 
 MainWindow::~MainWindow() {
     qApp->removeEventFilter(this);
+    // The link's last lines (what its summaries hold back) reach the history while it is
+    // still here, as on the XY machines' screens.
+    dncLink()->stop();
     // Children are destroyed after this body: a focused gain field then loses focus and emits
     // editingFinished. Nothing may reach this half-destroyed window any more.
     for (QObject* child : findChildren<QObject*>())
@@ -180,11 +187,13 @@ void MainWindow::addOptionItems(QMenu* options) {
     auto* laws = new QActionGroup(this);
     classicLaw_ = lawMenu_->addAction(QString(), this, [this] {
         settings_.setValue(QStringLiteral("law"), QStringLiteral("classic"));
+        rememberSettings();
         link_.setLaw(LoopLaw::Classic);
         loadGainsFromSettings();
     });
     engineeredLaw_ = lawMenu_->addAction(QString(), this, [this] {
         settings_.setValue(QStringLiteral("law"), QStringLiteral("engineered"));
+        rememberSettings();
         link_.setLaw(LoopLaw::Engineered);
         loadGainsFromSettings();
     });
@@ -195,10 +204,12 @@ void MainWindow::addOptionItems(QMenu* options) {
     standardDialect_ = dialectMenu_->addAction(QString(), this, [this] {
         dialect_ = Dialect::Standard;
         settings_.setValue(QStringLiteral("dialect"), QStringLiteral("standard"));
+        rememberSettings();
     });
     classicDialect_ = dialectMenu_->addAction(QString(), this, [this] {
         dialect_ = Dialect::Classic;
         settings_.setValue(QStringLiteral("dialect"), QStringLiteral("classic"));
+        rememberSettings();
     });
     for (QAction* a : {standardDialect_, classicDialect_})
         a->setCheckable(true), dialects->addAction(a);
@@ -353,6 +364,7 @@ QString MainWindow::armedFaultsHint() const {
 void MainWindow::setTheme(Theme theme) {
     applyTheme(*qApp, theme);
     settings_.setValue(QStringLiteral("theme"), themeName(theme));
+    rememberSettings();
     (theme == Theme::Classic ? classicTheme_ : systemTheme_)->setChecked(true);
     panel_->setAutomaticMode(last_.automatic);
 }
@@ -363,6 +375,7 @@ void MainWindow::chooseFile() {
     if (dialog.exec() == QDialog::Accepted && !dialog.selectedFile().isEmpty())
         selectProgram(dialog.selectedFile());
     settings_.setValue(QStringLiteral("lastFolder"), dialog.currentFolder());
+    rememberSettings();
 }
 
 bool MainWindow::selectProgram(const QString& path) {
@@ -379,6 +392,7 @@ bool MainWindow::selectProgram(const QString& path) {
     showProgramName();
     settings_.setValue(QStringLiteral("lastProgram"), path);
     settings_.setValue(QStringLiteral("lastFolder"), QFileInfo(path).absolutePath());
+    rememberSettings();
     return true;
 }
 
@@ -626,6 +640,7 @@ void MainWindow::applyGain(int which, double value) {
     settings_.setValue(prefix + QStringLiteral("kp"), g.kp);
     settings_.setValue(prefix + QStringLiteral("ki"), g.ki);
     settings_.setValue(prefix + QStringLiteral("kd"), g.kd);
+    rememberSettings();
 }
 
 void MainWindow::onStatus(const ControllerStatus& s) {
@@ -692,6 +707,16 @@ void MainWindow::refreshOnline() {
     // Recomputed, never stored as text: a language switch or a state change shows at once.
     const QString text = online_ ? online_() : QString();
     if (panel_->onlineStatusField()->text() != text) panel_->setOnlineStatus(text);
+}
+
+void MainWindow::showJournalNotice(const QString& line) {
+    panel_->addStatusLine(line);
+    history_->add(QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")),
+                  QStringLiteral("status"), 0, line);
+    history_->setJournalPath(link_.journalPath());  // this process' own file, when it is one
+    // Every notice at once, for a minute (the status lines and the history keep them).
+    journalNoticesShown_ << line;
+    statusBar()->showMessage(journalNoticesShown_.join(QStringLiteral("  ")), 60000);
 }
 
 void MainWindow::reportJournalProblem(const QString& reason) {

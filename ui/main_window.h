@@ -69,6 +69,9 @@ class MainWindow : public OperatorFrame {
     bool compiling() const { return compiling_; }
     /// Says in the status bar that the history cannot be kept (e.g. a read-only folder).
     void reportJournalProblem(const QString& reason);
+    /// A line about the journal opened (MachineLink::journalNotice): in the status lines, the
+    /// history and the status bar.
+    void showJournalNotice(const QString& line);
 
   protected:
     void closeEvent(QCloseEvent* e) override;
@@ -141,6 +144,7 @@ class MainWindow : public OperatorFrame {
     QLabel* hintLabel_;    ///< what to do next (after an alarm, before homing)
     QLabel* timingLabel_;  ///< late servo ticks and the longest period; unread history lines
     QString journalProblem_;
+    QStringList journalNoticesShown_;
     QProgressBar* compileProgress_;
     bool compiling_ = false;
     QString selectedFile_;

@@ -28,6 +28,7 @@
 #include "ui/language_menu.h"
 #include "ui/machine_choice.h"
 #include "ui/program_library_panel.h"
+#include "ui/settings_saved.h"
 #include "ui/workbench/workbench_window.h"
 
 namespace trilho {
@@ -207,6 +208,16 @@ void OperatorFrame::keepLayout(const QString& geometryKey, const QString& stateK
 void OperatorFrame::saveLayout() {
     if (!geometryKey_.isEmpty()) settings_.setValue(geometryKey_, saveGeometry());
     if (!stateKey_.isEmpty()) settings_.setValue(stateKey_, saveState());
+    rememberSettings();
+}
+
+bool OperatorFrame::rememberSettings() {
+    if (settingsSaved(settings_)) return true;
+    statusBar()->showMessage(
+        tr("Settings not saved: cannot write %1 (a full disk or a folder that cannot be "
+           "written). The old settings are kept; this change holds until trilho closes.")
+            .arg(settings_.fileName()));
+    return false;
 }
 
 void OperatorFrame::resetLayout() {
@@ -267,7 +278,8 @@ void OperatorFrame::setLanguage(const QString& lang) {
     if (!installLanguage(lang)) return;
     language_ = lang;
     settings_.setValue(QStringLiteral("language"), lang);
-    retranslate();  // widgets get LanguageChange too; this covers the window itself at once
+    retranslate();
+    rememberSettings();  // widgets get LanguageChange too; this covers the window itself at once
 }
 
 void OperatorFrame::changeEvent(QEvent* e) {

@@ -156,6 +156,10 @@ class OperatorFrame : public QMainWindow {
     /// when given; default dock sizes at first show when none was restored.
     void keepLayout(const QString& geometryKey = {}, const QString& stateKey = {});
     void saveLayout();
+    /// Writes the settings now and says, on the status bar, when they could not be written (a
+    /// full disk, a read-only folder: QSettings keeps the old file; issue 30 item 1). The
+    /// change still holds until trilho closes. True when written.
+    bool rememberSettings();
     /// The DNC link served again when it was on at the last exit, always with Remote off.
     void startDnc();
     void retranslateFrame();

@@ -1,15 +1,18 @@
 #include "ui/plot_panel.h"
 
 #include <qcustomplot.h>
+#include <QBuffer>
 #include <QEvent>
 #include <QFileDialog>
 #include <QHBoxLayout>
+#include <QMessageBox>
 #include <QPainter>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QSpinBox>
 #include <QVBoxLayout>
 #include <cmath>
+
+#include "core/files/atomic_file.h"
 
 namespace trilho {
 namespace ui {
@@ -74,12 +77,16 @@ PlotPanel::PlotPanel(QWidget* parent) : QWidget(parent) {
     connect(png_, &QPushButton::clicked, this, [this] {
         const QString f = QFileDialog::getSaveFileName(this, tr("Export PNG"), QString(),
                                                        QStringLiteral("PNG (*.png)"));
-        if (!f.isEmpty()) exportPng(f);
+        QString error;
+        if (!f.isEmpty() && !exportPng(f, &error))
+            QMessageBox::warning(this, tr("Export PNG"), error);
     });
     connect(csv_, &QPushButton::clicked, this, [this] {
         const QString f = QFileDialog::getSaveFileName(this, tr("Export CSV"), QString(),
                                                        QStringLiteral("CSV (*.csv)"));
-        if (!f.isEmpty()) exportCsv(f);
+        QString error;
+        if (!f.isEmpty() && !exportCsv(f, &error))
+            QMessageBox::warning(this, tr("Export CSV"), error);
     });
     retranslate();
 }
@@ -158,7 +165,7 @@ void PlotPanel::replot() {
     }
 }
 
-bool PlotPanel::exportPng(const QString& path) {
+bool PlotPanel::exportPng(const QString& path, QString* error) {
     // Both plots, as on screen (side by side): the position alone hid the error and the drive.
     const QPixmap left = position_->toPixmap();
     const QPixmap right = error_->toPixmap();
@@ -169,15 +176,17 @@ bool PlotPanel::exportPng(const QString& path) {
     painter.drawPixmap(0, 0, left);
     painter.drawPixmap(left.width(), 0, right);
     painter.end();
-    return image.save(path, "PNG");
+    QByteArray png;
+    QBuffer buffer(&png);
+    buffer.open(QIODevice::WriteOnly);
+    if (!image.save(&buffer, "PNG")) {
+        if (error) *error = tr("cannot write '%1': the image could not be encoded").arg(path);
+        return false;
+    }
+    return saveFileAtomically(path, png, error);
 }
 
 bool PlotPanel::exportCsv(const QString& path, QString* error) {
-    QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly)) {
-        if (error) *error = f.errorString();
-        return false;
-    }
     QByteArray out = "t_s,setpoint_mm,position_mm,error_mm,drive\n";
     auto sp = setpointGraph_->data(), pos = positionGraph_->data(), err = errorGraph_->data(),
          drv = driveGraph_->data();
@@ -188,12 +197,7 @@ bool PlotPanel::exportCsv(const QString& path, QString* error) {
                QByteArray::number(err->at(i)->value, 'f', 4) + ',' +
                QByteArray::number(drv->at(i)->value, 'f', 0) + '\n';
     }
-    f.write(out);
-    if (!f.commit()) {
-        if (error) *error = f.errorString();
-        return false;
-    }
-    return true;
+    return saveFileAtomically(path, out, error);
 }
 
 }  // namespace ui

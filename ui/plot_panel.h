@@ -20,7 +20,9 @@ class PlotPanel : public QWidget {
     void addSample(const ControllerStatus& s);
     void setPaused(bool paused);
     bool paused() const { return paused_; }
-    bool exportPng(const QString& path);
+    /// Both writes are atomic (issue 30 item 1): false, with *error naming the file and the
+    /// reason, leaves an old file as it was.
+    bool exportPng(const QString& path, QString* error = nullptr);
     bool exportCsv(const QString& path, QString* error = nullptr);
     int sampleCount() const;
     QCustomPlot* positionPlot() const { return position_; }

@@ -14,10 +14,10 @@
 #include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QSplitter>
 #include <QStackedWidget>
 #include <QVBoxLayout>
+#include "core/files/atomic_file.h"
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/source_file.h"
 
@@ -209,10 +209,10 @@ bool ProgramPanel::save(QString* error) {
         return false;
     }
     if (large_mode_) return true;  // read-only: the file on disk is the program
-    QSaveFile f(path_);
-    if (!f.open(QIODevice::WriteOnly) || f.write(editor_->toPlainText().toUtf8()) < 0 ||
-        !f.commit()) {
-        if (error) *error = tr("cannot save '%1': %2").arg(path_, f.errorString());
+    // Atomic and checked (issue 30 item 1): a full disk keeps the file as it was and the
+    // editor unsaved, so Exit still asks.
+    if (QString why; !saveFileAtomically(path_, editor_->toPlainText().toUtf8(), &why)) {
+        if (error) *error = why;
         return false;
     }
     editor_->document()->setModified(false);

@@ -4,7 +4,9 @@
 // runs its open-loop program (trilho-device table --calibration) and sends its count every
 // 32 ms until 1300 pulses; this command receives the counts (hal/serial), computes pulses
 // against time and, given the travel the operator measured, mm per pulse and mm per turn
-// (core/machine/dc_calibration.h), and can write them into a copy of the profile.
+// (core/machine/dc_calibration.h), and can write them into a copy of the profile. A stream
+// the program cannot have sent is refused as it comes or once ended (exit 3, the reason,
+// nothing written; issue 30 item 2, core/machine/dc_calibration_check.h).
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -12,13 +14,13 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <QTimer>
 #include <cmath>
 #include <numbers>
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
+#include "core/files/atomic_file.h"
 #include "core/machine/dc_calibration.h"
 #include "core/machine/machine_profile.h"
 #include "core/machine/replace_target.h"
@@ -63,7 +65,9 @@ int calibrateCommand(const QStringList& args) {
     parser.setApplicationDescription(QStringLiteral(
         "Calibrate an axis of the DC XY table (seed 004's open-loop program): receive the "
         "board's encoder counts, compute pulses against time and, with the travel measured, "
-        "the axis' millimetres per pulse and per turn."));
+        "the axis' millimetres per pulse and per turn. A stream the program cannot have sent "
+        "(a stall, garbage, counts above 1300, a flood, a gap, a board that stops early) is "
+        "refused: exit 3 with the reason, nothing written."));
     const QCommandLineOption machineOpt(QStringLiteral("machine"),
                                         QStringLiteral("The table's profile (xy-dc-table)."),
                                         QStringLiteral("PROFILE"));
@@ -148,15 +152,22 @@ int calibrateCommand(const QStringList& args) {
     QString error;
     if (!line.open({parser.value(portOpt), static_cast<int>(baud), false}, &error))
         return usageError(kCommand, error);
-    CalibrationRecorder recorder;
+    // The stream is checked as it comes (core/machine/dc_calibration_check.h): a stream the
+    // program cannot have sent ends the wait at once, and memory stays bounded whatever the
+    // board sends.
+    CalibrationRecorder recorder(CalibrationLimits::forAxis(params));
     QElapsedTimer clock;
     clock.start();
     auto now = [&] { return static_cast<double>(clock.nsecsElapsed()) * 1e-9; };
     QString lostWhy;
+    bool timedOut = false;
     QObject::connect(&line, &SerialLine::received, [&](const QByteArray& bytes) {
         const double t = now();
-        for (char b : bytes)
+        for (char b : bytes) {
             recorder.receive(static_cast<std::uint8_t>(b), t);
+            if (!recorder.refused().empty()) break;
+        }
+        if (!recorder.refused().empty()) QCoreApplication::quit();
     });
     QObject::connect(&line, &SerialLine::lost, [&](const QString& why) {
         lostWhy = why;
@@ -166,27 +177,58 @@ int calibrateCommand(const QStringList& args) {
     QObject::connect(&check, &QTimer::timeout, [&] {
         const double t = now();
         const bool ended = !recorder.samples().empty() && t - recorder.lastByteS() > quietS;
-        if (ended || t > timeoutS) QCoreApplication::quit();
+        timedOut = !ended && t > timeoutS;
+        if (ended || timedOut) QCoreApplication::quit();
     });
     check.start(20);
     QCoreApplication::exec();
     check.stop();
     line.close();
-    if (!lostWhy.isEmpty() && recorder.samples().empty()) {
-        err(QStringLiteral("trilho-cli calibrate: %1\n").arg(lostWhy));
+    const QString place =
+        QStringLiteral("trilho-cli calibrate: axis %1 on %2: ").arg(axis, parser.value(portOpt));
+    const QString nothingWritten =
+        parser.isSet(writeOpt)
+            ? QStringLiteral("; nothing written to %1").arg(parser.value(writeOpt))
+            : QString();
+    if (!lostWhy.isEmpty() && recorder.samples().empty() && recorder.refused().empty()) {
+        err(QStringLiteral("trilho-cli calibrate: %1%2\n").arg(lostWhy, nothingWritten));
+        return kAlarm;
+    }
+    // A stream that did not end by the board's silence is no run: the line lost under it, or
+    // still coming at --timeout (a board that never stops).
+    QString unended;
+    if (recorder.refused().empty() && !recorder.samples().empty()) {
+        const CalibrationSample& last = recorder.samples().back();
+        if (!lostWhy.isEmpty())
+            unended = QStringLiteral(
+                          "%1 after %2 counts (the last %3 at %4 s): the stream is not "
+                          "known to have ended")
+                          .arg(lostWhy)
+                          .arg(recorder.samples().size())
+                          .arg(last.count)
+                          .arg(last.tS, 0, 'f', 3);
+        else if (timedOut)
+            unended = QStringLiteral(
+                          "the board was still sending at --timeout (%1 s), at count "
+                          "%2: the stream did not end")
+                          .arg(timeoutS)
+                          .arg(last.count);
+    }
+    if (!unended.isEmpty()) {
+        err(place + unended + nothingWritten + QStringLiteral("\n"));
         return kAlarm;
     }
 
-    CalibrationInput in;
-    in.samples = recorder.samples();
+    CalibrationInput in = recorder.input();
     in.radPerCount = params.radPerCount;
     if (parser.isSet(travelOpt)) in.travelMm = travel;
     const CalibrationResult r = calibrate(in);
     if (!r.ok) {
-        err(QStringLiteral("trilho-cli calibrate: axis %1 on %2: %3%4\n")
-                .arg(axis, parser.value(portOpt), QString::fromStdString(r.error),
-                     in.samples.empty() ? QStringLiteral(" (waited %1 s)").arg(timeoutS)
-                                        : QString()));
+        err(place + QString::fromStdString(r.error) +
+            (in.samples.empty() && in.refused.empty()
+                 ? QStringLiteral(" (waited %1 s)").arg(timeoutS)
+                 : QString()) +
+            nothingWritten + QStringLiteral("\n"));
         return kAlarm;
     }
 
@@ -203,10 +245,8 @@ int calibrateCommand(const QStringList& args) {
         if (!again.profile) return usageError(kCommand, again.error);
         if (const QString refused = refuseToReplace(parser.value(writeOpt)); !refused.isEmpty())
             return usageError(kCommand, QStringLiteral("--write-profile: %1").arg(refused));
-        QSaveFile out(parser.value(writeOpt));
-        if (!out.open(QIODevice::WriteOnly) || out.write(bytes) != bytes.size() || !out.commit())
-            return usageError(kCommand, QStringLiteral("cannot write profile %1: %2")
-                                            .arg(parser.value(writeOpt), out.errorString()));
+        if (QString why; !saveFileAtomically(parser.value(writeOpt), bytes, &why))
+            return usageError(kCommand, QStringLiteral("cannot write profile: %1").arg(why));
     }
 
     const double oldMmPerPulse = params.mmPerTurn * params.radPerCount / (2.0 * std::numbers::pi);

@@ -79,8 +79,9 @@ QString exitStatusHelp(const char* command) {
                                           "tuned and verified in position");
         line(kUsage,
              "usage error, a profile or trace that cannot be read (named with its line and "
-             "column) or written, a test refused (outside the soft limits), or a trace with no "
-             "step");
+             "column) or written, a trace and its sidecar (NAME.run.json) that contradict each "
+             "other (another run's period, machine or rows), a test refused (outside the soft "
+             "limits), or a trace with no step");
         const char* metricsAlarm =
             "the trace is no clean record: its sidecar (NAME.run.json) says the test was "
             "aborted or the run ended in an alarm, off its target or by --max-seconds, or the "

@@ -3,9 +3,9 @@
 #include <QDateTime>
 #include <QFileInfo>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <numbers>
 
+#include "core/files/atomic_file.h"
 #include "core/machine/replace_target.h"
 #include "core/tuning/run_record.h"
 #include "host/tuning/step_test.h"
@@ -54,6 +54,10 @@ QString writeRunSidecar(const QString& tracePath, const MachineProfile& profile,
     c.periodS = periodS;
     c.rows = rows;
     c.abortReason = abortReason;
+    // Late periods lengthen the trace's steps: recorded, so that they are not read as another
+    // period (runSidecarContradiction).
+    c.tickJitterMs = options.tickJitterMs;
+    c.jitterRate = options.tickJitterMs > 0.0 ? options.jitterRate : 0.0;
     switch (profile.kind) {
         case MachineKind::Rail:
             c.law = profile.loop.law;
@@ -74,10 +78,8 @@ QString writeRunSidecar(const QString& tracePath, const MachineProfile& profile,
     const QString path = runSidecarPath(tracePath);
     if (const QString refused = refuseToReplace(path); !refused.isEmpty())
         return QStringLiteral("cannot write %1").arg(refused);
-    QSaveFile f(path);
-    const QByteArray json = runConditionsToJson(c, nullptr);
-    if (!f.open(QIODevice::WriteOnly) || f.write(json) != json.size() || !f.commit())
-        return QStringLiteral("cannot write '%1': %2").arg(path, f.errorString());
+    QString error;
+    if (!saveFileAtomically(path, runConditionsToJson(c, nullptr), &error)) return error;
     return {};
 }
 

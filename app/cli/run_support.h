@@ -8,7 +8,6 @@
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <QStringList>
 #include <cerrno>
 #include <csignal>
@@ -18,6 +17,7 @@
 #include <vector>
 
 #include "app/cli/cli_output.h"
+#include "core/files/atomic_file.h"
 #include "core/machine/controller_event.h"
 #include "core/machine/event_text.h"
 #include "core/machine/machine_profile.h"
@@ -82,11 +82,11 @@ struct Report {
     }
 };
 
-/// The --trace file: a regular file (or a new one) is written atomically (QSaveFile: a crash or
-/// a full disk never leaves half a trace where a good one was); a device or a FIFO (/dev/null,
-/// a pipe to a plotter) is written straight, never replaced. Rows are gathered in a buffer of
-/// kBufferBytes and written a block at a time: a write per row made a virtual-time run 11x
-/// slower to a file and 28x to a pipe (issue 21 item 3). Any failed write is kept with its
+/// The --trace file: a regular file (or a new one) is written atomically (AtomicFile: a crash or
+/// a full disk never leaves half a trace where a good one was, and says so); a device or a FIFO
+/// (/dev/null, a pipe to a plotter) is written straight, never replaced. Rows are gathered in a
+/// buffer of kBufferBytes and written a block at a time: a write per row made a virtual-time run
+/// 11x slower to a file and 28x to a pipe (issue 21 item 3). Any failed write is kept with its
 /// reason and reported after the run's own result. One thread at a time: in a virtual-time
 /// run the TraceQueue's writer thread (trace_queue.h) until its finish().
 class TraceFile {
@@ -114,14 +114,14 @@ class TraceFile {
                 *error = QStringLiteral("cannot write trace '%1': %2").arg(path, f->errorString());
                 return false;
             }
-            file_ = std::move(f);
+            plain_ = std::move(f);
         } else {
-            auto f = std::make_unique<QSaveFile>(path);
-            if (!f->open(QIODevice::WriteOnly)) {
-                *error = QStringLiteral("cannot write trace '%1': %2").arg(path, f->errorString());
+            auto f = std::make_unique<AtomicFile>(path);
+            if (!f->open()) {
+                *error = QStringLiteral("cannot write trace: %1").arg(f->error());
                 return false;
             }
-            file_ = std::move(f);
+            atomic_ = std::move(f);
         }
         buffer_.reserve(kBufferBytes + 1024);
         buffer_.append(header);
@@ -129,7 +129,7 @@ class TraceFile {
     }
     /// One row, already formatted with its newline.
     void line(const char* text, qint64 len) {
-        if (!file_ || !error_.isEmpty() || len <= 0) return;
+        if (!active() || !error_.isEmpty() || len <= 0) return;
         ++rows_;
         buffer_.append(text, static_cast<std::size_t>(len));
         if (buffer_.size() >= kBufferBytes) flushBuffer();
@@ -139,43 +139,40 @@ class TraceFile {
     const QString& path() const { return path_; }
     /// Writes what is buffered now (a real-time run, so a live reader keeps up).
     void flush() {
-        if (file_ && error_.isEmpty()) flushBuffer();
+        if (active() && error_.isEmpty()) flushBuffer();
     }
     /// Finishes the file; false (with error()) when any write, the flush or the commit failed.
     bool close() {
-        if (!file_) return true;
+        if (!active()) return true;
         if (error_.isEmpty()) flushBuffer();
-        if (auto* save = dynamic_cast<QSaveFile*>(file_.get())) {
-            if (!error_.isEmpty()) {
-                save->cancelWriting();
-                save->commit();  // discards: the old file stays as it was
-            } else if (!save->commit()) {
-                error_ = save->errorString();
-            }
+        if (atomic_) {
+            if (!error_.isEmpty())
+                atomic_->cancel();  // the old file stays as it was
+            else if (!atomic_->commit())
+                error_ = atomic_->error();
         } else {
-            auto* plain = static_cast<QFile*>(file_.get());
-            if (error_.isEmpty() && !plain->flush()) error_ = plain->errorString();
-            plain->close();
+            if (error_.isEmpty() && !plain_->flush()) error_ = plain_->errorString();
+            plain_->close();
         }
-        file_.reset();
+        atomic_.reset();
+        plain_.reset();
         return error_.isEmpty();
     }
     /// Abandons the file without writing it: a file that was there stays as it was (a test
     /// refused before it ran must not leave an empty trace where a good one was).
     void cancel() {
-        if (!file_) return;
-        if (auto* save = dynamic_cast<QSaveFile*>(file_.get())) {
-            save->cancelWriting();
-            save->commit();  // discards
-        } else {
-            static_cast<QFile*>(file_.get())->close();
-        }
-        file_.reset();
+        if (atomic_) atomic_->cancel();  // discards
+        if (plain_) plain_->close();
+        atomic_.reset();
+        plain_.reset();
         buffer_.clear();
     }
-    bool active() const { return file_ != nullptr; }
+    bool active() const { return atomic_ || plain_; }
+    /// "cannot write trace 'PATH': REASON" (AtomicFile's own message already names the path).
     QString error() const {
-        return QStringLiteral("cannot write trace '%1': %2").arg(path_, error_);
+        return error_.startsWith(QStringLiteral("cannot write '"))
+                   ? QStringLiteral("cannot write trace: %1").arg(error_)
+                   : QStringLiteral("cannot write trace '%1': %2").arg(path_, error_);
     }
 
     static constexpr std::size_t kBufferBytes = 64 * 1024;
@@ -187,16 +184,15 @@ class TraceFile {
         buffer_.clear();
         startWriteBack();
     }
-    /// A regular file is committed with fdatasync (QSaveFile: the trace is on disk before it
+    /// A regular file is committed with fdatasync (AtomicFile: the trace is on disk before it
     /// replaces the old one). Left to the end, that waited for the whole trace to reach the disk
     /// (4 ms of a 13 ms run for 5 MB); the disk is asked to start on each MB as it is written
     /// (sync_file_range, which does not wait), so the commit waits only for the last of it.
     void startWriteBack() {
 #if defined(__linux__)
         constexpr long long kWriteBackBytes = 1 << 20;
-        if (!dynamic_cast<QSaveFile*>(file_.get()) || written_ - writtenBack_ < kWriteBackBytes)
-            return;
-        const int fd = file_->handle();
+        if (!atomic_ || written_ - writtenBack_ < kWriteBackBytes) return;
+        const int fd = atomic_->handle();
         if (fd >= 0)
             ::sync_file_range(fd, writtenBack_, written_ - writtenBack_, SYNC_FILE_RANGE_WRITE);
         writtenBack_ = written_;
@@ -212,7 +208,8 @@ class TraceFile {
         sigaddset(&pipe, SIGPIPE);
         pthread_sigmask(SIG_BLOCK, &pipe, &before);
         errno = 0;
-        const bool whole = file_->write(data, len) == len;
+        const bool whole =
+            atomic_ ? atomic_->write(QByteArrayView(data, len)) : plain_->write(data, len) == len;
         const int e = errno;
         if (e == EPIPE && !sigismember(&before, SIGPIPE)) {
             const timespec now{};
@@ -220,16 +217,21 @@ class TraceFile {
         }
         pthread_sigmask(SIG_SETMASK, &before, nullptr);
         if (whole || !error_.isEmpty()) return;
+        if (atomic_) {
+            error_ = atomic_->error();
+            return;
+        }
         // The system's reason where there is one (QFile on a descriptor says "Unknown error").
         if (e == EPIPE)
             error_ = QStringLiteral("the program reading it closed the pipe");
         else if (e != 0)
             error_ = QString::fromLocal8Bit(std::strerror(e));
         else
-            error_ = file_->errorString().isEmpty() ? QStringLiteral("write failed")
-                                                    : file_->errorString();
+            error_ = plain_->errorString().isEmpty() ? QStringLiteral("write failed")
+                                                     : plain_->errorString();
     }
-    std::unique_ptr<QFileDevice> file_;
+    std::unique_ptr<AtomicFile> atomic_;  ///< a regular file, replaced whole at close()
+    std::unique_ptr<QFile> plain_;        ///< a FIFO or a device, written straight
     std::string buffer_;
     QString path_, error_;
     long long rows_ = 0;

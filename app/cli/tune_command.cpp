@@ -6,7 +6,6 @@
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <cmath>
 #include <numbers>
 
@@ -14,6 +13,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/option_values.h"
 #include "app/cli/run_support.h"
+#include "core/files/atomic_file.h"
 #include "core/machine/replace_target.h"
 #include "core/tuning/run_record.h"
 #include "host/common/data_paths.h"
@@ -343,14 +343,12 @@ int stepCommand(const QStringList& args) {
         if (!traceOk) traceFailure = trace.error();
         // The sidecar beside a regular file (not beside a pipe or a device).
         if (traceOk && QFileInfo(tracePath).isFile()) {
-            QSaveFile side(runSidecarPath(tracePath));
             RunConditions written = r.record.conditions;
             written.rows = static_cast<long long>(c.size());  // a shorter CSV was cut
-            const QByteArray json = runConditionsToJson(written, &r.metrics);
-            if (!side.open(QIODevice::WriteOnly) || side.write(json) != json.size() ||
-                !side.commit()) {
-                traceFailure = QStringLiteral("cannot write '%1': %2")
-                                   .arg(runSidecarPath(tracePath), side.errorString());
+            QString error;
+            if (!saveFileAtomically(runSidecarPath(tracePath),
+                                    runConditionsToJson(written, &r.metrics), &error)) {
+                traceFailure = error;
                 traceOk = false;
             }
         }
@@ -465,6 +463,8 @@ int metricsCommand(const QStringList& args) {
     // What makes the trace no clean record (issue 21 item 2): its sidecar says the test was
     // aborted or the run ended in an alarm (or off target, or stopped by --max-seconds); or it
     // was cut short: a last row without its end of line, or fewer rows than its sidecar counts.
+    // (More rows than it counts, like any sidecar that contradicts its trace, the reader
+    // refuses: issue 30 item 10.)
     const bool aborted = rec.hasConditions && !rec.conditions.abortReason.isEmpty();
     QString cut;
     if (rec.lastRowCut)
@@ -477,19 +477,8 @@ int metricsCommand(const QStringList& args) {
                    .arg(cut.isEmpty() ? QString() : QStringLiteral("; "))
                    .arg(rows)
                    .arg(rec.conditions.rows);
-    // More rows than its sidecar counts: not the run the sidecar describes (or a sidecar
-    // edited): no clean record either.
-    const bool mismatch =
-        rec.hasConditions && rec.conditions.rows >= 0 && rows > rec.conditions.rows;
-    if (mismatch)
-        cut += QStringLiteral(
-                   "%1%2 rows, more than the %3 its sidecar counts: not the run it "
-                   "describes")
-                   .arg(cut.isEmpty() ? QString() : QStringLiteral("; "))
-                   .arg(rows)
-                   .arg(rec.conditions.rows);
     const bool truncated = !cut.isEmpty();
-    const QString label = mismatch ? QStringLiteral("MISMATCH: ") : QStringLiteral("TRUNCATED: ");
+    const QString label = QStringLiteral("TRUNCATED: ");
     if (!m.ok) {
         const QString why = QStringLiteral("%1: no step to measure: %2")
                                 .arg(files.front(), QString::fromStdString(m.problem));

@@ -18,6 +18,7 @@
 #include "ui/execution_panel.h"
 #include "ui/machine_link.h"
 #include "ui/main_window.h"
+#include "ui/settings_saved.h"
 #include "ui/start_screen.h"
 #include "ui/theme.h"
 #include "ui/workbench/workbench_window.h"
@@ -178,6 +179,11 @@ int main(int argc, char* argv[]) {
     // Remembered at once (the rail's screen did it on its own): a later reconnection or
     // machine switch reopens a screen in the language last chosen, here or in a menu.
     settings->setValue(QStringLiteral("language"), lang);
+    if (!ui::settingsSaved(*settings))  // the screens say it again at each change
+        std::fprintf(stderr,
+                     "trilho: settings not saved: cannot write %s (a full disk or a folder that "
+                     "cannot be written); the old settings are kept\n",
+                     qPrintable(settings->fileName()));
     const ui::Theme theme = ui::themeFromName(
         parser.isSet(themeOpt)
             ? parser.value(themeOpt)
@@ -245,6 +251,11 @@ int main(int argc, char* argv[]) {
         xyLink = std::make_unique<XyLink>(
             std::move(runnable), device ? XyLink::Drive::EventLoop : XyLink::Drive::Thread);
         xyWindow = std::make_unique<ui::XyMainWindow>(*xyLink, *settings);
+        // The board first: what the journal's notices say of the position depends on it.
+        if (device)
+            xyWindow->setDeviceLink(
+                device, port,
+                baud > 0 ? baud : (machine.kind == MachineKind::Plotter ? 57600 : 9600));
         {
             // Each XY machine keeps its own journal beside the rail's history.log.
             const QString dataDir =
@@ -261,10 +272,6 @@ int main(int argc, char* argv[]) {
         }
         // The language the operator chose last (on this screen before a reconnection too).
         xyWindow->setLanguage(settings->value(QStringLiteral("language"), lang).toString());
-        if (device)
-            xyWindow->setDeviceLink(
-                device, port,
-                baud > 0 ? baud : (machine.kind == MachineKind::Plotter ? 57600 : 9600));
         QObject::connect(xyWindow.get(), &ui::XyMainWindow::connectionChosen, &app,
                          [&, machine](const QString& newPort, int newBaud) {
                              // Rebuilt after this signal returns: its sender goes with it.

@@ -102,6 +102,9 @@ enum class CommandResult : std::uint16_t {
     BadDownload = 6,    ///< CommitDownload: number or length do not match the block
     NotReady = 7,       ///< StartProgram in alarm or E-stop (acknowledge, reset first); Continue
                         ///< with nothing paused
+    /// Hold with no program running; CommitDownload by a client with no download of its own
+    /// in the block since the last commit (issue 30 item 11). Added after 7: no code changed.
+    NothingToDo = 8,
 };
 
 constexpr std::uint16_t kMaxProgramNumber = 9999;

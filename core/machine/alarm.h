@@ -28,6 +28,9 @@ enum class AlarmCode : std::uint8_t {
     OriginNotFound = 19,     ///< the plotter's homing did not find the origin sensor
     DeviceLink = 20,         ///< the serial link to an XY board failed: the run is held
     CountsLost = 21,  ///< a move ended with the counted travel short of the drive's: drive cut
+    /// The DC table under seed 004's law (|e|, the direction fixed for the move) drove an axis on,
+    /// away from its set point, towards a soft limit: both drives cut there (value: the limit)
+    SeedLawRunaway = 22,
     Count_
 };
 

@@ -21,10 +21,15 @@ constexpr double kEncoderStallMm = 1.0;
 /// The model counts no speed below this multiple of the friction's PWM percent: the seed
 /// varies each axis' friction by up to 10 %, and a drive near friction may not move at all.
 constexpr double kStallDeadBandFriction = 1.5;
+/// The soft-limit guard's tolerance, mm, beyond the coast a move running onto the limit itself
+/// may be predicted to make (acceleration x (tau + period)^2 / 2, see checkSoftLimits), when
+/// the drive pushes towards the set point. Chosen: the rail's 0.5 mm (rail_servo.cpp).
+constexpr double kSoftLimitToleranceMm = 0.5;
 }  // namespace
 
 DcTableMotion::DcTableMotion(const MachineProfile& profile, DcTableIo& io)
     : params_(profile.dcTable),
+      limits_(profile.limits),
       rapidMmS_(profile.motion.rapidSpeedMmS),
       accelMmS2_(profile.motion.accelerationMmS2),
       io_(io),
@@ -239,6 +244,52 @@ bool DcTableMotion::checkEncoder(std::size_t k, std::int64_t counted, double dtS
     return false;
 }
 
+bool DcTableMotion::checkSoftLimits(double dtS) {
+    const std::array<const DcAxisParams*, 2> axes{&params_.x, &params_.y};
+    const std::array<const AxisTravel*, 2> travel{&limits_.x, &limits_.y};
+    const std::array<double, 2> setpoint{commanded_.x, commanded_.y};
+    for (std::size_t k = 0; k < 2; ++k) {
+        // Only a drive pushing the axis outwards is cut: one at 0 leaves a coast no cut can
+        // shorten.
+        const double u = drivePercent_[k];
+        if (u == 0.0) continue;
+        // The drive pushing the axis away from its set point is the law's |e| with the move's
+        // direction bit: it drives on, and nothing of a move braking onto a limit is to be
+        // spared (the law has no feed-forward that could push ahead of its set point).
+        const double e = setpoint[k] - measuredMm_[k];
+        const bool runaway = u * e < 0.0;
+        // Where the axis would come to rest if its drive were cut at the next period, the last
+        // chance after this one: it runs on at its speed for the period, then PWM 0 leaves the
+        // motor to its back EMF, which stops it within its time constant (v tau, less what
+        // friction takes). Cut now (one period early), a runaway that still speeds up stops
+        // inside the limit, not a period's travel and more past it (2 mm at 500 mm/s). The speed
+        // is the encoder check's, re-seeded at each count with the mean since the last one; over
+        // one period that is whole counts, up to a count a period fast (20 mm/s on Y, 0.7 mm of
+        // predicted coast), so but for a runaway it is taken a count a period slower.
+        const double quantum = runaway ? 0.0 : mmPerCount_[k] / dtS;
+        const double v =
+            std::copysign(std::max(0.0, std::abs(modelSpeedMmS_[k]) - quantum), modelSpeedMmS_[k]);
+        if (u * v <= 0.0) continue;
+        // The next period is the nominal one: a late tick is no reason to expect another.
+        const double ahead = axes[k]->timeConstantS + params_.samplePeriodS;
+        const double rest = measuredMm_[k] + v * ahead;
+        // A move running onto a limit at accelMmS2_ is predicted to pass it by up to
+        // accel ahead^2 / 2 (at v = accel ahead) before it stops on it; a runaway, not at all.
+        const double tolerance =
+            runaway ? 0.0 : kSoftLimitToleranceMm + 0.5 * accelMmS2_ * ahead * ahead;
+        double limit = 0.0;
+        if (v < 0.0 && rest < travel[k]->softMinMm - tolerance)
+            limit = travel[k]->softMinMm;
+        else if (v > 0.0 && rest > travel[k]->softMaxMm + tolerance)
+            limit = travel[k]->softMaxMm;
+        else
+            continue;
+        raise(runaway ? AlarmCode::SeedLawRunaway : AlarmCode::SoftLimitStop, limit);
+        return false;
+    }
+    return true;
+}
+
 void DcTableMotion::tickSeed(double dtS) {
     if (phase_ == Phase::Moving) {
         planTimeS_ += dtS;
@@ -285,6 +336,11 @@ void DcTableMotion::tick(double dtS) {
     for (int i = 0; i < 2; ++i)
         if (drivesOn_ && io_.readOverCurrent(i))
             raise(AlarmCode::OverCurrent, std::abs(drivePercent_[static_cast<std::size_t>(i)]));
+    // The other laws follow a set point that never leaves the soft limits and drive back when
+    // they pass it (their following-error cut bounds the rest); cut, a payload x5 braking onto a
+    // limit under the engineered law coasted 1.6 mm past it where its law stopped it 0.9 mm
+    // past. The seed's law drives on: it is guarded.
+    if (drivesOn_ && params_.law == DcLaw::Seed) checkSoftLimits(dtS);
     if (drivesOn_ && params_.law == DcLaw::Seed) {
         tickSeed(dtS);
     } else if (drivesOn_) {

@@ -10,6 +10,14 @@
 // (each axis' set points in turn; the other axis' PWM at 0 once its loop ended: the seed keeps
 // its last value, docs/seeds.md (DC table)), no in-position check; hold and stop cut both PWM to
 // 0 (the seed has neither) and the table coasts to rest.
+// Soft limits at run time under the seed's law (issue 30 item 6): the law's |e| with the
+// direction bit fixed for the move drives an axis on past its set point, and the law, kept as
+// written, never stops that by itself. When a drive pushing an axis outwards would leave it at
+// rest past a soft limit if cut a period later (its measured position plus its speed times
+// the period and the motor's time constant, the travel PWM 0 leaves it), both drives are cut
+// now: alarm 22 when the drive was pushing the axis away from its set point (the runaway), or
+// alarm 11 when it ran onto the limit towards its set point (by more than a tolerance). The
+// other laws follow a set point that stays inside the limits and drive back when they pass it.
 // Homing: the seed has no origin sensor; its firmware starts with both counts at zero, so the
 // origin is where the table stood at power-on (the operator puts it in the origin corner first).
 // beginHoming() accepts that zero and does not move; the counts are never cleared afterwards, so an
@@ -72,8 +80,12 @@ class DcTableMotion final : public XyMotion {
     void writeDrives(const std::array<double, 2>& percent);
     /// The encoder plausibility check of one axis; false (raised) when it ran without counts.
     bool checkEncoder(std::size_t k, std::int64_t counted, double dtS);
+    /// The seed law's soft-limit guard (see the header comment) after a period of dtS; false
+    /// (raised) when it cut the drives.
+    bool checkSoftLimits(double dtS);
 
     DcTableParams params_;
+    MachineLimits limits_;
     double rapidMmS_, accelMmS2_;
     DcTableIo& io_;
     std::array<DcAxisLoop, 2> loops_;

@@ -149,6 +149,13 @@ constexpr const char* kAlarm[static_cast<int>(AlarmCode::Count_)] = {
                       "Counts lost: the count differs by %1 mm from the travel the drive made, so "
                       "the position is wrong and the drive was cut. Lower the speed or check the "
                       "encoder and its counter card, acknowledge, then home again."),
+    // Raised by the DC table only (its text: xy_event_text.cpp); the rail's laws act on the
+    // signed error.
+    QT_TRANSLATE_NOOP("Controller",
+                      "Runaway: seed 004's law drove an axis on, away from its set point (it acts "
+                      "on |e| with the direction fixed for the move, so an axis past its set point "
+                      "is driven further), and the drives were cut at the soft limit at %1 mm. "
+                      "Acknowledge, then move it back inside the limits."),
 };
 
 QString number(double v) {

@@ -1,11 +1,16 @@
 #include "core/machine/journal.h"
 
+#include "core/files/atomic_file.h"
+
 #include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <QCoreApplication>
 #include <QFile>
-#include <QSaveFile>
+#include <QSysInfo>
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <deque>
@@ -111,7 +116,87 @@ QString rotatedName(const QString& path, int i) {
     return i == 0 ? path : path + QLatin1Char('.') + QString::number(i);
 }
 
+/// The kinds of the screens' marks (markStart(), close()).
+constexpr char kStartKind[] = "start";
+constexpr char kStopKind[] = "stop";
+
+/// A start or stop mark, parsed; nullopt for any other line.
+std::optional<JournalEntry> markOf(QByteArrayView line) {
+    if (!looksLikeEntry(line)) return std::nullopt;
+    const qsizetype t0 = line.indexOf('\t');
+    const qsizetype t1 = line.indexOf('\t', t0 + 1);
+    const QByteArrayView kind = line.sliced(t0 + 1, t1 - t0 - 1);
+    if (kind != QByteArrayView(kStartKind) && kind != QByteArrayView(kStopKind))
+        return std::nullopt;
+    JournalEntry e;
+    if (!parseLine(line, e)) return std::nullopt;
+    return e;
+}
+
+/// The last mark in one file, read backwards 64 KB at a time: a journal of megabytes is not
+/// read whole when its last session's mark is near the end. The piece after the last '\n' is
+/// a torn tail (or nothing) and is skipped, as is a line longer than kMaxLineBytes.
+std::optional<JournalEntry> lastMarkIn(QFile& f) {
+    constexpr qint64 kChunk = 64 * 1024;
+    qint64 pos = f.size();
+    QByteArray carry;        // the end of a line whose start lies before pos
+    bool skipCarry = false;  // that line is longer than kMaxLineBytes
+    bool tail = true;        // no '\n' found yet: what follows is the torn tail
+    while (pos > 0) {
+        const qint64 n = std::min(kChunk, pos);
+        pos -= n;
+        if (!f.seek(pos)) return std::nullopt;
+        const QByteArray chunk = f.read(n);
+        if (chunk.size() != n) return std::nullopt;
+        qsizetype end = chunk.size();
+        for (qsizetype i = chunk.size() - 1; i >= 0; --i) {
+            if (chunk[i] != '\n') continue;
+            if (!tail && !skipCarry) {
+                const QByteArrayView piece = QByteArrayView(chunk).sliced(i + 1, end - i - 1);
+                const auto mark =
+                    carry.isEmpty() ? markOf(piece) : markOf(piece.toByteArray() + carry);
+                if (mark) return mark;
+            }
+            tail = false;
+            carry.clear();
+            skipCarry = false;
+            end = i;
+        }
+        if (!skipCarry) {
+            carry.prepend(chunk.constData(), end);
+            if (carry.size() > kMaxLineBytes) carry.clear(), skipCarry = true;
+        }
+    }
+    if (!tail && !skipCarry) return markOf(carry);  // the file's first line
+    return std::nullopt;
+}
+
 }  // namespace
+
+QString Journal::ownPath(const QString& path, qint64 pid) {
+    const QString suffix = QStringLiteral(".log");
+    const QString tag = QLatin1Char('-') + QString::number(pid);
+    return path.endsWith(suffix) ? path.chopped(suffix.size()) + tag + suffix : path + tag;
+}
+
+QString Journal::whoAmI() {
+    QString who = QStringLiteral("pid %1 on %2")
+                      .arg(QCoreApplication::applicationPid())
+                      .arg(QSysInfo::machineHostName());
+    const QString version = QCoreApplication::applicationVersion();
+    if (!version.isEmpty()) who += QStringLiteral(", trilho ") + version;
+    return who;
+}
+
+std::optional<JournalEntry> Journal::lastMark(const QString& path) {
+    const QStringList all = files(path);
+    for (qsizetype i = all.size() - 1; i >= 0; --i) {
+        QFile f(all[i]);
+        if (!f.open(QIODevice::ReadOnly)) continue;
+        if (auto mark = lastMarkIn(f)) return mark;
+    }
+    return std::nullopt;
+}
 
 Journal::~Journal() {
     close();
@@ -148,6 +233,58 @@ bool Journal::openFile(QString* error) {
     return true;
 }
 
+Journal::Lock Journal::lock(const QString& file, QString* error) {
+    // A lock file beside the journal, not the journal itself: a rotation renames the journal,
+    // and a lock on its old inode would not keep a second writer off the new file. The lock
+    // file stays when the lock goes (removing it would race with one just opened).
+    const QByteArray name = QFile::encodeName(file + QStringLiteral(".lock"));
+    const int fd = ::open(name.constData(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0) {
+        lockFailed(file, errno, error);
+        return Lock::Failed;
+    }
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+        const int err = errno;
+        if (err == EWOULDBLOCK) {
+            // Held: who holds it, as its lock file says ("pid<TAB>host").
+            char buffer[256];
+            const ssize_t n = ::pread(fd, buffer, sizeof buffer - 1, 0);
+            ::close(fd);
+            const QList<QByteArray> fields =
+                QByteArray(buffer, n > 0 ? static_cast<qsizetype>(n) : 0).trimmed().split('\t');
+            opening_.holderPid = fields.value(0).toLongLong();
+            opening_.holderHost = QString::fromUtf8(fields.value(1));
+            return Lock::Held;
+        }
+        ::close(fd);
+        lockFailed(file, err, error);
+        return Lock::Failed;
+    }
+    // Taken: say who holds it, for a second trilho to name (not needed for the lock itself, so
+    // a failure here is not one of the journal's).
+    const QByteArray who = QByteArray::number(QCoreApplication::applicationPid()) + '\t' +
+                           QSysInfo::machineHostName().toUtf8() + '\n';
+    const bool named = ::ftruncate(fd, 0) == 0 &&
+                       ::pwrite(fd, who.constData(), static_cast<std::size_t>(who.size()), 0) ==
+                           static_cast<ssize_t>(who.size());
+    (void)named;
+    lockFd_ = fd;
+    return Lock::Taken;
+}
+
+void Journal::lockFailed(const QString& file, int err, QString* error) {
+    health_.ok = false;
+    health_.error = QStringLiteral("cannot open journal '%1' (its lock file '%1.lock'): %2")
+                        .arg(file, QString::fromLocal8Bit(std::strerror(err)));
+    if (error) *error = health_.error;
+}
+
+void Journal::unlock() {
+    if (lockFd_ < 0) return;
+    ::close(lockFd_);  // closing the only descriptor lets the flock go
+    lockFd_ = -1;
+}
+
 bool Journal::open(const QString& path, QString* error) {
     close();
     path_ = path;
@@ -155,20 +292,62 @@ bool Journal::open(const QString& path, QString* error) {
     pending_ = 0;
     syncs_ = 0;
     everSynced_ = false;
-    if (!openFile(error)) return false;
+    opening_ = {};
+    opening_.requested = path;
+    Lock taken = lock(path, error);
+    if (taken == Lock::Held) {
+        // Another trilho keeps this journal: this one writes its own beside it.
+        opening_.heldByAnother = true;
+        path_ = ownPath(path, QCoreApplication::applicationPid());
+        taken = lock(path_, error);
+        if (taken == Lock::Held) {
+            health_.ok = false;
+            health_.error = QStringLiteral(
+                                "cannot open journal '%1': it is kept by another journal, and so "
+                                "is this process' own '%2'")
+                                .arg(path, path_);
+            if (error) *error = health_.error;
+            return false;
+        }
+    }
+    if (taken != Lock::Taken) return false;
+    opening_.path = path_;
+    if (!openFile(error)) {
+        unlock();
+        return false;
+    }
     keepOpen_ = true;
+    // The screens that wrote it last: a start with no stop after it is a session that ended
+    // without close() (killed, crashed, the power went).
+    if (const auto mark = lastMark(path_); mark && mark->kind == QLatin1String(kStartKind)) {
+        opening_.stoppedWithoutMark = true;
+        opening_.lastStart = mark->when;
+        opening_.lastStartText = mark->text;
+    }
     // A file left at the limit (or a large one from before rotation existed) rotates at once;
     // if that fails the history goes on in the same file (health() tells).
     if (size_ >= policy_.maxFileBytes) rotate();
     return isOpen();
 }
 
+bool Journal::markStart(const QString& who) {
+    stopText_ = QStringLiteral("screens stopped: ") + who;
+    return append({QDateTime::currentDateTimeUtc(), QString::fromLatin1(kStartKind), 0,
+                   QStringLiteral("screens started: ") + who});
+}
+
 void Journal::close() {
+    // The clean stop: the mark a killed session lacks.
+    if (keepOpen_ && !stopText_.isEmpty())
+        append({QDateTime::currentDateTimeUtc(), QString::fromLatin1(kStopKind), 0, stopText_});
+    stopText_.clear();
     keepOpen_ = false;
-    if (fd_ < 0) return;
-    if (pending_ > 0) sync();
-    ::close(fd_);
-    fd_ = -1;
+    if (fd_ >= 0) {
+        if (pending_ > 0) sync();
+        ::close(fd_);
+        fd_ = -1;
+    }
+    unlock();
 }
 
 bool Journal::writeLine(const QByteArray& line) {
@@ -299,38 +478,33 @@ QList<JournalEntry> Journal::readLast(const QString& path, qsizetype maxEntries)
 }
 
 bool Journal::exportCsv(const QList<JournalEntry>& entries, const QString& path, QString* error) {
-    QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly)) {
-        if (error) *error = QStringLiteral("cannot write '%1': %2").arg(path, f.errorString());
-        return false;
-    }
-    f.write(kCsvHeader);
-    for (const JournalEntry& e : entries)
-        f.write(csvRow(e));
-    if (!f.commit()) {
-        if (error) *error = QStringLiteral("cannot write '%1': %2").arg(path, f.errorString());
+    AtomicFile f(path);
+    bool ok = f.open() && f.write(kCsvHeader);
+    for (qsizetype i = 0; ok && i < entries.size(); ++i)
+        ok = f.write(csvRow(entries[i]));
+    if (!ok || !f.commit()) {
+        if (error) *error = f.error();
         return false;
     }
     return true;
 }
 
 bool Journal::exportJournalCsv(const QString& journalPath, const QString& csvPath, QString* error) {
-    QSaveFile out(csvPath);
-    if (!out.open(QIODevice::WriteOnly)) {
-        if (error) *error = QStringLiteral("cannot write '%1': %2").arg(csvPath, out.errorString());
+    AtomicFile out(csvPath);
+    if (!out.open() || !out.write(kCsvHeader)) {
+        if (error) *error = out.error();
         return false;
     }
-    out.write(kCsvHeader);
     for (const QString& name : files(journalPath)) {
         QFile in(name);
         if (!in.open(QIODevice::ReadOnly)) continue;
         forEachLine(in, [&](QByteArrayView line) {
             JournalEntry e;
-            if (parseLine(line, e)) out.write(csvRow(e));
+            if (!out.failed() && parseLine(line, e)) out.write(csvRow(e));
         });
     }
     if (!out.commit()) {
-        if (error) *error = QStringLiteral("cannot write '%1': %2").arg(csvPath, out.errorString());
+        if (error) *error = out.error();
         return false;
     }
     return true;

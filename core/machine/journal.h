@@ -8,13 +8,23 @@
 //  - the file rotates at a size limit, keeping the last few files (history.log.1 ... .N-1);
 //  - a failed write, sync or rotation is reported to the caller (return value and health()),
 //    so the screens can warn;
-//  - reading streams the files and keeps only the last entries asked for.
+//  - reading streams the files and keeps only the last entries asked for;
+//  - one writer per journal (issue 30 item 8): open() takes a lock (flock on path.lock, beside
+//    the journal, so that it outlives the rotations' renames); a second trilho that opens the
+//    same journal while the first holds it is given its own file beside it (history-PID.log)
+//    and is told which trilho holds the first (opening()), so two screens on one data folder
+//    never interleave one file. Refusing it would leave the second screens with no history;
+//  - the screens mark their start (markStart(): kind "start") and close() their clean stop
+//    (kind "stop"), so a journal whose last mark is a start was left without close(): the
+//    screens were killed, crashed or lost power. open() finds that mark and says so
+//    (opening()), for the screens to say at start (issue 30 item 7).
 // Not thread-safe: one thread (the GUI's) appends.
 #include <QDateTime>
 #include <QList>
 #include <QString>
 #include <QStringList>
 #include <cstdint>
+#include <optional>
 
 class QIODevice;
 
@@ -22,7 +32,7 @@ namespace trilho {
 
 struct JournalEntry {
     QDateTime when;  ///< UTC
-    QString kind;    ///< "status", "alarm", "ack"
+    QString kind;    ///< "status", "alarm", "ack"; "start" and "stop" (the screens' marks)
     int code = 0;    ///< alarm code, 0 for status lines
     QString text;
 };
@@ -46,6 +56,23 @@ struct JournalHealth {
     std::int64_t lostEntries = 0;  ///< entries that could not be written since open()
 };
 
+/// What open() found: the file it writes, who holds the one asked for when that is another,
+/// and how the screens that wrote the file last left it.
+struct JournalOpening {
+    QString requested;  ///< the path open() was given
+    QString path;       ///< the file written: requested, or this process' own beside it
+    /// Another journal held requested (path is then this process' own): its process id and
+    /// host as its lock file names them (0 and empty when it could not be read).
+    bool heldByAnother = false;
+    qint64 holderPid = 0;
+    QString holderHost;
+    /// The file's last mark is a start with no stop after it: the screens that wrote it were
+    /// killed, crashed or lost power. When they started (UTC) and the mark's text.
+    bool stoppedWithoutMark = false;
+    QDateTime lastStart;
+    QString lastStartText;
+};
+
 class Journal {
   public:
     /// Entries read() returns by default: the last 100,000 (about 8 MB of journal).
@@ -57,10 +84,29 @@ class Journal {
     Journal(const Journal&) = delete;
     Journal& operator=(const Journal&) = delete;
 
-    /// Opens (creating) the journal for appending: ends a torn tail with a newline and rotates
-    /// a file already at the size limit. Returns false with a message otherwise.
+    /// Opens (creating) the journal for appending: takes its lock (path.lock), or writes this
+    /// process' own file beside it when another journal holds that lock (ownPath()); ends a
+    /// torn tail with a newline; finds the file's last start or stop mark; rotates a file
+    /// already at the size limit. Returns false with a message otherwise (opening() says
+    /// what was found).
     bool open(const QString& path, QString* error = nullptr);
-    void close();  ///< syncs what is pending, then closes
+    /// Marks the stop when a start was marked, syncs what is pending, then closes and lets the
+    /// lock go.
+    void close();
+    /// What the last open() found.
+    const JournalOpening& opening() const { return opening_; }
+    /// The start mark (kind "start", text "screens started: " + who), written and synced now;
+    /// close() then writes the stop mark ("screens stopped: " + who). False when it could not
+    /// be written (health() says why).
+    bool markStart(const QString& who);
+    /// Who this process is, for markStart(): "pid 4242 on bench, trilho 0.9.0".
+    static QString whoAmI();
+    /// The file a second process writes when path is held: history.log -> history-PID.log
+    /// (before the last ".log"; else "-PID" appended).
+    static QString ownPath(const QString& path, qint64 pid);
+    /// The last start or stop mark in the journal at path (its rotated files included),
+    /// read backwards from the end; nullopt when there is none.
+    static std::optional<JournalEntry> lastMark(const QString& path);
     /// Between a successful open() and close(), even while a failed rotation left no file
     /// open (the next append retries it and health() tells).
     bool isOpen() const { return keepOpen_; }
@@ -109,6 +155,13 @@ class Journal {
                                  QString* error = nullptr);
 
   private:
+    enum class Lock { Taken, Held, Failed };
+    /// Takes the lock on file's lock file (file.lock, kept open in lockFd_). Held: another
+    /// journal holds it (its pid and host read into opening_); Failed: the lock file cannot be
+    /// made (health() and error say why).
+    Lock lock(const QString& file, QString* error);
+    void lockFailed(const QString& file, int err, QString* error);
+    void unlock();
     bool writeLine(const QByteArray& line);
     bool rotate();
     bool openFile(QString* error);
@@ -125,6 +178,9 @@ class Journal {
     bool everSynced_ = false;
     std::int64_t syncs_ = 0;
     JournalHealth health_;
+    int lockFd_ = -1;
+    JournalOpening opening_;
+    QString stopText_;  ///< the stop mark's text once a start was marked; empty: none
 };
 
 }  // namespace trilho

@@ -1,5 +1,7 @@
 #include "core/machine/machine_profile.h"
 
+#include "core/files/atomic_file.h"
+
 #include "core/machine/replace_target.h"
 
 #include <QFile>
@@ -7,7 +9,6 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QMap>
-#include <QSaveFile>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -16,6 +17,7 @@
 
 #include "core/gcode/source_file.h"
 #include "core/machine/json_duplicate_keys.h"
+#include "core/machine/plotter_wire_steps.h"
 
 namespace trilho {
 
@@ -357,6 +359,45 @@ QString checkAcrossKeys(const MachineProfile& p) {
     const bool rail = p.kind == MachineKind::Rail;  // plant and loop are the rail's
     if (!rail && !p.limits.hasY)
         return QStringLiteral("limits.hasY: an XY machine has a y axis (got false)");
+    if (p.kind == MachineKind::Plotter) {
+        // Issue 30 item 4: every target the compiler lets through (inside the soft limits) must
+        // be one the wire carries (plotter_wire_steps.h); a limit outside it was clamped on the
+        // wire and reported reached.
+        const PlotterParams& pl = p.plotter;
+        const struct {
+            const char* key;
+            double mm;
+            const char* axis;
+            double origin, mmPerStep;
+        } edges[] = {{"limits.x.softMinMm", x.softMinMm, "X", pl.originX, pl.mmPerStepX},
+                     {"limits.x.softMaxMm", x.softMaxMm, "X", pl.originX, pl.mmPerStepX},
+                     {"limits.y.softMinMm", y.softMinMm, "Y", pl.originY, pl.mmPerStepY},
+                     {"limits.y.softMaxMm", y.softMaxMm, "Y", pl.originY, pl.mmPerStepY}};
+        for (const auto& e : edges) {
+            if (plotterWireSteps(e.mm, e.origin, e.mmPerStep)) continue;
+            const QString axis = QString::fromLatin1(e.axis);
+            return QStringLiteral(
+                       "%1: the plotter's wire carries 0 to 65535 steps from the origin (16 "
+                       "bits); with plotter.origin%2 %3 and plotter.mmPerStep%2 %4 that is %3 to "
+                       "%5 mm (got %6, %7 steps)")
+                .arg(QString::fromLatin1(e.key), axis, num(e.origin), num(e.mmPerStep),
+                     num(e.origin + kPlotterWireMaxSteps * e.mmPerStep), num(e.mm),
+                     QString::number(
+                         static_cast<qint64>(plotterStepsFromOrigin(e.mm, e.origin, e.mmPerStep))));
+        }
+        // Every run starts with a travel to the machine's zero (gcode.md, XyController): the
+        // wire must carry it too, or no run could start on the board.
+        for (const auto& e : {edges[0], edges[2]}) {
+            if (plotterWireSteps(0.0, e.origin, e.mmPerStep)) continue;
+            const QString axis = QString::fromLatin1(e.axis);
+            return QStringLiteral(
+                       "plotter.origin%1: every run starts at %2 0 mm, which the wire carries "
+                       "only with the origin at 0 mm or below, within 65535 steps: with "
+                       "plotter.mmPerStep%1 %3 that is %4 to 0 mm (got %5)")
+                .arg(axis, axis.toLower(), num(e.mmPerStep),
+                     num(-kPlotterWireMaxSteps * e.mmPerStep), num(e.origin));
+        }
+    }
     if (rail && p.plant.endSwitchMm >= p.plant.hardStopMm)
         return QStringLiteral("plant.endSwitchMm must be inside plant.hardStopMm (got %1 and %2)")
             .arg(num(p.plant.endSwitchMm), num(p.plant.hardStopMm));
@@ -394,6 +435,8 @@ QString checkAcrossKeys(const MachineProfile& p) {
             .arg(num(l.followingErrorLimitMm), num(l.minFollowingErrorMm));
     return {};
 }
+
+QJsonObject plainJson(const MachineProfile& profile);  // below, beside machineProfileToJson
 
 }  // namespace
 
@@ -509,6 +552,7 @@ ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin
         result.error = error;
         return result;
     }
+    p.origin = {root, plainJson(p)};
     result.profile = p;
     return result;
 }
@@ -526,7 +570,10 @@ ProfileLoad loadMachineProfile(const QString& path) {
         QByteArray(file.bytes.data(), static_cast<qsizetype>(file.bytes.size())), path);
 }
 
-QByteArray machineProfileToJson(const MachineProfile& profile) {
+namespace {
+
+/// The profile's keys and values, as for a profile made in code (no notes).
+QJsonObject plainJson(const MachineProfile& profile) {
     MachineProfile p = profile;
     QJsonObject root;
     auto lawName = [](LoopLaw law) {
@@ -548,6 +595,33 @@ QByteArray machineProfileToJson(const MachineProfile& profile) {
     forEachNumber(p, [&](const char* key, double& value, double, double) {
         insert(root, QString::fromLatin1(key).split(QLatin1Char('.')), 0, value);
     });
+    return root;
+}
+
+/// given, with every value of now that differs from asRead (changed since given was read) and
+/// every key of now that given lacks (the profile in full); given's other keys, its notes among
+/// them, as they were. Sections recursively.
+QJsonObject keptOver(QJsonObject given, const QJsonObject& asRead, const QJsonObject& now) {
+    for (auto it = now.begin(); it != now.end(); ++it) {
+        const QJsonValue was = given.value(it.key());
+        if (it.value().isObject())
+            given.insert(it.key(), keptOver(was.toObject(), asRead.value(it.key()).toObject(),
+                                            it.value().toObject()));
+        else if (was.isUndefined() || it.value() != asRead.value(it.key()))
+            given.insert(it.key(), it.value());
+    }
+    return given;
+}
+
+}  // namespace
+
+QByteArray machineProfileToJson(const MachineProfile& profile) {
+    QJsonObject root = plainJson(profile);
+    const ProfileOrigin& origin = profile.origin;
+    // Another kind's keys would not read back (a rail's "plant" in a DC table's profile).
+    if (!origin.given.isEmpty() &&
+        origin.asRead.value(QStringLiteral("kind")) == root.value(QStringLiteral("kind")))
+        root = keptOver(origin.given, origin.asRead, root);
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 
@@ -567,12 +641,9 @@ bool saveMachineProfile(const MachineProfile& profile, const QString& path, QStr
         if (error) *error = QStringLiteral("cannot save machine profile: %1").arg(refused);
         return false;
     }
-    QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly) || f.write(machineProfileToJson(profile)) < 0 ||
-        !f.commit()) {
-        if (error)
-            *error =
-                QStringLiteral("cannot save machine profile '%1': %2").arg(path, f.errorString());
+    QString why;
+    if (!saveFileAtomically(path, machineProfileToJson(profile), &why)) {
+        if (error) *error = QStringLiteral("cannot save machine profile: %1").arg(why);
         return false;
     }
     return true;

@@ -2,6 +2,7 @@
 // The machine profile: one JSON file with the plant's parameters, the limits, the loop law and
 // its gains, and the sample period. The rail of machine.md is the default and ships as
 // resources/machines/rail.json. Every default below says where its figure comes from.
+#include <QJsonObject>
 #include <QString>
 #include <optional>
 
@@ -157,6 +158,13 @@ struct MotionLimits {
     double jogMaxFraction = 0.5;  ///< manual mode caps the speed at this fraction of rapid
 };
 
+/// Where a profile read from JSON came from, so that writing it back keeps what it does not
+/// change (issue 30 item 12: `tune auto --write-profile` dropped the notes `calibrate` keeps).
+struct ProfileOrigin {
+    QJsonObject given;   ///< the object as read: its spelling of each value, its notes
+    QJsonObject asRead;  ///< the profile it gave, as machineProfileToJson writes one made in code
+};
+
 struct MachineProfile {
     MachineKind kind = MachineKind::Rail;
     QString name = QStringLiteral("rail");
@@ -167,6 +175,8 @@ struct MachineProfile {
     MotionLimits motion;
     DcTableParams dcTable;  ///< kind DcTable only ("dcTable" section)
     PlotterParams plotter;  ///< kind Plotter only ("plotter" section)
+    /// Empty for a profile made in code; set by machineProfileFromJson (and kept by copies).
+    ProfileOrigin origin;
 
     /// The default profile: the rail of machine.md.
     static MachineProfile rail();
@@ -191,10 +201,15 @@ inline constexpr long long kMaxProfileBytes = 1024 * 1024;
 /// value names its key: unknown keys (with the nearest valid one, "did you mean"), wrong types,
 /// values out of their range and figures that contradict each other are errors. Besides the
 /// profile's own keys, any object may hold a "source" and a "comment" string (where a figure comes
-/// from); they are not kept. Only regular files of at most kMaxProfileBytes are read (a FIFO or a
-/// device is refused at once, never waited on).
+/// from); they are kept in the profile's origin and written back. Only regular files of at most
+/// kMaxProfileBytes are read (a FIFO or a device is refused at once, never waited on).
 ProfileLoad loadMachineProfile(const QString& path);
 ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin);
+/// The profile in full, every key with its value. A profile read from JSON (its origin) is
+/// written as that JSON with what changed since: every key whose value the profile no longer
+/// has takes the new one, every key it lacked is added, and the rest, its "source" and
+/// "comment" notes among them, stay as they were given. A profile whose kind changed since is
+/// written as one made in code.
 QByteArray machineProfileToJson(const MachineProfile& profile);
 
 struct NumberRange {
@@ -202,7 +217,8 @@ struct NumberRange {
 };
 /// The range the reader allows for a number key ("loop.samplePeriodS"); nullopt for others.
 std::optional<NumberRange> machineProfileRange(const QString& key);
-/// Writes atomically (QSaveFile): a crash never leaves half a profile.
+/// Writes atomically (AtomicFile): a crash or a full disk never leaves half a profile, and a
+/// failure keeps the old file and says why in *error.
 bool saveMachineProfile(const MachineProfile& profile, const QString& path, QString* error);
 
 }  // namespace trilho

@@ -1,5 +1,7 @@
 #include "core/machine/plotter_link_motion.h"
 
+#include "core/machine/plotter_wire_steps.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -18,16 +20,23 @@ PlotterLinkMotion::PlotterLinkMotion(const MachineProfile& profile, Send send)
       params_(profile.plotter),
       host_(configFor(profile.plotter)) {}
 
-std::uint16_t PlotterLinkMotion::toSteps(double mm, double mmPerStep) const {
-    // The compiler kept targets inside the work area, which fits 16 bits (xy_plotter.json).
-    const long steps = std::lround(mm / mmPerStep);
-    return static_cast<std::uint16_t>(std::clamp(steps, 0L, 65535L));
-}
-
 void PlotterLinkMotion::beginMove(XyPoint target, XyMove kind, double speedFraction) {
     const std::optional<double> next = nextDraw_;
     nextDraw_.reset();
     if (busy() || fault() != AlarmCode::None) return;
+    // Steps from the origin, as the board counts them (plotter_wire_steps.h). The reader keeps
+    // the soft limits, and so the compiler's targets, inside the wire's range; a target outside
+    // it (a profile built in code) is refused, never clamped: alarm 11 at the wire's bound.
+    const std::optional<std::uint16_t> sx =
+        plotterWireSteps(target.x, params_.originX, params_.mmPerStepX);
+    const std::optional<std::uint16_t> sy =
+        plotterWireSteps(target.y, params_.originY, params_.mmPerStepY);
+    if (!sx || !sy) {
+        refuse(AlarmCode::SoftLimitStop,
+               !sx ? plotterWireBoundMm(target.x, params_.originX, params_.mmPerStepX)
+                   : plotterWireBoundMm(target.y, params_.originY, params_.mmPerStepY));
+        return;
+    }
     if (!greeted_) host_.request(), greeted_ = true;
     const bool draw = kind == XyMove::Draw;
     // One SPEED an object: a g00 that starts a path moves at the path's speed, as the seed's
@@ -41,8 +50,7 @@ void PlotterLinkMotion::beginMove(XyPoint target, XyMove kind, double speedFract
         host_.speed(plotter_wire::stepsPerSToSpeed(std::max(1, speed)));
         speed_ = speed;
     }
-    host_.addPoint(
-        {draw, toSteps(target.x, params_.mmPerStepX), toSteps(target.y, params_.mmPerStepY)});
+    host_.addPoint({draw, *sx, *sy});
     // The path goes on: the object stays open and this move is done once stored (NEXT).
     const bool goesOn = next && static_cast<int>(std::lround(std::clamp(*next, 0.001, 1.0) *
                                                              params_.maxStepRateHz)) == speed;

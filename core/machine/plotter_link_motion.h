@@ -30,6 +30,10 @@ class PlotterLinkMotion final : public SerialLinkMotion {
     std::uint64_t packetsSent() const override { return host_.stats().packetsSent; }
     std::uint64_t resends() const override { return host_.stats().resends; }
     std::uint64_t timeouts() const override { return host_.stats().timeouts; }
+    /// An answer a packet waited for has come. (No answer says where the head stands: the
+    /// seed's answers are one byte, table 7, so the position is unknown until ORIGEM or a
+    /// confirmed move; no boardSaid().)
+    bool boardAnswered() const override { return host_.stats().accepted > 0; }
 
   private:
     void hostReceive(std::uint8_t byte, double nowS) override { host_.receive(byte, nowS); }
@@ -41,7 +45,6 @@ class PlotterLinkMotion final : public SerialLinkMotion {
     void hostRetry() override { host_.retry(); }
     void hostRestart() override { host_.restart(); }
     void hostClear() override { host_.clear(); }
-    std::uint16_t toSteps(double mm, double mmPerStep) const;
 
     PlotterParams params_;
     PlotterHost host_;

@@ -30,8 +30,10 @@ struct PlotterParams {
     double defaultSpeedStepsS = 450.0;
     /// Chosen: seed 001 3.1.4 fits a 20 V solenoid to lift the pen but gives no timing.
     double penSettleS = 0.05;
-    double originX =
-        0.0;  ///< seed 001 3.1.3.1 and 3.1.4: the origin (0,0) at the sensors' corner, mm
+    /// Seed 001 3.1.3.1 and 3.1.4: the origin (0,0) at the sensors' corner; originX/Y is where
+    /// that corner is, mm. The wire's steps count from it (plotter_wire_steps.h): the soft limits
+    /// must lie within 0..65535 steps of it (the profile reader refuses others).
+    double originX = 0.0;
     double originY = 0.0;
     /// Chosen: homing's event rate, steps/s; slow, so the head stops on the sensor's edge.
     double homingRateHz = 400.0;

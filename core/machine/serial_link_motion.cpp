@@ -26,6 +26,7 @@ void SerialLinkMotion::tick(double dtS) {
     if (asked_ && hostIdle()) {
         asked_ = false;
         confirmed_ = pending_;
+        confirmedAny_ = true;
         if (homing_) homing_ = false, homed_ = true;
     }
 }
@@ -52,7 +53,14 @@ void SerialLinkMotion::stop() {
 }
 
 AlarmCode SerialLinkMotion::fault() const {
+    if (refused_ != AlarmCode::None) return refused_;
     return hostFailed() || !lost_.empty() ? AlarmCode::DeviceLink : AlarmCode::None;
+}
+
+XyPositionBasis SerialLinkMotion::positionBasis() const {
+    if (homed_ || confirmedAny_) return XyPositionBasis::Known;
+    const std::optional<BoardSaid> said = boardSaid();
+    return said && !said->cut ? XyPositionBasis::BoardLastSet : XyPositionBasis::Unknown;
 }
 
 XySample SerialLinkMotion::sample() const {
@@ -61,6 +69,12 @@ XySample SerialLinkMotion::sample() const {
     s.y.setpointMm = commanded_.y;
     s.x.positionMm = confirmed_.x;
     s.y.positionMm = confirmed_.y;
+    if (positionBasis() == XyPositionBasis::BoardLastSet) {
+        // Nothing confirmed yet: where the board says it last went (its set point too).
+        const XyPoint at = boardSaid()->at;
+        s.x.setpointMm = s.x.positionMm = at.x;
+        s.y.setpointMm = s.y.positionMm = at.y;
+    }
     s.pen = pen_;
     return s;
 }

@@ -6,7 +6,11 @@
 // cable pulled) fault() is DeviceLink and the move stays unfinished, so the controller holds
 // the run, and resume() retries from the point not acknowledged. The protocol itself is the
 // derived class's host (PlotterHost, TableHost).
+// The board outlives the screens (issue 30 item 7): at connect the position is unknown
+// (positionBasis()), not the origin, until the board confirms a move or homing, or says where it
+// last went (the DC table's check; the plotter's protocol has no such question).
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,12 +39,17 @@ class SerialLinkMotion : public XyMotion {
     void stop() override;
     void cut() override { stop(); }
     AlarmCode fault() const override;
-    double faultValue() const override { return 0.0; }
-    /// The link's fault clears by resume() (a retry) or stop(), not by an acknowledge.
-    void clearFault() override {}
+    double faultValue() const override { return refused_ != AlarmCode::None ? refusedValue_ : 0.0; }
+    /// The link's fault clears by resume() (a retry) or stop(), not by an acknowledge; a refused
+    /// target (refuse()) by the acknowledge.
+    void clearFault() override { refused_ = AlarmCode::None, refusedValue_ = 0.0; }
     bool homed() const override { return homed_; }
+    XyPositionBasis positionBasis() const override;
     XyPoint commanded() const override { return commanded_; }
     XySample sample() const override;
+    /// The board has answered something since the line was opened (the link is more than an
+    /// open port).
+    virtual bool boardAnswered() const = 0;
 
     /// Why the link failed; empty while it works.
     std::string linkError() const { return !lost_.empty() ? lost_ : hostError(); }
@@ -51,8 +60,19 @@ class SerialLinkMotion : public XyMotion {
     virtual std::uint64_t timeouts() const = 0;
 
   protected:
+    /// Where the board said it last went, and whether that move was cut on the way (it does
+    /// not stand there then). nullopt: not said (the protocol cannot, or no answer yet).
+    struct BoardSaid {
+        XyPoint at;
+        bool cut = false;
+    };
+    virtual std::optional<BoardSaid> boardSaid() const { return std::nullopt; }
     /// A move (or homing) was handed to the host: it is done when the host is idle again.
     void asked(XyPoint target, bool homing, PenState pen);
+    /// A target the board's wire cannot carry (issue 30 item 4): nothing was sent for it, and
+    /// fault() is code (value: the wire's bound, mm) until the alarm is acknowledged, so the run
+    /// stops there instead of going on as if the board had been told.
+    void refuse(AlarmCode code, double value) { refused_ = code, refusedValue_ = value; }
     double nowS() const { return nowS_; }
 
     virtual void hostReceive(std::uint8_t byte, double nowS) = 0;
@@ -72,11 +92,14 @@ class SerialLinkMotion : public XyMotion {
     bool asked_ = false;  ///< a move or homing was queued and has not been seen finished
     bool homing_ = false;
     bool homed_ = false;
+    bool confirmedAny_ = false;  ///< a move or homing confirmed since the line was opened
     std::string lost_;
     XyPoint commanded_{};
     XyPoint pending_{};
     XyPoint confirmed_{};  ///< the last point the board confirmed
     PenState pen_ = PenState::None;
+    AlarmCode refused_ = AlarmCode::None;  ///< refuse()
+    double refusedValue_ = 0.0;
 };
 
 }  // namespace trilho

@@ -19,8 +19,11 @@ class TableLinkMotion final : public SerialLinkMotion {
     std::uint64_t packetsSent() const override { return host_.stats().sent; }
     std::uint64_t resends() const override { return 0; }
     std::uint64_t timeouts() const override { return host_.stats().timeouts; }
+    bool boardAnswered() const override { return host_.stats().answers > 0; }
 
   private:
+    /// The check's answer at connect: the set point the board last started.
+    std::optional<BoardSaid> boardSaid() const override;
     void hostReceive(std::uint8_t byte, double nowS) override { host_.receive(byte, nowS); }
     void hostPoll(double nowS) override { host_.poll(nowS); }
     std::vector<std::uint8_t> hostTakeOutput() override { return host_.takeOutput(); }

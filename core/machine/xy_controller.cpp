@@ -8,11 +8,13 @@ namespace trilho {
 XyController::XyController(const MachineProfile& profile, std::unique_ptr<XyMotion> motion)
     : profile_(profile), motion_(std::move(motion)) {
     status_.sample = motion_->sample();
+    status_.positionBasis = motion_->positionBasis();
     status_.target = motion_->commanded();
 }
 
 const XyStatus& XyController::status() const {
     status_.sample = motion_->sample();
+    status_.positionBasis = motion_->positionBasis();
     status_.homed = motion_->homed();
     status_.motionBusy = motion_->busy();
     return status_;
@@ -99,6 +101,9 @@ void XyController::moveProgram(XyPoint target, XyMove kind, double speedFraction
     status_.target = target;
     motion_->beginMove(target, kind, std::clamp(speedFraction * status_.feedOverride, 0.001, 1.0));
     haveTarget_ = true, lastTarget_ = target;
+    // A move the motion refused at once (a target the plotter's wire cannot carry, issue 30
+    // item 4) stops the run here: the blocks after it are neither started nor said.
+    if (motion_->fault() != AlarmCode::None) checkMotionFault();
 }
 
 void XyController::startMove(const Block& b) {
@@ -286,6 +291,7 @@ void XyController::step(double dtS) {
             break;
     }
     status_.sample = motion_->sample();
+    status_.positionBasis = motion_->positionBasis();
     status_.homed = motion_->homed();
 }
 

@@ -38,6 +38,7 @@ struct XyStatus {
     ModalState modal;
     XyPoint target;  ///< the block's target, mm
     XySample sample;
+    XyPositionBasis positionBasis = XyPositionBasis::Known;  ///< what sample's positions rest on
     std::uint64_t lastCommandSeq = 0;
     bool heldByController = false;  ///< a Hold the controller made (a motionless loop)
     bool motionBusy = false;        ///< a move or homing is under way (also a manual one)

@@ -73,6 +73,13 @@ constexpr const char* kXyAlarm[static_cast<int>(AlarmCode::Count_)] = {
     nullptr,
     nullptr,
     nullptr,
+    // Issue 30 item 6: the soft-limit guard names why the seed's law got there.
+    QT_TRANSLATE_NOOP("Controller",
+                      "Runaway: seed 004's law drove an axis of the table (x or y) on, away from "
+                      "its set point: it acts on |e| with the direction fixed for the move, so an "
+                      "axis that passes its set point is driven further. Both drives were cut at "
+                      "the soft limit at %1 mm. Acknowledge, then move the table back inside the "
+                      "limits (the seed-signed and engineered laws drive back instead)."),
 };
 
 QString number(double v) {

@@ -31,6 +31,16 @@ struct XySample {
     PenState pen = PenState::None;
 };
 
+/// What the position shown rests on (issue 30 item 7). A simulated plant is made with the
+/// screens at its origin and counted from there, so its position is known; a board on a serial
+/// line outlives the screens, and the host knows only what the board has said.
+enum class XyPositionBasis : std::uint8_t {
+    Known,         ///< measured or counted (a simulated plant), or confirmed by the board
+    BoardLastSet,  ///< the board's answer at connect: the set point it last started (it stands
+                   ///< there unless that move was cut); not yet confirmed by a move or homing
+    Unknown,       ///< nothing said yet: unknown until homed (the sample's 0 is no position)
+};
+
 enum class XyMove : std::uint8_t {
     Travel,  ///< g00: the plotter's MOVE (pen up); the table's rapid
     Draw,    ///< g01: the plotter's LINE (pen down); the table's feed move
@@ -65,6 +75,8 @@ class XyMotion {
     virtual double faultValue() const = 0;
     virtual void clearFault() = 0;
     virtual bool homed() const = 0;
+    /// What sample()'s positions rest on.
+    virtual XyPositionBasis positionBasis() const { return XyPositionBasis::Known; }
     virtual XyPoint commanded() const = 0;
     virtual XySample sample() const = 0;
 };

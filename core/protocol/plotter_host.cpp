@@ -146,6 +146,7 @@ void PlotterHost::receive(std::uint8_t byte, double nowS) {
 }
 
 void PlotterHost::accept(double nowS) {
+    ++stats_.accepted;
     const std::uint8_t e = current_.expect;
     // Copies of this packet whose answers may still come (each copy is answered once).
     const int more = std::max(0, copies_ - 1 - copiesAnswered_);

@@ -51,6 +51,7 @@ struct PlotterHostStats {
     std::uint64_t unexpected = 0;   ///< bytes that answered nothing we asked
     std::uint64_t late = 0;         ///< owed answers that came late (ignored)
     std::uint64_t barriers = 0;     ///< REQUESTs sent to flush owed answers
+    std::uint64_t accepted = 0;     ///< answers taken as the one a packet waited for
 };
 
 class PlotterHost {

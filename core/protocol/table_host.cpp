@@ -49,7 +49,10 @@ void TableHost::receive(std::uint8_t byte, double nowS) {
     const std::uint64_t noiseBefore = decoder_.discarded();
     const auto answer = decoder_.feed(byte, nowS);
     stats_.unexpected += decoder_.discarded() - noiseBefore;
-    if (answer) answered(*answer, nowS);
+    if (answer) {
+        ++stats_.answers;
+        answered(*answer, nowS);
+    }
 }
 
 void TableHost::countedAhead(const table_wire::DecodedAnswer& a, std::uint8_t expected) {
@@ -121,6 +124,16 @@ void TableHost::answered(const table_wire::DecodedAnswer& a, double nowS) {
             send(nowS);
             return;
         }
+        if (askingCount_ && !moves_ && !sentSetPoint_) {
+            // This host has sent no set point: the board is finishing a move begun before it
+            // connected (the screens were killed mid-run; the board reads nothing while it
+            // moves, so it dropped the check). Not a detour of this program's: send the check
+            // again, at once, now that the board is at rest.
+            ++stats_.earlier;
+            earlierCut_ = a.code == table_wire::kCan;
+            send(nowS);
+            return;
+        }
         // ACK or CAN of a set point never sent: the table moved where the program did not ask.
         reached_.reset();
         offPath_ = true;
@@ -162,8 +175,11 @@ void TableHost::answered(const table_wire::DecodedAnswer& a, double nowS) {
                  ", which is outside every table: its answers cannot be trusted");
             return;
         }
+        // Where the board last went, as it says: for the screens until the table is homed.
+        report_ = TableBoardReport{a.before, a.moves, earlierCut_};
+        earlierCut_ = false;
         inFlight_ = false;
-        checking_ = askingCount_ = false;
+        checking_ = askingCount_ = askingWhere_ = askWhere_ = false;
         timeouts_ = garbled_ = 0;
         mayStillAnswer_ = current_;  // a copy of the check sent again may still be answered
         poll(nowS);
@@ -219,9 +235,12 @@ void TableHost::answered(const table_wire::DecodedAnswer& a, double nowS) {
             return;
         default:  // kCan
             // The table stopped where the cut found it: where it stands is no longer known.
+            // The seed's answer carries no cause: every cut the board makes is named (issue 30
+            // item 6: its soft-limit guard is one).
             reached_.reset();
             fail("the table cut its drives on the way to " + name(current_) +
-                 ": over-current (a jam or a collision?)");
+                 ": an over-current, a following error, a move that never settled or its "
+                 "soft-limit guard (a CAN does not say which)");
             return;
     }
 }
@@ -234,11 +253,21 @@ void TableHost::poll(double nowS) {
         if (++timeouts_ > config_.maxTimeouts) {
             fail("no answer from the table to " +
                  (askingCount_ && !queue_.empty() ? "the check before " + name(queue_.front())
-                  : checking_ && reached_         ? "the check after " + name(*reached_)
-                                                  : name(current_)) +
+                  : askingCount_          ? std::string("the check asking where it last went")
+                  : checking_ && reached_ ? "the check after " + name(*reached_)
+                                          : name(current_)) +
                  " after " + std::to_string(timeouts_) + " tries: is it connected and on?");
             return;
         }
+        send(nowS);
+        return;
+    }
+    if (queue_.empty() && askWhere_ && !moves_) {
+        // askWhere() with nothing to send: the check alone, for where the board last went.
+        current_ = table_wire::kCheck;
+        checking_ = askingCount_ = askingWhere_ = true;
+        copies_ = 0;
+        ++stats_.countRequests;
         send(nowS);
         return;
     }
@@ -265,11 +294,12 @@ void TableHost::poll(double nowS) {
         return;
     }
     // The next set point's answer says where its move started: it checks the one before.
-    needCheck_ = checking_ = askingCount_ = false;
+    needCheck_ = checking_ = askingCount_ = askingWhere_ = false;
     checks_ = 0;
     current_ = queue_.front();
     queue_.pop_front();
     copies_ = 0;
+    sentSetPoint_ = true;
     send(nowS);
 }
 
@@ -314,7 +344,7 @@ void TableHost::clear() {
     inFlight_ = false;
     failed_ = false;
     offPath_ = false;
-    needCheck_ = checking_ = askingCount_ = false;
+    needCheck_ = checking_ = askingCount_ = askingWhere_ = false;
     checks_ = 0;
     error_.clear();
     timeouts_ = garbled_ = 0;

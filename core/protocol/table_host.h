@@ -20,6 +20,13 @@
 // its answer gives the board's count before the program moves it, so the first set point's
 // answer is checked too (a detour of the first set point whose answer was lost counts one
 // move more than the host sent; issue 20 item 10).
+// At connect the host asks the board where it last went (askWhere(): the same check, sent with
+// nothing queued; issue 30 item 7): the protocol has no position query, but the check's answer
+// names the set point the board last started ((0, 0) after power-on, where seed 004's table
+// stands) and the board answers only at rest, so the table stands there unless that move was
+// cut (boardReport()). Before this host has sent any set point, an ACK or CAN of one it never
+// sent is the board finishing a move begun before it connected (the screens killed mid-run):
+// not a detour of this host's program; the check, which the moving board dropped, goes again.
 #include <cstdint>
 #include <deque>
 #include <optional>
@@ -54,6 +61,16 @@ struct TableHostStats {
     std::uint64_t garbled = 0;        ///< set points the table received changed (NAK: sent again)
     std::uint64_t checks = 0;         ///< checks (kCheck) sent after a repeated last set point
     std::uint64_t countRequests = 0;  ///< checks sent before a first set point (its count)
+    std::uint64_t answers = 0;        ///< answers framed (every code; the board is heard)
+    std::uint64_t earlier = 0;  ///< answers to a move begun before this host (ignored, issue 30)
+};
+
+/// What the board said of itself in the check's answer before this host moved it.
+struct TableBoardReport {
+    table_wire::SetPointMm lastStarted{};  ///< the set point it last started ((0, 0): power-on)
+    std::uint8_t moves = 0;                ///< the moves it has started since power-on, mod 256
+    /// Its last move was seen cut (CAN) on the way: it does not stand at lastStarted.
+    bool cut = false;
 };
 
 class TableHost {
@@ -72,8 +89,18 @@ class TableHost {
     /// The bytes to write since the last call.
     std::vector<std::uint8_t> takeOutput();
 
+    /// Asks the board where it last went (the check) when nothing else is under way; the answer
+    /// is boardReport(). Sent before anything queued meanwhile, and not counted as work:
+    /// idle() holds while only it is in flight.
+    void askWhere() { askWhere_ = true; }
+    /// The board's answer to the last check sent before a set point (askWhere() or the count
+    /// request); nullopt before one.
+    const std::optional<TableBoardReport>& boardReport() const { return report_; }
+
     // ---- state ----
-    bool idle() const { return !failed_ && !inFlight_ && queue_.empty() && !needCheck_; }
+    bool idle() const {
+        return !failed_ && (!inFlight_ || askingWhere_) && queue_.empty() && !needCheck_;
+    }
     bool inFlight() const { return inFlight_; }
     bool failed() const { return failed_; }
     const std::string& error() const { return error_; }
@@ -113,11 +140,16 @@ class TableHost {
     double deadline_ = 0.0;
     int timeouts_ = 0;
     int garbled_ = 0;
-    int copies_ = 0;            ///< copies of the set point in flight sent
-    bool checking_ = false;     ///< the set point in flight is a check
-    bool askingCount_ = false;  ///< ... sent before the first set point, for the board's count
-    bool needCheck_ = false;    ///< the last set point went more than once: check it
-    int checks_ = 0;            ///< checks in a row that went more than once
+    int copies_ = 0;             ///< copies of the set point in flight sent
+    bool checking_ = false;      ///< the set point in flight is a check
+    bool askingCount_ = false;   ///< ... sent before the first set point, for the board's count
+    bool askWhere_ = false;      ///< askWhere(): the check goes even with nothing queued
+    bool askingWhere_ = false;   ///< ... and is the one in flight, with nothing queued behind it
+    bool sentSetPoint_ = false;  ///< a set point of this host went (not only checks)
+    bool earlierCut_ = false;    ///< a CAN of a move begun before this host was heard
+    std::optional<TableBoardReport> report_;
+    bool needCheck_ = false;  ///< the last set point went more than once: check it
+    int checks_ = 0;          ///< checks in a row that went more than once
     bool failed_ = false;
     bool offPath_ = false;
     table_wire::AnswerDecoder decoder_;

@@ -1,18 +1,22 @@
 #include "core/tuning/run_record.h"
 
+#include "core/files/atomic_file.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string_view>
+#include <unordered_map>
 
+#include "core/machine/json_duplicate_keys.h"
 #include "core/machine/replace_target.h"
 #include "core/tuning/trace_writer.h"
 
@@ -29,6 +33,17 @@ QJsonValue number(double v) {
 
 QString lawName(LoopLaw law) {
     return law == LoopLaw::Classic ? QStringLiteral("classic") : QStringLiteral("engineered");
+}
+
+/// The median of the steps between consecutive times, s; NaN under two times.
+double medianStepS(const std::vector<double>& timeS) {
+    if (timeS.size() < 2) return kNaN;
+    std::vector<double> steps(timeS.size() - 1);
+    for (std::size_t k = 1; k < timeS.size(); ++k)
+        steps[k - 1] = timeS[k] - timeS[k - 1];
+    const auto middle = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
+    std::nth_element(steps.begin(), middle, steps.end());
+    return *middle;
 }
 
 }  // namespace
@@ -159,6 +174,8 @@ QByteArray runConditionsToJson(const RunConditions& c, const StepMetrics* metric
     o[QStringLiteral("counts_per_mm")] = c.countsPerMm;
     o[QStringLiteral("abort_reason")] = c.abortReason;
     if (c.rows >= 0) o[QStringLiteral("rows")] = static_cast<double>(c.rows);
+    o[QStringLiteral("tick_jitter_ms")] = c.tickJitterMs;
+    o[QStringLiteral("jitter_rate")] = c.jitterRate;
     o[QStringLiteral("gain_change")] = gainChangeToJson(c);
     o[QStringLiteral("profile")] =
         QJsonDocument::fromJson(machineProfileToJson(c.profile)).object();
@@ -199,9 +216,9 @@ bool writeAtomically(const QString& path, const QByteArray& head, const RunChann
         *error = QStringLiteral("cannot write %1").arg(refused);
         return false;
     }
-    QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly)) {
-        *error = QStringLiteral("cannot write '%1': %2").arg(path, f.errorString());
+    AtomicFile f(path);
+    if (!f.open()) {
+        *error = f.error();
         return false;
     }
     QByteArray buffer = head;
@@ -214,14 +231,13 @@ bool writeAtomically(const QString& path, const QByteArray& head, const RunChann
             formatRunCsvRow(c, k, integerDrive, row);
             buffer.append(row.data(), static_cast<qsizetype>(row.size()));
             if (buffer.size() > (1 << 20)) {
-                if (f.write(buffer) != buffer.size()) break;
+                if (!f.write(buffer)) break;
                 buffer.clear();
             }
         }
     }
-    if (f.write(buffer) != buffer.size() || !f.commit()) {
-        *error = QStringLiteral("cannot write '%1': %2").arg(path, f.errorString());
-        f.cancelWriting();
+    if (!f.write(buffer) || !f.commit()) {
+        *error = f.error();
         return false;
     }
     return true;
@@ -241,6 +257,10 @@ bool saveRunRecord(const RunRecord& r, const QString& csvPath, const StepMetrics
     if (!writeAtomically(csvPath, head, &r.channels, true, error)) return false;
     RunConditions written = r.conditions;
     written.rows = static_cast<long long>(r.channels.size());  // a shorter CSV was cut
+    // A bare trace (read without a sidecar) has no known period: its sidecar says the one its
+    // rows show, not the default 1 ms its reader would otherwise refuse beside a 10 ms trace.
+    if (!r.hasConditions && r.channels.size() >= 2)
+        written.periodS = std::clamp(roundToDecimals(medianStepS(r.channels.timeS), 6), 1e-5, 1.0);
     return writeAtomically(runSidecarPath(csvPath), runConditionsToJson(written, metrics), nullptr,
                            false, error);
 }
@@ -261,6 +281,25 @@ QString shown(std::string_view v) {
     return s;
 }
 
+/// The CSV's first line, without its end of line.
+std::string_view headerOf(std::string_view text) {
+    std::string_view header = text.substr(0, text.find('\n'));
+    if (!header.empty() && header.back() == '\r') header.remove_suffix(1);
+    return header;
+}
+
+/// The comma-separated fields of a line (views into it).
+std::vector<std::string_view> splitFields(std::string_view line) {
+    std::vector<std::string_view> fields;
+    for (std::size_t p = 0;;) {
+        const std::size_t c = line.find(',', p);
+        fields.push_back(line.substr(p, c == std::string_view::npos ? c : c - p));
+        if (c == std::string_view::npos) break;
+        p = c + 1;
+    }
+    return fields;
+}
+
 }  // namespace
 
 RunLoad runRecordFromCsv(const QByteArray& csv, const QString& origin, char axis) {
@@ -274,15 +313,25 @@ RunLoad runRecordFromCsv(const QByteArray& csv, const QString& origin, char axis
     if (text.find('\0') != std::string_view::npos)
         return fail(1, 1, QStringLiteral("binary data: not a CSV trace"));
     // Header.
-    std::size_t eol = text.find('\n');
-    std::string_view header = text.substr(0, eol);
-    if (!header.empty() && header.back() == '\r') header.remove_suffix(1);
-    std::vector<std::string_view> names;
-    for (std::size_t p = 0;;) {
-        const std::size_t c = header.find(',', p);
-        names.push_back(header.substr(p, c == std::string_view::npos ? c : c - p));
-        if (c == std::string_view::npos) break;
-        p = c + 1;
+    const std::size_t eol = text.find('\n');
+    const std::string_view header = headerOf(text);
+    const std::vector<std::string_view> names = splitFields(header);
+    // A name given twice: which of the two is the position (or the time)? Each name once; an
+    // empty name (a trailing comma) names nothing.
+    {
+        std::unordered_map<std::string_view, std::size_t> seen;
+        seen.reserve(names.size());
+        for (std::size_t k = 0; k < names.size(); ++k) {
+            if (names[k].empty()) continue;
+            const auto [first, fresh] = seen.emplace(names[k], k);
+            if (!fresh)
+                return fail(1, static_cast<std::size_t>(names[k].data() - text.data()) + 1,
+                            QStringLiteral("column '%1' is given twice in the header (fields %2 "
+                                           "and %3): a trace names each column once")
+                                .arg(shown(names[k]))
+                                .arg(first->second + 1)
+                                .arg(k + 1));
+        }
     }
     Columns col;
     const bool twoAxes = std::find(names.begin(), names.end(), "x_setpoint_mm") != names.end();
@@ -418,6 +467,16 @@ RunLoad runRecordFromCsv(const QByteArray& csv, const QString& origin, char axis
         c.setpointMm.push_back(sp);
         c.positionMm.push_back(x);
         const double b = field(col.block, false, "block_n");
+        if (std::isfinite(b) && (b != std::floor(b) || b < std::numeric_limits<int>::min() ||
+                                 b > std::numeric_limits<int>::max())) {
+            // A number no int holds was converted to one (undefined): found by the fuzz target.
+            const std::string_view f = fields[static_cast<std::size_t>(col.block)];
+            return fail(line, static_cast<std::size_t>(f.data() - text.data()) - rowStart + 1,
+                        QStringLiteral("block_n: must be a whole number from %1 to %2 (got '%3')")
+                            .arg(std::numeric_limits<int>::min())
+                            .arg(std::numeric_limits<int>::max())
+                            .arg(shown(f)));
+        }
         c.blockN.push_back(std::isfinite(b) ? static_cast<int>(b) : -1);
         const double e = field(col.err, false, "error_mm");
         c.errorMm.push_back(std::isfinite(e) ? e : sp - x);
@@ -464,6 +523,18 @@ std::optional<RunConditions> runConditionsFromJson(const QByteArray& json, const
                 .arg(column)
                 .arg(pe.error != QJsonParseError::NoError ? pe.errorString()
                                                           : QStringLiteral("not a JSON object"));
+        return std::nullopt;
+    }
+    // QJsonDocument keeps one of two equal keys without a word: which period was meant?
+    if (const auto dup = findDuplicateKey(json)) {
+        *error = QStringLiteral(
+                     "%1: %2: the key is given twice, at %3:%4 and %5:%6 (a sidecar says each "
+                     "key once)")
+                     .arg(origin, dup->path)
+                     .arg(dup->first.line)
+                     .arg(dup->first.column)
+                     .arg(dup->second.line)
+                     .arg(dup->second.column);
         return std::nullopt;
     }
     const QJsonObject o = doc.object();
@@ -537,8 +608,52 @@ std::optional<RunConditions> runConditionsFromJson(const QByteArray& json, const
         !num("settle_s", 0.0, 600.0, c.settleS) || !num("pre_roll_s", 0.0, 600.0, c.preRollS) ||
         !num("max_duration_s", 0.0, 3600.0, c.maxDurationS) ||
         !num("envelope_margin_mm", 0.0, 1e5, c.envelopeMarginMm) ||
-        !num("counts_per_mm", 1e-3, 1e6, c.countsPerMm))
+        !num("counts_per_mm", 1e-3, 1e6, c.countsPerMm) ||
+        !num("tick_jitter_ms", 0.0, 1000.0, c.tickJitterMs) ||
+        !num("jitter_rate", 0.0, 1.0, c.jitterRate))
         return std::nullopt;
+    // What the sidecar says of its machine besides its profile must be its profile's.
+    const QString kindName =
+        QString::fromLatin1(machineKindName(c.profile.kind).data(),
+                            static_cast<qsizetype>(machineKindName(c.profile.kind).size()));
+    auto quoted = [](const QJsonValue& v) {
+        return QString::fromUtf8(QJsonDocument(QJsonArray{v}).toJson(QJsonDocument::Compact))
+            .chopped(1)
+            .mid(1);
+    };
+    if (const QJsonValue k = o.value(QStringLiteral("kind"));
+        !k.isUndefined() &&
+        machineKindFromName(k.toString().toStdString()) != std::optional(c.profile.kind))
+        return bad(
+            QStringLiteral("kind"),
+            QStringLiteral("%1, but its profile is of kind \"%2\"").arg(quoted(k), kindName));
+    if (const QJsonValue m = o.value(QStringLiteral("machine"));
+        !m.isUndefined() && m != QJsonValue(c.profile.name))
+        return bad(QStringLiteral("machine"), QStringLiteral("%1, but its profile is named %2")
+                                                  .arg(quoted(m), quoted(c.profile.name)));
+    if (c.axis && c.profile.kind != MachineKind::DcTable)
+        return bad(QStringLiteral("axis"),
+                   c.profile.kind == MachineKind::Rail
+                       ? QStringLiteral("\"%1\", but its profile is a rail (one axis)")
+                             .arg(QLatin1Char(c.axis))
+                       : QStringLiteral("\"%1\", but its profile is a %2 (only a step test of "
+                                        "a DC table axis names one)")
+                             .arg(QLatin1Char(c.axis))
+                             .arg(kindName));
+    if (o.contains(QStringLiteral("counts_per_mm"))) {
+        // The writers' own: the rail's encoder (the plotter, which has none, the same default),
+        // a DC table axis' through its screw (its X axis for a run of both).
+        double own = c.profile.plant.countsPerMm;
+        if (c.profile.kind == MachineKind::DcTable) {
+            const DcAxisParams& a = c.axis == 'y' ? c.profile.dcTable.y : c.profile.dcTable.x;
+            own = 2.0 * std::numbers::pi / (a.mmPerTurn * a.radPerCount);
+        }
+        if (std::abs(c.countsPerMm - own) > 1e-9 * own)
+            return bad(QStringLiteral("counts_per_mm"),
+                       QStringLiteral("%1, but its profile's encoder gives %2")
+                           .arg(c.countsPerMm)
+                           .arg(own));
+    }
     const QJsonValue seed = o.value(QStringLiteral("seed"));
     if (seed.isString()) {
         bool ok = false;
@@ -619,7 +734,118 @@ bool readBounded(const QString& path, long long maxBytes, QByteArray* into, QStr
     return true;
 }
 
+/// Where data row `row` (from 0, as the reader counts them: blank lines are no rows) is, and
+/// the byte column of its field `field`, both from 1.
+std::pair<std::size_t, std::size_t> placeOfField(std::string_view text, std::size_t row,
+                                                 std::size_t field) {
+    std::size_t line = 1, seen = 0;
+    std::size_t pos = text.find('\n');
+    pos = pos == std::string_view::npos ? text.size() : pos + 1;
+    while (pos < text.size()) {
+        ++line;
+        std::size_t end = text.find('\n', pos);
+        if (end == std::string_view::npos) end = text.size();
+        std::string_view r = text.substr(pos, end - pos);
+        if (!r.empty() && r.back() == '\r') r.remove_suffix(1);
+        if (!r.empty() && seen++ == row) {
+            std::size_t column = 1;
+            for (std::size_t k = 0; k < field; ++k) {
+                const std::size_t comma = r.find(',', column - 1);
+                if (comma == std::string_view::npos) break;
+                column = comma + 2;
+            }
+            return {line, column};
+        }
+        pos = end + 1;
+    }
+    return {line, 1};
+}
+
+/// The coarsest a writer puts time, s: `run --trace` writes t_s with 4 decimals, so two rows'
+/// step is within 0.1 ms of the true one (tune step's 6 decimals are within it).
+constexpr double kTimeResolutionS = 1e-4 + 1e-9;
+
 }  // namespace
+
+QString runSidecarContradiction(const QByteArray& csv, const QString& csvOrigin,
+                                const RunChannels& ch, const RunConditions& c,
+                                const QString& sidecarOrigin) {
+    const std::string_view text(csv.constData(), static_cast<std::size_t>(csv.size()));
+    auto contradiction = [&](std::size_t line, std::size_t column, const QString& trace,
+                             const QString& key, const QString& value) {
+        return QStringLiteral(
+                   "%1:%2:%3: %4, but %5: %6: %7; the sidecar does not describe "
+                   "this trace")
+            .arg(csvOrigin)
+            .arg(line)
+            .arg(column)
+            .arg(trace, sidecarOrigin, key, value);
+    };
+    const std::vector<std::string_view> names = splitFields(headerOf(text));
+    auto columnOf = [&](std::string_view name) -> std::optional<std::size_t> {
+        for (std::string_view n : names)
+            if (n == name) return static_cast<std::size_t>(n.data() - text.data()) + 1;
+        return std::nullopt;
+    };
+    const QString kind =
+        QString::fromLatin1(machineKindName(c.profile.kind).data(),
+                            static_cast<qsizetype>(machineKindName(c.profile.kind).size()));
+    // The machine against the columns.
+    if (const auto x = columnOf("x_setpoint_mm")) {
+        if (c.profile.kind == MachineKind::Rail)
+            return contradiction(1, *x, QStringLiteral("x_setpoint_mm: a trace of two axes"),
+                                 QStringLiteral("kind"),
+                                 QStringLiteral("\"%1\" (one axis)").arg(kind));
+        if (c.axis)
+            return contradiction(
+                1, *x, QStringLiteral("x_setpoint_mm: a trace of two axes"), QStringLiteral("axis"),
+                QStringLiteral("\"%1\" (a test of one axis)").arg(QLatin1Char(c.axis)));
+    } else if (c.profile.kind != MachineKind::Rail && !c.axis) {
+        return contradiction(1, columnOf("setpoint_mm").value_or(1),
+                             QStringLiteral("setpoint_mm: a trace of one axis"),
+                             QStringLiteral("axis"),
+                             QStringLiteral("null on a \"%1\" (a run of both axes)").arg(kind));
+    }
+    // More rows than its writer wrote.
+    if (c.rows >= 0 && ch.size() > static_cast<std::size_t>(c.rows)) {
+        const auto [line, column] = placeOfField(text, static_cast<std::size_t>(c.rows), 0);
+        return contradiction(line, column,
+                             QStringLiteral("%1 rows (row %2 here)").arg(ch.size()).arg(c.rows + 1),
+                             QStringLiteral("rows"), QString::number(c.rows));
+    }
+    // The period against the time's steps.
+    if (ch.size() < 2) return {};
+    const std::vector<double>& t = ch.timeS;
+    double shortest = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 1; k < t.size(); ++k)
+        shortest = std::min(shortest, t[k] - t[k - 1]);
+    const double median = medianStepS(t);
+    std::size_t tField = 0;
+    for (std::size_t k = 0; k < names.size(); ++k)
+        if (names[k] == "t_s") tField = k;
+    QString period = QString::number(c.periodS);
+    if (c.tickJitterMs > 0.0)
+        period += QStringLiteral(" (late periods up to tick_jitter_ms %1)").arg(c.tickJitterMs);
+    const double tooShort = c.periodS / 1.5 - kTimeResolutionS;
+    if (median < tooShort) {
+        std::size_t first = 1;
+        while (first + 1 < t.size() && !(t[first] - t[first - 1] < tooShort))
+            ++first;
+        const auto [line, column] = placeOfField(text, first, tField);
+        return contradiction(line, column,
+                             QStringLiteral("t_s: rows %1 s apart (the median step)").arg(median),
+                             QStringLiteral("period_s"), period);
+    }
+    const double tooLong = 1.5 * c.periodS + c.tickJitterMs / 1000.0 + kTimeResolutionS;
+    if (shortest > tooLong) {
+        const auto [line, column] = placeOfField(text, 1, tField);
+        return contradiction(
+            line, column,
+            QStringLiteral("t_s: no two rows closer than %1 s (the first two here)").arg(shortest),
+            QStringLiteral("period_s"), period);
+    }
+    return {};
+}
 
 RunLoad loadRunRecord(const QString& csvPath, char axis) {
     RunLoad out;
@@ -636,6 +862,11 @@ RunLoad loadRunRecord(const QString& csvPath, char axis) {
         }
         auto c = runConditionsFromJson(json, sidecar, &out.error);
         if (!c) {
+            out.record.reset();
+            return out;
+        }
+        out.error = runSidecarContradiction(csv, csvPath, out.record->channels, *c, sidecar);
+        if (!out.error.isEmpty()) {
             out.record.reset();
             return out;
         }

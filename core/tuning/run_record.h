@@ -53,8 +53,12 @@ struct RunConditions {
     double countsPerMm = 22.8;
     QString abortReason;  ///< empty when the test (or `run`) ran to its end
     /// Data rows of the CSV as its writer finished it (-1: not recorded, an older sidecar): a
-    /// CSV with fewer was cut short after it was written.
+    /// CSV with fewer was cut short after it was written; one with more is of another run.
     long long rows = -1;
+    /// Late periods (`run --tick-jitter`, --jitter-rate): each period lengthened by up to
+    /// tickJitterMs, ms, with probability jitterRate; 0 none. The trace's steps are that long.
+    double tickJitterMs = 0.0;
+    double jitterRate = 0.0;
     std::optional<GainChange> gainChange;  ///< none: one set of gains throughout
 };
 
@@ -129,11 +133,28 @@ struct RunLoad {
 
 /// Which columns to take from a trace with two axes (x_setpoint_mm ...); 0 for a single axis.
 /// Reads the CSV and, when it exists, its sidecar. A `run --trace` file of the rail or of an
-/// XY machine (with axis) is accepted: its missing channels are left empty.
+/// XY machine (with axis) is accepted: its missing channels are left empty. A sidecar that
+/// contradicts its trace (runSidecarContradiction) is refused: it describes another run.
 RunLoad loadRunRecord(const QString& csvPath, char axis = 0);
+/// Where a sidecar's conditions contradict the trace beside it (csv, already read into
+/// channels): "run.csv:3:1: t_s: rows 0.001 s apart (the median step), but run.run.json:
+/// period_s: 0.01; ...", naming the trace's line and column, the sidecar's key and both values;
+/// empty when they agree. What is checked, with its tolerances:
+/// - the machine against the columns: a trace of two axes (x_setpoint_mm...) is a run of an XY
+///   machine (no axis); a trace of one axis the rail's, or a step test of one DC table axis;
+/// - rows: more rows than the sidecar counts (fewer is a trace cut short, read as it is);
+/// - period_s against the steps of t_s, which no writer makes shorter than the period (its
+///   median step no shorter than period / 1.5; a real-time run's wake-ups come early and late
+///   around it) nor all longer (its shortest step no longer than 1.5 periods plus the late
+///   periods' tick_jitter_ms), each within the 0.1 ms of a time written with 4 decimals.
+QString runSidecarContradiction(const QByteArray& csv, const QString& csvOrigin,
+                                const RunChannels& channels, const RunConditions& conditions,
+                                const QString& sidecarOrigin);
 /// Parses CSV text already in memory (origin names it in errors).
 RunLoad runRecordFromCsv(const QByteArray& csv, const QString& origin, char axis = 0);
-/// Parses a sidecar into conditions (origin names it in errors).
+/// Parses a sidecar into conditions (origin names it in errors). A key given twice is refused,
+/// and so are conditions that contradict each other: "kind" and "machine" not those of its
+/// "profile", an axis on a machine other than the DC table, counts_per_mm not its profile's.
 std::optional<RunConditions> runConditionsFromJson(const QByteArray& json, const QString& origin,
                                                    QString* error);
 

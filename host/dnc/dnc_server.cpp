@@ -1,8 +1,10 @@
 #include "host/dnc/dnc_server.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <QModbusRtuSerialServer>
+#include <QScopeGuard>
 #include <QSerialPort>
 #include <QStringList>
 #include <QUrl>
@@ -111,31 +113,44 @@ DncServer::DncServer(DncMachine& machine, ProgramLibrary library, QObject* paren
     timer_.start(20);
     clock_.start();
     connect(&summaryTimer_, &QTimer::timeout, this, [this] {
-        const double now = static_cast<double>(clock_.elapsed()) / 1000.0;
         for (RefusalSummary* summary : {&refusals_, &accepted_})
-            if (const QString line = summary->roll(now); !line.isEmpty()) emit historyLine(line);
+            for (const QString& line : summary->roll(nowS()))
+                emit historyLine(line);
     });
     summaryTimer_.start(1000);
     refresh();
 }
 
-bool DncServer::takeDownloadBlock(const QString& client) {
-    if (!downloadOwner_.isEmpty() && downloadOwner_ != client &&
-        double(downloadTouched_.elapsed()) / 1000.0 < kDownloadOwnershipS)
-        return false;
+bool DncServer::mayWriteDownload(const QString& client) const {
+    return downloadOwner_.isEmpty() || downloadOwner_ == client ||
+           double(downloadTouched_.elapsed()) / 1000.0 >= kDownloadOwnershipS;
+}
+
+void DncServer::ownDownload(const QString& client) {
     downloadOwner_ = client;
     downloadTouched_.restart();
-    return true;
 }
 
 void DncServer::acceptedLine(const QString& client, const QString& line) {
-    for (const QString& l : accepted_.note(client, line, double(clock_.elapsed()) / 1000.0))
+    for (const QString& l : accepted_.note(client, line, nowS()))
+        emit historyLine(l);
+}
+
+void DncServer::acceptedChange(const QString& client, const QString& subject, const QString& where,
+                               const QList<ValueChange>& changes) {
+    for (const QString& l : accepted_.noteChange(client, subject, where, changes, nowS()))
         emit historyLine(l);
 }
 
 void DncServer::refused(const QString& client, const QString& line) {
-    for (const QString& l : refusals_.note(client, line, double(clock_.elapsed()) / 1000.0))
+    for (const QString& l : refusals_.note(client, line, nowS()))
         emit historyLine(l);
+}
+
+void DncServer::flushHistory() {
+    for (RefusalSummary* summary : {&refusals_, &accepted_})
+        for (const QString& line : summary->flush(nowS()))
+            emit historyLine(line);
 }
 
 DncServer::~DncServer() {
@@ -284,7 +299,8 @@ void DncServer::refresh() {
     drainMachineEvents();
     if (pending_ && machine_.applied(pending_->ticket)) {
         link_.commandSeq = pending_->seq;
-        link_.commandResult = pending_->result;
+        link_.commandResult =
+            appliedOutcome(pending_->command, pending_->result, pending_->seq, pending_->client);
         if (!pending_->appliedLine.isEmpty()) emit historyLine(pending_->appliedLine);
         pending_.reset();
     }
@@ -340,7 +356,11 @@ QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& serv
                              .arg(client));
     if (fc == QModbusPdu::WriteFileRecord) return writeFile(request, bytes, size, client);
     if (!d.isWrite) return base(request);  // coils: none in the map (an exception)
-    resolveMask(d, holding_);              // function 22: the value it leaves, checked as a write
+    // Checked and stored over the values on their way; what clients read of holding 0-7 is the
+    // machine's again afterwards, whichever way this returns.
+    overlayInFlight();
+    const auto live = qScopeGuard([this] { fillLiveHolding(machine_.snapshot(), holding_); });
+    resolveMask(d, holding_);  // function 22: the value it leaves, checked as a write
     Exception e = d.error;
     if (e == Exception::None) e = checkHoldingWrite(d.write, holding_, machine_.snapshot().law);
     if (e != Exception::None) {
@@ -364,7 +384,7 @@ QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& serv
     }
     const bool intoDownload =
         std::size_t{d.write.start} + d.write.values.size() > hold::kDownloadNumber;
-    if (intoDownload && !takeDownloadBlock(client)) {
+    if (intoDownload && !mayWriteDownload(client)) {
         refused(client, QStringLiteral("DNC: write refused (the download block is %1's until it "
                                        "commits): function %2 at %3 from %4")
                             .arg(downloadOwner_)
@@ -378,10 +398,17 @@ QModbusResponse DncServer::handle(const QModbusPdu& request, QModbusServer& serv
     if (response.isException()) return response;
     for (std::size_t i = 0; i < d.write.values.size(); ++i)
         holding_[d.write.start + i] = d.write.values[i];
-    if (!applyWrite(d.write, client)) {
+    // Owned from the write that stored something there, before a command in the same request
+    // (a commit) runs; given back if the machine refuses the write.
+    const QString ownerBefore = downloadOwner_;
+    const QElapsedTimer touchedBefore = downloadTouched_;
+    if (intoDownload) ownDownload(client);
+    if (!applyWrite(d.write, before, client)) {
         // Not taken by the machine: the write is undone (the registers read back what the
         // machine has) and the client reads "busy", never a success.
         holding_ = before;
+        downloadOwner_ = ownerBefore;
+        downloadTouched_ = touchedBefore;
         refresh();
         for (QModbusServer* s : servers_)
             publish(*s);
@@ -447,7 +474,7 @@ QModbusResponse DncServer::readFile(QModbusPdu::FunctionCode fc, const std::uint
 QModbusResponse DncServer::writeFile(const QModbusPdu& request, const std::uint8_t* data,
                                      std::size_t size, const QString& client) {
     const auto fc = request.functionCode();
-    if (!takeDownloadBlock(client)) {
+    if (!mayWriteDownload(client)) {
         refused(client, QStringLiteral("DNC: file record write refused (the download block is "
                                        "%1's until it commits) from %2")
                             .arg(downloadOwner_, client));
@@ -473,6 +500,7 @@ QModbusResponse DncServer::writeFile(const QModbusPdu& request, const std::uint8
         return QModbusExceptionResponse(fc, toQt(e));
     }
     holding_ = after;
+    ownDownload(client);  // only now: a refused write leaves the block as it was (issue 30 item 11)
     // The download block as clients read it with function 03.
     QModbusDataUnit block(QModbusDataUnit::HoldingRegisters, hold::kDownloadNumber,
                           hold::kCount - hold::kDownloadNumber);
@@ -483,29 +511,57 @@ QModbusResponse DncServer::writeFile(const QModbusPdu& request, const std::uint8
     return QModbusResponse(fc, request.data());  // function 21 answers with its request
 }
 
-bool DncServer::applyWrite(const HoldingWrite& w, const QString& client) {
+void DncServer::overlayInFlight() {
+    // applied() first, then a snapshot taken after it: that snapshot holds what was applied.
+    bool arrived = false;
+    for (std::optional<InFlight>* f : {&gainsInFlight_, &overrideInFlight_})
+        if (*f && machine_.applied((*f)->ticket)) f->reset(), arrived = true;
+    if (arrived) fillLiveHolding(machine_.snapshot(), holding_);
+    if (gainsInFlight_) std::copy_n(gainsInFlight_->regs.begin(), 6, holding_.begin() + hold::kKp);
+    if (overrideInFlight_)
+        std::copy_n(overrideInFlight_->regs.begin(), 2, holding_.begin() + hold::kFeedOverride);
+}
+
+bool DncServer::applyWrite(const HoldingWrite& w, const HoldingImage& before,
+                           const QString& client) {
     auto touches = [&w](std::uint16_t from, std::uint16_t to) {
         return w.start < to && w.start + w.values.size() > from;
     };
     auto f = [this](std::uint16_t a) { return double(joinFloat(holding_[a], holding_[a + 1])); };
+    auto was = [&before](std::uint16_t a) { return double(joinFloat(before[a], before[a + 1])); };
+    // As the history says them: gains to 6 significant digits (the float's 1.2 is 1.2), the
+    // override in percent.
+    auto gain = [](double v) { return QString::number(v, 'g', 6); };
+    auto percent = [](double v) {
+        return QString::number(v * 100.0, 'g', 4) + QStringLiteral(" %");
+    };
     if (touches(hold::kKp, hold::kKd + 2)) {
-        if (machine_
-                .send(CommandKind::SetGains, static_cast<int>(machine_.snapshot().law),
-                      f(hold::kKp), f(hold::kKi), f(hold::kKd))
-                .refused)
-            return false;
-        acceptedLine(client, QStringLiteral("DNC: gains kp %1, ki %2, kd %3 set by %4")
-                                 .arg(f(hold::kKp))
-                                 .arg(f(hold::kKi))
-                                 .arg(f(hold::kKd))
-                                 .arg(client));
+        const LoopLaw law = machine_.snapshot().law;
+        const Ticket t = machine_.send(CommandKind::SetGains, static_cast<int>(law), f(hold::kKp),
+                                       f(hold::kKi), f(hold::kKd));
+        if (t.refused) return false;
+        gainsInFlight_ = InFlight{t, {}};
+        std::copy_n(holding_.begin() + hold::kKp, 6, gainsInFlight_->regs.begin());
+        // Issue 30 item 5: the values, before and after, whatever the summary holds back.
+        acceptedChange(client, QStringLiteral("gains"),
+                       QStringLiteral("%1 law, holding %2-%3")
+                           .arg(law == LoopLaw::Classic ? QStringLiteral("classic")
+                                                        : QStringLiteral("engineered"))
+                           .arg(hold::kKp)
+                           .arg(hold::kKd + 1),
+                       {{QStringLiteral("kp"), gain(was(hold::kKp)), gain(f(hold::kKp))},
+                        {QStringLiteral("ki"), gain(was(hold::kKi)), gain(f(hold::kKi))},
+                        {QStringLiteral("kd"), gain(was(hold::kKd)), gain(f(hold::kKd))}});
     }
     if (touches(hold::kFeedOverride, hold::kFeedOverride + 2)) {
-        if (machine_.send(CommandKind::FeedOverride, 0, f(hold::kFeedOverride)).refused)
-            return false;
-        acceptedLine(client, QStringLiteral("DNC: feed override %1 % set by %2")
-                                 .arg(std::lround(f(hold::kFeedOverride) * 100.0))
-                                 .arg(client));
+        const Ticket t = machine_.send(CommandKind::FeedOverride, 0, f(hold::kFeedOverride));
+        if (t.refused) return false;
+        overrideInFlight_ = InFlight{t, {}};
+        std::copy_n(holding_.begin() + hold::kFeedOverride, 2, overrideInFlight_->regs.begin());
+        acceptedChange(
+            client, QStringLiteral("feed override"),
+            QStringLiteral("holding %1-%2").arg(hold::kFeedOverride).arg(hold::kFeedOverride + 1),
+            {{QString(), percent(was(hold::kFeedOverride)), percent(f(hold::kFeedOverride))}});
     }
     if (touches(hold::kCommand, hold::kCommand + 1)) {
         const auto c = static_cast<Command>(holding_[hold::kCommand]);
@@ -515,8 +571,22 @@ bool DncServer::applyWrite(const HoldingWrite& w, const QString& client) {
     return true;
 }
 
+CommandResult DncServer::appliedOutcome(Command command, CommandResult r, std::uint16_t seq,
+                                        const QString& client) {
+    if (command != Command::Hold || r != CommandResult::Applied) return r;
+    // Looked at after applied() said so: this snapshot has the Hold in it.
+    const ControllerStatus s = machine_.snapshot();
+    if (s.state == ControllerState::Paused && s.pause == PauseReason::Hold) return r;
+    refused(client, QStringLiteral("DNC: command hold (sequence %1) from %2: nothing to do: no "
+                                   "program was running when it reached the machine (%3)")
+                        .arg(seq)
+                        .arg(client)
+                        .arg(QLatin1String(controllerStateName(s.state))));
+    return CommandResult::NothingToDo;
+}
+
 void DncServer::finishCommand(std::uint16_t seq, CommandResult r, std::optional<Ticket> ticket,
-                              const QString& client, const QString& appliedLine) {
+                              const QString& client, const QString& appliedLine, Command command) {
     if (ticket && ticket->refused) {
         refused(client, QStringLiteral("DNC: command (sequence %1) from %2 refused: the machine "
                                        "is busy with the commands before it")
@@ -528,7 +598,7 @@ void DncServer::finishCommand(std::uint16_t seq, CommandResult r, std::optional<
     const QString said = r == CommandResult::Applied ? appliedLine : QString();
     if (ticket && !machine_.applied(*ticket)) {
         // A later queued command: the earlier go first.
-        pending_ = Pending{seq, r, *ticket, said};
+        pending_ = Pending{seq, r, *ticket, said, command, client};
         return;
     }
     if (!said.isEmpty()) {
@@ -539,7 +609,7 @@ void DncServer::finishCommand(std::uint16_t seq, CommandResult r, std::optional<
     // its way to the machine pending: it is echoed once applied, and keeps Starts serialised.
     if (ticket) pending_.reset();
     link_.commandSeq = seq;
-    link_.commandResult = r;
+    link_.commandResult = ticket ? appliedOutcome(command, r, seq, client) : r;
 }
 
 void DncServer::noteDiagnostics(int number, const Program& p) {
@@ -566,7 +636,7 @@ void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq,
                                      .arg(QLatin1String(commandName(c)))
                                      .arg(seq)
                                      .arg(client));
-        finishCommand(seq, r, ticket, client);
+        finishCommand(seq, r, ticket, client, {}, c);
     };
     switch (c) {
         case Command::StartProgram: {
@@ -604,6 +674,20 @@ void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq,
                 QStringLiteral("DNC: program %1 started by %2").arg(argument).arg(client));
         }
         case Command::Hold:
+            // Only a program running (or dwelling) is held: at rest, in Manual, while homing,
+            // paused already, in alarm or E-stop the controller does nothing with a Hold, and
+            // it was answered "applied" (issue 30 item 11). A command still on its way (a Start
+            // just sent) has not shown in the snapshot yet: that Hold goes to the machine, and
+            // what it did is looked at once it is applied (appliedOutcome).
+            if (!pending_ && s.state != ControllerState::Running &&
+                s.state != ControllerState::Waiting) {
+                refused(client, QStringLiteral("DNC: command hold (sequence %1) from %2: nothing "
+                                               "to do: no program is running (%3)")
+                                    .arg(seq)
+                                    .arg(client)
+                                    .arg(QLatin1String(controllerStateName(s.state))));
+                return finishCommand(seq, CommandResult::NothingToDo, std::nullopt, client);
+            }
             return finish(CommandResult::Applied, machine_.send(CommandKind::Hold));
         case Command::Continue:
             // Only a pause (a hold, an m00, single block) has anything to continue: after a
@@ -640,12 +724,24 @@ void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq,
             }
             // The law comes with its period (issue 22 item 1); never changed under a program.
             if (pending_ || runningState(s.state)) return finish(CommandResult::Busy);
+            gainsInFlight_.reset();  // those were the other law's
             return finish(CommandResult::Applied,
                           machine_.send(CommandKind::SetLaw, argument == 0 ? 0 : 1));
         case Command::CommitDownload: {
-            // Only the client whose download it is commits it; the block is free afterwards.
-            if (!takeDownloadBlock(client)) return finish(CommandResult::Busy);
-            downloadOwner_.clear();
+            // Only the client whose download it is commits it: another's, still being written,
+            // is busy; with no download of this client's since the last commit that saved
+            // (its writes all refused, or none) there is nothing to commit: it would save what
+            // another client left in the block (issue 30 item 11).
+            if (downloadOwner_ != client) {
+                if (!mayWriteDownload(client)) return finish(CommandResult::Busy);
+                refused(client,
+                        QStringLiteral("DNC: command commit download (sequence %1) from %2: "
+                                       "nothing to do: it wrote no download since the last "
+                                       "commit")
+                            .arg(seq)
+                            .arg(client));
+                return finishCommand(seq, CommandResult::NothingToDo, std::nullopt, client);
+            }
             const std::uint16_t length = holding_[hold::kDownloadLength];
             if (holding_[hold::kDownloadNumber] != argument || length > hold::kDownloadMaxBytes)
                 return finish(CommandResult::BadDownload);
@@ -669,6 +765,10 @@ void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq,
                                      .arg(library_.pathOf(argument), error));
                 return finish(CommandResult::SaveFailed);
             }
+            // Saved: the block is free. A commit refused above leaves it its owner's, who may
+            // correct it and commit again (another client may take it once the owner has not
+            // written for 30 s).
+            downloadOwner_.clear();
             emit historyLine(
                 QStringLiteral("DNC: program %1 saved (%2 bytes)").arg(argument).arg(length));
             return finish(CommandResult::Applied);

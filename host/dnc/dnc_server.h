@@ -9,6 +9,7 @@
 #include <QModbusPdu>
 #include <QObject>
 #include <QTimer>
+#include <array>
 #include <memory>
 #include <optional>
 
@@ -54,6 +55,10 @@ class DncServer : public QObject {
     QModbusResponse handle(const QModbusPdu& request, QModbusServer& server,
                            const std::function<QModbusResponse(const QModbusPdu&)>& base,
                            const QString& client);
+    /// Writes what the history summaries hold back now, however far their window has run
+    /// (issue 30 item 5: serve's last lines were lost when it stopped). Called when the link
+    /// stops (serve's exit, the screens' Stop and exit), before the server goes away.
+    void flushHistory();
     /// How many TCP clients are connected now (the screens' status bar).
     int clientCount() const;
 
@@ -65,12 +70,19 @@ class DncServer : public QObject {
 
   private:
     /// Whether client may write into the download block now: it is free, or client's, or its
-    /// owner has not written for kDownloadOwnershipS. True makes client its owner.
-    bool takeDownloadBlock(const QString& client);
+    /// owner has not written for kDownloadOwnershipS.
+    bool mayWriteDownload(const QString& client) const;
+    /// client wrote into the download block: it is its owner until it commits.
+    void ownDownload(const QString& client);
     /// A refused request's history line, through the summary (refusal_summary.h).
     void refused(const QString& client, const QString& line);
     /// An accepted write's history line, through its own summary.
     void acceptedLine(const QString& client, const QString& line);
+    /// An accepted write of a setting with its values (refusal_summary.h's noteChange).
+    void acceptedChange(const QString& client, const QString& subject, const QString& where,
+                        const QList<ValueChange>& changes);
+    /// Seconds on the summaries' clock.
+    double nowS() const { return double(clock_.elapsed()) / 1000.0; }
     /// A TCP request's PDU (bytes >= 1) answered into answer (ModbusTcpListener's handler).
     void answerTcp(const std::uint8_t* pdu, std::size_t bytes, const QString& client,
                    QByteArray& answer);
@@ -86,7 +98,8 @@ class DncServer : public QObject {
     void publish(QModbusServer& server);
     /// Hands a stored write to the machine; false when the machine refused a gain or override
     /// change (its queue is busy): the caller undoes the write and answers exception 06.
-    bool applyWrite(const HoldingWrite& w, const QString& client);
+    /// before: the registers before the write (the values the history says were replaced).
+    bool applyWrite(const HoldingWrite& w, const HoldingImage& before, const QString& client);
     /// Reports a serial line's errors and reopens it when it comes back.
     void watchSerialLine(QModbusServer* srv, const QString& device);
     /// Functions 20 (a stored program) and 21 (into the download block): file_records.h.
@@ -100,7 +113,13 @@ class DncServer : public QObject {
     /// the machine's own lines of that moment (F13: "program 42 started" came before the
     /// mode lines of the Automatic it asked for, and before anything had started).
     void finishCommand(std::uint16_t seq, CommandResult r, std::optional<Ticket> ticket = {},
-                       const QString& client = {}, const QString& appliedLine = {});
+                       const QString& client = {}, const QString& appliedLine = {},
+                       Command command = Command::None);
+    /// A command's result once the machine has applied it: a Hold the controller did not take
+    /// (no program was running when it arrived: it ended, or a Start before it was still
+    /// homing) did nothing, and is answered so (issue 30 item 11).
+    CommandResult appliedOutcome(Command command, CommandResult r, std::uint16_t seq,
+                                 const QString& client);
     void noteDiagnostics(int number, const Program& p);
     /// The machine's events to the history (and the alarm count), in order.
     void drainMachineEvents();
@@ -113,7 +132,9 @@ class DncServer : public QObject {
     QTimer timer_;
     std::vector<QModbusServer*> servers_;  ///< owned (children)
     /// The download block belongs to one client from its first write to its commit (issue 20
-    /// item 8: two clients interleaving downloads saved a program neither sent).
+    /// item 8: two clients interleaving downloads saved a program neither sent). Empty: no
+    /// write since the last commit that saved, so a commit has nothing to do (issue 30 item
+    /// 11: a client whose writes were all refused committed the last client's program).
     QString downloadOwner_;
     QElapsedTimer downloadTouched_;
     static constexpr double kDownloadOwnershipS = 30.0;
@@ -133,8 +154,20 @@ class DncServer : public QObject {
         CommandResult result;
         Ticket ticket;
         QString appliedLine;  ///< said once applied (empty: nothing)
+        Command command = Command::None;
+        QString client;
     };
     std::optional<Pending> pending_;
+    /// A gains or override write the machine has not applied yet (the worker's queue): the
+    /// snapshot does not show it, yet it is the value the next write replaces (the history's
+    /// "before") and builds on (a kp written alone keeps the ki and kd on their way).
+    struct InFlight {
+        Ticket ticket;
+        std::array<std::uint16_t, 6> regs{};  ///< holding 0-5 (gains) or 6-7 (override)
+    };
+    std::optional<InFlight> gainsInFlight_, overrideInFlight_;
+    /// holding_'s gains and override as they will be once the writes on their way are applied.
+    void overlayInFlight();
 };
 
 }  // namespace trilho::dnc

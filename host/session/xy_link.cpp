@@ -121,7 +121,7 @@ void XyLink::stepOnce(double dtS) {
     timeS_ += dtS;
     std::lock_guard<std::mutex> lock(mutex_);
     status_ = c.status();
-    rows_.push_back({timeS_, status_.sample});
+    rows_.push_back({timeS_, status_.sample, status_.positionBasis != XyPositionBasis::Unknown});
     if (rows_.size() > kMaxRows) {
         rows_.pop_front();
         ++droppedRows_;

@@ -38,6 +38,9 @@ class XyRunnable {
 struct XyTraceRow {
     double tS = 0.0;
     XySample sample;
+    /// The sample's positions are where the machine is (false: a board on a line before it
+    /// said where, issue 30 item 7; the 0 in the sample is no position, drawn nowhere).
+    bool positionKnown = true;
 };
 
 class XyLink : public QObject {

@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """The DNC link against real Modbus clients (issue 13): pymodbus and mbpoll talk to
 `trilho-cli serve --virtual-time` on 127.0.0.1. Usage: dnc_clients.py CLI {pymodbus,mbpoll,
-refused,alarm,files,rtu,frames,bounds,xy}. Exits 77 (ctest SKIP_RETURN_CODE) when the client is not installed.
+refused,alarm,files,rtu,frames,bounds,xy,accepted,nothing}. Exits 77 (ctest SKIP_RETURN_CODE) when the client is not installed.
 Every wait is on a condition with a deadline, never a fixed sleep."""
 import math
 import os
 import shutil
+import signal
 import socket
 import struct
 import subprocess
@@ -23,7 +24,7 @@ IN_MACHINE, IN_AXES, IN_Y_POSITION = 34, 35, 36
 H_KP, H_FEED, H_COMMAND, H_DL_NUMBER, H_DL_LENGTH, H_DL_DATA, H_COUNT = 0, 6, 8, 16, 17, 18, 18 + 4096
 MANUAL, AUTO_IDLE, HOMING, RUNNING, WAITING, PAUSED, ALARM = 0, 1, 2, 3, 4, 5, 6
 START, HOLD, CONTINUE, STOP, ACK, AUTO, MANUAL_CMD, COMMIT = 1, 2, 3, 4, 5, 6, 7, 8
-APPLIED, NO_PROGRAM, COMPILE_ERRORS, NOT_READY = 1, 2, 3, 7
+APPLIED, NO_PROGRAM, COMPILE_ERRORS, BUSY, NOT_READY, NOTHING_TO_DO = 1, 2, 3, 4, 7, 8
 
 # A slow move (so hold, continue and stop find it running), an m00, and back.
 PROGRAM = ("( downloaded over Modbus )\nN0010 G01 X0200 F010\nN0020 M00\n"
@@ -71,8 +72,8 @@ class Server:
                 break
         raise SystemExit("server did not start: " + "".join(self.lines))
 
-    def stop(self):
-        self.proc.terminate()
+    def stop(self, sig=signal.SIGTERM):
+        self.proc.send_signal(sig)
         out, _ = self.proc.communicate(timeout=20)
         self.lines.append(out)
         return self.proc.returncode, "".join(self.lines)
@@ -288,6 +289,68 @@ def run_refused(cli):
         # (Over TCP Qt's store answers 08 with 01 anyway: the history tells consent apart.)
         check(out.count("write refused (Remote is off): function 8 ") == 1,
               "08/04 refused for consent, 08/00 not: " + " | ".join(l for l in out.splitlines() if "function 8 " in l))
+
+
+def run_accepted(cli):
+    # Issue 30 item 5: a gains change (kp 1.2 -> 2.0) and an override of 25 %, past the three
+    # lines a client has written whole in a window, came out only as "5 refused requests", and
+    # the lines held back were lost when serve stopped. Accepted writes are lines with their
+    # values, the summary calls them accepted, and it is written when serve stops, by SIGTERM
+    # as by SIGINT (Ctrl-C).
+    for sig in (signal.SIGTERM, signal.SIGINT):
+        name = signal.Signals(sig).name
+        with tempfile.TemporaryDirectory() as programs:
+            srv = Server(cli, programs)
+            try:
+                p = Py(srv.port)
+                check(p.ir(IN_LAW)[0] == 1 and abs(f32(*p.hr(H_KP, 2)) - 1.2) < 1e-6,
+                      "the engineered law, kp 1.2")
+                for f in (0.5, 0.75, 1.0):
+                    check(not p.write(H_FEED, regs_of(f)).isError(), f"override {f} written")
+                check(not p.write(H_KP, regs_of(2.0) + regs_of(0.5) + regs_of(0.02)).isError(),
+                      "gains kp 2.0 written")
+                check(not p.write(H_FEED, regs_of(0.25)).isError(), "override 0.25 written")
+                p.c.close()
+            finally:
+                rc, out = srv.stop(sig)
+            check(rc == 0, f"{name}: exit status {rc}")
+            lines = out.splitlines()
+            gains = f"DNC: gains kp 1.2 -> 2, ki 0.5, kd 0.02 (engineered law, holding 0-5) set by {p.peer}"
+            feed = f"DNC: feed override 100 % -> 25 % (holding 6-7) set by {p.peer}"
+            said = [next((i for i, l in enumerate(lines) if l.startswith(t)), -1)
+                    for t in (gains, feed, "DNC: 5 accepted writes in the last ", "trilho-cli serve: stopped")]
+            check(said[0] >= 0, f"{name}: the gains change with its values: '{gains}'")
+            check(said[1] >= 0, f"{name}: the override with its values: '{feed}'")
+            check(said[2] >= 0, f"{name}: the summary counts accepted writes")
+            check(not any("refused" in l for l in lines), f"{name}: nothing said refused")
+            check(-1 not in said and all(i < said[3] for i in said[:3]), f"{name}: all said before 'stopped' ({said})")
+            if failures:
+                print(out)
+
+
+def run_nothing(cli):
+    # Issue 30 item 11: "nothing to do" (8), never "applied", for a Hold with nothing running
+    # and for a commit by a client whose writes were all refused.
+    text = "N10 G01 X0010 F050\nN20 M02\n"
+    with tempfile.TemporaryDirectory() as programs:
+        srv = Server(cli, programs)
+        try:
+            p, other = Py(srv.port), Py(srv.port)
+            check(p.command(HOLD) == NOTHING_TO_DO, "hold in Manual: nothing to do")
+            check(p.command(AUTO) == APPLIED, "automatic")
+            wait_for(lambda: p.state() == AUTO_IDLE and p.ir(IN_HOMED)[0] == 1, "homed")
+            check(p.command(HOLD) == NOTHING_TO_DO, "hold at rest in Automatic: nothing to do")
+            check(download(p, 42, text) == APPLIED, "program 42 downloaded by one client")
+            check(other.exc(other.write(H_DL_DATA, [0xFF00])) == 3, "the other's write is refused (03)")
+            check(other.command(COMMIT, 42) == NOTHING_TO_DO, "and its commit is nothing to do")
+            check(p.command(COMMIT, 42) == NOTHING_TO_DO, "a second commit with nothing new: nothing to do")
+            p.c.close()
+            other.c.close()
+        finally:
+            rc, out = srv.stop()
+        check(out.count("program 42 saved") == 1, "saved once")
+        check(f"command hold (sequence 101) from {p.peer}: nothing to do" in out,
+              "the history says the hold had nothing to do, naming the client")
 
 
 # ---------------------------------------------------------------- file records (20, 21)
@@ -828,7 +891,8 @@ def main():
             print("pymodbus not installed: skipped (scripts/deps.sh installs python3-pymodbus)")
             return 77
         {"pymodbus": run_pymodbus, "alarm": run_alarm, "refused": run_refused,
-         "files": run_files, "rtu": run_rtu, "frames": run_frames, "bounds": run_bounds, "xy": run_xy}[mode](cli)
+         "files": run_files, "rtu": run_rtu, "frames": run_frames, "bounds": run_bounds, "xy": run_xy,
+         "accepted": run_accepted, "nothing": run_nothing}[mode](cli)
     if failures:
         print(f"{len(failures)} failed: " + "; ".join(failures))
         return 1

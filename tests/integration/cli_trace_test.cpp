@@ -334,7 +334,9 @@ TEST_F(CliTrace, MetricsOfATruncatedTraceSaySoAndExitThree) {
               QStringLiteral("868 rows of the 869 its sidecar counts"));
     EXPECT_EQ(o.value(QStringLiteral("rows")).toDouble(), 868.0);
     EXPECT_FALSE(o.value(QStringLiteral("ok")).toBool(true));
-    // The whole trace, a sidecar that counts one row fewer: not the run it describes.
+    // The whole trace, a sidecar that counts one row fewer: not the run it describes, and
+    // refused as any sidecar that contradicts its trace (issue 30 item 10), at the first row
+    // past its count.
     rewrite(bytes);
     const QString sidecar = dir.filePath(QStringLiteral("doc.run.json"));
     QJsonObject side = QJsonDocument::fromJson(readAll(sidecar)).object();
@@ -344,10 +346,149 @@ TEST_F(CliTrace, MetricsOfATruncatedTraceSaySoAndExitThree) {
     sf.write(QJsonDocument(side).toJson());
     sf.close();
     const CliResult more = runCli({QStringLiteral("tune"), QStringLiteral("metrics"), trace});
-    EXPECT_EQ(more.exit, 3) << more.err.toStdString();
-    EXPECT_TRUE(more.out.contains(QStringLiteral(
-        "MISMATCH: 869 rows, more than the 868 its sidecar counts: not the run it describes")))
-        << more.out.toStdString();
+    EXPECT_EQ(more.exit, 2) << more.err.toStdString();
+    EXPECT_TRUE(more.out.isEmpty()) << more.out.toStdString();
+    EXPECT_TRUE(more.err.contains(trace + QStringLiteral(":870:1: 869 rows (row 869 here), but ") +
+                                  sidecar + QStringLiteral(": rows: 868")))
+        << more.err.toStdString();
+}
+
+namespace {
+
+void editJson(const QString& path, const char* key, const QJsonValue& value) {
+    QJsonObject o = QJsonDocument::fromJson(readAll(path)).object();
+    o[QLatin1String(key)] = value;
+    QFile f(path);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    f.write(QJsonDocument(o).toJson());
+}
+
+}  // namespace
+
+// Issue 30 item 10: `tune metrics` measured a trace with a sidecar of another run (exit 0), and
+// read a header that names a column twice with whichever came last. Both are refused (exit 2)
+// naming the trace's line and column, the sidecar's key and both values.
+TEST_F(CliTrace, ASidecarThatContradictsItsTraceIsRefused) {
+    const QString trace = dir.filePath(QStringLiteral("doc.csv"));
+    const QString sidecar = dir.filePath(QStringLiteral("doc.run.json"));
+    ASSERT_EQ(runCli({QStringLiteral("run"), QStringLiteral("--virtual-time"),
+                      QStringLiteral("--trace"), trace, program("exemplo_documento.G")})
+                  .exit,
+              0);
+    const QByteArray sidecarBytes = readAll(sidecar);
+    ASSERT_EQ(runCli({QStringLiteral("tune"), QStringLiteral("metrics"), trace}).exit, 0);
+    // The classic law's 10 ms beside a trace of 1 ms steps.
+    editJson(sidecar, "period_s", 0.01);
+    CliResult r = runCli({QStringLiteral("tune"), QStringLiteral("metrics"), trace});
+    EXPECT_EQ(r.exit, 2) << r.out.toStdString();
+    EXPECT_TRUE(r.err.startsWith(QStringLiteral("trilho-cli tune metrics: ") + trace +
+                                 QStringLiteral(":3:1: t_s: rows 0.001 s apart (the median "
+                                                "step), but ") +
+                                 sidecar + QStringLiteral(": period_s: 0.01")))
+        << r.err.toStdString();
+    // The DC table's run beside the rail's trace.
+    const QString table = dir.filePath(QStringLiteral("table.csv"));
+    ASSERT_EQ(runCli({QStringLiteral("run"), QStringLiteral("--virtual-time"),
+                      QStringLiteral("--machine"), QStringLiteral("xy_dc_table"),
+                      QStringLiteral("--trace"), table, program("mesa_xy_quadrado.G")})
+                  .exit,
+              0);
+    ASSERT_TRUE(QFile::remove(sidecar));
+    ASSERT_TRUE(QFile::copy(dir.filePath(QStringLiteral("table.run.json")), sidecar));
+    r = runCli({QStringLiteral("tune"), QStringLiteral("metrics"), trace});
+    EXPECT_EQ(r.exit, 2) << r.out.toStdString();
+    EXPECT_TRUE(r.err.contains(trace +
+                               QStringLiteral(":1:13: setpoint_mm: a trace of one axis, "
+                                              "but ") +
+                               sidecar + QStringLiteral(": axis: null on a \"xy-dc-table\"")))
+        << r.err.toStdString();
+    // And the rail's beside the table's.
+    ASSERT_TRUE(QFile::remove(dir.filePath(QStringLiteral("table.run.json"))));
+    {
+        QFile f(dir.filePath(QStringLiteral("table.run.json")));
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+        f.write(sidecarBytes);
+    }
+    r = runCli({QStringLiteral("tune"), QStringLiteral("metrics"), table, QStringLiteral("--axis"),
+                QStringLiteral("x")});
+    EXPECT_EQ(r.exit, 2) << r.out.toStdString();
+    EXPECT_TRUE(r.err.contains(table + QStringLiteral(":1:13: x_setpoint_mm: a trace of two axes")))
+        << r.err.toStdString();
+    // A header naming position_mm twice (the error column renamed): which is the position?
+    QFile::remove(sidecar);
+    QByteArray bytes = readAll(trace);
+    bytes.replace("position_mm,error_mm,", "position_mm,position_mm,");
+    {
+        QFile f(trace);
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write(bytes);
+    }
+    r = runCli({QStringLiteral("tune"), QStringLiteral("metrics"), trace});
+    EXPECT_EQ(r.exit, 2) << r.out.toStdString();
+    EXPECT_TRUE(r.err.contains(
+        trace + QStringLiteral(
+                    ":1:37: column 'position_mm' is given twice in the header (fields 4 and 5)")))
+        << r.err.toStdString();
+}
+
+// What every writer writes, its trace and its sidecar, agree: none is refused as contradicting
+// itself, with late periods (every period late by up to 40 ms), the classic law's 10 ms, the
+// XY machines' two axes, a table axis' step.
+TEST_F(CliTrace, EveryWritersTraceAndSidecarAgree) {
+    struct Writer {
+        const char* name;
+        QStringList args;
+        QStringList metrics;  ///< tune metrics' options
+    };
+    const QString jitter[] = {QStringLiteral("--tick-jitter"), QStringLiteral("40"),
+                              QStringLiteral("--jitter-rate"), QStringLiteral("1")};
+    const QStringList late(std::begin(jitter), std::end(jitter));
+    const Writer writers[] = {
+        {"rail",
+         {QStringLiteral("run"), QStringLiteral("--virtual-time"), program("exemplo_documento.G")},
+         {}},
+        {"classic",
+         {QStringLiteral("run"), QStringLiteral("--virtual-time"), QStringLiteral("--law"),
+          QStringLiteral("classic"), program("exemplo_documento.G")},
+         {}},
+        {"late",
+         QStringList{QStringLiteral("run"), QStringLiteral("--virtual-time")} + late +
+             QStringList{program("exemplo_documento.G")},
+         {}},
+        {"table",
+         QStringList{QStringLiteral("run"), QStringLiteral("--virtual-time"),
+                     QStringLiteral("--machine"), QStringLiteral("xy_dc_table")} +
+             late + QStringList{program("mesa_xy_quadrado.G")},
+         {QStringLiteral("--axis"), QStringLiteral("y")}},
+        {"plotter",
+         QStringList{QStringLiteral("run"), QStringLiteral("--virtual-time"),
+                     QStringLiteral("--machine"), QStringLiteral("xy_plotter")} +
+             late + QStringList{program("plotter_quadrado.G")},
+         {QStringLiteral("--axis"), QStringLiteral("x")}},
+        {"step",
+         {QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--machine"),
+          QStringLiteral("xy_dc_table"), QStringLiteral("--axis"), QStringLiteral("y"),
+          QStringLiteral("--amplitude"), QStringLiteral("10")},
+         {}},
+    };
+    for (const Writer& w : writers) {
+        const QString trace = dir.filePath(QString::fromLatin1(w.name) + QStringLiteral(".csv"));
+        const CliResult run = runCli(w.args + QStringList{QStringLiteral("--trace"), trace});
+        ASSERT_TRUE(QFileInfo::exists(
+            dir.filePath(QString::fromLatin1(w.name) + QStringLiteral(".run.json"))))
+            << w.name << run.err.toStdString();
+        const CliResult m = runCli(
+            QStringList{QStringLiteral("tune"), QStringLiteral("metrics"), trace} + w.metrics);
+        // Measured, or no step to measure (a square back at its start), never refused for
+        // its sidecar.
+        EXPECT_TRUE(m.exit == 0 || m.exit == 3 || m.err.contains(QStringLiteral("no step")))
+            << w.name << ": " << m.err.toStdString();
+        EXPECT_FALSE(m.err.contains(QStringLiteral(".run.json"))) << w.name;
+    }
+    // The late periods are recorded.
+    const QJsonObject recorded = jsonFile(dir.filePath(QStringLiteral("late.run.json")));
+    EXPECT_EQ(recorded.value(QStringLiteral("tick_jitter_ms")).toDouble(), 40.0);
+    EXPECT_EQ(recorded.value(QStringLiteral("jitter_rate")).toDouble(), 1.0);
 }
 
 }  // namespace

@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QMap>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 
@@ -89,6 +91,108 @@ TEST(CliTuneModel, AutoWritesAProfileThatRunTakes) {
          QStringLiteral("--machine"), out,
          QStringLiteral(TRILHO_PROGRAMS_DIR) + QStringLiteral("/ciclo_carga.G")});
     EXPECT_EQ(run.exit, 0) << run.out.toStdString() << run.err.toStdString();
+}
+
+/// Every leaf of o by its dotted path ("loop.engineered.kp").
+void leaves(const QJsonObject& o, const QString& prefix, QMap<QString, QJsonValue>& into) {
+    for (auto it = o.begin(); it != o.end(); ++it) {
+        const QString path = prefix.isEmpty() ? it.key() : prefix + QLatin1Char('.') + it.key();
+        if (it.value().isObject())
+            leaves(it.value().toObject(), path, into);
+        else
+            into.insert(path, it.value());
+    }
+}
+
+QMap<QString, QJsonValue> leavesOf(const QByteArray& json) {
+    QMap<QString, QJsonValue> out;
+    leaves(QJsonDocument::fromJson(json).object(), QString(), out);
+    return out;
+}
+
+bool isNote(const QString& path) {
+    return path.endsWith(QLatin1String("source")) || path.endsWith(QLatin1String("comment"));
+}
+
+/// The profile's values as trilho-cli reads them (`trilho-cli profile FILE`), notes left out.
+QMap<QString, QJsonValue> valuesOf(const QString& file) {
+    const CliResult r = runCli({QStringLiteral("profile"), file});
+    EXPECT_EQ(r.exit, 0) << r.err.toStdString();
+    QMap<QString, QJsonValue> all = leavesOf(r.out.toUtf8());
+    for (auto it = all.begin(); it != all.end();)
+        it = isNote(it.key()) ? all.erase(it) : std::next(it);
+    return all;
+}
+
+/// `tune auto --machine in --write-profile out` (more: its other options), then: every key of
+/// in's JSON the tuning did not change is in out with the same value (the notes always), every
+/// key it changed has the tuned value, and it changed some.
+void expectEveryKeyNotChangedKept(const QString& in, const QString& out, QStringList more) {
+    const CliResult r = runCli(tune("auto", QStringList{QStringLiteral("--machine"), in,
+                                                        QStringLiteral("--write-profile"), out} +
+                                                more));
+    ASSERT_EQ(r.exit, 0) << r.err.toStdString() << r.out.toStdString();
+    QFile i(in), o(out);
+    ASSERT_TRUE(i.open(QIODevice::ReadOnly) && o.open(QIODevice::ReadOnly));
+    const QMap<QString, QJsonValue> original = leavesOf(i.readAll()),
+                                    written = leavesOf(o.readAll());
+    const QMap<QString, QJsonValue> before = valuesOf(in), after = valuesOf(out);
+    int notes = 0, changed = 0;
+    for (auto it = original.begin(); it != original.end(); ++it) {
+        const QString& key = it.key();
+        ASSERT_TRUE(written.contains(key)) << "dropped: " << key.toStdString();
+        if (isNote(key) || before.value(key) == after.value(key)) {
+            EXPECT_EQ(written.value(key), it.value()) << key.toStdString();
+            notes += isNote(key);
+        } else {
+            EXPECT_EQ(written.value(key), after.value(key)) << key.toStdString();
+            ++changed;
+        }
+    }
+    EXPECT_GT(notes, 0);
+    EXPECT_GT(changed, 0) << "the tuning changed nothing it was given";
+    for (auto it = after.begin(); it != after.end(); ++it)  // in full, as before
+        EXPECT_TRUE(written.contains(it.key())) << "missing: " << it.key().toStdString();
+}
+
+// Issue 30 item 12: `tune auto --write-profile` dropped the profile's "source" and "comment"
+// notes (`calibrate` keeps them): it keeps every key it does not change.
+TEST(CliTuneModel, AutoKeepsTheNotesAndEveryKeyItDoesNotChange) {
+    QTemporaryDir dir;
+    const CliResult rail = runCli({QStringLiteral("profile"), QStringLiteral("rail")});
+    ASSERT_EQ(rail.exit, 0);
+    QJsonObject p = QJsonDocument::fromJson(rail.out.toUtf8()).object();
+    p[QStringLiteral("source")] = QStringLiteral("machine.md, the cell's drawings");
+    p[QStringLiteral("comment")] = QStringLiteral("the rail of cell 2");
+    auto note = [&](const char* section, const char* sub, const char* key, const char* text) {
+        QJsonObject s = p.value(QLatin1String(section)).toObject();
+        if (sub) {
+            QJsonObject t = s.value(QLatin1String(sub)).toObject();
+            t[QLatin1String(key)] = QLatin1String(text);
+            s[QLatin1String(sub)] = t;
+        } else {
+            s[QLatin1String(key)] = QLatin1String(text);
+        }
+        p[QLatin1String(section)] = s;
+    };
+    note("plant", nullptr, "source", "VARIMOT SD-2530 datasheet");
+    note("loop", nullptr, "comment", "engineered law since 2024");
+    note("loop", "engineered", "source", "tuned by hand on the rig");  // a section it changes
+    note("motion", nullptr, "comment", "rapid at 90 % of the plant's");
+    note("limits", "x", "source", "drawing 3");
+    const QString in = dir.filePath(QStringLiteral("noted.json"));
+    QFile f(in);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write(QJsonDocument(p).toJson());
+    f.close();
+    expectEveryKeyNotChangedKept(in, dir.filePath(QStringLiteral("tuned.json")), {});
+}
+
+TEST(CliTuneModel, AutoOnTheTableKeepsTheShippedNotes) {
+    QTemporaryDir dir;
+    expectEveryKeyNotChangedKept(QStringLiteral(TRILHO_MACHINES_DIR "/xy_dc_table.json"),
+                                 dir.filePath(QStringLiteral("tuned.json")),
+                                 {QStringLiteral("--axis"), QStringLiteral("y")});
 }
 
 bool isFifo(const QString& path) {

@@ -46,7 +46,7 @@ TEST(RefusalSummary, AtMostTotalPlusOneLinesAWindowAndTheCountIsExact) {
             ++linesThisWindow;
         }
     }
-    const QString last = summary.roll(t + limits.windowS);
+    const QString last = summary.roll(t + limits.windowS).value(0);
     if (!last.isEmpty()) counted += last.section(QLatin1Char(' '), 1, 1).toULongLong();
     worstWindow = std::max(worstWindow, linesThisWindow);
     EXPECT_LE(worstWindow, limits.total + 1);
@@ -61,12 +61,111 @@ TEST(RefusalSummary, AQuietClientIsShownWholeAndTheSummaryNamesTheLoudest) {
     const QStringList quiet =
         summary.note(QStringLiteral("10.0.0.2:1"), QStringLiteral("quiet"), 1.5);
     EXPECT_EQ(quiet, QStringList{QStringLiteral("quiet")});
-    const QString s = summary.roll(10.5);
+    const QString s = summary.roll(10.5).value(0);
     EXPECT_TRUE(
         s.startsWith(QStringLiteral("DNC: 1001 refused requests in the last 10 s from 2 "
                                     "client(s) (most: 10.0.0.1:1, 1000); 4 shown")))
         << s.toStdString();
     EXPECT_TRUE(summary.roll(30.0).isEmpty());  // a window with nothing
+}
+
+TEST(RefusalSummary, AcceptedWritesAreCountedAsAcceptedNeverAsRefused) {
+    // Issue 30 item 5: the accepted writes' summary said "5 refused requests".
+    dnc::RefusalSummary accepted{dnc::RefusalSummary::Limits{}, QStringLiteral("accepted writes")};
+    for (int k = 0; k < 5; ++k)
+        accepted.note(QStringLiteral("10.0.0.1:1"), QStringLiteral("accepted"), 0.1 * k);
+    const QStringList s = QStringList{} << accepted.roll(10.5);
+    ASSERT_EQ(s.size(), 1);
+    EXPECT_EQ(s.front(), QStringLiteral("DNC: 5 accepted writes in the last 10 s from 1 "
+                                        "client(s) (most: 10.0.0.1:1, 5); 3 shown"));
+}
+
+TEST(RefusalSummary, HeldBackChangesSayTheValueBeforeTheFirstAndAfterTheLast) {
+    dnc::RefusalSummary accepted{dnc::RefusalSummary::Limits{}, QStringLiteral("accepted writes")};
+    const QString c = QStringLiteral("10.0.0.1:1");
+    const QString feed = QStringLiteral("feed override"), where = QStringLiteral("holding 6-7");
+    for (int k = 0; k < 3; ++k)
+        EXPECT_EQ(accepted.noteChange(
+                      c, feed, where,
+                      {{QString(), QStringLiteral("100 %"), QStringLiteral("100 %")}}, 0.1 * k),
+                  QStringList{QStringLiteral("DNC: feed override 100 % (holding 6-7) set by "
+                                             "10.0.0.1:1")});
+    // Held back from here on.
+    EXPECT_TRUE(accepted
+                    .noteChange(c, feed, where,
+                                {{QString(), QStringLiteral("100 %"), QStringLiteral("50 %")}}, 1.0)
+                    .isEmpty());
+    EXPECT_TRUE(accepted
+                    .noteChange(c, feed, where,
+                                {{QString(), QStringLiteral("50 %"), QStringLiteral("25 %")}}, 2.0)
+                    .isEmpty());
+    EXPECT_TRUE(
+        accepted
+            .noteChange(QStringLiteral("10.0.0.2:1"), QStringLiteral("gains"),
+                        QStringLiteral("engineered law, holding 0-5"),
+                        {{QStringLiteral("kp"), QStringLiteral("1.2"), QStringLiteral("2")},
+                         {QStringLiteral("ki"), QStringLiteral("0.5"), QStringLiteral("0.5")}},
+                        3.0)
+            .size() == 1);  // its client's first: shown
+    EXPECT_TRUE(accepted.note(c, QStringLiteral("a command"), 4.0).isEmpty());
+    EXPECT_TRUE(accepted.roll(9.9).isEmpty());  // the window goes on
+    EXPECT_EQ(accepted.roll(10.5),
+              (QStringList{QStringLiteral("DNC: feed override 100 % -> 25 % (holding 6-7) set by "
+                                          "10.0.0.1:1 (2 writes held back in the last 10 s)"),
+                           QStringLiteral("DNC: 7 accepted writes in the last 10 s from 2 "
+                                          "client(s) (most: 10.0.0.1:1, 6); 4 shown")}));
+    EXPECT_TRUE(accepted.roll(30.0).isEmpty());
+}
+
+TEST(RefusalSummary, FlushWritesWhatTheWindowHoldsOnceAndTheNextRequestBeginsAWindow) {
+    dnc::RefusalSummary summary;
+    const QString c = QStringLiteral("10.0.0.1:1");
+    EXPECT_TRUE(summary.flush(0.0).isEmpty());  // nothing yet
+    for (int k = 0; k < 5; ++k)
+        summary.note(c, QStringLiteral("refused"), 1.0 + 0.1 * k);
+    EXPECT_EQ(summary.flush(3.0),
+              QStringList{QStringLiteral("DNC: 5 refused requests in the last 2 s from 1 "
+                                         "client(s) (most: 10.0.0.1:1, 5); 3 shown")});
+    EXPECT_TRUE(summary.flush(3.5).isEmpty());  // said once
+    // A new window: the client's lines are written whole again.
+    EXPECT_EQ(summary.note(c, QStringLiteral("again"), 4.0), QStringList{QStringLiteral("again")});
+    EXPECT_TRUE(summary.flush(4.0).isEmpty());  // nothing held back
+}
+
+TEST(RefusalSummary, ChangesAddAtMostOneLineASettingAWindow) {
+    std::mt19937 rng(30);
+    dnc::RefusalSummary summary{dnc::RefusalSummary::Limits{}, QStringLiteral("accepted writes")};
+    const auto& limits = summary.limits();
+    const QStringList subjects{QStringLiteral("gains"), QStringLiteral("feed override")};
+    double t = 0.0;
+    int window = 0, worst = 0;
+    std::uint64_t sent = 0, counted = 0;
+    auto take = [&](const QStringList& lines) {
+        for (const QString& l : lines) {
+            ++window;
+            if (l.contains(QStringLiteral("accepted writes in the last"))) {
+                counted += l.section(QLatin1Char(' '), 1, 1).toULongLong();
+                worst = std::max(worst, window);
+                window = 0;
+            }
+        }
+    };
+    // 60 s of 1..64 clients writing settings and commands at up to 10 kHz.
+    while (t < 60.0) {
+        t += std::uniform_real_distribution<double>(0.0, 1e-4)(rng);
+        const QString client = QStringLiteral("10.0.0.%1:502").arg(rng() % 64);
+        ++sent;
+        if (rng() % 3 == 0) {
+            take(summary.note(client, QStringLiteral("command"), t));
+        } else {
+            const QString v = QString::number(rng() % 150);
+            take(summary.noteChange(client, subjects[int(rng() % 2)], QStringLiteral("holding"),
+                                    {{QString(), v, v}}, t));
+        }
+    }
+    take(summary.flush(t));
+    EXPECT_LE(worst, limits.total + 1 + 2);  // + one line for each of the two settings
+    EXPECT_EQ(counted, sent);                // every window of this flood holds some back
 }
 
 TEST(LineWriter, AStreamNobodyReadsNeverBlocksTheWriterAndTheGapIsSaid) {

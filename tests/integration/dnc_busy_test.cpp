@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <QCoreApplication>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QModbusTcpServer>
 #include <QTemporaryDir>
@@ -93,12 +94,14 @@ struct Rig {
     }
 };
 
-TEST(DncBusy, AHoldTheQueueCannotTakeIsAnsweredBusyNeverApplied) {
+TEST(DncBusy, ACommandTheQueueCannotTakeIsAnsweredBusyNeverApplied) {
     int argc = 0;
     QCoreApplication app(argc, nullptr);
     Rig rig;
     rig.fillQueue();
-    ASSERT_FALSE(rig.command(Command::Hold, 0, 77).isException());
+    // An Acknowledge, which goes to the queue at rest (a Hold at rest has nothing to do and is
+    // answered so before the queue is asked: issue 30 item 11).
+    ASSERT_FALSE(rig.command(Command::Acknowledge, 0, 77).isException());
     EXPECT_EQ(rig.input(in::kCommandSeq), 77);
     EXPECT_EQ(rig.input(in::kCommandResult), static_cast<std::uint16_t>(CommandResult::Busy));
     EXPECT_TRUE(rig.history.filter(QStringLiteral("127.0.0.1:5020 refused")).size() == 1)
@@ -140,6 +143,78 @@ TEST(DncBusy, ASecondStartBeforeTheFirstReachedTheMachineIsBusy) {
         QCoreApplication::processEvents();
     }
     EXPECT_TRUE(running);
+    rig.worker.stopThread();
+}
+
+TEST(DncBusy, AWriteOnItsWayIsTheValueTheNextReplacesAndBuildsOn) {
+    // Issue 30 item 5 at the screens' worker, whose queue applies a write later: the next
+    // write's "before" was the machine's older value (100 % -> 60 % after a 50 %), and a kp
+    // written alone took ki and kd from the machine, undoing the ki and kd still on their way.
+    int argc = 0;
+    QCoreApplication app(argc, nullptr);
+    Rig rig;  // not started: every write waits in the queue
+    auto floats = [&rig](std::uint16_t at, std::initializer_list<float> values) {
+        std::vector<std::uint16_t> regs;
+        for (float v : values) {
+            const Words w = splitFloat(v);
+            regs.push_back(w.hi);
+            regs.push_back(w.lo);
+        }
+        return rig.write(at, regs);
+    };
+    ASSERT_FALSE(floats(hold::kFeedOverride, {0.5f}).isException());
+    ASSERT_FALSE(floats(hold::kFeedOverride, {0.25f}).isException());
+    ASSERT_FALSE(floats(hold::kKp, {2.0f, 1.0f, 0.03f}).isException());
+    ASSERT_FALSE(floats(hold::kKp, {1.5f}).isException());
+    rig.dnc->flushHistory();  // the fourth write of this client is held back
+    const QString said = rig.history.join(QLatin1Char('\n'));
+    EXPECT_TRUE(said.contains(QStringLiteral("DNC: feed override 50 % -> 25 % (holding 6-7)")))
+        << said.toStdString();
+    EXPECT_TRUE(said.contains(QStringLiteral("DNC: gains kp 2 -> 1.5, ki 1, kd 0.03 ")))
+        << said.toStdString();
+    // The machine ends with every value written, none undone by a later write.
+    rig.worker.start(false);
+    QElapsedTimer waited;
+    waited.start();
+    while (rig.worker.snapshot().gains.kp != double(1.5f) && waited.elapsed() < 20000)
+        QCoreApplication::processEvents();
+    const ControllerStatus s = rig.worker.snapshot();
+    EXPECT_EQ(s.gains.kp, double(1.5f));
+    EXPECT_EQ(s.gains.ki, double(1.0f));
+    EXPECT_EQ(s.gains.kd, double(0.03f));
+    EXPECT_EQ(s.feedOverride, double(0.25f));
+    rig.worker.stopThread();
+}
+
+TEST(DncBusy, AHoldBehindAStartStillHomingIsNothingToDoNeverApplied) {
+    // Issue 30 item 11: a Hold sent while a Start is on its way goes to the machine (the
+    // snapshot cannot say yet whether a program runs); what it did is looked at once applied.
+    int argc = 0;
+    QCoreApplication app(argc, nullptr);
+    Rig rig;  // not started: the Start (and the Automatic it needs) wait in the queue
+    ASSERT_FALSE(rig.command(Command::StartProgram, 42, 1).isException());
+    ASSERT_FALSE(rig.command(Command::Hold, 0, 2).isException());
+    rig.worker.start(false);
+    // Waited on the echo, with a deadline far past the servo period it needs.
+    QElapsedTimer waited;
+    waited.start();
+    bool echoed = false;
+    while (!echoed && waited.elapsed() < 20000) {
+        QCoreApplication::processEvents();
+        echoed = rig.input(in::kCommandSeq) == 2;
+    }
+    ASSERT_TRUE(echoed);
+    // From Manual the Start homes first: the Hold reached a homing rail, which it leaves be
+    // (or, on a machine too loaded for its servo period, a rail in alarm: held no more).
+    EXPECT_NE(rig.worker.snapshot().pause, PauseReason::Hold);
+    EXPECT_EQ(rig.input(in::kCommandResult), static_cast<std::uint16_t>(CommandResult::NothingToDo))
+        << rig.history.join(QLatin1Char('\n')).toStdString();
+    EXPECT_EQ(rig.history
+                  .filter(QStringLiteral("nothing to do: no program was running when it "
+                                         "reached the machine ("))
+                  .size(),
+              1)
+        << rig.history.join(QLatin1Char('\n')).toStdString();
     rig.worker.stopThread();
 }
 

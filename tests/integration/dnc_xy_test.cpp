@@ -139,5 +139,21 @@ TEST(DncXy, APlotterProgramStartedOverTheLinkShowsBothAxes) {
                            2, 50.0, 20.0);
 }
 
+TEST(DncXy, AHoldAtRestIsNothingToDoOnBothMachines) {
+    // Issue 30 item 11: never "applied" for a hold with nothing running.
+    for (const MachineProfile& profile :
+         {MachineProfile::xyDcTable(), MachineProfile::xyPlotter()}) {
+        int argc = 0;
+        QCoreApplication app(argc, nullptr);
+        Rig rig(profile, "G90\nG01 X60 Y40 F50\nM02\n");
+        ASSERT_FALSE(rig.write(hold::kCommand, {static_cast<std::uint16_t>(Command::Hold), 0, 9})
+                         .isException());
+        EXPECT_EQ(rig.input(in::kCommandSeq), 9);
+        EXPECT_EQ(rig.input(in::kCommandResult),
+                  static_cast<std::uint16_t>(CommandResult::NothingToDo))
+            << profile.name.toStdString();
+    }
+}
+
 }  // namespace
 }  // namespace trilho::dnc

@@ -673,6 +673,53 @@ TEST(CentreMark, CableSlipIsCorrectedThereAndSaid) {
     std::printf("cable slip: the centre mark corrected %.2f mm\n", e->value);
 }
 
+// Issue 30 item 9: a slip of 0.02 ended "Program finished !" 12.9 mm off, against the
+// document's "corrected by the centre mark". The count is on the drum: between two crossings of
+// the mark nothing tells a slip, so the bound is the slip fraction times the travel since the
+// platform last crossed the mark (here: since homing on it); at the next crossing the count is
+// corrected and said (warning 14, above). Seeded programs that never cross the mark again.
+TEST(CentreMark, ASlipBetweenCrossingsIsBoundedByTheTravelSinceTheMark) {
+    std::mt19937_64 rng(30009);
+    std::uniform_real_distribution<double> where(60.0, 1200.0);
+    std::uniform_int_distribution<int> moves(2, 8);
+    double worstFraction = 0.0, worstMm = 0.0;
+    int finished = 0, runs = 0;
+    for (double slip : {0.005, 0.01, 0.02}) {
+        for (int k = 0; k < 12; ++k) {
+            std::string text;
+            double at = 0.0, travel = 0.0;
+            const int n = moves(rng);
+            for (int i = 0; i < n; ++i) {
+                const double to = std::round(where(rng));
+                text += (i % 2 ? "G0 X" : "G1 F80 X") + std::to_string(static_cast<int>(to)) + "\n";
+                travel += std::abs(to - at);
+                at = to;
+            }
+            text += "M2\n";
+            test::ProgramRunSpec spec;
+            spec.seed = 100 + static_cast<std::uint64_t>(k);
+            spec.faults.slipFraction = slip;
+            const auto r = test::runProgram(compileText(text), spec);
+            ++runs;
+            ASSERT_TRUE(r.homed);
+            // Every target is 60 mm or more from the mark: it is left once, at the start.
+            if (!r.finished) continue;  // an alarm stopped it mid-way: another test's case
+            // The platform from its count, at most (each measured from the last target).
+            const double offMm = r.finalErrorMm + r.finalReadErrorMm;
+            EXPECT_LE(offMm, slip * travel + 2 * kCount)
+                << "slip " << slip << ", travel " << travel << " mm\n"
+                << text;
+            worstMm = std::max(worstMm, offMm);
+            worstFraction = std::max(worstFraction, offMm / (slip * travel));
+            ++finished;
+        }
+    }
+    std::printf(
+        "slip between crossings: %d of %d programs finished; at most %.2f mm off, %.2f of "
+        "the slip times the travel\n",
+        finished, runs, worstMm, worstFraction);
+}
+
 TEST(CentreMark, ACleanRunReportsNoCorrection) {
     test::ProgramRunSpec spec;
     const auto r = test::runProgram(compileText("G0 X1000\nG0 X-1000\nG0 X0\nM2\n"), spec);

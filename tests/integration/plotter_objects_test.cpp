@@ -31,6 +31,11 @@ struct ProgramRun {
     std::vector<std::size_t> objectSizes;  ///< MOVE and LINE packets of each object sent
     double seconds = 0.0;                  ///< Cycle start to the program's end
     std::uint64_t events = 0;              ///< step events the board sent its motors
+    bool endEvent = false;                 ///< "Program finished !" was said
+    AlarmCode alarm = AlarmCode::None;     ///< the last alarm raised
+    double alarmValue = 0.0;               ///< its figure
+    XyPoint head;                          ///< where the board's steps put the head, mm
+    XyPoint shown;                         ///< where the controller says the head is, mm
 };
 
 /// The packets the host sent, counted per object from the bytes on the wire.
@@ -59,6 +64,9 @@ ProgramRun runProgram(const std::string& text,
     test::VirtualWire down(57600), up(57600);
     WireCounter counter;
     double t = 0.0;
+    bool endEvent = false;
+    AlarmCode alarm = AlarmCode::None;
+    double alarmValue = 0.0;
     auto motion =
         std::make_unique<PlotterLinkMotion>(profile, [&](const std::vector<std::uint8_t>& bytes) {
             counter.take(bytes);
@@ -74,7 +82,10 @@ ProgramRun runProgram(const std::string& text,
         device.step(dt, t);
         up.send(device.takeOutput(), t);
         up.deliver(t, [&](std::uint8_t b, double) { link->onBytes(&b, 1); });
-        c.drainEvents([](const ControllerEvent&) {});
+        c.drainEvents([&](const ControllerEvent& e) {
+            if (e.kind == EventKind::ProgramEnd) endEvent = true;
+            if (e.kind == EventKind::AlarmRaised) alarm = e.alarm, alarmValue = e.value;
+        });
     };
     c.selectAutomatic();
     for (int i = 0; i < 600000 && c.status().state != ControllerState::AutoIdle; ++i)
@@ -90,7 +101,12 @@ ProgramRun runProgram(const std::string& text,
     for (int i = 0; i < 10000000; ++i) {
         step();
         const XyStatus& s = c.status();
-        if (s.state == ControllerState::Alarm) break;
+        if (s.state == ControllerState::Alarm) {
+            // What the board still does after the alarm (it plots the points it stored).
+            for (int j = 0; j < 5000; ++j)
+                step();
+            break;
+        }
         if (s.programFinished && s.state == ControllerState::AutoIdle) {
             r.finished = true;
             break;
@@ -104,6 +120,11 @@ ProgramRun runProgram(const std::string& text,
     r.objectSizes = counter.sizes;
     r.seconds = t - t0;
     r.events = device.motion().events() - events0;
+    r.endEvent = endEvent;
+    r.alarm = alarm;
+    r.alarmValue = alarmValue;
+    r.head = device.motion().toMm(device.motion().counted());
+    r.shown = {c.status().sample.x.positionMm, c.status().sample.y.positionMm};
     return r;
 }
 
@@ -274,4 +295,50 @@ TEST(PlotterObjects, Seed001_AnnexG_TheFloatLinePlotsFromTheProfile) {
     EXPECT_EQ(f.objects, b.objects);
     EXPECT_EQ(f.plotted, b.plotted);  // the same points; the steps between differ
     EXPECT_NEAR(static_cast<double>(f.events), static_cast<double>(b.events), 100.0);
+}
+
+// Issue 30 item 4: a point is two unsigned 16-bit step counts (seed 001 3.1.3.1). The host
+// clamped a target outside them (0 steps for x -20, 65535 for x 7000) and the run ended
+// "Program finished !" at -20 / 7000. The reader refuses such a profile; one built in code
+// still never has a target the wire cannot carry sent or reported: nothing is sent for it, the
+// run stops on alarm 11 at the wire's bound, and the head stays where the board put it.
+TEST(PlotterObjects, Issue30_ATargetTheWireCannotCarryIsNeverReportedReached) {
+    MachineProfile wide = MachineProfile::xyPlotter();
+    wide.limits.x = {-20.0, 7000.0};  // refused by the reader: 0..6553.5 mm on the wire
+    const ProgramRun below = runProgram("G00 X-20 Y10\nM02\n", wide);
+    EXPECT_FALSE(below.finished);
+    EXPECT_FALSE(below.endEvent);
+    EXPECT_EQ(below.alarm, AlarmCode::SoftLimitStop);
+    EXPECT_EQ(below.alarmValue, 0.0);  // the wire's lower bound on x, mm
+    EXPECT_EQ(below.plotted.size(), 0u);
+    EXPECT_NE(below.shown.x, -20.0);
+    const ProgramRun above = runProgram("G00 X100 Y10\nG01 X7000 Y10 F100\nM02\n", wide);
+    EXPECT_FALSE(above.finished);
+    EXPECT_FALSE(above.endEvent);
+    EXPECT_EQ(above.alarm, AlarmCode::SoftLimitStop);
+    EXPECT_DOUBLE_EQ(above.alarmValue, 6553.5);  // 65535 steps of 0.1 mm
+    EXPECT_NEAR(above.head.x, 100.0, 1e-9);      // the line to 7000 was never sent
+    EXPECT_NEAR(above.shown.x, 100.0, 1e-9);
+    std::printf("x -20: alarm %d at %g mm; x 7000: alarm %d at %g mm, head at x %g\n",
+                static_cast<int>(below.alarm), below.alarmValue, static_cast<int>(above.alarm),
+                above.alarmValue, above.head.x);
+}
+
+// Issue 30 item 4: the wire's steps count from the origin (plotter.originX/Y, the sensors'
+// corner, mm): the host subtracts it as the board adds it back, so the head ends where the
+// program said (the host sent mm / mmPerStep, and the board drew 10 mm short).
+TEST(PlotterObjects, Issue30_TheWiresStepsCountFromTheOrigin) {
+    MachineProfile p = MachineProfile::xyPlotter();
+    p.plotter.originX = -10.0;
+    p.plotter.originY = -5.0;
+    p.limits.x = {-10.0, 300.0};
+    p.limits.y = {-5.0, 200.0};
+    const ProgramRun r = runProgram("G00 X50 Y50\nG01 X60 Y50 F50\nM02\n", p);
+    ASSERT_TRUE(r.finished);
+    EXPECT_NEAR(r.head.x, 60.0, 1e-9);
+    EXPECT_NEAR(r.head.y, 50.0, 1e-9);
+    EXPECT_NEAR(r.shown.x, 60.0, 1e-9);
+    ASSERT_FALSE(r.plotted.empty());
+    EXPECT_EQ(r.plotted.back().x, 700);  // (60 + 10) / 0.1
+    EXPECT_EQ(r.plotted.back().y, 550);  // (50 + 5) / 0.1
 }

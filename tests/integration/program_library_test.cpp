@@ -21,7 +21,9 @@
 #include <random>
 
 #include "core/gcode/source_file.h"
+#include "host/dnc/folder_entry.h"
 #include "host/dnc/program_library.h"
+#include "tests/support/full_disk.h"
 
 namespace trilho::dnc {
 namespace {
@@ -457,6 +459,21 @@ TEST(ProgramLibraryProperty, ServesAndReplacesOnlyRegularFilesInside) {
                                                          QDir::System | QDir::NoDotAndDotDot))
             EXPECT_FALSE(name.startsWith(QLatin1Char('.'))) << name.toStdString();
     }
+}
+
+// Issue 30 item 1: a download onto a full disk keeps the program that was there and says so.
+TEST(ProgramLibraryFullDisk, ADownloadOnAFullDiskKeepsTheOldProgram) {
+    TRILHO_FULL_DISK(disk);
+    const QByteArray good("G00 X10\nM02\n");
+    QString error;
+    ASSERT_TRUE(replaceFolderEntry(disk.dir(), QStringLiteral("0007.G"), good, &error))
+        << error.toStdString();
+    ASSERT_TRUE(disk.fill());
+    EXPECT_FALSE(replaceFolderEntry(disk.dir(), QStringLiteral("0007.G"),
+                                    QByteArray(20000, ';') + "G00 X20\nM02\n", &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("No space left on device"))) << error.toStdString();
+    EXPECT_EQ(::trilho::test::FullDisk::read(disk.path(QStringLiteral("0007.G"))), good);
+    EXPECT_EQ(disk.entries(), QStringList{QStringLiteral("0007.G")});
 }
 
 }  // namespace

@@ -8,6 +8,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/gcode/compiler.h"
+#include "core/machine/table_link_motion.h"
+#include "core/machine/xy_controller.h"
 #include "core/protocol/table_host.h"
 #include "hal/emulator/table_firmware.h"
 #include "tests/support/virtual_serial_line.h"
@@ -185,8 +188,9 @@ TEST(TableLink, AJamCutsTheDrivesThenTheTableRunsAgain) {
     link.run(10.0);
     ASSERT_TRUE(link.host.failed());
     EXPECT_EQ(link.host.error(),
-              "the table cut its drives on the way to set point (200, 100) mm: over-current (a "
-              "jam or a collision?)");
+              "the table cut its drives on the way to set point (200, 100) mm: an over-current, "
+              "a following error, a move that never settled or its soft-limit guard (a CAN "
+              "does not say which)");
     EXPECT_EQ(link.device.stats().cut, 1u);
     std::printf("jam at 0.5 s: CAN at %.3f s (alarm %d behind it)\n", link.t,
                 static_cast<int>(link.device.stats().lastCut));
@@ -326,4 +330,54 @@ TEST(TableFirmware, XAndYSentSecondsApartAreOneSetPointAsOnTheSeedsPanel) {
     feed(next[2], next[3]);
     EXPECT_EQ(device.stats().staleBytes, 1u);
     EXPECT_EQ(device.stats().setPoints, 2u);
+}
+
+// Issue 30 item 4, on the table: its set points are unsigned whole millimetres (seed 004). A
+// profile whose soft limits reach below 0 let the compiler pass x -20, which the host could
+// not send: the move was skipped as if done, the run went on and, back where it was, ended
+// "Program finished !". Now nothing is sent for it and the run stops on alarm 11 at 0 mm.
+TEST(TableLink, ATargetTheWireCannotCarryStopsTheRunAndIsNeverSaidReached) {
+    MachineProfile p = MachineProfile::xyDcTable();
+    p.limits.x = {-20.0, 300.0};
+    TableFirmware device(p, 7);
+    test::VirtualWire down{9600}, up{9600};
+    double t = 0.0;
+    auto motion = std::make_unique<TableLinkMotion>(
+        p, [&](const std::vector<std::uint8_t>& bytes) { down.send(bytes, t); });
+    TableLinkMotion* link = motion.get();
+    XyController c(p, std::move(motion));
+    bool endEvent = false;
+    AlarmCode alarm = AlarmCode::None;
+    double alarmValue = -1.0;
+    auto step = [&] {
+        t += kDtS;
+        c.step(kDtS);
+        down.deliver(t, [&](std::uint8_t b, double at) { device.receive(b, at); });
+        device.step(kDtS, t);
+        up.send(device.takeOutput(), t);
+        up.deliver(t, [&](std::uint8_t b, double) { link->onBytes(&b, 1); });
+        c.drainEvents([&](const ControllerEvent& e) {
+            if (e.kind == EventKind::ProgramEnd) endEvent = true;
+            if (e.kind == EventKind::AlarmRaised) alarm = e.alarm, alarmValue = e.value;
+        });
+    };
+    c.selectAutomatic();
+    while (t < 30.0 && c.status().state != ControllerState::AutoIdle)
+        step();
+    ASSERT_EQ(c.status().state, ControllerState::AutoIdle);
+    CompileOptions o;
+    o.machine = p.limits;
+    auto program =
+        std::make_shared<Program>(compile("G00 X50 Y10\nG00 X-20 Y10\nG00 X50 Y10\nM02\n", o));
+    ASSERT_TRUE(program->ok());
+    ASSERT_TRUE(c.loadProgram(program));
+    ASSERT_TRUE(c.start(0));
+    const double end = t + 60.0;
+    while (t < end && !c.status().programFinished && c.status().state != ControllerState::Alarm)
+        step();
+    EXPECT_FALSE(c.status().programFinished);
+    EXPECT_FALSE(endEvent);
+    EXPECT_EQ(alarm, AlarmCode::SoftLimitStop);
+    EXPECT_EQ(alarmValue, 0.0);                            // the wire's lower bound, mm
+    EXPECT_NEAR(device.table().positionMm(0), 50.0, 1.0);  // it went to 50 and stayed
 }

@@ -107,6 +107,67 @@ TEST(TablePty, TheHostDrivesTrilhoDeviceTableUntilAck) {
         << summary.toStdString();
 }
 
+// Issue 30 item 7: the screens are killed mid-run (kill -9) and started again. The board goes
+// on with the set point it had: it reads nothing while it moves, so the new host's first check
+// is dropped and the first answer it hears is the ACK of the killed host's move, a set point
+// it never sent. It used to fail "the table left the program's path" at once; now it asks
+// again and learns where the board last went, (150, 150), and the run goes on from there.
+TEST(TablePty, AHostStartedWhileTheBoardFinishesAKilledHostsMoveGoesOn) {
+    Device device;
+    ASSERT_TRUE(device.start({QStringLiteral("table")})) << device.out.toStdString();
+    QElapsedTimer clock;
+    clock.start();
+    auto now = [&] { return static_cast<double>(clock.nsecsElapsed()) * 1e-9; };
+    {
+        // The first screens: the check, then (150, 150); killed once the set point is out.
+        SerialLine line;
+        QString error;
+        ASSERT_TRUE(line.open({device.path, 9600, false}, &error)) << error.toStdString();
+        TableHost host;
+        QObject::connect(&line, &SerialLine::received, [&](const QByteArray& bytes) {
+            for (char b : bytes)
+                host.receive(static_cast<std::uint8_t>(b), now());
+        });
+        ASSERT_TRUE(host.moveTo(150, 150));
+        ASSERT_TRUE(waitFor([&] { return line.bytesWritten() >= 8u; }, 10.0,
+                            [&] {
+                                host.poll(now());
+                                line.write(host.takeOutput());
+                            }));
+        QTest::qWait(50);  // the 4 bytes on their way (4 ms at 9600 bit/s)
+        line.close();      // killed: the board moves on alone
+    }
+    SerialLine line;
+    QString error;
+    ASSERT_TRUE(line.open({device.path, 9600, false}, &error)) << error.toStdString();
+    TableHost host;
+    QObject::connect(&line, &SerialLine::received, [&](const QByteArray& bytes) {
+        for (char b : bytes)
+            host.receive(static_cast<std::uint8_t>(b), now());
+    });
+    // The program resumed: its set point again (the board stands there: no new move).
+    ASSERT_TRUE(host.moveTo(150, 150));
+    const bool done = waitFor([&] { return host.idle() || host.failed(); }, 20.0,
+                              [&] {
+                                  host.poll(now());
+                                  line.write(host.takeOutput());
+                              });
+    ASSERT_TRUE(done) << "no end within 20 s";
+    ASSERT_TRUE(host.idle()) << host.error();
+    EXPECT_FALSE(host.offPath());
+    ASSERT_TRUE(host.reached());
+    EXPECT_EQ(host.reached()->x, 150);
+    EXPECT_EQ(host.reached()->y, 150);
+    line.close();
+    device.process.terminate();
+    ASSERT_TRUE(device.process.waitForFinished(5000));
+    const QString summary = QString::fromUtf8(device.process.readAllStandardOutput());
+    // The second host's first check came while the board moved (the case of this test).
+    EXPECT_TRUE(summary.contains(QRegularExpression(QStringLiteral("ignored while moving [1-9]"))))
+        << summary.toStdString();
+    EXPECT_TRUE(summary.contains(QStringLiteral("CAN 0"))) << summary.toStdString();
+}
+
 int main(int argc, char** argv) {
     QCoreApplication app(argc, argv);
     ::testing::InitGoogleTest(&argc, argv);

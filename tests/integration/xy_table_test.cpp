@@ -30,6 +30,9 @@ const Move kMoves[] = {{{0, 0}, {100, 50}}, {{100, 100}, {70, 180}}, {{0, 0}, {3
 /// rad short: 3 / 1.8 rad = 0.56 mm on X, 3 / 0.6 rad = 1.6 mm on Y (and the simulated
 /// friction varies by 10 %). Stated tolerance, mm (issue 22 item 6): 2 mm, 19 counts of X.
 constexpr double kSeedToleranceMm = 2.0;
+/// The seed law's soft-limit guard's stated bound (issue 30 item 6): how far past a soft limit
+/// the table may come to rest after the guard cut its drives, mm.
+constexpr double kSoftLimitOverrunMm = 1.0;
 
 XyMoveFigures runMove(const MachineProfile& profile, const Move& m) {
     XySessionMake made = makeXySession(profile, 1, m.from);
@@ -293,6 +296,98 @@ std::shared_ptr<const Program> compileFor(const MachineProfile& profile, const c
     return p;
 }
 
+/// A program run to its end or its first alarm on the simulated table, with the furthest the
+/// table went on each axis, mm.
+struct TableRun {
+    bool finished = false;
+    AlarmCode alarm = AlarmCode::None;
+    double alarmValue = 0.0;
+    double low[2] = {1e9, 1e9}, high[2] = {-1e9, -1e9};
+};
+
+TableRun runTableProgram(const MachineProfile& profile, const char* text, double maxS = 120.0,
+                         std::uint64_t seed = 1) {
+    XySessionMake made = makeXySession(profile, seed, {0, 0});
+    EXPECT_TRUE(made.session) << made.error;
+    TableRun r;
+    if (!made.session) return r;
+    XySession& s = *made.session;
+    XyController& c = s.controller();
+    c.selectAutomatic();
+    c.loadProgram(compileFor(profile, text));
+    c.start(0);
+    auto track = [&] {
+        for (int k = 0; k < 2; ++k) {
+            r.low[k] = std::min(r.low[k], s.plant().positionMm(k));
+            r.high[k] = std::max(r.high[k], s.plant().positionMm(k));
+        }
+        c.drainEvents([&](const ControllerEvent& e) {
+            if (e.kind == EventKind::AlarmRaised && r.alarm == AlarmCode::None)
+                r.alarm = e.alarm, r.alarmValue = e.value;
+        });
+        return c.status().programFinished || c.status().state == ControllerState::Alarm;
+    };
+    s.runUntil(track, maxS);
+    r.finished = c.status().programFinished;
+    s.runUntil([&] { return track(), false; }, 1.0);  // the table comes to rest after a cut
+    return r;
+}
+
+// Issue 30 item 6: seed 004's law, shipped as xy_dc_table_seed.json, acts on |e| with the
+// direction bit fixed for the move: on a return move the table, resting short of its last
+// target, is driven on away from its set point and ran to y -35 mm (x -31 mm), 35 mm past the
+// soft limit at 0, until the following-error cut. The law stays as written; a run-time guard
+// cuts both drives when the table's coast would carry it past a soft limit, and the alarm says
+// why. Each of these ran past 0 before (the figure in the comment).
+TEST(XyTableSeedLaw, ReturnMovesThatRunAwayStopAtTheSoftLimitSayingWhy) {
+    const ProfileLoad load =
+        loadMachineProfile(QStringLiteral(TRILHO_MACHINES_DIR "/xy_dc_table_seed.json"));
+    ASSERT_TRUE(load.profile) << load.error.toStdString();
+    const char* programs[] = {
+        "G00 X10 Y10\nG00 X0 Y0\nM02\n",       // y -35.0
+        "G00 X5 Y10\nG00 X0 Y0\nM02\n",        // x -30.6
+        "G00 X50 Y5\nG00 X0 Y0\nM02\n",        // y -35.7
+        "G00 X20 Y30\nG00 X0 Y0\nM02\n",       // y -13.2
+        "G00 X100 Y20\nG01 X0 Y0 F30\nM02\n",  // y -20.3
+    };
+    for (const char* text : programs) {
+        SCOPED_TRACE(text);
+        const TableRun r = runTableProgram(*load.profile, text);
+        std::printf("seed law, %-36s alarm %d at %g mm; lowest x %.3f y %.3f mm\n",
+                    QString::fromLatin1(text)
+                        .replace(QLatin1Char('\n'), QLatin1String("; "))
+                        .toStdString()
+                        .c_str(),
+                    static_cast<int>(r.alarm), r.alarmValue, r.low[0], r.low[1]);
+        EXPECT_FALSE(r.finished);
+        EXPECT_EQ(r.alarm, AlarmCode::SeedLawRunaway);
+        EXPECT_EQ(r.alarmValue, 0.0);  // the soft limit it was stopped at
+        for (int k = 0; k < 2; ++k)
+            EXPECT_GE(r.low[k], -kSoftLimitOverrunMm) << "axis " << k;
+    }
+    // Every return to the corner from a grid of points: stopped by the guard (22) or by the
+    // following-error cut first (3), never past the bound. Before: to -38.4 mm.
+    double lowest = 0.0;
+    int runaways = 0;
+    for (int a : {5, 10, 20, 30, 50, 100}) {
+        for (int b : {5, 10, 20, 30, 50, 100}) {
+            const std::string text =
+                "G00 X" + std::to_string(a) + " Y" + std::to_string(b) + "\nG00 X0 Y0\nM02\n";
+            SCOPED_TRACE(text);
+            const TableRun r = runTableProgram(*load.profile, text.c_str());
+            EXPECT_FALSE(r.finished);
+            EXPECT_TRUE(r.alarm == AlarmCode::SeedLawRunaway ||
+                        r.alarm == AlarmCode::FollowingError)
+                << static_cast<int>(r.alarm);
+            runaways += r.alarm == AlarmCode::SeedLawRunaway ? 1 : 0;
+            lowest = std::min({lowest, r.low[0], r.low[1]});
+        }
+    }
+    std::printf("seed law, 36 returns to (0, 0): %d stopped by the guard, lowest %.3f mm\n",
+                runaways, lowest);
+    EXPECT_GE(lowest, -kSoftLimitOverrunMm);
+}
+
 TEST(XyTableProgram, HoldStopsOnTheLineAndResumeReachesTheTarget) {
     const MachineProfile profile = MachineProfile::xyDcTable();
     XySessionMake made = makeXySession(profile, 1, {0, 0});
@@ -389,6 +484,62 @@ TEST(XyTableFaults, NoPayloadTheProfileAllowsReadsAsADeadEncoder) {
         }
     }
     std::printf("DC table, every payload: %d programs, %d finished\n", runs, finished);
+}
+
+/// A seeded program of 1 to 4 moves forwards on both axes (each coordinate 5 mm or more above
+/// the last, from the origin), the last onto a soft limit (300 mm) on one axis or both, at
+/// feeds F10-F100 or rapid.
+std::string forwardTableProgram(std::mt19937_64& rng) {
+    std::uniform_int_distribution<int> moves(1, 4), kind(0, 1), edge(0, 2);
+    std::uniform_real_distribution<double> feed(10.0, 100.0), share(0.1, 0.9);
+    std::ostringstream text;
+    text.setf(std::ios::fixed);
+    text.precision(1);
+    const int n = moves(rng);
+    double x = 0.0, y = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const bool last = i == n - 1;
+        const int e = edge(rng);
+        // Each step takes a share of what is left, so the next can still go forwards.
+        x = last && e != 1 ? 300.0 : x + 5.0 + (290.0 - x) * share(rng) / (n - i);
+        y = last && e != 0 ? 300.0 : y + 5.0 + (290.0 - y) * share(rng) / (n - i);
+        if (kind(rng))
+            text << "G01 X" << x << " Y" << y << " F" << feed(rng) << "\n";
+        else
+            text << "G00 X" << x << " Y" << y << "\n";
+    }
+    text << "M02\n";
+    return text.str();
+}
+
+// Issue 30 item 6: the seed law's soft-limit guard never stops a program that only goes
+// forwards onto the limits (its moves rest short of their targets, nothing runs away), and the
+// table never passes a limit.
+TEST(XyTableSoftLimits, TheSeedLawsGuardNeverStopsAMoveOntoTheLimits) {
+    const ProfileLoad load =
+        loadMachineProfile(QStringLiteral(TRILHO_MACHINES_DIR "/xy_dc_table_seed.json"));
+    ASSERT_TRUE(load.profile) << load.error.toStdString();
+    std::mt19937_64 rng(20300306);
+    int ended = 0;
+    double past = -1e9;
+    for (int prog = 0; prog < 40; ++prog) {
+        const std::string text = forwardTableProgram(rng);
+        SCOPED_TRACE(text);
+        const TableRun r = runTableProgram(*load.profile, text.c_str(), 120.0,
+                                           static_cast<std::uint64_t>(prog) + 1);
+        EXPECT_NE(r.alarm, AlarmCode::SoftLimitStop) << r.alarmValue;
+        EXPECT_NE(r.alarm, AlarmCode::SeedLawRunaway) << r.alarmValue;
+        // The seed's law rests short of its target: it ends on warning 13 or finished.
+        ended += r.finished ? 1 : 0;
+        for (int a = 0; a < 2; ++a)
+            past = std::max(past, r.high[a] - 300.0);
+    }
+    std::printf(
+        "seed law, 40 programs forwards onto the limits: %d ended, nearest the limit "
+        "%.3f mm (positive: past it)\n",
+        ended, past);
+    EXPECT_EQ(ended, 40);
+    EXPECT_LE(past, 0.0);
 }
 
 TEST(XyTableSoak, RandomProgramsStayOnTheLine) {

@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <QBuffer>
+#include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QSysInfo>
 #include <QTemporaryDir>
 #include <cstdio>
 #include <vector>
@@ -318,6 +320,260 @@ TEST(JournalExport, TheWholeHistoryIsExportedAcrossRotatedFiles) {
     ASSERT_EQ(rows.size(), 52);  // header, 50 entries, the empty piece after the last CRLF
     EXPECT_TRUE(rows[1].contains(",\"status\",0,"));
     EXPECT_TRUE(rows[50].contains(",\"status\",49,"));
+}
+
+}  // namespace
+}  // namespace trilho
+
+// ---- issue 30 item 8: one writer per journal --------------------------------------------------
+
+namespace trilho {
+namespace {
+
+// Two screens on one data folder used to interleave one history.log with nothing telling their
+// lines apart. The first keeps the file (a lock on history.log.lock); the second writes its own
+// beside it, history-PID.log, and never a line into the first one's.
+TEST(JournalLock, ASecondJournalOnTheSameFileWritesItsOwn) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("history.log"));
+    Journal first, second;
+    ASSERT_TRUE(first.open(path));
+    QString error;
+    ASSERT_TRUE(second.open(path, &error)) << error.toStdString();
+    EXPECT_EQ(first.path().toStdString(), path.toStdString());
+    const QString own = dir.filePath(QStringLiteral("history-%1.log").arg(::getpid()));
+    EXPECT_EQ(second.path().toStdString(), own.toStdString());
+    // It is told who keeps the file (the screens say it).
+    EXPECT_TRUE(second.opening().heldByAnother);
+    EXPECT_EQ(second.opening().holderPid, ::getpid());
+    EXPECT_EQ(second.opening().holderHost.toStdString(), QSysInfo::machineHostName().toStdString());
+    EXPECT_EQ(second.opening().path.toStdString(), own.toStdString());
+    EXPECT_FALSE(first.opening().heldByAnother);
+    ASSERT_TRUE(first.append(entry(1)));
+    ASSERT_TRUE(second.append(entry(2)));
+    ASSERT_TRUE(first.append(entry(3)));
+    ASSERT_TRUE(second.append(entry(4), 0));
+    EXPECT_EQ(codesOf(Journal::read(path)), (std::vector<int>{1, 3}));
+    EXPECT_EQ(codesOf(Journal::read(own)), (std::vector<int>{2, 4}));
+}
+
+// The lock goes with close(): the next journal opened on the file keeps it.
+TEST(JournalLock, TheFileIsFreeAgainAfterClose) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("history-xy_dc_table.log"));
+    {
+        Journal first;
+        ASSERT_TRUE(first.open(path));
+        Journal second;
+        ASSERT_TRUE(second.open(path));
+        EXPECT_EQ(second.path().toStdString(),
+                  dir.filePath(QStringLiteral("history-xy_dc_table-%1.log").arg(::getpid()))
+                      .toStdString());
+    }
+    Journal third;
+    ASSERT_TRUE(third.open(path));
+    EXPECT_EQ(third.path().toStdString(), path.toStdString());
+}
+
+// A lock file whose text is not "pid<TAB>host" (written over by something else) still keeps
+// the second journal off the file; the holder is then not named (pid 0).
+TEST(JournalLock, AGarbledLockFileStillLocksAndNamesNoOne) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("history.log"));
+    Journal first;
+    ASSERT_TRUE(first.open(path));
+    {
+        QFile lock(path + QStringLiteral(".lock"));
+        ASSERT_TRUE(lock.open(QIODevice::WriteOnly));
+        lock.write(QByteArray(4096, '\xff'));
+    }
+    Journal second;
+    ASSERT_TRUE(second.open(path));
+    EXPECT_TRUE(second.opening().heldByAnother);
+    EXPECT_EQ(second.opening().holderPid, 0);
+    EXPECT_NE(second.path(), path);
+}
+
+// Opening and closing again and again leaves no descriptor behind (the lock's and the file's).
+TEST(JournalLock, ReopeningLeaksNoDescriptor) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("history.log"));
+    auto openFds = [] {
+        return QDir(QStringLiteral("/proc/self/fd")).entryList(QDir::Files | QDir::System).size();
+    };
+    Journal j;
+    ASSERT_TRUE(j.open(path));
+    j.close();
+    const auto before = openFds();
+    for (int i = 0; i < 500; ++i) {
+        ASSERT_TRUE(j.open(path));
+        ASSERT_TRUE(j.markStart(QStringLiteral("pid 1")));
+    }
+    j.close();
+    EXPECT_EQ(openFds(), before);
+    // Each open closed the one before: 500 starts, 500 stops, in pairs.
+    const QList<JournalEntry> all = Journal::read(path);
+    ASSERT_EQ(all.size(), 1000);
+    EXPECT_EQ(all.last().kind.toStdString(), "stop");
+    EXPECT_FALSE(j.opening().stoppedWithoutMark);
+}
+
+TEST(JournalLock, OwnPathIsBeforeTheLogSuffix) {
+    EXPECT_EQ(Journal::ownPath(QStringLiteral("/d/history.log"), 42).toStdString(),
+              "/d/history-42.log");
+    EXPECT_EQ(Journal::ownPath(QStringLiteral("/d/history-xy_plotter.log"), 7).toStdString(),
+              "/d/history-xy_plotter-7.log");
+    EXPECT_EQ(Journal::ownPath(QStringLiteral("/d/journal"), 42).toStdString(), "/d/journal-42");
+}
+
+// A third journal of the same process on a held file whose own file is held too: refused with
+// both names, nothing written anywhere.
+TEST(JournalLock, WhenTheOwnFileIsHeldTooItIsAClearError) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("history.log"));
+    Journal first, second, third;
+    ASSERT_TRUE(first.open(path));
+    ASSERT_TRUE(second.open(path));
+    QString error;
+    EXPECT_FALSE(third.open(path, &error));
+    EXPECT_FALSE(third.isOpen());
+    EXPECT_NE(error.indexOf(QStringLiteral("kept by another journal")), -1) << error.toStdString();
+    EXPECT_NE(error.indexOf(second.path()), -1) << error.toStdString();
+}
+
+// A lock file that cannot be made (here a folder in its place) is a clear error naming it.
+TEST(JournalLock, ALockFileThatCannotBeMadeIsAClearError) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("history.log"));
+    ASSERT_TRUE(QDir().mkdir(path + QStringLiteral(".lock")));
+    Journal j;
+    QString error;
+    EXPECT_FALSE(j.open(path, &error));
+    EXPECT_TRUE(error.startsWith(QStringLiteral("cannot open journal '%1'").arg(path)))
+        << error.toStdString();
+    EXPECT_NE(error.indexOf(QStringLiteral("history.log.lock")), -1) << error.toStdString();
+    EXPECT_FALSE(j.health().ok);
+}
+
+}  // namespace
+}  // namespace trilho
+
+// ---- issue 30 item 7: the screens' start and stop marks ---------------------------------------
+
+namespace trilho {
+namespace {
+
+QByteArray line(const char* when, const char* kind, const QByteArray& text) {
+    return QByteArray(when) + '\t' + kind + "\t0\t" + text + '\n';
+}
+
+// markStart() writes a start mark, close() the stop mark; a journal whose last mark is a start
+// (the session killed: here a copy taken while it ran) says so at the next open, naming when
+// that session started.
+TEST(JournalMarks, AStartWithoutItsStopIsFoundAtTheNextOpen) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("history.log"));
+    const QString killed = dir.filePath(QStringLiteral("killed.log"));
+    QDateTime started;
+    {
+        Journal j;
+        ASSERT_TRUE(j.open(path));
+        EXPECT_FALSE(j.opening().stoppedWithoutMark);  // a new file
+        ASSERT_TRUE(j.markStart(QStringLiteral("pid 4242 on bench")));
+        ASSERT_TRUE(j.append(status(1), 0));
+        ASSERT_TRUE(j.sync());
+        ASSERT_TRUE(QFile::copy(path, killed));  // what a kill -9 leaves
+        started = Journal::read(path).first().when;
+    }
+    const QList<JournalEntry> closed = Journal::read(path);
+    ASSERT_EQ(closed.size(), 3);
+    EXPECT_EQ(closed[0].kind.toStdString(), "start");
+    EXPECT_EQ(closed[0].text.toStdString(), "screens started: pid 4242 on bench");
+    EXPECT_EQ(closed[2].kind.toStdString(), "stop");
+    EXPECT_EQ(closed[2].text.toStdString(), "screens stopped: pid 4242 on bench");
+    {
+        Journal j;  // after a clean close: nothing to say
+        ASSERT_TRUE(j.open(path));
+        EXPECT_FALSE(j.opening().stoppedWithoutMark);
+    }
+    Journal j;
+    ASSERT_TRUE(j.open(killed));
+    EXPECT_TRUE(j.opening().stoppedWithoutMark);
+    EXPECT_EQ(j.opening().lastStart, started);
+    EXPECT_EQ(j.opening().lastStartText.toStdString(), "screens started: pid 4242 on bench");
+}
+
+// A journal opened and closed without markStart() (a tool reading and appending) writes no
+// stop mark: only sessions that marked their start end with a stop.
+TEST(JournalMarks, NoStopWithoutAStart) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("history.log"));
+    {
+        Journal j;
+        ASSERT_TRUE(j.open(path));
+        ASSERT_TRUE(j.append(status(1)));
+    }
+    EXPECT_EQ(codesOf(Journal::read(path)), std::vector<int>{1});
+    EXPECT_FALSE(Journal::lastMark(path).has_value());
+}
+
+// The last mark is found behind megabytes of later lines, across chunk borders, an overlong
+// line and a torn tail, and in a rotated file when the session wrote past the rotation.
+TEST(JournalMarks, TheLastMarkIsFoundBehindLaterLinesAndRotations) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("history.log"));
+    {
+        QFile f(path);
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+        f.write(line("2026-03-01T08:00:00.000Z", "start", "screens started: pid 1"));
+        f.write(line("2026-03-01T08:30:00.000Z", "stop", "screens stopped: pid 1"));
+        f.write(line("2026-03-01T09:15:00.000Z", "start", "screens started: pid 2"));
+        for (int i = 0; i < 30000; ++i)  // about 2 MB: 32 chunks
+            f.write(line("2026-03-01T09:16:00.000Z", "status", "0010: Posicionamento para x=1."));
+        f.write(QByteArray(200 * 1024, 'x') + '\n');  // overlong: skipped
+        f.write(line("2026-03-01T09:17:00.000Z", "status", "last"));
+        f.write("2026-03-01T09:18:00.000Z\tstop\t0\tscreens sto");  // torn: no stop
+    }
+    auto mark = Journal::lastMark(path);
+    ASSERT_TRUE(mark.has_value());
+    EXPECT_EQ(mark->kind.toStdString(), "start");
+    EXPECT_EQ(mark->text.toStdString(), "screens started: pid 2");
+
+    // The first line of a file is read too; a file of one torn line has no mark.
+    const QString one = dir.filePath(QStringLiteral("one.log"));
+    {
+        QFile f(one);
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+        f.write(line("2026-03-01T08:00:00.000Z", "stop", "screens stopped: pid 1"));
+    }
+    mark = Journal::lastMark(one);
+    ASSERT_TRUE(mark.has_value());
+    EXPECT_EQ(mark->kind.toStdString(), "stop");
+    const QString torn = dir.filePath(QStringLiteral("torn.log"));
+    {
+        QFile f(torn);
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+        f.write("2026-03-01T08:00:00.000Z\tstart\t0\tscreens started: pid 1");
+    }
+    EXPECT_FALSE(Journal::lastMark(torn).has_value());
+
+    // Rotated: the start is in history.log.2 while the session still runs.
+    const QString rotating = dir.filePath(QStringLiteral("rotating.log"));
+    JournalPolicy policy;
+    policy.maxFileBytes = 2000;
+    Journal j(policy);
+    ASSERT_TRUE(j.open(rotating));
+    ASSERT_TRUE(j.markStart(QStringLiteral("pid 3")));
+    for (int i = 0; i < 60; ++i)
+        ASSERT_TRUE(j.append(status(i), 0));
+    ASSERT_TRUE(QFile::exists(rotating + QStringLiteral(".2")));
+    mark = Journal::lastMark(rotating);
+    ASSERT_TRUE(mark.has_value());
+    EXPECT_EQ(mark->text.toStdString(), "screens started: pid 3");
+    j.close();
+    mark = Journal::lastMark(rotating);
+    ASSERT_TRUE(mark.has_value());
+    EXPECT_EQ(mark->kind.toStdString(), "stop");
 }
 
 }  // namespace

@@ -4,6 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QMap>
 #include <QTemporaryDir>
 #include <string>
 
@@ -145,6 +149,106 @@ TEST(MachineProfileStrict, SourceAndCommentStringsAreAllowedAnywhere) {
     EXPECT_EQ(load.profile->limits.x.softMinMm, -100.0);
 }
 
+namespace {
+
+/// Every leaf of o by its dotted path ("loop.engineered.kp").
+void leaves(const QJsonObject& o, const QString& prefix, QMap<QString, QJsonValue>& into) {
+    for (auto it = o.begin(); it != o.end(); ++it) {
+        const QString path = prefix.isEmpty() ? it.key() : prefix + QLatin1Char('.') + it.key();
+        if (it.value().isObject())
+            leaves(it.value().toObject(), path, into);
+        else
+            into.insert(path, it.value());
+    }
+}
+
+QMap<QString, QJsonValue> leavesOf(const QByteArray& json) {
+    QMap<QString, QJsonValue> out;
+    leaves(QJsonDocument::fromJson(json).object(), QString(), out);
+    return out;
+}
+
+std::string shown(const QJsonValue& v) {
+    return QJsonDocument(QJsonArray{v}).toJson(QJsonDocument::Compact).toStdString();
+}
+
+}  // namespace
+
+// Issue 30 item 12: `tune auto --write-profile` wrote the tuned profile without the notes of
+// the one it read ("source", "comment"; `calibrate` keeps them). A profile read from JSON is
+// written back with every key of that JSON it does not change, notes included, and in full.
+TEST(MachineProfile, WritingBackKeepsTheNotesAndEveryKeyNotChanged) {
+    const QByteArray original = R"({"source": "the cell's drawings", "comment": "c",
+        "name": "rail-2",
+        "plant": {"source": "datasheet", "gearRatio": 5},
+        "loop": {"comment": "law chosen 2024", "samplePeriodS": 0.0010,
+                 "engineered": {"source": "tuned by hand", "kp": 1.5, "ki": 0.5}},
+        "limits": {"x": {"source": "drawing 3", "softMinMm": -100}}})";
+    const ProfileLoad load = machineProfileFromJson(original, QStringLiteral("t.json"));
+    ASSERT_TRUE(load.profile) << load.error.toStdString();
+    MachineProfile tuned = *load.profile;
+    tuned.loop.engineered.kp = 2.25;  // what a tuning changes
+    tuned.motion.accelerationMmS2 = 2000.0;
+    const QByteArray written = machineProfileToJson(tuned);
+    const QMap<QString, QJsonValue> before = leavesOf(original), after = leavesOf(written);
+    for (auto it = before.begin(); it != before.end(); ++it) {
+        if (it.key() == QLatin1String("loop.engineered.kp")) continue;
+        EXPECT_EQ(after.value(it.key()), it.value())
+            << it.key().toStdString() << ": " << shown(after.value(it.key())) << " written for "
+            << shown(it.value());
+    }
+    EXPECT_EQ(after.value(QStringLiteral("loop.engineered.kp")), QJsonValue(2.25));
+    EXPECT_EQ(after.value(QStringLiteral("motion.accelerationMmS2")), QJsonValue(2000.0));
+    // In full: every key of the plain profile is there.
+    const QMap<QString, QJsonValue> plain = leavesOf(machineProfileToJson(MachineProfile::rail()));
+    for (auto it = plain.begin(); it != plain.end(); ++it)
+        EXPECT_TRUE(after.contains(it.key())) << it.key().toStdString();
+    // It reads back as the tuned profile, and writes back the same bytes.
+    const ProfileLoad again = machineProfileFromJson(written, QStringLiteral("w.json"));
+    ASSERT_TRUE(again.profile) << again.error.toStdString();
+    EXPECT_EQ(again.profile->loop.engineered.kp, 2.25);
+    EXPECT_EQ(again.profile->plant.gearRatio, 5.0);
+    EXPECT_EQ(machineProfileToJson(*again.profile), written);
+    // A profile made in code has no notes to keep.
+    EXPECT_FALSE(machineProfileToJson(MachineProfile::rail()).contains("\"source\""));
+}
+
+TEST(MachineProfile, TheShippedTablesNotesAreWrittenBack) {
+    QFile f(QStringLiteral(TRILHO_RESOURCES_DIR "/machines/xy_dc_table.json"));
+    ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+    const QByteArray original = f.readAll();
+    const ProfileLoad load = machineProfileFromJson(original, QStringLiteral("xy_dc_table.json"));
+    ASSERT_TRUE(load.profile) << load.error.toStdString();
+    const QMap<QString, QJsonValue> before = leavesOf(original);
+    const QMap<QString, QJsonValue> after = leavesOf(machineProfileToJson(*load.profile));
+    int notes = 0;
+    for (auto it = before.begin(); it != before.end(); ++it) {
+        EXPECT_EQ(after.value(it.key()), it.value())
+            << it.key().toStdString() << ": " << shown(after.value(it.key())) << " written for "
+            << shown(it.value());
+        notes += it.key().endsWith(QLatin1String("source")) ||
+                 it.key().endsWith(QLatin1String("comment"));
+    }
+    EXPECT_GE(notes, 9);
+}
+
+// A profile whose kind was changed after it was read keeps none of the old kind's keys: what is
+// written is a profile of its new kind that reads back.
+TEST(MachineProfile, AProfileOfAnotherKindNowWritesNoKeyOfTheOld) {
+    const ProfileLoad load = machineProfileFromJson(R"({"source": "s", "plant": {"gearRatio": 5}})",
+                                                    QStringLiteral("t.json"));
+    ASSERT_TRUE(load.profile) << load.error.toStdString();
+    MachineProfile other = *load.profile;
+    const MachineProfile table = MachineProfile::xyDcTable();
+    other.kind = table.kind;
+    other.limits = table.limits;
+    other.motion = table.motion;
+    other.dcTable = table.dcTable;
+    const ProfileLoad again =
+        machineProfileFromJson(machineProfileToJson(other), QStringLiteral("w.json"));
+    EXPECT_TRUE(again.profile) << again.error.toStdString();
+}
+
 TEST(MachineProfileStrict, FiguresThatContradictEachOtherAreErrors) {
     EXPECT_EQ(loadError(R"({"limits": {"y": {"softMinMm": 300, "softMaxMm": 0}}})"),
               "rail.json: limits.y: softMinMm must be below softMaxMm (got 300 and 0)");
@@ -260,6 +364,57 @@ TEST(MachineProfileStrict, SeedTableProfileCarriesTheSeedsPlant) {
     // tau = Kd / Kp of the seed's gains: Kd = -b1 T, Kp = b0 + b1.
     EXPECT_NEAR(-t.x.classic.b1 * 0.005 / (t.x.classic.b0 + t.x.classic.b1), 0.05, 1e-4);
     EXPECT_NEAR(-t.y.classic.b1 * 0.005 / (t.y.classic.b0 + t.y.classic.b1), 0.03, 1e-4);
+}
+
+// Issue 30 item 4: the plotter's wire carries unsigned 16-bit step counts from the origin
+// (seed 001 3.1.3.1): 0..65535 steps an axis. A profile whose soft limits reach outside was
+// accepted, and the host then sent 0 steps for x -20 and 65535 for x 7000 and ended "Program
+// finished !" there. Such a profile is refused, naming the key, its value and the range.
+TEST(MachineProfileStrict, PlotterSoftLimitsMustFitTheWiresSixteenBitSteps) {
+    auto error = [](const char* limits, const char* plotter = "") {
+        const std::string json = std::string(R"({"kind": "xy-plotter", "limits": )") + limits +
+                                 (*plotter ? std::string(R"(, "plotter": )") + plotter : "") + "}";
+        return machineProfileFromJson(QByteArray::fromStdString(json), QStringLiteral("p.json"))
+            .error.toStdString();
+    };
+    EXPECT_EQ(error(R"({"x": {"softMinMm": -20}})"),
+              "p.json: limits.x.softMinMm: the plotter's wire carries 0 to 65535 steps from the "
+              "origin (16 bits); with plotter.originX 0 and plotter.mmPerStepX 0.1 that is 0 to "
+              "6553.5 mm (got -20, -200 steps)");
+    EXPECT_EQ(error(R"({"x": {"softMaxMm": 7000}})"),
+              "p.json: limits.x.softMaxMm: the plotter's wire carries 0 to 65535 steps from the "
+              "origin (16 bits); with plotter.originX 0 and plotter.mmPerStepX 0.1 that is 0 to "
+              "6553.5 mm (got 7000, 70000 steps)");
+    EXPECT_EQ(error(R"({"y": {"softMinMm": -0.1, "softMaxMm": 210}})"),
+              "p.json: limits.y.softMinMm: the plotter's wire carries 0 to 65535 steps from the "
+              "origin (16 bits); with plotter.originY 0 and plotter.mmPerStepY 0.1 that is 0 to "
+              "6553.5 mm (got -0.1, -1 steps)");
+    // Through the steps a millimetre and the origin: a finer step shrinks the range...
+    EXPECT_EQ(error(R"({"x": {"softMaxMm": 300}})", R"({"mmPerStepX": 0.001})"),
+              "p.json: limits.x.softMaxMm: the plotter's wire carries 0 to 65535 steps from the "
+              "origin (16 bits); with plotter.originX 0 and plotter.mmPerStepX 0.001 that is 0 "
+              "to 65.535 mm (got 300, 300000 steps)");
+    // ... and an origin off the corner moves it.
+    EXPECT_EQ(error(R"({"x": {"softMinMm": -20, "softMaxMm": 300}})", R"({"originX": -20})"), "");
+    EXPECT_EQ(error(R"({"x": {"softMinMm": 0, "softMaxMm": 300}})", R"({"originX": 10})"),
+              "p.json: limits.x.softMinMm: the plotter's wire carries 0 to 65535 steps from the "
+              "origin (16 bits); with plotter.originX 10 and plotter.mmPerStepX 0.1 that is 10 "
+              "to 6563.5 mm (got 0, -100 steps)");
+    // Every run starts at (0, 0) mm: the wire must carry it as well.
+    EXPECT_EQ(error(R"({"x": {"softMinMm": 10, "softMaxMm": 300}})", R"({"originX": 10})"),
+              "p.json: plotter.originX: every run starts at x 0 mm, which the wire carries only "
+              "with the origin at 0 mm or below, within 65535 steps: with plotter.mmPerStepX 0.1 "
+              "that is -6553.5 to 0 mm (got 10)");
+    // The edges: what rounds to a step the wire carries is carried (the host sends the
+    // nearest step).
+    EXPECT_EQ(error(R"({"x": {"softMinMm": 0, "softMaxMm": 6553.5}})"), "");
+    EXPECT_EQ(error(R"({"x": {"softMinMm": -0.04, "softMaxMm": 6553.54}})"), "");
+    EXPECT_NE(error(R"({"x": {"softMaxMm": 6553.56}})").find("(got 6553.56, 65536 steps)"),
+              std::string::npos);
+    // The shipped profile fits.
+    const ProfileLoad shipped =
+        loadMachineProfile(QStringLiteral(TRILHO_RESOURCES_DIR "/machines/xy_plotter.json"));
+    EXPECT_TRUE(shipped.profile) << shipped.error.toStdString();
 }
 
 TEST(MachineProfileStrict, OnlyRegularFilesOfAtMostOneMegabyteAreRead) {

@@ -9,6 +9,8 @@
 #include <QTemporaryDir>
 
 #include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <cmath>
 #include <string>
 #include <tuple>
@@ -151,6 +153,14 @@ TEST(RunRecord, BadFilesAreRefusedWithFileLineColumnAndValue) {
         {QByteArray("t_s\0x", 5), "b.csv:1:1: binary data"},
         {"t_s,setpoint_mm,position_mm,saturated\n0,0,0,2\n",
          "b.csv:2:7: saturated: must be 0 or 1 (got '2')"},
+        // Found by the run reader's fuzz target (issue 30): a block number no int holds was
+        // converted to one (undefined behaviour).
+        {"t_s,block_n,setpoint_mm,position_mm\n0,1e50,0,0\n",
+         "b.csv:2:3: block_n: must be a whole number from -2147483648 to 2147483647 (got "
+         "'1e50')"},
+        {"t_s,block_n,setpoint_mm,position_mm\n0,2.5,0,0\n",
+         "b.csv:2:3: block_n: must be a whole number from -2147483648 to 2147483647 (got "
+         "'2.5')"},
     };
     for (const Case& c : cases) {
         const RunLoad l = runRecordFromCsv(c.csv, QStringLiteral("b.csv"));
@@ -158,6 +168,223 @@ TEST(RunRecord, BadFilesAreRefusedWithFileLineColumnAndValue) {
         EXPECT_TRUE(l.error.startsWith(QLatin1String(c.expected)))
             << "got: " << l.error.toStdString() << "\nexpected: " << c.expected;
     }
+}
+
+// Issue 30 item 10: a header that names a column twice was read with whichever came last; it is
+// refused with the line, the column of the second name and both fields.
+TEST(RunRecord, AColumnNamedTwiceIsRefusedWithItsPlace) {
+    struct Case {
+        QByteArray csv;
+        char axis;
+        const char* expected;
+    };
+    const Case cases[] = {
+        {"t_s,setpoint_mm,position_mm,position_mm\n0,0,0,5\n0.1,1,0.5,9\n", 0,
+         "b.csv:1:29: column 'position_mm' is given twice in the header (fields 3 and 4)"},
+        {"t_s,setpoint_mm,t_s,position_mm\n0,0,1,0\n0.1,1,2,0.5\n", 0,
+         "b.csv:1:17: column 't_s' is given twice in the header (fields 1 and 3)"},
+        // Any name, known or not, and whichever axis is chosen.
+        {"t_s,note,setpoint_mm,position_mm,note\n0,a,0,0,b\n", 0,
+         "b.csv:1:34: column 'note' is given twice in the header (fields 2 and 5)"},
+        {"t_s,x_setpoint_mm,x_position_mm,y_setpoint_mm,y_position_mm,y_position_mm\n"
+         "0,0,0,0,0,0\n",
+         'x', "b.csv:1:61: column 'y_position_mm' is given twice in the header (fields 5 and 6)"},
+    };
+    for (const Case& c : cases) {
+        const RunLoad l = runRecordFromCsv(c.csv, QStringLiteral("b.csv"), c.axis);
+        EXPECT_FALSE(l.record) << c.expected;
+        EXPECT_TRUE(l.error.startsWith(QLatin1String(c.expected)))
+            << "got: " << l.error.toStdString() << "\nexpected: " << c.expected;
+    }
+    // Empty names (a trailing comma) name nothing: not refused for that.
+    const RunLoad ok =
+        runRecordFromCsv("t_s,setpoint_mm,position_mm,,\n0,0,0,,\n", QStringLiteral("b.csv"));
+    EXPECT_TRUE(ok.record) << ok.error.toStdString();
+}
+
+namespace {
+
+void writeFile(const QString& path, const QByteArray& bytes) {
+    QFile f(path);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly | QIODevice::Truncate)) << path.toStdString();
+    ASSERT_EQ(f.write(bytes), bytes.size());
+}
+
+QJsonObject readJson(const QString& path) {
+    QFile f(path);
+    EXPECT_TRUE(f.open(QIODevice::ReadOnly)) << path.toStdString();
+    return QJsonDocument::fromJson(f.readAll()).object();
+}
+
+}  // namespace
+
+// Issue 30 item 10: a sidecar that describes another run (its period, its row count, its
+// machine or axis against the trace's columns) was trusted and the trace measured with it
+// (exit 0). Refused, naming the trace's line and column, the sidecar's key and both values.
+TEST(RunRecord, ASidecarThatContradictsItsTraceIsRefused) {
+    QTemporaryDir dir;
+    const QString csv = dir.filePath(QStringLiteral("r.csv"));
+    const QString side = runSidecarPath(csv);
+    QString error;
+    ASSERT_TRUE(saveRunRecord(sampleRecord(), csv, nullptr, &error)) << error.toStdString();
+    const QJsonObject good = readJson(side);
+    ASSERT_TRUE(loadRunRecord(csv).record);  // as written: accepted
+    struct Case {
+        const char* key;
+        QJsonValue value;
+        QString expected;  ///< the start of the error
+        QString contains;  ///< and a part of it
+    };
+    const Case cases[] = {
+        // The trace's rows are 10 ms apart.
+        {"period_s", 0.001, csv + QStringLiteral(":3:1: t_s: no two rows closer than 0.01 s"),
+         side + QStringLiteral(": period_s: 0.001")},
+        {"period_s", 0.1, csv + QStringLiteral(":3:1: t_s: rows 0.01 s apart (the median step)"),
+         side + QStringLiteral(": period_s: 0.1")},
+        // 300 rows; fewer rows than the sidecar counts is a cut trace, more is another run.
+        {"rows", 200, csv + QStringLiteral(":202:1: 300 rows (row 201 here)"),
+         side + QStringLiteral(": rows: 200")},
+        // The sidecar against itself: its kind, its machine's name and its counts per mm are
+        // those of its profile; the rail has one axis.
+        {"kind",
+         QStringLiteral("xy-dc-table"),
+         side + QStringLiteral(": kind: \"xy-dc-table\", but its profile is of kind \"rail\""),
+         {}},
+        {"machine",
+         QStringLiteral("xy-dc-table"),
+         side + QStringLiteral(": machine: \"xy-dc-table\", but its profile is named \"rail\""),
+         {}},
+        {"axis",
+         QStringLiteral("y"),
+         side + QStringLiteral(": axis: \"y\", but its profile is a rail (one axis)"),
+         {}},
+        {"counts_per_mm",
+         30.0,
+         side + QStringLiteral(": counts_per_mm: 30, but its profile's encoder gives 22.8"),
+         {}},
+    };
+    for (const Case& c : cases) {
+        QJsonObject o = good;
+        o[QLatin1String(c.key)] = c.value;
+        writeFile(side, QJsonDocument(o).toJson());
+        const RunLoad l = loadRunRecord(csv);
+        EXPECT_FALSE(l.record) << c.key;
+        EXPECT_TRUE(l.error.startsWith(c.expected))
+            << "got: " << l.error.toStdString() << "\nexpected: " << c.expected.toStdString();
+        EXPECT_TRUE(l.error.contains(c.contains))
+            << "got: " << l.error.toStdString() << "\nnot in it: " << c.contains.toStdString();
+    }
+    // Fewer rows than the sidecar counts: a trace cut short, read (tune metrics says so).
+    QJsonObject more = good;
+    more[QStringLiteral("rows")] = 400;
+    writeFile(side, QJsonDocument(more).toJson());
+    EXPECT_TRUE(loadRunRecord(csv).record);
+    // A key given twice: QJsonDocument keeps one without a word; refused with both places.
+    QByteArray twice = QJsonDocument(good).toJson();
+    twice.replace("\"period_s\": 0.01,", "\"period_s\": 0.01,\n    \"period_s\": 0.001,");
+    ASSERT_TRUE(twice.contains("0.001"));
+    writeFile(side, twice);
+    RunLoad l = loadRunRecord(csv);
+    EXPECT_FALSE(l.record);
+    EXPECT_TRUE(
+        l.error.startsWith(side + QStringLiteral(": period_s: the key is given twice, at ")))
+        << l.error.toStdString();
+}
+
+// The machine against the trace's columns: a trace of two axes is a run of an XY machine
+// (`run --trace`, no axis); a trace of one axis is the rail's, or a step of one table axis.
+TEST(RunRecord, ASidecarOfAnotherMachineIsRefusedAtTheHeader) {
+    QTemporaryDir dir;
+    const QString csv = dir.filePath(QStringLiteral("xy.csv"));
+    const QString side = runSidecarPath(csv);
+    const QByteArray xy =
+        "t_s,block_n,x_setpoint_mm,x_position_mm,y_setpoint_mm,y_position_mm,x_drive,y_drive,pen\n"
+        "0.0050,1,0.0000,0.0000,5.0000,5.0000,0.000,0.000,\n"
+        "0.0100,1,1.0000,0.5000,6.0000,5.2500,10.000,-3.000,\n";
+    writeFile(csv, xy);
+    RunConditions table;
+    table.profile = MachineProfile::xyDcTable();
+    table.periodS = table.profile.dcTable.samplePeriodS;
+    const DcAxisParams& a = table.profile.dcTable.x;
+    table.countsPerMm = 2.0 * 3.14159265358979323846 / (a.mmPerTurn * a.radPerCount);
+    table.rows = 2;
+    writeFile(side, runConditionsToJson(table, nullptr));
+    RunLoad l = loadRunRecord(csv, 'x');
+    ASSERT_TRUE(l.record) << l.error.toStdString();  // a table's run: both axes, no axis
+    // The rail's sidecar beside it.
+    RunConditions rail;
+    rail.periodS = 0.005;
+    rail.rows = 2;
+    writeFile(side, runConditionsToJson(rail, nullptr));
+    l = loadRunRecord(csv, 'x');
+    EXPECT_FALSE(l.record);
+    EXPECT_TRUE(
+        l.error.startsWith(csv + QStringLiteral(":1:13: x_setpoint_mm: a trace of two axes, but ") +
+                           side + QStringLiteral(": kind: \"rail\" (one axis)")))
+        << l.error.toStdString();
+    // A step test of one table axis beside it.
+    RunConditions step = table;
+    step.axis = 'x';
+    writeFile(side, runConditionsToJson(step, nullptr));
+    l = loadRunRecord(csv, 'y');
+    EXPECT_FALSE(l.record);
+    EXPECT_TRUE(
+        l.error.startsWith(csv + QStringLiteral(":1:13: x_setpoint_mm: a trace of two axes, but ") +
+                           side + QStringLiteral(": axis: \"x\" (a test of one axis)")))
+        << l.error.toStdString();
+    // The table's run beside a trace of one axis.
+    writeFile(csv, "t_s,setpoint_mm,position_mm\n0.0050,0.0000,0.0000\n0.0100,1.0000,0.5000\n");
+    writeFile(side, runConditionsToJson(table, nullptr));
+    l = loadRunRecord(csv);
+    EXPECT_FALSE(l.record);
+    EXPECT_TRUE(l.error.startsWith(
+        csv + QStringLiteral(":1:5: setpoint_mm: a trace of one axis, but ") + side +
+        QStringLiteral(": axis: null on a \"xy-dc-table\" (a run of both axes)")))
+        << l.error.toStdString();
+    writeFile(side, runConditionsToJson(step, nullptr));  // its step of one axis: accepted
+    l = loadRunRecord(csv);
+    EXPECT_TRUE(l.record) << l.error.toStdString();
+}
+
+// Late periods (`run --tick-jitter`) lengthen the trace's steps: the sidecar records them, and
+// a trace whose every step is late is no contradiction of its period.
+TEST(RunRecord, LatePeriodsTheSidecarRecordsAreNoContradiction) {
+    QTemporaryDir dir;
+    const QString csv = dir.filePath(QStringLiteral("late.csv"));
+    QByteArray text = "t_s,setpoint_mm,position_mm\n";
+    for (int k = 0; k < 50; ++k)
+        text += QByteArray::number(0.001 + k * 0.0042, 'f', 4) + ",0,0\n";  // every step late
+    writeFile(csv, text);
+    RunConditions c;
+    c.periodS = 0.001;
+    c.rows = 50;
+    writeFile(runSidecarPath(csv), runConditionsToJson(c, nullptr));
+    RunLoad l = loadRunRecord(csv);
+    EXPECT_FALSE(l.record);
+    EXPECT_TRUE(l.error.startsWith(csv + QStringLiteral(":3:1: t_s: no two rows closer than")))
+        << l.error.toStdString();
+    // Each period lengthened by up to 4 ms (`run --tick-jitter 4`), as its sidecar says.
+    QJsonObject o = QJsonDocument::fromJson(runConditionsToJson(c, nullptr)).object();
+    o[QStringLiteral("tick_jitter_ms")] = 4.0;
+    o[QStringLiteral("jitter_rate")] = 1.0;
+    writeFile(runSidecarPath(csv), QJsonDocument(o).toJson());
+    l = loadRunRecord(csv);
+    EXPECT_TRUE(l.record) << l.error.toStdString();
+}
+
+// The workbench saves a trace it read without a sidecar (its conditions unknown) with one: the
+// period that sidecar gives is the one the rows show, so the pair reads back.
+TEST(RunRecord, ABareTraceSavedWithASidecarReadsBack) {
+    QTemporaryDir dir;
+    RunRecord bare = sampleRecord();  // 10 ms rows
+    bare.hasConditions = false;
+    bare.conditions = RunConditions{};  // the defaults: 1 ms
+    const QString csv = dir.filePath(QStringLiteral("bare.csv"));
+    QString error;
+    ASSERT_TRUE(saveRunRecord(bare, csv, nullptr, &error)) << error.toStdString();
+    const RunLoad l = loadRunRecord(csv);
+    ASSERT_TRUE(l.record) << l.error.toStdString();
+    EXPECT_EQ(l.record->conditions.periodS, 0.01);
 }
 
 TEST(RunRecord, BadSidecarsAndNonFilesAreRefused) {

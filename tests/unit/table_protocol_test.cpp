@@ -205,8 +205,9 @@ TEST(TableHost, CanFailsOverCurrentAndForgetsWhereTheTableIs) {
     run(host, table, 30.0);
     ASSERT_TRUE(host.failed());
     EXPECT_EQ(host.error(),
-              "the table cut its drives on the way to set point (200, 100) mm: over-current (a "
-              "jam or a collision?)");
+              "the table cut its drives on the way to set point (200, 100) mm: an over-current, "
+              "a following error, a move that never settled or its soft-limit guard (a CAN "
+              "does not say which)");
     EXPECT_FALSE(host.reached());
     host.poll(100.0);  // failed: nothing is sent, nothing times out
     EXPECT_TRUE(host.takeOutput().empty());
@@ -516,4 +517,109 @@ TEST(TableHost, NoAnswerToTheCountRequestFailsNamingTheFirstSetPoint) {
               "tries: is it connected and on?");
     EXPECT_FALSE(host.offPath());
     EXPECT_EQ(host.queued(), 1u);  // nothing was sent of the program
+}
+
+// Issue 30 item 7: the screens were killed mid-run, and the board goes on with the set point it
+// had (it reads no byte while it moves). The new host's first check is dropped; the first
+// answer it hears is the board's ACK of that earlier move, which names a set point this host
+// never sent. That is no detour of this host's program (it has sent none): the board finishing
+// what it was given before. The host asks again at once and takes the count and the set point
+// the board last started from the check's answer; the run then goes on.
+TEST(TableHost, AMoveTheBoardFinishesFromBeforeTheHostIsNoDetour) {
+    TableHost host;
+    ASSERT_TRUE(host.moveTo(150, 150));
+    host.poll(0.0);
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{255, 255, 255, 255}));
+    // The killed host's move ends: ACK of (150, 150) from (0, 0), the board's first move.
+    answerWith(host, kAck, 150, 150, 0.8, 0, 0, 1);
+    EXPECT_FALSE(host.failed()) << host.error();
+    EXPECT_FALSE(host.offPath());
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{255, 255, 255, 255}));  // at once
+    answerWith(host, kNak, 65535, 65535, 0.85, 150, 150, 1);
+    // The board stands at (150, 150): the set point is no new move, and is answered so.
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 150, 0, 150}));
+    answerWith(host, kAck, 150, 150, 0.9, 150, 150, 1);
+    EXPECT_TRUE(host.idle()) << host.error();
+    EXPECT_EQ(host.stats().countRequests, 1u);
+}
+
+// Once this host has sent a set point, an ACK of one it never sent is still the table off the
+// program's path (the rule above is for the board's own past only).
+TEST(TableHost, AfterTheFirstSetPointAForeignAckIsStillOffThePath) {
+    TableHost host;
+    ASSERT_TRUE(host.moveTo(20, 40));
+    host.poll(0.0);
+    (void)host.takeOutput();
+    answerWith(host, kNak, 65535, 65535, 0.1, 0, 0, 0);
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 20, 0, 40}));
+    host.clear();  // Stop: the count is asked again before the next set point
+    ASSERT_TRUE(host.moveTo(30, 40));
+    host.poll(0.2);
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{255, 255, 255, 255}));
+    answerWith(host, kAck, 90, 90, 0.3, 20, 40, 2);  // a set point never sent ran
+    EXPECT_TRUE(host.failed());
+    EXPECT_TRUE(host.offPath());
+}
+
+// Issue 30 item 7: at connect the host asks the board where it last went. The protocol has no
+// position query; the check's answer names the set point the board last started, and the
+// board answers at rest only. The question is no work: the host stays idle meanwhile, and a
+// set point queued meanwhile goes after it without a second check.
+TEST(TableHost, AskWhereSendsTheCheckAloneAndReportsTheLastSetPoint) {
+    TableHost host;
+    host.askWhere();
+    EXPECT_TRUE(host.idle());
+    host.poll(0.0);
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{255, 255, 255, 255}));
+    EXPECT_TRUE(host.idle());  // only the question in flight
+    EXPECT_FALSE(host.boardReport().has_value());
+    ASSERT_TRUE(host.moveTo(150, 150));
+    EXPECT_FALSE(host.idle());
+    host.poll(0.05);
+    EXPECT_TRUE(host.takeOutput().empty());  // after the check's answer
+    answerWith(host, kNak, 65535, 65535, 0.1, 150, 150, 3);
+    ASSERT_TRUE(host.boardReport().has_value());
+    EXPECT_EQ(host.boardReport()->lastStarted.x, 150);
+    EXPECT_EQ(host.boardReport()->lastStarted.y, 150);
+    EXPECT_EQ(host.boardReport()->moves, 3);
+    EXPECT_FALSE(host.boardReport()->cut);
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{0, 150, 0, 150}));
+    answerWith(host, kAck, 150, 150, 0.2, 150, 150, 3);  // stands there: no new move
+    EXPECT_TRUE(host.idle()) << host.error();
+    EXPECT_EQ(host.stats().countRequests, 1u);
+}
+
+// The board was cut (CAN) on the way to its last set point before this host asked: the check's
+// answer still names that set point, but the table does not stand there, and the report says so.
+TEST(TableHost, AskWhereAfterAnEarlierCutReportsIt) {
+    TableHost host;
+    host.askWhere();
+    host.poll(0.0);
+    (void)host.takeOutput();
+    answerWith(host, kCan, 200, 100, 0.5, 0, 0, 1);  // the killed host's move, cut
+    EXPECT_FALSE(host.failed()) << host.error();
+    EXPECT_EQ(host.stats().earlier, 1u);
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{255, 255, 255, 255}));
+    answerWith(host, kNak, 65535, 65535, 0.6, 200, 100, 1);
+    ASSERT_TRUE(host.boardReport().has_value());
+    EXPECT_TRUE(host.boardReport()->cut);
+    EXPECT_EQ(host.boardReport()->lastStarted.x, 200);
+    EXPECT_TRUE(host.idle());
+}
+
+TEST(TableHost, NoAnswerToAskWhereFailsSayingSo) {
+    TableHost host;
+    ScriptedTable table{silent, {}, {}};
+    host.askWhere();
+    for (double t = 0.0; t < 60.0 && !host.failed(); t += 0.01) {
+        host.poll(t);
+        table.feed(host, t);
+    }
+    ASSERT_TRUE(host.failed());
+    EXPECT_EQ(host.error(),
+              "no answer from the table to the check asking where it last went after 4 tries: is "
+              "it connected and on?");
+    host.retry();  // asked again
+    host.poll(61.0);
+    EXPECT_EQ(host.takeOutput(), (std::vector<std::uint8_t>{255, 255, 255, 255}));
 }

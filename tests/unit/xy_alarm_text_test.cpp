@@ -34,7 +34,8 @@ const Language kLanguages[] = {
 // The alarms a DC table raises about its motion or its drives: each names the table and an axis.
 const AlarmCode kTableAlarms[] = {AlarmCode::FollowingError,    AlarmCode::SoftLimitStop,
                                   AlarmCode::InPositionTimeout, AlarmCode::FinalPositionOff,
-                                  AlarmCode::EncoderStalled,    AlarmCode::OverCurrent};
+                                  AlarmCode::EncoderStalled,    AlarmCode::OverCurrent,
+                                  AlarmCode::SeedLawRunaway};
 
 TEST(XyAlarmTexts, NameTheTableNeverTheRailInEveryLanguage) {
     ensureApp();
@@ -70,6 +71,25 @@ TEST(XyAlarmTexts, NameTheTableNeverTheRailInEveryLanguage) {
             // Both axes by name: "x or y", "x ou y", "x o y".
             static const QRegularExpression axes(QStringLiteral("\\bx (or|ou|o) y\\b"));
             EXPECT_TRUE(text.contains(axes)) << l.lang << ": " << text.toStdString();
+        }
+    }
+    installLanguage(QStringLiteral("en"));
+}
+
+// Issue 30 item 6: the soft-limit guard's alarm under seed 004's law says why the table got
+// there (the law's |e|, the direction fixed for the move) and where it was stopped.
+TEST(XyAlarmTexts, TheSeedLawsRunawayNamesTheLawAndTheLimit) {
+    ensureApp();
+    for (const Language& l : kLanguages) {
+        ASSERT_TRUE(installLanguage(QString::fromLatin1(l.lang))) << l.lang;
+        for (const QString& text : {xyAlarmText(AlarmCode::SeedLawRunaway, 0.0),
+                                    alarmText(AlarmCode::SeedLawRunaway, 0.0)}) {
+            EXPECT_TRUE(text.contains(QLatin1String("004")))
+                << l.lang << ": " << text.toStdString();
+            EXPECT_TRUE(text.contains(QLatin1String("|e|")))
+                << l.lang << ": " << text.toStdString();
+            EXPECT_TRUE(text.contains(QLatin1String(" 0 mm")))
+                << l.lang << ": " << text.toStdString();
         }
     }
     installLanguage(QStringLiteral("en"));

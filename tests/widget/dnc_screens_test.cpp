@@ -109,6 +109,13 @@ class DncScreensTest : public QObject {
         std::unique_ptr<QModbusReply> r(client_->sendWriteRequest(unit, 1));
         return r;
     }
+    QString historyText() {
+        QTableWidget* t = window_->history()->table();
+        QStringList lines;
+        for (int r = 0; r < t->rowCount(); ++r)
+            if (t->item(r, 3)) lines << t->item(r, 3)->text();
+        return lines.join(QLatin1Char('\n'));
+    }
     bool historyHas(const QString& text) {
         QTableWidget* t = window_->history()->table();
         for (int r = 0; r < t->rowCount(); ++r)
@@ -233,7 +240,8 @@ class DncScreensTest : public QObject {
         // whoever set it, the accepted write is a history line naming the client, and Ctrl+0
         // then brings the machine back to 100 %.
         QTRY_COMPARE_WITH_TIMEOUT(window_->runControls()->overrideSlider()->value(), 50, 5000);
-        QVERIFY(historyHas(QStringLiteral("DNC: feed override 50 % set by ")));
+        QVERIFY(
+            historyHas(QStringLiteral("DNC: feed override 100 % -> 50 % (holding 6-7) set by ")));
         window_->runControls()->overrideResetAction()->trigger();
         QTRY_COMPARE_WITH_TIMEOUT(link_->status().feedOverride, 1.0, 5000);
         QCOMPARE(window_->runControls()->overrideSlider()->value(), 100);
@@ -245,6 +253,55 @@ class DncScreensTest : public QObject {
         QVERIFY(finished(again.get()));
         QCOMPARE(again->error(), QModbusDevice::ProtocolError);
         QCOMPARE(link_->status().feedOverride, 1.0);
+    }
+
+    /// Remote on and four overrides, the last one `last`: past the three a client has written
+    /// whole in the accepted writes' window, so the summary holds it back.
+    void fourOverrides(float last) {
+        window_->remoteAction()->trigger();
+        QVERIFY(window_->dncLink()->remote());
+        for (float f : {0.5f, 0.6f, 0.7f, last}) {
+            auto r = writeFeed(f);
+            QVERIFY(finished(r.get()));
+            QCOMPARE(r->error(), QModbusDevice::NoError);
+        }
+        QTRY_COMPARE_WITH_TIMEOUT(float(link_->status().feedOverride), last, 5000);
+    }
+
+    void writesHeldBackReachTheHistoryWhenTheLinkStopsAndAtExit() {
+        // Issue 30 item 5: the summary's last window was lost when the link stopped.
+        const QString journal = dir_.filePath(QStringLiteral("held_back.log"));
+        QFile::remove(journal);
+        QString error;
+        QVERIFY2(link_->openJournal(journal, &error), qPrintable(error));
+        quint16 port = freePort();
+        bool ok = false;
+        DncDialog* d = serve(QStringLiteral("127.0.0.1"), QString::number(port), &ok);
+        QVERIFY(ok);
+        connectClient(port);
+        fourOverrides(0.25f);
+        // Stopped from the dialog: the held write is said with its values first.
+        d->enabledBox()->setChecked(false);
+        QVERIFY(d->apply());
+        QVERIFY(
+            historyHas(QStringLiteral("DNC: feed override 70 % -> 25 % (holding 6-7) set by "
+                                      "127.0.0.1:")));
+        QVERIFY(historyHas(QStringLiteral("DNC: 4 accepted writes in the last ")));
+        QVERIFY(!historyHas(QStringLiteral("refused requests")));
+        // Served again, and the screens closed with a write held back: in the journal.
+        port = freePort();
+        d = serve(QStringLiteral("127.0.0.1"), QString::number(port), &ok);
+        QVERIFY(ok);
+        connectClient(port);
+        fourOverrides(0.3f);
+        client_.reset();
+        window_.reset();
+        QFile f(journal);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray text = f.readAll();
+        QVERIFY2(text.contains("DNC: feed override 70 % -> 30 % (holding 6-7) set by 127.0.0.1:"),
+                 text.right(1200).constData());
+        QVERIFY2(text.contains("DNC: stopped"), text.constData());
     }
 
     void theSupervisorRunsAProgramByNumberOnTheScreensController() {

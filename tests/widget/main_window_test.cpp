@@ -4,6 +4,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QFileInfo>
 #include <QGroupBox>
 #include <QLineEdit>
 #include <QListView>
@@ -542,6 +543,77 @@ class MainWindowTest : public QObject {
         QVERIFY(!error.isEmpty());
         window_->reportJournalProblem(error);
         QVERIFY(window_->nextStepText().contains(QStringLiteral("history could not be written")));
+    }
+
+    // Issue 30 item 7: the journal marks when the screens started and when they stopped
+    // cleanly, naming the process.
+    void theJournalMarksTheScreensStartAndStop() {
+        const QString path = dir_.filePath(QStringLiteral("marks.log"));
+        auto readAll = [&] {
+            QFile f(path);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        };
+        {
+            MachineLink link(MachineProfile::rail());
+            QString error;
+            QVERIFY2(link.openJournal(path, &error), qPrintable(error));
+            MainWindow w(link, *settings_);
+            const QByteArray started = readAll();
+            QVERIFY2(started.contains("\tstart\t"), started.constData());
+            QVERIFY2(
+                started.contains("pid " + QByteArray::number(QCoreApplication::applicationPid())),
+                started.constData());
+            QVERIFY(!started.contains("\tstop\t"));
+        }
+        const QList<QByteArray> lines = readAll().trimmed().split('\n');
+        QVERIFY2(lines.last().contains("\tstop\t"), lines.last().constData());
+    }
+
+    // Issue 30 item 7: the screens killed (kill -9) leave a start mark with no stop after it;
+    // the next start says so, naming when they last started, on screen and in the history.
+    void aJournalLeftWithoutItsStopMarkIsSaidAtStart() {
+        const QString path = dir_.filePath(QStringLiteral("killed.log"));
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(
+                "2026-03-01T09:15:00.000Z\tstart\t0\tscreens started: pid 4242 on bench, "
+                "trilho 0.9.0\n"
+                "2026-03-01T09:20:00.000Z\tstatus\t0\tAutomatic mode selected\n");
+        }
+        MachineLink link(MachineProfile::rail());
+        QString error;
+        QVERIFY2(link.openJournal(path, &error), qPrintable(error));
+        MainWindow w(link, *settings_);
+        QStringList shown;
+        for (int i = 0; i < w.panel()->statusList()->count(); ++i)
+            shown << w.panel()->statusList()->itemText(i);
+        const QString said = shown.join(QLatin1Char('\n'));
+        QVERIFY2(said.contains(QStringLiteral("without their end mark")), qPrintable(said));
+        QVERIFY2(said.contains(QStringLiteral("2026-03-01 09:15")), qPrintable(said));
+        QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral("without their end mark")),
+                 qPrintable(w.statusBar()->currentMessage()));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray text = f.readAll();
+        QVERIFY2(text.contains("without their end mark"), text.constData());
+    }
+
+    // Issue 30 item 8: two screens on one data folder: the second does not write into the
+    // first one's history.log; it writes its own, and says so.
+    void aSecondScreenWritesItsOwnHistoryAndSaysSo() {
+        const QString path = dir_.filePath(QStringLiteral("history.log"));
+        MachineLink first(MachineProfile::rail());
+        QVERIFY(first.openJournal(path, nullptr));
+        MachineLink second(MachineProfile::rail());
+        QString error;
+        QVERIFY2(second.openJournal(path, &error), qPrintable(error));
+        QCOMPARE(first.journalPath(), path);
+        QVERIFY(second.journalPath() != path);
+        MainWindow w(second, *settings_);
+        const QString said = w.statusBar()->currentMessage();
+        QVERIFY2(said.contains(QStringLiteral("kept by another trilho")), qPrintable(said));
+        QVERIFY2(said.contains(QFileInfo(second.journalPath()).fileName()), qPrintable(said));
     }
 
     void aFifoIsRefusedNotWaitedOn() {

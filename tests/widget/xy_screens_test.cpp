@@ -35,8 +35,11 @@
 #include "core/dnc/register_map.h"
 #include "core/gcode/compiler.h"
 #include "core/machine/machine_profile.h"
+#include "core/protocol/table_host.h"
+#include "hal/serial/serial_line.h"
 #include "host/dnc/dnc_server.h"
 #include "host/dnc/modbus_tcp_listener.h"
+#include "host/session/xy_device_session.h"
 #include "host/session/xy_session_runnable.h"
 #include "ui/dnc_dialog.h"
 #include "ui/dnc_link.h"
@@ -80,6 +83,38 @@ bool advanceUntil(XyLink& link, F done, double maxS) {
         link.advance(0.05);
     }
     return done();
+}
+
+/// A journal the screens left killed: a start mark, a line, and no stop mark.
+void writeKilledJournal(const QString& path) {
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly)) qFatal("cannot write %s", qPrintable(path));
+    f.write(
+        "2026-03-01T09:15:00.000Z\tstart\t0\tscreens started: pid 4242 on bench, trilho "
+        "0.9.0\n"
+        "2026-03-01T09:20:00.000Z\tstatus\t0\tProgram started\n");
+}
+
+/// Every line of the screen's history, one a line.
+QString historyText(const XyMainWindow& w) {
+    QStringList lines;
+    for (int i = 0; i < w.history()->count(); ++i)
+        lines << w.history()->item(i)->text();
+    return lines.join(QLatin1Char('\n'));
+}
+
+/// Starts trilho-device (table or plotter) and returns the terminal it serves; empty if none.
+QString startDevice(QProcess& device, const QString& board) {
+    device.start(QStringLiteral(TRILHO_DEVICE), {board});
+    QString said;
+    const QRegularExpression re(QStringLiteral(" on (\\S+) at "));
+    QElapsedTimer waited;
+    waited.start();
+    while (!re.match(said).hasMatch() && waited.elapsed() < 10000) {
+        device.waitForReadyRead(100);
+        said += QString::fromUtf8(device.readAllStandardOutput());
+    }
+    return re.match(said).captured(1);
 }
 }  // namespace
 
@@ -221,6 +256,167 @@ class XyScreensTest : public QObject {
         QVERIFY(f.open(QIODevice::ReadOnly));
         const QByteArray text = f.readAll();
         QVERIFY2(text.contains("\talarm\t9\t"), text.constData());
+    }
+
+    // Issue 30 item 7: the XY screens mark their start and their clean stop in the journal.
+    void xyJournalMarksTheScreensStartAndStop() {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        const QString path = dir.filePath(QStringLiteral("history-xy_plotter.log"));
+        auto readAll = [&] {
+            QFile f(path);
+            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        };
+        {
+            auto link = virtualLink(shipped("xy_plotter.json"));
+            XyMainWindow w(*link, settings);
+            QVERIFY(w.openJournal(path));
+            const QByteArray started = readAll();
+            QVERIFY2(started.contains("\tstart\t"), started.constData());
+            QVERIFY2(
+                started.contains("pid " + QByteArray::number(QCoreApplication::applicationPid())),
+                started.constData());
+            QVERIFY(!started.contains("\tstop\t"));
+        }
+        const QList<QByteArray> lines = readAll().trimmed().split('\n');
+        QVERIFY2(lines.last().contains("\tstop\t"), lines.last().constData());
+    }
+
+    // Issue 30 item 7: a journal whose last mark is a start with no stop (the screens killed)
+    // is said at the next start, naming when they last started.
+    void xyJournalLeftWithoutItsStopMarkIsSaidAtStart() {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        const QString path = dir.filePath(QStringLiteral("history-xy_dc_table.log"));
+        writeKilledJournal(path);
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        QVERIFY(w.openJournal(path));
+        const QString said = historyText(w);
+        QVERIFY2(said.contains(QStringLiteral("without their end mark")), qPrintable(said));
+        QVERIFY2(said.contains(QStringLiteral("2026-03-01 09:15")), qPrintable(said));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QVERIFY(f.readAll().contains("without their end mark"));
+    }
+
+    // Issue 30 item 8: a second XY screen on the same journal writes its own and says so.
+    void xySecondScreenWritesItsOwnHistory() {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        const QString path = dir.filePath(QStringLiteral("history-xy_dc_table.log"));
+        auto link1 = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow first(*link1, settings);
+        QVERIFY(first.openJournal(path));
+        auto link2 = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow second(*link2, settings);
+        QVERIFY(second.openJournal(path));
+        QCOMPARE(first.journalPath(), path);
+        QVERIFY(second.journalPath() != path);
+        const QString said = historyText(second);
+        QVERIFY2(said.contains(QStringLiteral("kept by another trilho")), qPrintable(said));
+        QVERIFY2(said.contains(QFileInfo(second.journalPath()).fileName()), qPrintable(said));
+        second.estopButton()->click();
+        link2->advance(0.1);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QVERIFY(!f.readAll().contains("\talarm\t9\t"));  // the second one's E-stop is not here
+    }
+
+    // Issue 30 item 7: the screens killed (kill -9) while the DC table's board ran to
+    // (150, 150), and started again while it still moves. The new screens never show 0.00
+    // (they used to show X 0.00 Y 0.00 "link up"): the position is unknown until the board
+    // answers the check they send at connect, which names the set point it last ran; and the
+    // history says the last screens stopped without their end mark.
+    void dcTableOnALineAsksTheBoardWhereItIsAfterAKill() {
+        QProcess device;
+        const QString pty = startDevice(device, QStringLiteral("table"));
+        QVERIFY(!pty.isEmpty());
+        QElapsedTimer clock;
+        clock.start();
+        auto now = [&] { return static_cast<double>(clock.nsecsElapsed()) * 1e-9; };
+        {
+            // The first screens' host: the check, then (150, 150); killed once it is out.
+            SerialLine line;
+            QString error;
+            QVERIFY2(line.open({pty, 9600, false}, &error), qPrintable(error));
+            TableHost host;
+            connect(&line, &SerialLine::received, &line, [&](const QByteArray& bytes) {
+                for (char b : bytes)
+                    host.receive(static_cast<std::uint8_t>(b), now());
+            });
+            QVERIFY(host.moveTo(150, 150));
+            QTRY_VERIFY_WITH_TIMEOUT(
+                (host.poll(now()), line.write(host.takeOutput()), line.bytesWritten() >= 8u),
+                10000);
+            QTest::qWait(50);  // the set point on its way
+            line.close();
+        }
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("history-xy_dc_table.log"));
+        writeKilledJournal(path);
+        SerialSettings serial;
+        serial.port = pty;
+        XyDeviceSession made = makeXyDeviceSession(shipped("xy_dc_table.json"), serial);
+        QVERIFY2(made.session != nullptr, qPrintable(made.error));
+        auto runnable = std::make_unique<XyDeviceRunnable>(std::move(made));
+        SerialLinkMotion* board = runnable->link();
+        XyLink link(std::move(runnable), XyLink::Drive::EventLoop);
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        XyMainWindow w(link, settings);
+        w.setDeviceLink(board, pty, 9600);
+        QVERIFY(w.openJournal(path));
+        w.show();
+        QStringList seen;
+        QTRY_VERIFY_WITH_TIMEOUT((seen << w.positionLabel()->text(),
+                                  w.positionLabel()->text().contains(QStringLiteral("150.00"))),
+                                 15000);
+        // While the board still moved (it answers at rest only) the position was unknown.
+        seen.removeAll(QString());
+        QVERIFY2(seen.first().contains(QStringLiteral("unknown until homed")),
+                 qPrintable(seen.first()));
+        const QRegularExpression zero(QStringLiteral("\\b0\\.00\\b"));
+        for (const QString& text : seen)
+            QVERIFY2(!zero.match(text).hasMatch(), qPrintable(text));
+        QVERIFY2(w.positionLabel()->text().contains(QStringLiteral("last set point")),
+                 qPrintable(w.positionLabel()->text()));
+        QVERIFY(!link.status().homed);
+        const QString said = historyText(w);
+        QVERIFY2(said.contains(QStringLiteral("without their end mark")), qPrintable(said));
+        QVERIFY2(said.contains(QStringLiteral("unknown until homed")), qPrintable(said));
+        device.terminate();
+        device.waitForFinished(5000);
+    }
+
+    // Issue 30 item 7: the plotter's protocol has no question the board answers with where it
+    // stands: on a line its position is unknown until it is homed, and the screen says so.
+    void plotterOnALineShowsItsPositionUnknownUntilHomed() {
+        QProcess device;
+        const QString pty = startDevice(device, QStringLiteral("plotter"));
+        QVERIFY(!pty.isEmpty());
+        SerialSettings serial;
+        serial.port = pty;
+        XyDeviceSession made = makeXyDeviceSession(shipped("xy_plotter.json"), serial);
+        QVERIFY2(made.session != nullptr, qPrintable(made.error));
+        auto runnable = std::make_unique<XyDeviceRunnable>(std::move(made));
+        SerialLinkMotion* board = runnable->link();
+        XyLink link(std::move(runnable), XyLink::Drive::EventLoop);
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        XyMainWindow w(link, settings);
+        w.setDeviceLink(board, pty, 57600);
+        w.show();
+        QTRY_VERIFY_WITH_TIMEOUT(!w.positionLabel()->text().isEmpty(), 5000);
+        QTest::qWait(200);  // several updates
+        const QString text = w.positionLabel()->text();
+        QVERIFY2(text.contains(QStringLiteral("unknown until homed")), qPrintable(text));
+        QVERIFY2(!text.contains(QStringLiteral("0.00")), qPrintable(text));
+        QVERIFY(!w.workArea()->toolShown());  // no tool drawn at the origin
+        // Nothing was asked of it yet: the port is open, the board has not said a word.
+        QVERIFY2(w.linkLabel()->text().contains(QStringLiteral("no answer yet")),
+                 qPrintable(w.linkLabel()->text()));
+        device.terminate();
+        device.waitForFinished(5000);
     }
 
     void xyScreenServesTheDncLinkWithItsYAxis() {

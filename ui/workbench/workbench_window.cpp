@@ -13,7 +13,6 @@
 #include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSpinBox>
@@ -889,11 +888,8 @@ void WorkbenchWindow::saveTunedProfile() {
     const QString path = QFileDialog::getSaveFileName(this, tr("Save tuned profile"), QString(),
                                                       tr("Machine profiles (*.json)"));
     if (path.isEmpty()) return;
-    QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly) || f.write(machineProfileToJson(*tuned_)) < 0 ||
-        !f.commit()) {
-        QMessageBox::warning(this, tr("Save tuned profile"),
-                             tr("cannot save '%1': %2").arg(path, f.errorString()));
+    if (QString why; !saveMachineProfile(*tuned_, path, &why)) {
+        QMessageBox::warning(this, tr("Save tuned profile"), why);
         return;
     }
     statusBar()->showMessage(tr("Saved %1: trilho-cli run --machine %1 uses it.").arg(path), 10000);

@@ -9,7 +9,6 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QSpinBox>
 #include <QVBoxLayout>
 #include <cmath>
@@ -85,6 +84,7 @@ CalibrationDialog::CalibrationDialog(const MachineProfile& profile, const QStrin
     connect(compute_, &QPushButton::clicked, this, [this] { compute(); });
     connect(save_, &QPushButton::clicked, this, &CalibrationDialog::save);
     connect(travel_, &QDoubleSpinBox::valueChanged, this, [this] { replot(); });
+    recorder_ = CalibrationRecorder(limits());
 }
 
 CalibrationDialog::~CalibrationDialog() {
@@ -101,8 +101,9 @@ void CalibrationDialog::setAxis(int axis) {
 
 void CalibrationDialog::start() {
     stop();
-    recorder_ = CalibrationRecorder();
+    recorder_ = CalibrationRecorder(limits());
     last_.reset();
+    save_->setEnabled(false);
     replot();
     line_ = new SerialLine(this);
     QString error;
@@ -132,10 +133,30 @@ void CalibrationDialog::stop() {
     start_->setText(tr("Start"));
 }
 
+CalibrationLimits CalibrationDialog::limits() const {
+    MachineProfile p = profile_;
+    return CalibrationLimits::forAxis(axisOf(p, axis_->currentIndex()));
+}
+
 void CalibrationDialog::receive(const QByteArray& bytes, double tS) {
+    if (!recorder_.refused().empty()) return;  // refused: nothing more is kept
     const std::size_t before = recorder_.samples().size();
-    for (char b : bytes)
+    for (char b : bytes) {
         recorder_.receive(static_cast<std::uint8_t>(b), tS);
+        if (!recorder_.refused().empty()) break;
+    }
+    if (!recorder_.refused().empty()) {
+        // A stream the program cannot have sent (core/machine/dc_calibration_check.h): said at
+        // once, the port closed, nothing to compute or save until a new Start.
+        last_.reset();
+        save_->setEnabled(false);
+        stop();
+        result_->setText(tr("The stream is refused, nothing to save: %1. Press Start for a new "
+                            "run.")
+                             .arg(QString::fromStdString(recorder_.refused())));
+        replot();
+        return;
+    }
     if (recorder_.samples().size() != before) replot();
 }
 
@@ -161,8 +182,7 @@ void CalibrationDialog::replot() {
 }
 
 CalibrationResult CalibrationDialog::compute() {
-    CalibrationInput in;
-    in.samples = recorder_.samples();
+    CalibrationInput in = recorder_.input();
     MachineProfile p = profile_;
     const DcAxisParams& a = axisOf(p, axis_->currentIndex());
     in.radPerCount = a.radPerCount;
@@ -170,7 +190,7 @@ CalibrationResult CalibrationDialog::compute() {
     const CalibrationResult r = calibrate(in);
     last_ = r.ok ? std::optional<CalibrationResult>(r) : std::nullopt;
     if (!r.ok) {
-        result_->setText(QString::fromStdString(r.error));
+        result_->setText(tr("Nothing to save: %1").arg(QString::fromStdString(r.error)));
     } else if (r.mmPerTurn) {
         result_->setText(tr("%1 counts, %2 pulses/s; the board stopped at about %3 pulses. "
                             "%4 mm per pulse, %5 mm per turn (the profile has %6).")
@@ -203,16 +223,18 @@ int CalibrationDialog::points() const {
     return pulsesGraph_->dataCount();
 }
 
+QString CalibrationDialog::resultText() const {
+    return result_->text();
+}
+
 void CalibrationDialog::save() {
     const std::optional<MachineProfile> p = calibratedProfile();
     if (!p) return;
     const QString path = QFileDialog::getSaveFileName(this, tr("Save profile"), QString(),
                                                       tr("Machine profiles (*.json)"));
     if (path.isEmpty()) return;
-    QSaveFile f(path);
-    const QByteArray bytes = machineProfileToJson(*p);
-    if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size() || !f.commit()) {
-        result_->setText(tr("Cannot write %1: %2").arg(path, f.errorString()));
+    if (QString why; !saveMachineProfile(*p, path, &why)) {
+        result_->setText(why);
         return;
     }
     result_->setText(tr("Saved: %1").arg(path));

@@ -3,7 +3,9 @@
 // "Programa para pruebas a lazo abierto"): receives the board's counts from a serial port
 // (hal/serial), plots pulses against time and against displacement, computes mm per pulse and
 // per turn from the travel measured (core/machine/dc_calibration.h) and saves the profile
-// with the measured figure. The same computation as `trilho-cli calibrate`.
+// with the measured figure. The same computation as `trilho-cli calibrate`, and the same checks
+// (issue 30 item 2): a stream the program cannot have sent is refused as it comes, with its
+// reason, the port closed and nothing to save.
 #include <QDialog>
 #include <QElapsedTimer>
 #include <optional>
@@ -39,7 +41,8 @@ class CalibrationDialog : public QDialog {
     CalibrationResult compute();
     /// The profile with the measured mm per turn of the axis (after a result with a travel).
     std::optional<MachineProfile> calibratedProfile() const;
-    int points() const;  ///< counts plotted (tests)
+    int points() const;          ///< counts plotted (tests)
+    QString resultText() const;  ///< the line under the plots: the result, or why there is none
     void setTravelMm(double mm);
     void setAxis(int axis);  ///< 0 x, 1 y
 
@@ -49,6 +52,8 @@ class CalibrationDialog : public QDialog {
     void save();
     void replot();
     double mmPerPulseShown() const;
+    /// The stream's bounds for the axis chosen (its motor's fastest count rate).
+    CalibrationLimits limits() const;
 
     MachineProfile profile_;
     CalibrationRecorder recorder_;

@@ -73,11 +73,12 @@ void WorkAreaView::clearFollowed() {
     invalidate();
 }
 
-void WorkAreaView::setTool(const QPointF& mm, PenState pen) {
-    if (mm == tool_ && pen == pen_) return;
+void WorkAreaView::setTool(const QPointF& mm, PenState pen, bool known) {
+    if (mm == tool_ && pen == pen_ && known == toolKnown_) return;
     const QRectF before = toolRect(tool_);
     tool_ = mm;
     pen_ = pen;
+    toolKnown_ = known;
     // Only where the marker was and where it is: the rest of the picture has not changed.
     update(before.toAlignedRect());
     update(toolRect(tool_).toAlignedRect());
@@ -311,7 +312,8 @@ void WorkAreaView::paintEvent(QPaintEvent* e) {
     p.drawLine(o, o - QPointF(0, 18));
     p.drawText(QRectF(o.x() + 3, o.y() - 16, 14, 14), Qt::AlignCenter, QStringLiteral("0"));
 
-    // The tool: a cross in a circle, filled when the pen is down.
+    // The tool: a cross in a circle, filled when the pen is down; none where it is not known.
+    if (!toolKnown_) return;
     const QPointF t = toPixel(tool_);
     p.setPen(QPen(QColor(0, 0, 0), 1.5));
     p.setBrush(pen_ == PenState::Down ? QBrush(QColor(210, 30, 30)) : QBrush(Qt::NoBrush));

@@ -34,7 +34,9 @@ class WorkAreaView : public QWidget {
     /// in pixels or the pen changed, so hours of running hold a bounded list.
     void addFollowed(const QPointF& mm, bool penDown);
     void clearFollowed();
-    void setTool(const QPointF& mm, PenState pen);
+    /// The tool's marker at mm; none drawn when its position is not known.
+    void setTool(const QPointF& mm, PenState pen, bool known = true);
+    bool toolShown() const { return toolKnown_; }
 
     /// The planned path of a compiled program, blocks in order from start (gotos not
     /// followed: each block's move is drawn once).
@@ -126,6 +128,7 @@ class WorkAreaView : public QWidget {
     std::vector<Followed> followed_;
     QPointF tool_;
     PenState pen_ = PenState::None;
+    bool toolKnown_ = true;
 };
 
 }  // namespace ui

@@ -35,6 +35,7 @@
 #include <QSerialPortInfo>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include "core/files/atomic_file.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/source_file.h"
@@ -47,6 +48,7 @@
 #include "host/dnc/xy_dnc_machine.h"
 #include "ui/background_pool.h"
 #include "ui/dnc_link.h"
+#include "ui/journal_notice.h"
 #include "ui/machine_choice.h"
 #include "ui/program_panel.h"
 #include "ui/xy/calibration_dialog.h"
@@ -518,6 +520,7 @@ bool XyMainWindow::applyProgram(const QString& path, ProgramRead read) {
         plotter_->setPointCount(points);
     }
     settings_.setValue(QStringLiteral("xyLastProgram"), path);
+    rememberSettings();
     link_.post([program](XyController& c) { c.loadProgram(program); });
     retranslate();
     onUpdate({}, {}, last_);  // the run controls follow the program just loaded
@@ -590,6 +593,7 @@ void XyMainWindow::chooseFile() {
                                                       tr("G-code programs (*.G *.g)"));
     if (path.isEmpty()) return;
     settings_.setValue(QStringLiteral("xyLastFolder"), QFileInfo(path).absolutePath());
+    rememberSettings();
     selectProgram(path);
 }
 
@@ -603,8 +607,45 @@ bool XyMainWindow::openJournal(const QString& path, QString* error) {
         if (error) *error = why;
         return false;
     }
-    journalPath_ = path;
+    journalPath_ = journal_->path();  // this process' own file when another trilho keeps path
+    journal_->markStart(Journal::whoAmI());
+    // After screens that stopped without their end mark: what is known of the machine now.
+    // A simulated plant is made with this screen at its origin; a board outlived the screens.
+    const bool plotter = link_.profile().kind == MachineKind::Plotter;
+    const QString position =
+        !deviceLink_ ? tr("The simulated machine started again at its origin: the run that was "
+                          "going is lost.")
+        : plotter    ? tr("Positions are unknown until homed: the plotter's protocol has no "
+                             "question the board answers with where it stands.")
+                     : tr("Positions are unknown until homed; the board is asked which set "
+                             "point it last ran.");
+    const QStringList notices = journalOpeningNotices(journal_->opening(), position);
+    for (const QString& line : notices)
+        addHistory(line, false);
+    if (!notices.isEmpty()) statusBar()->showMessage(notices.join(QStringLiteral("  ")), 60000);
     return true;
+}
+
+QString XyMainWindow::positionText(const XyStatus& status) {
+    const XySample& s = status.sample;
+    // What the figures rest on, in a small second line: the readout keeps its size.
+    const auto withNote = [](const QString& figures, const QString& note) {
+        return QStringLiteral("%1<br><small>%2</small>").arg(figures, note.toHtmlEscaped());
+    };
+    switch (status.positionBasis) {
+        case XyPositionBasis::Unknown:
+            return withNote(QStringLiteral("X ?  Y ? mm"), tr("unknown until homed"));
+        case XyPositionBasis::BoardLastSet:
+            return withNote(QStringLiteral("X %1  Y %2 mm")
+                                .arg(s.x.positionMm, 0, 'f', 2)
+                                .arg(s.y.positionMm, 0, 'f', 2),
+                            tr("the board's last set point, not homed"));
+        case XyPositionBasis::Known:
+            break;
+    }
+    return QStringLiteral("X %1  Y %2 mm")
+        .arg(s.x.positionMm, 8, 'f', 2)
+        .arg(s.y.positionMm, 8, 'f', 2);
 }
 
 void XyMainWindow::addHistory(const QString& line, bool alarm, int alarmCode) {
@@ -628,6 +669,7 @@ void XyMainWindow::addHistory(const QString& line, bool alarm, int alarmCode) {
 void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
                             const std::vector<ControllerEvent>& events, const XyStatus& status) {
     for (const XyTraceRow& r : rows) {
+        if (!r.positionKnown) continue;  // a board not yet heard: no point at the origin
         plots_->addSample(r.tS, r.sample);
         // The table has no pen: what it follows is drawn as drawing.
         view_->addFollowed({r.sample.x.positionMm, r.sample.y.positionMm},
@@ -643,10 +685,11 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
     if (journal_) journal_->syncIfDue(journalClock_.elapsed());
     showLinkState();
     const XySample& s = status.sample;
-    view_->setTool({s.x.positionMm, s.y.positionMm}, s.pen);
-    position_->setText(QStringLiteral("X %1  Y %2 mm")
-                           .arg(s.x.positionMm, 8, 'f', 2)
-                           .arg(s.y.positionMm, 8, 'f', 2));
+    // No tool drawn where it is not known (a board on a line before homing or its answer).
+    view_->setTool({s.x.positionMm, s.y.positionMm}, s.pen,
+                   status.positionBasis != XyPositionBasis::Unknown);
+    const QString position = positionText(status);
+    if (position_->text() != position) position_->setText(position);
     state_->setText(stateText(status.state));
     QPalette pal = state_->palette();
     const bool latched = status.state == ControllerState::EStop;
@@ -693,12 +736,10 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
 
 bool XyMainWindow::plotPolygon(const QString& program) {
     const QString path = QDir(QDir::tempPath()).filePath(QStringLiteral("trilho-poligono.G"));
-    QFile f(path);
-    if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) || f.write(program.toUtf8()) < 0) {
-        addHistory(tr("Cannot write %1: %2").arg(path, f.errorString()), true);
+    if (QString why; !saveFileAtomically(path, program.toUtf8(), &why)) {
+        addHistory(why, true);
         return false;
     }
-    f.close();
     if (!selectProgram(path)) return false;
     startProgram(true);
     return true;
@@ -730,10 +771,13 @@ void XyMainWindow::showLinkState() {
         return;
     }
     const bool up = deviceLink_->linkUp();
+    // "link up" once the board has answered: an open port is no board.
     QString text = tr("%1 at %2 bit/s: %3 - packets %4, RESENDs %5, timeouts %6")
                        .arg(port_)
                        .arg(baud_)
-                       .arg(up ? tr("link up") : tr("LINK LOST"))
+                       .arg(!up                            ? tr("LINK LOST")
+                            : deviceLink_->boardAnswered() ? tr("link up")
+                                                           : tr("port open, no answer yet"))
                        .arg(deviceLink_->packetsSent())
                        .arg(deviceLink_->resends())
                        .arg(deviceLink_->timeouts());

@@ -67,9 +67,18 @@ class XyMainWindow : public OperatorFrame {
     bool plotPolygon(const QString& program);
     QLabel* linkLabel() const { return linkLabel_; }
     /// Keeps the history in a journal (core/machine/journal.h) at path, as the rail's
-    /// history.log; false with the reason (the screen still works, and says it).
+    /// history.log (or in this process' own file beside it when another trilho keeps path),
+    /// and marks the screens' start; false with the reason (the screen still works, and says
+    /// it). Says in the history what the journal found (another trilho keeps it; the last
+    /// screens stopped without their end mark): call it after setDeviceLink(), which decides
+    /// what is known of the position after such a stop.
     bool openJournal(const QString& path, QString* error = nullptr);
+    /// The file the history is written to.
     const QString& journalPath() const { return journalPath_; }
+    /// The position readout's text: "X ?  Y ? mm" over "unknown until homed" until a board on a
+    /// line has said where it stands, and what the figures rest on until a move or homing is
+    /// confirmed (issue 30 item 7): never 0.00 for a position not known.
+    static QString positionText(const XyStatus& status);
 
     WorkAreaView* workArea() const { return view_; }
     XyPlots* plots() const { return plots_; }
