@@ -1,7 +1,8 @@
 // The E-stop's latency at the screens (issue 30 item 3): from the F1 key event to the drive
 // commanded to zero, with the screens at their busiest: a program running on the simulated
 // machine, every dock open (floating, so each one paints), a large run loading in the tuning
-// workbench over and over, the plots live. A second thread posts F1 to the screens' event queue
+// workbench over and over, the plots live, the history kept in a journal (in the temporary
+// folder: its disk's sync time counts). A second thread posts F1 to the screens' event queue
 // at random moments while the program runs (as a key from the X server waits there for the
 // screens' thread); the machine stamps when the key reached the event filter and when its
 // thread wrote the drive to zero (EStopStamp). Then the screens reset the E-stop and start the
@@ -191,6 +192,7 @@ struct Machine {
     /// true when it took one.
     std::function<bool()> keepRunning;
     std::function<EStopStamp()> stamp;  ///< any thread
+    std::function<QString()> state;     ///< any thread: what the machine is doing (a stuck bench)
 };
 
 /// Every dock floating and shown: each one paints (tabbed docks paint only the front one).
@@ -236,11 +238,11 @@ Samples measure(Machine& m, const Options& o, const QString& runPath, double* st
         for (int k = 0; k < o.samples; ++k) {
             for (int waited = 0; !m.running(); ++waited) {
                 std::this_thread::sleep_for(std::chrono::milliseconds(1));
-                if (waited == 60000)
+                if (waited % 60000 == 59999)
                     std::fprintf(stderr,
-                                 "trilho-bench-estop: the program has not run again for 60 s "
-                                 "(sample %d)\n",
-                                 k + 1);
+                                 "trilho-bench-estop: the program has not run again for %d s "
+                                 "(sample %d): %s\n",
+                                 (waited + 1) / 1000, k + 1, qPrintable(m.state()));
             }
             std::this_thread::sleep_for(std::chrono::duration<double>(pause(rng)));
             if (!m.running()) {
@@ -322,6 +324,12 @@ int main(int argc, char** argv) {
 
     if (o.machine == QLatin1String("rail") || o.machine == QLatin1String("both")) {
         ui::MachineLink link(MachineProfile::rail());
+        QString error;
+        // The history as the screens keep it: every line written, synced every 100 ms.
+        if (!link.openJournal(dir.filePath(QStringLiteral("history.log")), &error)) {
+            std::fprintf(stderr, "trilho-bench-estop: %s\n", qPrintable(error));
+            return 1;
+        }
         ui::MainWindow window(link, settings);
         window.setConfirmer([](const QString&, const QString&) { return true; });
         window.resize(1366, 768);
@@ -343,13 +351,25 @@ int main(int argc, char** argv) {
                 link.acknowledge();
             else if (s.state == ControllerState::Manual)
                 link.selectAutomatic();
-            else if (s.state == ControllerState::AutoIdle && s.homed && !window.compiling())
+            else if (s.state == ControllerState::AutoIdle && !s.homed)
+                link.home();  // after an alarm that lost the reference
+            else if (s.state == ControllerState::AutoIdle && !window.compiling())
                 window.executeSelected(0);
+            else if (s.state == ControllerState::Paused)
+                link.resume();
             else
                 return false;
             return true;
         };
         m.stamp = [&] { return link.lastEmergencyStop(); };
+        m.state = [&] {
+            const ControllerStatus s = link.worker().snapshot();
+            return QStringLiteral("state %1, automatic %2, homed %3, alarms %4")
+                .arg(int(s.state))
+                .arg(s.automatic)
+                .arg(s.homed)
+                .arg(s.activeAlarms);
+        };
         double stall = 0.0;
         const Samples s = measure(m, o, runPath, &stall);
         print("rail", s, stall);
@@ -366,6 +386,11 @@ int main(int argc, char** argv) {
                     XyLink::Drive::Thread);
         ui::XyMainWindow window(link, settings);
         window.setConfirmer([](const QString&, const QString&) { return true; });
+        QString error;
+        if (!window.openJournal(dir.filePath(QStringLiteral("history-xy_dc_table.log")), &error)) {
+            std::fprintf(stderr, "trilho-bench-estop: %s\n", qPrintable(error));
+            return 1;
+        }
         window.resize(1366, 768);
         // A shuttle between two corners that never ends (m03 jumps back to block 20).
         const QString program = dir.filePath(QStringLiteral("shuttle.G"));
@@ -388,13 +413,25 @@ int main(int argc, char** argv) {
                 link.post([](XyController& c) { c.resetEmergencyStop(); });
             else if (s.state == ControllerState::Alarm)
                 link.post([](XyController& c) { c.acknowledgeAlarms(); });
+            else if (s.state == ControllerState::AutoIdle && !s.homed)
+                link.post([](XyController& c) { c.home(); });
             else if (s.state == ControllerState::Manual || s.state == ControllerState::AutoIdle)
                 window.startProgram(false);
+            else if (s.state == ControllerState::Paused)
+                link.post([](XyController& c) { c.resume(); });
             else
                 return false;
             return true;
         };
         m.stamp = [&] { return link.lastEmergencyStop(); };
+        m.state = [&] {
+            const XyStatus s = link.status();
+            return QStringLiteral("state %1, automatic %2, homed %3, alarms %4")
+                .arg(int(s.state))
+                .arg(s.automatic)
+                .arg(s.homed)
+                .arg(s.activeAlarms);
+        };
         double stall = 0.0;
         const Samples s = measure(m, o, runPath, &stall);
         print("DC table", s, stall);

@@ -3,6 +3,8 @@
 #include <QSemaphore>
 #include <QThreadPool>
 
+#include <algorithm>
+#include <cerrno>
 #include <memory>
 
 #include <sys/resource.h>
@@ -13,9 +15,10 @@ namespace ui {
 
 namespace {
 
-/// Nice value of the pool's threads: they yield to the screens' thread (and to the machine's),
-/// so a load of seconds never takes the core the E-stop key needs. The screens' own share stays:
-/// nice 10 against 0 is about a tenth of a busy core's time, all of it when the core is idle.
+/// The pool's threads' nice above the screens' own: they yield to the screens' thread (and to
+/// the machine's), so a load of seconds never takes the core the E-stop key needs. The pool's
+/// share stays: nice +10 against the screens is about a tenth of a busy core's time, all of it
+/// when the core is idle.
 constexpr int kBackgroundNice = 10;
 
 QThreadPool* makePool() {
@@ -31,7 +34,12 @@ QThreadPool* makePool() {
     const auto gate = std::make_shared<Gate>();
     for (int i = 0; i < threads; ++i)
         pool->start([gate] {
-            setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), kBackgroundNice);
+            // Above the screens' own (a trilho started with nice 5 keeps the difference).
+            const auto self = static_cast<id_t>(gettid());
+            errno = 0;
+            const int inherited = getpriority(PRIO_PROCESS, self);
+            if (errno == 0)
+                setpriority(PRIO_PROCESS, self, std::min(inherited + kBackgroundNice, 19));
             gate->started.release();
             gate->go.acquire();  // holds this thread until every thread has started (one each)
         });

@@ -4,7 +4,7 @@
 // with its global pool (it splits large fills and image conversions across it and the screens'
 // thread waits for the parts): a load of seconds queued there held a repaint, and with it the
 // E-stop key, for as long as the load (1.5 s measured). Nothing of trilho's runs there. Its
-// threads run at nice 10: they yield the core to the screens' thread.
+// threads run at 10 above the screens' nice: they yield the core to the screens' thread.
 class QThreadPool;
 
 namespace trilho {

@@ -229,7 +229,7 @@ class WorkbenchTest : public QObject {
             });
             // Waited for, not asked: result() on a task not yet started runs it on this thread.
             QTRY_VERIFY(nice.isFinished());
-            QCOMPARE(nice.result(), screens + 10);
+            QCOMPARE(nice.result(), std::min(screens + 10, 19));
         }
     }
 
