@@ -109,7 +109,8 @@ class MachineLink : public QObject {
     QTimer timer_;
     ControllerStatus status_;
     std::uint64_t version_ = 0;
-    Journal journal_;
+    /// Synced on its own thread: a busy disk never holds the screens' thread (issue 30 item 3).
+    Journal journal_{JournalPolicy::syncedOnOwnThread()};
     QElapsedTimer clock_;  ///< journal batching
     bool journalWarned_ = false;
     QStringList journalNotices_;

@@ -1,6 +1,7 @@
 #include "core/machine/journal.h"
 
 #include "core/files/atomic_file.h"
+#include "core/files/file_syncer.h"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -198,9 +199,13 @@ std::optional<JournalEntry> Journal::lastMark(const QString& path) {
     return std::nullopt;
 }
 
+Journal::Journal() = default;
+
+Journal::Journal(const JournalPolicy& policy) : policy_(policy) {}
+
 Journal::~Journal() {
     close();
-}
+}  // then syncer_ goes, with nothing left to sync
 
 void Journal::fail(const QString& what, int err) {
     health_.ok = false;
@@ -294,6 +299,8 @@ bool Journal::open(const QString& path, QString* error) {
     everSynced_ = false;
     opening_ = {};
     opening_.requested = path;
+    if (policy_.syncOnOwnThread && !syncer_) syncer_ = std::make_unique<FileSyncer>(policy_.syncFile);
+    if (syncer_) syncFailuresSeen_ = syncer_->failures();
     Lock taken = lock(path, error);
     if (taken == Lock::Held) {
         // Another trilho keeps this journal: this one writes its own beside it.
@@ -344,6 +351,7 @@ void Journal::close() {
     keepOpen_ = false;
     if (fd_ >= 0) {
         if (pending_ > 0) sync();
+        waitForSyncs();  // the clean stop is on the disk before the lock goes
         ::close(fd_);
         fd_ = -1;
     }
@@ -381,14 +389,37 @@ bool Journal::writeLine(const QByteArray& line) {
 }
 
 bool Journal::sync() {
-    if (fd_ < 0 || pending_ == 0) return fd_ >= 0;
+    if (fd_ < 0 || pending_ == 0) return fd_ >= 0 && !syncThreadFailed();
     ++syncs_;
     pending_ = 0;
     everSynced_ = true;
-    if (::fdatasync(fd_) != 0) {
-        fail(QStringLiteral("cannot sync"), errno);
+    if (syncer_) {
+        if (const int err = syncer_->request(fd_)) {
+            fail(QStringLiteral("cannot sync"), err);
+            return false;
+        }
+        return !syncThreadFailed();
+    }
+    const int err = policy_.syncFile ? policy_.syncFile(fd_) : (::fdatasync(fd_) == 0 ? 0 : errno);
+    if (err != 0) {
+        fail(QStringLiteral("cannot sync"), err);
         return false;
     }
+    return true;
+}
+
+bool Journal::waitForSyncs() {
+    if (!syncer_) return true;
+    syncer_->waitForAll();
+    return !syncThreadFailed();
+}
+
+bool Journal::syncThreadFailed() {
+    if (!syncer_) return false;
+    const std::uint64_t failures = syncer_->failures();
+    if (failures == syncFailuresSeen_) return false;
+    syncFailuresSeen_ = failures;
+    fail(QStringLiteral("cannot sync"), syncer_->lastError());
     return true;
 }
 
@@ -410,6 +441,7 @@ bool Journal::append(const JournalEntry& entry, std::int64_t nowMs) {
 }
 
 bool Journal::syncIfDue(std::int64_t nowMs) {
+    if (syncThreadFailed()) return false;
     if (pending_ == 0 || (everSynced_ && nowMs - lastSyncMs_ < policy_.syncIntervalMs)) return true;
     lastSyncMs_ = nowMs;
     return sync();

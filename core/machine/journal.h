@@ -24,11 +24,15 @@
 #include <QString>
 #include <QStringList>
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <optional>
 
 class QIODevice;
 
 namespace trilho {
+
+class FileSyncer;
 
 struct JournalEntry {
     QDateTime when;  ///< UTC
@@ -46,6 +50,22 @@ struct JournalPolicy {
     int keepFiles = 5;
     /// Batched appends reach the disk at most this late (alarms at once), ms.
     std::int64_t syncIntervalMs = 100;
+    /// Syncs on a thread of its own (FileSyncer): the caller never waits for the disk (the
+    /// screens: an fdatasync on a busy disk holds a thread tens to hundreds of ms, and an
+    /// E-stop key would wait behind it). Entries are still written at once; a sync that fails
+    /// there is reported at the next call (append, syncIfDue, sync, waitForSyncs). Off: the
+    /// CLI and the tests that count syncs.
+    bool syncOnOwnThread = false;
+    /// Syncs a descriptor's data, returning 0 or an errno; empty: fdatasync. Tests pass a disk
+    /// that blocks or fails.
+    std::function<int(int fd)> syncFile;
+
+    /// The screens' journal: the defaults, synced on its own thread.
+    static JournalPolicy syncedOnOwnThread() {
+        JournalPolicy p;
+        p.syncOnOwnThread = true;
+        return p;
+    }
 };
 
 /// What the screens show about the journal: whether it is keeping the history.
@@ -78,9 +98,9 @@ class Journal {
     /// Entries read() returns by default: the last 100,000 (about 8 MB of journal).
     static constexpr qsizetype kDefaultReadLimit = 100000;
 
-    Journal() = default;
-    explicit Journal(const JournalPolicy& policy) : policy_(policy) {}
-    ~Journal();  ///< syncs what is pending
+    Journal();
+    explicit Journal(const JournalPolicy& policy);
+    ~Journal();  ///< syncs what is pending and waits for it
     Journal(const Journal&) = delete;
     Journal& operator=(const Journal&) = delete;
 
@@ -112,8 +132,9 @@ class Journal {
     bool isOpen() const { return keepOpen_; }
     QString path() const { return path_; }
 
-    /// Immediate: written and synced before it returns (one fdatasync per entry). False when
-    /// the entry could not be written (or synced); health() says why.
+    /// Immediate: written and synced before it returns (one fdatasync per entry; with
+    /// policy.syncOnOwnThread, asked of that thread). False when the entry could not be written
+    /// (or synced); health() says why.
     bool append(const JournalEntry& entry);
 
     /// Batched: written at once (a killed program keeps it) and synced with its batch: at once
@@ -125,8 +146,11 @@ class Journal {
     /// Syncs the pending entries when the interval has passed; call it on a timer (the 50 Hz
     /// poll). False when the sync failed.
     bool syncIfDue(std::int64_t nowMs);
-    /// Syncs the pending entries now.
+    /// Syncs the pending entries now (with policy.syncOnOwnThread: asks for it).
     bool sync();
+    /// Waits until every sync asked has ended (at once without policy.syncOnOwnThread). False
+    /// when one failed since the last call that said so; health() says why.
+    bool waitForSyncs();
 
     JournalHealth health() const { return health_; }
     std::int64_t pendingSync() const { return pending_; }  ///< written, not yet synced
@@ -166,6 +190,9 @@ class Journal {
     bool rotate();
     bool openFile(QString* error);
     void fail(const QString& what, int err);
+    /// A sync on the sync thread failed since the last call that said so: reports it (health())
+    /// and returns true.
+    bool syncThreadFailed();
 
     JournalPolicy policy_;
     QString path_;
@@ -181,6 +208,8 @@ class Journal {
     int lockFd_ = -1;
     JournalOpening opening_;
     QString stopText_;  ///< the stop mark's text once a start was marked; empty: none
+    std::unique_ptr<FileSyncer> syncer_;  ///< with policy.syncOnOwnThread, made at open()
+    std::uint64_t syncFailuresSeen_ = 0;
 };
 
 }  // namespace trilho

@@ -598,7 +598,8 @@ void XyMainWindow::chooseFile() {
 }
 
 bool XyMainWindow::openJournal(const QString& path, QString* error) {
-    journal_ = std::make_unique<Journal>();
+    // Synced on its own thread: a busy disk never holds the screens' thread (issue 30 item 3).
+    journal_ = std::make_unique<Journal>(JournalPolicy::syncedOnOwnThread());
     journalClock_.start();
     QString why;
     if (!journal_->open(path, &why)) {
