@@ -176,7 +176,7 @@ TEST(MachineProfile, WritingBackKeepsTheNotesAndEveryKeyNotChanged) {
     tuned.loop.engineered.kp = 2.25;  // what a tuning changes
     tuned.motion.accelerationMmS2 = 2000.0;
     const QByteArray written = machineProfileToJson(tuned);
-    const QMap<QString, QJsonValue> before = jsonLeavesOf(original), after = trilho::test::jsonLeavesOf(written);
+    const QMap<QString, QJsonValue> before = jsonLeavesOf(original), after = jsonLeavesOf(written);
     for (auto it = before.begin(); it != before.end(); ++it) {
         if (it.key() == QLatin1String("loop.engineered.kp")) continue;
         EXPECT_EQ(after.value(it.key()), it.value())
@@ -186,7 +186,8 @@ TEST(MachineProfile, WritingBackKeepsTheNotesAndEveryKeyNotChanged) {
     EXPECT_EQ(after.value(QStringLiteral("loop.engineered.kp")), QJsonValue(2.25));
     EXPECT_EQ(after.value(QStringLiteral("motion.accelerationMmS2")), QJsonValue(2000.0));
     // In full: every key of the plain profile is there.
-    const QMap<QString, QJsonValue> plain = jsonLeavesOf(machineProfileToJson(MachineProfile::rail()));
+    const QMap<QString, QJsonValue> plain =
+        jsonLeavesOf(machineProfileToJson(MachineProfile::rail()));
     for (auto it = plain.begin(); it != plain.end(); ++it)
         EXPECT_TRUE(after.contains(it.key())) << it.key().toStdString();
     // It reads back as the tuned profile, and writes back the same bytes.
