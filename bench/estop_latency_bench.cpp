@@ -195,6 +195,16 @@ struct Machine {
     std::function<QString()> state;     ///< any thread: what the machine is doing (a stuck bench)
 };
 
+/// Machine::state's line, the same for both machines' statuses (ControllerStatus, XyStatus).
+template <typename Status>
+QString stateLine(const Status& s) {
+    return QStringLiteral("state %1, automatic %2, homed %3, alarms %4")
+        .arg(int(s.state))
+        .arg(s.automatic)
+        .arg(s.homed)
+        .arg(s.activeAlarms);
+}
+
 /// Every dock floating and shown: each one paints (tabbed docks paint only the front one).
 void openEveryDock(QMainWindow* w) {
     for (QDockWidget* d : w->findChildren<QDockWidget*>()) {
@@ -362,14 +372,7 @@ int main(int argc, char** argv) {
             return true;
         };
         m.stamp = [&] { return link.lastEmergencyStop(); };
-        m.state = [&] {
-            const ControllerStatus s = link.worker().snapshot();
-            return QStringLiteral("state %1, automatic %2, homed %3, alarms %4")
-                .arg(int(s.state))
-                .arg(s.automatic)
-                .arg(s.homed)
-                .arg(s.activeAlarms);
-        };
+        m.state = [&] { return stateLine(link.worker().snapshot()); };
         double stall = 0.0;
         const Samples s = measure(m, o, runPath, &stall);
         print("rail", s, stall);
@@ -424,14 +427,7 @@ int main(int argc, char** argv) {
             return true;
         };
         m.stamp = [&] { return link.lastEmergencyStop(); };
-        m.state = [&] {
-            const XyStatus s = link.status();
-            return QStringLiteral("state %1, automatic %2, homed %3, alarms %4")
-                .arg(int(s.state))
-                .arg(s.automatic)
-                .arg(s.homed)
-                .arg(s.activeAlarms);
-        };
+        m.state = [&] { return stateLine(link.status()); };
         double stall = 0.0;
         const Samples s = measure(m, o, runPath, &stall);
         print("DC table", s, stall);

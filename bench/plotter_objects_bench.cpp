@@ -10,7 +10,6 @@
 #include <QCoreApplication>
 #include <QFile>
 #include <cstdio>
-#include <deque>
 #include <memory>
 #include <string>
 
@@ -19,37 +18,12 @@
 #include "core/machine/xy_controller.h"
 #include "hal/emulator/plotter_firmware.h"
 #include "host/session/xy_session.h"
+#include "tests/support/virtual_serial_line.h"
+#include "tests/support/xy_over_wire.h"
 
 using namespace trilho;
 
 namespace {
-
-/// One direction of the line: each byte takes 10 bits at 57600 bit/s, in order.
-class Wire {
-  public:
-    void send(const std::vector<std::uint8_t>& bytes, double nowS) {
-        for (std::uint8_t b : bytes) {
-            busyUntil_ = std::max(busyUntil_, nowS) + kByteS;
-            queue_.push_back({busyUntil_, b});
-        }
-    }
-    template <typename F>
-    void deliver(double nowS, F&& f) {
-        while (!queue_.empty() && queue_.front().at <= nowS) {
-            f(queue_.front().b, queue_.front().at);
-            queue_.pop_front();
-        }
-    }
-
-  private:
-    static constexpr double kByteS = 10.0 / 57600.0;
-    struct Timed {
-        double at;
-        std::uint8_t b;
-    };
-    double busyUntil_ = 0.0;
-    std::deque<Timed> queue_;
-};
 
 struct Figures {
     bool ok = false;
@@ -66,7 +40,7 @@ Figures runFile(const QString& path, const MachineProfile& profile) {
     auto program = std::make_shared<Program>(compile(file.readAll().toStdString(), o));
     if (!program->ok()) return f;
     PlotterFirmware device(profile, 1);
-    Wire down, up;
+    test::VirtualWire down(57600), up(57600);  // seed 001 3.1.3.1's line, each way
     double t = 0.0;
     auto motion = std::make_unique<PlotterLinkMotion>(
         profile, [&](const std::vector<std::uint8_t>& bytes) { down.send(bytes, t); });
@@ -74,13 +48,7 @@ Figures runFile(const QString& path, const MachineProfile& profile) {
     XyController c(profile, std::move(motion));
     const double dt = PlotterFirmware::kTickS;
     auto step = [&] {
-        t += dt;
-        c.step(dt);
-        down.deliver(t, [&](std::uint8_t b, double at) { device.receive(b, at); });
-        device.step(dt, t);
-        up.send(device.takeOutput(), t);
-        up.deliver(t, [&](std::uint8_t b, double) { link->onBytes(&b, 1); });
-        c.drainEvents([](const ControllerEvent&) {});
+        test::stepOverWire(c, *link, device, down, up, t, dt, [](const ControllerEvent&) {});
     };
     c.selectAutomatic();
     for (int i = 0; i < 600000 && c.status().state != ControllerState::AutoIdle; ++i)

@@ -166,4 +166,14 @@ std::optional<DuplicateKey> findDuplicateKey(const QByteArray& json) {
     return std::nullopt;
 }
 
+QString duplicateKeyError(const QString& origin, const DuplicateKey& dup, const QString& kind) {
+    return (QStringLiteral("%1: %2: the key is given twice, at %3:%4 and %5:%6 (") + kind +
+            QStringLiteral(" says each key once)"))
+        .arg(origin, dup.path)
+        .arg(dup.first.line)
+        .arg(dup.first.column)
+        .arg(dup.second.line)
+        .arg(dup.second.column);
+}
+
 }  // namespace trilho

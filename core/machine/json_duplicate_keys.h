@@ -27,4 +27,9 @@ struct DuplicateKey {
 /// without harm (no recursion, linear time) and give some answer.
 std::optional<DuplicateKey> findDuplicateKey(const QByteArray& json);
 
+/// The strict readers' error for dup in the file named origin: "rail.json: loop.kp: the key is
+/// given twice, at 3:5 and 4:5 (a profile says each key once)"; kind names what the file is
+/// ("a profile", "a sidecar").
+QString duplicateKeyError(const QString& origin, const DuplicateKey& dup, const QString& kind);
+
 }  // namespace trilho

@@ -458,14 +458,7 @@ ProfileLoad machineProfileFromJson(const QByteArray& json, const QString& origin
     // QJsonDocument kept one of two equal keys and dropped the other without a word: the raw
     // text is scanned for them before anything is read from it.
     if (const auto dup = findDuplicateKey(json)) {
-        result.error = QStringLiteral(
-                           "%1: %2: the key is given twice, at %3:%4 and %5:%6 (a profile says "
-                           "each key once)")
-                           .arg(origin, dup->path)
-                           .arg(dup->first.line)
-                           .arg(dup->first.column)
-                           .arg(dup->second.line)
-                           .arg(dup->second.column);
+        result.error = duplicateKeyError(origin, *dup, QStringLiteral("a profile"));
         return result;
     }
     const QJsonObject root = doc.object();

@@ -105,23 +105,12 @@ std::uint64_t ServoWorker::loadProgram(std::shared_ptr<const Program> program,
 }
 
 void ServoWorker::requestEmergencyStop(std::int64_t requestedNs) {
-    if (requestedNs <= 0) requestedNs = monotonicNs();
-    // The fence first (raised, never lowered), then the request that publishes it.
-    const std::uint64_t queued = lastQueuedSeq_.load(std::memory_order_acquire);
-    std::uint64_t fence = estopFence_.load(std::memory_order_relaxed);
-    while (fence < queued && !estopFence_.compare_exchange_weak(fence, queued)) {
-    }
-    // A request already pending keeps its (earlier) time: the latency is the first key's.
-    std::int64_t none = 0;
-    estopRequestNs_.compare_exchange_strong(none, requestedNs);
+    estop_.request(requestedNs, lastQueuedSeq_.load(std::memory_order_acquire));
 }
 
 void ServoWorker::serveEmergencyStop() {
-    const std::int64_t requested = estopRequestNs_.exchange(0);
-    if (requested == 0) return;
-    controller_.emergencyStop();  // writes the drive to zero (RailServo::emergencyStop)
-    const std::int64_t zero = monotonicNs();
-    estopStamp_.store({requested, zero, ++estopCount_});
+    // Writes the drive to zero (RailServo::emergencyStop).
+    estop_.serve([this] { controller_.emergencyStop(); });
 }
 
 void ServoWorker::apply(const Command& c) {
@@ -169,7 +158,7 @@ void ServoWorker::run() {
         serveEmergencyStop();
         // Commands queued before the last E-stop request are older than it: each is followed
         // by the E-stop again, so the state is the E-stop's whatever they were.
-        const std::uint64_t fence = estopFence_.load(std::memory_order_acquire);
+        const std::uint64_t fence = estop_.fence();
         if (stopFlag_.exchange(false)) {
             controller_.stop();
             controller_.jogStop();

@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "core/machine/rail_controller.h"
+#include "core/runtime/estop_request.h"
 #include "core/runtime/estop_stamp.h"
 #include "core/runtime/event_ring.h"
 #include "core/runtime/latency_stats.h"
@@ -120,7 +121,7 @@ class ServoWorker {
     /// applies the E-stop again after it (a Reset E-stop queued before F1 never undoes it).
     void requestEmergencyStop(std::int64_t requestedNs = 0);
     /// The last E-stop served: its request's time and the time the drive was written to zero.
-    EStopStamp lastEmergencyStop() const { return estopStamp_.load(); }
+    EStopStamp lastEmergencyStop() const { return estop_.last(); }
 
     ControllerStatus snapshot() const { return status_.load(); }
     std::uint64_t snapshotVersion() const { return status_.version(); }
@@ -179,14 +180,9 @@ class ServoWorker {
     std::thread thread_, watchdogThread_;
     std::atomic<bool> running_{false};
     std::atomic<bool> stopFlag_{false}, tracing_{false};
-    /// The pending E-stop's request time (monotonicNs), 0 when none is pending.
-    std::atomic<std::int64_t> estopRequestNs_{0};
-    /// The last sequence number queued before the latest E-stop request: a command numbered
-    /// up to it is followed by the E-stop again when it is applied.
-    std::atomic<std::uint64_t> estopFence_{0};
+    /// The E-stop past the queue; its fence is a sequence number (lastQueuedSeq_).
+    EStopRequest estop_;
     std::atomic<std::uint64_t> lastQueuedSeq_{0};
-    SeqLock<EStopStamp> estopStamp_;
-    std::uint64_t estopCount_ = 0;  ///< servo thread only
     /// Serves a pending E-stop request (servo thread): the drive to zero, then the stamp.
     void serveEmergencyStop();
     std::atomic<bool> watchdogFlag_{false};

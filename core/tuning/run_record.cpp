@@ -527,14 +527,7 @@ std::optional<RunConditions> runConditionsFromJson(const QByteArray& json, const
     }
     // QJsonDocument keeps one of two equal keys without a word: which period was meant?
     if (const auto dup = findDuplicateKey(json)) {
-        *error = QStringLiteral(
-                     "%1: %2: the key is given twice, at %3:%4 and %5:%6 (a sidecar says each "
-                     "key once)")
-                     .arg(origin, dup->path)
-                     .arg(dup->first.line)
-                     .arg(dup->first.column)
-                     .arg(dup->second.line)
-                     .arg(dup->second.column);
+        *error = duplicateKeyError(origin, *dup, QStringLiteral("a sidecar"));
         return std::nullopt;
     }
     const QJsonObject o = doc.object();

@@ -638,6 +638,12 @@ void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq,
                                      .arg(client));
         finishCommand(seq, r, ticket, client, {}, c);
     };
+    // A command that does nothing in the machine's state, answered r now; the history says
+    // why in what: %1 the sequence, %2 the client, %3 the state's name.
+    auto refuseInState = [&](CommandResult r, const QString& what) {
+        refused(client, what.arg(seq).arg(client).arg(QLatin1String(controllerStateName(s.state))));
+        finishCommand(seq, r, std::nullopt, client);
+    };
     switch (c) {
         case Command::StartProgram: {
             // A command still on its way to the machine (a Start, a mode change) has not shown
@@ -681,12 +687,9 @@ void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq,
             // what it did is looked at once it is applied (appliedOutcome).
             if (!pending_ && s.state != ControllerState::Running &&
                 s.state != ControllerState::Waiting) {
-                refused(client, QStringLiteral("DNC: command hold (sequence %1) from %2: nothing "
-                                               "to do: no program is running (%3)")
-                                    .arg(seq)
-                                    .arg(client)
-                                    .arg(QLatin1String(controllerStateName(s.state))));
-                return finishCommand(seq, CommandResult::NothingToDo, std::nullopt, client);
+                return refuseInState(CommandResult::NothingToDo,
+                                     QStringLiteral("DNC: command hold (sequence %1) from %2: "
+                                                    "nothing to do: no program is running (%3)"));
             }
             return finish(CommandResult::Applied, machine_.send(CommandKind::Hold));
         case Command::Continue:
@@ -695,12 +698,9 @@ void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq,
             // nothing (F14). A command still on its way (a Hold just sent) has not shown in the
             // snapshot yet: that Continue goes to the machine as before.
             if (!pending_ && s.state != ControllerState::Paused) {
-                refused(client, QStringLiteral("DNC: command continue (sequence %1) from %2 "
-                                               "refused: nothing is paused (%3)")
-                                    .arg(seq)
-                                    .arg(client)
-                                    .arg(QLatin1String(controllerStateName(s.state))));
-                return finishCommand(seq, CommandResult::NotReady, std::nullopt, client);
+                return refuseInState(CommandResult::NotReady,
+                                     QStringLiteral("DNC: command continue (sequence %1) from %2 "
+                                                    "refused: nothing is paused (%3)"));
             }
             return finish(CommandResult::Applied, machine_.send(CommandKind::Continue));
         case Command::Stop:

@@ -67,26 +67,14 @@ void XyLink::postToPlant(std::function<void(XyPlant&)> cmd) {
 }
 
 void XyLink::requestEmergencyStop(std::int64_t requestedNs) {
-    if (requestedNs <= 0) requestedNs = monotonicNs();
-    // The fence first (raised, never lowered), then the request that publishes it.
-    const std::uint64_t posted = lastPosted_.load(std::memory_order_acquire);
-    std::uint64_t fence = estopFence_.load(std::memory_order_relaxed);
-    while (fence < posted && !estopFence_.compare_exchange_weak(fence, posted)) {
-    }
-    // A request already pending keeps its (earlier) time.
-    std::int64_t none = 0;
-    estopRequestNs_.compare_exchange_strong(none, requestedNs);
+    estop_.request(requestedNs, lastPosted_.load(std::memory_order_acquire));
     // A board on a line: its controller runs on this thread, between two of its steps; the
     // drives are cut now rather than at the step timer (which waits behind every other event).
     if (drive_ == Drive::EventLoop && QThread::currentThread() == thread()) serveEmergencyStop();
 }
 
 void XyLink::serveEmergencyStop() {
-    const std::int64_t requested = estopRequestNs_.exchange(0);
-    if (requested == 0) return;
-    machine_->controller().emergencyStop();  // cuts both drives (XyMotion::cut)
-    const std::int64_t zero = monotonicNs();
-    estopStamp_.store({requested, zero, ++estopCount_});
+    estop_.serve([this] { machine_->controller().emergencyStop(); });  // XyMotion::cut
 }
 
 XyStatus XyLink::status() const {
@@ -105,7 +93,7 @@ void XyLink::advance(double seconds) {
 void XyLink::stepOnce(double dtS) {
     // The E-stop first, before the lock the GUI and the DNC link take to post.
     serveEmergencyStop();
-    const std::uint64_t fence = estopFence_.load(std::memory_order_acquire);
+    const std::uint64_t fence = estop_.fence();
     std::vector<std::pair<std::uint64_t, std::function<void(XyRunnable&)>>> commands;
     {
         std::lock_guard<std::mutex> lock(mutex_);

@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "core/machine/xy_controller.h"
+#include "core/runtime/estop_request.h"
 #include "core/runtime/estop_stamp.h"
-#include "core/runtime/seqlock.h"
 #include "hal/sim/xy_plant.h"
 
 namespace trilho {
@@ -66,7 +66,7 @@ class XyLink : public QObject {
     /// never undoes it).
     void requestEmergencyStop(std::int64_t requestedNs = 0);
     /// The last E-stop served: its request's time and the time the drives were cut.
-    EStopStamp lastEmergencyStop() const { return estopStamp_.load(); }
+    EStopStamp lastEmergencyStop() const { return estop_.last(); }
     /// The worker thread runs SCHED_FIFO (Drive::Thread, when permitted).
     bool realtime() const { return realtime_.load(); }
     /// Runs cmd on the simulated plant before the next period (the Simulation dock's faults);
@@ -103,12 +103,9 @@ class XyLink : public QObject {
     mutable std::mutex mutex_;  ///< guards everything below it
     /// Commands with the number they were posted under (the E-stop's fence compares it).
     std::vector<std::pair<std::uint64_t, std::function<void(XyRunnable&)>>> commands_;
-    std::uint64_t posted_ = 0;                     ///< commands posted so far (mutex_)
-    std::atomic<std::uint64_t> lastPosted_{0};     ///< posted_, readable without the lock
-    std::atomic<std::int64_t> estopRequestNs_{0};  ///< the pending request's time; 0: none
-    std::atomic<std::uint64_t> estopFence_{0};     ///< the last command posted before it
-    SeqLock<EStopStamp> estopStamp_;
-    std::uint64_t estopCount_ = 0;  ///< worker side
+    std::uint64_t posted_ = 0;                  ///< commands posted so far (mutex_)
+    std::atomic<std::uint64_t> lastPosted_{0};  ///< posted_, readable without the lock
+    EStopRequest estop_;                        ///< its fence is a command's number (lastPosted_)
     bool simulated_ = false;
     std::deque<XyTraceRow> rows_;
     std::vector<ControllerEvent> events_;

@@ -12,10 +12,12 @@
 #include <QTemporaryDir>
 
 #include "tests/integration/cli_process.h"
+#include "tests/support/json_leaves.h"
 
 namespace {
 
 using trilho::test::CliResult;
+using trilho::test::jsonLeavesOf;
 using trilho::test::runCli;
 
 QStringList tune(const char* sub, QStringList more = {}) {
@@ -93,23 +95,6 @@ TEST(CliTuneModel, AutoWritesAProfileThatRunTakes) {
     EXPECT_EQ(run.exit, 0) << run.out.toStdString() << run.err.toStdString();
 }
 
-/// Every leaf of o by its dotted path ("loop.engineered.kp").
-void leaves(const QJsonObject& o, const QString& prefix, QMap<QString, QJsonValue>& into) {
-    for (auto it = o.begin(); it != o.end(); ++it) {
-        const QString path = prefix.isEmpty() ? it.key() : prefix + QLatin1Char('.') + it.key();
-        if (it.value().isObject())
-            leaves(it.value().toObject(), path, into);
-        else
-            into.insert(path, it.value());
-    }
-}
-
-QMap<QString, QJsonValue> leavesOf(const QByteArray& json) {
-    QMap<QString, QJsonValue> out;
-    leaves(QJsonDocument::fromJson(json).object(), QString(), out);
-    return out;
-}
-
 bool isNote(const QString& path) {
     return path.endsWith(QLatin1String("source")) || path.endsWith(QLatin1String("comment"));
 }
@@ -118,7 +103,7 @@ bool isNote(const QString& path) {
 QMap<QString, QJsonValue> valuesOf(const QString& file) {
     const CliResult r = runCli({QStringLiteral("profile"), file});
     EXPECT_EQ(r.exit, 0) << r.err.toStdString();
-    QMap<QString, QJsonValue> all = leavesOf(r.out.toUtf8());
+    QMap<QString, QJsonValue> all = jsonLeavesOf(r.out.toUtf8());
     for (auto it = all.begin(); it != all.end();)
         it = isNote(it.key()) ? all.erase(it) : std::next(it);
     return all;
@@ -134,8 +119,8 @@ void expectEveryKeyNotChangedKept(const QString& in, const QString& out, QString
     ASSERT_EQ(r.exit, 0) << r.err.toStdString() << r.out.toStdString();
     QFile i(in), o(out);
     ASSERT_TRUE(i.open(QIODevice::ReadOnly) && o.open(QIODevice::ReadOnly));
-    const QMap<QString, QJsonValue> original = leavesOf(i.readAll()),
-                                    written = leavesOf(o.readAll());
+    const QMap<QString, QJsonValue> original = jsonLeavesOf(i.readAll()),
+                                    written = jsonLeavesOf(o.readAll());
     const QMap<QString, QJsonValue> before = valuesOf(in), after = valuesOf(out);
     int notes = 0, changed = 0;
     for (auto it = original.begin(); it != original.end(); ++it) {

@@ -5,19 +5,14 @@
 // written when the link stops (DncServer::flushHistory, called by serve and the screens).
 #include <gtest/gtest.h>
 
-#include <QCoreApplication>
-
 #include "tests/integration/dnc_virtual_rig.h"
 
 namespace trilho::dnc {
 namespace {
 
-using test::VirtualRig;
+class DncAcceptedWrites : public test::VirtualRigTest {};
 
-TEST(DncAcceptedWrites, AGainsChangeSaysTheGainsOldAndNewValues) {
-    int argc = 0;
-    QCoreApplication app(argc, nullptr);
-    VirtualRig rig;
+TEST_F(DncAcceptedWrites, AGainsChangeSaysTheGainsOldAndNewValues) {
     ASSERT_EQ(rig.machine.snapshot().law, LoopLaw::Engineered);
     ASSERT_FLOAT_EQ(static_cast<float>(rig.machine.snapshot().gains.kp), 1.2f);
     ASSERT_FALSE(rig.writeFloats(hold::kKp, {2.0f, 0.5f, 0.02f}).isException());
@@ -35,10 +30,7 @@ TEST(DncAcceptedWrites, AGainsChangeSaysTheGainsOldAndNewValues) {
         << rig.said().toStdString();
 }
 
-TEST(DncAcceptedWrites, AnOverrideSaysItsOldAndNewValues) {
-    int argc = 0;
-    QCoreApplication app(argc, nullptr);
-    VirtualRig rig;
+TEST_F(DncAcceptedWrites, AnOverrideSaysItsOldAndNewValues) {
     ASSERT_FALSE(rig.writeFloats(hold::kFeedOverride, {0.25f}).isException());
     EXPECT_EQ(rig.history
                   .filter(QStringLiteral("DNC: feed override 100 % -> 25 % (holding 6-7) "
@@ -48,10 +40,7 @@ TEST(DncAcceptedWrites, AnOverrideSaysItsOldAndNewValues) {
         << rig.said().toStdString();
 }
 
-TEST(DncAcceptedWrites, WritesPastTheLimitKeepTheirValuesAreNeverCalledRefusedAndAreFlushed) {
-    int argc = 0;
-    QCoreApplication app(argc, nullptr);
-    VirtualRig rig;
+TEST_F(DncAcceptedWrites, WritesPastTheLimitKeepTheirValuesAreNeverCalledRefusedAndAreFlushed) {
     // Three writes: as many as a client has written whole in a window.
     for (float f : {0.5f, 0.75f, 1.0f})
         ASSERT_FALSE(rig.writeFloats(hold::kFeedOverride, {f}).isException());

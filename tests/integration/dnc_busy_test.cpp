@@ -16,6 +16,7 @@
 #include "host/dnc/dnc_server.h"
 #include "host/dnc/register_store.h"
 #include "host/dnc/shared_worker_machine.h"
+#include "tests/support/remote_dnc_server.h"
 
 namespace trilho::dnc {
 namespace {
@@ -49,14 +50,7 @@ struct Rig {
 
     Rig() {
         rail.placeAt(0.0);
-        CompileOptions options;
-        options.machine = profile.limits;
-        dnc = std::make_unique<DncServer>(machine, ProgramLibrary(dir.path(), options));
-        server = new ExposedServer(dnc.get());
-        dnc->adopt(server);
-        dnc->setRemote(true);
-        QObject::connect(dnc.get(), &DncServer::historyLine,
-                         [this](const QString& l) { history << l; });
+        test::serveRemotely(machine, profile, dir.path(), dnc, server, history);
         QFile f(dir.filePath(QStringLiteral("0042.G")));
         EXPECT_TRUE(f.open(QIODevice::WriteOnly));
         f.write("G1 X20 F50\nM2\n");

@@ -5,7 +5,6 @@
 // download whose commit failed may commit it again.
 #include <gtest/gtest.h>
 
-#include <QCoreApplication>
 #include <QDir>
 #include <QRegularExpression>
 
@@ -16,7 +15,7 @@ namespace {
 
 using test::kClientA;
 using test::kClientB;
-using test::VirtualRig;
+class DncNothingToDo : public test::VirtualRigTest {};
 
 constexpr auto kApplied = static_cast<std::uint16_t>(CommandResult::Applied);
 constexpr auto kBusy = static_cast<std::uint16_t>(CommandResult::Busy);
@@ -36,10 +35,7 @@ QByteArray fileWrite(std::uint16_t file, std::uint16_t record, const QByteArray&
     return QByteArray(1, static_cast<char>(sub.size())) + sub;
 }
 
-TEST(DncNothingToDo, AHoldWithNoProgramRunningIsNothingToDoNeverApplied) {
-    int argc = 0;
-    QCoreApplication app(argc, nullptr);
-    VirtualRig rig;
+TEST_F(DncNothingToDo, AHoldWithNoProgramRunningIsNothingToDoNeverApplied) {
     // Manual, at rest.
     ASSERT_EQ(rig.machine.snapshot().state, ControllerState::Manual);
     EXPECT_EQ(rig.command(Command::Hold, 0, 1), kNothingToDo) << rig.said().toStdString();
@@ -80,10 +76,7 @@ TEST(DncNothingToDo, AHoldWithNoProgramRunningIsNothingToDoNeverApplied) {
     EXPECT_EQ(rig.machine.snapshot().pause, PauseReason::Hold);
 }
 
-TEST(DncNothingToDo, ACommitByAClientWhoseWritesWereAllRefusedIsNothingToDo) {
-    int argc = 0;
-    QCoreApplication app(argc, nullptr);
-    VirtualRig rig;
+TEST_F(DncNothingToDo, ACommitByAClientWhoseWritesWereAllRefusedIsNothingToDo) {
     rig.writeDownload(42, kProgram, kClientA);
     ASSERT_EQ(rig.command(Command::CommitDownload, 42, 1, kClientA), kApplied)
         << rig.said().toStdString();
@@ -106,10 +99,7 @@ TEST(DncNothingToDo, ACommitByAClientWhoseWritesWereAllRefusedIsNothingToDo) {
         << rig.said().toStdString();
 }
 
-TEST(DncNothingToDo, ACommitWithNothingWrittenSinceTheLastIsNothingToDo) {
-    int argc = 0;
-    QCoreApplication app(argc, nullptr);
-    VirtualRig rig;
+TEST_F(DncNothingToDo, ACommitWithNothingWrittenSinceTheLastIsNothingToDo) {
     // Nothing ever written.
     EXPECT_EQ(rig.command(Command::CommitDownload, 7, 1), kNothingToDo);
     rig.writeDownload(42, kProgram);
@@ -120,10 +110,7 @@ TEST(DncNothingToDo, ACommitWithNothingWrittenSinceTheLastIsNothingToDo) {
         << rig.said().toStdString();
 }
 
-TEST(DncNothingToDo, AFileRecordWriteRefusedDoesNotMakeItsClientTheBlocksOwner) {
-    int argc = 0;
-    QCoreApplication app(argc, nullptr);
-    VirtualRig rig;
+TEST_F(DncNothingToDo, AFileRecordWriteRefusedDoesNotMakeItsClientTheBlocksOwner) {
     rig.writeDownload(42, kProgram, kClientA);
     ASSERT_EQ(rig.command(Command::CommitDownload, 42, 1, kClientA), kApplied);
     // B's only write, refused (not ASCII), then A writes again: the block is A's, not B's.
@@ -136,20 +123,14 @@ TEST(DncNothingToDo, AFileRecordWriteRefusedDoesNotMakeItsClientTheBlocksOwner) 
     EXPECT_EQ(rig.programFile(43), kProgram);
 }
 
-TEST(DncNothingToDo, AnotherClientsDownloadInProgressIsStillBusy) {
-    int argc = 0;
-    QCoreApplication app(argc, nullptr);
-    VirtualRig rig;
+TEST_F(DncNothingToDo, AnotherClientsDownloadInProgressIsStillBusy) {
     rig.writeDownload(42, kProgram, kClientA);
     EXPECT_EQ(rig.command(Command::CommitDownload, 42, 1, kClientB), kBusy);
     EXPECT_EQ(rig.command(Command::CommitDownload, 42, 2, kClientA), kApplied);
     EXPECT_EQ(rig.programFile(42), kProgram);
 }
 
-TEST(DncNothingToDo, TheOwnerOfADownloadWhoseSaveFailedCommitsItAgain) {
-    int argc = 0;
-    QCoreApplication app(argc, nullptr);
-    VirtualRig rig;
+TEST_F(DncNothingToDo, TheOwnerOfADownloadWhoseSaveFailedCommitsItAgain) {
     // A folder stands at the program's name: the save fails (as on a full disk).
     ASSERT_TRUE(QDir(rig.dir.path()).mkdir(QStringLiteral("0044.G")));
     rig.writeDownload(44, kProgram);

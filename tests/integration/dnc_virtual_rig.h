@@ -4,6 +4,7 @@
 // listener hands them, from a client named by its address. The history lines are collected.
 #include <gtest/gtest.h>
 
+#include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QModbusPdu>
@@ -15,6 +16,7 @@
 #include "host/dnc/dnc_server.h"
 #include "host/dnc/register_store.h"
 #include "host/dnc/virtual_machine.h"
+#include "tests/support/remote_dnc_server.h"
 
 namespace trilho::dnc::test {
 
@@ -34,16 +36,7 @@ struct VirtualRig {
     RegisterStore* server = nullptr;
     QStringList history;
 
-    VirtualRig() {
-        CompileOptions options;
-        options.machine = profile.limits;
-        dnc = std::make_unique<DncServer>(machine, ProgramLibrary(dir.path(), options));
-        server = new RegisterStore(dnc.get());
-        dnc->adopt(server);
-        dnc->setRemote(true);
-        QObject::connect(dnc.get(), &DncServer::historyLine,
-                         [this](const QString& l) { history << l; });
-    }
+    VirtualRig() { serveRemotely(machine, profile, dir.path(), dnc, server, history); }
     QString said() const { return history.join(QLatin1Char('\n')); }
     QModbusResponse request(QModbusPdu::FunctionCode fc, const QByteArray& data,
                             const QString& client = kClientA) {
@@ -134,6 +127,14 @@ struct VirtualRig {
         while (t.nsecsElapsed() < 2'000'000) {
         }
     }
+};
+
+/// A test on a VirtualRig, with the QCoreApplication its server's objects need.
+class VirtualRigTest : public ::testing::Test {
+  protected:
+    int argc_ = 0;
+    QCoreApplication app_{argc_, nullptr};
+    VirtualRig rig;
 };
 
 }  // namespace trilho::dnc::test

@@ -16,6 +16,7 @@
 #include "host/dnc/dnc_server.h"
 #include "host/dnc/register_store.h"
 #include "host/dnc/xy_virtual_machine.h"
+#include "tests/support/remote_dnc_server.h"
 
 namespace trilho::dnc {
 namespace {
@@ -43,14 +44,7 @@ struct Rig {
     QStringList history;
 
     explicit Rig(const MachineProfile& p, const QByteArray& program) : profile(p), machine(p, 0) {
-        CompileOptions options;
-        options.machine = profile.limits;
-        dnc = std::make_unique<DncServer>(machine, ProgramLibrary(dir.path(), options));
-        server = new RegisterStore(dnc.get());
-        dnc->adopt(server);
-        dnc->setRemote(true);
-        QObject::connect(dnc.get(), &DncServer::historyLine,
-                         [this](const QString& l) { history << l; });
+        test::serveRemotely(machine, profile, dir.path(), dnc, server, history);
         QFile f(dir.filePath(QStringLiteral("0042.G")));
         EXPECT_TRUE(f.open(QIODevice::WriteOnly));
         f.write(program);

@@ -17,6 +17,7 @@
 #include "core/protocol/plotter_host.h"
 #include "hal/emulator/plotter_firmware.h"
 #include "tests/support/virtual_serial_line.h"
+#include "tests/support/xy_over_wire.h"
 
 using namespace trilho;
 
@@ -76,13 +77,7 @@ ProgramRun runProgram(const std::string& text,
     XyController c(profile, std::move(motion));
     const double dt = PlotterFirmware::kTickS;
     auto step = [&] {
-        t += dt;
-        c.step(dt);
-        down.deliver(t, [&](std::uint8_t b, double at) { device.receive(b, at); });
-        device.step(dt, t);
-        up.send(device.takeOutput(), t);
-        up.deliver(t, [&](std::uint8_t b, double) { link->onBytes(&b, 1); });
-        c.drainEvents([&](const ControllerEvent& e) {
+        test::stepOverWire(c, *link, device, down, up, t, dt, [&](const ControllerEvent& e) {
             if (e.kind == EventKind::ProgramEnd) endEvent = true;
             if (e.kind == EventKind::AlarmRaised) alarm = e.alarm, alarmValue = e.value;
         });

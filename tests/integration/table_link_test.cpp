@@ -14,6 +14,7 @@
 #include "core/protocol/table_host.h"
 #include "hal/emulator/table_firmware.h"
 #include "tests/support/virtual_serial_line.h"
+#include "tests/support/xy_over_wire.h"
 
 using namespace trilho;
 
@@ -350,13 +351,7 @@ TEST(TableLink, ATargetTheWireCannotCarryStopsTheRunAndIsNeverSaidReached) {
     AlarmCode alarm = AlarmCode::None;
     double alarmValue = -1.0;
     auto step = [&] {
-        t += kDtS;
-        c.step(kDtS);
-        down.deliver(t, [&](std::uint8_t b, double at) { device.receive(b, at); });
-        device.step(kDtS, t);
-        up.send(device.takeOutput(), t);
-        up.deliver(t, [&](std::uint8_t b, double) { link->onBytes(&b, 1); });
-        c.drainEvents([&](const ControllerEvent& e) {
+        test::stepOverWire(c, *link, device, down, up, t, kDtS, [&](const ControllerEvent& e) {
             if (e.kind == EventKind::ProgramEnd) endEvent = true;
             if (e.kind == EventKind::AlarmRaised) alarm = e.alarm, alarmValue = e.value;
         });

@@ -10,6 +10,7 @@
 #include <QRegularExpression>
 #include <QTest>
 #include <functional>
+#include <utility>
 
 #include "core/protocol/table_host.h"
 #include "hal/serial/serial_line.h"
@@ -59,6 +60,28 @@ struct Device {
     }
 };
 
+/// TableHost on a SerialLine at 9600 bit/s, as the screens drive the table: the host hears each
+/// byte the line receives, stamped now() (s), and pump() polls it and writes what it has due.
+struct HostOnLine {
+    std::function<double()> now;
+    SerialLine line;
+    TableHost host;
+
+    explicit HostOnLine(std::function<double()> clock) : now(std::move(clock)) {}
+    bool open(const QString& path, QString* error) {
+        if (!line.open({path, 9600, false}, error)) return false;
+        QObject::connect(&line, &SerialLine::received, [this](const QByteArray& bytes) {
+            for (char b : bytes)
+                host.receive(static_cast<std::uint8_t>(b), now());
+        });
+        return true;
+    }
+    void pump() {
+        host.poll(now());
+        line.write(host.takeOutput());
+    }
+};
+
 }  // namespace
 
 TEST(TablePty, TheHostDrivesTrilhoDeviceTableUntilAck) {
@@ -66,24 +89,18 @@ TEST(TablePty, TheHostDrivesTrilhoDeviceTableUntilAck) {
     ASSERT_TRUE(device.start({QStringLiteral("table")})) << device.out.toStdString();
     EXPECT_TRUE(device.path.startsWith(QStringLiteral("/dev/pts/"))) << device.path.toStdString();
 
-    SerialLine line;
-    QString error;
-    ASSERT_TRUE(line.open({device.path, 9600, false}, &error)) << error.toStdString();
-    QElapsedTimer clock;
-    clock.start();
+    QElapsedTimer clock;  // started once the line is open: the time printed is the moves'
     auto now = [&] { return static_cast<double>(clock.nsecsElapsed()) * 1e-9; };
-    TableHost host;
-    QObject::connect(&line, &SerialLine::received, [&](const QByteArray& bytes) {
-        for (char b : bytes)
-            host.receive(static_cast<std::uint8_t>(b), now());
-    });
+    HostOnLine on{now};
+    QString error;
+    ASSERT_TRUE(on.open(device.path, &error)) << error.toStdString();
+    clock.start();
+    SerialLine& line = on.line;
+    TableHost& host = on.host;
     ASSERT_TRUE(host.moveTo(30, 20));
     ASSERT_TRUE(host.moveTo(10, 40));
-    const bool done = waitFor([&] { return host.idle() || host.failed(); }, 15.0,
-                              [&] {
-                                  host.poll(now());
-                                  line.write(host.takeOutput());
-                              });
+    const bool done =
+        waitFor([&] { return host.idle() || host.failed(); }, 15.0, [&] { on.pump(); });
     ASSERT_TRUE(done) << "no ACK within 15 s";
     ASSERT_TRUE(host.idle()) << host.error();
     EXPECT_EQ(host.stats().acknowledged, 2u);
@@ -120,38 +137,24 @@ TEST(TablePty, AHostStartedWhileTheBoardFinishesAKilledHostsMoveGoesOn) {
     auto now = [&] { return static_cast<double>(clock.nsecsElapsed()) * 1e-9; };
     {
         // The first screens: the check, then (150, 150); killed once the set point is out.
-        SerialLine line;
+        HostOnLine first{now};
         QString error;
-        ASSERT_TRUE(line.open({device.path, 9600, false}, &error)) << error.toStdString();
-        TableHost host;
-        QObject::connect(&line, &SerialLine::received, [&](const QByteArray& bytes) {
-            for (char b : bytes)
-                host.receive(static_cast<std::uint8_t>(b), now());
-        });
-        ASSERT_TRUE(host.moveTo(150, 150));
-        ASSERT_TRUE(waitFor([&] { return line.bytesWritten() >= 8u; }, 10.0,
-                            [&] {
-                                host.poll(now());
-                                line.write(host.takeOutput());
-                            }));
-        QTest::qWait(50);  // the 4 bytes on their way (4 ms at 9600 bit/s)
-        line.close();      // killed: the board moves on alone
+        ASSERT_TRUE(first.open(device.path, &error)) << error.toStdString();
+        ASSERT_TRUE(first.host.moveTo(150, 150));
+        ASSERT_TRUE(
+            waitFor([&] { return first.line.bytesWritten() >= 8u; }, 10.0, [&] { first.pump(); }));
+        QTest::qWait(50);    // the 4 bytes on their way (4 ms at 9600 bit/s)
+        first.line.close();  // killed: the board moves on alone
     }
-    SerialLine line;
+    HostOnLine on{now};
     QString error;
-    ASSERT_TRUE(line.open({device.path, 9600, false}, &error)) << error.toStdString();
-    TableHost host;
-    QObject::connect(&line, &SerialLine::received, [&](const QByteArray& bytes) {
-        for (char b : bytes)
-            host.receive(static_cast<std::uint8_t>(b), now());
-    });
+    ASSERT_TRUE(on.open(device.path, &error)) << error.toStdString();
+    SerialLine& line = on.line;
+    TableHost& host = on.host;
     // The program resumed: its set point again (the board stands there: no new move).
     ASSERT_TRUE(host.moveTo(150, 150));
-    const bool done = waitFor([&] { return host.idle() || host.failed(); }, 20.0,
-                              [&] {
-                                  host.poll(now());
-                                  line.write(host.takeOutput());
-                              });
+    const bool done =
+        waitFor([&] { return host.idle() || host.failed(); }, 20.0, [&] { on.pump(); });
     ASSERT_TRUE(done) << "no end within 20 s";
     ASSERT_TRUE(host.idle()) << host.error();
     EXPECT_FALSE(host.offPath());

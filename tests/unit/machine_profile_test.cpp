@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/machine/machine_profile.h"
+#include "tests/support/json_leaves.h"
 
 namespace trilho {
 namespace {
@@ -151,22 +152,7 @@ TEST(MachineProfileStrict, SourceAndCommentStringsAreAllowedAnywhere) {
 
 namespace {
 
-/// Every leaf of o by its dotted path ("loop.engineered.kp").
-void leaves(const QJsonObject& o, const QString& prefix, QMap<QString, QJsonValue>& into) {
-    for (auto it = o.begin(); it != o.end(); ++it) {
-        const QString path = prefix.isEmpty() ? it.key() : prefix + QLatin1Char('.') + it.key();
-        if (it.value().isObject())
-            leaves(it.value().toObject(), path, into);
-        else
-            into.insert(path, it.value());
-    }
-}
-
-QMap<QString, QJsonValue> leavesOf(const QByteArray& json) {
-    QMap<QString, QJsonValue> out;
-    leaves(QJsonDocument::fromJson(json).object(), QString(), out);
-    return out;
-}
+using test::jsonLeavesOf;
 
 std::string shown(const QJsonValue& v) {
     return QJsonDocument(QJsonArray{v}).toJson(QJsonDocument::Compact).toStdString();
@@ -190,7 +176,7 @@ TEST(MachineProfile, WritingBackKeepsTheNotesAndEveryKeyNotChanged) {
     tuned.loop.engineered.kp = 2.25;  // what a tuning changes
     tuned.motion.accelerationMmS2 = 2000.0;
     const QByteArray written = machineProfileToJson(tuned);
-    const QMap<QString, QJsonValue> before = leavesOf(original), after = leavesOf(written);
+    const QMap<QString, QJsonValue> before = jsonLeavesOf(original), after = jsonLeavesOf(written);
     for (auto it = before.begin(); it != before.end(); ++it) {
         if (it.key() == QLatin1String("loop.engineered.kp")) continue;
         EXPECT_EQ(after.value(it.key()), it.value())
@@ -200,7 +186,8 @@ TEST(MachineProfile, WritingBackKeepsTheNotesAndEveryKeyNotChanged) {
     EXPECT_EQ(after.value(QStringLiteral("loop.engineered.kp")), QJsonValue(2.25));
     EXPECT_EQ(after.value(QStringLiteral("motion.accelerationMmS2")), QJsonValue(2000.0));
     // In full: every key of the plain profile is there.
-    const QMap<QString, QJsonValue> plain = leavesOf(machineProfileToJson(MachineProfile::rail()));
+    const QMap<QString, QJsonValue> plain =
+        jsonLeavesOf(machineProfileToJson(MachineProfile::rail()));
     for (auto it = plain.begin(); it != plain.end(); ++it)
         EXPECT_TRUE(after.contains(it.key())) << it.key().toStdString();
     // It reads back as the tuned profile, and writes back the same bytes.
@@ -219,8 +206,8 @@ TEST(MachineProfile, TheShippedTablesNotesAreWrittenBack) {
     const QByteArray original = f.readAll();
     const ProfileLoad load = machineProfileFromJson(original, QStringLiteral("xy_dc_table.json"));
     ASSERT_TRUE(load.profile) << load.error.toStdString();
-    const QMap<QString, QJsonValue> before = leavesOf(original);
-    const QMap<QString, QJsonValue> after = leavesOf(machineProfileToJson(*load.profile));
+    const QMap<QString, QJsonValue> before = jsonLeavesOf(original);
+    const QMap<QString, QJsonValue> after = jsonLeavesOf(machineProfileToJson(*load.profile));
     int notes = 0;
     for (auto it = before.begin(); it != before.end(); ++it) {
         EXPECT_EQ(after.value(it.key()), it.value())

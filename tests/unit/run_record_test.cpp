@@ -311,27 +311,25 @@ TEST(RunRecord, ASidecarOfAnotherMachineIsRefusedAtTheHeader) {
     writeFile(side, runConditionsToJson(table, nullptr));
     RunLoad l = loadRunRecord(csv, 'x');
     ASSERT_TRUE(l.record) << l.error.toStdString();  // a table's run: both axes, no axis
+    // The trace of two axes refused beside sidecar (read for axis): why, after the header's
+    // first column of an axis.
+    auto refusedBeside = [&](const RunConditions& sidecar, char axis, const QString& why) {
+        writeFile(side, runConditionsToJson(sidecar, nullptr));
+        const RunLoad r = loadRunRecord(csv, axis);
+        EXPECT_FALSE(r.record);
+        EXPECT_TRUE(r.error.startsWith(
+            csv + QStringLiteral(":1:13: x_setpoint_mm: a trace of two axes, but ") + side + why))
+            << r.error.toStdString();
+    };
     // The rail's sidecar beside it.
     RunConditions rail;
     rail.periodS = 0.005;
     rail.rows = 2;
-    writeFile(side, runConditionsToJson(rail, nullptr));
-    l = loadRunRecord(csv, 'x');
-    EXPECT_FALSE(l.record);
-    EXPECT_TRUE(
-        l.error.startsWith(csv + QStringLiteral(":1:13: x_setpoint_mm: a trace of two axes, but ") +
-                           side + QStringLiteral(": kind: \"rail\" (one axis)")))
-        << l.error.toStdString();
+    refusedBeside(rail, 'x', QStringLiteral(": kind: \"rail\" (one axis)"));
     // A step test of one table axis beside it.
     RunConditions step = table;
     step.axis = 'x';
-    writeFile(side, runConditionsToJson(step, nullptr));
-    l = loadRunRecord(csv, 'y');
-    EXPECT_FALSE(l.record);
-    EXPECT_TRUE(
-        l.error.startsWith(csv + QStringLiteral(":1:13: x_setpoint_mm: a trace of two axes, but ") +
-                           side + QStringLiteral(": axis: \"x\" (a test of one axis)")))
-        << l.error.toStdString();
+    refusedBeside(step, 'y', QStringLiteral(": axis: \"x\" (a test of one axis)"));
     // The table's run beside a trace of one axis.
     writeFile(csv, "t_s,setpoint_mm,position_mm\n0.0050,0.0000,0.0000\n0.0100,1.0000,0.5000\n");
     writeFile(side, runConditionsToJson(table, nullptr));

@@ -41,6 +41,7 @@
 #include "host/dnc/modbus_tcp_listener.h"
 #include "host/session/xy_device_session.h"
 #include "host/session/xy_session_runnable.h"
+#include "tests/support/journal_marks.h"
 #include "ui/dnc_dialog.h"
 #include "ui/dnc_link.h"
 #include "ui/dnc_settings.h"
@@ -115,6 +116,29 @@ QString startDevice(QProcess& device, const QString& board) {
         said += QString::fromUtf8(device.readAllStandardOutput());
     }
     return re.match(said).captured(1);
+}
+/// The screens' link to a board on a serial port, made as the program makes it: the machine
+/// steps on the event loop, board is the link's motion (for the window's link label). link is
+/// null and error says why when the port cannot be opened.
+struct BoardLink {
+    std::unique_ptr<XyLink> link;
+    SerialLinkMotion* board = nullptr;
+    QString error;
+};
+
+BoardLink boardLink(const MachineProfile& profile, const QString& port) {
+    SerialSettings serial;
+    serial.port = port;
+    XyDeviceSession made = makeXyDeviceSession(profile, serial);
+    BoardLink b;
+    if (!made.session) {
+        b.error = made.error;
+        return b;
+    }
+    auto runnable = std::make_unique<XyDeviceRunnable>(std::move(made));
+    b.board = runnable->link();
+    b.link = std::make_unique<XyLink>(std::move(runnable), XyLink::Drive::EventLoop);
+    return b;
 }
 }  // namespace
 
@@ -263,23 +287,15 @@ class XyScreensTest : public QObject {
         QTemporaryDir dir;
         QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
         const QString path = dir.filePath(QStringLiteral("history-xy_plotter.log"));
-        auto readAll = [&] {
-            QFile f(path);
-            return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-        };
         {
             auto link = virtualLink(shipped("xy_plotter.json"));
             XyMainWindow w(*link, settings);
             QVERIFY(w.openJournal(path));
-            const QByteArray started = readAll();
-            QVERIFY2(started.contains("\tstart\t"), started.constData());
-            QVERIFY2(
-                started.contains("pid " + QByteArray::number(QCoreApplication::applicationPid())),
-                started.constData());
-            QVERIFY(!started.contains("\tstop\t"));
+            const QString started = test::startMarkProblem(test::journalBytes(path));
+            QVERIFY2(started.isEmpty(), qPrintable(started));
         }
-        const QList<QByteArray> lines = readAll().trimmed().split('\n');
-        QVERIFY2(lines.last().contains("\tstop\t"), lines.last().constData());
+        const QString stopped = test::stopMarkProblem(test::journalBytes(path));
+        QVERIFY2(stopped.isEmpty(), qPrintable(stopped));
     }
 
     // Issue 30 item 7: a journal whose last mark is a start with no stop (the screens killed)
@@ -355,13 +371,10 @@ class XyScreensTest : public QObject {
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("history-xy_dc_table.log"));
         writeKilledJournal(path);
-        SerialSettings serial;
-        serial.port = pty;
-        XyDeviceSession made = makeXyDeviceSession(shipped("xy_dc_table.json"), serial);
-        QVERIFY2(made.session != nullptr, qPrintable(made.error));
-        auto runnable = std::make_unique<XyDeviceRunnable>(std::move(made));
-        SerialLinkMotion* board = runnable->link();
-        XyLink link(std::move(runnable), XyLink::Drive::EventLoop);
+        const BoardLink made = boardLink(shipped("xy_dc_table.json"), pty);
+        QVERIFY2(made.link != nullptr, qPrintable(made.error));
+        XyLink& link = *made.link;
+        SerialLinkMotion* board = made.board;
         QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
         XyMainWindow w(link, settings);
         w.setDeviceLink(board, pty, 9600);
@@ -394,13 +407,10 @@ class XyScreensTest : public QObject {
         QProcess device;
         const QString pty = startDevice(device, QStringLiteral("plotter"));
         QVERIFY(!pty.isEmpty());
-        SerialSettings serial;
-        serial.port = pty;
-        XyDeviceSession made = makeXyDeviceSession(shipped("xy_plotter.json"), serial);
-        QVERIFY2(made.session != nullptr, qPrintable(made.error));
-        auto runnable = std::make_unique<XyDeviceRunnable>(std::move(made));
-        SerialLinkMotion* board = runnable->link();
-        XyLink link(std::move(runnable), XyLink::Drive::EventLoop);
+        const BoardLink made = boardLink(shipped("xy_plotter.json"), pty);
+        QVERIFY2(made.link != nullptr, qPrintable(made.error));
+        XyLink& link = *made.link;
+        SerialLinkMotion* board = made.board;
         QTemporaryDir dir;
         QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
         XyMainWindow w(link, settings);
@@ -1076,13 +1086,10 @@ class XyScreensTest : public QObject {
         plug(relay);
 
         const MachineProfile profile = shipped("xy_plotter.json");
-        SerialSettings serial;
-        serial.port = cable;
-        XyDeviceSession made = makeXyDeviceSession(profile, serial);
-        QVERIFY2(made.session != nullptr, qPrintable(made.error));
-        auto runnable = std::make_unique<XyDeviceRunnable>(std::move(made));
-        SerialLinkMotion* line = runnable->link();
-        XyLink link(std::move(runnable), XyLink::Drive::EventLoop);
+        const BoardLink made = boardLink(profile, cable);
+        QVERIFY2(made.link != nullptr, qPrintable(made.error));
+        XyLink& link = *made.link;
+        SerialLinkMotion* line = made.board;
         QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
         XyMainWindow w(link, settings);
         w.setConfirmer([](const QString&, const QString&) { return true; });
