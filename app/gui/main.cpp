@@ -10,6 +10,7 @@
 #include <QStandardPaths>
 #include <QTimer>
 #include <cstdio>
+#include <cstring>
 
 #include "core/machine/machine_profile.h"
 #include "host/common/data_paths.h"
@@ -20,6 +21,7 @@
 #include "ui/main_window.h"
 #include "ui/settings_saved.h"
 #include "ui/start_screen.h"
+#include "ui/termination_signals.h"
 #include "ui/theme.h"
 #include "ui/workbench/workbench_window.h"
 #include "ui/xy/xy_main_window.h"
@@ -141,6 +143,14 @@ int main(int argc, char* argv[]) {
     if (!displayAvailable()) return 2;
     QApplication app(argc, argv);
     nameApplication();
+    // SIGTERM, SIGINT, SIGHUP: the screens stop as File > Exit's last step does (the machine
+    // stopped with its windows, the journal's stop mark), not killed where they stand.
+    ui::TerminationSignals termination;
+    QObject::connect(&termination, &ui::TerminationSignals::received, &app, [](int signal) {
+        std::fprintf(stderr, "trilho: %s: stopping the machine and the screens\n",
+                     strsignal(signal));
+        QCoreApplication::exit(0);
+    });
 
     QCommandLineParser parser;
     options.addTo(parser);
