@@ -1,6 +1,7 @@
 #include "host/dnc/xy_virtual_machine.h"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 namespace trilho::dnc {
@@ -43,15 +44,23 @@ ControllerStatus asRailStatus(const XyStatus& x) {
     s.lastAlarm = x.lastAlarm;
     s.lastStatus = x.lastStatus;
     s.modal = x.modal;
-    s.servo.positionMm = x.sample.x.positionMm;
-    s.servo.setpointMm = x.sample.x.setpointMm;
-    s.servo.errorMm = x.sample.x.setpointMm - x.sample.x.positionMm;
-    s.servo.velocityMmS = x.sample.x.velocityMmS;
+    // A board on a line before it said where it is: no position, NaN ("no value", as Y on the
+    // rail), never the sample's 0 mm (issue 30 item 7).
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    const bool known = x.positionBasis != XyPositionBasis::Unknown;
+    s.servo.positionMm = known ? x.sample.x.positionMm : none;
+    s.servo.setpointMm = known ? x.sample.x.setpointMm : none;
+    s.servo.errorMm = s.servo.setpointMm - s.servo.positionMm;
+    s.servo.velocityMmS = known ? x.sample.x.velocityMmS : none;
     s.lastCommandSeq = x.lastCommandSeq;
     return s;
 }
 
 YAxisReadout yAxisOf(const XyStatus& x) {
+    if (x.positionBasis == XyPositionBasis::Unknown) {  // as asRailStatus: no position yet
+        const double none = std::numeric_limits<double>::quiet_NaN();
+        return {none, none, none};
+    }
     return {x.sample.y.positionMm, x.sample.y.setpointMm, x.sample.y.velocityMmS};
 }
 

@@ -149,5 +149,30 @@ TEST(DncXy, AHoldAtRestIsNothingToDoOnBothMachines) {
     }
 }
 
+// Issue 30 item 7 left this: a board on a line before it said where it is has no position; the
+// link's registers read NaN then ("no value", as Y on the rail), never the sample's 0 mm.
+TEST(DncXy, APositionNotYetKnownReadsNaNNeverZero) {
+    XyStatus x;
+    x.sample.x = XyAxisSample{};  // the sample's zeros: no position
+    x.sample.y = XyAxisSample{};
+    for (const XyPositionBasis basis : {XyPositionBasis::Unknown, XyPositionBasis::Known}) {
+        x.positionBasis = basis;
+        const ControllerStatus s = asRailStatus(x);
+        const YAxisReadout y = yAxisOf(x);
+        const bool unknown = basis == XyPositionBasis::Unknown;
+        EXPECT_EQ(std::isnan(s.servo.positionMm), unknown);
+        EXPECT_EQ(std::isnan(s.servo.setpointMm), unknown);
+        EXPECT_EQ(std::isnan(s.servo.errorMm), unknown);
+        EXPECT_EQ(std::isnan(s.servo.velocityMmS), unknown);
+        EXPECT_EQ(std::isnan(y.positionMm), unknown);
+        EXPECT_EQ(std::isnan(y.setpointMm), unknown);
+        EXPECT_EQ(std::isnan(y.velocityMmS), unknown);
+    }
+    // The board's last set point (not yet confirmed) is a position it said: kept.
+    x.positionBasis = XyPositionBasis::BoardLastSet;
+    x.sample.x.positionMm = 150.0;
+    EXPECT_EQ(asRailStatus(x).servo.positionMm, 150.0);
+}
+
 }  // namespace
 }  // namespace trilho::dnc
