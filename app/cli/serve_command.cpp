@@ -131,7 +131,8 @@ int serveCommand(const QStringList& args) {
         QStringLiteral("busy-poll"),
         QStringLiteral("Microseconds to poll a lone TCP client that sends back to back for its "
                        "next request after each answer, instead of sleeping (default 0: never; "
-                       "not with --virtual-time, whose event loop steps the machine). Costs up to that much CPU per request, only "
+                       "not with --virtual-time, whose event loop steps the machine). Costs up to "
+                       "that much CPU per request, only "
                        "while one client keeps the link that busy."),
         QStringLiteral("US"));
     const QCommandLineOption supervisorOpt(

@@ -299,7 +299,8 @@ bool Journal::open(const QString& path, QString* error) {
     everSynced_ = false;
     opening_ = {};
     opening_.requested = path;
-    if (policy_.syncOnOwnThread && !syncer_) syncer_ = std::make_unique<FileSyncer>(policy_.syncFile);
+    if (policy_.syncOnOwnThread && !syncer_)
+        syncer_ = std::make_unique<FileSyncer>(policy_.syncFile);
     if (syncer_) syncFailuresSeen_ = syncer_->failures();
     Lock taken = lock(path, error);
     if (taken == Lock::Held) {

@@ -12,8 +12,8 @@
 namespace {
 
 using trilho::test::CliResult;
-using trilho::test::runCli;
 using trilho::test::FullDisk;
+using trilho::test::runCli;
 
 QByteArray putGood(const FullDisk& disk, const QString& name, const QByteArray& good) {
     QFile f(disk.path(name));

@@ -94,10 +94,10 @@ class FullDisk {
 }  // namespace trilho::test
 
 /// Declares `disk`, a FullDisk, or skips the test with the reason: GoogleTest ...
-#define TRILHO_FULL_DISK(disk)        \
+#define TRILHO_FULL_DISK(disk)     \
     ::trilho::test::FullDisk disk; \
     if (!disk.ready()) GTEST_SKIP() << disk.why();
 /// ... and QtTest.
-#define TRILHO_FULL_DISK_QT(disk)     \
+#define TRILHO_FULL_DISK_QT(disk)  \
     ::trilho::test::FullDisk disk; \
     if (!disk.ready()) QSKIP(disk.why().c_str());

@@ -13,9 +13,9 @@
 #include "ui/code_editor.h"
 #include "ui/machine_link.h"
 #include "ui/main_window.h"
-#include "ui/theme.h"
 #include "ui/plot_panel.h"
 #include "ui/program_panel.h"
+#include "ui/theme.h"
 
 using namespace trilho;
 using namespace trilho::ui;
