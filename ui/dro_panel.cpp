@@ -1,13 +1,13 @@
 #include "ui/dro_panel.h"
 
 #include <QEvent>
-#include <QFontDatabase>
 #include <QGridLayout>
 #include <QLabel>
 #include <QPainter>
 #include <QProgressBar>
 #include <QStyleOption>
 #include <cmath>
+#include "ui/fixed_font.h"
 
 namespace trilho {
 namespace ui {
@@ -33,7 +33,7 @@ DroPanel::DroPanel(QWidget* parent) : QWidget(parent) {
         QStringLiteral("QWidget#dro { background: rgb(16,24,16); }"
                        "QWidget#dro QLabel { color: rgb(120,255,120); }"
                        "QWidget#dro QLabel#droMachine { color: rgb(170,255,170); }"));
-    QFont big = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    QFont big = fixedFont();
     big.setPointSize(26);
     big.setBold(true);
     QFont medium = big;

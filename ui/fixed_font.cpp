@@ -1,0 +1,29 @@
+#include "ui/fixed_font.h"
+
+namespace trilho {
+namespace ui {
+
+namespace {
+/// Set once by a test's main before any widget exists; read on the GUI thread only.
+QString& chosenFamily() {
+    static QString family;
+    return family;
+}
+}  // namespace
+
+QString fixedFamily() {
+    return chosenFamily().isEmpty() ? QStringLiteral("Monospace") : chosenFamily();
+}
+
+void setFixedFamily(const QString& family) {
+    chosenFamily() = family;
+}
+
+QFont fixedFont() {
+    QFont mono(fixedFamily());
+    mono.setStyleHint(QFont::TypeWriter);
+    return mono;
+}
+
+}  // namespace ui
+}  // namespace trilho
