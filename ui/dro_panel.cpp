@@ -33,7 +33,7 @@ DroPanel::DroPanel(QWidget* parent) : QWidget(parent) {
         QStringLiteral("QWidget#dro { background: rgb(16,24,16); }"
                        "QWidget#dro QLabel { color: rgb(120,255,120); }"
                        "QWidget#dro QLabel#droMachine { color: rgb(170,255,170); }"));
-    QFont big = fixedFont();
+    QFont big = desktopFixedFont();
     big.setPointSize(26);
     big.setBold(true);
     QFont medium = big;

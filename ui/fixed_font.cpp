@@ -1,5 +1,7 @@
 #include "ui/fixed_font.h"
 
+#include <QFontDatabase>
+
 namespace trilho {
 namespace ui {
 
@@ -23,6 +25,11 @@ QFont fixedFont() {
     QFont mono(fixedFamily());
     mono.setStyleHint(QFont::TypeWriter);
     return mono;
+}
+
+QFont desktopFixedFont() {
+    if (chosenFamily().isEmpty()) return QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    return fixedFont();
 }
 
 }  // namespace ui

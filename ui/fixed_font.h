@@ -15,8 +15,12 @@ QString fixedFamily();
 /// Call before the widgets are made; the tests do, with a font file they loaded.
 void setFixedFamily(const QString& family);
 /// A fixed-pitch font of fixedFamily() with the size left unresolved, so that a widget given
-/// it keeps the size it inherits (the application's) unless the caller sets one.
+/// it keeps the size it inherits (the application's) unless the caller sets one: the editors'.
 QFont fixedFont();
+/// The desktop's own fixed-pitch font (QFontDatabase::systemFont, which a KDE or GNOME
+/// platform theme takes from the desktop's settings), or fixedFamily() once one was named:
+/// the readout's digits, whose size the readout sets.
+QFont desktopFixedFont();
 
 }  // namespace ui
 }  // namespace trilho
