@@ -81,8 +81,9 @@ QString useFonts(const FontSet& set) {
     if (!error.isEmpty()) return set.name + QStringLiteral(": ") + error;
     const QString mono = loadFiles(set.monoFiles, &error);
     if (!error.isEmpty()) return set.name + QStringLiteral(": ") + error;
-    if (set.pointSize <= 0)
-        return set.name + QStringLiteral(": point size %1 is not positive").arg(set.pointSize);
+    // A desktop's font is a few points either side of 9; outside 4..48 pt it is a typo.
+    if (set.pointSize < 4 || set.pointSize > 48)
+        return set.name + QStringLiteral(": point size %1 outside 4..48").arg(set.pointSize);
     QApplication::setFont(QFont(sans, set.pointSize));
     ui::setFixedFamily(mono);
     return {};
