@@ -20,6 +20,10 @@ TRILHO_PACKAGES=(
   # pymodbus.client imports serial_asyncio (Debian 12's pymodbus 3.0 lists it only as a
   # Recommends, and we install without recommends).
   python3-serial-asyncio
+  # The widget tests measure the screens with named font files (tests/support/test_fonts.h,
+  # issue 35): DejaVu Sans and Sans Mono, and Noto Sans Mono, the monospace fontconfig picks
+  # once fonts-noto-mono is on a desktop (it moved the rail's readout by 11 px at 1024x768).
+  fonts-dejavu-core fonts-noto-mono
 )
 check=1
 [ "${1:-}" = "--no-check" ] && check=0

@@ -2,6 +2,7 @@
 
 #include <QPainter>
 #include <QTextBlock>
+#include "ui/fixed_font.h"
 
 namespace trilho {
 namespace ui {
@@ -22,9 +23,7 @@ class LineNumberArea : public QWidget {
 
 CodeEditor::CodeEditor(QWidget* parent)
     : QPlainTextEdit(parent), numbers_(new LineNumberArea(this)) {
-    QFont mono(QStringLiteral("Monospace"));
-    mono.setStyleHint(QFont::TypeWriter);
-    setFont(mono);
+    setFont(fixedFont());
     setLineWrapMode(QPlainTextEdit::NoWrap);
     connect(this, &QPlainTextEdit::blockCountChanged, this,
             [this] { setViewportMargins(lineNumberAreaWidth(), 0, 0, 0); });

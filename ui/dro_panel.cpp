@@ -1,13 +1,13 @@
 #include "ui/dro_panel.h"
 
 #include <QEvent>
-#include <QFontDatabase>
 #include <QGridLayout>
 #include <QLabel>
 #include <QPainter>
 #include <QProgressBar>
 #include <QStyleOption>
 #include <cmath>
+#include "ui/fixed_font.h"
 
 namespace trilho {
 namespace ui {
@@ -33,7 +33,7 @@ DroPanel::DroPanel(QWidget* parent) : QWidget(parent) {
         QStringLiteral("QWidget#dro { background: rgb(16,24,16); }"
                        "QWidget#dro QLabel { color: rgb(120,255,120); }"
                        "QWidget#dro QLabel#droMachine { color: rgb(170,255,170); }"));
-    QFont big = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    QFont big = desktopFixedFont();
     big.setPointSize(26);
     big.setBold(true);
     QFont medium = big;
@@ -58,6 +58,16 @@ DroPanel::DroPanel(QWidget* parent) : QWidget(parent) {
     machine_->setMinimumWidth(QFontMetrics(big).horizontalAdvance(QStringLiteral("-8888.88")));
     for (QLabel* l : {work_, toGo_})
         l->setMinimumWidth(QFontMetrics(medium).horizontalAdvance(QStringLiteral("-8888.88")));
+    // As tall as the digits, not as the font's line (issue 35): a reading has no descenders
+    // and no accents, and the line's height is what changes most from one monospace to
+    // another (26 pt bold: 40 px in DejaVu Sans Mono, 47 px in Noto Sans Mono, for digits
+    // 25 px tall in both). 3 px above and below keep the digits clear of the next row.
+    const auto digitsHeight = [](const QFont& f) {
+        return QFontMetrics(f).tightBoundingRect(QStringLiteral("-0123456789.")).height() + 6;
+    };
+    machine_->setFixedHeight(digitsHeight(big));
+    for (QLabel* l : {work_, toGo_})
+        l->setFixedHeight(digitsHeight(medium));
     progress_ = new QProgressBar(this);
     progress_->setTextVisible(true);
     progress_->setMaximumHeight(16);

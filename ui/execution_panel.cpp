@@ -52,7 +52,7 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("executionPanel"));
     setAutoFillBackground(true);
     auto* grid = new QGridLayout(this);
-    grid->setContentsMargins(24, 2, 24, 2);
+    grid->setContentsMargins(16, 2, 16, 2);
     grid->setHorizontalSpacing(36);
     grid->setVerticalSpacing(2);
 

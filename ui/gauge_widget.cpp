@@ -7,7 +7,10 @@ namespace trilho {
 namespace ui {
 
 GaugeWidget::GaugeWidget(QColor needle, QWidget* parent) : QWidget(parent), needle_(needle) {
-    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    // 26 px tall when the form has the room, down to 20 when it has not (issue 35: the form
+    // whole at 1024x768 with the desktop's font one step larger), never taller.
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
+    setMaximumHeight(sizeHint().height());
 }
 
 void GaugeWidget::setRange(double min, double max) {

@@ -7,14 +7,13 @@
 
 #include <algorithm>
 #include <cstring>
+#include "ui/fixed_font.h"
 
 namespace trilho {
 namespace ui {
 
 LargeProgramView::LargeProgramView(QWidget* parent) : QAbstractScrollArea(parent) {
-    QFont mono(QStringLiteral("Monospace"));
-    mono.setStyleHint(QFont::TypeWriter);
-    setFont(mono);
+    setFont(fixedFont());
     setFocusPolicy(Qt::StrongFocus);
     viewport()->setBackgroundRole(QPalette::Base);
     viewport()->setAutoFillBackground(true);

@@ -37,7 +37,10 @@ RunControls::RunControls(QWidget* parent) : QWidget(parent) {
 
     auto* grid = new QGridLayout(this);
     grid->setContentsMargins(4, 2, 4, 2);
-    grid->setSpacing(4);
+    grid->setHorizontalSpacing(4);
+    // 2 px between the rows (issue 35): this column sets the height above the form, and the
+    // form has to fit under it at 1024x768 with the desktop's font one step larger (10 pt).
+    grid->setVerticalSpacing(2);
     // Two rows of buttons and the override under them: narrow enough for a 1024-wide screen
     // beside the readout and the docks.
     int cell = 0;

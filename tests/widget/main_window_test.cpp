@@ -28,6 +28,7 @@
 #include <QSpinBox>
 #include <QStatusBar>
 #include "tests/support/journal_marks.h"
+#include "tests/support/widget_test_main.h"
 #include "translations/i18n.h"
 #include "ui/code_editor.h"
 #include "ui/execution_panel.h"
@@ -763,5 +764,5 @@ class MainWindowTest : public QObject {
     }
 };
 
-QTEST_MAIN(MainWindowTest)
+TRILHO_WIDGET_TEST_MAIN(MainWindowTest)
 #include "main_window_test.moc"

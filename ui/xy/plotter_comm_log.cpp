@@ -7,6 +7,7 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QVBoxLayout>
+#include "ui/fixed_font.h"
 
 namespace trilho {
 namespace ui {
@@ -70,9 +71,7 @@ PlotterCommLog::PlotterCommLog(QWidget* parent) : QWidget(parent) {
     view_->setReadOnly(true);
     view_->setMaximumBlockCount(kMaxLines);
     view_->setLineWrapMode(QPlainTextEdit::NoWrap);
-    QFont mono(QStringLiteral("Monospace"));
-    mono.setStyleHint(QFont::TypeWriter);
-    view_->setFont(mono);
+    view_->setFont(fixedFont());
     clear_ = new QPushButton(this);
     clear_->setObjectName(QStringLiteral("plotterCommLogClear"));
     lastObject_ = new QLabel(this);
