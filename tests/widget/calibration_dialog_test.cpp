@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "tests/support/calibration_streams.h"
+#include "tests/support/widget_test_main.h"
 #include "ui/xy/calibration_dialog.h"
 
 using namespace trilho;
@@ -135,5 +136,5 @@ class CalibrationDialogTest : public QObject {
     }
 };
 
-QTEST_MAIN(CalibrationDialogTest)
+TRILHO_WIDGET_TEST_MAIN(CalibrationDialogTest)
 #include "calibration_dialog_test.moc"

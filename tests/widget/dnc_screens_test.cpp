@@ -26,6 +26,7 @@
 #include <cmath>
 
 #include "core/dnc/register_map.h"
+#include "tests/support/widget_test_main.h"
 #include "translations/i18n.h"
 #include "ui/dnc_dialog.h"
 #include "ui/dnc_link.h"
@@ -669,5 +670,5 @@ class DncScreensTest : public QObject {
     }
 };
 
-QTEST_MAIN(DncScreensTest)
+TRILHO_WIDGET_TEST_MAIN(DncScreensTest)
 #include "dnc_screens_test.moc"

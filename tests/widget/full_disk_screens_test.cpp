@@ -9,6 +9,7 @@
 #include <QTest>
 
 #include "tests/support/full_disk.h"
+#include "tests/support/widget_test_main.h"
 #include "translations/i18n.h"
 #include "ui/code_editor.h"
 #include "ui/machine_link.h"
@@ -108,5 +109,5 @@ class FullDiskScreensTest : public QObject {
     }
 };
 
-QTEST_MAIN(FullDiskScreensTest)
+TRILHO_WIDGET_TEST_MAIN(FullDiskScreensTest)
 #include "full_disk_screens_test.moc"

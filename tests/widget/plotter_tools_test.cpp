@@ -17,6 +17,7 @@
 #include "hal/emulator/plotter_firmware.h"
 #include "host/session/xy_session.h"
 #include "host/session/xy_session_runnable.h"
+#include "tests/support/widget_test_main.h"
 #include "translations/i18n.h"
 #include "ui/xy/plotter_comm_log.h"
 #include "ui/xy/polygon_dialog.h"
@@ -167,5 +168,5 @@ class PlotterToolsTest : public QObject {
     }
 };
 
-QTEST_MAIN(PlotterToolsTest)
+TRILHO_WIDGET_TEST_MAIN(PlotterToolsTest)
 #include "plotter_tools_test.moc"

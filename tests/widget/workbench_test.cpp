@@ -24,6 +24,7 @@
 #include <QThreadPool>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include "tests/support/widget_test_main.h"
 #include "translations/i18n.h"
 #include "ui/background_pool.h"
 #include "ui/workbench/margin_view.h"
@@ -534,5 +535,5 @@ class WorkbenchTest : public QObject {
     }
 };
 
-QTEST_MAIN(WorkbenchTest)
+TRILHO_WIDGET_TEST_MAIN(WorkbenchTest)
 #include "workbench_test.moc"

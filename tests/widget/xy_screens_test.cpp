@@ -42,6 +42,7 @@
 #include "host/session/xy_device_session.h"
 #include "host/session/xy_session_runnable.h"
 #include "tests/support/journal_marks.h"
+#include "tests/support/widget_test_main.h"
 #include "ui/dnc_dialog.h"
 #include "ui/dnc_link.h"
 #include "ui/dnc_settings.h"
@@ -1199,5 +1200,5 @@ class XyScreensTest : public QObject {
     }
 };
 
-QTEST_MAIN(XyScreensTest)
+TRILHO_WIDGET_TEST_MAIN(XyScreensTest)
 #include "xy_screens_test.moc"
