@@ -73,12 +73,24 @@ JournalPolicy offThread(SlowDisk& disk) {
     return p;
 }
 
-TEST(JournalSyncThread, AnAlarmIsWrittenAtOnceAndItsSyncNeverHoldsTheCaller) {
+/// The file's size now, bytes.
+off_t sizeOf(const QString& path) {
+    struct stat st {};
+    EXPECT_EQ(::stat(QFile::encodeName(path).constData(), &st), 0);
+    return st.st_size;
+}
+
+/// A journal opened on the slow disk, in a folder of its own.
+class JournalSyncThread : public ::testing::Test {
+  protected:
+    void SetUp() override { ASSERT_TRUE(j.open(path)); }
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("history.log"));
     SlowDisk disk;
-    Journal j(offThread(disk));
-    ASSERT_TRUE(j.open(path));
+    Journal j{offThread(disk)};
+};
+
+TEST_F(JournalSyncThread, AnAlarmIsWrittenAtOnceAndItsSyncNeverHoldsTheCaller) {
     ASSERT_TRUE(j.waitForSyncs());
     disk.shut();  // the disk stops answering
     const auto before = std::chrono::steady_clock::now();
@@ -97,20 +109,13 @@ TEST(JournalSyncThread, AnAlarmIsWrittenAtOnceAndItsSyncNeverHoldsTheCaller) {
     ASSERT_TRUE(j.waitForSyncs());
     j.close();
     ASSERT_GE(disk.calls(), 1u);  // two, or one when the second was asked before the first began
-    struct stat st {};
-    ASSERT_EQ(::stat(QFile::encodeName(path).constData(), &st), 0);
-    EXPECT_EQ(disk.sizes.back(), st.st_size);  // the last sync saw both entries
+    EXPECT_EQ(disk.sizes.back(), sizeOf(path));  // the last sync saw both entries
     for (const std::thread::id& t : disk.threads)
         EXPECT_NE(t, std::this_thread::get_id());
     EXPECT_TRUE(j.health().ok) << j.health().error.toStdString();
 }
 
-TEST(JournalSyncThread, AFailedSyncIsReportedAtTheNextCall) {
-    QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("history.log"));
-    SlowDisk disk;
-    Journal j(offThread(disk));
-    ASSERT_TRUE(j.open(path));
+TEST_F(JournalSyncThread, AFailedSyncIsReportedAtTheNextCall) {
     disk.error = EIO;
     ASSERT_TRUE(j.append(alarm(1), 0));  // asked; the answer comes later
     EXPECT_FALSE(j.waitForSyncs());
@@ -124,12 +129,7 @@ TEST(JournalSyncThread, AFailedSyncIsReportedAtTheNextCall) {
     EXPECT_TRUE(j.waitForSyncs());
 }
 
-TEST(JournalSyncThread, SyncsAskedWhileTheDiskIsBusyAreMergedNotQueued) {
-    QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("history.log"));
-    SlowDisk disk;
-    Journal j(offThread(disk));
-    ASSERT_TRUE(j.open(path));
+TEST_F(JournalSyncThread, SyncsAskedWhileTheDiskIsBusyAreMergedNotQueued) {
     ASSERT_TRUE(j.waitForSyncs());
     const std::size_t atOpen = disk.calls();
     disk.shut();
@@ -140,14 +140,11 @@ TEST(JournalSyncThread, SyncsAskedWhileTheDiskIsBusyAreMergedNotQueued) {
     // The one held, and at most one more that covers everything written meanwhile.
     EXPECT_LE(disk.calls() - atOpen, 2u);
     // The last sync saw the whole file.
-    const off_t last = disk.sizes.back();
-    struct stat st {};
-    ASSERT_EQ(::stat(QFile::encodeName(path).constData(), &st), 0);
-    EXPECT_EQ(last, st.st_size);
+    EXPECT_EQ(disk.sizes.back(), sizeOf(path));
     EXPECT_EQ(Journal::read(path).size(), 5000);
 }
 
-TEST(JournalSyncThread, CloseSyncsEverythingAndRotatedFilesAreSyncedToo) {
+TEST(JournalSyncThreadClose, SyncsEverythingAndRotatedFilesAreSyncedToo) {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("history.log"));
     SlowDisk disk;
@@ -165,9 +162,7 @@ TEST(JournalSyncThread, CloseSyncsEverythingAndRotatedFilesAreSyncedToo) {
         EXPECT_EQ(j.pendingSync(), 0);
     }
     // close() waited: the last sync saw the file as it was closed (with its stop mark).
-    struct stat st {};
-    ASSERT_EQ(::stat(QFile::encodeName(path).constData(), &st), 0);
-    EXPECT_EQ(disk.sizes.back(), st.st_size);
+    EXPECT_EQ(disk.sizes.back(), sizeOf(path));
     // Rotation kept the last files whole.
     const auto read = Journal::read(path);
     ASSERT_FALSE(read.isEmpty());
