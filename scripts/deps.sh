@@ -21,9 +21,10 @@ TRILHO_PACKAGES=(
   # Recommends, and we install without recommends).
   python3-serial-asyncio
   # The widget tests measure the screens with named font files (tests/support/test_fonts.h,
-  # issue 35): DejaVu Sans and Sans Mono, and Noto Sans Mono, the monospace fontconfig picks
-  # once fonts-noto-mono is on a desktop (it moved the rail's readout by 11 px at 1024x768).
-  fonts-dejavu-core fonts-noto-mono
+  # issue 35): DejaVu Sans and Sans Mono (the oblique faces, which the forms' italic captions
+  # use, are in fonts-dejavu-extra), and Noto Sans Mono, the monospace fontconfig picks once
+  # fonts-noto-mono is on a desktop (it moved the rail's readout by 11 px at 1024x768).
+  fonts-dejavu-core fonts-dejavu-extra fonts-noto-mono
 )
 check=1
 [ "${1:-}" = "--no-check" ] && check=0
