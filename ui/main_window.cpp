@@ -30,6 +30,7 @@
 #include "ui/code_editor.h"
 #include "ui/dnc_link.h"
 #include "ui/dro_panel.h"
+#include "ui/eliding_label.h"
 #include "ui/execution_panel.h"
 #include "ui/history_panel.h"
 #include "ui/jog_panel.h"
@@ -52,12 +53,17 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     // to its full height on a 768-line screen.
     auto* centre = new QWidget(this);
     centre->setObjectName(QStringLiteral("centre"));
-    estopBanner_ = new QLabel(centre);
+    estopBanner_ = new ElidingLabel(centre);
     estopBanner_->setObjectName(QStringLiteral("estopBanner"));
     estopBanner_->setAlignment(Qt::AlignCenter);
+    // One line of no width of its own (ElidingLabel): what an emergency shows never widens
+    // the window (issue 31 item 1: at 14 pt it needed 1144-1596 px and pushed the run keys,
+    // the Program dock and the status bar off a 1024 or 1366 screen, even after Reset), nor
+    // pushes the 1996 form into scrolling. What does not fit ends in "…"; the whole text is
+    // its tooltip, and "EMERGENCY STOP LATCHED" comes first.
     estopBanner_->setStyleSheet(
         QStringLiteral("QLabel#estopBanner { background: rgb(200,0,0); color: white; "
-                       "font-weight: bold; font-size: 14pt; padding: 4px; }"));
+                       "font-weight: bold; font-size: 11pt; padding: 2px; }"));
     estopBanner_->hide();
     dro_ = new DroPanel(centre);
     runControls_ = new RunControls(centre);
@@ -316,7 +322,7 @@ void MainWindow::retranslate() {
     showProgramName();
     jogDock_->setWindowTitle(tr("Jog"));
     railDock_->setWindowTitle(tr("Rail"));
-    estopBanner_->setText(
+    estopBanner_->setFullText(
         tr("EMERGENCY STOP LATCHED: the drive is off. Clear the cause, then Reset E-stop."));
     refreshOnline();
     onStatus(last_);

@@ -9,6 +9,7 @@
 #include "core/gcode/dialect.h"
 #include "core/machine/machine_kind.h"
 #include "core/machine/rail_controller.h"
+#include "ui/eliding_label.h"
 #include "ui/operator_frame.h"
 #include "ui/theme.h"
 
@@ -130,7 +131,7 @@ class MainWindow : public OperatorFrame {
     SimulationPanel* simulation_;
     RunControls* runControls_;
     DroPanel* dro_;
-    QLabel* estopBanner_;
+    ElidingLabel* estopBanner_;
     std::function<QString()> online_;
     std::function<void()> afterLoad_;  ///< a compile asked while a large program loads
     int selection_ = 0;                ///< counts selections: a compile knows whose it is

@@ -808,6 +808,47 @@ class OperatorScreensTest : public QObject {
         checkLayout(w, h);
     }
 
+    // Issue 31 item 1: nothing the machine shows in an emergency may widen the window. The
+    // latched E-stop's banner set the window's width (1144 px in en at 1024, 1521 in pt_BR and
+    // 1596 in es at 1366), pushing the run keys, the Program dock and the status bar
+    // off-screen, and they stayed off after Reset.
+    void anEmergencyStopNeverWidensTheWindow_data() {
+        QTest::addColumn<int>("w");
+        QTest::addColumn<int>("h");
+        QTest::newRow("1366x768") << 1366 << 768;
+        QTest::newRow("1024x768") << 1024 << 768;
+    }
+    void anEmergencyStopNeverWidensTheWindow() {
+        QFETCH(int, w);
+        QFETCH(int, h);
+        window_->resize(w, h);
+        settle();
+        QTest::mouseClick(window_->emergencyButton(), Qt::LeftButton);
+        QTRY_COMPARE(status().state, ControllerState::EStop);
+        QTRY_VERIFY(window_->estopBanner()->isVisible());
+        checkLayout(w, h);  // in each language, the banner shown
+        if (QTest::currentTestFailed()) return;
+        QVERIFY(window_->estopBanner()->isVisible());
+        // What does not fit is cut at the end: the banner's first words (before the colon)
+        // always show, and the whole text is its tooltip.
+        auto* banner = qobject_cast<ElidingLabel*>(window_->estopBanner());
+        QVERIFY(banner);
+        for (const char* lang : {"en", "pt_BR", "es"}) {
+            window_->setLanguage(QString::fromLatin1(lang));
+            settle();
+            const QString head = banner->fullText().section(QLatin1Char(':'), 0, 0);
+            QVERIFY2(head.size() > 5 && banner->text().startsWith(head),
+                     qPrintable(QStringLiteral("'%1' shown of '%2' in %3")
+                                    .arg(banner->text(), banner->fullText(),
+                                         QString::fromLatin1(lang))));
+            QCOMPARE(banner->toolTip(), banner->fullText());
+        }
+        window_->setLanguage(QStringLiteral("en"));
+        link_->resetEmergencyStop();
+        QTRY_VERIFY(!window_->estopBanner()->isVisible());
+        checkLayout(w, h);  // and after Reset
+    }
+
     // Issue 35: the fit at 768 lines holds with the fonts a Debian 12 desktop may resolve, not
     // only with those the tests measure with: Noto Sans Mono (fonts-noto-mono), which moved the
     // readout and made the form scroll by 6 px at 1024x768, and the desktop's font one step
