@@ -936,6 +936,50 @@ class XyScreensTest : public QObject {
         }
     }
 
+    // Issue 31 item 1: nothing an emergency shows widens an XY window either, in any
+    // language, latched or after Reset (on the rail the E-stop's banner needed 1144-1596 px).
+    void xyWindowsFitSmallScreensInAnEmergency() {
+        for (const char* machine : {"xy_dc_table.json", "xy_plotter.json"}) {
+            for (const QSize screen : {QSize(1366, 768), QSize(1024, 768)}) {
+                QTemporaryDir dir;
+                QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+                auto link = virtualLink(shipped(machine));
+                XyMainWindow w(*link, settings);
+                w.resize(screen.width(), screen.height() - 30);
+                w.show();
+                QVERIFY(QTest::qWaitForWindowExposed(&w));
+                w.estopButton()->click();
+                link->advance(0.1);
+                QCOMPARE(link->status().state, ControllerState::EStop);
+                for (const bool latched : {true, false}) {
+                    if (!latched) {
+                        link->post([](XyController& c) { c.resetEmergencyStop(); });
+                        link->advance(0.1);
+                        QVERIFY(link->status().state != ControllerState::EStop);
+                    }
+                    for (const char* lang : {"en", "pt_BR", "es"}) {
+                        w.setLanguage(QString::fromLatin1(lang));
+                        QCoreApplication::processEvents();
+                        const QSize least = w.minimumSizeHint().expandedTo(w.minimumSize());
+                        QVERIFY2(least.width() <= screen.width() &&
+                                     least.height() <= screen.height() - 30,
+                                 qPrintable(QStringLiteral("%1 %2 in %3 needs %4x%5 on %6x%7")
+                                                .arg(QLatin1String(machine),
+                                                     latched ? QStringLiteral("latched")
+                                                             : QStringLiteral("after Reset"),
+                                                     QLatin1String(lang))
+                                                .arg(least.width())
+                                                .arg(least.height())
+                                                .arg(screen.width())
+                                                .arg(screen.height())));
+                        QCOMPARE(w.width(), screen.width());
+                        QVERIFY(w.statusBar()->geometry().bottom() < w.height());
+                    }
+                }
+            }
+        }
+    }
+
     // Issue 21: the workbench from the DC table's window, per axis; on the plotter (no encoder)
     // its margin test.
     void theDcTableOpensTheWorkbenchAndThePlotterItsMarginTest() {
