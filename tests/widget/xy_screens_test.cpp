@@ -948,6 +948,12 @@ class XyScreensTest : public QObject {
                 w.resize(screen.width(), screen.height() - 30);
                 w.show();
                 QVERIFY(QTest::qWaitForWindowExposed(&w));
+                // The translator is the application's: English again for the next test,
+                // whatever fails here.
+                struct English {
+                    XyMainWindow& window;
+                    ~English() { window.setLanguage(QStringLiteral("en")); }
+                } english{w};
                 w.estopButton()->click();
                 link->advance(0.1);
                 QCOMPARE(link->status().state, ControllerState::EStop);
