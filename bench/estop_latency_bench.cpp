@@ -37,7 +37,7 @@
 #include <thread>
 #include <vector>
 
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 #include "core/runtime/estop_stamp.h"
 #include "core/tuning/run_record.h"
 #include "host/session/xy_session_runnable.h"

@@ -23,9 +23,9 @@
 #include <vector>
 
 #include "core/gcode/compiler.h"
-#include "core/machine/machine_profile.h"
 #include "core/motion/bresenham_line.h"
 #include "core/motion/float_line.h"
+#include "core/profile/machine_profile.h"
 
 namespace {
 

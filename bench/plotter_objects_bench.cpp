@@ -14,8 +14,8 @@
 #include <string>
 
 #include "core/gcode/compiler.h"
-#include "core/machine/plotter_link_motion.h"
-#include "core/machine/xy_controller.h"
+#include "core/xy/plotter_link_motion.h"
+#include "core/xy/xy_controller.h"
 #include "hal/emulator/plotter_firmware.h"
 #include "host/session/xy_session.h"
 #include "tests/support/virtual_serial_line.h"

@@ -17,7 +17,7 @@
 #include <fstream>
 #include <string>
 
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 #include "ui/machine_link.h"
 #include "ui/main_window.h"
 #include "ui/program_panel.h"

@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "core/machine/controller_event.h"
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 
 #include "ui/dnc_settings.h"
 

@@ -5,7 +5,7 @@
 // It only shows a controller snapshot; the cycle clock is the one thing it keeps.
 #include <QWidget>
 
-#include "core/machine/rail_controller.h"
+#include "core/rail/rail_controller.h"
 
 class QLabel;
 class QProgressBar;

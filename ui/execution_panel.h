@@ -5,7 +5,7 @@
 // operator's intents as signals; it holds no machine state of its own.
 #include <QWidget>
 
-#include "core/machine/rail_controller.h"
+#include "core/rail/rail_controller.h"
 
 class QComboBox;
 class QGroupBox;

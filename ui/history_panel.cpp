@@ -11,7 +11,7 @@
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 
-#include "core/machine/journal.h"
+#include "core/journal/journal.h"
 #include "ui/background_pool.h"
 
 namespace trilho {

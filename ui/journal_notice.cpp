@@ -3,7 +3,7 @@
 #include <QCoreApplication>
 #include <QFileInfo>
 
-#include "core/machine/journal.h"
+#include "core/journal/journal.h"
 
 namespace trilho {
 namespace ui {

@@ -5,7 +5,7 @@
 #include <QString>
 #include <optional>
 
-#include "core/machine/machine_kind.h"
+#include "core/profile/machine_kind.h"
 
 class QWidget;
 

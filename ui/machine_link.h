@@ -9,7 +9,7 @@
 #include <memory>
 
 #include "core/gcode/program.h"
-#include "core/machine/journal.h"
+#include "core/journal/journal.h"
 #include "core/runtime/seqlock.h"
 #include "core/runtime/servo_worker.h"
 #include "hal/sim/sim_rail.h"

@@ -7,8 +7,8 @@
 #include <memory>
 
 #include "core/gcode/dialect.h"
-#include "core/machine/machine_kind.h"
-#include "core/machine/rail_controller.h"
+#include "core/profile/machine_kind.h"
+#include "core/rail/rail_controller.h"
 #include "ui/eliding_label.h"
 #include "ui/operator_frame.h"
 #include "ui/theme.h"

@@ -14,8 +14,8 @@
 #include <cstdint>
 #include <functional>
 
-#include "core/machine/machine_kind.h"
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_kind.h"
+#include "core/profile/machine_profile.h"
 #include "ui/keys_dialog.h"
 
 class QAbstractButton;

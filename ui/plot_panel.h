@@ -3,7 +3,7 @@
 // time over a rolling window; pause, zoom (wheel and drag), export PNG and CSV.
 #include <QWidget>
 
-#include "core/machine/rail_controller.h"
+#include "core/rail/rail_controller.h"
 
 class QCustomPlot;
 class QCPGraph;

@@ -3,7 +3,7 @@
 // limits, the platform where the counter says it is, and the target of the move.
 #include <QWidget>
 
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 
 namespace trilho {
 namespace ui {

@@ -7,7 +7,7 @@
 #include <QList>
 #include <QWidget>
 
-#include "core/machine/rail_controller.h"
+#include "core/rail/rail_controller.h"
 
 class QAction;
 class QLabel;

@@ -3,7 +3,7 @@
 // screen of the machine chosen below it (the rail, the DC XY table or the XY plotter).
 #include <QDialog>
 
-#include "core/machine/machine_kind.h"
+#include "core/profile/machine_kind.h"
 
 class QComboBox;
 

@@ -4,9 +4,9 @@
 // runs its open-loop program (trilho-device table --calibration) and sends its count every
 // 32 ms until 1300 pulses; this command receives the counts (hal/serial), computes pulses
 // against time and, given the travel the operator measured, mm per pulse and mm per turn
-// (core/machine/dc_calibration.h), and can write them into a copy of the profile. A stream
+// (core/xy/dc_calibration.h), and can write them into a copy of the profile. A stream
 // the program cannot have sent is refused as it comes or once ended (exit 3, the reason,
-// nothing written; issue 30 item 2, core/machine/dc_calibration_check.h).
+// nothing written; issue 30 item 2, core/xy/dc_calibration_check.h).
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -21,9 +21,9 @@
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
 #include "core/files/atomic_file.h"
-#include "core/machine/dc_calibration.h"
-#include "core/machine/machine_profile.h"
-#include "core/machine/replace_target.h"
+#include "core/files/replace_target.h"
+#include "core/profile/machine_profile.h"
+#include "core/xy/dc_calibration.h"
 #include "hal/serial/serial_line.h"
 #include "host/common/data_paths.h"
 
@@ -152,7 +152,7 @@ int calibrateCommand(const QStringList& args) {
     QString error;
     if (!line.open({parser.value(portOpt), static_cast<int>(baud), false}, &error))
         return usageError(kCommand, error);
-    // The stream is checked as it comes (core/machine/dc_calibration_check.h): a stream the
+    // The stream is checked as it comes (core/xy/dc_calibration_check.h): a stream the
     // program cannot have sent ends the wait at once, and memory stays bounded whatever the
     // board sends.
     CalibrationRecorder recorder(CalibrationLimits::forAxis(params));

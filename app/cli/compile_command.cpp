@@ -12,7 +12,7 @@
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/source_file.h"
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 #include "host/common/data_paths.h"
 #include "translations/i18n.h"
 

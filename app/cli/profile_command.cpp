@@ -5,7 +5,7 @@
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 #include "host/common/data_paths.h"
 
 namespace trilho::cli {

@@ -8,8 +8,8 @@
 
 #include "app/cli/run_support.h"
 #include "core/gcode/program.h"
-#include "core/machine/machine_profile.h"
-#include "core/machine/rail_controller.h"
+#include "core/profile/machine_profile.h"
+#include "core/rail/rail_controller.h"
 
 namespace trilho::cli {
 

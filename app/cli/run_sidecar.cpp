@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "core/files/atomic_file.h"
-#include "core/machine/replace_target.h"
+#include "core/files/replace_target.h"
 #include "core/tuning/run_record.h"
 #include "host/tuning/step_test.h"
 

@@ -8,7 +8,7 @@
 #include <QString>
 
 #include "app/cli/run_support.h"
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 
 namespace trilho::cli {
 

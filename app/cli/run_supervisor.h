@@ -3,7 +3,7 @@
 // on the rail and on the XY machines: when the run is over (finished, an alarm, a hold,
 // --max-seconds) and when to press Continue after an m00 (--continue-after).
 #include "app/cli/run_support.h"
-#include "core/machine/rail_controller.h"
+#include "core/rail/rail_controller.h"
 
 namespace trilho::cli {
 

@@ -20,8 +20,8 @@
 #include "core/files/atomic_file.h"
 #include "core/machine/controller_event.h"
 #include "core/machine/event_text.h"
-#include "core/machine/machine_profile.h"
-#include "core/machine/xy_event_text.h"
+#include "core/profile/machine_profile.h"
+#include "core/xy/xy_event_text.h"
 #include "hal/sim/fault_schedule.h"
 
 namespace trilho::cli {

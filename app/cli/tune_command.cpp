@@ -14,7 +14,7 @@
 #include "app/cli/option_values.h"
 #include "app/cli/run_support.h"
 #include "core/files/atomic_file.h"
-#include "core/machine/replace_target.h"
+#include "core/files/replace_target.h"
 #include "core/tuning/run_record.h"
 #include "host/common/data_paths.h"
 #include "host/tuning/step_test.h"

@@ -4,7 +4,7 @@
 #include <QString>
 #include <cstdint>
 
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 
 namespace trilho::cli {
 

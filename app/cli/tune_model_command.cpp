@@ -14,7 +14,7 @@
 #include "app/cli/option_values.h"
 #include "app/cli/tune_dc_table.h"
 #include "app/cli/tune_report.h"
-#include "core/machine/replace_target.h"
+#include "core/files/replace_target.h"
 #include "core/tuning/rail_autotune.h"
 #include "host/common/data_paths.h"
 #include "host/session/sim_rail_rig.h"

@@ -7,7 +7,7 @@
 #include "app/cli/run_support.h"
 #include "app/cli/xy_trace.h"
 #include "core/gcode/program.h"
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 
 namespace trilho::cli {
 

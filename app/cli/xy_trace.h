@@ -6,8 +6,8 @@
 // `tune metrics`' one-count band).
 #include <cstdint>
 
-#include "core/machine/xy_controller.h"
 #include "core/tuning/trace_writer.h"
+#include "core/xy/xy_controller.h"
 
 namespace trilho::cli {
 

@@ -16,7 +16,7 @@
 
 #include "app/device/device_runner.h"
 #include "app/device/pty_endpoint.h"
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 #include "hal/emulator/plotter_firmware.h"
 #include "hal/emulator/table_firmware.h"
 

@@ -12,7 +12,7 @@
 #include <cstdio>
 #include <cstring>
 
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 #include "host/common/data_paths.h"
 #include "host/session/xy_session_runnable.h"
 #include "translations/i18n.h"

@@ -15,7 +15,7 @@
 //    is clamped and pushing further into the clamp (anti-windup). After the profile, while the
 //    axis is outside its window, the friction term takes the error's sign (Phase::Settling).
 #include "core/control/dc_law.h"
-#include "core/machine/dc_table_params.h"
+#include "core/profile/dc_table_params.h"
 
 namespace trilho {
 

@@ -9,7 +9,7 @@
 // update() allocates nothing, locks nothing and logs nothing.
 #include <cstdint>
 
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 
 namespace trilho {
 

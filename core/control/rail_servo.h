@@ -10,8 +10,8 @@
 #include "core/control/position_loop.h"
 #include "core/control/switch_filter.h"
 #include "core/io/rail_io.h"
-#include "core/machine/machine_profile.h"
 #include "core/motion/trapezoid.h"
+#include "core/profile/machine_profile.h"
 
 namespace trilho {
 

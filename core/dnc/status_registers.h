@@ -8,8 +8,8 @@
 
 #include "core/dnc/register_map.h"
 #include "core/dnc/y_axis_readout.h"
-#include "core/machine/machine_kind.h"
-#include "core/machine/rail_controller.h"
+#include "core/profile/machine_kind.h"
+#include "core/rail/rail_controller.h"
 
 namespace trilho::dnc {
 

@@ -1,6 +1,6 @@
 #include "core/files/atomic_file.h"
 
-#include "core/machine/replace_target.h"
+#include "core/files/replace_target.h"
 
 #include <unistd.h>
 #include <cerrno>

@@ -7,7 +7,7 @@
 
 #include "core/gcode/dialect.h"
 #include "core/gcode/program.h"
-#include "core/machine/machine_limits.h"
+#include "core/profile/machine_limits.h"
 
 namespace trilho {
 

@@ -3,7 +3,7 @@
 // it (the servo thread's queue, the DNC link's virtual-time machine), so a command means the
 // same wherever it comes from. LoadProgram is the caller's: how the program is handed over
 // depends on the thread it crosses.
-#include "core/machine/rail_controller.h"
+#include "core/rail/rail_controller.h"
 #include "core/runtime/servo_worker.h"
 
 namespace trilho {

@@ -13,7 +13,7 @@
 #include <random>
 #include <thread>
 
-#include "core/machine/rail_controller.h"
+#include "core/rail/rail_controller.h"
 #include "core/runtime/estop_request.h"
 #include "core/runtime/estop_stamp.h"
 #include "core/runtime/event_ring.h"

@@ -3,10 +3,10 @@
 #include <QCoreApplication>
 #include <cmath>
 
-#include "core/machine/xy_event_text.h"
 #include "core/tuning/dc_identification_experiment.h"
 #include "core/tuning/dc_verification_move.h"
 #include "core/tuning/model_dc_table.h"
+#include "core/xy/xy_event_text.h"
 
 namespace trilho {
 

@@ -6,7 +6,7 @@
 // velocity over the held-out part, which the fit never saw. A model under 90 % is refused.
 #include <QString>
 
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 #include "core/tuning/dc_axis_model.h"
 #include "core/tuning/identification_experiment.h"
 

@@ -4,8 +4,8 @@
 // period. In virtual time the period passes by stepping the simulated table
 // (host/session/sim_dc_table_rig.h) or the identified model (model_dc_table.h); on the
 // machine, by waiting for the next tick. The experiment never knows which.
-#include "core/machine/dc_table_motion.h"
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
+#include "core/xy/dc_table_motion.h"
 
 namespace trilho {
 

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/machine/xy_event_text.h"
+#include "core/xy/xy_event_text.h"
 
 namespace trilho {
 

@@ -19,7 +19,7 @@
 //   speed with that room, the rapid speed is lowered.
 #include <QString>
 
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 #include "core/tuning/dc_axis_identification.h"
 
 namespace trilho {

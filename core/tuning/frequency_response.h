@@ -7,7 +7,7 @@
 // margin at the phase crossover (phase -180 deg), phase margin at the gain crossover (|L| = 1).
 #include <vector>
 
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 #include "core/tuning/rail_model.h"
 
 namespace trilho {

@@ -10,7 +10,7 @@
 // move never asks the amplifier for more current than it has.
 #include <QString>
 
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 #include "core/tuning/rail_model.h"
 
 namespace trilho {

@@ -6,7 +6,7 @@
 // integrates) over the held-out part, which the fit never saw. A model under 90 % is refused.
 #include <QString>
 
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 #include "core/tuning/identification_experiment.h"
 #include "core/tuning/rail_model.h"
 

@@ -16,8 +16,8 @@
 #include <string_view>
 #include <unordered_map>
 
-#include "core/machine/json_duplicate_keys.h"
-#include "core/machine/replace_target.h"
+#include "core/files/replace_target.h"
+#include "core/profile/json_duplicate_keys.h"
 #include "core/tuning/trace_writer.h"
 
 namespace trilho {

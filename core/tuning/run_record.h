@@ -10,7 +10,7 @@
 #include <optional>
 #include <vector>
 
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 #include "core/tuning/step_metrics.h"
 #include "core/tuning/trace_writer.h"
 

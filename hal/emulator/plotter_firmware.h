@@ -10,8 +10,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/machine/plotter_motion.h"
 #include "core/protocol/plotter_protocol.h"
+#include "core/xy/plotter_motion.h"
 #include "hal/emulator/device_firmware.h"
 #include "hal/sim/sim_plotter.h"
 

@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "core/machine/alarm.h"
-#include "core/machine/dc_table_motion.h"
 #include "core/protocol/table_protocol.h"
+#include "core/xy/dc_table_motion.h"
 #include "hal/emulator/device_firmware.h"
 #include "hal/sim/sim_dc_table.h"
 

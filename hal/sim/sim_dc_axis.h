@@ -7,7 +7,7 @@
 // while stalled or jammed. Deterministic; advanced only by step(). Needs no controller header.
 #include <cstdint>
 
-#include "core/machine/dc_table_params.h"
+#include "core/profile/dc_table_params.h"
 
 namespace trilho {
 

@@ -7,7 +7,7 @@
 #include <cstdint>
 
 #include "core/io/dc_table_io.h"
-#include "core/machine/dc_table_params.h"
+#include "core/profile/dc_table_params.h"
 #include "hal/sim/sim_dc_axis.h"
 #include "hal/sim/xy_plant.h"
 

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "core/io/plotter_io.h"
-#include "core/machine/machine_profile.h"
-#include "core/machine/xy_motion.h"  // XyPoint
 #include "core/motion/step_event.h"
+#include "core/profile/machine_profile.h"
+#include "core/xy/xy_motion.h"  // XyPoint
 #include "hal/sim/xy_plant.h"
 
 namespace trilho {

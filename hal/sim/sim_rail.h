@@ -9,7 +9,7 @@
 #include <random>
 
 #include "core/io/rail_io.h"
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 #include "hal/sim/fault_injection.h"
 
 namespace trilho {

@@ -5,7 +5,7 @@
 // program never looks in the source tree. Needs a QCoreApplication.
 #include <QString>
 
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 
 namespace trilho {
 

@@ -11,7 +11,7 @@
 
 #include "core/dnc/y_axis_readout.h"
 #include "core/gcode/program.h"
-#include "core/machine/rail_controller.h"
+#include "core/rail/rail_controller.h"
 #include "core/runtime/servo_worker.h"
 
 namespace trilho::dnc {

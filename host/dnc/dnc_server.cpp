@@ -10,7 +10,7 @@
 #include <QUrl>
 
 #include "core/machine/event_text.h"
-#include "core/machine/xy_event_text.h"
+#include "core/xy/xy_event_text.h"
 #include "host/dnc/modbus_tcp_listener.h"
 #include "host/dnc/register_store.h"
 

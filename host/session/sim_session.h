@@ -8,7 +8,7 @@
 #include <memory>
 #include <random>
 
-#include "core/machine/rail_controller.h"
+#include "core/rail/rail_controller.h"
 #include "hal/sim/sim_rail.h"
 
 namespace trilho {

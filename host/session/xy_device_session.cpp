@@ -1,7 +1,7 @@
 #include "host/session/xy_device_session.h"
 
-#include "core/machine/plotter_link_motion.h"
-#include "core/machine/table_link_motion.h"
+#include "core/xy/plotter_link_motion.h"
+#include "core/xy/table_link_motion.h"
 
 namespace trilho {
 

@@ -15,9 +15,9 @@
 #include <thread>
 #include <vector>
 
-#include "core/machine/xy_controller.h"
 #include "core/runtime/estop_request.h"
 #include "core/runtime/estop_stamp.h"
+#include "core/xy/xy_controller.h"
 #include "hal/sim/xy_plant.h"
 
 namespace trilho {

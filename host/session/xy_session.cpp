@@ -1,7 +1,7 @@
 #include "host/session/xy_session.h"
 
-#include "core/machine/dc_table_motion.h"
-#include "core/machine/plotter_motion.h"
+#include "core/xy/dc_table_motion.h"
+#include "core/xy/plotter_motion.h"
 #include "hal/sim/sim_dc_table.h"
 #include "hal/sim/sim_plotter.h"
 

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "core/machine/xy_controller.h"
+#include "core/xy/xy_controller.h"
 #include "hal/sim/xy_plant.h"
 
 namespace trilho {

@@ -20,7 +20,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 
 namespace trilho {
 

@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "core/control/rail_servo.h"
-#include "core/machine/dc_table_motion.h"
 #include "core/tuning/trace_writer.h"
+#include "core/xy/dc_table_motion.h"
 #include "hal/sim/sim_dc_table.h"
 #include "hal/sim/sim_rail.h"
 

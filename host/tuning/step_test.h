@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 #include "core/tuning/run_record.h"
 #include "core/tuning/step_metrics.h"
 

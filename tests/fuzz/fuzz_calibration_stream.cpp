@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "core/machine/dc_calibration.h"
+#include "core/xy/dc_calibration.h"
 #include "tests/fuzz/fuzz_input.h"
 #include "tests/fuzz/fuzz_support.h"
 

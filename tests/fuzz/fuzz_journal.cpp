@@ -3,7 +3,7 @@
 #include <QBuffer>
 #include <cstdint>
 
-#include "core/machine/journal.h"
+#include "core/journal/journal.h"
 #include "tests/fuzz/fuzz_support.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -4,8 +4,8 @@
 // 14), and what it prints never does.
 #include <cstdint>
 
-#include "core/machine/json_duplicate_keys.h"
-#include "core/machine/machine_profile.h"
+#include "core/profile/json_duplicate_keys.h"
+#include "core/profile/machine_profile.h"
 #include "tests/fuzz/fuzz_support.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -14,7 +14,7 @@
 #include <QTemporaryDir>
 #include <QThread>
 
-#include "core/machine/journal.h"
+#include "core/journal/journal.h"
 
 namespace trilho {
 namespace {

@@ -14,10 +14,10 @@
 
 #include "core/gcode/compiler.h"
 #include "core/machine/event_text.h"
-#include "core/machine/table_link_motion.h"
-#include "core/machine/xy_controller.h"
 #include "core/protocol/plotter_host.h"
 #include "core/protocol/table_host.h"
+#include "core/xy/table_link_motion.h"
+#include "core/xy/xy_controller.h"
 #include "hal/emulator/plotter_firmware.h"
 #include "hal/emulator/table_firmware.h"
 #include "tests/support/virtual_serial_line.h"

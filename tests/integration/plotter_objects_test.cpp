@@ -12,9 +12,9 @@
 #include <sstream>
 
 #include "core/gcode/compiler.h"
-#include "core/machine/plotter_link_motion.h"
-#include "core/machine/xy_controller.h"
 #include "core/protocol/plotter_host.h"
+#include "core/xy/plotter_link_motion.h"
+#include "core/xy/xy_controller.h"
 #include "hal/emulator/plotter_firmware.h"
 #include "tests/support/virtual_serial_line.h"
 #include "tests/support/xy_over_wire.h"

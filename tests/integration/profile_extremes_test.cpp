@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "core/gcode/compiler.h"
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 #include "host/session/sim_session.h"
 
 namespace trilho {

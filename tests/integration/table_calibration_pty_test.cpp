@@ -28,7 +28,7 @@
 #include <functional>
 #include <numbers>
 
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 #include "hal/emulator/table_firmware.h"
 #include "tests/support/calibration_streams.h"
 

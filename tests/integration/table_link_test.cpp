@@ -9,9 +9,9 @@
 #include <cstdio>
 
 #include "core/gcode/compiler.h"
-#include "core/machine/table_link_motion.h"
-#include "core/machine/xy_controller.h"
 #include "core/protocol/table_host.h"
+#include "core/xy/table_link_motion.h"
+#include "core/xy/xy_controller.h"
 #include "hal/emulator/table_firmware.h"
 #include "tests/support/virtual_serial_line.h"
 #include "tests/support/xy_over_wire.h"

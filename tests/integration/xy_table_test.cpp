@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/gcode/compiler.h"
-#include "core/machine/dc_table_motion.h"
+#include "core/xy/dc_table_motion.h"
 #include "hal/sim/sim_dc_table.h"
 #include "host/session/xy_session.h"
 #include "tests/support/xy_run.h"

@@ -11,8 +11,8 @@
 
 #include "core/gcode/program.h"
 #include "core/machine/controller_event.h"
-#include "core/machine/machine_profile.h"
-#include "core/machine/rail_controller.h"
+#include "core/profile/machine_profile.h"
+#include "core/rail/rail_controller.h"
 #include "hal/sim/fault_injection.h"
 
 namespace trilho::test {

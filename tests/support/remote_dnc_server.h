@@ -8,7 +8,7 @@
 #include <memory>
 
 #include "core/gcode/compiler.h"
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 #include "host/dnc/dnc_server.h"
 #include "host/dnc/register_store.h"
 

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <utility>
 
-#include "core/machine/serial_link_motion.h"
-#include "core/machine/xy_controller.h"
+#include "core/xy/serial_link_motion.h"
+#include "core/xy/xy_controller.h"
 #include "tests/support/virtual_serial_line.h"
 
 namespace trilho::test {

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <numbers>
 
-#include "core/machine/dc_calibration.h"
+#include "core/xy/dc_calibration.h"
 #include "tests/support/calibration_streams.h"
 
 namespace trilho {

@@ -4,8 +4,8 @@
 // the good file is byte for byte what it was, with no temporary file left behind.
 #include "tests/support/full_disk.h"
 #include "core/files/atomic_file.h"
-#include "core/machine/journal.h"
-#include "core/machine/machine_profile.h"
+#include "core/journal/journal.h"
+#include "core/profile/machine_profile.h"
 #include "core/tuning/run_record.h"
 
 #include <gtest/gtest.h>

@@ -17,7 +17,7 @@
 #include <thread>
 #include <vector>
 
-#include "core/machine/journal.h"
+#include "core/journal/journal.h"
 
 namespace trilho {
 namespace {

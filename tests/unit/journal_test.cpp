@@ -14,7 +14,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "core/machine/journal.h"
+#include "core/journal/journal.h"
 
 namespace trilho {
 namespace {

@@ -11,7 +11,7 @@
 #include <QTemporaryDir>
 #include <string>
 
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 #include "tests/support/json_leaves.h"
 
 namespace trilho {

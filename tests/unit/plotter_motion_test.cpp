@@ -1,4 +1,4 @@
-// The plotter's motion (core/machine/plotter_motion) driving the simulated plotter
+// The plotter's motion (core/xy/plotter_motion) driving the simulated plotter
 // (hal/sim/sim_plotter) directly, in virtual time: exact step counts, one step per axis per
 // event, drawn points within half a step of the programmed segments, the pen, the event rate,
 // hold/stop/cut, homing and the faults it finds (18 steps lost, 19 origin not found).
@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/gcode/compiler.h"
-#include "core/machine/plotter_motion.h"
+#include "core/xy/plotter_motion.h"
 #include "hal/sim/sim_plotter.h"
 
 namespace trilho {

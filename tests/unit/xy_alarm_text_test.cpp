@@ -6,7 +6,7 @@
 #include <QRegularExpression>
 
 #include "core/machine/event_text.h"
-#include "core/machine/xy_event_text.h"
+#include "core/xy/xy_event_text.h"
 #include "translations/i18n.h"
 
 namespace trilho {

@@ -12,8 +12,8 @@
 #include <cmath>
 
 #include "core/gcode/compiler.h"
-#include "core/machine/plotter_link_motion.h"
-#include "core/machine/xy_controller.h"
+#include "core/xy/plotter_link_motion.h"
+#include "core/xy/xy_controller.h"
 #include "hal/emulator/plotter_firmware.h"
 #include "host/session/xy_session.h"
 #include "host/session/xy_session_runnable.h"

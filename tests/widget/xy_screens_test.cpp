@@ -34,7 +34,7 @@
 
 #include "core/dnc/register_map.h"
 #include "core/gcode/compiler.h"
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 #include "core/protocol/table_host.h"
 #include "hal/serial/serial_line.h"
 #include "host/dnc/dnc_server.h"

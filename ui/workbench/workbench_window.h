@@ -13,7 +13,7 @@
 #include <optional>
 #include <vector>
 
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 #include "host/tuning/step_test.h"
 #include "ui/workbench/workbench_run.h"
 

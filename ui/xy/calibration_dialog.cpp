@@ -146,7 +146,7 @@ void CalibrationDialog::receive(const QByteArray& bytes, double tS) {
         if (!recorder_.refused().empty()) break;
     }
     if (!recorder_.refused().empty()) {
-        // A stream the program cannot have sent (core/machine/dc_calibration_check.h): said at
+        // A stream the program cannot have sent (core/xy/dc_calibration_check.h): said at
         // once, the port closed, nothing to compute or save until a new Start.
         last_.reset();
         save_->setEnabled(false);

@@ -2,7 +2,7 @@
 // The DC table's calibration on the host, as a dialog (issue 22 item 8; seed 004, annex 7,
 // "Programa para pruebas a lazo abierto"): receives the board's counts from a serial port
 // (hal/serial), plots pulses against time and against displacement, computes mm per pulse and
-// per turn from the travel measured (core/machine/dc_calibration.h) and saves the profile
+// per turn from the travel measured (core/xy/dc_calibration.h) and saves the profile
 // with the measured figure. The same computation as `trilho-cli calibrate`, and the same checks
 // (issue 30 item 2): a stream the program cannot have sent is refused as it comes, with its
 // reason, the port closed and nothing to save.
@@ -10,8 +10,8 @@
 #include <QElapsedTimer>
 #include <optional>
 
-#include "core/machine/dc_calibration.h"
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
+#include "core/xy/dc_calibration.h"
 
 class QCPGraph;
 class QComboBox;

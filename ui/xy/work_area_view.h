@@ -10,7 +10,7 @@
 #include <memory>
 #include <vector>
 
-#include "core/machine/xy_motion.h"
+#include "core/xy/xy_motion.h"
 
 namespace trilho {
 struct Program;

@@ -66,7 +66,7 @@ class XyMainWindow : public OperatorFrame {
     /// starts it as Start does (asking first); false when it cannot be saved or compiled.
     bool plotPolygon(const QString& program);
     QLabel* linkLabel() const { return linkLabel_; }
-    /// Keeps the history in a journal (core/machine/journal.h) at path, as the rail's
+    /// Keeps the history in a journal (core/journal/journal.h) at path, as the rail's
     /// history.log (or in this process' own file beside it when another trilho keeps path),
     /// and marks the screens' start; false with the reason (the screen still works, and says
     /// it). Says in the history what the journal found (another trilho keeps it; the last

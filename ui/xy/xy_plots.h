@@ -4,7 +4,7 @@
 #include <QWidget>
 #include <array>
 
-#include "core/machine/xy_motion.h"
+#include "core/xy/xy_motion.h"
 
 class QCustomPlot;
 class QCPGraph;

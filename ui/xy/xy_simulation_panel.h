@@ -7,7 +7,7 @@
 // what is armed is said on the safety bar until cleared.
 #include <QWidget>
 
-#include "core/machine/machine_kind.h"
+#include "core/profile/machine_kind.h"
 
 class QCheckBox;
 class QLabel;

@@ -27,9 +27,9 @@
 
 #include "core/control/dc_axis_loop.h"
 #include "core/io/dc_table_io.h"
-#include "core/machine/machine_profile.h"
-#include "core/machine/xy_motion.h"
 #include "core/motion/sync_trapezoid.h"
+#include "core/profile/machine_profile.h"
+#include "core/xy/xy_motion.h"
 
 namespace trilho {
 

@@ -1,4 +1,4 @@
-#include "core/machine/rail_controller.h"
+#include "core/rail/rail_controller.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "core/machine/dc_calibration_check.h"
+#include "core/xy/dc_calibration_check.h"
 
 #include <cmath>
 #include <cstdarg>

@@ -7,10 +7,10 @@
 #include <optional>
 
 #include "core/control/loop_law.h"
-#include "core/machine/dc_table_params.h"
-#include "core/machine/machine_kind.h"
-#include "core/machine/machine_limits.h"
-#include "core/machine/plotter_params.h"
+#include "core/profile/dc_table_params.h"
+#include "core/profile/machine_kind.h"
+#include "core/profile/machine_limits.h"
+#include "core/profile/plotter_params.h"
 
 namespace trilho {
 

@@ -1,4 +1,4 @@
-#include "core/machine/plotter_motion.h"
+#include "core/xy/plotter_motion.h"
 
 #include <algorithm>
 #include <cmath>

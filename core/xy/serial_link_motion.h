@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "core/machine/xy_motion.h"
+#include "core/xy/xy_motion.h"
 
 namespace trilho {
 

@@ -1,4 +1,4 @@
-#include "core/machine/journal.h"
+#include "core/journal/journal.h"
 
 #include "core/files/atomic_file.h"
 #include "core/files/file_syncer.h"

@@ -1,4 +1,4 @@
-#include "core/machine/xy_event_text.h"
+#include "core/xy/xy_event_text.h"
 
 #include <QCoreApplication>
 #include <cmath>

@@ -11,9 +11,9 @@
 #include "core/gcode/program.h"
 #include "core/machine/controller_event.h"
 #include "core/machine/controller_state.h"
-#include "core/machine/machine_profile.h"
 #include "core/machine/program_runner.h"
-#include "core/machine/xy_motion.h"
+#include "core/profile/machine_profile.h"
+#include "core/xy/xy_motion.h"
 
 namespace trilho {
 

@@ -7,9 +7,9 @@
 // the path's SPEED (one SPEED an object); any other move is an object of its own. Homing is
 // ORIGEM. After a failed link, resume() sends REQUEST, ORIGEM and SPEED again and the
 // unfinished object from its seam MOVE (PlotterHost::retry).
-#include "core/machine/machine_profile.h"
-#include "core/machine/serial_link_motion.h"
+#include "core/profile/machine_profile.h"
 #include "core/protocol/plotter_host.h"
+#include "core/xy/serial_link_motion.h"
 
 namespace trilho {
 

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "core/machine/dc_table_params.h"
+#include "core/profile/dc_table_params.h"
 #include "core/protocol/table_protocol.h"
 
 namespace trilho {

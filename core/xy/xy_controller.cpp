@@ -1,4 +1,4 @@
-#include "core/machine/xy_controller.h"
+#include "core/xy/xy_controller.h"
 
 #include <algorithm>
 #include <cmath>

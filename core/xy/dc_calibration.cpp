@@ -1,4 +1,4 @@
-#include "core/machine/dc_calibration.h"
+#include "core/xy/dc_calibration.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
-#include "core/machine/machine_profile.h"
+#include "core/profile/machine_profile.h"
 
 #include "core/files/atomic_file.h"
 
-#include "core/machine/replace_target.h"
+#include "core/files/replace_target.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "core/gcode/source_file.h"
-#include "core/machine/json_duplicate_keys.h"
-#include "core/machine/plotter_wire_steps.h"
+#include "core/profile/json_duplicate_keys.h"
+#include "core/xy/plotter_wire_steps.h"
 
 namespace trilho {
 

@@ -1,4 +1,4 @@
-#include "core/machine/table_link_motion.h"
+#include "core/xy/table_link_motion.h"
 
 #include <cmath>
 

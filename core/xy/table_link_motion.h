@@ -3,9 +3,9 @@
 // through TableHost, done when the board answers ACK (docs/protocols.md B). The board plans
 // and closes its own loops; the speed is its own (the protocol carries none). Homing: the
 // board's counts start at power-on at the origin (seed 004), so homing is a set point (0, 0).
-#include "core/machine/machine_profile.h"
-#include "core/machine/serial_link_motion.h"
+#include "core/profile/machine_profile.h"
 #include "core/protocol/table_host.h"
+#include "core/xy/serial_link_motion.h"
 
 namespace trilho {
 

@@ -1,6 +1,6 @@
-#include "core/machine/plotter_link_motion.h"
+#include "core/xy/plotter_link_motion.h"
 
-#include "core/machine/plotter_wire_steps.h"
+#include "core/xy/plotter_wire_steps.h"
 
 #include <algorithm>
 #include <cmath>

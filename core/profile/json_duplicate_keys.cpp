@@ -1,4 +1,4 @@
-#include "core/machine/json_duplicate_keys.h"
+#include "core/profile/json_duplicate_keys.h"
 
 #include <QHash>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "core/machine/dc_table_motion.h"
+#include "core/xy/dc_table_motion.h"
 
 #include <algorithm>
 #include <cmath>

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "core/machine/dc_calibration_check.h"
 #include "core/protocol/table_protocol.h"
+#include "core/xy/dc_calibration_check.h"
 
 namespace trilho {
 

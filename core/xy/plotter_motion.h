@@ -14,10 +14,10 @@
 #include <cstdint>
 
 #include "core/io/plotter_io.h"
-#include "core/machine/machine_profile.h"
-#include "core/machine/xy_motion.h"
 #include "core/motion/bresenham_line.h"
 #include "core/motion/float_line.h"
+#include "core/profile/machine_profile.h"
+#include "core/xy/xy_motion.h"
 
 namespace trilho {
 

@@ -1,4 +1,4 @@
-#include "core/machine/serial_link_motion.h"
+#include "core/xy/serial_link_motion.h"
 
 namespace trilho {
 
