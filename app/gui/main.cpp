@@ -18,6 +18,7 @@
 #include "translations/i18n.h"
 #include "ui/execution_panel.h"
 #include "ui/machine_link.h"
+#include "ui/machine_screens.h"
 #include "ui/main_window.h"
 #include "ui/settings_saved.h"
 #include "ui/start_screen.h"
@@ -218,128 +219,40 @@ int main(int argc, char* argv[]) {
     }
     if (!profile.error.isEmpty()) std::fprintf(stderr, "trilho: %s\n", qPrintable(profile.error));
 
-    // What is open: the rail's link and replicated screen, or an XY machine's.
-    std::unique_ptr<ui::MachineLink> railLink;
-    std::unique_ptr<ui::MainWindow> railWindow;
-    std::unique_ptr<XyLink> xyLink;
-    std::unique_ptr<ui::XyMainWindow> xyWindow;
+    // What is open: the rail's link and replicated screen, or an XY machine's; File > Machine...
+    // on any screen replaces it (ui/machine_screens). The command line's program and --run are
+    // for the first machine only.
+    ui::MachineScreens screens(*settings, theme,
+                               QStandardPaths::writableLocation(QStandardPaths::AppDataLocation));
     QMainWindow* window = nullptr;
-
-    // An XY machine: simulated (port empty) or a board on a serial port. Options > Connection
-    // reopens it on the other backend.
-    QString xyPort = parser.value(portOpt);
+    QObject::connect(&screens, &ui::MachineScreens::windowReplaced, &app, [&] {
+        window = screens.window();
+        machineName = screens.switchedTo().isEmpty() ? machineName : screens.switchedTo();
+    });
+    QObject::connect(&screens, &ui::MachineScreens::switchFailed, &app, [&](const QString& why) {
+        std::fprintf(stderr, "trilho: %s\n", qPrintable(why));
+        app.exit(2);
+    });
+    const QString xyPort = parser.value(portOpt);
     const int xyBaud = parser.value(baudOpt).toInt();
-    std::function<bool(const MachineProfile&, const QString&, int)> openXy;
-    openXy = [&](const MachineProfile& machine, const QString& port, int baud) -> bool {
-        std::unique_ptr<XyRunnable> runnable;
-        SerialLinkMotion* device = nullptr;
-        if (port.isEmpty()) {
-            XySessionMake made = makeXySession(machine, 1);
-            if (!made.session) {
-                std::fprintf(stderr, "trilho: %s\n", made.error.c_str());
-                return false;
-            }
-            runnable = std::make_unique<XySessionRunnable>(std::move(made.session));
-        } else {
-            SerialSettings serial;
-            serial.port = port;
-            serial.baud = baud;
-            XyDeviceSession made = makeXyDeviceSession(machine, serial);
-            if (!made.session) {
-                std::fprintf(stderr, "trilho: %s\n", qPrintable(made.error));
-                if (xyWindow)
-                    QMessageBox::warning(xyWindow.get(), QStringLiteral("trilho"), made.error);
-                return false;
-            }
-            baud = made.line ? serial.baud : baud;
-            auto r = std::make_unique<XyDeviceRunnable>(std::move(made));
-            device = r->link();
-            runnable = std::move(r);
-        }
-        const QByteArray geometry = xyWindow ? xyWindow->saveGeometry() : QByteArray();
-        xyWindow.reset();
-        xyLink = std::make_unique<XyLink>(
-            std::move(runnable), device ? XyLink::Drive::EventLoop : XyLink::Drive::Thread);
-        xyWindow = std::make_unique<ui::XyMainWindow>(*xyLink, *settings);
-        // The board first: what the journal's notices say of the position depends on it.
-        if (device)
-            xyWindow->setDeviceLink(
-                device, port,
-                baud > 0 ? baud : (machine.kind == MachineKind::Plotter ? 57600 : 9600));
-        {
-            // Each XY machine keeps its own journal beside the rail's history.log.
-            const QString dataDir =
-                QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
-            QDir().mkpath(dataDir);
-            QString journalError;
-            const QString name = machine.kind == MachineKind::Plotter
-                                     ? QStringLiteral("xy_plotter")
-                                     : QStringLiteral("xy_dc_table");
-            if (!xyWindow->openJournal(dataDir + QStringLiteral("/history-%1.log").arg(name),
-                                       &journalError))
-                std::fprintf(stderr, "trilho: %s (history is not kept)\n",
-                             qPrintable(journalError));
-        }
-        // The language the operator chose last (on this screen before a reconnection too).
-        xyWindow->setLanguage(settings->value(QStringLiteral("language"), lang).toString());
-        QObject::connect(xyWindow.get(), &ui::XyMainWindow::connectionChosen, &app,
-                         [&, machine](const QString& newPort, int newBaud) {
-                             // Rebuilt after this signal returns: its sender goes with it.
-                             QTimer::singleShot(0, &app, [&, machine, newPort, newBaud] {
-                                 if (openXy(machine, newPort, newBaud)) {
-                                     window = xyWindow.get();
-                                     window->show();
-                                 }
-                             });
-                         });
-        if (!geometry.isEmpty()) xyWindow->restoreGeometry(geometry);
-        window = xyWindow.get();
-        return true;
-    };
-
-    // File > Machine... on either screen: the chosen machine's screen replaces this one (the
-    // window stopped its machine first); the command line's program and --run were for the
-    // first machine only.
-    bool switched = false;
-    std::function<void(const QString&)> switchMachine;
     auto openMachine = [&](const MachineProfile& machine) -> bool {
-        const auto connectSwitch = [&](auto* w) {
-            QObject::connect(w, &std::remove_pointer_t<decltype(w)>::machineChosen, &app,
-                             [&](const QString& name) {
-                                 // After the signal returns: its sender goes with the switch.
-                                 QTimer::singleShot(0, &app, [&, name] { switchMachine(name); });
-                             });
-        };
-        if (machine.kind == MachineKind::Rail) {
-            railLink = std::make_unique<ui::MachineLink>(machine);
-            const QString dataDir =
-                QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
-            QDir().mkpath(dataDir);
-            QString journalError;
-            if (!railLink->openJournal(dataDir + QStringLiteral("/history.log"), &journalError))
-                std::fprintf(stderr, "trilho: %s (history is not kept)\n",
-                             qPrintable(journalError));
-            railWindow = std::make_unique<ui::MainWindow>(*railLink, *settings);
-            railWindow->setLanguage(lang);
-            railWindow->setTheme(theme);
-            if (!journalError.isEmpty()) railWindow->reportJournalProblem(journalError);
-            connectSwitch(railWindow.get());
-            if (!switched && parser.isSet(programOpt) &&
-                !railWindow->selectProgram(parser.value(programOpt))) {
-                std::fprintf(stderr, "trilho: cannot open program '%s'\n",
-                             qPrintable(parser.value(programOpt)));
-                return false;
-            }
-            window = railWindow.get();
-        } else {
-            if (!openXy(machine, switched ? QString() : xyPort, xyBaud)) return false;
-            if (!switched && parser.isSet(programOpt) &&
-                !xyWindow->selectProgram(parser.value(programOpt))) {
-                std::fprintf(stderr, "trilho: cannot open program '%s'\n",
-                             qPrintable(parser.value(programOpt)));
-                return false;
-            }
-            window = xyWindow.get();
+        QString why;
+        if (!screens.open(machine, machine.kind == MachineKind::Rail ? QString() : xyPort, xyBaud,
+                          &why)) {
+            std::fprintf(stderr, "trilho: %s\n", qPrintable(why));
+            return false;
+        }
+        window = screens.window();
+        const bool selected =
+            parser.isSet(programOpt)
+                ? (screens.railWindow()
+                       ? screens.railWindow()->selectProgram(parser.value(programOpt))
+                       : screens.xyWindow()->selectProgram(parser.value(programOpt)))
+                : true;
+        if (!selected) {
+            std::fprintf(stderr, "trilho: cannot open program '%s'\n",
+                         qPrintable(parser.value(programOpt)));
+            return false;
         }
         if (parser.isSet(sizeOpt)) {
             const QStringList wh = parser.value(sizeOpt).split(QLatin1Char('x'));
@@ -359,7 +272,7 @@ int main(int argc, char* argv[]) {
                 std::fprintf(stderr, "trilho: main screen shown %lld ms after launch\n",
                              static_cast<long long>(launch.elapsed()));
         });
-        if (xyWindow) {
+        if (ui::XyMainWindow* xyWindow = screens.xyWindow()) {
             if (parser.isSet(options.workbench) && xyWindow->workbenchAction()->isEnabled()) {
                 xyWindow->openWorkbench();
                 ui::WorkbenchWindow* bench = xyWindow->workbench();
@@ -377,10 +290,11 @@ int main(int argc, char* argv[]) {
             if (parser.isSet(runOpt))
                 xyWindow->startProgram(false);  // --run: chosen; Automatic homes first
             else if (parser.isSet(autoOpt))
-                xyLink->post([](XyController& c) { c.selectAutomatic(); });
+                screens.xyLink()->post([](XyController& c) { c.selectAutomatic(); });
             return;
         }
-        ui::MachineLink& link = *railLink;
+        ui::MachineLink& link = *screens.railLink();
+        ui::MainWindow* railWindow = screens.railWindow();
         if (parser.isSet(options.workbench)) {
             railWindow->openWorkbench();
             ui::WorkbenchWindow* bench = railWindow->workbench();
@@ -396,47 +310,24 @@ int main(int argc, char* argv[]) {
             auto* waiter = new QTimer(window);
             waiter->setInterval(50);
             QObject::connect(waiter, &QTimer::timeout, window, [&, waiter] {
-                if (railLink->status().homed &&
-                    railLink->status().state == ControllerState::AutoIdle) {
+                if (screens.railLink()->status().homed &&
+                    screens.railLink()->status().state == ControllerState::AutoIdle) {
                     waiter->stop();
-                    railWindow->executeSelected(0);
+                    screens.railWindow()->executeSelected(0);
                 }
             });
             waiter->start();
         }
     };
-    switchMachine = [&](const QString& name) {
-        ProfileLoad load = loadNamedMachineProfile(name);
-        if (!load.profile) {
-            QMessageBox::warning(window, QStringLiteral("trilho"), load.error);
-            return;
-        }
-        const QByteArray geometry = window ? window->saveGeometry() : QByteArray();
-        // The language the operator chose last, on either screen (each keeps it in settings).
-        lang = settings->value(QStringLiteral("language"), lang).toString();
-        // The screens go before their links (the windows hold references to them).
-        railWindow.reset();
-        xyWindow.reset();
-        railLink.reset();
-        xyLink.reset();
-        window = nullptr;
-        switched = true;
-        machineName = name;
-        settings->setValue(QStringLiteral("machine"), machineName);
-        if (!openMachine(*load.profile)) {
-            app.exit(2);
-            return;
-        }
-        if (!geometry.isEmpty()) window->restoreGeometry(geometry);
-        window->show();
-    };
     auto armExit = [&] {
         if (parser.isSet(shotOpt)) {
             const int ms = static_cast<int>(parser.value(shotAfterOpt).toDouble() * 1000);
-            QTimer::singleShot(ms, window, [&] {
+            QTimer::singleShot(ms, &app, [&] {  // app: the window may be replaced by then
                 QWidget* shown = window;
-                if (railWindow && railWindow->workbench()) shown = railWindow->workbench();
-                if (xyWindow && xyWindow->workbench()) shown = xyWindow->workbench();
+                if (screens.railWindow() && screens.railWindow()->workbench())
+                    shown = screens.railWindow()->workbench();
+                if (screens.xyWindow() && screens.xyWindow()->workbench())
+                    shown = screens.xyWindow()->workbench();
                 const bool ok = shown->grab().save(parser.value(shotOpt));
                 if (!ok)
                     std::fprintf(stderr, "trilho: cannot write %s\n",
@@ -484,8 +375,6 @@ int main(int argc, char* argv[]) {
     }
     if (parser.isSet(machineOpt)) settings->setValue(QStringLiteral("machine"), machineName);
     const int rc = app.exec();
-    // The screens go before their links (the windows hold references to them).
-    railWindow.reset();
-    xyWindow.reset();
+    screens.close();  // the screens before their links (the windows hold references to them)
     return rc;
 }

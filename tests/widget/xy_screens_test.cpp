@@ -48,6 +48,7 @@
 #include "ui/dnc_settings.h"
 #include "ui/keys_dialog.h"
 #include "ui/machine_link.h"
+#include "ui/machine_screens.h"
 #include "ui/main_window.h"
 #include "ui/program_library_panel.h"
 #include "ui/start_screen.h"
@@ -226,6 +227,38 @@ class XyScreensTest : public QObject {
         QVERIFY(rail.switchTo(MachineKind::DcTable));
         QVERIFY(asked.isEmpty());
         QCOMPARE(railChosen.at(0).at(0).toString(), QStringLiteral("xy_dc_table"));
+    }
+
+    void fileMachineReplacesEachScreenWithTheChosenMachines() {
+        // Issue 31 item 4: File > Machine... on the DC table and the plotter stopped the machine
+        // and left the same window (the switch was wired for the rail's screen only). From each
+        // of the three screens, the chosen machine's screen replaces the open one.
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        MachineScreens screens(settings, Theme::Classic, dir.filePath(QStringLiteral("data")));
+        QSignalSpy replaced(&screens, &MachineScreens::windowReplaced);
+        QVERIFY(screens.open(shipped("xy_dc_table.json")));
+        QVERIFY(screens.xyWindow());
+        QVERIFY(screens.xyWindow()->switchTo(MachineKind::Rail));
+        QTRY_COMPARE(replaced.size(), 1);
+        QVERIFY(screens.railWindow());
+        QVERIFY(!screens.xyWindow());
+        QCOMPARE(screens.window(), static_cast<QMainWindow*>(screens.railWindow()));
+        QCOMPARE(settings.value(QStringLiteral("machine")).toString(), QStringLiteral("rail"));
+
+        QVERIFY(screens.railWindow()->switchTo(MachineKind::Plotter));
+        QTRY_COMPARE(replaced.size(), 2);
+        QVERIFY(screens.xyWindow());
+        QVERIFY(!screens.railWindow());
+        QVERIFY(screens.xyWindow()->plotterPanel());
+
+        QVERIFY(screens.xyWindow()->switchTo(MachineKind::DcTable));
+        QTRY_COMPARE(replaced.size(), 3);
+        QVERIFY(screens.xyWindow());
+        QVERIFY(screens.xyWindow()->tablePanel());
+        QCOMPARE(screens.window(), static_cast<QMainWindow*>(screens.xyWindow()));
+        QCOMPARE(settings.value(QStringLiteral("machine")).toString(),
+                 QStringLiteral("xy_dc_table"));
     }
 
     void xySimulationDockArmsThePlantsFaultsAndTheSafetyBarSaysSo() {
