@@ -348,7 +348,11 @@ void ExecutionPanel::showStatus(const ControllerStatus& s) {
     // (issue 19 item 7: the enabled one was away from the text that asked for it).
     continue_->setEnabled(s.state == ControllerState::Paused);
     const bool moving = s.servo.mode == ServoMode::Move;
-    if (moving || s.state == ControllerState::Running) {
+    // A setpoint exists only while the position loop follows or holds one: in Manual (the
+    // operator's drive code), after an E-stop or a fault the loop is open, so none is shown.
+    const bool loopClosed = moving || s.servo.mode == ServoMode::Hold;
+    if (!loopClosed && !setpoint_->text().isEmpty()) setpoint_->clear();
+    if (moving || (loopClosed && s.state == ControllerState::Running)) {
         setpoint_->setText(mm(s.servo.targetMm));
         // The VB rescaled both gauges at each posiciona: start..target and 0..length.
         if (s.servo.targetMm != gaugeTarget_ || s.servo.moveStartMm != gaugeStart_) {

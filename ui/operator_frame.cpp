@@ -330,6 +330,9 @@ void OperatorFrame::showSafetyState(bool latched, bool alarmed) {
     }
     resetEstop_->setEnabled(latched);
     ack_->setEnabled(alarmed && !latched);
+    // Homing is refused while the E-stop is latched: disabled, as Cycle start is.
+    home_->setEnabled(!latched);
+    homeButton_->setEnabled(!latched);
 }
 
 bool OperatorFrame::faultArmedShown() const {

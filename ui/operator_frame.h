@@ -63,6 +63,8 @@ class OperatorFrame : public QMainWindow {
     QAction* manualAction() const { return manual_; }
     QAction* automaticAction() const { return automatic_; }
     QAction* homeAction() const { return home_; }
+    /// The safety bar's Home (the action's twin, beside Reset E-stop).
+    QAbstractButton* homeButton() const { return homeButton_; }
     QAction* keysAction() const { return keys_; }
     QAction* resetLayoutAction() const { return resetLayout_; }
     QAction* workbenchAction() const { return workbench_; }

@@ -189,6 +189,33 @@ class OperatorScreensTest : public QObject {
     }
 
   private slots:
+    void theSetpointShowsOnlyWhileTheLoopHasOne() {
+        // Issue 31 item 2: the Loop's Setpoint kept 850.00 in Manual after an E-stop and its
+        // reset; a setpoint is shown only while the position loop follows or holds one.
+        ExecutionPanel panel;
+        ControllerStatus s;
+        s.state = ControllerState::Running;
+        s.automatic = true;
+        s.servo.mode = ServoMode::Move;
+        s.servo.targetMm = 850.0;
+        s.servo.moveStartMm = 0.0;
+        panel.showStatus(s);
+        QCOMPARE(panel.setpointField()->text(), QStringLiteral("850.00"));
+        s.state = ControllerState::AutoIdle;
+        s.servo.mode = ServoMode::Hold;
+        panel.showStatus(s);
+        QCOMPARE(panel.setpointField()->text(), QStringLiteral("850.00"));  // held there
+        for (const ServoMode released : {ServoMode::Idle, ServoMode::Fault, ServoMode::Direct}) {
+            s.state =
+                released == ServoMode::Direct ? ControllerState::Manual : ControllerState::EStop;
+            s.automatic = released != ServoMode::Direct;
+            s.servo.mode = released;
+            panel.showStatus(s);
+            QVERIFY2(panel.setpointField()->text().isEmpty(),
+                     qPrintable(panel.setpointField()->text()));
+        }
+    }
+
     void init() {
         installLanguage(QStringLiteral("en"));
         applyTheme(*qApp, Theme::Classic);
@@ -838,9 +865,9 @@ class OperatorScreensTest : public QObject {
             settle();
             const QString head = banner->fullText().section(QLatin1Char(':'), 0, 0);
             QVERIFY2(head.size() > 5 && banner->text().startsWith(head),
-                     qPrintable(QStringLiteral("'%1' shown of '%2' in %3")
-                                    .arg(banner->text(), banner->fullText(),
-                                         QString::fromLatin1(lang))));
+                     qPrintable(
+                         QStringLiteral("'%1' shown of '%2' in %3")
+                             .arg(banner->text(), banner->fullText(), QString::fromLatin1(lang))));
             QCOMPARE(banner->toolTip(), banner->fullText());
         }
         window_->setLanguage(QStringLiteral("en"));

@@ -261,6 +261,41 @@ class XyScreensTest : public QObject {
                  QStringLiteral("xy_dc_table"));
     }
 
+    void homeIsDisabledWhileTheEmergencyStopIsLatched() {
+        // Issue 31 item 2: Home stayed enabled during a latched E-stop on every screen and was
+        // refused when pressed; as Cycle start, it is disabled until Reset E-stop.
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        for (const char* machine : {"xy_dc_table.json", "xy_plotter.json"}) {
+            auto link = virtualLink(shipped(machine));
+            XyMainWindow w(*link, settings);
+            w.show();
+            link->advance(0.1);
+            QVERIFY(w.homeAction()->isEnabled());
+            QVERIFY(w.homeButton()->isEnabled());
+            w.estopButton()->click();
+            link->advance(0.1);
+            QCOMPARE(link->status().state, ControllerState::EStop);
+            QVERIFY2(!w.homeAction()->isEnabled(), machine);
+            QVERIFY2(!w.homeButton()->isEnabled(), machine);
+            link->post([](XyController& c) { c.resetEmergencyStop(); });
+            link->advance(0.1);
+            QVERIFY(w.homeAction()->isEnabled());
+            QVERIFY(w.homeButton()->isEnabled());
+        }
+        MachineLink railLink(MachineProfile::rail());
+        MainWindow rail(railLink, settings);
+        rail.show();
+        QTRY_VERIFY(rail.homeAction()->isEnabled());
+        rail.emergencyButton()->click();
+        QTRY_COMPARE(railLink.status().state, ControllerState::EStop);
+        QTRY_VERIFY(!rail.homeAction()->isEnabled());
+        QVERIFY(!rail.homeButton()->isEnabled());
+        railLink.resetEmergencyStop();
+        QTRY_VERIFY(rail.homeAction()->isEnabled());
+        QVERIFY(rail.homeButton()->isEnabled());
+    }
+
     void xySimulationDockArmsThePlantsFaultsAndTheSafetyBarSaysSo() {
         // Issue 19, one frame (and item 5): each XY plant's faults in a Simulation dock; a
         // value changes only by deliberate input, and an armed fault shows on the safety bar.
