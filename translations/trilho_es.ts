@@ -116,6 +116,50 @@
         <translation>Emergencia liberada.</translation>
     </message>
     <message>
+        <source>Homing: driving right until the centre mark or the right end switch.</source>
+        <translation>Referencia: hacia la derecha hasta la marca central o el final de carrera derecho.</translation>
+    </message>
+    <message>
+        <source>Homing: on the centre mark; leaving it to the right first.</source>
+        <translation>Referencia: sobre la marca central; saliendo de ella hacia la derecha primero.</translation>
+    </message>
+    <message>
+        <source>Homing: right end switch reached; driving left to the centre mark.</source>
+        <translation>Referencia: final de carrera derecho alcanzado; hacia la izquierda hasta la marca central.</translation>
+    </message>
+    <message>
+        <source>Homing: off the centre mark; driving left back to it.</source>
+        <translation>Referencia: fuera de la marca central; volviendo a la izquierda hasta ella.</translation>
+    </message>
+    <message>
+        <source>Homing: centre mark found; the counter is zeroed on it once the platform is still.</source>
+        <translation>Referencia: marca central encontrada; el contador se pone a cero en ella cuando la plataforma se detenga.</translation>
+    </message>
+    <message>
+        <source>Homing: driving to x = 0, the rail centre.</source>
+        <translation>Referencia: yendo a x = 0, el centro del riel.</translation>
+    </message>
+    <message>
+        <source>Homing stopped by the operator: the machine is not homed.</source>
+        <translation>Referencia detenida por el operador: la máquina no está referenciada.</translation>
+    </message>
+    <message>
+        <source>Move stopped by the operator.</source>
+        <translation>Movimiento detenido por el operador.</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Detenido</translation>
+    </message>
+    <message>
+        <source>Homing stopped</source>
+        <translation>Referencia detenida</translation>
+    </message>
+    <message>
+        <source>Move stopped</source>
+        <translation>Movimiento detenido</translation>
+    </message>
+    <message>
         <source>Warning %2: %3</source>
         <translation>Aviso %2: %3</translation>
     </message>
@@ -174,10 +218,6 @@
     <message>
         <source>PAUSED</source>
         <translation>PAUSADO</translation>
-    </message>
-    <message>
-        <source>Stopped</source>
-        <translation>Detenido</translation>
     </message>
     <message>
         <source>ALARM</source>
@@ -286,6 +326,14 @@
     <message>
         <source>Homing done: at the origin.</source>
         <translation>Referencia terminada: en el origen.</translation>
+    </message>
+    <message>
+        <source>Homing: the table does not move; its origin is where it stood at power-on.</source>
+        <translation>Referencia: la mesa no se mueve; su origen es donde estaba al encenderla.</translation>
+    </message>
+    <message>
+        <source>Homing done: the table stands at x=%2 y=%4 from its power-on origin.</source>
+        <translation>Referencia terminada: la mesa está en x=%2 y=%4 del origen al encenderla.</translation>
     </message>
     <message>
         <source>%1: Return to the machine&apos;s absolute zero.</source>
@@ -1236,8 +1284,8 @@
         <translation>Ejecutar desde el bloque seleccionado</translation>
     </message>
     <message>
-        <source>Start %1 from block %2? %3The rail moves at once, at rapid speed, %4.</source>
-        <translation>¿Iniciar %1 desde el bloque %2? %3El riel se mueve de inmediato, a velocidad rápida, %4.</translation>
+        <source>Start %1 from block %2? %3%4</source>
+        <translation>¿Iniciar %1 desde el bloque %2? %3%4</translation>
     </message>
     <message>
         <source>Its position is not known, so it homes first: %1 </source>
@@ -1348,12 +1396,8 @@
         <translation>Inicio de ciclo</translation>
     </message>
     <message>
-        <source>Execute %1? %3The rail moves %2, then runs the program.</source>
-        <translation>¿Ejecutar %1? %3El riel se mueve %2, y luego ejecuta el programa.</translation>
-    </message>
-    <message>
-        <source>from x = %1 mm to x = %2 mm</source>
-        <translation>de x = %1 mm a x = %2 mm</translation>
+        <source>Execute %1? %2%3 Then it runs the program.</source>
+        <translation>¿Ejecutar %1? %2%3 Luego ejecuta el programa.</translation>
     </message>
     <message>
         <source> (the rail centre, where every program starts, as in the 1996 program)</source>
@@ -1362,6 +1406,18 @@
     <message>
         <source> (first programmed move to x = %1 mm)</source>
         <translation> (primer movimiento programado a x = %1 mm)</translation>
+    </message>
+    <message>
+        <source>It starts where homing leaves it, at x = %1 mm%2%3.</source>
+        <translation>Empieza donde lo deja la referencia, en x = %1 mm%2%3.</translation>
+    </message>
+    <message>
+        <source>It starts where it stands, at x = %1 mm%2%3.</source>
+        <translation>Empieza donde está, en x = %1 mm%2%3.</translation>
+    </message>
+    <message>
+        <source>The rail moves at rapid speed from x = %1 mm to x = %2 mm%3%4.</source>
+        <translation>El riel se mueve a velocidad rápida de x = %1 mm a x = %2 mm%3%4.</translation>
     </message>
     <message>
         <source>the rail drives right until a switch: the centre mark if it is left of the centre; otherwise the right end switch (about x = +%1 mm), then back left to the centre mark</source>
@@ -2902,8 +2958,28 @@
         <translation>la pluma sube y el carro va hasta los sensores de origen, donde los dos ejes se ponen a cero (0, 0).</translation>
     </message>
     <message>
+        <source>the DC table has no home switch: it travels at full speed to (0, 0), its origin (where it stood at power-on).</source>
+        <translation>la mesa CC no tiene interruptor de referencia: va a velocidad máxima hasta (0, 0), su origen (donde estaba al encenderla).</translation>
+    </message>
+    <message>
         <source>the DC table has no home switch: its origin is where it stood at power-on, and nothing moves.</source>
         <translation>la mesa CC no tiene interruptor de referencia: su origen es donde estaba al encenderla, y nada se mueve.</translation>
+    </message>
+    <message>
+        <source> (first programmed move to (%1, %2) mm)</source>
+        <translation> (primer movimiento programado a (%1, %2) mm)</translation>
+    </message>
+    <message>
+        <source>It starts the program where homing leaves it, at the origin (0.0, 0.0) mm, where every program starts%1.</source>
+        <translation>Empieza el programa donde la deja la referencia, en el origen (0.0, 0.0) mm, donde empieza todo programa%1.</translation>
+    </message>
+    <message>
+        <source>It starts the program where it stands, at the origin (0.0, 0.0) mm, where every program starts%1.</source>
+        <translation>Empieza el programa donde está, en el origen (0.0, 0.0) mm, donde empieza todo programa%1.</translation>
+    </message>
+    <message>
+        <source>The machine travels at full speed from (%1, %2) mm to the origin (0.0, 0.0) mm, where every program starts, then runs it%3.</source>
+        <translation>La máquina va a velocidad máxima de (%1, %2) mm hasta el origen (0.0, 0.0) mm, donde empieza todo programa, y luego lo ejecuta%3.</translation>
     </message>
     <message>
         <source>Automatic</source>
@@ -2930,8 +3006,8 @@
         <translation>Inicio de ciclo</translation>
     </message>
     <message>
-        <source>Run %1? %2The machine travels at full speed from (%3, %4) mm to the program&apos;s start, then runs it.</source>
-        <translation>¿Ejecutar %1? %2La máquina va a velocidad máxima de (%3, %4) mm hasta el inicio del programa, y luego lo ejecuta.</translation>
+        <source>Run %1? %2%3</source>
+        <translation>¿Ejecutar %1? %2%3</translation>
     </message>
     <message>
         <source>Its position is not known, so it homes first: %1 </source>

@@ -116,6 +116,50 @@
         <translation>Emergência liberada.</translation>
     </message>
     <message>
+        <source>Homing: driving right until the centre mark or the right end switch.</source>
+        <translation>Referência: indo para a direita até a marca central ou o fim de curso direito.</translation>
+    </message>
+    <message>
+        <source>Homing: on the centre mark; leaving it to the right first.</source>
+        <translation>Referência: sobre a marca central; saindo dela para a direita primeiro.</translation>
+    </message>
+    <message>
+        <source>Homing: right end switch reached; driving left to the centre mark.</source>
+        <translation>Referência: fim de curso direito atingido; indo para a esquerda até a marca central.</translation>
+    </message>
+    <message>
+        <source>Homing: off the centre mark; driving left back to it.</source>
+        <translation>Referência: fora da marca central; voltando para a esquerda até ela.</translation>
+    </message>
+    <message>
+        <source>Homing: centre mark found; the counter is zeroed on it once the platform is still.</source>
+        <translation>Referência: marca central encontrada; o contador é zerado nela quando a plataforma parar.</translation>
+    </message>
+    <message>
+        <source>Homing: driving to x = 0, the rail centre.</source>
+        <translation>Referência: indo para x = 0, o centro do trilho.</translation>
+    </message>
+    <message>
+        <source>Homing stopped by the operator: the machine is not homed.</source>
+        <translation>Referência interrompida pelo operador: a máquina não está referenciada.</translation>
+    </message>
+    <message>
+        <source>Move stopped by the operator.</source>
+        <translation>Movimento interrompido pelo operador.</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Parado</translation>
+    </message>
+    <message>
+        <source>Homing stopped</source>
+        <translation>Referência interrompida</translation>
+    </message>
+    <message>
+        <source>Move stopped</source>
+        <translation>Movimento interrompido</translation>
+    </message>
+    <message>
         <source>Warning %2: %3</source>
         <translation>Aviso %2: %3</translation>
     </message>
@@ -174,10 +218,6 @@
     <message>
         <source>PAUSED</source>
         <translation>PAUSADO</translation>
-    </message>
-    <message>
-        <source>Stopped</source>
-        <translation>Parado</translation>
     </message>
     <message>
         <source>ALARM</source>
@@ -286,6 +326,14 @@
     <message>
         <source>Homing done: at the origin.</source>
         <translation>Referência concluída: na origem.</translation>
+    </message>
+    <message>
+        <source>Homing: the table does not move; its origin is where it stood at power-on.</source>
+        <translation>Referência: a mesa não se move; a origem é onde ela estava ao ligar.</translation>
+    </message>
+    <message>
+        <source>Homing done: the table stands at x=%2 y=%4 from its power-on origin.</source>
+        <translation>Referência concluída: a mesa está em x=%2 y=%4 da origem ao ligar.</translation>
     </message>
     <message>
         <source>%1: Return to the machine&apos;s absolute zero.</source>
@@ -1236,8 +1284,8 @@
         <translation>Executar a partir do bloco selecionado</translation>
     </message>
     <message>
-        <source>Start %1 from block %2? %3The rail moves at once, at rapid speed, %4.</source>
-        <translation>Iniciar %1 a partir do bloco %2? %3O trilho move-se imediatamente, em velocidade rápida, %4.</translation>
+        <source>Start %1 from block %2? %3%4</source>
+        <translation>Iniciar %1 a partir do bloco %2? %3%4</translation>
     </message>
     <message>
         <source>Its position is not known, so it homes first: %1 </source>
@@ -1348,12 +1396,8 @@
         <translation>Início de ciclo</translation>
     </message>
     <message>
-        <source>Execute %1? %3The rail moves %2, then runs the program.</source>
-        <translation>Executar %1? %3O trilho move-se %2, e então executa o programa.</translation>
-    </message>
-    <message>
-        <source>from x = %1 mm to x = %2 mm</source>
-        <translation>de x = %1 mm para x = %2 mm</translation>
+        <source>Execute %1? %2%3 Then it runs the program.</source>
+        <translation>Executar %1? %2%3 Depois executa o programa.</translation>
     </message>
     <message>
         <source> (the rail centre, where every program starts, as in the 1996 program)</source>
@@ -1362,6 +1406,18 @@
     <message>
         <source> (first programmed move to x = %1 mm)</source>
         <translation> (primeiro movimento programado para x = %1 mm)</translation>
+    </message>
+    <message>
+        <source>It starts where homing leaves it, at x = %1 mm%2%3.</source>
+        <translation>Começa onde a referência o deixa, em x = %1 mm%2%3.</translation>
+    </message>
+    <message>
+        <source>It starts where it stands, at x = %1 mm%2%3.</source>
+        <translation>Começa onde está, em x = %1 mm%2%3.</translation>
+    </message>
+    <message>
+        <source>The rail moves at rapid speed from x = %1 mm to x = %2 mm%3%4.</source>
+        <translation>O trilho move-se em velocidade rápida de x = %1 mm até x = %2 mm%3%4.</translation>
     </message>
     <message>
         <source>the rail drives right until a switch: the centre mark if it is left of the centre; otherwise the right end switch (about x = +%1 mm), then back left to the centre mark</source>
@@ -2902,8 +2958,28 @@
         <translation>a caneta sobe e o carro vai até os sensores de origem, onde os dois eixos são zerados (0, 0).</translation>
     </message>
     <message>
+        <source>the DC table has no home switch: it travels at full speed to (0, 0), its origin (where it stood at power-on).</source>
+        <translation>a mesa CC não tem chave de referência: vai em velocidade máxima até (0, 0), sua origem (onde estava ao ligar).</translation>
+    </message>
+    <message>
         <source>the DC table has no home switch: its origin is where it stood at power-on, and nothing moves.</source>
         <translation>a mesa CC não tem chave de referência: sua origem é onde estava ao ligar, e nada se move.</translation>
+    </message>
+    <message>
+        <source> (first programmed move to (%1, %2) mm)</source>
+        <translation> (primeiro movimento programado para (%1, %2) mm)</translation>
+    </message>
+    <message>
+        <source>It starts the program where homing leaves it, at the origin (0.0, 0.0) mm, where every program starts%1.</source>
+        <translation>Começa o programa onde a referência a deixa, na origem (0.0, 0.0) mm, onde todo programa começa%1.</translation>
+    </message>
+    <message>
+        <source>It starts the program where it stands, at the origin (0.0, 0.0) mm, where every program starts%1.</source>
+        <translation>Começa o programa onde está, na origem (0.0, 0.0) mm, onde todo programa começa%1.</translation>
+    </message>
+    <message>
+        <source>The machine travels at full speed from (%1, %2) mm to the origin (0.0, 0.0) mm, where every program starts, then runs it%3.</source>
+        <translation>A máquina vai em velocidade máxima de (%1, %2) mm até a origem (0.0, 0.0) mm, onde todo programa começa, e então o executa%3.</translation>
     </message>
     <message>
         <source>Automatic</source>
@@ -2930,8 +3006,8 @@
         <translation>Início de ciclo</translation>
     </message>
     <message>
-        <source>Run %1? %2The machine travels at full speed from (%3, %4) mm to the program&apos;s start, then runs it.</source>
-        <translation>Executar %1? %2A máquina vai em velocidade máxima de (%3, %4) mm até o início do programa, e então o executa.</translation>
+        <source>Run %1? %2%3</source>
+        <translation>Executar %1? %2%3</translation>
     </message>
     <message>
         <source>Its position is not known, so it homes first: %1 </source>

@@ -283,8 +283,7 @@ void MainWindow::buildDocks() {
             const QString block =
                 b.n >= 0 ? QStringLiteral("N%1").arg(b.n) : tr("line %1").arg(b.line);
             if (!confirm(tr("Start from the selected block"),
-                         tr("Start %1 from block %2? %3The rail moves at once, at rapid speed, "
-                            "%4.")
+                         tr("Start %1 from block %2? %3%4")
                              .arg(QFileInfo(selectedFile_).fileName(), block,
                                   last_.homed ? QString()
                                               : tr("Its position is not known, so it homes "
@@ -508,34 +507,49 @@ void MainWindow::requestCycleStart() {
     compileEditor(true, [this](std::shared_ptr<Program> program) {
         if (program->ok() &&
             !confirm(tr("Cycle start"),
-                     tr("Execute %1? %3The rail moves %2, then runs the program.")
-                         .arg(QFileInfo(selectedFile_).fileName(), approachText(*program, 0),
+                     tr("Execute %1? %2%3 Then it runs the program.")
+                         .arg(QFileInfo(selectedFile_).fileName(),
                               last_.homed ? QString()
                                           : tr("Its position is not known, so it homes first: "
                                                "%1 ")
-                                                .arg(homingText())))) {
+                                                .arg(homingText()),
+                              approachText(*program, 0)))) {
             return;
         }
         startCompiled(std::move(program), 0);
     });
 }
 
-QString MainWindow::approachText(const Program& program, std::size_t fromIndex) const {
+QString MainWindow::approachText(const Program& program, std::size_t fromIndex, bool homed,
+                                 double positionMm) {
     // Where the controller first drives (rail_controller: the centre for a full run, the
     // position before the block for a start from a block), then the program's first target.
+    // From where the rail stands, or from x = 0 where homing leaves it when it homes first.
     const ModalState modal = modalStateBefore(program, fromIndex);
     const double startAt = modal.hasPosition ? modal.positionMm : 0.0;
-    QString text = tr("from x = %1 mm to x = %2 mm")
-                       .arg(last_.servo.positionMm, 0, 'f', 2)
-                       .arg(startAt, 0, 'f', 2);
+    const bool homesFirst = !homed;
+    const double from = homesFirst ? 0.0 : positionMm;
     // A full run starts at the rail centre, a move the program does not contain: say why.
-    if (!modal.hasPosition)
-        text += tr(" (the rail centre, where every program starts, as in the 1996 program)");
+    const QString centre =
+        modal.hasPosition
+            ? QString()
+            : tr(" (the rail centre, where every program starts, as in the 1996 program)");
+    QString first;
     for (std::size_t i = fromIndex; i < program.blocks.size(); ++i)
-        if (isMotion(program.blocks[i].op))
-            return text +
-                   tr(" (first programmed move to x = %1 mm)").arg(program.blocks[i].x, 0, 'f', 2);
-    return text;
+        if (isMotion(program.blocks[i].op)) {
+            first = tr(" (first programmed move to x = %1 mm)").arg(program.blocks[i].x, 0, 'f', 2);
+            break;
+        }
+    // Within 0.005 mm (the figures shown): no approach move.
+    if (std::abs(from - startAt) < 0.005)
+        return (homesFirst ? tr("It starts where homing leaves it, at x = %1 mm%2%3.")
+                           : tr("It starts where it stands, at x = %1 mm%2%3."))
+            .arg(startAt, 0, 'f', 2)
+            .arg(centre, first);
+    return tr("The rail moves at rapid speed from x = %1 mm to x = %2 mm%3%4.")
+        .arg(from, 0, 'f', 2)
+        .arg(startAt, 0, 'f', 2)
+        .arg(centre, first);
 }
 
 QString MainWindow::homingText() const {

@@ -37,6 +37,10 @@ class SimulationPanel;
 class MainWindow : public OperatorFrame {
     Q_OBJECT
   public:
+    /// The question's sentence on where a run from block fromIndex first drives: from the
+    /// rail's position (positionMm), or from x = 0 where homing leaves it when not homed.
+    static QString approachText(const Program& program, std::size_t fromIndex, bool homed,
+                                double positionMm);
     MainWindow(MachineLink& link, QSettings& settings, QWidget* parent = nullptr);
     ~MainWindow() override;
 
@@ -109,8 +113,9 @@ class MainWindow : public OperatorFrame {
     /// Compiles the editor's text (a long one on a worker thread) and calls then with it.
     void compileEditor(bool showInAlarms, std::function<void(std::shared_ptr<Program>)> then);
     void startCompiled(std::shared_ptr<Program> program, std::size_t fromIndex);
-    /// "from x = 12.00 mm to x = 0.00 mm": where a run from block fromIndex first drives.
-    QString approachText(const Program& program, std::size_t fromIndex) const;
+    QString approachText(const Program& program, std::size_t fromIndex) const {
+        return approachText(program, fromIndex, last_.homed, last_.servo.positionMm);
+    }
     static QString stateText(ControllerState state);
     /// The online status box's text, as a function so it follows the language and the state.
     void setOnline(std::function<QString()> text);

@@ -2,6 +2,7 @@
 
 #include <QCoreApplication>
 #include <cmath>
+#include <iterator>
 
 #include "core/gcode/diagnostic_text.h"
 
@@ -40,6 +41,35 @@ constexpr const char* kHistory[static_cast<int>(EventKind::Count_)] = {
     QT_TRANSLATE_NOOP("Controller", "Alarm %2: %3"),
     QT_TRANSLATE_NOOP("Controller", "Alarm %2 acknowledged."),
     QT_TRANSLATE_NOOP("Controller", "Emergency stop reset."),
+    // HomingLeg: its leg's line (kHomingLeg); this is the first leg's.
+    QT_TRANSLATE_NOOP("Controller",
+                      "Homing: driving right until the centre mark or the right end switch."),
+};
+
+// Indexed by RailHomingLeg: the leg the platform is on, as the VB's Automatico_Click drove it.
+constexpr const char* kHomingLeg[static_cast<int>(RailHomingLeg::Count_)] = {
+    QT_TRANSLATE_NOOP("Controller",
+                      "Homing: driving right until the centre mark or the right end switch."),
+    QT_TRANSLATE_NOOP("Controller", "Homing: on the centre mark; leaving it to the right first."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Homing: right end switch reached; driving left to the centre mark."),
+    QT_TRANSLATE_NOOP("Controller", "Homing: off the centre mark; driving left back to it."),
+    QT_TRANSLATE_NOOP("Controller",
+                      "Homing: centre mark found; the counter is zeroed on it once the platform "
+                      "is still."),
+    QT_TRANSLATE_NOOP("Controller", "Homing: driving to x = 0, the rail centre."),
+};
+
+// Stopped's line and status by StopWhat: a program's is the 1996 line.
+constexpr const char* kStoppedLine[] = {
+    QT_TRANSLATE_NOOP("Controller", "Program stopped by the operator."),
+    QT_TRANSLATE_NOOP("Controller", "Homing stopped by the operator: the machine is not homed."),
+    QT_TRANSLATE_NOOP("Controller", "Move stopped by the operator."),
+};
+constexpr const char* kStoppedStatus[] = {
+    QT_TRANSLATE_NOOP("Controller", "Stopped"),
+    QT_TRANSLATE_NOOP("Controller", "Homing stopped"),
+    QT_TRANSLATE_NOOP("Controller", "Move stopped"),
 };
 
 constexpr const char* kWarningLine = QT_TRANSLATE_NOOP("Controller", "Warning %2: %3");
@@ -73,6 +103,7 @@ constexpr const char* kOnline[static_cast<int>(EventKind::Count_)] = {
     QT_TRANSLATE_NOOP("Controller", "ALARM"),
     nullptr,
     nullptr,
+    QT_TRANSLATE_NOOP("Controller", "HOMING"),
 };
 
 constexpr const char* kAlarm[static_cast<int>(AlarmCode::Count_)] = {
@@ -196,7 +227,12 @@ QString historyLine(const ControllerEvent& e) {
         x = QString::number(static_cast<int>(e.alarm));
         third = alarmText(e.alarm, e.value);
     }
-    QString line = QCoreApplication::translate(kContext, historySource(e.kind));
+    const char* source = historySource(e.kind);
+    if (e.kind == EventKind::HomingLeg && e.detail < std::size(kHomingLeg))
+        source = kHomingLeg[e.detail];
+    if (e.kind == EventKind::Stopped && e.detail < std::size(kStoppedLine))
+        source = kStoppedLine[e.detail];
+    QString line = QCoreApplication::translate(kContext, source);
     // A block without N (programs need not number them) has no "0010: " prefix, not ": ".
     if (n.isEmpty() && line.startsWith(QLatin1String("%1: "))) line.remove(0, 4);
     return substitute(line, {n, x, third});
@@ -204,6 +240,8 @@ QString historyLine(const ControllerEvent& e) {
 
 QString onlineStatus(const ControllerEvent& e) {
     const char* source = onlineSource(e.kind);
+    if (e.kind == EventKind::Stopped && e.detail < std::size(kStoppedStatus))
+        source = kStoppedStatus[e.detail];
     return source ? QCoreApplication::translate(kContext, source) : QString();
 }
 

@@ -59,8 +59,23 @@ class ProgramRunner {
         e.feed = feed;
         e.alarm = alarm;
         e.value = value;
+        push(e);
+    }
+    /// An event whose kind has variants (ControllerEvent::detail): a homing leg, what a Stop
+    /// stopped; x and value as the kind says (mm).
+    template <typename Detail>
+    void postDetail(EventKind kind, Detail detail, double x = 0.0, double value = 0.0) {
+        ControllerEvent e;
+        e.timeS = d().status_.timeS;
+        e.kind = kind;
+        e.x = x;
+        e.value = value;
+        e.detail = static_cast<std::uint8_t>(detail);
+        push(e);
+    }
+    void push(const ControllerEvent& e) {
         events_.push(e);
-        if (setsOnlineStatus(kind)) d().status_.lastStatus = e;
+        if (setsOnlineStatus(e.kind)) d().status_.lastStatus = e;
     }
 
     /// Blocks that take no time (status blocks, gotos) run at most this many per period, so a

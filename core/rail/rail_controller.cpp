@@ -89,6 +89,8 @@ void RailController::beginHoming() {
     status_.homed = false;
     setState(ControllerState::Homing);
     post(EventKind::HomingStarted);
+    postDetail(EventKind::HomingLeg,
+               leavingCentre_ ? RailHomingLeg::LeavingCentreMark : RailHomingLeg::DrivingRight);
 }
 
 void RailController::stepHoming(double dtS) {
@@ -105,6 +107,7 @@ void RailController::stepHoming(double dtS) {
             // the centre mark was passed unseen.
             if (centre) {
                 homingPhase_ = HomingPhase::CrossLeft;
+                postDetail(EventKind::HomingLeg, RailHomingLeg::ZeroingOnCentreMark);
             } else if (left) {
                 return raiseAlarm(AlarmCode::HomingFailed);
             } else {
@@ -120,14 +123,18 @@ void RailController::stepHoming(double dtS) {
             break;
         case HomingPhase::SearchRight:
             if (leavingCentre_) {
-                if (!centre)
+                if (!centre) {
                     leavingCentre_ = false, homingPhase_ = HomingPhase::SearchLeft;
-                else
+                    postDetail(EventKind::HomingLeg, RailHomingLeg::LeftToCentreMark);
+                } else {
                     servo_.setDirect(code(kHomingSearchCodes));
+                }
             } else if (centre) {
                 homingPhase_ = HomingPhase::CrossRight;
+                postDetail(EventKind::HomingLeg, RailHomingLeg::ZeroingOnCentreMark);
             } else if (right) {
                 homingPhase_ = HomingPhase::SearchLeft;  // the platform was right of centre
+                postDetail(EventKind::HomingLeg, RailHomingLeg::RightEndBackLeft);
             } else {
                 servo_.setDirect(code(kHomingSearchCodes));
             }
@@ -146,6 +153,7 @@ void RailController::stepHoming(double dtS) {
                 servo_.setSoftLimitsActive(true);
                 servo_.moveTo(0.0, 0.25, false);
                 homingPhase_ = HomingPhase::Centre;
+                postDetail(EventKind::HomingLeg, RailHomingLeg::ToCentre);
             }
             break;
         case HomingPhase::Centre:
@@ -340,6 +348,7 @@ void RailController::resume() {
 
 void RailController::stop() {
     const auto s = status_.state;
+    const StopWhat what = s == ControllerState::Homing ? StopWhat::Homing : StopWhat::Program;
     if (s != ControllerState::Running && s != ControllerState::Waiting &&
         s != ControllerState::Paused && s != ControllerState::Homing)
         return;
@@ -353,7 +362,7 @@ void RailController::stop() {
     status_.heldByController = false;
     servo_.setSoftLimitsActive(true);
     setState(ControllerState::AutoIdle);
-    post(EventKind::Stopped);
+    postDetail(EventKind::Stopped, what);
 }
 
 void RailController::setSingleBlock(bool on) {

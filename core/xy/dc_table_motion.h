@@ -49,6 +49,7 @@ class DcTableMotion final : public XyMotion {
     double faultValue() const override { return faultValue_; }
     void clearFault() override;
     bool homed() const override { return homed_; }
+    bool homingMoves() const override { return false; }  // the power-on zero is the origin
     XyPoint commanded() const override { return commanded_; }
     XySample sample() const override { return sample_; }
 

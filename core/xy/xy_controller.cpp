@@ -49,7 +49,7 @@ void XyController::home() {
 void XyController::beginHoming() {
     motion_->beginHoming();
     setState(ControllerState::Homing);
-    post(EventKind::HomingStarted);
+    postDetail(EventKind::HomingStarted, homingKind());
 }
 
 // ---- manual ----------------------------------------------------------------------------------
@@ -159,16 +159,17 @@ void XyController::stop() {
         // A manual move (a set point sent, a jog): the same controlled stop as a program's,
         // and the mode stays (issue 19: Stop stops every motion, not only a program's).
         motion_->stop();
-        post(EventKind::Stopped);
+        postDetail(EventKind::Stopped, StopWhat::Move);
         return;
     }
     if (s != ControllerState::Running && s != ControllerState::Waiting &&
         s != ControllerState::Paused && s != ControllerState::Homing)
         return;
+    const StopWhat what = s == ControllerState::Homing ? StopWhat::Homing : StopWhat::Program;
     motion_->stop();
     abandonRun();
     setState(ControllerState::AutoIdle);
-    post(EventKind::Stopped);
+    postDetail(EventKind::Stopped, what);
 }
 
 void XyController::setSingleBlock(bool on) {
@@ -276,7 +277,9 @@ void XyController::step(double dtS) {
         case ControllerState::Homing:
             if (!motion_->busy() && motion_->homed()) {
                 setState(ControllerState::AutoIdle);
-                post(EventKind::HomingDone);
+                // Where it stands (mm): the DC table's homing does not move.
+                const XySample at = motion_->sample();
+                postDetail(EventKind::HomingDone, homingKind(), at.x.positionMm, at.y.positionMm);
                 if (startAfterHoming_) {
                     startAfterHoming_ = false;
                     start(pendingStart_);
@@ -293,6 +296,7 @@ void XyController::step(double dtS) {
     status_.sample = motion_->sample();
     status_.positionBasis = motion_->positionBasis();
     status_.homed = motion_->homed();
+    status_.homingMoves = motion_->homingMoves();
 }
 
 }  // namespace trilho

@@ -42,6 +42,8 @@ struct XyStatus {
     std::uint64_t lastCommandSeq = 0;
     bool heldByController = false;  ///< a Hold the controller made (a motionless loop)
     bool motionBusy = false;        ///< a move or homing is under way (also a manual one)
+    /// Whether homing drives to the origin (false: the DC table's power-on origin, no motion).
+    bool homingMoves = true;
 };
 
 class XyController : private ProgramRunner<XyController> {
@@ -101,6 +103,9 @@ class XyController : private ProgramRunner<XyController> {
     void moveProgram(XyPoint target, XyMove kind, double speedFraction);
     double yOf(std::size_t index) const;
     bool homedForStart() const { return motion_->homed(); }
+    XyHomingKind homingKind() const {
+        return motion_->homingMoves() ? XyHomingKind::ToOriginSensors : XyHomingKind::PowerOnOrigin;
+    }
     /// An XY program carries a y for every block.
     bool programFits(const Program& p) const { return p.y.size() == p.blocks.size(); }
     /// Execution starts at the origin; from a block, where the program left the table.

@@ -17,6 +17,12 @@ constexpr const char* kLine =
     QT_TRANSLATE_NOOP("Controller", "%1: Line to x=%2 y=%4 at %3% of maximum speed.");
 constexpr const char* kHoming = QT_TRANSLATE_NOOP("Controller", "Homing: going to the origin.");
 constexpr const char* kHomed = QT_TRANSLATE_NOOP("Controller", "Homing done: at the origin.");
+// The DC table's homing (XyHomingKind::PowerOnOrigin): seed 004 has no origin sensor; the
+// origin is where the table stood at power-on, so homing does not move it.
+constexpr const char* kHomingInPlace = QT_TRANSLATE_NOOP(
+    "Controller", "Homing: the table does not move; its origin is where it stood at power-on.");
+constexpr const char* kHomedInPlace = QT_TRANSLATE_NOOP(
+    "Controller", "Homing done: the table stands at x=%2 y=%4 from its power-on origin.");
 constexpr const char* kResetZero =
     QT_TRANSLATE_NOOP("Controller", "%1: Return to the machine's absolute zero.");
 
@@ -99,9 +105,19 @@ QString xyHistoryLine(const ControllerEvent& e) {
             source = kLine;
             break;
         case EventKind::HomingStarted:
-            source = kHoming;
+            source = e.detail == static_cast<std::uint8_t>(XyHomingKind::PowerOnOrigin)
+                         ? kHomingInPlace
+                         : kHoming;
             break;
         case EventKind::HomingDone:
+            if (e.detail == static_cast<std::uint8_t>(XyHomingKind::PowerOnOrigin)) {
+                // Where it stands, to 0.01 mm (the readout's figures).
+                ControllerEvent at = e;
+                at.x = std::round(e.x * 100.0) / 100.0;
+                at.value = std::round(e.value * 100.0) / 100.0;
+                return substitute(QCoreApplication::translate(kContext, kHomedInPlace),
+                                  {QString(), number(at.x), QString(), number(at.value)});
+            }
             source = kHomed;
             break;
         case EventKind::ResetZero:

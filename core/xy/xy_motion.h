@@ -75,6 +75,9 @@ class XyMotion {
     virtual double faultValue() const = 0;
     virtual void clearFault() = 0;
     virtual bool homed() const = 0;
+    /// Whether beginHoming() drives the machine to its origin (false: it takes where the
+    /// machine stands as known and does not move, as the DC table's seed does).
+    virtual bool homingMoves() const { return true; }
     /// What sample()'s positions rest on.
     virtual XyPositionBasis positionBasis() const { return XyPositionBasis::Known; }
     virtual XyPoint commanded() const = 0;

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <QCoreApplication>
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -513,3 +514,74 @@ TEST(Controller, HomingDrivesRightFirstAsTheVbDid) {
     EXPECT_GT(hiRight, 1270.0);
     EXPECT_GT(loRight, -20.0);
 }
+
+namespace trilho {
+namespace {
+
+// Issue 31 item 2: the history says the homing leg the platform is on. From right of centre
+// the platform drives right to the right end switch first: "going to the rail centre" alone
+// was not what it did.
+TEST(ControllerTexts, HomingFromTheRightNamesEachLegInTurn) {
+    RailRun r(300.0);
+    ASSERT_TRUE(r.home());
+    std::vector<RailHomingLeg> legs;
+    for (const ControllerEvent& e : r.events)
+        if (e.kind == EventKind::HomingLeg) legs.push_back(static_cast<RailHomingLeg>(e.detail));
+    const std::vector<RailHomingLeg> expected = {
+        RailHomingLeg::DrivingRight, RailHomingLeg::RightEndBackLeft,
+        RailHomingLeg::ZeroingOnCentreMark, RailHomingLeg::ToCentre};
+    EXPECT_EQ(legs, expected);
+    const auto h = r.history();
+    const auto has = [&](const std::string& text) {
+        return std::find(h.begin(), h.end(), text) != h.end();
+    };
+    EXPECT_TRUE(has("Homing: right end switch reached; driving left to the centre mark."));
+    EXPECT_TRUE(has("Homing: driving right until the centre mark or the right end switch."));
+}
+
+TEST(ControllerTexts, HomingFromTheLeftNeverSaysTheRightEnd) {
+    RailRun r(-300.0);
+    ASSERT_TRUE(r.home());
+    int legs = 0;
+    for (const ControllerEvent& e : r.events) {
+        if (e.kind != EventKind::HomingLeg) continue;
+        ++legs;
+        EXPECT_NE(static_cast<RailHomingLeg>(e.detail), RailHomingLeg::RightEndBackLeft);
+    }
+    EXPECT_EQ(legs, 3);  // right to the mark, zeroing on it, to x = 0
+}
+
+// Esc during a homing logged "Program stopped by the operator." and showed "Stopped" as if a
+// program ran: the line names what was stopped.
+TEST(ControllerTexts, StopDuringAHomingNamesTheHoming) {
+    RailRun r(300.0);
+    r.c().selectAutomatic();
+    ASSERT_TRUE(r.until([&] { return r.session.rail().state().positionMm > 320.0; }, 10));
+    r.c().stop();
+    r.step();
+    ASSERT_FALSE(r.events.empty());
+    const ControllerEvent& last = r.events.back();
+    ASSERT_EQ(last.kind, EventKind::Stopped);
+    EXPECT_EQ(static_cast<StopWhat>(last.detail), StopWhat::Homing);
+    EXPECT_EQ(historyLine(last).toStdString(),
+              "Homing stopped by the operator: the machine is not homed.");
+    EXPECT_EQ(onlineStatus(last).toStdString(), "Homing stopped");
+    EXPECT_FALSE(r.c().status().homed);
+}
+
+TEST(ControllerTexts, StopDuringAProgramIsStillTheProgramsLine) {
+    RailRun r;
+    ASSERT_TRUE(r.home());
+    ASSERT_TRUE(r.c().loadProgram(compileText("G0 X800\nM2\n")));
+    ASSERT_TRUE(r.c().start());
+    ASSERT_TRUE(r.until([&] { return r.session.rail().state().positionMm > 100.0; }, 10));
+    r.c().stop();
+    r.step();
+    const ControllerEvent& last = r.events.back();
+    ASSERT_EQ(last.kind, EventKind::Stopped);
+    EXPECT_EQ(historyLine(last).toStdString(), "Program stopped by the operator.");
+    EXPECT_EQ(onlineStatus(last).toStdString(), "Stopped");
+}
+
+}  // namespace
+}  // namespace trilho

@@ -2,6 +2,7 @@
 // laws, faults, hold and resume, and a seeded soak of random programs.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -9,7 +10,9 @@
 #include <vector>
 
 #include "core/gcode/compiler.h"
+#include "core/machine/event_text.h"
 #include "core/xy/dc_table_motion.h"
+#include "core/xy/xy_event_text.h"
 #include "hal/sim/sim_dc_table.h"
 #include "host/session/xy_session.h"
 #include "tests/support/xy_run.h"
@@ -597,6 +600,76 @@ TEST(XyTableSoak, RandomProgramsStayOnTheLine) {
     }
     std::printf("soak: 100 programs, worst path deviation %.3f mm, worst final error %.2f counts\n",
                 worstDev, worstFinal);
+}
+
+}  // namespace
+}  // namespace trilho
+
+namespace trilho {
+namespace {
+
+std::vector<ControllerEvent> drained(XyController& c) {
+    std::vector<ControllerEvent> events;
+    c.drainEvents([&](const ControllerEvent& e) { events.push_back(e); });
+    return events;
+}
+
+// Issue 31 item 2: the DC table said "Homing done: at the origin." standing at (68, 68). Its
+// homing does not move (the seed has no origin sensor: the origin is where the table stood at
+// power-on), so the lines say that, and where the table is.
+TEST(XyTableTexts, HomingSaysItDoesNotMoveAndWhereTheTableIs) {
+    XySessionMake made = makeXySession(test::tableProfileForMoves(), 1, {68.0, 68.0});
+    ASSERT_TRUE(made.session) << made.error;
+    XyController& c = made.session->controller();
+    c.home();
+    ASSERT_TRUE(
+        made.session->runUntil([&] { return c.status().state == ControllerState::AutoIdle; }, 1.0));
+    std::vector<std::string> lines;
+    for (const ControllerEvent& e : drained(c))
+        lines.push_back(xyHistoryLine(e).toStdString());
+    const auto has = [&](const std::string& text) {
+        return std::find(lines.begin(), lines.end(), text) != lines.end();
+    };
+    EXPECT_TRUE(
+        has("Homing: the table does not move; its origin is where it stood at "
+            "power-on."));
+    EXPECT_FALSE(has("Homing done: at the origin."));
+    // Where the encoders put it (within a count or two of where it was placed), to 0.01 mm.
+    double x = 0.0, y = 0.0;
+    int found = 0;
+    for (const std::string& l : lines)
+        found += std::sscanf(l.c_str(),
+                             "Homing done: the table stands at x=%lf y=%lf from its power-on "
+                             "origin.",
+                             &x, &y);
+    ASSERT_EQ(found, 2);
+    EXPECT_NEAR(x, 68.0, 0.1);
+    EXPECT_NEAR(y, 68.0, 0.1);
+    EXPECT_NEAR(x, c.status().sample.x.positionMm, 0.006);
+    EXPECT_NEAR(y, c.status().sample.y.positionMm, 0.006);
+}
+
+// Stop during a set point sent in Manual logged "Program stopped by the operator.": it names
+// the move.
+TEST(XyTableTexts, StopDuringASentMoveNamesTheMove) {
+    XySessionMake made = makeXySession(test::tableProfileForMoves(), 1, {0.0, 0.0});
+    ASSERT_TRUE(made.session) << made.error;
+    XyController& c = made.session->controller();
+    c.home();
+    ASSERT_TRUE(
+        made.session->runUntil([&] { return c.status().state == ControllerState::AutoIdle; }, 1.0));
+    c.selectManual();
+    c.moveTo({250.0, 250.0}, 1.0);
+    made.session->runUntil([] { return false; }, 0.3);
+    drained(c);
+    c.stop();
+    made.session->runUntil([] { return false; }, 0.01);
+    const std::vector<ControllerEvent> events = drained(c);
+    ASSERT_FALSE(events.empty());
+    EXPECT_EQ(events.front().kind, EventKind::Stopped);
+    EXPECT_EQ(static_cast<StopWhat>(events.front().detail), StopWhat::Move);
+    EXPECT_EQ(xyHistoryLine(events.front()).toStdString(), "Move stopped by the operator.");
+    EXPECT_EQ(onlineStatus(events.front()).toStdString(), "Move stopped");
 }
 
 }  // namespace

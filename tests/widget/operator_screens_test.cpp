@@ -36,6 +36,7 @@
 #include <QToolButton>
 #include <QTreeView>
 
+#include "core/gcode/compiler.h"
 #include "core/machine/event_text.h"
 #include "tests/support/test_fonts.h"
 #include "tests/support/widget_test_main.h"
@@ -189,6 +190,36 @@ class OperatorScreensTest : public QObject {
     }
 
   private slots:
+    void cycleStartQuestionSaysWhereHomingLeavesTheRail() {
+        // Issue 31 item 2: before a homing the question quoted positions that would not hold
+        // ("from x = 10.61 mm" when the rail homes first and starts from 0; "from x = 0.00 mm
+        // to x = 0.00 mm"): it homes first and starts from x = 0, where homing leaves it.
+        CompileOptions options;
+        const Program program = compile("N10 G0 X300\nN20 M2\n", options);
+        QVERIFY(program.ok());
+        QString q = MainWindow::approachText(program, 0, false, 10.61);
+        QVERIFY2(q.startsWith(QStringLiteral("It starts where homing leaves it, at x = 0.00 mm")),
+                 qPrintable(q));
+        QVERIFY2(!q.contains(QStringLiteral("10.61")), qPrintable(q));
+        QVERIFY2(q.contains(QStringLiteral("first programmed move to x = 300.00 mm")),
+                 qPrintable(q));
+        // Homed and standing at the start: no move from a point to itself.
+        q = MainWindow::approachText(program, 0, true, 0.001);
+        QVERIFY2(q.startsWith(QStringLiteral("It starts where it stands, at x = 0.00 mm")),
+                 qPrintable(q));
+        // Homed elsewhere: the move it makes, from where it stands.
+        q = MainWindow::approachText(program, 0, true, 10.61);
+        QVERIFY2(q.startsWith(QStringLiteral(
+                     "The rail moves at rapid speed from x = 10.61 mm to x = 0.00 mm")),
+                 qPrintable(q));
+        // From a block: where the block before it left the platform.
+        const Program two = compile("N10 G0 X300\nN20 G0 X-100\nN30 M2\n", options);
+        q = MainWindow::approachText(two, 1, false, 10.61);
+        QVERIFY2(q.startsWith(QStringLiteral(
+                     "The rail moves at rapid speed from x = 0.00 mm to x = 300.00 mm")),
+                 qPrintable(q));
+    }
+
     void theSetpointShowsOnlyWhileTheLoopHasOne() {
         // Issue 31 item 2: the Loop's Setpoint kept 850.00 in Manual after an E-stop and its
         // reset; a setpoint is shown only while the position loop follows or holds one.

@@ -261,6 +261,60 @@ class XyScreensTest : public QObject {
                  QStringLiteral("xy_dc_table"));
     }
 
+    void cycleStartQuestionNamesEveryTravelFromWhereItWillStart() {
+        // Issue 31 items 2-3: the DC table's question said "from (250.0, 250.0) mm to the
+        // program's start" and the table ran to the origin (0, 0) first, a point it did not
+        // name; the plotter's quoted its position though homing takes it to (0, 0) first.
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        QStringList asked;
+        {
+            auto link = virtualLink(shipped("xy_dc_table.json"));
+            XyMainWindow w(*link, settings);
+            w.setConfirmer([&](const QString&, const QString& text) {
+                asked << text;
+                return false;
+            });
+            w.tablePanel()->xBox()->setValue(250);
+            w.tablePanel()->yBox()->setValue(250);
+            w.tablePanel()->sendButton()->click();
+            QVERIFY(advanceUntil(
+                *link,
+                [&] {
+                    return !link->status().motionBusy && link->status().sample.x.positionMm > 249.0;
+                },
+                20.0));
+            link->advance(0.1);
+            QVERIFY(w.selectProgram(QStringLiteral(TRILHO_PROGRAMS_DIR "/mesa_xy_quadrado.G")));
+            asked.clear();
+            w.startButton()->click();
+            const QString q = asked.value(0);
+            QVERIFY2(q.contains(QStringLiteral("from (25")) &&
+                         q.contains(QStringLiteral("mm to the origin (0.0, 0.0) mm")),
+                     qPrintable(q));
+            QVERIFY2(q.contains(QStringLiteral("first programmed move to (50.0, 50.0) mm")),
+                     qPrintable(q));
+            QVERIFY2(!q.contains(QStringLiteral("program's start")), qPrintable(q));
+        }
+        {
+            auto link = virtualLink(shipped("xy_plotter.json"));
+            XyMainWindow w(*link, settings);
+            w.setConfirmer([&](const QString&, const QString& text) {
+                asked << text;
+                return false;
+            });
+            QVERIFY(!link->status().homed);
+            QVERIFY(w.selectProgram(QStringLiteral(TRILHO_PROGRAMS_DIR "/plotter_quadrado.G")));
+            asked.clear();
+            w.startButton()->click();
+            const QString q = asked.value(0);
+            QVERIFY2(q.contains(QStringLiteral("homes first")), qPrintable(q));
+            QVERIFY2(q.contains(QStringLiteral("where homing leaves it, at the origin")),
+                     qPrintable(q));
+            QVERIFY2(!q.contains(QStringLiteral("travels at full speed from")), qPrintable(q));
+        }
+    }
+
     void homeIsDisabledWhileTheEmergencyStopIsLatched() {
         // Issue 31 item 2: Home stayed enabled during a latched E-stop on every screen and was
         // refused when pressed; as Cycle start, it is disabled until Reset E-stop.

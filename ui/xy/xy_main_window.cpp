@@ -532,9 +532,42 @@ QString XyMainWindow::homingText() const {
         return tr(
             "the pen lifts and the carriage runs to the origin sensors, where both axes "
             "are zeroed (0, 0).");
+    if (last_.homingMoves)  // a board on its serial line: the host sends it to (0, 0)
+        return tr(
+            "the DC table has no home switch: it travels at full speed to (0, 0), its origin "
+            "(where it stood at power-on).");
     return tr(
         "the DC table has no home switch: its origin is where it stood at power-on, and "
         "nothing moves.");
+}
+
+QString XyMainWindow::approachText(const Program& program) const {
+    // xy_controller.cpp beginApproach(): a full run starts at the origin (0, 0); from where
+    // the machine stands, or from where homing leaves it (the origin, when homing moves).
+    const bool homesFirst = !last_.homed;
+    const XyPoint from = homesFirst && last_.homingMoves
+                             ? XyPoint{}
+                             : XyPoint{last_.sample.x.positionMm, last_.sample.y.positionMm};
+    QString first;
+    for (std::size_t i = 0; i < program.blocks.size(); ++i)
+        if (isMotion(program.blocks[i].op)) {
+            first = tr(" (first programmed move to (%1, %2) mm)")
+                        .arg(program.blocks[i].x, 0, 'f', 1)
+                        .arg(program.y[i], 0, 'f', 1);
+            break;
+        }
+    // Within 0.05 mm (the figures shown): no travel.
+    if (std::hypot(from.x, from.y) < 0.05)
+        return (homesFirst ? tr("It starts the program where homing leaves it, at the origin "
+                                "(0.0, 0.0) mm, where every program starts%1.")
+                           : tr("It starts the program where it stands, at the origin (0.0, "
+                                "0.0) mm, where every program starts%1."))
+            .arg(first);
+    return tr("The machine travels at full speed from (%1, %2) mm to the origin (0.0, 0.0) mm, "
+              "where every program starts, then runs it%3.")
+        .arg(from.x, 0, 'f', 1)
+        .arg(from.y, 0, 'f', 1)
+        .arg(first);
 }
 
 void XyMainWindow::requestAutomatic() {
@@ -565,17 +598,14 @@ void XyMainWindow::startProgram(bool ask) {
         return;
     }
     if (!program_) return;
-    const XySample& at = last_.sample;
     if (ask && !confirm(tr("Cycle start"),
-                        tr("Run %1? %2The machine travels at full speed from (%3, %4) mm to the "
-                           "program's start, then runs it.")
+                        tr("Run %1? %2%3")
                             .arg(QFileInfo(programPath_).fileName(),
                                  last_.homed ? QString()
                                              : tr("Its position is not known, so it homes "
                                                   "first: %1 ")
-                                                   .arg(homingText()))
-                            .arg(at.x.positionMm, 0, 'f', 1)
-                            .arg(at.y.positionMm, 0, 'f', 1)))
+                                                   .arg(homingText()),
+                                 approachText(*program_))))
         return;
     auto program = program_;
     view_->clearFollowed();

@@ -127,6 +127,8 @@ class XyMainWindow : public OperatorFrame {
   private:
     /// What homing does on this machine, for the questions that lead to it.
     QString homingText() const;
+    /// The Cycle start question's travel: from where to the program's start, and its first move.
+    QString approachText(const Program& program) const;
     void setOverride(int percent);
     void onUpdate(const std::vector<XyTraceRow>& rows, const std::vector<ControllerEvent>& events,
                   const XyStatus& status);
