@@ -17,7 +17,7 @@
 #include "core/files/replace_target.h"
 #include "core/tuning/run_record.h"
 #include "host/common/data_paths.h"
-#include "host/tuning/step_test.h"
+#include "host/tuning/step_experiment.h"
 
 namespace trilho::cli {
 

@@ -1,7 +1,7 @@
 // trilho-cli tune margin --machine xy_plotter [--axis x|y] [--seed N] [--json]
 // Issue 21 item 1 for the plotter (it has no encoder): the speed and acceleration margin of the
 // profile's figures against lost steps, on the simulated plotter (host/tuning/
-// plotter_margin_test.h). Simulation only: the seed's board reports no step count.
+// plotter_margin_sweep.h). Simulation only: the seed's board reports no step count.
 #include <QCommandLineParser>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -11,7 +11,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/option_values.h"
 #include "host/common/data_paths.h"
-#include "host/tuning/plotter_margin_test.h"
+#include "host/tuning/plotter_margin_sweep.h"
 
 namespace trilho::cli {
 
