@@ -7,10 +7,10 @@
 
 #include "app/cli/cli_output.h"
 #include "app/cli/tune_dc_table.h"
-#include "app/cli/tune_report.h"
 #include "core/tuning/dc_axis_autotune.h"
 #include "core/tuning/dc_identification_experiment.h"
 #include "host/session/sim_dc_table_rig.h"
+#include "host/tuning/reports/autotune_report.h"
 
 namespace trilho::cli {
 

@@ -13,11 +13,11 @@
 #include "app/cli/commands.h"
 #include "app/cli/option_values.h"
 #include "app/cli/tune_dc_table.h"
-#include "app/cli/tune_report.h"
 #include "core/files/replace_target.h"
 #include "core/tuning/rail_autotune.h"
 #include "host/common/data_paths.h"
 #include "host/session/sim_rail_rig.h"
+#include "host/tuning/reports/autotune_report.h"
 
 namespace trilho::cli {
 

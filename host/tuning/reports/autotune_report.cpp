@@ -1,9 +1,9 @@
-#include "app/cli/tune_report.h"
+#include "host/tuning/reports/autotune_report.h"
 
 #include <QJsonArray>
 #include <cmath>
 
-namespace trilho::cli {
+namespace trilho {
 
 QJsonValue numberOrNull(double v) {
     return std::isfinite(v) ? QJsonValue(v) : QJsonValue();
@@ -77,4 +77,4 @@ QString moveText(const char* name, const MoveResult& p, const MoveResult& m) {
         .arg(m.finalErrorCounts, 0, 'f', 0);
 }
 
-}  // namespace trilho::cli
+}  // namespace trilho

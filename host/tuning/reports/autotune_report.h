@@ -1,7 +1,8 @@
 #pragma once
-// What `tune auto` prints of a verification move and a frequency view, on any machine (the
-// rail's tune_model_command.cpp, the DC table's tune_dc_table_command.cpp): the snake
-// case JSON keys with units in the name, and one text line per move, predicted / measured.
+// The autotune's report of a verification move and a frequency view, on any machine, as
+// `trilho-cli tune auto` prints it (the rail's app/cli/tune_model_command.cpp, the DC table's
+// tune_dc_table_command.cpp), here so the workbench can give the same: the snake case
+// JSON keys with units in the name, and one text line per move, predicted / measured.
 #include <QJsonObject>
 #include <QJsonValue>
 #include <QString>
@@ -9,7 +10,7 @@
 #include "core/tuning/frequency_response.h"
 #include "core/tuning/verification_move.h"
 
-namespace trilho::cli {
+namespace trilho {
 
 /// A number, or null when it was not reached (NaN: step_info's "never").
 QJsonValue numberOrNull(double v);
@@ -61,4 +62,4 @@ QString moveText(const char* name, const MoveResult& predicted, const MoveResult
 /// "margins: gain G dB at W rad/s, phase P deg at W rad/s\n".
 QString marginsText(const FrequencyView& f);
 
-}  // namespace trilho::cli
+}  // namespace trilho
