@@ -3,11 +3,9 @@
 #include <QJsonArray>
 #include <cmath>
 
-namespace trilho {
+#include "host/tuning/reports/identification_report.h"
 
-QJsonValue numberOrNull(double v) {
-    return std::isfinite(v) ? QJsonValue(v) : QJsonValue();
-}
+namespace trilho {
 
 QJsonObject moveJson(const MoveResult& m) {
     const StepMetrics& s = m.metrics;
@@ -75,6 +73,113 @@ QString moveText(const char* name, const MoveResult& p, const MoveResult& m) {
              time(m.inPositionTimeS))
         .arg(p.finalErrorCounts, 0, 'f', 0)
         .arg(m.finalErrorCounts, 0, 'f', 0);
+}
+
+QJsonObject railGainsJson(const LoopGains& g) {
+    return QJsonObject{{QStringLiteral("law"), QStringLiteral("engineered")},
+                       {QStringLiteral("kp_code_per_mm"), g.kp},
+                       {QStringLiteral("ki_code_per_mm_s"), g.ki},
+                       {QStringLiteral("kd_code_per_mm_s"), g.kd}};
+}
+
+namespace {
+
+/// The autotune's JSON on any machine: `gains` and `design` are the machine's own (given only
+/// once the model was accepted).
+template <class Result>
+QJsonObject autotuneJson(const TuneConditions& c, const Result& r, const QJsonObject& gains,
+                         const QJsonObject& design) {
+    QJsonObject o = tuneConditionsJson(c);
+    o[QStringLiteral("ok")] = r.ok;
+    o[QStringLiteral("identification")] = identificationJson(r.identification);
+    if (r.identification.accepted) {
+        o[QStringLiteral("gains")] = gains;
+        o[QStringLiteral("design")] = design;
+        o[QStringLiteral("frequency")] = frequencyJson(r.frequency);
+        o[QStringLiteral("predicted")] =
+            QJsonObject{{QStringLiteral("step"), moveJson(r.predictedStep)},
+                        {QStringLiteral("long_move"), moveJson(r.predictedLong)}};
+        o[QStringLiteral("measured")] =
+            QJsonObject{{QStringLiteral("step"), moveJson(r.measuredStep)},
+                        {QStringLiteral("long_move"), moveJson(r.measuredLong)}};
+    }
+    o[QStringLiteral("machine_time_s")] = r.machineTimeS;
+    if (!r.ok) o[QStringLiteral("error")] = r.error;
+    return o;
+}
+
+/// The autotune's text on any machine: `gainsLine` is the machine's own (given only once the
+/// model was accepted).
+template <class Result>
+QString autotuneText(const Result& r, const QString& gainsLine) {
+    QString text = identificationText(r.identification);
+    if (r.identification.accepted) {
+        text += gainsLine;
+        text += marginsText(r.frequency);
+        text += moveText("step", r.predictedStep, r.measuredStep);
+        text += moveText("long move", r.predictedLong, r.measuredLong);
+    }
+    text += QStringLiteral("machine time: %1 s\n").arg(r.machineTimeS, 0, 'f', 3);
+    if (!r.ok) text += QStringLiteral("autotune failed: %1\n").arg(r.error);
+    return text;
+}
+
+}  // namespace
+
+QJsonObject autotuneReportJson(const TuneConditions& c, const AutotuneResult& r) {
+    const LoopDesign& d = r.design;
+    return autotuneJson(
+        c, r, railGainsJson(d.gains),
+        QJsonObject{{QStringLiteral("rule"), QStringLiteral("SIMC, integrating process with lag")},
+                    {QStringLiteral("closed_loop_time_constant_s"), d.tauC},
+                    {QStringLiteral("delay_s"), d.thetaS},
+                    {QStringLiteral("integral_time_s"), d.tauI},
+                    {QStringLiteral("derivative_time_s"), d.tauD},
+                    {QStringLiteral("acceleration_mm_s2"), d.accelerationMmS2},
+                    {QStringLiteral("max_deceleration_mm_s2"), d.maxDecelerationMmS2},
+                    {QStringLiteral("clamped"), d.note}});
+}
+
+QJsonObject autotuneReportJson(const TuneConditions& c, const DcAutotuneResult& r) {
+    const DcLoopDesign& d = r.design;
+    return autotuneJson(
+        c, r,
+        QJsonObject{{QStringLiteral("law"), QStringLiteral("engineered")},
+                    {QStringLiteral("kp_pct_per_mm"), d.gains.kp},
+                    {QStringLiteral("ki_pct_per_mm_s"), d.gains.ki},
+                    {QStringLiteral("kff_pct_per_mm_s"), d.gains.kff}},
+        QJsonObject{{QStringLiteral("rule"),
+                     QStringLiteral("SIMC PI, integrating process with lag (half rule)")},
+                    {QStringLiteral("closed_loop_time_constant_s"), d.tauC},
+                    {QStringLiteral("delay_s"), d.thetaS},
+                    {QStringLiteral("effective_delay_s"), d.thetaEffS},
+                    {QStringLiteral("integral_time_s"), d.tauI},
+                    {QStringLiteral("feed_forward_time_constant_s"), d.feedForwardLagS},
+                    {QStringLiteral("feed_forward_coulomb_pct"), d.coulombPercent},
+                    {QStringLiteral("acceleration_mm_s2"), d.accelerationMmS2},
+                    {QStringLiteral("rapid_speed_mm_s"), d.rapidSpeedMmS},
+                    {QStringLiteral("clamped"), d.note}});
+}
+
+QString autotuneReportText(const AutotuneResult& r) {
+    const LoopDesign& d = r.design;
+    return autotuneText(r, QStringLiteral("gains: kp %1 code/mm, ki %2 code/(mm.s), kd %3 "
+                                          "code/(mm/s); acceleration %4 mm/s2\n")
+                               .arg(d.gains.kp, 0, 'f', 4)
+                               .arg(d.gains.ki, 0, 'f', 4)
+                               .arg(d.gains.kd, 0, 'f', 5)
+                               .arg(d.accelerationMmS2, 0, 'f', 0));
+}
+
+QString autotuneReportText(const DcAutotuneResult& r) {
+    const DcLoopDesign& d = r.design;
+    return autotuneText(r, QStringLiteral("gains: kp %1 %/mm, ki %2 %/(mm.s), kff %3 %/(mm/s); "
+                                          "acceleration %4 mm/s2, rapid %5 mm/s\n")
+                               .arg(d.gains.kp, 0, 'f', 3)
+                               .arg(d.gains.ki, 0, 'f', 3)
+                               .arg(d.gains.kff, 0, 'f', 4)
+                               .arg(d.accelerationMmS2, 0, 'f', 0)
+                               .arg(d.rapidSpeedMmS, 0, 'f', 0));
 }
 
 }  // namespace trilho
