@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "core/tuning/step_metrics.h"
-#include "host/tuning/step_test.h"
+#include "host/tuning/step_experiment.h"
 
 namespace {
 

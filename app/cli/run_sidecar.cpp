@@ -8,7 +8,7 @@
 #include "core/files/atomic_file.h"
 #include "core/files/replace_target.h"
 #include "core/tuning/run_record.h"
-#include "host/tuning/step_test.h"
+#include "host/tuning/step_experiment.h"
 
 namespace trilho::cli {
 

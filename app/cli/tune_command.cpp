@@ -1,6 +1,7 @@
 // trilho-cli tune step|metrics: step and ramp tests on the simulated machines and the metrics
 // of any trace (issue 21 items 1, 2 and 8). Every number comes from core/tuning and
-// host/tuning, the same code the screens call; this file parses and formats only.
+// host/tuning, the same code the screens call, and the reports from host/tuning/reports; this
+// file parses the options and prints.
 #include <QCommandLineParser>
 #include <QFile>
 #include <QFileInfo>
@@ -17,7 +18,9 @@
 #include "core/files/replace_target.h"
 #include "core/tuning/run_record.h"
 #include "host/common/data_paths.h"
-#include "host/tuning/step_test.h"
+#include "host/tuning/reports/step_report.h"
+#include "host/tuning/reports/trace_report.h"
+#include "host/tuning/step_experiment.h"
 
 namespace trilho::cli {
 
@@ -43,65 +46,6 @@ const char* kTuneUsage =
 double tableCountsPerMm(const MachineProfile& p, char axis) {
     const DcAxisParams& a = axis == 'y' ? p.dcTable.y : p.dcTable.x;
     return 2.0 * std::numbers::pi / (a.mmPerTurn * a.radPerCount);
-}
-
-QString lawName(LoopLaw law) {
-    return law == LoopLaw::Classic ? QStringLiteral("classic") : QStringLiteral("engineered");
-}
-
-QString fmt(double v, int decimals) {
-    return std::isfinite(v) ? QString::number(v, 'f', decimals) : QStringLiteral("not reached");
-}
-
-/// The metrics as the text report prints them (the JSON has the same figures, unrounded).
-QString metricsText(const StepMetrics& m) {
-    if (!m.ok) return QStringLiteral("no metrics: %1\n").arg(QString::fromStdString(m.problem));
-    QString t;
-    auto row = [&](const char* name, const QString& value, const char* unit) {
-        const bool reached = !value.startsWith(QLatin1String("not ")) && *unit;
-        t += QStringLiteral("  %1 %2%3\n")
-                 .arg(QLatin1String(name), -28)
-                 .arg(value)
-                 .arg(reached ? QLatin1Char(' ') + QLatin1String(unit) : QString());
-    };
-    row("step",
-        QStringLiteral("%1 -> %2 mm (%3 mm) at %4 s")
-            .arg(fmt(m.startMm, 4), fmt(m.targetMm, 4), fmt(m.amplitudeMm, 4), fmt(m.stepTimeS, 4)),
-        "");
-    row("rise time 10-90 %", fmt(m.riseTimeS, 4), "s");
-    row("settling time (2 %)", fmt(m.settlingTimeS, 4), "s");
-    row("settling time (1 count)", fmt(m.settlingTime1CountS, 4), "s");
-    row("overshoot", fmt(m.overshootPct, 3), "%");
-    row("peak (from the start)",
-        QStringLiteral("%1 mm at %2 s").arg(fmt(m.peakMm, 4), fmt(m.peakTimeS, 4)), "");
-    row("steady-state error", fmt(m.steadyStateErrorCounts, 2), "counts");
-    row("IAE", fmt(m.iae, 6), "mm.s");
-    row("ITAE", fmt(m.itae, 6), "mm.s2");
-    row("ISE", fmt(m.ise, 6), "mm2.s");
-    row("following error max", fmt(m.followingErrorMaxMm, 4), "mm");
-    row("following error RMS", fmt(m.followingErrorRmsMm, 4), "mm");
-    row("time saturated",
-        m.saturationKnown ? fmt(m.saturatedTimeS, 4) : QStringLiteral("not recorded"), "s");
-    return t;
-}
-
-/// The JSON of a run: the metrics' keys at the top, then the conditions when known.
-QJsonObject runJsonObject(const StepMetrics& m, const RunConditions* c) {
-    QJsonObject o = stepMetricsToJson(m);
-    if (c) {
-        o[QStringLiteral("machine")] = c->profile.name;
-        o[QStringLiteral("axis")] =
-            c->axis ? QJsonValue(QString(QLatin1Char(c->axis))) : QJsonValue(QJsonValue::Null);
-        o[QStringLiteral("law")] = lawName(c->law);
-        o[QStringLiteral("gains")] = tuningGainsToJson(c->gains, c->profile.kind, c->law);
-        o[QStringLiteral("period_s")] = c->periodS;
-        o[QStringLiteral("mass_factor")] = c->massFactor;
-        o[QStringLiteral("seed")] = QString::number(c->seed);
-        o[QStringLiteral("test")] = c->test;
-        o[QStringLiteral("start_mm")] = c->startMm;
-        o[QStringLiteral("counts_per_mm")] = c->countsPerMm;
-    }
-    return o;
 }
 
 int stepCommand(const QStringList& args) {
@@ -353,47 +297,11 @@ int stepCommand(const QStringList& args) {
             }
         }
     }
-    const RunConditions& c = r.record.conditions;
-    if (parser.isSet(jsonOpt)) {
-        QJsonObject o = runJsonObject(r.metrics, &c);
-        o[QStringLiteral("aborted")] = !r.ok();
-        o[QStringLiteral("abort_reason")] =
-            r.ok() ? QJsonValue(QJsonValue::Null) : QJsonValue(r.abortReason);
-        o[QStringLiteral("ok")] = r.ok() && r.metrics.ok;
-        o[QStringLiteral("gain_change")] = gainChangeToJson(c);
-        if (!r.gainChangeMissed.isEmpty())
-            o[QStringLiteral("gain_change_missed")] = r.gainChangeMissed;
-        out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
-    } else {
-        QString gainsText;
-        const QJsonObject gj = tuningGainsToJson(c.gains, c.profile.kind, c.law);
-        for (auto it = gj.begin(); it != gj.end(); ++it)
-            gainsText += QStringLiteral(" %1 %2").arg(it.key()).arg(it.value().toDouble());
-        out(QStringLiteral("%1 of %2 mm on %3%4 from %5 mm: %6 law,%7, period %8 ms, mass x%9, "
-                           "seed %10\n")
-                .arg(c.test)
-                .arg(c.amplitudeMm)
-                .arg(c.profile.name,
-                     c.axis ? QStringLiteral(" axis ") + QLatin1Char(c.axis) : QString())
-                .arg(c.startMm)
-                .arg(lawName(c.law), gainsText)
-                .arg(c.periodS * 1000.0)
-                .arg(c.massFactor)
-                .arg(c.seed));
-        if (c.gainChange) {
-            QString changed;
-            const QJsonObject cj = tuningGainsToJson(c.gainChange->gains, c.profile.kind, c.law);
-            for (auto it = cj.begin(); it != cj.end(); ++it)
-                changed += QStringLiteral(" %1 %2").arg(it.key()).arg(it.value().toDouble());
-            out(QStringLiteral("gains changed %1 s after the step (bumpless) to%2\n")
-                    .arg(c.gainChange->atS)
-                    .arg(changed));
-        }
-        if (!r.gainChangeMissed.isEmpty())
-            out(QStringLiteral("NOTE: %1: the run had one set of gains\n").arg(r.gainChangeMissed));
-        if (!r.ok()) out(QStringLiteral("ABORTED: %1\n").arg(r.abortReason));
-        out(metricsText(r.metrics));
-    }
+    if (parser.isSet(jsonOpt))
+        out(QString::fromUtf8(QJsonDocument(stepReportJson(r)).toJson(QJsonDocument::Compact)) +
+            QLatin1Char('\n'));
+    else
+        out(stepReportText(r));
     if (!traceOk) {
         err(QStringLiteral("trilho-cli tune step: %1\n").arg(traceFailure));
         return kUsage;
@@ -460,54 +368,25 @@ int metricsCommand(const QStringList& args) {
                                                               : p.profile->plant.countsPerMm;
     }
     const StepMetrics m = measureRun(rec.channels, countsPerMm, commandedTarget(rec));
-    // What makes the trace no clean record (issue 21 item 2): its sidecar says the test was
-    // aborted or the run ended in an alarm (or off target, or stopped by --max-seconds); or it
-    // was cut short: a last row without its end of line, or fewer rows than its sidecar counts.
-    // (More rows than it counts, like any sidecar that contradicts its trace, the reader
-    // refuses: issue 30 item 10.)
-    const bool aborted = rec.hasConditions && !rec.conditions.abortReason.isEmpty();
-    QString cut;
-    if (rec.lastRowCut)
-        cut = QStringLiteral(
-            "its last row has no end of line (the writer stopped mid-row); "
-            "measured without it");
-    const auto rows = static_cast<long long>(rec.channels.size());
-    if (rec.hasConditions && rec.conditions.rows >= 0 && rows < rec.conditions.rows)
-        cut += QStringLiteral("%1%2 rows of the %3 its sidecar counts")
-                   .arg(cut.isEmpty() ? QString() : QStringLiteral("; "))
-                   .arg(rows)
-                   .arg(rec.conditions.rows);
-    const bool truncated = !cut.isEmpty();
-    const QString label = QStringLiteral("TRUNCATED: ");
+    const TraceFlaws flaws = traceFlaws(rec);
+    const bool aborted = flaws.aborted;
+    const bool truncated = flaws.truncated();
     if (!m.ok) {
         const QString why = QStringLiteral("%1: no step to measure: %2")
                                 .arg(files.front(), QString::fromStdString(m.problem));
         if (!aborted && !truncated) return usage(why);
         err(QStringLiteral("trilho-cli tune metrics: %1; %2\n")
-                .arg(why, aborted ? QStringLiteral("ABORTED: ") + rec.conditions.abortReason
-                                  : label + cut));
+                .arg(why, aborted ? QStringLiteral("ABORTED: ") + flaws.abortReason
+                                  : QStringLiteral("TRUNCATED: ") + flaws.truncation));
         return kAlarm;
     }
-    if (parser.isSet(jsonOpt)) {
-        QJsonObject o = runJsonObject(m, rec.hasConditions ? &rec.conditions : nullptr);
-        o[QStringLiteral("trace")] = files.front();
-        if (!rec.hasConditions) o[QStringLiteral("counts_per_mm")] = countsPerMm;
-        // A test aborted when it ran stays aborted when measured again (its sidecar says why).
-        o[QStringLiteral("aborted")] = aborted;
-        o[QStringLiteral("abort_reason")] =
-            aborted ? QJsonValue(rec.conditions.abortReason) : QJsonValue(QJsonValue::Null);
-        o[QStringLiteral("truncated")] = truncated;
-        o[QStringLiteral("truncation")] =
-            truncated ? QJsonValue(cut) : QJsonValue(QJsonValue::Null);
-        o[QStringLiteral("rows")] = static_cast<double>(rec.channels.size());
-        o[QStringLiteral("ok")] = m.ok && !aborted && !truncated;
-        out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
-    } else {
-        out(QStringLiteral("%1: %2 ticks\n").arg(files.front()).arg(m.samples));
-        if (aborted) out(QStringLiteral("ABORTED: %1\n").arg(rec.conditions.abortReason));
-        if (truncated) out(label + cut + QLatin1Char('\n'));
-        out(metricsText(m));
-    }
+    if (parser.isSet(jsonOpt))
+        out(QString::fromUtf8(
+                QJsonDocument(traceReportJson(files.front(), rec, m, countsPerMm, flaws))
+                    .toJson(QJsonDocument::Compact)) +
+            QLatin1Char('\n'));
+    else
+        out(traceReportText(files.front(), m, flaws));
     // Measured either way; a record that is not clean is no success (as `tune step` aborted).
     return aborted || truncated ? kAlarm : kOk;
 }

@@ -1,10 +1,10 @@
 // trilho-cli tune identify|auto --machine P [--axis x|y] [--mass-factor F] [--seed N] [--json]
 //   [--write-profile OUT.json] (auto only)
 // Issue 21 items 5-8: identification of the plant and autotune, on the simulated machine in
-// virtual time. tune_command.cpp dispatches here; every number comes from core/tuning.
+// virtual time. tune_command.cpp dispatches here; every number comes from core/tuning, and the
+// report of it from host/tuning/reports: this file parses the options and prints.
 #include <QCommandLineParser>
 #include <QFileInfo>
-#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <cmath>
@@ -13,11 +13,12 @@
 #include "app/cli/commands.h"
 #include "app/cli/option_values.h"
 #include "app/cli/tune_dc_table.h"
-#include "app/cli/tune_report.h"
 #include "core/files/replace_target.h"
 #include "core/tuning/rail_autotune.h"
 #include "host/common/data_paths.h"
 #include "host/session/sim_rail_rig.h"
+#include "host/tuning/reports/autotune_report.h"
+#include "host/tuning/reports/identification_report.h"
 
 namespace trilho::cli {
 
@@ -35,31 +36,6 @@ QString tuneExitHelp() {
         "     be tuned yet, or out of memory\n"
         "  3  an alarm stopped the experiment, the model fits the held-out run under 90 %,\n"
         "     or the verification move did not end in position\n");
-}
-
-QJsonObject modelJson(const RailIdentification& id) {
-    return identificationJson(id, [&](QJsonObject& o) {
-        o[QStringLiteral("speed_gain_mm_s_per_code")] = id.model.speedGainMmSPerCode;
-        o[QStringLiteral("time_constant_s")] = id.model.timeConstantS;
-        o[QStringLiteral("acceleration_limit_mm_s2")] = id.model.accelerationLimitMmS2;
-        o[QStringLiteral("coulomb_friction_mm_s2")] = id.model.coulombMmS2;
-        o[QStringLiteral("coulomb_friction_n")] = id.coulombN;
-        o[QStringLiteral("mass_kg")] = id.massKg;
-    });
-}
-
-QString modelText(const RailIdentification& id) {
-    return identificationText(
-        id, QStringLiteral("speed gain: %1 mm/s per code\n"
-                           "time constant: %2 s\n"
-                           "acceleration limit: %3 mm/s2 (mass %4 kg at the profile's peak force)\n"
-                           "Coulomb friction: %5 mm/s2 (%6 N)\n")
-                .arg(id.model.speedGainMmSPerCode, 0, 'f', 3)
-                .arg(id.model.timeConstantS, 0, 'f', 4)
-                .arg(id.model.accelerationLimitMmS2, 0, 'f', 0)
-                .arg(id.massKg, 0, 'f', 1)
-                .arg(id.model.coulombMmS2, 0, 'f', 0)
-                .arg(id.coulombN, 0, 'f', 1));
 }
 
 int tuneRail(const QStringList& args, bool autotune) {
@@ -145,70 +121,22 @@ int tuneRail(const QStringList& args, bool autotune) {
         return tuneDcTable({profile, axis == QLatin1String("y") ? 1 : 0, massFactor, seed,
                             parser.isSet(jsonOpt), autotune, outPath});
     SimRailRig rig(profile, seed, kTuneStartMm, profile.plant.massFactor * massFactor);
+    const TuneConditions conditions{profile.name, axis, massFactor, seed,
+                                    profile.loop.samplePeriodS};
     QJsonObject o;
-    o[QStringLiteral("machine")] = profile.name;
-    o[QStringLiteral("axis")] = axis;
-    o[QStringLiteral("mass_factor")] = massFactor;
-    o[QStringLiteral("seed")] = QString::number(seed);
-    o[QStringLiteral("sample_period_s")] = profile.loop.samplePeriodS;
     QString text;
     int status = kOk;
     if (!autotune) {
         const IdentificationRecord rec = runIdentificationExperiment(rig);
         const RailIdentification id = identifyRail(rec, profile);
-        o[QStringLiteral("ok")] = id.accepted;
-        const QJsonObject model = modelJson(id);
-        for (auto it = model.begin(); it != model.end(); ++it)
-            o[it.key()] = it.value();
-        text = modelText(id);
-        if (!id.accepted) {
-            text += QStringLiteral("model refused: %1\n").arg(id.error);
-            status = kAlarm;
-        }
+        o = identifyReportJson(conditions, id);
+        text = identifyReportText(id);
+        if (!id.accepted) status = kAlarm;
     } else {
         const AutotuneResult r = autotuneRail(rig, profile);
-        o[QStringLiteral("ok")] = r.ok;
-        o[QStringLiteral("identification")] = modelJson(r.identification);
-        text = modelText(r.identification);
-        if (r.identification.accepted) {
-            const LoopDesign& d = r.design;
-            o[QStringLiteral("gains")] =
-                QJsonObject{{QStringLiteral("law"), QStringLiteral("engineered")},
-                            {QStringLiteral("kp_code_per_mm"), d.gains.kp},
-                            {QStringLiteral("ki_code_per_mm_s"), d.gains.ki},
-                            {QStringLiteral("kd_code_per_mm_s"), d.gains.kd}};
-            o[QStringLiteral("design")] = QJsonObject{
-                {QStringLiteral("rule"), QStringLiteral("SIMC, integrating process with lag")},
-                {QStringLiteral("closed_loop_time_constant_s"), d.tauC},
-                {QStringLiteral("delay_s"), d.thetaS},
-                {QStringLiteral("integral_time_s"), d.tauI},
-                {QStringLiteral("derivative_time_s"), d.tauD},
-                {QStringLiteral("acceleration_mm_s2"), d.accelerationMmS2},
-                {QStringLiteral("max_deceleration_mm_s2"), d.maxDecelerationMmS2},
-                {QStringLiteral("clamped"), d.note}};
-            o[QStringLiteral("frequency")] = frequencyJson(r.frequency);
-            o[QStringLiteral("predicted")] =
-                QJsonObject{{QStringLiteral("step"), moveJson(r.predictedStep)},
-                            {QStringLiteral("long_move"), moveJson(r.predictedLong)}};
-            o[QStringLiteral("measured")] =
-                QJsonObject{{QStringLiteral("step"), moveJson(r.measuredStep)},
-                            {QStringLiteral("long_move"), moveJson(r.measuredLong)}};
-            text += QStringLiteral(
-                        "gains: kp %1 code/mm, ki %2 code/(mm.s), kd %3 code/(mm/s); "
-                        "acceleration %4 mm/s2\n")
-                        .arg(d.gains.kp, 0, 'f', 4)
-                        .arg(d.gains.ki, 0, 'f', 4)
-                        .arg(d.gains.kd, 0, 'f', 5)
-                        .arg(d.accelerationMmS2, 0, 'f', 0);
-            text += marginsText(r.frequency);
-            text += moveText("step", r.predictedStep, r.measuredStep);
-            text += moveText("long move", r.predictedLong, r.measuredLong);
-        }
-        o[QStringLiteral("machine_time_s")] = r.machineTimeS;
-        text += QStringLiteral("machine time: %1 s\n").arg(r.machineTimeS, 0, 'f', 3);
+        o = autotuneReportJson(conditions, r);
+        text = autotuneReportText(r);
         if (!r.ok) {
-            o[QStringLiteral("error")] = r.error;
-            text += QStringLiteral("autotune failed: %1\n").arg(r.error);
             status = kAlarm;
         } else if (!outPath.isEmpty()) {
             QString error;

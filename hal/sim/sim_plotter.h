@@ -27,7 +27,7 @@ struct PlotterFaults {
     /// The origin sensors never read (a cut cable): homing must give up with alarm 19.
     bool originSensorsDead = false;
     /// The motor's torque limit on acceleration (the margin test, host/tuning/
-    /// plotter_margin_test): a pulse is lost when the acceleration its timing asks exceeds what
+    /// plotter_margin_sweep): a pulse is lost when the acceleration its timing asks exceeds what
     /// the torque left at that step rate gives, alpha_max(f) = alpha_0 (1 - f / f_pullout)
     /// (the pull-out curve read as a straight line from alpha_0 at rest to nothing at the
     /// pull-out rate). Off by default: the board's motion pulses at its tick boundaries and

@@ -3,7 +3,7 @@
 // (issue 21 item 6: "offer it in the teaching view beside the model-based result, as an
 // experiment"). The relay (core/tuning/relay_experiment) and the autotune (rail_autotune) each
 // run from rest at the same start on their own copy of the same simulated rail; then the
-// Ziegler-Nichols gains and the SIMC gains run the same 10 mm step test (step_test), with the
+// Ziegler-Nichols gains and the SIMC gains run the same 10 mm step test (step_experiment), with the
 // tuned profile's planning acceleration for both, so only the gains differ. `trilho-cli tune
 // relay` and the workbench both call this: the same numbers in both.
 #include <cstdint>
@@ -11,7 +11,7 @@
 
 #include "core/tuning/rail_autotune.h"
 #include "core/tuning/relay_experiment.h"
-#include "host/tuning/step_test.h"
+#include "host/tuning/step_experiment.h"
 
 namespace trilho {
 

@@ -1,13 +1,13 @@
 #pragma once
 // The workbench's page for the plotter (issue 21 item 1: "the plotter: a speed/acceleration
-// margin test, it has no encoder"): what host/tuning/plotter_margin_test found, the numbers
+// margin test, it has no encoder"): what host/tuning/plotter_margin_sweep found, the numbers
 // `trilho-cli tune margin` prints, as a summary (the highest speed and acceleration with no
 // lost step, the profile's margin against each) and every trial of both sweeps, one row each.
 #include <QWidget>
 #include <optional>
 #include <utility>
 
-#include "host/tuning/plotter_margin_test.h"
+#include "host/tuning/plotter_margin_sweep.h"
 
 class QLabel;
 class QTableWidget;

@@ -30,7 +30,7 @@
 #include "core/tuning/rail_identification.h"
 #include "host/session/sim_dc_table_rig.h"
 #include "host/session/sim_rail_rig.h"
-#include "host/tuning/plotter_margin_test.h"
+#include "host/tuning/plotter_margin_sweep.h"
 #include "host/tuning/relay_comparison.h"
 #include "ui/background_pool.h"
 #include "ui/workbench/margin_view.h"

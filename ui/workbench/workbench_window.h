@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/profile/machine_profile.h"
-#include "host/tuning/step_test.h"
+#include "host/tuning/step_experiment.h"
 #include "ui/workbench/workbench_run.h"
 
 class QCheckBox;

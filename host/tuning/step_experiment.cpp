@@ -1,4 +1,4 @@
-#include "host/tuning/step_test.h"
+#include "host/tuning/step_experiment.h"
 
 #include <QDateTime>
 #include <algorithm>

@@ -10,6 +10,7 @@
 // (drive to 0 V) on a servo fault (following error among them), on more than 200 ms of
 // continuous saturation, or when the position leaves the envelope [start, target] widened by
 // envelopeMarginMm. Deterministic: the same spec gives the same record, bit for bit.
+// (An experiment on the plant, not a unit test: its tests are tests/unit/step_experiment_test.cpp.)
 #include <QString>
 #include <cstdint>
 #include <optional>

@@ -1,4 +1,4 @@
-// The plotter's speed and acceleration margin test (host/tuning/plotter_margin_test.h) on the
+// The plotter's speed and acceleration margin test (host/tuning/plotter_margin_sweep.h) on the
 // simulated plotter with its torque limit: the limits it reports are where steps are really
 // lost, they move the way a stepper's pull-out curve says, and it refuses what it cannot test.
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "hal/sim/sim_plotter.h"
-#include "host/tuning/plotter_margin_test.h"
+#include "host/tuning/plotter_margin_sweep.h"
 
 namespace trilho {
 namespace {

@@ -16,6 +16,7 @@
 // Simulation only: the seed's board (xy.md A) reports neither its step count nor a sensor
 // reading over its protocol (ORIGEM answers "origin reached" only), so on the machine the
 // check would be by eye: a pen mark at the start before and after the trials.
+// (A sweep on the plant, not a unit test: its tests are tests/unit/plotter_margin_sweep_test.cpp.)
 #include <QString>
 #include <cstdint>
 #include <vector>

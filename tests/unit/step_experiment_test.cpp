@@ -1,6 +1,6 @@
 // Issue 21 item 1 and 4: step tests on the simulated rail and DC table, their aborts, their
 // per-tick loop terms, and "what if" from a record.
-#include "host/tuning/step_test.h"
+#include "host/tuning/step_experiment.h"
 
 #include <gtest/gtest.h>
 

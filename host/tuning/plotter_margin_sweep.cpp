@@ -1,4 +1,4 @@
-#include "host/tuning/plotter_margin_test.h"
+#include "host/tuning/plotter_margin_sweep.h"
 
 #include <algorithm>
 #include <cmath>
