@@ -12,8 +12,8 @@
         <translation>%1: Posicionamiento a x=%2 con %3% de la velocidad máxima.</translation>
     </message>
     <message>
-        <source>%1: Waiting %2 seconds.</source>
-        <translation>%1: Esperando %2 segundos.</translation>
+        <source>%1: Waiting %2 s.</source>
+        <translation>%1: Esperando %2 s.</translation>
     </message>
     <message>
         <source>%1: Change to absolute coordinates.</source>
@@ -1513,7 +1513,7 @@
     </message>
     <message>
         <source>Emergency stop: clear the cause, then Reset E-stop.</source>
-        <translation>Parada de emergencia: elimine la causa y luego Rearme la emergencia.</translation>
+        <translation>Parada de emergencia: elimine la causa y luego pulse Liberar emergencia.</translation>
     </message>
     <message>
         <source>Alarm: read it in Alarms, then Acknowledge. Execute then homes the rail first if its position was lost.</source>

@@ -12,7 +12,7 @@
         <translation>%1: Posicionamento para x=%2 com %3% da velocidade máxima.</translation>
     </message>
     <message>
-        <source>%1: Waiting %2 seconds.</source>
+        <source>%1: Waiting %2 s.</source>
         <translation>%1: Aguardando %2 segundos.</translation>
     </message>
     <message>
@@ -1513,7 +1513,7 @@
     </message>
     <message>
         <source>Emergency stop: clear the cause, then Reset E-stop.</source>
-        <translation>Emergência: elimine a causa e então Rearme a emergência.</translation>
+        <translation>Emergência: elimine a causa e então pressione Liberar emergência.</translation>
     </message>
     <message>
         <source>Alarm: read it in Alarms, then Acknowledge. Execute then homes the rail first if its position was lost.</source>

@@ -15,7 +15,7 @@ constexpr const char* kContext = "Controller";
 constexpr const char* kHistory[static_cast<int>(EventKind::Count_)] = {
     QT_TRANSLATE_NOOP("Controller", "%1: Positioning to x=%2 at maximum speed."),
     QT_TRANSLATE_NOOP("Controller", "%1: Positioning to x=%2 at %3% of maximum speed."),
-    QT_TRANSLATE_NOOP("Controller", "%1: Waiting %2 seconds."),
+    QT_TRANSLATE_NOOP("Controller", "%1: Waiting %2 s."),  // "1 seconds" read wrong
     QT_TRANSLATE_NOOP("Controller", "%1: Change to absolute coordinates."),
     QT_TRANSLATE_NOOP("Controller", "%1: Change to incremental coordinates."),
     QT_TRANSLATE_NOOP("Controller", "%1: System zero changed to x=%2."),

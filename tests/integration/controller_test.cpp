@@ -585,3 +585,22 @@ TEST(ControllerTexts, StopDuringAProgramIsStillTheProgramsLine) {
 
 }  // namespace
 }  // namespace trilho
+
+namespace trilho {
+namespace {
+
+// Issue 31 item 6: "Waiting 1 seconds." The unit's symbol reads right for any figure (pt_BR
+// keeps the 1996 line, HistoryInPortugueseIsTheOriginal).
+TEST(ControllerTexts, ADwellSaysItsTimeInSeconds) {
+    ControllerEvent e;
+    e.kind = EventKind::Dwell;
+    e.n = 20;
+    for (const double s : {1.0, 2.5}) {
+        e.x = s;
+        EXPECT_EQ(historyLine(e).toStdString(),
+                  "0020: Waiting " + QString::number(s).toStdString() + " s.");
+    }
+}
+
+}  // namespace
+}  // namespace trilho

@@ -135,6 +135,49 @@ TEST(TranslationFiles, NoUnfinishedOrEmptyTranslation) {
     }
 }
 
+/// Every source text and its translation in a .ts file (contexts merged).
+std::vector<std::pair<QString, QString>> translatedTexts(const char* lang) {
+    std::vector<std::pair<QString, QString>> texts;
+    QFile f(QStringLiteral(TRILHO_TRANSLATIONS_DIR "/trilho_%1.ts").arg(QLatin1String(lang)));
+    if (!f.open(QIODevice::ReadOnly)) return texts;
+    QXmlStreamReader xml(&f);
+    QString source;
+    while (!xml.atEnd()) {
+        xml.readNext();
+        if (!xml.isStartElement()) continue;
+        if (xml.name() == QLatin1String("source")) source = xml.readElementText();
+        if (xml.name() == QLatin1String("translation"))
+            texts.emplace_back(source, xml.readElementText());
+    }
+    return texts;
+}
+
+// Issue 31 item 6: a text that tells the operator to press a safety-bar button names it as the
+// button does in that language (pt_BR and es said "Liberar" on the button and "Rearme" in the
+// status bar's line, two words for one action).
+TEST(TranslationFiles, TextsNameTheSafetyButtonsAsTheButtonsDo) {
+    for (const char* lang : {"pt_BR", "es"}) {
+        const auto texts = translatedTexts(lang);
+        ASSERT_GT(texts.size(), 150u) << lang;
+        for (const char* button : {"Reset E-stop", "Acknowledge"}) {
+            QString word;
+            for (const auto& [source, translation] : texts)
+                if (source == QLatin1String(button)) word = translation;
+            ASSERT_FALSE(word.isEmpty()) << lang << ": " << button;
+            // The verb's stem: a sentence conjugates it ("Reconhecer" on the button,
+            // "Reconheça" in a sentence), but never says another verb ("Rearme").
+            word = word.left(6);
+            for (const auto& [source, translation] : texts) {
+                if (source == QLatin1String(button) || !source.contains(QLatin1String(button)))
+                    continue;
+                EXPECT_TRUE(translation.contains(word, Qt::CaseInsensitive))
+                    << lang << ": '" << source.toStdString() << "' -> '"
+                    << translation.toStdString() << "' does not say '" << word.toStdString() << "'";
+            }
+        }
+    }
+}
+
 }  // namespace
 }  // namespace trilho
 
