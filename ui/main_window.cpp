@@ -460,7 +460,11 @@ void MainWindow::compileEditor(bool showInAlarms,
                     QStringLiteral("%1: %2")
                         .arg(program->diagnostics[static_cast<std::size_t>(i)].line)
                         .arg(messages[i]));
-            panel_->setAlarmSummary(compileSummary(program->errorCount()));
+            // Errors are alarms (each listed with its line); a clean compile is a status line.
+            if (program->errorCount() > 0)
+                panel_->setAlarmSummary(compileSummary(program->errorCount()));
+            else
+                panel_->addStatusLine(compileSummary(0));
         }
         then(std::move(program));
     };

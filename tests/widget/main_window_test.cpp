@@ -359,7 +359,11 @@ class MainWindowTest : public QObject {
         QVERIFY(!window_->compileAction()->isEnabled());
         QVERIFY(!window_->executeAction()->isEnabled());
         QTRY_VERIFY_WITH_TIMEOUT(!window_->compiling(), 20000);
-        QCOMPARE(panel()->alarms()->currentText(),
+        // Issue 31 item 6: a program without errors is no alarm: its line goes to Status and
+        // the Alarms list is left empty (errors are listed there, each with its line).
+        QCOMPARE(panel()->alarms()->currentText(), QString());
+        QCOMPARE(panel()->alarms()->count(), 0);
+        QCOMPARE(panel()->statusList()->currentText(),
                  QStringLiteral("Compilation completed successfully"));
         QVERIFY(window_->executeAction()->isEnabled());
     }
