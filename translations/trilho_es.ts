@@ -1133,6 +1133,10 @@
         <translation>alarma</translation>
     </message>
     <message>
+        <source>warning</source>
+        <translation>aviso</translation>
+    </message>
+    <message>
         <source>acknowledged</source>
         <translation>reconocido</translation>
     </message>

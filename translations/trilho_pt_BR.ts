@@ -1133,6 +1133,10 @@
         <translation>alarme</translation>
     </message>
     <message>
+        <source>warning</source>
+        <translation>aviso</translation>
+    </message>
+    <message>
         <source>acknowledged</source>
         <translation>reconhecido</translation>
     </message>

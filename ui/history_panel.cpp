@@ -59,6 +59,7 @@ HistoryPanel::HistoryPanel(QWidget* parent) : QWidget(parent) {
 
 QString HistoryPanel::kindText(const QString& kind) {
     if (kind == QLatin1String("alarm")) return tr("alarm");
+    if (kind == QLatin1String("warning")) return tr("warning");
     if (kind == QLatin1String("ack")) return tr("acknowledged");
     if (kind == QLatin1String("status")) return tr("status");
     // The screens' marks (Journal::markStart and close).
@@ -92,6 +93,7 @@ void HistoryPanel::add(const QString& when, const QString& kind, int code, const
     auto* t = new QTableWidgetItem(text);
     t->setToolTip(text);
     if (kind == QLatin1String("alarm")) t->setForeground(Qt::darkRed);
+    if (kind == QLatin1String("warning")) t->setForeground(QColor(150, 90, 0));  // amber
     table_->setItem(row, 3, t);
     if (table_->rowCount() > 10000) table_->removeRow(0);  // the journal keeps everything
     table_->scrollToBottom();

@@ -93,12 +93,7 @@ void MachineLink::run(std::shared_ptr<const Program> program, std::size_t fromIn
 void MachineLink::poll() {
     int budget = kEventsPerPoll;
     worker_->drainEventsUpTo(budget, [this](const ControllerEvent& e) {
-        const bool alarm = e.kind == EventKind::AlarmRaised;
-        const bool ack = e.kind == EventKind::AlarmAcknowledged;
-        journalNote(alarm ? QStringLiteral("alarm")
-                    : ack ? QStringLiteral("ack")
-                          : QStringLiteral("status"),
-                    static_cast<int>(e.alarm), historyLine(e));
+        journalNote(journalKind(e), static_cast<int>(e.alarm), historyLine(e));
         emit eventArrived(e);
     });
     if (journal_.isOpen()) {

@@ -785,10 +785,7 @@ void MainWindow::onEvent(const ControllerEvent& e) {
         panel_->addAlarmLine(line);
     if (e.kind == EventKind::ProgramEnd) panel_->setLineText(QString());
     history_->add(QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")),
-                  alarm                                    ? QStringLiteral("alarm")
-                  : e.kind == EventKind::AlarmAcknowledged ? QStringLiteral("ack")
-                                                           : QStringLiteral("status"),
-                  static_cast<int>(e.alarm), line);
+                  journalKind(e), static_cast<int>(e.alarm), line);
 }
 
 bool MainWindow::machineKey(QKeyEvent* key, QWidget* focus) {

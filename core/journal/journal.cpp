@@ -433,8 +433,8 @@ bool Journal::append(const JournalEntry& entry) {
 bool Journal::append(const JournalEntry& entry, std::int64_t nowMs) {
     if (!writeLine(encodeLine(entry))) return false;
     ++pending_;
-    if (entry.kind == QLatin1String("alarm") || !everSynced_ ||
-        nowMs - lastSyncMs_ >= policy_.syncIntervalMs) {
+    if (entry.kind == QLatin1String("alarm") || entry.kind == QLatin1String("warning") ||
+        !everSynced_ || nowMs - lastSyncMs_ >= policy_.syncIntervalMs) {
         lastSyncMs_ = nowMs;
         return sync();
     }

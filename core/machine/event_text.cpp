@@ -213,10 +213,24 @@ QString alarmText(AlarmCode code, double value) {
                       {number(std::round(value * 100.0) / 100.0)});
 }
 
+namespace {
+/// A warning (the machine goes on) says so: "Warning 13: ...", not "Alarm 13". Compile errors
+/// and the soft limit keep the 1996 program's "Alarm" line.
+bool saysWarning(const ControllerEvent& e) {
+    return e.kind == EventKind::AlarmRaised && alarmSeverity(e.alarm) == AlarmSeverity::Warning &&
+           e.alarm != AlarmCode::CompileErrors && e.alarm != AlarmCode::SoftLimit;
+}
+}  // namespace
+
+QString journalKind(const ControllerEvent& e) {
+    if (saysWarning(e)) return QStringLiteral("warning");
+    if (e.kind == EventKind::AlarmRaised) return QStringLiteral("alarm");
+    if (e.kind == EventKind::AlarmAcknowledged) return QStringLiteral("ack");
+    return QStringLiteral("status");
+}
+
 QString historyLine(const ControllerEvent& e) {
-    // A warning (the machine goes on) says so: "Warning 13: ...", not "Alarm 13".
-    if (e.kind == EventKind::AlarmRaised && alarmSeverity(e.alarm) == AlarmSeverity::Warning &&
-        e.alarm != AlarmCode::CompileErrors && e.alarm != AlarmCode::SoftLimit)
+    if (saysWarning(e))
         return substitute(
             QCoreApplication::translate(kContext, kWarningLine),
             {QString(), QString::number(static_cast<int>(e.alarm)), alarmText(e.alarm, e.value)});

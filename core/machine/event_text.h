@@ -14,6 +14,9 @@ QString onlineStatus(const ControllerEvent& e);
 /// "Fim de curso da esquerda atingido !" and the like.
 /// The alarm's text; value fills its %1 (mm, s) where the text has one.
 QString alarmText(AlarmCode code, double value = 0.0);
+/// The kind an event is journalled and listed under in History: "alarm", "warning" (an
+/// alarm of warning severity, said "Warning N: ..."; the machine goes on), "ack" or "status".
+QString journalKind(const ControllerEvent& e);
 /// Untranslated sources, for the translation-completeness test.
 const char* historySource(EventKind kind);
 const char* onlineSource(EventKind kind);

@@ -254,3 +254,34 @@ TEST(AlarmTexts, SoftLimitNamesThePosition) {
 
 }  // namespace
 }  // namespace trilho
+
+namespace trilho {
+namespace {
+
+// Issue 31 item 6: warnings (the machine goes on) were listed in History and the journal as
+// Kind "alarm", under the line "Warning 14: ...".
+TEST(JournalKind, AWarningIsNotAnAlarm) {
+    ControllerEvent e;
+    e.kind = EventKind::AlarmRaised;
+    e.alarm = AlarmCode::CounterCorrected;
+    EXPECT_EQ(journalKind(e), QStringLiteral("warning"));
+    EXPECT_TRUE(historyLine(e).startsWith(QStringLiteral("Warning ")));
+    e.alarm = AlarmCode::FollowingError;
+    EXPECT_EQ(journalKind(e), QStringLiteral("alarm"));
+    e.kind = EventKind::AlarmAcknowledged;
+    EXPECT_EQ(journalKind(e), QStringLiteral("ack"));
+    e.kind = EventKind::Rapid;
+    e.alarm = AlarmCode::None;
+    EXPECT_EQ(journalKind(e), QStringLiteral("status"));
+    // Every alarm: "warning" exactly when its line says "Warning".
+    for (int a = 1; a < static_cast<int>(AlarmCode::Count_); ++a) {
+        e.kind = EventKind::AlarmRaised;
+        e.alarm = static_cast<AlarmCode>(a);
+        EXPECT_EQ(journalKind(e) == QLatin1String("warning"),
+                  historyLine(e).startsWith(QStringLiteral("Warning ")))
+            << a;
+    }
+}
+
+}  // namespace
+}  // namespace trilho

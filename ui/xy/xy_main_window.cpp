@@ -488,7 +488,7 @@ bool XyMainWindow::applyProgram(const QString& path, ProgramRead read) {
     if (!read.file.ok) {
         const QString why = QString::fromStdString(read.file.error);
         statusBar()->showMessage(why, 8000);
-        addHistory(why, true);
+        addHistory(why, QStringLiteral("alarm"));
         program_.reset();
         view_->setPlannedPath({});
         retranslate();
@@ -501,7 +501,7 @@ bool XyMainWindow::applyProgram(const QString& path, ProgramRead read) {
         for (const Diagnostic& d : program->diagnostics)
             addHistory(QStringLiteral("%1: %2 %3")
                            .arg(programName_, diagnosticPlace(d), diagnosticMessage(d)),
-                       true);
+                       QStringLiteral("alarm"));
         statusBar()->showMessage(compileSummary(program->errorCount()), 8000);
         program_.reset();
         view_->setPlannedPath({});
@@ -652,7 +652,7 @@ bool XyMainWindow::openJournal(const QString& path, QString* error) {
                              "point it last ran.");
     const QStringList notices = journalOpeningNotices(journal_->opening(), position);
     for (const QString& line : notices)
-        addHistory(line, false);
+        addHistory(line, QStringLiteral("status"));
     if (!notices.isEmpty()) statusBar()->showMessage(notices.join(QStringLiteral("  ")), 60000);
     return true;
 }
@@ -679,19 +679,18 @@ QString XyMainWindow::positionText(const XyStatus& status) {
         .arg(s.y.positionMm, 8, 'f', 2);
 }
 
-void XyMainWindow::addHistory(const QString& line, bool alarm, int alarmCode) {
+void XyMainWindow::addHistory(const QString& line, const QString& kind, int alarmCode) {
     if (journal_ &&
-        !journal_->append(
-            {QDateTime::currentDateTimeUtc(),
-             alarm ? QStringLiteral("alarm") : QStringLiteral("status"), alarmCode, line},
-            journalClock_.elapsed()) &&
+        !journal_->append({QDateTime::currentDateTimeUtc(), kind, alarmCode, line},
+                          journalClock_.elapsed()) &&
         !journalWarned_) {
         journalWarned_ = true;  // said once; the screen's list still has every line
         statusBar()->showMessage(
             tr("The history could not be written: %1").arg(journal_->health().error), 15000);
     }
     auto* item = new QListWidgetItem(line, history_);
-    if (alarm) item->setForeground(QColor(190, 0, 0));
+    if (kind == QLatin1String("alarm")) item->setForeground(QColor(190, 0, 0));
+    if (kind == QLatin1String("warning")) item->setForeground(QColor(150, 90, 0));  // amber
     while (history_->count() > 2000)
         delete history_->takeItem(0);
     history_->scrollToBottom();
@@ -710,7 +709,8 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
         dncLink()->noteEvent(e);
         const bool alarm = e.kind == EventKind::AlarmRaised;
         const QString line = xyHistoryLine(e);
-        if (!line.isEmpty()) addHistory(line, alarm, alarm ? static_cast<int>(e.alarm) : 0);
+        if (!line.isEmpty())
+            addHistory(line, journalKind(e), alarm ? static_cast<int>(e.alarm) : 0);
     }
     last_ = status;
     if (journal_) journal_->syncIfDue(journalClock_.elapsed());
@@ -768,7 +768,7 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
 bool XyMainWindow::plotPolygon(const QString& program) {
     const QString path = QDir(QDir::tempPath()).filePath(QStringLiteral("trilho-poligono.G"));
     if (QString why; !saveFileAtomically(path, program.toUtf8(), &why)) {
-        addHistory(why, true);
+        addHistory(why, QStringLiteral("alarm"));
         return false;
     }
     if (!selectProgram(path)) return false;

@@ -117,7 +117,9 @@ class XyMainWindow : public OperatorFrame {
     KeysDialog::Machine keysMachine() const override { return KeysDialog::Machine::Xy; }
     void openFromLibrary(const QString& path) override;
     void retranslate() override;
-    void addDncHistoryLine(const QString& line) override { addHistory(line, false); }
+    void addDncHistoryLine(const QString& line) override {
+        addHistory(line, QStringLiteral("status"));
+    }
     void addFileItems(QMenu* file) override;
     void addOptionItems(QMenu* options) override;
     /// Space is typed in a text field too (a port name), not only in an editor.
@@ -133,7 +135,8 @@ class XyMainWindow : public OperatorFrame {
     void onUpdate(const std::vector<XyTraceRow>& rows, const std::vector<ControllerEvent>& events,
                   const XyStatus& status);
     /// A history line on screen and in the journal (alarmCode: the alarm's, 0 for a status).
-    void addHistory(const QString& line, bool alarm, int alarmCode = 0);
+    /// kind: the journal's (journalKind(): alarm, warning, ack, status).
+    void addHistory(const QString& line, const QString& kind, int alarmCode = 0);
     void chooseConnection();
     void showLinkState();
 
