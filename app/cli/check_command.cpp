@@ -68,8 +68,9 @@ QString reasonText(const QString& file, const ProgramCheck& c) {
         case CheckEnd::TimeLimit:
             why << QStringLiteral(
                        "the program did not end within %1 s of machine time (homing included; "
-                       "--max-seconds): a loop without end (m03; an m00 is continued at once) "
-                       "or a dwell longer than that; its cycle time is unknown")
+                       "--max-seconds): a loop without end (m03; an m00 is continued at once), "
+                       "a longer dwell, or a program longer than that; its cycle time is "
+                       "unknown")
                        .arg(c.maxSeconds);
             break;
         case CheckEnd::Alarm:
@@ -267,7 +268,7 @@ int check(const QStringList& args) {
     const QCommandLineOption maxOpt(
         QStringLiteral("max-seconds"),
         QStringLiteral("Give up a program still running after this much machine time, homing "
-                       "included (default 3600)."),
+                       "included (default 3600, at most 86400)."),
         QStringLiteral("SECONDS"));
     const QCommandLineOption seedOpt(QStringLiteral("seed"),
                                      QStringLiteral("Seed of the simulation's randomness."),
@@ -295,7 +296,8 @@ int check(const QStringList& args) {
     if (auto m = readNumber(parser, massOpt, kMinMassFactor, kMaxMassFactor, massFactor))
         return usage(*m);
     ProgramCheckOptions options;
-    if (auto m = readNumber(parser, maxOpt, 0.001, 1e7, options.maxSeconds)) return usage(*m);
+    // At most a day of machine time: about 25 s of one core on the rail, an answer before a run.
+    if (auto m = readNumber(parser, maxOpt, 0.001, 86400.0, options.maxSeconds)) return usage(*m);
     if (auto m = readSeed(parser, seedOpt, options.seed)) return usage(*m);
     const QStringList files = parser.positionalArguments();
     if (files.size() != 1)

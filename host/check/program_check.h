@@ -50,7 +50,9 @@
 // rail and the plotter (1 ms periods), 0.15 ms on the DC table (5 ms periods).
 //
 // Steppable: advance(periods) runs at most that many periods and returns whether the check is
-// done, so a caller can spread it (the screens' pool) or give up; run() runs it to its end.
+// done, so a caller can spread it (the screens' pool) or give up; run() runs it to its end. A
+// checker owns its simulated machine and shares nothing: one thread at a time uses it, any
+// number of checkers may run side by side.
 #include <QString>
 #include <array>
 #include <cstdint>

@@ -285,6 +285,9 @@ TEST_F(CliCheck, BadInputsAreRefusedNamingThePlace) {
         {{QStringLiteral("--max-seconds"), QStringLiteral("0"), ok},
          2,
          QStringLiteral("--max-seconds must be")},
+        {{QStringLiteral("--max-seconds"), QStringLiteral("86401"), ok},
+         2,
+         QStringLiteral("from 0.001 to 86400 (got '86401')")},
         {{QStringLiteral("--machine"),
           write(QStringLiteral("bad.json"),
                 "{\"kind\": \"rail\", "
