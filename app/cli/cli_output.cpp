@@ -59,6 +59,19 @@ QString exitStatusHelp(const char* command) {
              "motionless loop was held (warning 15), a serial link failed (--port), or Ctrl-C / "
              "SIGTERM stopped a real-time run (an E-stop, reported)");
         line(kTimeLimit, "--max-seconds ended the run (default 3600 s in --virtual-time)");
+    } else if (c == "check") {
+        line(kOk,
+             "ok: the simulated program finished on its target, with no alarm, inside the soft "
+             "limits");
+        line(kCompileErrors, "compile errors (listed; nothing was checked)");
+        line(kUsage, "usage error, a file or profile that cannot be read, or out of memory");
+        line(kAlarm,
+             "not ok: an alarm stopped the simulated program, it ended off its target (warning "
+             "13), a motionless loop was held (warning 15), or the machine went outside its soft "
+             "limits (each named with its line)");
+        line(kTimeLimit,
+             "the program did not end within --max-seconds of machine time (default 3600 s): "
+             "a loop without end, or a long dwell");
     } else if (c == "compile") {
         line(kOk, "no errors (warnings may be listed)");
         line(kCompileErrors, "compile errors, each listed with its file, line and column");
@@ -115,8 +128,10 @@ QString exitStatusHelp(const char* command) {
         line(kOk, "success");
         line(kCompileErrors, "compile errors");
         line(kUsage, "usage error, a file that cannot be read, or out of memory");
-        line(kAlarm, "run: an alarm or a warning ended the run, or it was interrupted");
-        line(kTimeLimit, "run: --max-seconds ended the run");
+        line(kAlarm,
+             "run: an alarm or a warning ended the run, or it was interrupted; check: the "
+             "program is not ok");
+        line(kTimeLimit, "run, check: --max-seconds ended the run");
         text += QStringLiteral("  Each command's --help gives its own.\n");
     }
     return text;

@@ -8,6 +8,8 @@ namespace trilho::cli {
 int compileCommand(const QStringList& args);
 int profileCommand(const QStringList& args);
 int runCommand(const QStringList& args);
+/// The pre-run check (check_command.cpp, host/check/program_check.h).
+int checkCommand(const QStringList& args);
 int latencyCommand(const QStringList& args);
 int serveCommand(const QStringList& args);
 /// tune identify | auto (tune_model_command.cpp); tune dispatches to them.

@@ -13,6 +13,8 @@ const char* kUsage =
     "Commands:\n"
     "  compile   check a .G program and list every diagnostic\n"
     "  run       compile, home and run a program (simulated, or an XY board on --port)\n"
+    "  check     run a program on the simulated machine before a run: cycle time,\n"
+    "            envelope against the soft limits, following error, saturation, alarms\n"
     "  latency   measure the servo loop's wake-up latency and body time\n"
     "  profile   check a machine profile (JSON) and print it in full\n"
     "  serve     run a machine headless with the DNC link (Modbus TCP/RTU)\n"
@@ -45,6 +47,7 @@ static int dispatch(int argc, char* argv[]) {
     if (command == QLatin1String("compile")) return trilho::cli::compileCommand(args);
     if (command == QLatin1String("profile")) return trilho::cli::profileCommand(args);
     if (command == QLatin1String("run")) return trilho::cli::runCommand(args);
+    if (command == QLatin1String("check")) return trilho::cli::checkCommand(args);
     if (command == QLatin1String("latency")) return trilho::cli::latencyCommand(args);
     if (command == QLatin1String("serve")) return trilho::cli::serveCommand(args);
     if (command == QLatin1String("tune")) return trilho::cli::tuneCommand(args);

@@ -46,6 +46,7 @@ Outcome runRailVirtual(const MachineProfile& profile, std::shared_ptr<const Prog
         session.step();
         c.drainEvents([&](const ControllerEvent& e) { report.add(e); });
         const ControllerStatus& s = c.status();
+        report.cycle.observe(s.state, s.timeS);
         if (startedAt < 0 && s.state == ControllerState::Running) {
             startedAt = session.elapsedS();
             faults.tickJitterMaxS = options.tickJitterMs / 1000.0;

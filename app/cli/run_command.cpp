@@ -23,6 +23,7 @@
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
 #include "app/cli/diagnostics_text.h"
+#include "app/cli/mass_factor.h"
 #include "app/cli/option_values.h"
 #include "app/cli/rail_trace.h"
 #include "app/cli/rail_virtual_run.h"
@@ -284,36 +285,8 @@ int runCommand(const QStringList& args) {
         profile.loop.law = chosen;
     }
     options.recordedProfile = profile;  // the trace's sidecar: --mass-factor recorded on its own
-    // The payload goes where the simulated plant has a mass: the rail's platform, the DC table's
-    // axes. The plotter's steppers are modelled without one (a pulse is a step, up to the
-    // pull-out rate): there the option would change nothing, so it is refused.
-    switch (profile.kind) {
-        case MachineKind::Rail:
-            profile.plant.massFactor *= options.massFactor;
-            // The profile's factor and the option's multiply; the servo's count checks hold
-            // over the payloads a profile may give (issue 20 item 11), so the product must be
-            // one of them too.
-            if (profile.plant.massFactor < kMinMassFactor ||
-                profile.plant.massFactor > kMaxMassFactor)
-                return usage(QStringLiteral("--mass-factor %1 times the profile's plant.massFactor "
-                                            "%2 is x%3, outside the payloads the rail takes "
-                                            "(x%4 to x%5)")
-                                 .arg(options.massFactor)
-                                 .arg(profile.plant.massFactor / options.massFactor)
-                                 .arg(profile.plant.massFactor)
-                                 .arg(kMinMassFactor)
-                                 .arg(kMaxMassFactor));
-            break;
-        case MachineKind::DcTable:
-            profile.dcTable.massFactor *= options.massFactor;
-            break;
-        case MachineKind::Plotter:
-            if (parser.isSet(massOpt))
-                return usage(QStringLiteral(
-                    "--mass-factor is for the rail and the DC table: the plotter's simulated "
-                    "steppers have no mass to change"));
-            break;
-    }
+    if (auto refused = applyMassFactor(profile, options.massFactor, parser.isSet(massOpt)))
+        return usage(*refused);
 
     const QString file = files.front();
     const SourceFile source = readSourceFile(localPath(file));

@@ -10,6 +10,7 @@
 #include <QJsonObject>
 #include <QStringList>
 #include <cerrno>
+#include <cmath>
 #include <csignal>
 #include <cstring>
 #include <memory>
@@ -23,10 +24,12 @@
 #include "core/profile/machine_profile.h"
 #include "core/xy/xy_event_text.h"
 #include "hal/sim/fault_schedule.h"
+#include "host/session/run_end.h"
 
 namespace trilho::cli {
 
-enum class Outcome { Finished, Alarm, TimeLimit };
+/// How a run ended (host/session/run_end.h: the rules are shared with the pre-run check).
+using Outcome = RunOutcome;
 
 struct RunOptions {
     bool virtualTime = false;
@@ -59,6 +62,10 @@ struct Report {
     QJsonArray alarms;
     bool offTarget = false;  ///< warning 13: the program ended away from its last target
     bool xy = false;         ///< an XY machine: its moves name x and y (xyHistoryLine)
+    /// The program's cycle time (run_end.h), fed by the runs that see every period (virtual
+    /// time, and the XY machines in real time); the rail's real-time run polls the servo
+    /// thread's snapshot every 5 ms and does not feed it, so it reports none.
+    CycleClock cycle;
     void add(const ControllerEvent& e) {
         const QString line = xy ? xyHistoryLine(e) : historyLine(e);
         if (streamText) {
@@ -246,6 +253,8 @@ inline QJsonObject runJson(Outcome outcome, const Report& report) {
     o[QStringLiteral("history")] = QJsonArray::fromStringList(report.history);
     if (report.omitted) o[QStringLiteral("history_omitted")] = double(report.omitted);
     o[QStringLiteral("alarms")] = report.alarms;
+    if (report.cycle.started())
+        o[QStringLiteral("cycle_time_s")] = std::round(report.cycle.cycleS() * 1e4) / 1e4;
     return o;
 }
 

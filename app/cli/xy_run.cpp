@@ -96,6 +96,7 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
         session.step(dtS);
         c.drainEvents([&](const ControllerEvent& e) { report.add(e); });
         const XyStatus& s = c.status();
+        report.cycle.observe(s.state, s.timeS);
         if (!ticks.armed() && s.state == ControllerState::Running) ticks.arm();
         if (traceQueue)
             traceQueue->push(xyTraceRow(s));

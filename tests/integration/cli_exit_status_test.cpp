@@ -115,11 +115,13 @@ TEST_F(CliExitStatus, EveryCommandListsWhatItReturns) {
         const char* command;
         std::vector<int> statuses;
     };
-    const Expect commands[] = {
-        {"compile", {0, 1, 2}},   {"run", {0, 1, 2, 3, 4}},    {"serve", {0, 2}},
-        {"profile", {0, 2}},      {"latency", {0, 2}},         {"tune", {0, 2, 3}},
-        {"tune step", {0, 2, 3}}, {"tune metrics", {0, 2, 3}}, {"tune identify", {0, 2, 3}},
-        {"tune auto", {0, 2, 3}}, {"tune relay", {0, 2, 3}},   {"calibrate", {0, 2, 3}}};
+    const Expect commands[] = {{"compile", {0, 1, 2}},      {"run", {0, 1, 2, 3, 4}},
+                               {"check", {0, 1, 2, 3, 4}},  {"serve", {0, 2}},
+                               {"profile", {0, 2}},         {"latency", {0, 2}},
+                               {"tune", {0, 2, 3}},         {"tune step", {0, 2, 3}},
+                               {"tune metrics", {0, 2, 3}}, {"tune identify", {0, 2, 3}},
+                               {"tune auto", {0, 2, 3}},    {"tune relay", {0, 2, 3}},
+                               {"calibrate", {0, 2, 3}}};
     for (const Expect& e : commands) {
         const CliResult r = runCli(QString::fromLatin1(e.command).split(QLatin1Char(' ')) +
                                    QStringList{QStringLiteral("--help")});
