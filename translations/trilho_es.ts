@@ -1123,6 +1123,13 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::GuideDialog</name>
+    <message>
+        <source>The guide is not installed here: %1 cannot be read.</source>
+        <translation>La guía no está instalada aquí: no se puede leer %1.</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::HistoryPanel</name>
     <message>
         <source>Export history</source>
@@ -1845,6 +1852,22 @@
 <context>
     <name>trilho::ui::OperatorFrame</name>
     <message>
+        <source>Operator&apos;s guide</source>
+        <translation>Guía del operador</translation>
+    </message>
+    <message>
+        <source>Teaching guide</source>
+        <translation>Guía de enseñanza</translation>
+    </message>
+    <message>
+        <source>About trilho</source>
+        <translation>Acerca de trilho</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;trilho %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Numerical control for the robot rail of the 1996 manufacturing cell (University of São Paulo) and two XY tables, simulated by default.&lt;/p&gt;&lt;p&gt;Guides: %2&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;trilho %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Control numérico para el riel del robot de la celda de manufactura de 1996 (Universidad de São Paulo) y dos mesas XY, simuladas por defecto.&lt;/p&gt;&lt;p&gt;Guías: %2&lt;/p&gt;</translation>
+    </message>
+    <message>
         <source>Settings not saved: cannot write %1 (a full disk or a folder that cannot be written). The old settings are kept; this change holds until trilho closes.</source>
         <translation>Configuración no guardada: no se puede escribir %1 (disco lleno o carpeta sin permiso de escritura). Se conserva la configuración anterior; este cambio vale hasta que trilho se cierre.</translation>
     </message>
@@ -1923,6 +1946,18 @@
     <message>
         <source>&amp;Keys</source>
         <translation>&amp;Teclas</translation>
+    </message>
+    <message>
+        <source>&amp;Operator&apos;s guide</source>
+        <translation>Guía del &amp;operador</translation>
+    </message>
+    <message>
+        <source>&amp;Teaching guide</source>
+        <translation>Guía de &amp;enseñanza</translation>
+    </message>
+    <message>
+        <source>&amp;About trilho</source>
+        <translation>&amp;Acerca de trilho</translation>
     </message>
     <message>
         <source>Plots</source>

@@ -1123,6 +1123,13 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::GuideDialog</name>
+    <message>
+        <source>The guide is not installed here: %1 cannot be read.</source>
+        <translation>O guia não está instalado aqui: %1 não pode ser lido.</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::HistoryPanel</name>
     <message>
         <source>Export history</source>
@@ -1845,6 +1852,22 @@
 <context>
     <name>trilho::ui::OperatorFrame</name>
     <message>
+        <source>Operator&apos;s guide</source>
+        <translation>Guia do operador</translation>
+    </message>
+    <message>
+        <source>Teaching guide</source>
+        <translation>Guia de ensino</translation>
+    </message>
+    <message>
+        <source>About trilho</source>
+        <translation>Sobre o trilho</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;trilho %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Numerical control for the robot rail of the 1996 manufacturing cell (University of São Paulo) and two XY tables, simulated by default.&lt;/p&gt;&lt;p&gt;Guides: %2&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;trilho %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Comando numérico para o trilho do robô da célula de manufatura de 1996 (Universidade de São Paulo) e duas mesas XY, simuladas por padrão.&lt;/p&gt;&lt;p&gt;Guias: %2&lt;/p&gt;</translation>
+    </message>
+    <message>
         <source>Settings not saved: cannot write %1 (a full disk or a folder that cannot be written). The old settings are kept; this change holds until trilho closes.</source>
         <translation>Configurações não salvas: não é possível gravar %1 (disco cheio ou pasta sem permissão de escrita). As configurações antigas são mantidas; esta mudança vale até o trilho fechar.</translation>
     </message>
@@ -1923,6 +1946,18 @@
     <message>
         <source>&amp;Keys</source>
         <translation>&amp;Teclas</translation>
+    </message>
+    <message>
+        <source>&amp;Operator&apos;s guide</source>
+        <translation>Guia do &amp;operador</translation>
+    </message>
+    <message>
+        <source>&amp;Teaching guide</source>
+        <translation>Guia de &amp;ensino</translation>
+    </message>
+    <message>
+        <source>&amp;About trilho</source>
+        <translation>&amp;Sobre o trilho</translation>
     </message>
     <message>
         <source>Plots</source>

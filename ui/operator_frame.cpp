@@ -4,12 +4,14 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
+#include <QDir>
 #include <QDockWidget>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLayout>
 #include <QMenu>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QScrollArea>
 #include <QSettings>
@@ -20,11 +22,13 @@
 #include <QToolButton>
 
 #include "core/runtime/estop_stamp.h"
+#include "host/common/data_paths.h"
 #include "translations/i18n.h"
 #include "ui/confirm_box.h"
 #include "ui/dnc_dialog.h"
 #include "ui/dnc_link.h"
 #include "ui/dnc_settings.h"
+#include "ui/guide_dialog.h"
 #include "ui/language_menu.h"
 #include "ui/machine_choice.h"
 #include "ui/program_library_panel.h"
@@ -111,6 +115,25 @@ void OperatorFrame::buildFrame(DncLink* dnc, QAbstractButton* estop, QAbstractBu
         dialog.exec();
     });
     keys_->setObjectName(QStringLiteral("keys"));
+    // The installed guides, beside the screens (not modal: E-stop and the keys still answer).
+    operatorGuide_ = helpMenu_->addAction(QString(), this, [this] {
+        (new GuideDialog(QStringLiteral("operator.md"), tr("Operator's guide"), this))->show();
+    });
+    operatorGuide_->setObjectName(QStringLiteral("operatorGuide"));
+    teachingGuide_ = helpMenu_->addAction(QString(), this, [this] {
+        (new GuideDialog(QStringLiteral("teaching.md"), tr("Teaching guide"), this))->show();
+    });
+    teachingGuide_->setObjectName(QStringLiteral("teachingGuide"));
+    helpMenu_->addSeparator();
+    about_ = helpMenu_->addAction(QString(), this, [this] {
+        QMessageBox::about(
+            this, tr("About trilho"),
+            tr("<p><b>trilho %1</b></p><p>Numerical control for the robot rail of the 1996 "
+               "manufacturing cell (University of São Paulo) and two XY tables, simulated by "
+               "default.</p><p>Guides: %2</p>")
+                .arg(QCoreApplication::applicationVersion(), QDir::toNativeSeparators(docsDir())));
+    });
+    about_->setObjectName(QStringLiteral("about"));
 
     // The safety bar, never hidden and never moved: E-stop (keys Pause and F1), Reset E-stop,
     // Acknowledge and Home, then Remote and an armed fault.
@@ -308,6 +331,9 @@ void OperatorFrame::retranslateFrame() {
     workbench_->setText(tr("Tuning &workbench..."));
     helpMenu_->setTitle(tr("&Help"));
     keys_->setText(tr("&Keys"));
+    operatorGuide_->setText(tr("&Operator's guide"));
+    teachingGuide_->setText(tr("&Teaching guide"));
+    about_->setText(tr("&About trilho"));
     plotDock_->setWindowTitle(tr("Plots"));
     historyDock_->setWindowTitle(tr("History"));
     simulationDock_->setWindowTitle(tr("Simulation"));

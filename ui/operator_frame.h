@@ -66,6 +66,8 @@ class OperatorFrame : public QMainWindow {
     /// The safety bar's Home (the action's twin, beside Reset E-stop).
     QAbstractButton* homeButton() const { return homeButton_; }
     QAction* keysAction() const { return keys_; }
+    QAction* operatorGuideAction() const { return operatorGuide_; }
+    QAction* teachingGuideAction() const { return teachingGuide_; }
     QAction* resetLayoutAction() const { return resetLayout_; }
     QAction* workbenchAction() const { return workbench_; }
     WorkbenchWindow* workbench() const { return workbenchWindow_; }
@@ -182,7 +184,8 @@ class OperatorFrame : public QMainWindow {
           *languageMenu_ = nullptr, *windowsMenu_ = nullptr, *helpMenu_ = nullptr;
     QAction *select_ = nullptr, *machine_ = nullptr, *exit_ = nullptr, *manual_ = nullptr,
             *automatic_ = nullptr, *home_ = nullptr, *dncAction_ = nullptr, *remote_ = nullptr,
-            *resetLayout_ = nullptr, *workbench_ = nullptr, *keys_ = nullptr;
+            *resetLayout_ = nullptr, *workbench_ = nullptr, *keys_ = nullptr,
+            *operatorGuide_ = nullptr, *teachingGuide_ = nullptr, *about_ = nullptr;
     QDockWidget *plotDock_ = nullptr, *historyDock_ = nullptr, *simulationDock_ = nullptr,
                 *libraryDock_ = nullptr;
     ProgramLibraryPanel* library_ = nullptr;

@@ -41,6 +41,11 @@ QString translationsDir() {
                               : QStringLiteral(TRILHO_BUILD_DIR "/translations");
 }
 
+QString docsDir() {
+    return runningInstalled() ? installedDataDir() + QStringLiteral("/docs")
+                              : QStringLiteral(TRILHO_SOURCE_DIR "/docs");
+}
+
 QString machineProfilePath(const QString& nameOrPath) {
     if (nameOrPath.isEmpty()) return machinesDir() + QStringLiteral("/rail.json");
     if (QFileInfo::exists(nameOrPath) || nameOrPath.contains(QLatin1Char('/'))) return nameOrPath;

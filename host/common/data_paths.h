@@ -1,6 +1,6 @@
 #pragma once
 // Where trilho's data is. Installed (the executable in <prefix>/bin): <prefix>/share/trilho/
-// programs, machines and translations. Run from the build tree: the source tree's
+// programs, machines, translations and docs. Run from the build tree: the source tree's
 // resources/programs and resources/machines, and the .qm files the build made. An installed
 // program never looks in the source tree. Needs a QCoreApplication.
 #include <QString>
@@ -15,6 +15,8 @@ QString examplesDir();
 QString machinesDir();
 /// The compiled translations (trilho_pt_BR.qm, trilho_es.qm).
 QString translationsDir();
+/// The guides (operator.md, teaching.md, ... and their screenshots) Help opens.
+QString docsDir();
 /// True when the running executable is the installed one (not in the build tree).
 bool runningInstalled();
 

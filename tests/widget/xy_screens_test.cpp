@@ -27,6 +27,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTextBrowser>
 #include <QToolButton>
 #include <QTreeWidget>
 #include <QWheelEvent>
@@ -46,6 +47,7 @@
 #include "ui/dnc_dialog.h"
 #include "ui/dnc_link.h"
 #include "ui/dnc_settings.h"
+#include "ui/guide_dialog.h"
 #include "ui/keys_dialog.h"
 #include "ui/machine_link.h"
 #include "ui/machine_screens.h"
@@ -313,6 +315,36 @@ class XyScreensTest : public QObject {
                      qPrintable(q));
             QVERIFY2(!q.contains(QStringLiteral("travels at full speed from")), qPrintable(q));
         }
+    }
+
+    void helpOpensTheGuidesOnEveryScreen() {
+        // Issue 31 item 6: Help had only Keys. The operator's and the teaching guide open from
+        // the installed docs (the source tree's here), beside the screen, on all three.
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        const auto check = [](OperatorFrame& w) {
+            for (QAction* action : {w.operatorGuideAction(), w.teachingGuideAction()}) {
+                QVERIFY(action);
+                action->trigger();
+                auto* guide = w.findChild<GuideDialog*>();
+                QVERIFY(guide);
+                QVERIFY(guide->isVisible());
+                QVERIFY(!guide->isModal());  // E-stop and the keys still answer
+                QVERIFY(guide->loaded());
+                const QString text = guide->browser()->toPlainText();
+                QVERIFY2(text.contains(action == w.operatorGuideAction()
+                                           ? QStringLiteral("the operator's guide")
+                                           : QStringLiteral("Teaching with trilho")),
+                         qPrintable(text.left(200)));
+                delete guide;
+            }
+        };
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow table(*link, settings);
+        check(table);
+        MachineLink railLink(MachineProfile::rail());
+        MainWindow rail(railLink, settings);
+        check(rail);
     }
 
     void homeIsDisabledWhileTheEmergencyStopIsLatched() {
