@@ -10,10 +10,12 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
+#include <QGroupBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMap>
+#include <QMenu>
 #include <QModbusReply>
 #include <QModbusTcpClient>
 #include <QProcess>
@@ -32,6 +34,7 @@
 #include <QTreeWidget>
 #include <QWheelEvent>
 #include <cmath>
+#include <string_view>
 
 #include "core/dnc/register_map.h"
 #include "core/gcode/compiler.h"
@@ -44,6 +47,7 @@
 #include "host/session/xy_session_runnable.h"
 #include "tests/support/journal_marks.h"
 #include "tests/support/widget_test_main.h"
+#include "translations/i18n.h"
 #include "ui/dnc_dialog.h"
 #include "ui/dnc_link.h"
 #include "ui/dnc_settings.h"
@@ -345,6 +349,92 @@ class XyScreensTest : public QObject {
         MachineLink railLink(MachineProfile::rail());
         MainWindow rail(railLink, settings);
         check(rail);
+    }
+
+    /// Every text a screen shows (labels, buttons, line edits, docks, menus, actions, the
+    /// window's title), in the order the widgets were made.
+    static QStringList shownTexts(QMainWindow& w) {
+        QStringList texts{QStringLiteral("title: ") + w.windowTitle()};
+        for (QWidget* c : w.findChildren<QWidget*>()) {
+            QString t;
+            if (auto* l = qobject_cast<QLabel*>(c))
+                t = l->text();
+            else if (auto* b = qobject_cast<QAbstractButton*>(c))
+                t = b->text();
+            else if (auto* e = qobject_cast<QLineEdit*>(c))
+                t = e->isReadOnly() ? e->text() : QString();
+            else if (auto* d = qobject_cast<QDockWidget*>(c))
+                t = d->windowTitle();
+            else if (auto* m = qobject_cast<QMenu*>(c))
+                t = m->title();
+            else if (auto* g = qobject_cast<QGroupBox*>(c))
+                t = g->title();
+            texts << QStringLiteral("%1 %2: %3")
+                         .arg(QLatin1String(c->metaObject()->className()), c->objectName(), t);
+        }
+        for (QAction* a : w.findChildren<QAction*>())
+            texts << QStringLiteral("action %1: %2").arg(a->objectName(), a->text());
+        return texts;
+    }
+
+    void aLanguageSwitchLeavesNoTextInTheOldLanguage() {
+        // Issue 31 item 6: texts stayed in the old language after a switch (the DNC label in
+        // the status bar, the window titles, ...). A screen switched to pt_BR or es shows what
+        // a screen opened in that language shows, text for text.
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        struct English {
+            ~English() { installLanguage(QStringLiteral("en")); }
+        } english;
+        for (const char* machine : {"xy_dc_table.json", "xy_plotter.json"}) {
+            for (const char* lang : {"pt_BR", "es"}) {
+                installLanguage(QStringLiteral("en"));
+                auto switchedLink = virtualLink(shipped(machine));
+                XyMainWindow switched(*switchedLink, settings);
+                switched.setLanguage(QStringLiteral("en"));
+                switched.setLanguage(QString::fromLatin1(lang));
+                switchedLink->advance(0.1);
+                auto freshLink = virtualLink(shipped(machine));
+                XyMainWindow fresh(*freshLink, settings);
+                fresh.setLanguage(QString::fromLatin1(lang));
+                freshLink->advance(0.1);
+                QCoreApplication::processEvents();
+                const QStringList a = shownTexts(switched), b = shownTexts(fresh);
+                QCOMPARE(a.size(), b.size());
+                // It compares translated texts: the menus say the language's words.
+                QVERIFY2(a.join(QLatin1Char('\n'))
+                             .contains(QString::fromUtf8(
+                                 lang == std::string_view("es") ? "&Archivo" : "&Arquivo")),
+                         qPrintable(a.mid(0, 30).join(QLatin1Char('\n'))));
+                QStringList differ;
+                for (qsizetype i = 0; i < a.size(); ++i)
+                    if (a[i] != b[i]) differ << a[i] + QStringLiteral("  <>  ") + b[i];
+                QVERIFY2(differ.isEmpty(),
+                         qPrintable(QStringLiteral("%1 in %2:\n")
+                                        .arg(QLatin1String(machine), QLatin1String(lang)) +
+                                    differ.join(QLatin1Char('\n'))));
+            }
+        }
+        for (const char* lang : {"pt_BR", "es"}) {
+            installLanguage(QStringLiteral("en"));
+            MachineLink switchedLink(MachineProfile::rail());
+            MainWindow switched(switchedLink, settings);
+            switched.setLanguage(QStringLiteral("en"));
+            switched.setLanguage(QString::fromLatin1(lang));
+            MachineLink freshLink(MachineProfile::rail());
+            MainWindow fresh(freshLink, settings);
+            fresh.setLanguage(QString::fromLatin1(lang));
+            QTest::qWait(300);  // both windows' status timers have run
+            const QStringList a = shownTexts(switched), b = shownTexts(fresh);
+            QCOMPARE(a.size(), b.size());
+            QStringList differ;
+            for (qsizetype i = 0; i < a.size(); ++i)  // the late ticks' live count aside
+                if (a[i] != b[i] && !a[i].startsWith(QLatin1String("QLabel timing:")))
+                    differ << a[i] + QStringLiteral("  <>  ") + b[i];
+            QVERIFY2(differ.isEmpty(),
+                     qPrintable(QStringLiteral("rail in %1:\n").arg(QLatin1String(lang)) +
+                                differ.join(QLatin1Char('\n'))));
+        }
     }
 
     void homeIsDisabledWhileTheEmergencyStopIsLatched() {
