@@ -1469,3 +1469,58 @@ int main(int argc, char** argv) {
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
 }
+
+namespace trilho {
+namespace {
+
+// Issue 31 item 5: `run --virtual-time --tick-jitter 20 --jitter-rate 0.02 --seed 5` on the
+// long rapid and feed shuttle declared its last block done 2 counts from its target while the
+// platform moved at 5.8 mm/s. At every block done and at "Program finished !", on 20 seeds:
+// the reading is within the window plus half a count, and the platform (the plant, not the
+// count's estimate) is at rest within the bound below.
+TEST(InPosition, TheIssueShuttleEndsEveryBlockAtRestUnderLateTicks) {
+    const MachineProfile p = MachineProfile::rail();
+    const double bound = p.loop.inPositionWindowMm + 0.5 * kCount + 1e-9;
+    // At rest, the stated bound: under 2.5 mm/s of the plant, a count in 18 ms, against the
+    // 50 ms settle window (measured: 2.10 mm/s at worst over the 20 seeds, 1 count read).
+    constexpr double kRestMmS = 2.5;
+    double worstRead = 0.0, worstSpeed = 0.0;
+    int blocks = 0;
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+        Cell cell(p, seed);
+        RailController& c = cell.c();
+        ASSERT_TRUE(c.loadProgram(
+            compileText("G0 X-400\nG1 X400 F80\nG0 X-400\nG1 X400 F100\nG0 X-400\nM2\n")));
+        ASSERT_TRUE(c.start());
+        FaultInjection f;
+        f.tickJitterMaxS = 0.020;
+        f.tickJitterRate = 0.02;
+        cell.session.rail().setFaults(f);
+        bool wasIn = true;
+        const double end = cell.session.elapsedS() + 60.0;
+        while (cell.session.elapsedS() < end && !c.status().programFinished) {
+            cell.session.step();
+            const ServoSample& s = c.status().servo;
+            ASSERT_NE(c.status().state, ControllerState::Alarm) << "seed " << seed;
+            if (s.mode == ServoMode::Move && !s.inPosition) wasIn = false;
+            const bool done = !wasIn && s.inPosition;
+            if (done || c.status().programFinished) {
+                wasIn = true;
+                ++blocks;
+                const double read = std::abs(s.positionMm - s.targetMm);
+                const double speed = std::abs(cell.session.rail().state().velocityMmS);
+                worstRead = std::max(worstRead, read);
+                worstSpeed = std::max(worstSpeed, speed);
+                EXPECT_LE(read, bound) << "seed " << seed << " t " << cell.session.elapsedS();
+                EXPECT_LT(speed, kRestMmS) << "seed " << seed << " t " << cell.session.elapsedS();
+            }
+        }
+        EXPECT_TRUE(c.status().programFinished) << "seed " << seed;
+        if (::testing::Test::HasFailure()) break;
+    }
+    std::printf("issue shuttle under late ticks: %d ends, worst reading %.4f mm, speed %.2f mm/s\n",
+                blocks, worstRead, worstSpeed);
+}
+
+}  // namespace
+}  // namespace trilho
