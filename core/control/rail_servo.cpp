@@ -23,7 +23,9 @@ RailServo::RailServo(const MachineProfile& profile, RailIo& io)
       accel_(profile.motion.accelerationMmS2),
       speedPerCode_(profile.plant.maxSpeedMmS() / 127.0),
       countLimitMmS_(0.95 * profile.plant.counterMaxRateHz / profile.plant.countsPerMm),
-      plantAccelBound_(1.5 * profile.motion.maxDecelerationMmS2) {
+      plantAccelBound_(1.5 * profile.motion.maxDecelerationMmS2),
+      amplifier_(speedPerCode_, profile.plant.speedLoopTauS, plantAccelBound_),
+      stall_(profile.loop.encoderStallMm, speedPerCode_) {
     // The slowest acceleration of a saturated amplifier: the peak force less the friction at
     // top speed on the heaviest payload the profile allows (kMaxMassFactor, x20: 162 mm/s2 on
     // the stock rail), mm/s2; half of it, so that the counted acceleration's quantisation
@@ -488,8 +490,9 @@ bool RailServo::checkCountCeiling(double dtS, double before, double countedMm) {
     constexpr double kSteadyAfterLateS = 0.02;
     constexpr double kFlickerS = 0.005;  // a spell shorter than this leaves the following on
     constexpr double kFlatCounts = 1.5;  // flat: blocks within 1.5 counts of each other
-    const double dir = modelVelocity_ > 0.0 ? 1.0 : -1.0;
-    const double lead = (modelVelocity_ - velocity_) * dir;
+    const double model = amplifier_.velocityMmS();
+    const double dir = model > 0.0 ? 1.0 : -1.0;
+    const double lead = (model - velocity_) * dir;
     // A late tick leaves the velocity estimate behind for a few filter times: those ticks are
     // not judged. A following under way goes on through them (their time counts: with 5 % of
     // the ticks late, a third of the ticks are such, and 250 ms of judged following came
@@ -499,7 +502,7 @@ bool RailServo::checkCountCeiling(double dtS, double before, double countedMm) {
         return true;
     }
     // Both at speed: a count that stopped (a dead encoder) is the stall check's (alarm 16).
-    const bool atSpeed = std::abs(modelVelocity_) > kSpeedCodes * speedPerCode_ &&
+    const bool atSpeed = std::abs(model) > kSpeedCodes * speedPerCode_ &&
                          velocity_ * dir > kSpeedCodes * speedPerCode_;
     CeilingSpell& c = ceiling_;
     if (!atSpeed || lead <= kLeadCodes * speedPerCode_) {
@@ -517,7 +520,7 @@ bool RailServo::checkCountCeiling(double dtS, double before, double countedMm) {
     followingS_ = 0.0;
     c.s += dtS;
     if (!c.eligible) return true;
-    c.lossMm += (0.5 * (before + modelVelocity_) * dtS - countedMm) * dir;
+    c.lossMm += (0.5 * (before + model) * dtS - countedMm) * dir;
     c.blockMm += countedMm * dir;
     c.blockS += dtS;
     if (c.blockS >= kCeilingBlockS) {
@@ -547,7 +550,7 @@ bool RailServo::checkClassicRest(double dtS) {
         restStillS_ = 0.0;
     }
     restStillS_ += dtS;
-    const bool modelAtRest = std::abs(modelVelocity_) < 0.5 * speedPerCode_;
+    const bool modelAtRest = std::abs(amplifier_.velocityMmS()) < 0.5 * speedPerCode_;
     if (restStillS_ < kStillS || (!modelAtRest && restStillS_ < kModelStillS)) return true;
     return checkRestGap();
 }
@@ -560,18 +563,12 @@ void RailServo::endCeilingSpell() {
 }
 
 bool RailServo::checkEncoder(double dtS, bool counted, double countedMm) {
-    // Plausibility: the drive commanded motion for encoderStallMm of travel and the counter did
-    // not change once. A platform that moves at all makes 22.8 counts a millimetre, so this is
-    // a dead encoder, its cable, or a jam. The travel is that of a model of the amplifier (its
-    // speed loop's lag and current limit) driven by the code held over the period, less a code
-    // of dead band: a reversal passes through zero speed and owes no counts meanwhile.
-    const double commanded =
-        (static_cast<int>(lastCode_) - static_cast<int>(kDacZero)) * speedPerCode_;
-    const double before = modelVelocity_;
-    const double step =
-        std::clamp((commanded - before) * std::min(1.0, dtS / profile_.plant.speedLoopTauS),
-                   -plantAccelBound_ * dtS, plantAccelBound_ * dtS);
-    modelVelocity_ += step;
+    // The amplifier model runs on the code held over the period; the count checks compare the
+    // counted travel with it, and the stall check (EncoderStallCheck) its travel without counts.
+    const double commanded = amplifier_.commandedMmS(lastCode_);
+    const double before = amplifier_.velocityMmS();
+    amplifier_.advance(commanded, dtS);
+    const double model = amplifier_.velocityMmS();
     // Lost counts (issue 20 item 11) read as a platform slower than the amplifier drives it.
     // The model and the platform differ while the current limit holds the platform back (a
     // payload heavier than the profile's: up to 8 mm over a 2540 mm rapid at x3), so the speeds
@@ -580,9 +577,9 @@ bool RailServo::checkEncoder(double dtS, bool counted, double countedMm) {
     // and counts the card misses are the difference. Positive: counted short of the drive.
     constexpr double kSteadyS = 0.02, kSteadyMmS2 = 600.0;
     const double w = std::min(1.0, dtS / kSteadyS);
-    modelSlow_ += (modelVelocity_ - modelSlow_) * w;
+    modelSlow_ += (model - modelSlow_) * w;
     measuredSlow_ += (velocity_ - measuredSlow_) * w;
-    const bool steady = std::abs(modelVelocity_ - modelSlow_) < kSteadyMmS2 * kSteadyS &&
+    const bool steady = std::abs(model - modelSlow_) < kSteadyMmS2 * kSteadyS &&
                         std::abs(velocity_ - measuredSlow_) < kSteadyMmS2 * kSteadyS &&
                         sinceLateS_ > kSteadyS;
     // The classic law's coast after its in-position (the drive released, Idle) is summed too,
@@ -600,12 +597,11 @@ bool RailServo::checkEncoder(double dtS, bool counted, double countedMm) {
         // up and not the steps down, and the platform cruises a few mm/s under the model's
         // mean (x5-x10 at 150-280 mm/s: 1.4 mm over a 1200 mm feed, a false alarm 21 at the
         // screens). Counts lost at a card's ceiling run the model ahead by hundreds of mm/s.
-        if (steady && countedSteady_ && counted && std::abs(modelVelocity_) > speedPerCode_)
-            sample_.countDriftMm =
-                std::max(0.0, sample_.countDriftMm +
-                                  (0.5 * (before + modelVelocity_) * dtS - countedMm) *
-                                      (modelVelocity_ > 0.0 ? 1.0 : -1.0) -
-                                  speedPerCode_ * dtS);
+        if (steady && countedSteady_ && counted && std::abs(model) > speedPerCode_)
+            sample_.countDriftMm = std::max(
+                0.0, sample_.countDriftMm +
+                         (0.5 * (before + model) * dtS - countedMm) * (model > 0.0 ? 1.0 : -1.0) -
+                         speedPerCode_ * dtS);
         driftTravelMm_ += std::abs(countedMm);
         // The rest-to-rest identity: the code written last tick was held over this period;
         // tau dv/dt = v_ref - v integrated gives the travel the platform makes, v_ref dt less
@@ -644,14 +640,12 @@ bool RailServo::checkEncoder(double dtS, bool counted, double countedMm) {
         resetGapBlocks();
     }
     if (counted || sample_.mode == ServoMode::Idle || sample_.mode == ServoMode::Fault) {
-        stallTravel_ = 0.0;
+        stall_.reset();
         return true;
     }
-    const double speed = 0.5 * std::abs(before + modelVelocity_);
-    stallTravel_ += std::max(0.0, speed - speedPerCode_) * dtS;
-    if (stallTravel_ < profile_.loop.encoderStallMm) return true;
-    fault(ServoFault::EncoderStall, stallTravel_);
-    stallTravel_ = 0.0;
+    if (!stall_.stalledAfter(0.5 * std::abs(before + model), dtS)) return true;
+    fault(ServoFault::EncoderStall, stall_.travelMm());
+    stall_.reset();
     return false;
 }
 

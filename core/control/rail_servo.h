@@ -6,7 +6,9 @@
 #include <array>
 #include <cstdint>
 
+#include "core/control/amplifier_model.h"
 #include "core/control/counter_reader.h"
+#include "core/control/encoder_stall_check.h"
 #include "core/control/position_loop.h"
 #include "core/control/servo_sample.h"
 #include "core/control/switch_filter.h"
@@ -94,14 +96,16 @@ class RailServo {
     static constexpr double kLateSettleTimeouts = 5.0;
     double moveTime_ = 0.0;         ///< s since moveTo (classic: its in-position deadline)
     double classicDeadline_ = 0.0;  ///< s: a classic move must be in position by then
-    double stallTravel_ = 0.0;      ///< mm the drive commanded since the counter last changed
     double sinceLateS_ = 1.0;       ///< s since the last late tick
-    double modelVelocity_ = 0.0;    ///< mm/s: the amplifier model of the encoder check
     double lateAllowanceMm_ = 0.0;  ///< following error allowed after a late tick, decaying
     double speedPerCode_ = 0.0;     ///< mm/s per DAC code (1885 / 127)
     /// mm/s: 95 % of the speed at which the counter card reaches its highest count rate; no
     /// plan and no drive command goes faster (issue 20 item 11).
     double countLimitMmS_ = 0.0;
+    /// mm/s2: the plant accelerates up to its current limit, above the planner's braking figure.
+    double plantAccelBound_ = 0.0;
+    AmplifierModel amplifier_;  ///< driven by lastCode_: what the count checks compare with
+    EncoderStallCheck stall_;
     int countLimitCodes_ = 127;   ///< the same in DAC codes from 128
     double driftTravelMm_ = 0.0;  ///< mm counted (absolute) since the drift was last reset
     /// Since the platform was last in position: the speed reference integrated, mm (signed),
@@ -184,8 +188,6 @@ class RailServo {
     bool checkCountCeiling(double dtS, double before, double countedMm);
     /// A spell ended: a flat one's loss is added to ceilingLossMm_.
     void endCeilingSpell();
-    /// The plant accelerates up to its current limit, above the planner's braking figure.
-    double plantAccelBound_ = 0.0;
     bool useOverride_ = true;
     bool limitsActive_ = true;
     double velocity_ = 0.0, acceleration_ = 0.0;
