@@ -23,22 +23,15 @@ RailServo::RailServo(const MachineProfile& profile, RailIo& io)
       accel_(profile.motion.accelerationMmS2),
       speedPerCode_(profile.plant.maxSpeedMmS() / 127.0),
       countLimitMmS_(0.95 * profile.plant.counterMaxRateHz / profile.plant.countsPerMm),
-      plantAccelBound_(1.5 * profile.motion.maxDecelerationMmS2) {
-    // The slowest acceleration of a saturated amplifier: the peak force less the friction at
-    // top speed on the heaviest payload the profile allows (kMaxMassFactor, x20: 162 mm/s2 on
-    // the stock rail), mm/s2; half of it, so that the counted acceleration's quantisation
-    // (kGapSideBlocks) does not hide a saturation. The servo is not told the payload; it takes
-    // the heaviest (issue 20 item 11: a threshold for x3 read a x5 rapid's lag as lost counts).
-    const PlantParams& pl = profile.plant;
-    const double frictionN =
-        pl.coulombFrictionN + pl.viscousFrictionNsPerM * pl.maxSpeedMmS() / 1000.0;
-    saturatedAccel_ = 0.5 * 1000.0 * std::max(0.0, pl.peakForceN() - frictionN) /
-                      (kMaxMassFactor * pl.movingMassKg + pl.reflectedMassKg);
-    fastSaturatedAccel_ = 0.5 * 1000.0 * std::max(0.0, pl.peakForceN() - frictionN) /
-                          (3.0 * pl.movingMassKg + pl.reflectedMassKg);
+      plantAccelBound_(1.5 * profile.motion.maxDecelerationMmS2),
+      amplifier_(speedPerCode_, profile.plant.speedLoopTauS, plantAccelBound_),
+      stall_(profile.loop.encoderStallMm, speedPerCode_),
+      drift_(profile.loop.countLossMm, profile.loop.countLossFraction, speedPerCode_),
+      ceiling_(profile.loop.countLossMm, profile.plant.countsPerMm, speedPerCode_),
+      restGap_(profile.plant, profile.loop, speedPerCode_) {
     countLimitCodes_ =
         std::clamp(static_cast<int>(std::floor(countLimitMmS_ / speedPerCode_)), 1, 127);
-    resetGapBlocks();
+    publishCountChecks();
     switches_.reset(io_.readSwitches());
     counter_.resync(io_, 0);
     sample_.switches = switches_.value();
@@ -50,9 +43,9 @@ void RailServo::resync(double positionMm) {
     sample_.positionMm = counter_.positionMm();
     sample_.setpointMm = sample_.positionMm;
     velocity_ = acceleration_ = 0.0;
-    referenceSumMm_ = referenceTravelSumMm_ = ceilingLossMm_ = 0.0;
-    sample_.referenceGapMm = sample_.referenceTravelMm = 0.0;
-    sample_.restCheckPending = false;
+    restGap_.forgetReference();
+    ceiling_.restartReference();
+    publishCountChecks();
 }
 
 void RailServo::resyncToCounter() {
@@ -60,9 +53,9 @@ void RailServo::resyncToCounter() {
     sample_.positionMm = counter_.positionMm();
     sample_.setpointMm = sample_.positionMm;
     velocity_ = acceleration_ = 0.0;
-    referenceSumMm_ = referenceTravelSumMm_ = ceilingLossMm_ = 0.0;
-    sample_.referenceGapMm = sample_.referenceTravelMm = 0.0;
-    sample_.restCheckPending = false;
+    restGap_.forgetReference();
+    ceiling_.restartReference();
+    publishCountChecks();
 }
 
 int RailServo::debounceReads() const {
@@ -183,11 +176,12 @@ void RailServo::stop() {
 
 void RailServo::emergencyStop() {
     io_.writeDrive(kDacZero);
-    lastCode_ = kDacZero;              // held from now on (the count checks integrate it)
-    sample_.restCheckPending = false;  // the run is over; homing references the count again
+    lastCode_ = kDacZero;      // held from now on (the count checks integrate it)
+    restGap_.cancelPending();  // the run is over; homing references the count again
     sample_.mode = ServoMode::Idle;
     sample_.loop = LoopOutput{};
     loop_.reset();
+    publishCountChecks();
 }
 
 void RailServo::release() {
@@ -241,12 +235,24 @@ void RailServo::setSpeedOverride(double factor) {
 
 void RailServo::fault(ServoFault f, double value) {
     io_.writeDrive(kDacZero);
-    sample_.restCheckPending = false;
+    restGap_.cancelPending();
     sample_.fault = f;
     sample_.faultValue = value;
     sample_.mode = ServoMode::Fault;
     sample_.loop = LoopOutput{};
     loop_.reset();
+    publishCountChecks();
+}
+
+void RailServo::publishCountChecks() {
+    sample_.countDriftMm = drift_.driftMm();
+    const RestGapCheck::Report& r = restGap_.report();
+    sample_.travelGapMm = r.travelGapMm;
+    sample_.moveGapMm = r.moveGapMm;
+    sample_.referenceGapMm = r.referenceGapMm;
+    sample_.referenceTravelMm = r.referenceTravelMm;
+    sample_.restChecks = r.restChecks;
+    sample_.restCheckPending = r.restCheckPending;
 }
 
 bool RailServo::guardSoftLimits() {
@@ -294,98 +300,11 @@ std::uint8_t RailServo::counterSafeCode(std::uint8_t code) const {
                                                 kDacZero + countLimitCodes_));
 }
 
-void RailServo::resetGapBlocks() {
-    // At rest: the blocks before the first to decide are blocks at rest.
-    blocks_ = {};
-    for (int i = 0; i < kGapSideBlocks; ++i)
-        blocks_[static_cast<std::size_t>(i)].s = kGapBlockS;
-    gapCount_ = kGapSideBlocks + 1;  // the first block to decide is being summed
-    preReferenceBlocks_ = 0;
-    gapBoundaryMmS_ = 0.0;
-    countedSteady_ = true;
-}
-
-void RailServo::decideGapBlock() {
-    // The window is full: blocks_[kGapSideBlocks] is decided now that the blocks after it are
-    // known. Its gap: the speed reference's travel less the travel counted less tau times the
-    // change of speed over the block (the speed loop's lag, tau dv/dt = v_ref - v). The speeds
-    // at its ends are the counted speed where it meets its neighbours (the two blocks' mean
-    // speeds interpolated to their common end: exact under a constant acceleration, no lag; a
-    // 20 ms mean's lag left 0.7 mm a move where saturated blocks were left out). They
-    // telescope over the blocks kept, so what a move sums is the reference's travel less the
-    // travel counted less tau (v_end - v_start), whatever the estimate's quantisation.
-    constexpr auto K = static_cast<std::size_t>(kGapSideBlocks);
-    const GapBlock& block = blocks_[K];
-    const GapBlock& next = blocks_[K + 1];
-    const double vBlock = block.motionMm / block.s, vNext = next.motionMm / next.s;
-    const double vEnd = vBlock + (vNext - vBlock) * block.s / (block.s + next.s);
-    const double gap = block.referenceMm - block.travelMm -
-                       profile_.plant.speedLoopTauS * (vEnd - gapBoundaryMmS_);
-    gapBoundaryMmS_ = vEnd;
-    // The counted acceleration across the block, at two scales (central differences: no lag).
-    // Fast: the speeds of the blocks either side (count quantisation up to 0.3-0.4 m/s2); it
-    // sees where the acceleration changes, as where the card starts missing counts. Slow: the
-    // mean speeds of kGapSideBlocks blocks either side (at most 73 mm/s2 of quantisation); it
-    // sees the heaviest payload's slow saturated acceleration.
-    const GapBlock& prev = blocks_[K - 1];
-    const double fastAccel =
-        (vNext - prev.motionMm / prev.s) / (0.5 * prev.s + block.s + 0.5 * next.s);
-    double travelBefore = 0.0, sBefore = 0.0, travelAfter = 0.0, sAfter = 0.0;
-    for (std::size_t i = 0; i < K; ++i) {
-        travelBefore += blocks_[i].motionMm, sBefore += blocks_[i].s;
-        travelAfter += blocks_[K + 1 + i].motionMm, sAfter += blocks_[K + 1 + i].s;
-    }
-    const double accel =
-        (travelAfter / sAfter - travelBefore / sBefore) / (0.5 * sBefore + block.s + 0.5 * sAfter);
-    // Left out as the current limit's lag: a gap above two counts in the direction the
-    // counted speed changes, where the fast scale sees a saturated acceleration of the payloads
-    // up to x3 (fastSaturatedAccel_), or where the slow scale sees a slower one of a heavier
-    // payload (up to kMaxMassFactor) and the fast scale agrees it is under way. Counts the card
-    // misses above its rate leave the counted speed flat: those blocks are kept, and where the
-    // misses begin the fast scale sees the acceleration stop (the slow one alone would blur
-    // the onset over 30 ms and leave most of the loss out).
-    const double dir = gap > 0.0 ? 1.0 : -1.0;
-    const bool saturated = std::abs(gap) > 2.0 / profile_.plant.countsPerMm &&
-                           (fastAccel * dir >= fastSaturatedAccel_ ||
-                            (accel * dir >= saturatedAccel_ && fastAccel * dir >= saturatedAccel_));
-    // Kept less a dead band of half a code of speed over the block: a heavy payload's loop
-    // dithers a code up and down and the current limit slows some of the steps, so the
-    // platform cruises a few mm/s off the reference's mean (x10 at 220 mm/s: 5.5 mm/s, 24 mm
-    // over a 1200 mm feed, a false alarm 21). The count's quantisation (a count a block) is
-    // inside the band too. Counts lost at a card's ceiling run hundreds of mm/s off.
-    const double band = 0.5 * speedPerCode_ * block.s;
-    const double kept = std::copysign(std::max(0.0, std::abs(gap) - band), gap);
-    if (!saturated) referenceTravelMm_ += kept;
-    if (preReferenceBlocks_ > 0) {
-        // A block pending when the count was referenced: its gap is before the reference.
-        if (!saturated) referenceSumMm_ -= kept;
-        --preReferenceBlocks_;
-    }
-    // The steady check's drift of the block counts only where the counted speed is steady too
-    // (tick by tick, a 20 ms mean cannot tell a x20 payload's 162 mm/s2 from steady).
-    countedSteady_ = std::abs(accel) < saturatedAccel_;
-    for (std::size_t i = 0; i + 1 < blocks_.size(); ++i)
-        blocks_[i] = blocks_[i + 1];
-    blocks_.back() = GapBlock{};
-    --gapCount_;
-}
-
-double RailServo::pendingGapMm(double endSpeedMmS) const {
-    // The blocks not decided yet (from the block to decide to the one being summed): their
-    // speed change is from the boundary speed to endSpeedMmS (0 at rest).
-    double gap = profile_.plant.speedLoopTauS * (gapBoundaryMmS_ - endSpeedMmS);
-    for (int i = kGapSideBlocks; i < gapCount_; ++i)
-        gap += blocks_[static_cast<std::size_t>(i)].referenceMm -
-               blocks_[static_cast<std::size_t>(i)].travelMm;
-    return gap;
-}
-
 bool RailServo::checkCountDrift(bool reset) {
-    const double drift = sample_.countDriftMm;
-    const double allowed =
-        profile_.loop.countLossMm + profile_.loop.countLossFraction * driftTravelMm_;
-    if (reset) sample_.countDriftMm = driftTravelMm_ = 0.0;
-    if (drift > allowed) {
+    const double drift = drift_.driftMm();
+    const bool lost = drift_.beyondBound();
+    if (reset) drift_.reset();
+    if (lost) {
         fault(ServoFault::CountsLost, drift);
         return false;
     }
@@ -394,268 +313,80 @@ bool RailServo::checkCountDrift(bool reset) {
     // the platform passes the target or coasts back from an overshoot of tens of mm at full
     // code, so the identity's ends are not at rest (profile_extremes_test.cpp: false alarms at
     // 8 ms when checked there). Its sums go on through the coast and the moves after it until
-    // the platform's first true rest (checkClassicRest); the program's end waits for it.
+    // the platform's first true rest (checkCounts); the program's end waits for it.
     if (profile_.loop.law == LoopLaw::Classic) {
-        if (!sample_.restCheckPending) restStillMm_ = sample_.positionMm, restStillS_ = 0.0;
-        sample_.restCheckPending = true;
+        restGap_.awaitClassicRest(sample_.positionMm);
         return true;
     }
     return checkRestGap();
 }
 
 bool RailServo::checkRestGap() {
-    // At rest again (in position): the rest-to-rest check. Whatever the mass, an amplifier
-    // speed loop that is not at its current limit obeys tau dv/dt = v_ref - v; integrated
-    // between two rests (v = 0 at both ends) the platform's travel equals the integral of the
-    // speed reference. Only the current limit (a heavy payload's lag) breaks the identity, and
-    // a lag while accelerating and the lag while braking have opposite signs; what is left is
-    // bounded by restCountLossMm plus restCountLossFraction of the travel (measured over masses
-    // x0.5-x3, see motion_safety_test.cpp CountsLost). Counts lost anywhere in the move, at any
-    // speed, make the counted travel short of the reference's by as much.
-    const double counted = countedTravelMm_;
-    // The travel's length (the classic law's check covers several moves, there and back).
-    const double path = std::max(std::abs(counted), restPathMm_);
-    // The blocks not decided yet are at rest: kept.
-    const double signedGap = referenceTravelMm_ + pendingGapMm(0.0);  // machine coordinates
-    const double gap = signedGap * (counted >= 0.0 ? 1.0 : -1.0);
-    // At a rest within the window after a reference of the count, the blocks pending then are
-    // still pending: all that is pending goes with them (at most 70 ms of travel near rest).
-    const double sinceReference = preReferenceBlocks_ > 0 ? referenceTravelMm_ : signedGap;
-    sample_.moveGapMm = gap;
-    ++sample_.restChecks;
-    sample_.travelGapMm = referenceTravelMm_ = countedTravelMm_ = restPathMm_ = 0.0;
-    resetGapBlocks();
-    sample_.restCheckPending = false;
-    if (gap > profile_.loop.restCountLossMm + profile_.loop.restCountLossFraction * path) {
-        fault(ServoFault::CountsLost, gap);
-        return false;
-    }
-    // Losses under the move's bound add up over moves that never cross the centre mark (eight
-    // cycles of G1 X100 F20 / G0 X1100 on a 34,000 counts/s card ended "finished" 17.8 mm
-    // off). Their sum since the count was last referenced estimates the platform less the
-    // count; above referenceCountLossMm plus referenceCountLossFraction of the travel counted
-    // since then it is alarm 21 too. In machine coordinates: the lag a heavy payload leaves
-    // in each move is in the direction of motion and cancels over moves there and back (a
-    // sum in the direction of motion drifted 15 mm in 60 fault-free moves at x2-x5).
-    referenceSumMm_ += sinceReference;
-    referenceTravelSumMm_ += path;
-    sample_.referenceGapMm = referenceSumMm_;
-    sample_.referenceTravelMm = referenceTravelSumMm_;
-    if (std::abs(referenceSumMm_) <=
-        profile_.loop.referenceCountLossMm +
-            profile_.loop.referenceCountLossFraction * referenceTravelSumMm_)
-        return true;
-    fault(ServoFault::CountsLost, std::abs(referenceSumMm_));
+    // At rest again (in position): the rest-to-rest check (RestGapCheck).
+    if (restGap_.withinBoundsAtRest()) return true;
+    fault(ServoFault::CountsLost, restGap_.lostMm());
     return false;
 }
 
 void RailServo::restartReferenceSum() {
     // The counter was just referenced in the middle of a move: what the move lost so far is
-    // corrected, what it loses from here on counts. The move's gap at its in-position less
-    // its gap now is the part after the reference.
+    // corrected, what it loses from here on counts.
     const bool tracking = sample_.mode == ServoMode::Move || sample_.mode == ServoMode::Hold ||
-                          sample_.restCheckPending;
-    // The blocks not decided yet are decided later, and some are left out then (the current
-    // limit's lag at a classic move's full-code start: 18 mm taken raw here read as a false
-    // alarm 21 at the rest after it). So the part before the reference is the blocks decided
-    // so far plus, as each is decided, the kept gaps of the blocks pending now (up to 10 ms
-    // after the mark go with them).
-    referenceSumMm_ = tracking ? -referenceTravelMm_ : 0.0;
-    preReferenceBlocks_ = tracking ? gapCount_ - kGapSideBlocks : 0;
-    referenceTravelSumMm_ = tracking ? -std::abs(countedTravelMm_) : 0.0;
-    sample_.referenceGapMm = sample_.referenceTravelMm = 0.0;
-    ceilingLossMm_ = 0.0;
+                          restGap_.report().restCheckPending;
+    restGap_.restartReference(tracking);
+    ceiling_.restartReference();
 }
 
-bool RailServo::checkCountCeiling(double dtS, double before, double countedMm) {
-    // A counter card misses the counts above its highest rate: while the platform runs faster,
-    // the count goes on at the card's rate, its speed flat at a ceiling. A profile that gives a
-    // faster card than the one fitted (counterMaxRateHz) plans moves whose tops pass it, and the
-    // loss at a short move's top (no cruise: the steady check never sees it) is under each
-    // move's bound yet adds up (eight cycles of G1 X100 F20 / G0 X1100 on a 34,000 counts/s
-    // card ended "finished" 17.8 mm off). The signature: the count was following the amplifier
-    // model at speed, then the model (the drive's speed) runs on ahead of it while the counted
-    // speed stays flat. A payload's current limit also puts the model ahead, but from the start
-    // of an acceleration (the count never followed it there) and with the count accelerating
-    // at (peak force - friction) / mass: fault-free, over 560 seeded programs at x0.1-x20, such
-    // flat spells came after at most 0.12 s of following, every ceiling after 0.55 s, hence
-    // the 250 ms. The losses of the flat spells since the reference above countLossMm are
-    // alarm 21. What 35 ms of counts cannot tell from a ceiling: the heaviest payload (x20,
-    // 162 mm/s2) accelerating again at its current limit after 250 ms at speed.
-    constexpr double kLeadCodes = 2.0;    // model ahead of the count: a spell, codes of speed
-    constexpr double kSpeedCodes = 10.0;  // at speed: above 10 codes (148 mm/s)
-    constexpr double kFollowS = 0.25;     // followed for 250 ms before the spell
-    constexpr double kSteadyAfterLateS = 0.02;
-    constexpr double kFlickerS = 0.005;  // a spell shorter than this leaves the following on
-    constexpr double kFlatCounts = 1.5;  // flat: blocks within 1.5 counts of each other
-    const double dir = modelVelocity_ > 0.0 ? 1.0 : -1.0;
-    const double lead = (modelVelocity_ - velocity_) * dir;
-    // A late tick leaves the velocity estimate behind for a few filter times: those ticks are
-    // not judged. A following under way goes on through them (their time counts: with 5 % of
-    // the ticks late, a third of the ticks are such, and 250 ms of judged following came
-    // after 0.4 s); a spell leaves them out.
-    if (sinceLateS_ <= kSteadyAfterLateS) {
-        if (followingS_ > 0.0 && ceiling_.s == 0.0) followingS_ += dtS;
-        return true;
-    }
-    // Both at speed: a count that stopped (a dead encoder) is the stall check's (alarm 16).
-    const bool atSpeed = std::abs(modelVelocity_) > kSpeedCodes * speedPerCode_ &&
-                         velocity_ * dir > kSpeedCodes * speedPerCode_;
-    CeilingSpell& c = ceiling_;
-    if (!atSpeed || lead <= kLeadCodes * speedPerCode_) {
-        if (c.s > 0.0) endCeilingSpell();
-        followingS_ = !atSpeed                       ? 0.0
-                      : c.s > 0.0 && c.s < kFlickerS ? c.followedS
-                                                     : followingS_ + dtS;
-        c = {};
-        return true;
-    }
-    if (c.s == 0.0) {
-        c.followedS = followingS_;
-        c.eligible = followingS_ >= kFollowS;
-    }
-    followingS_ = 0.0;
-    c.s += dtS;
-    if (!c.eligible) return true;
-    c.lossMm += (0.5 * (before + modelVelocity_) * dtS - countedMm) * dir;
-    c.blockMm += countedMm * dir;
-    c.blockS += dtS;
-    if (c.blockS >= kCeilingBlockS) {
-        const double v = c.blockMm / c.blockS;
-        c.minMmS = c.blocks == 0 ? v : std::min(c.minMmS, v);
-        c.maxMmS = c.blocks == 0 ? v : std::max(c.maxMmS, v);
-        ++c.blocks;
-        c.blockMm = c.blockS = 0.0;
-        if ((c.maxMmS - c.minMmS) * kCeilingBlockS * profile_.plant.countsPerMm > kFlatCounts)
-            c.eligible = false;
-    }
-    if (!c.eligible || c.blocks < kMinCeilingBlocks ||
-        ceilingLossMm_ + c.lossMm <= profile_.loop.countLossMm)
-        return true;
-    fault(ServoFault::CountsLost, ceilingLossMm_ + c.lossMm);
-    return false;
-}
-
-bool RailServo::checkClassicRest(double dtS) {
-    // The classic law's first true rest after its in-position: the count within two counts for
-    // 50 ms (the controller's "still", which the program's end waits for) and the amplifier
-    // model at rest too (under half a code of speed; after 0.5 s still, at rest whatever the
-    // model says: a platform held by an end or a jam owes the model nothing more).
-    constexpr double kStillS = 0.05, kModelStillS = 0.5;
-    if (std::abs(sample_.positionMm - restStillMm_) > 2.0 / profile_.plant.countsPerMm) {
-        restStillMm_ = sample_.positionMm;
-        restStillS_ = 0.0;
-    }
-    restStillS_ += dtS;
-    const bool modelAtRest = std::abs(modelVelocity_) < 0.5 * speedPerCode_;
-    if (restStillS_ < kStillS || (!modelAtRest && restStillS_ < kModelStillS)) return true;
-    return checkRestGap();
-}
-
-void RailServo::endCeilingSpell() {
-    // A flat spell ended under the bound: its loss is kept until the count is referenced again
-    // (smaller losses at each move's top add up).
-    const CeilingSpell& c = ceiling_;
-    if (c.eligible && c.blocks >= kMinCeilingBlocks) ceilingLossMm_ += c.lossMm;
-}
-
-bool RailServo::checkEncoder(double dtS, bool counted, double countedMm) {
-    // Plausibility: the drive commanded motion for encoderStallMm of travel and the counter did
-    // not change once. A platform that moves at all makes 22.8 counts a millimetre, so this is
-    // a dead encoder, its cable, or a jam. The travel is that of a model of the amplifier (its
-    // speed loop's lag and current limit) driven by the code held over the period, less a code
-    // of dead band: a reversal passes through zero speed and owes no counts meanwhile.
-    const double commanded =
-        (static_cast<int>(lastCode_) - static_cast<int>(kDacZero)) * speedPerCode_;
-    const double before = modelVelocity_;
-    const double step =
-        std::clamp((commanded - before) * std::min(1.0, dtS / profile_.plant.speedLoopTauS),
-                   -plantAccelBound_ * dtS, plantAccelBound_ * dtS);
-    modelVelocity_ += step;
-    // Lost counts (issue 20 item 11) read as a platform slower than the amplifier drives it.
-    // The model and the platform differ while the current limit holds the platform back (a
-    // payload heavier than the profile's: up to 8 mm over a 2540 mm rapid at x3), so the speeds
-    // are compared only while both are steady, over 20 ms: there the speed loop has no
-    // acceleration to make and runs the platform at the commanded speed whatever the mass,
-    // and counts the card misses are the difference. Positive: counted short of the drive.
-    constexpr double kSteadyS = 0.02, kSteadyMmS2 = 600.0;
-    const double w = std::min(1.0, dtS / kSteadyS);
-    modelSlow_ += (modelVelocity_ - modelSlow_) * w;
-    measuredSlow_ += (velocity_ - measuredSlow_) * w;
-    const bool steady = std::abs(modelVelocity_ - modelSlow_) < kSteadyMmS2 * kSteadyS &&
-                        std::abs(velocity_ - measuredSlow_) < kSteadyMmS2 * kSteadyS &&
-                        sinceLateS_ > kSteadyS;
+bool RailServo::checkCounts(double dtS, bool counted, double countedMm, double jumpMm) {
+    // The amplifier model runs on the code held over the period; the count checks compare the
+    // counted travel with it, and the stall check (EncoderStallCheck) its travel without counts.
+    const double commanded = amplifier_.commandedMmS(lastCode_);
+    const double before = amplifier_.velocityMmS();
+    amplifier_.advance(commanded, dtS);
+    const double model = amplifier_.velocityMmS();
+    // The steady check's means of the two speeds run every period.
+    const bool steady = drift_.steady(model, velocity_, sinceLateS_, dtS);
     // The classic law's coast after its in-position (the drive released, Idle) is summed too,
     // up to the platform's first true rest.
     if (sample_.mode == ServoMode::Move || sample_.mode == ServoMode::Hold ||
-        (sample_.mode == ServoMode::Idle && sample_.restCheckPending)) {
+        (sample_.mode == ServoMode::Idle && restGap_.report().restCheckPending)) {
         // Only while counts come: a counter that stopped is the stall check's (alarm 16).
-        GapBlock& summing = blocks_[static_cast<std::size_t>(gapCount_ - 1)];
         // Steady tick by tick (20 ms), and over the last block decided a counted speed that
         // does not change at a heavy payload's saturated acceleration either (a 20 ms mean
         // cannot tell x5's 640 mm/s2 from steady: 2.06 mm of false drift on a rapid; the
         // blocks can, 40 ms late).
-        // Less a dead band of one code of speed, the sum kept at or above zero (a CUSUM): a
-        // heavy payload's loop dithers a code up and down, the current limit slows each step
-        // up and not the steps down, and the platform cruises a few mm/s under the model's
-        // mean (x5-x10 at 150-280 mm/s: 1.4 mm over a 1200 mm feed, a false alarm 21 at the
-        // screens). Counts lost at a card's ceiling run the model ahead by hundreds of mm/s.
-        if (steady && countedSteady_ && counted && std::abs(modelVelocity_) > speedPerCode_)
-            sample_.countDriftMm =
-                std::max(0.0, sample_.countDriftMm +
-                                  (0.5 * (before + modelVelocity_) * dtS - countedMm) *
-                                      (modelVelocity_ > 0.0 ? 1.0 : -1.0) -
-                                  speedPerCode_ * dtS);
-        driftTravelMm_ += std::abs(countedMm);
-        // The rest-to-rest identity: the code written last tick was held over this period;
-        // tau dv/dt = v_ref - v integrated gives the travel the platform makes, v_ref dt less
-        // tau dv. The speed reference's travel and the travel counted are summed in blocks of
-        // 10 ms (a count's quantisation telescopes within a block); tau dv is taken per block
-        // from the counted speed at its ends (decideGapBlock). Only the amplifier's current
-        // limit breaks the identity: there the platform accelerates at (peak force - friction)
-        // / mass, at least 2 x saturatedAccel_ for the heaviest payload the profile allows, and
-        // lags: the gap grows in the direction of that acceleration, and such blocks are left
-        // out. Counts lost do not accelerate the count: where the card misses counts above its
-        // rate the counted speed stays flat, and the block is kept.
-        summing.referenceMm += commanded * dtS;
-        summing.travelMm += countedMm;
-        summing.motionMm += countedMm + jumpMm_;
-        summing.s += dtS;
-        countedTravelMm_ += countedMm;
-        restPathMm_ += std::abs(countedMm);
-        if (summing.s >= kGapBlockS) {
-            if (gapCount_ == kGapBlocks) decideGapBlock();
-            ++gapCount_;
-        }
-        sample_.travelGapMm = referenceTravelMm_ * (countedTravelMm_ >= 0.0 ? 1.0 : -1.0);
+        drift_.add(steady && restGap_.countedSteady() && counted, before, model, countedMm, dtS);
+        restGap_.add(commanded, countedMm, jumpMm, dtS);
         if (!checkCountDrift(false)) return false;
-        if (!checkCountCeiling(dtS, before, countedMm)) return false;
-        if (sample_.restCheckPending && !checkClassicRest(dtS)) return false;
+        if (!ceiling_.withinCountLoss(dtS, sinceLateS_, before, model, velocity_, countedMm)) {
+            fault(ServoFault::CountsLost, ceiling_.lossMm());
+            return false;
+        }
+        if (restGap_.report().restCheckPending &&
+            restGap_.classicRestReached(sample_.positionMm, model, dtS) && !checkRestGap())
+            return false;
     } else {
-        // Manual drive, homing, idle: no check. A move the count was referenced in and that
-        // ends here unchecked leaves nothing since the reference.
-        if (preReferenceBlocks_ > 0) referenceSumMm_ = referenceTravelSumMm_ = 0.0;
-        sample_.restCheckPending = false;
-        restPathMm_ = 0.0;
-        ceiling_ = {};
-        followingS_ = 0.0;
-        sample_.countDriftMm = driftTravelMm_ = 0.0;
-        sample_.travelGapMm = referenceTravelMm_ = countedTravelMm_ = 0.0;
-        resetGapBlocks();
+        // Manual drive, homing, idle: no check.
+        restGap_.stopTracking();
+        ceiling_.forgetSpell();
+        drift_.reset();
     }
     if (counted || sample_.mode == ServoMode::Idle || sample_.mode == ServoMode::Fault) {
-        stallTravel_ = 0.0;
+        stall_.reset();
         return true;
     }
-    const double speed = 0.5 * std::abs(before + modelVelocity_);
-    stallTravel_ += std::max(0.0, speed - speedPerCode_) * dtS;
-    if (stallTravel_ < profile_.loop.encoderStallMm) return true;
-    fault(ServoFault::EncoderStall, stallTravel_);
-    stallTravel_ = 0.0;
+    if (!stall_.stalledAfter(0.5 * std::abs(before + model), dtS)) return true;
+    fault(ServoFault::EncoderStall, stall_.travelMm());
+    stall_.reset();
     return false;
 }
 
 void RailServo::tick(double dtS) {
+    runPeriod(dtS);
+    publishCountChecks();
+}
+
+void RailServo::runPeriod(double dtS) {
     if (!(dtS > 0.0)) return;
     ServoSample& s = sample_;
     s.timeS += dtS;
@@ -726,9 +457,8 @@ void RailServo::tick(double dtS) {
         lastCode_ = kDacZero;
         return;
     }
-    jumpMm_ = jumpMm;
-    if (!checkEncoder(dtS, counter_.lastDelta() != 0 || counter_.rebased(),
-                      s.positionMm - previous - jumpMm))
+    if (!checkCounts(dtS, counter_.lastDelta() != 0 || counter_.rebased(),
+                     s.positionMm - previous - jumpMm, jumpMm))
         return;
     // After a re-base the platform is not where the plan thought: plan the rest of the move
     // from the corrected position, at the speed the setpoint had (no jump in the command).

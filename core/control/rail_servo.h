@@ -3,91 +3,22 @@
 // samples the motion, runs the position loop, checks the limits and writes the drive once.
 // Time is passed in; nothing here allocates, locks, sleeps or logs, so tests and the
 // command-line tool run whole moves in virtual time.
-#include <array>
 #include <cstdint>
 
+#include "core/control/amplifier_model.h"
+#include "core/control/count_ceiling_check.h"
+#include "core/control/count_drift_check.h"
 #include "core/control/counter_reader.h"
+#include "core/control/encoder_stall_check.h"
 #include "core/control/position_loop.h"
+#include "core/control/rest_gap_check.h"
+#include "core/control/servo_sample.h"
 #include "core/control/switch_filter.h"
 #include "core/io/rail_io.h"
 #include "core/motion/trapezoid.h"
 #include "core/profile/machine_profile.h"
 
 namespace trilho {
-
-enum class ServoMode : std::uint8_t {
-    Idle,    ///< drive at 128 (0 V), no loop: the VB's state between moves
-    Hold,    ///< the loop holds the last setpoint
-    Move,    ///< following a profile (engineered) or a step setpoint (classic) to a target
-    Direct,  ///< the operator sets the drive code (the original manual mode)
-    Fault,   ///< drive at 128 until the fault is cleared
-};
-
-enum class ServoFault : std::uint8_t {
-    None,
-    FollowingError,  ///< |setpoint - position| beyond the limit (a stuck encoder ends here)
-    LeftEndSwitch,   ///< the left end switch while moving left
-    RightEndSwitch,
-    AmplifierFault,  ///< the amplifier's ready input dropped
-    HardStop,        ///< not reported by the servo; reserved for the plant's own stop
-    SoftLimit,     ///< the predicted stopping point passed a soft limit: stopped before the switch
-    EncoderStall,  ///< the drive ran encoderStallMm with no change of the counter
-    InPositionTimeout,  ///< the move ended but never settled in the window
-    CountsLost,  ///< the move ended with the counted travel short of the drive's (lost counts)
-    LateTicks,   ///< late ticks kept restarting the settling until the in-position timeout
-};
-
-/// Everything one tick knew, for the controller, the screens and traces.
-struct ServoSample {
-    double timeS = 0.0;
-    double setpointMm = 0.0;
-    double setpointVelocityMmS = 0.0;
-    double positionMm = 0.0;
-    double velocityMmS = 0.0;       ///< filtered estimate from the counter
-    double accelerationMmS2 = 0.0;  ///< filtered estimate
-    double errorMm = 0.0;           ///< setpoint - position
-    double targetMm = 0.0;
-    double moveStartMm = 0.0;
-    LoopOutput loop;
-    std::uint8_t switches = 248;  ///< debounced switch byte
-    ServoMode mode = ServoMode::Idle;
-    ServoFault fault = ServoFault::None;
-    bool inPosition = false;    ///< the move is over and the position settled in the window
-    std::uint32_t replans = 0;  ///< profiles re-planned gentler because the plant lagged
-    std::uint32_t rejectedReads = 0;
-    std::uint32_t rebases = 0;  ///< counter re-zeroed under us (the centre mark)
-    /// Corrections of the position by the centre mark (lost counts, cable slip): how many, and
-    /// the last one, mm (counter minus our count at the crossing).
-    std::uint32_t corrections = 0;
-    double lastCorrectionMm = 0.0;
-    /// Late ticks: periods longer than 1.5x the nominal, the longest period seen, the last.
-    std::uint32_t overruns = 0;
-    double worstPeriodS = 0.0;
-    double lastPeriodS = 0.0;
-    /// Manual (direct) drive stopped by the soft-limit guard (a warning, not a fault).
-    std::uint32_t limitStops = 0;
-    double faultValue = 0.0;  ///< SoftLimit: the limit, mm; EncoderStall: mm run; timeout: error
-    bool feedHeld = false;    ///< feed override 0: braked to rest, the move stays active
-    /// The travel the amplifier model expected from the drive less the travel counted, mm, in
-    /// the direction of motion, summed while both speeds are steady, since the platform was
-    /// last in position (lost counts make it grow; issue 20 item 11).
-    double countDriftMm = 0.0;
-    /// Rest to rest (issue 20 item 11, counts lost while the speed changes): the travel the
-    /// drive's speed reference makes integrated over time (codes x mm/s per code x s) less the
-    /// travel counted, mm, in the direction counted, since the platform was last in position;
-    /// moveGapMm is its value at the last in-position (where it is checked).
-    double travelGapMm = 0.0;
-    double moveGapMm = 0.0;
-    /// The moves' gaps summed since the count was last referenced (homing, or the centre mark
-    /// that clears the counter), mm: small losses add up over moves that never cross the mark.
-    double referenceGapMm = 0.0;
-    double referenceTravelMm = 0.0;  ///< mm counted over those moves (the bound's fraction)
-    std::uint32_t restChecks = 0;    ///< rest-to-rest checks made (one per in-position)
-    /// The classic law released the drive at its in-position (the VB's 0.5 mm) with the
-    /// platform still moving: its rest-to-rest check waits for the platform's first true rest,
-    /// and the program's end waits for that check (issue 20 item 11).
-    bool restCheckPending = false;
-};
 
 class RailServo {
   public:
@@ -129,17 +60,28 @@ class RailServo {
     const MachineProfile& profile() const { return profile_; }
 
   private:
+    /// tick() less the copy of the count checks' figures to the sample.
+    void runPeriod(double dtS);
     void fault(ServoFault f, double value = 0.0);
     void planFrom(double positionMm, double velocityMmS);
     /// Effective fraction of the rapid speed for the current move (0 = feed hold).
     double moveFraction() const;
     /// The soft-limit guard: false (and stopped) when the stopping point passes a limit.
     bool guardSoftLimits();
-    /// The encoder plausibility check: false (faulted) when the drive ran without counts.
-    /// Also adds the period's expected travel less countedMm to the count drift.
-    bool checkEncoder(double dtS, bool counted, double countedMm);
-    /// False (faulted) when the count drift says counts were lost; reset: a move ended.
+    /// The count checks of one period, on the amplifier model run on the code held over it:
+    /// false (faulted) when counts were lost or the encoder stalled (the drive ran without
+    /// counts). counted: the counter changed; countedMm: the travel counted, less jumpMm (the
+    /// centre mark's correction of the count this tick, mm).
+    bool checkCounts(double dtS, bool counted, double countedMm, double jumpMm);
+    /// False (faulted) when the count drift says counts were lost; reset: a move ended, and
+    /// the rest-to-rest check is made (the classic law's at its first true rest).
     bool checkCountDrift(bool reset);
+    /// At rest: the rest-to-rest check; false (and alarm 21) above its bounds.
+    bool checkRestGap();
+    /// A new reference of the count: the sums start again (from the move in progress).
+    void restartReferenceSum();
+    /// The count checks' figures into sample_ (ServoSample::countDriftMm, travelGapMm, ...).
+    void publishCountChecks();
     /// The drive code limited to the speed the counter card counts without loss.
     std::uint8_t counterSafeCode(std::uint8_t code) const;
 
@@ -167,98 +109,22 @@ class RailServo {
     static constexpr double kLateSettleTimeouts = 5.0;
     double moveTime_ = 0.0;         ///< s since moveTo (classic: its in-position deadline)
     double classicDeadline_ = 0.0;  ///< s: a classic move must be in position by then
-    double stallTravel_ = 0.0;      ///< mm the drive commanded since the counter last changed
     double sinceLateS_ = 1.0;       ///< s since the last late tick
-    double modelVelocity_ = 0.0;    ///< mm/s: the amplifier model of the encoder check
     double lateAllowanceMm_ = 0.0;  ///< following error allowed after a late tick, decaying
     double speedPerCode_ = 0.0;     ///< mm/s per DAC code (1885 / 127)
     /// mm/s: 95 % of the speed at which the counter card reaches its highest count rate; no
     /// plan and no drive command goes faster (issue 20 item 11).
     double countLimitMmS_ = 0.0;
-    int countLimitCodes_ = 127;   ///< the same in DAC codes from 128
-    double driftTravelMm_ = 0.0;  ///< mm counted (absolute) since the drift was last reset
-    /// Since the platform was last in position: the speed reference integrated, mm (signed),
-    /// and the travel counted, mm (signed).
-    double referenceTravelMm_ = 0.0, countedTravelMm_ = 0.0;
-    /// 10 ms blocks of the rest-to-rest gap: the speed reference's travel (codes x mm/s per code
-    /// x s), mm; the travel counted, mm; the time, s.
-    /// motionMm: the travel counted plus a correction of the count at the centre mark, mm: the
-    /// counted speeds and accelerations are taken from it (a correction the lag of a 10 ms
-    /// tick made at a full-code start read as a deceleration and kept 18.7 mm of the current
-    /// limit's lag), the gap from travelMm.
-    struct GapBlock {
-        double referenceMm = 0.0, travelMm = 0.0, motionMm = 0.0, s = 0.0;
-    };
-    static constexpr double kGapBlockS = 0.01;
-    /// Blocks each side of the one decided: the counted acceleration is the difference of their
-    /// mean speeds, so its count quantisation (one count per side) stays under half the
-    /// slowest saturated acceleration (heaviest payload): 3 x 10 ms a side, at most 73 mm/s2.
-    static constexpr int kGapSideBlocks = 3;
-    static constexpr int kGapBlocks = 2 * kGapSideBlocks + 1;
-    /// The window: kGapSideBlocks before the block to decide (at rest after a reset), the block
-    /// to decide, the blocks after it; the last is being summed. gapCount_: blocks in it.
-    std::array<GapBlock, kGapBlocks> blocks_{};
-    int gapCount_ = 0;
-    /// mm/s: the counted speed at the start of the block to decide (0 at rest).
-    double gapBoundaryMmS_ = 0.0;
-    /// The last block decided had a steady counted speed (|acceleration| < saturatedAccel_).
-    bool countedSteady_ = true;
-    void resetGapBlocks();
-    /// Decides the middle block of a full window: its gap is kept unless the current limit
-    /// made it.
-    void decideGapBlock();
-    /// The gap of the blocks not decided yet, mm, the platform's speed at their end being
-    /// endSpeedMmS (0 at rest).
-    double pendingGapMm(double endSpeedMmS) const;
-    double saturatedAccel_ = 0.0;  ///< mm/s2: below it, the amplifier is not at its limit
-    /// mm/s2: half the slowest saturated acceleration of payloads up to x3, above the fast
-    /// scale's count quantisation (526 mm/s2 on the stock rail).
-    double fastSaturatedAccel_ = 0.0;
-    /// Since the count was last referenced (homing, the centre mark): the moves' gaps summed,
-    /// mm, in machine coordinates (the platform less the count: a shuttle's lags cancel, a
-    /// loss in one direction adds up), and the travel counted, mm.
-    double referenceSumMm_ = 0.0, referenceTravelSumMm_ = 0.0;
-    /// A new reference of the count: the sums start again (from the move in progress).
-    void restartReferenceSum();
-    /// At rest (v = 0 at both ends): the rest-to-rest gap since the last rest and the sum since
-    /// the reference against their bounds; false (and alarm 21) above them. Resets the gap.
-    bool checkRestGap();
-    /// The classic law's coast after its in-position: the count within two counts of
-    /// restStillMm_ for restStillS_ s. At rest: the pending check is made.
-    bool checkClassicRest(double dtS);
-    double restStillMm_ = 0.0, restStillS_ = 0.0;
-    /// Blocks pending when the count was last referenced in a move: decided later, their gaps
-    /// are before the reference (restartReferenceSum).
-    int preReferenceBlocks_ = 0;
-    double restPathMm_ = 0.0;  ///< mm counted (absolute) since the last rest check
-    double jumpMm_ = 0.0;      ///< this tick's correction of the count at the centre mark, mm
-    double modelSlow_ = 0.0, measuredSlow_ = 0.0;  ///< mm/s, 20 ms means: is the speed steady
-    /// The counter card's ceiling (issue 20 item 11): a spell in which the amplifier model runs
-    /// faster than the count by more than two codes of speed, entered while the count was
-    /// following the model at speed for 250 ms. It stays eligible while the counted speed is
-    /// flat (its kCeilingBlockS blocks within 1.5 counts of each other). lossMm: the model's
-    /// travel less the count's, mm.
-    struct CeilingSpell {
-        double s = 0.0, lossMm = 0.0;
-        double followedS = 0.0;              ///< the following before it, s
-        double blockMm = 0.0, blockS = 0.0;  ///< the block being summed
-        double minMmS = 0.0, maxMmS = 0.0;   ///< counted speed of the complete blocks
-        int blocks = 0;                      ///< complete blocks
-        bool eligible = false;
-    };
-    static constexpr double kCeilingBlockS = 0.01;
-    static constexpr int kMinCeilingBlocks = 1;  ///< complete blocks before a spell counts
-    CeilingSpell ceiling_;
-    double followingS_ = 0.0;  ///< s the count has followed the model at speed, up to now
-    /// mm lost in the flat spells since the count was last referenced.
-    double ceilingLossMm_ = 0.0;
-    /// Counts lost at the counter card's ceiling: false (and alarm 21) when the flat spells
-    /// since the reference have lost more than countLossMm.
-    bool checkCountCeiling(double dtS, double before, double countedMm);
-    /// A spell ended: a flat one's loss is added to ceilingLossMm_.
-    void endCeilingSpell();
-    /// The plant accelerates up to its current limit, above the planner's braking figure.
+    /// mm/s2: the plant accelerates up to its current limit, above the planner's braking figure.
     double plantAccelBound_ = 0.0;
+    AmplifierModel amplifier_;   ///< driven by lastCode_: what the count checks compare with
+    EncoderStallCheck stall_;    ///< alarm 16: the drive ran without a count
+    int countLimitCodes_ = 127;  ///< the same in DAC codes from 128
+    // The count checks (alarm 21), each on the amplifier model; their figures are copied to
+    // sample_ by publishCountChecks.
+    CountDriftCheck drift_;      ///< counts lost while the speeds are steady
+    CountCeilingCheck ceiling_;  ///< counts lost at the counter card's ceiling
+    RestGapCheck restGap_;       ///< counts lost from rest to rest, and since the reference
     bool useOverride_ = true;
     bool limitsActive_ = true;
     double velocity_ = 0.0, acceleration_ = 0.0;
