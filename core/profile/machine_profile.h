@@ -16,7 +16,8 @@ namespace trilho {
 
 /// The payloads the rail takes (plant.massFactor, `trilho-cli run --mass-factor`): x0.1 to x20
 /// of movingMassKg. The servo's count checks take the heaviest as their slowest saturated
-/// acceleration (rail_servo.cpp), so they hold over the whole range (issue 20 item 11).
+/// acceleration (core/control/rest_gap_check.cpp), so they hold over the whole range (issue 20 item
+/// 11).
 inline constexpr double kMinMassFactor = 0.1;
 inline constexpr double kMaxMassFactor = 20.0;
 
@@ -110,7 +111,7 @@ struct LoopParams {
     /// motion_safety_test.cpp (CountsLost); 2 mm + 0.2 % let a 30,000 counts/s card run
     /// 1268 mm past the soft limit once the drift waited for steady blocks. The same bound
     /// holds the ceiling check's sum (counts lost where the counted speed stays flat at the
-    /// card's rate while the drive runs faster, rail_servo.cpp checkCountCeiling).
+    /// card's rate while the drive runs faster, core/control/count_ceiling_check.cpp).
     double countLossMm = 1.0;
     double countLossFraction = 0.0005;
     /// Counts lost while the speed changes (issue 20 item 11): at each in-position the travel
