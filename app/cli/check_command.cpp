@@ -285,13 +285,9 @@ int check(const QStringList& args) {
     parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("The program to check."));
     auto usage = [](const QString& message) { return usageError("check", message); };
     if (auto done = parseArguments(parser, args, "check")) return *done;
-    const auto dialect = parseDialect(parser.value(dialectOpt).toStdString());
-    if (!dialect)
-        return usage(QStringLiteral("unknown dialect '%1' (classic or standard)")
-                         .arg(parser.value(dialectOpt)));
-    if (!installLanguage(parser.value(langOpt)))
-        return usage(
-            QStringLiteral("unknown language '%1' (en, pt_BR or es)").arg(parser.value(langOpt)));
+    Dialect dialect = Dialect::Standard;
+    if (auto m = readDialect(parser, dialectOpt, dialect)) return usage(*m);
+    if (auto m = installLanguageOption(parser, langOpt)) return usage(*m);
     double massFactor = 1.0;
     if (auto m = readNumber(parser, massOpt, kMinMassFactor, kMaxMassFactor, massFactor))
         return usage(*m);
@@ -314,7 +310,7 @@ int check(const QStringList& args) {
     SourceFile source = readSourceFile(localPath(file));
     if (!source.ok) return usage(QString::fromStdString(source.error));
     CompileOptions compileOptions;
-    compileOptions.dialect = *dialect;
+    compileOptions.dialect = dialect;
     compileOptions.machine = profile.limits;
     compileOptions.maxDiagnostics = kMaxListedDiagnostics;
     auto program = std::make_shared<Program>(compile(source.bytes, compileOptions));

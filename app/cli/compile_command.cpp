@@ -8,6 +8,7 @@
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
 #include "app/cli/diagnostics_text.h"
+#include "app/cli/option_values.h"
 #include "app/cli/program_json.h"
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
@@ -39,14 +40,9 @@ int compileFile(const QStringList& args) {
     parser.addOptions({dialectOpt, jsonOpt, langOpt, machineOpt});
     parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("The program to compile."));
     if (auto done = parseArguments(parser, args, "compile")) return *done;
-    const auto dialect = parseDialect(parser.value(dialectOpt).toStdString());
-    if (!dialect)
-        return usageError("compile", QStringLiteral("unknown dialect '%1' (classic or standard)")
-                                         .arg(parser.value(dialectOpt)));
-    if (!installLanguage(parser.value(langOpt)))
-        return usageError(
-            "compile",
-            QStringLiteral("unknown language '%1' (en, pt_BR or es)").arg(parser.value(langOpt)));
+    Dialect dialect = Dialect::Standard;
+    if (auto m = readDialect(parser, dialectOpt, dialect)) return usageError("compile", *m);
+    if (auto m = installLanguageOption(parser, langOpt)) return usageError("compile", *m);
     const QStringList files = parser.positionalArguments();
     if (files.size() != 1)
         return usageError("compile",
@@ -55,7 +51,7 @@ int compileFile(const QStringList& args) {
     SourceFile source = readSourceFile(localPath(file));
     if (!source.ok) return usageError("compile", QString::fromStdString(source.error));
     CompileOptions options;
-    options.dialect = *dialect;
+    options.dialect = dialect;
     const ProfileLoad load = loadNamedMachineProfile(parser.value(machineOpt));
     if (!load.profile) return usageError("compile", load.error);
     if (!load.error.isEmpty()) err(QStringLiteral("trilho-cli compile: %1\n").arg(load.error));

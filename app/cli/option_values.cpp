@@ -3,6 +3,8 @@
 #include <QCommandLineParser>
 #include <cmath>
 
+#include "translations/i18n.h"
+
 namespace trilho::cli {
 
 std::optional<QString> readNumber(const QCommandLineParser& parser, const QCommandLineOption& opt,
@@ -42,6 +44,21 @@ std::optional<QString> readAxis(const QCommandLineParser& parser, const QCommand
         return QStringLiteral("--%1 must be x or y (got '%2')").arg(opt.names().front(), a);
     axis = a.at(0).toLatin1();
     return std::nullopt;
+}
+
+std::optional<QString> readDialect(const QCommandLineParser& parser, const QCommandLineOption& opt,
+                                   Dialect& dialect) {
+    const auto parsed = parseDialect(parser.value(opt).toStdString());
+    if (!parsed)
+        return QStringLiteral("unknown dialect '%1' (classic or standard)").arg(parser.value(opt));
+    dialect = *parsed;
+    return std::nullopt;
+}
+
+std::optional<QString> installLanguageOption(const QCommandLineParser& parser,
+                                             const QCommandLineOption& opt) {
+    if (installLanguage(parser.value(opt))) return std::nullopt;
+    return QStringLiteral("unknown language '%1' (en, pt_BR or es)").arg(parser.value(opt));
 }
 
 }  // namespace trilho::cli

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <optional>
 
+#include "core/gcode/dialect.h"
+
 class QCommandLineParser;
 class QCommandLineOption;
 
@@ -22,5 +24,13 @@ std::optional<QString> readSeed(const QCommandLineParser& parser, const QCommand
 /// --axis x|y into `axis` ('x' or 'y'), unchanged when not given.
 std::optional<QString> readAxis(const QCommandLineParser& parser, const QCommandLineOption& opt,
                                 char& axis);
+
+/// --dialect classic|standard into `dialect`: "unknown dialect 'TEXT' (classic or standard)".
+std::optional<QString> readDialect(const QCommandLineParser& parser, const QCommandLineOption& opt,
+                                   Dialect& dialect);
+/// --lang en|pt_BR|es, installed for the command's messages: "unknown language 'TEXT' (en,
+/// pt_BR or es)".
+std::optional<QString> installLanguageOption(const QCommandLineParser& parser,
+                                             const QCommandLineOption& opt);
 
 }  // namespace trilho::cli

@@ -186,13 +186,9 @@ int runCommand(const QStringList& args) {
     parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("The program to run."));
     auto usage = [](const QString& message) { return usageError("run", message); };
     if (auto done = parseArguments(parser, args, "run")) return *done;
-    const auto dialect = parseDialect(parser.value(dialectOpt).toStdString());
-    if (!dialect)
-        return usage(QStringLiteral("unknown dialect '%1' (classic or standard)")
-                         .arg(parser.value(dialectOpt)));
-    if (!installLanguage(parser.value(langOpt)))
-        return usage(
-            QStringLiteral("unknown language '%1' (en, pt_BR or es)").arg(parser.value(langOpt)));
+    Dialect dialect = Dialect::Standard;
+    if (auto m = readDialect(parser, dialectOpt, dialect)) return usage(*m);
+    if (auto m = installLanguageOption(parser, langOpt)) return usage(*m);
     RunOptions options;
     options.virtualTime = parser.isSet(virtualOpt);
     options.json = parser.isSet(jsonOpt);
@@ -292,7 +288,7 @@ int runCommand(const QStringList& args) {
     const SourceFile source = readSourceFile(localPath(file));
     if (!source.ok) return usage(QString::fromStdString(source.error));
     CompileOptions compileOptions;
-    compileOptions.dialect = *dialect;
+    compileOptions.dialect = dialect;
     compileOptions.machine = profile.limits;
     compileOptions.maxDiagnostics = kMaxListedDiagnostics;
     auto program = std::make_shared<Program>(compile(source.bytes, compileOptions));

@@ -26,6 +26,19 @@ struct Reading {
     std::array<bool, 2> saturated{};
 };
 
+/// What every controller's status says alike (ControllerStatus, XyStatus): the axes apart.
+template <typename Status>
+Reading commonReading(const Status& s) {
+    Reading r;
+    r.state = s.state;
+    r.pause = s.pause;
+    r.programFinished = s.programFinished;
+    r.heldByController = s.heldByController;
+    r.timeS = s.timeS;
+    r.blockLine = s.blockLine;
+    return r;
+}
+
 /// A controller and its simulated plant, started: Automatic (homing), the program loaded and
 /// started after homing, as `trilho-cli run` starts them.
 class Machine {
@@ -58,13 +71,7 @@ class RailMachine final : public Machine {
     void step() override { session_.step(); }
     Reading read() override {
         const ControllerStatus& s = session_.controller().status();
-        Reading r;
-        r.state = s.state;
-        r.pause = s.pause;
-        r.programFinished = s.programFinished;
-        r.heldByController = s.heldByController;
-        r.timeS = s.timeS;
-        r.blockLine = s.blockLine;
+        Reading r = commonReading(s);
         r.setpointMm[0] = s.servo.setpointMm;
         r.measuredMm[0] = s.servo.positionMm;
         r.saturated[0] = s.servo.loop.saturated;
@@ -102,13 +109,7 @@ class XyMachine final : public Machine {
     void step() override { session_->step(); }
     Reading read() override {
         const XyStatus& s = session_->controller().status();
-        Reading r;
-        r.state = s.state;
-        r.pause = s.pause;
-        r.programFinished = s.programFinished;
-        r.heldByController = s.heldByController;
-        r.timeS = s.timeS;
-        r.blockLine = s.blockLine;
+        Reading r = commonReading(s);
         const XyAxisSample* axis[2] = {&s.sample.x, &s.sample.y};
         for (int k = 0; k < 2; ++k) {
             const auto i = static_cast<std::size_t>(k);
