@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "core/files/atomic_file.h"
+#include "ui/plot_legend.h"
 
 namespace trilho {
 namespace ui {
@@ -24,12 +25,7 @@ QCustomPlot* makePlot(QWidget* parent) {
     p->axisRect()->setRangeZoom(Qt::Horizontal | Qt::Vertical);
     p->setMinimumHeight(150);
     p->setNotAntialiasedElements(QCP::aeAll);  // cheap redraws at 25 Hz
-    QFont small = p->font();
-    small.setPointSizeF(small.pointSizeF() * 0.8);
-    p->legend->setFont(small);
-    p->legend->setBrush(QColor(255, 255, 255, 200));
-    p->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
-    p->legend->setVisible(true);
+    placeLegendAbove(p);
     return p;
 }
 }  // namespace
@@ -158,9 +154,6 @@ void PlotPanel::replot() {
                 p->yAxis->setRange(r.lower - 0.05 * r.size() - 0.01,
                                    r.upper + 0.05 * r.size() + 0.01);
         }
-        // A legend taller than half the plot hides the curves: show it only when there is room.
-        p->legend->setVisible(p->axisRect()->height() >
-                              3 * p->legend->minimumOuterSizeHint().height());
         p->replot(QCustomPlot::rpQueuedReplot);
     }
 }

@@ -1,5 +1,6 @@
 // The XY machines' screens (issue 11), offscreen, in virtual time: the link runs without its
 // thread and each test advances the machine itself, so every figure is repeatable.
+#include <qcustomplot.h>
 #include <QAction>
 #include <QApplication>
 #include <QCheckBox>
@@ -435,6 +436,41 @@ class XyScreensTest : public QObject {
                      qPrintable(QStringLiteral("rail in %1:\n").arg(QLatin1String(lang)) +
                                 differ.join(QLatin1Char('\n'))));
         }
+    }
+
+    void plotLegendsShowAndCoverNoCurve() {
+        // Issue 31 item 6: the rail's plot legends were hidden at the default size (no room
+        // inside the plot) and the XY plots' covered their first 2 s. Every main screen's plot
+        // shows its legend, outside the area the curves are drawn in, at 1024x768.
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        const auto check = [](QMainWindow& w, const char* what) {
+            w.resize(1024, 738);
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QTest::qWait(100);
+            const QList<QCustomPlot*> plots = w.findChildren<QCustomPlot*>();
+            QVERIFY2(plots.size() >= 2, what);
+            for (QCustomPlot* p : plots) {
+                if (!p->isVisible()) continue;
+                p->replot();
+                QVERIFY2(p->legend->visible(), what);
+                QVERIFY2(p->legend->itemCount() > 0, what);
+                QVERIFY2(!p->legend->outerRect().intersects(p->axisRect()->rect()),
+                         qPrintable(QStringLiteral("%1: the legend %2,%3 %4x%5 covers the curves")
+                                        .arg(QLatin1String(what))
+                                        .arg(p->legend->outerRect().x())
+                                        .arg(p->legend->outerRect().y())
+                                        .arg(p->legend->outerRect().width())
+                                        .arg(p->legend->outerRect().height())));
+            }
+        };
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow table(*link, settings);
+        check(table, "DC table");
+        MachineLink railLink(MachineProfile::rail());
+        MainWindow rail(railLink, settings);
+        check(rail, "rail");
     }
 
     void homeIsDisabledWhileTheEmergencyStopIsLatched() {

@@ -4,6 +4,7 @@
 #include <QEvent>
 #include <QVBoxLayout>
 #include <array>
+#include "ui/plot_legend.h"
 
 namespace trilho {
 namespace ui {
@@ -13,12 +14,7 @@ QCustomPlot* makePlot(QWidget* parent) {
     auto* p = new QCustomPlot(parent);
     p->setMinimumHeight(120);
     p->setNotAntialiasedElements(QCP::aeAll);  // cheap redraws at 25 Hz
-    QFont small = p->font();
-    small.setPointSizeF(small.pointSizeF() * 0.8);
-    p->legend->setFont(small);
-    p->legend->setBrush(QColor(255, 255, 255, 200));
-    p->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
-    p->legend->setVisible(true);
+    placeLegendAbove(p);
     return p;
 }
 QCPGraph* graph(QCustomPlot* p, QColor c, Qt::PenStyle style, double width) {
