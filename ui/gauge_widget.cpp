@@ -17,13 +17,27 @@ void GaugeWidget::setRange(double min, double max) {
     if (min == min_ && max == max_) return;
     min_ = min;
     max_ = max;
+    showValueTip();
     update();
 }
 
 void GaugeWidget::setValue(double value) {
     if (value == value_) return;
     value_ = value;
+    showValueTip();
     update();
+}
+
+QString GaugeWidget::minimumText() const {
+    return QString::number(min_, 'f', 2);
+}
+QString GaugeWidget::maximumText() const {
+    return QString::number(max_, 'f', 2);
+}
+
+void GaugeWidget::showValueTip() {
+    setToolTip(QStringLiteral("%1 mm (%2 .. %3)")
+                   .arg(QString::number(value_, 'f', 2), minimumText(), maximumText()));
 }
 
 void GaugeWidget::paintEvent(QPaintEvent*) {
@@ -43,6 +57,14 @@ void GaugeWidget::paintEvent(QPaintEvent*) {
     const double span = max_ - min_;
     const double f = span > 0 ? std::clamp((value_ - min_) / span, 0.0, 1.0) : 0.0;
     const double x = r.left() + r.width() * f;
+    // The scale's ends, small, above the ticks (the face is 20-26 px tall).
+    QFont small = font();
+    small.setPointSizeF(std::max(6.0, small.pointSizeF() * 0.75));
+    p.setFont(small);
+    p.setPen(Qt::darkGray);
+    const QRectF text = r.adjusted(3, 0, -3, 0);
+    p.drawText(text, Qt::AlignLeft | Qt::AlignTop, minimumText());
+    p.drawText(text, Qt::AlignRight | Qt::AlignTop, maximumText());
     p.setPen(QPen(needle_, 3));
     p.drawLine(QPointF(x, r.top() + 2), QPointF(x, r.bottom() - 1));
 }

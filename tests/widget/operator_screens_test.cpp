@@ -44,6 +44,7 @@
 #include "ui/code_editor.h"
 #include "ui/dro_panel.h"
 #include "ui/execution_panel.h"
+#include "ui/gauge_widget.h"
 #include "ui/history_panel.h"
 #include "ui/jog_panel.h"
 #include "ui/keys_dialog.h"
@@ -218,6 +219,26 @@ class OperatorScreensTest : public QObject {
         QVERIFY2(q.startsWith(QStringLiteral(
                      "The rail moves at rapid speed from x = 0.00 mm to x = 300.00 mm")),
                  qPrintable(q));
+    }
+
+    void theLoopGaugesSayTheirFigures() {
+        // Issue 31 item 6: the Loop's gauges had a needle and no figure. Their ends are written
+        // on the face and the value is the tooltip, mm.
+        ExecutionPanel panel;
+        ControllerStatus s;
+        s.state = ControllerState::Running;
+        s.automatic = true;
+        s.servo.mode = ServoMode::Move;
+        s.servo.moveStartMm = 100.0;
+        s.servo.targetMm = 850.0;
+        s.servo.positionMm = 400.0;
+        panel.showStatus(s);
+        auto* real = panel.findChild<GaugeWidget*>();
+        QVERIFY(real);
+        QCOMPARE(real->minimumText(), QStringLiteral("100.00"));
+        QCOMPARE(real->maximumText(), QStringLiteral("850.00"));
+        QVERIFY2(real->toolTip().startsWith(QStringLiteral("400.00 mm")),
+                 qPrintable(real->toolTip()));
     }
 
     void theSetpointShowsOnlyWhileTheLoopHasOne() {
