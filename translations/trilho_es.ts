@@ -589,6 +589,10 @@
         <translation>sin fin en %1 s de tiempo de máquina (un bucle sin fin, una espera larga o un programa más largo)</translation>
     </message>
     <message>
+        <source>no end within %1 s of machine time: the feed override is at 0 %, nothing moves</source>
+        <translation>sin fin en %1 s de tiempo de máquina: la corrección de avance está en 0 %, nada se mueve</translation>
+    </message>
+    <message>
         <source>%1 goes %2 mm beyond its soft limits %3</source>
         <translation>%1 pasa %2 mm más allá de sus límites de software %3</translation>
     </message>

@@ -589,6 +589,10 @@
         <translation>sem fim em %1 s de tempo de máquina (um laço sem fim, uma espera longa ou um programa mais longo)</translation>
     </message>
     <message>
+        <source>no end within %1 s of machine time: the feed override is at 0 %, nothing moves</source>
+        <translation>sem fim em %1 s de tempo de máquina: a correção de avanço está em 0 %, nada se move</translation>
+    </message>
+    <message>
         <source>%1 goes %2 mm beyond its soft limits %3</source>
         <translation>%1 passa %2 mm além dos limites de software %3</translation>
     </message>

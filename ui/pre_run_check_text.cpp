@@ -67,13 +67,15 @@ QString alarmReason(const CheckedAlarm& a, const MachineProfile& profile) {
         .arg(name, where(a));
 }
 
-/// Why the check is not ok, each reason short (empty when ok).
-QStringList reasons(const ProgramCheck& c, const MachineProfile& profile) {
+/// Why the check is not ok, each reason short (empty when ok). feedOverride: the one it ran at.
+QStringList reasons(const ProgramCheck& c, const MachineProfile& profile, double feedOverride) {
     QStringList why;
     if (c.end == CheckEnd::TimeLimit)
-        why << PreRunCheckText::tr(
-                   "no end within %1 s of machine time (a loop without end, a long dwell or a "
-                   "longer program)")
+        why << (feedOverride > 0.0
+                    ? PreRunCheckText::tr("no end within %1 s of machine time (a loop without "
+                                          "end, a long dwell or a longer program)")
+                    : PreRunCheckText::tr("no end within %1 s of machine time: the feed "
+                                          "override is at 0 %, nothing moves"))
                    .arg(c.maxSeconds);
     if (c.end == CheckEnd::Alarm || c.end == CheckEnd::MotionlessLoop) {
         if (const CheckedAlarm* a = stoppingAlarm(c)) why << alarmReason(*a, profile);
@@ -103,9 +105,10 @@ QStringList reasons(const ProgramCheck& c, const MachineProfile& profile) {
 
 }  // namespace
 
-QString PreRunCheckText::line(const ProgramCheck& c, const MachineProfile& profile) {
+QString PreRunCheckText::line(const ProgramCheck& c, const MachineProfile& profile,
+                              double feedOverride) {
     if (!c.ok()) {
-        const QStringList why = reasons(c, profile);
+        const QStringList why = reasons(c, profile, feedOverride);
         if (!why.isEmpty()) return tr("Pre-run check: %1.").arg(why.join(QStringLiteral("; ")));
     }
     // The command line's summary (check_command.cpp summaryLine), in the UI language.
@@ -135,11 +138,13 @@ PreRunCheckSaid PreRunCheckText::say(const PreRunCheck& check, const PreRunCheck
             break;
     }
     const ProgramCheck& c = *check.resultFor(key);
-    said.line = line(c, profile);
+    said.line = line(c, profile, key.options.feedOverride);
     QStringList d;
-    d << (c.ok() ? tr("Pre-run check of %1: ok.").arg(file)
-                 : tr("Pre-run check of %1: NOT OK: %2.")
-                       .arg(file, reasons(c, profile).join(QStringLiteral("; "))));
+    d << (c.ok()
+              ? tr("Pre-run check of %1: ok.").arg(file)
+              : tr("Pre-run check of %1: NOT OK: %2.")
+                    .arg(file,
+                         reasons(c, profile, key.options.feedOverride).join(QStringLiteral("; "))));
     // What it ran: the options are the ones the machine runs with now (the screens' key).
     const QString override = fixed(key.options.feedOverride * 100.0, 0);
     if (profile.kind == MachineKind::Rail) {

@@ -26,8 +26,9 @@ class PreRunCheckText {
     /// program's file name, for the details' first line).
     static PreRunCheckSaid say(const PreRunCheck& check, const PreRunCheckKey& key,
                                const MachineProfile& profile, const QString& file);
-    /// Only the line of a done check (for tests and the details' first line).
-    static QString line(const ProgramCheck& check, const MachineProfile& profile);
+    /// Only the line of a done check, run at feedOverride (0 to 1.5).
+    static QString line(const ProgramCheck& check, const MachineProfile& profile,
+                        double feedOverride = 1.0);
     /// An alarm's text cut to its name: the words before its first ':' or '!' ("Following
     /// error"), the whole text when it has neither.
     static QString alarmName(const QString& text);

@@ -903,6 +903,19 @@ class XyScreensTest : public QObject {
         w.startButton()->click();
         QVERIFY2(asked.value(1).endsWith(okLine(slower)), qPrintable(asked.value(1)));
         QVERIFY(details.value(0).contains(QStringLiteral("feed override at 80 %")));
+        // At 0 % nothing moves: the check reaches its bound and says why.
+        for (int i = 0; i < 8; ++i)
+            w.findChild<QAction*>(QStringLiteral("overrideDown"))->trigger();
+        link->advance(0.05);
+        QCOMPARE(link->status().feedOverride, 0.0);
+        QTRY_VERIFY_WITH_TIMEOUT(w.preRunCheckReady(), 20000);
+        asked.clear();
+        w.startButton()->click();
+        QVERIFY2(asked.value(1).endsWith(
+                     QStringLiteral("Pre-run check: no end within %1 s of machine time: the "
+                                    "feed override is at 0 %, nothing moves.")
+                         .arg(kScreenCheckSeconds)),
+                 qPrintable(asked.value(1)));
         link->advance(1.0);
         QCOMPARE(link->status().state, ControllerState::Manual);  // No: nothing moved
 
