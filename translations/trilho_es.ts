@@ -563,6 +563,157 @@
     </message>
 </context>
 <context>
+    <name>PreRunCheckText</name>
+    <message>
+        <source>during homing</source>
+        <translation>durante la referencia</translation>
+    </message>
+    <message>
+        <source>on the way to the program&apos;s start</source>
+        <translation>en el camino al inicio del programa</translation>
+    </message>
+    <message>
+        <source>at line %1</source>
+        <translation>en la línea %1</translation>
+    </message>
+    <message>
+        <source>warning %1 (%2) %3</source>
+        <translation>aviso %1 (%2) %3</translation>
+    </message>
+    <message>
+        <source>alarm %1 (%2) %3</source>
+        <translation>alarma %1 (%2) %3</translation>
+    </message>
+    <message>
+        <source>no end within %1 s of machine time (a loop without end, a long dwell or a longer program)</source>
+        <translation>sin fin en %1 s de tiempo de máquina (un bucle sin fin, una espera larga o un programa más largo)</translation>
+    </message>
+    <message>
+        <source>no end within %1 s of machine time: the feed override is at 0 %, nothing moves</source>
+        <translation>sin fin en %1 s de tiempo de máquina: la corrección de avance está en 0 %, nada se mueve</translation>
+    </message>
+    <message>
+        <source>%1 goes %2 mm beyond its soft limits %3</source>
+        <translation>%1 pasa %2 mm más allá de sus límites de software %3</translation>
+    </message>
+    <message>
+        <source>Pre-run check: %1.</source>
+        <translation>Verificación previa: %1.</translation>
+    </message>
+    <message>
+        <source>Pre-run check: cycle %1 s, worst following error %2 mm at line %3.</source>
+        <translation>Verificación previa: ciclo de %1 s, mayor error de seguimiento %2 mm en la línea %3.</translation>
+    </message>
+    <message>
+        <source>Pre-run check: cycle %1 s, worst following error %2 mm.</source>
+        <translation>Verificación previa: ciclo de %1 s, mayor error de seguimiento %2 mm.</translation>
+    </message>
+    <message>
+        <source>Pre-run check: still running.</source>
+        <translation>Verificación previa: todavía en curso.</translation>
+    </message>
+    <message>
+        <source>Pre-run check: not possible (see the details).</source>
+        <translation>Verificación previa: no fue posible (vea los detalles).</translation>
+    </message>
+    <message>
+        <source>The pre-run check of %1 could not run: %2</source>
+        <translation>La verificación previa de %1 no pudo hacerse: %2</translation>
+    </message>
+    <message>
+        <source>Pre-run check of %1: ok.</source>
+        <translation>Verificación previa de %1: ok.</translation>
+    </message>
+    <message>
+        <source>Pre-run check of %1: NOT OK: %2.</source>
+        <translation>Verificación previa de %1: NO OK: %2.</translation>
+    </message>
+    <message>
+        <source>It ran on the simulated rail of the profile %1, in virtual time from homing, with the %2 (Kp %3, Ki %4, Kd %5) and the feed override at %6 %, as Cycle start runs it now.</source>
+        <translation>Hecha en el riel simulado del perfil %1, en tiempo virtual desde la referencia, con la %2 (Kp %3, Ki %4, Kd %5) y la corrección de avance en %6 %, como el Inicio de ciclo lo ejecuta ahora.</translation>
+    </message>
+    <message>
+        <source>classic law</source>
+        <translation>ley clásica</translation>
+    </message>
+    <message>
+        <source>engineered law</source>
+        <translation>ley moderna</translation>
+    </message>
+    <message>
+        <source>It ran on the simulated machine of the profile %1, in virtual time from homing, with the feed override at %2 %, as Cycle start runs it now.</source>
+        <translation>Hecha en la máquina simulada del perfil %1, en tiempo virtual desde la referencia, con la corrección de avance en %2 %, como el Inicio de ciclo lo ejecuta ahora.</translation>
+    </message>
+    <message>
+        <source>An m00 is continued at once (the operator&apos;s wait is not in the cycle time); the Simulation dock&apos;s faults are not in it.</source>
+        <translation>Un m00 se continúa de inmediato (la espera del operador no entra en el tiempo de ciclo); las fallas del panel Simulación no entran en ella.</translation>
+    </message>
+    <message>
+        <source>Cycle time: unknown, still running after %1 s of machine time (the screens&apos; bound).</source>
+        <translation>Tiempo de ciclo: desconocido, todavía en curso tras %1 s de tiempo de máquina (el límite de las pantallas).</translation>
+    </message>
+    <message>
+        <source>Cycle time: none, the program never started (homing did not end).</source>
+        <translation>Tiempo de ciclo: ninguno, el programa no empezó (la referencia no terminó).</translation>
+    </message>
+    <message>
+        <source>Cycle time: %1 s from the program&apos;s start (after %2 s of homing).</source>
+        <translation>Tiempo de ciclo: %1 s desde el inicio del programa (tras %2 s de referencia).</translation>
+    </message>
+    <message>
+        <source>Cycle time: %1 s from the program&apos;s start to where it stopped (after %2 s of homing).</source>
+        <translation>Tiempo de ciclo: %1 s desde el inicio del programa hasta donde se detuvo (tras %2 s de referencia).</translation>
+    </message>
+    <message>
+        <source>Envelope %1: %2 to %3 mm (soft limits %4 to %5 mm)</source>
+        <translation>Envolvente %1: %2 a %3 mm (límites de software %4 a %5 mm)</translation>
+    </message>
+    <message>
+        <source>%1, OUTSIDE by %2 mm %3.</source>
+        <translation>%1, FUERA por %2 mm %3.</translation>
+    </message>
+    <message>
+        <source>Worst following error: %1 mm on %2 %3, %4 s into the cycle.</source>
+        <translation>Mayor error de seguimiento: %1 mm en %2 %3, %4 s tras el inicio del ciclo.</translation>
+    </message>
+    <message>
+        <source>Worst following error: 0 mm.</source>
+        <translation>Mayor error de seguimiento: 0 mm.</translation>
+    </message>
+    <message>
+        <source>Longest saturation of the drive: not modelled (the plotter&apos;s steppers have no drive level).</source>
+        <translation>Mayor saturación del accionamiento: no modelada (los motores paso a paso del plotter no tienen nivel de accionamiento).</translation>
+    </message>
+    <message>
+        <source>Longest saturation of the drive: %1 s %2, %3 s into the cycle.</source>
+        <translation>Mayor saturación del accionamiento: %1 s %2, %3 s tras el inicio del ciclo.</translation>
+    </message>
+    <message>
+        <source>Longest saturation of the drive: none.</source>
+        <translation>Mayor saturación del accionamiento: ninguna.</translation>
+    </message>
+    <message>
+        <source>Alarms: none.</source>
+        <translation>Alarmas: ninguna.</translation>
+    </message>
+    <message>
+        <source>Warning %1 %2: %3</source>
+        <translation>Aviso %1 %2: %3</translation>
+    </message>
+    <message>
+        <source>Alarm %1 %2: %3</source>
+        <translation>Alarma %1 %2: %3</translation>
+    </message>
+    <message>
+        <source>... and %1 more.</source>
+        <translation>... y %1 más.</translation>
+    </message>
+    <message>
+        <source>m00: %1 stop(s) continued at once.</source>
+        <translation>m00: %1 parada(s) continuada(s) de inmediato.</translation>
+    </message>
+</context>
+<context>
     <name>trilho</name>
     <message>
         <source>a verification move with the tuned gains was stopped by an alarm: %1</source>
@@ -1403,12 +1554,12 @@
         <translation>¡Compilación terminada!</translation>
     </message>
     <message>
-        <source>Cycle start</source>
-        <translation>Inicio de ciclo</translation>
-    </message>
-    <message>
         <source>Execute %1? %2%3 Then it runs the program.</source>
         <translation>¿Ejecutar %1? %2%3 Luego ejecuta el programa.</translation>
+    </message>
+    <message>
+        <source>Cycle start</source>
+        <translation>Inicio de ciclo</translation>
     </message>
     <message>
         <source> (the rail centre, where every program starts, as in the 1996 program)</source>
@@ -3041,16 +3192,16 @@
         <translation>¿Referenciar la máquina? %1</translation>
     </message>
     <message>
-        <source>Cycle start</source>
-        <translation>Inicio de ciclo</translation>
-    </message>
-    <message>
         <source>Run %1? %2%3</source>
         <translation>¿Ejecutar %1? %2%3</translation>
     </message>
     <message>
         <source>Its position is not known, so it homes first: %1 </source>
         <translation>La posición no se conoce, así que primero hace la referencia: %1 </translation>
+    </message>
+    <message>
+        <source>Cycle start</source>
+        <translation>Inicio de ciclo</translation>
     </message>
     <message>
         <source>Open program</source>

@@ -563,6 +563,157 @@
     </message>
 </context>
 <context>
+    <name>PreRunCheckText</name>
+    <message>
+        <source>during homing</source>
+        <translation>durante a referência</translation>
+    </message>
+    <message>
+        <source>on the way to the program&apos;s start</source>
+        <translation>no caminho para o início do programa</translation>
+    </message>
+    <message>
+        <source>at line %1</source>
+        <translation>na linha %1</translation>
+    </message>
+    <message>
+        <source>warning %1 (%2) %3</source>
+        <translation>aviso %1 (%2) %3</translation>
+    </message>
+    <message>
+        <source>alarm %1 (%2) %3</source>
+        <translation>alarme %1 (%2) %3</translation>
+    </message>
+    <message>
+        <source>no end within %1 s of machine time (a loop without end, a long dwell or a longer program)</source>
+        <translation>sem fim em %1 s de tempo de máquina (um laço sem fim, uma espera longa ou um programa mais longo)</translation>
+    </message>
+    <message>
+        <source>no end within %1 s of machine time: the feed override is at 0 %, nothing moves</source>
+        <translation>sem fim em %1 s de tempo de máquina: a correção de avanço está em 0 %, nada se move</translation>
+    </message>
+    <message>
+        <source>%1 goes %2 mm beyond its soft limits %3</source>
+        <translation>%1 passa %2 mm além dos limites de software %3</translation>
+    </message>
+    <message>
+        <source>Pre-run check: %1.</source>
+        <translation>Verificação prévia: %1.</translation>
+    </message>
+    <message>
+        <source>Pre-run check: cycle %1 s, worst following error %2 mm at line %3.</source>
+        <translation>Verificação prévia: ciclo de %1 s, maior erro de seguimento %2 mm na linha %3.</translation>
+    </message>
+    <message>
+        <source>Pre-run check: cycle %1 s, worst following error %2 mm.</source>
+        <translation>Verificação prévia: ciclo de %1 s, maior erro de seguimento %2 mm.</translation>
+    </message>
+    <message>
+        <source>Pre-run check: still running.</source>
+        <translation>Verificação prévia: ainda em execução.</translation>
+    </message>
+    <message>
+        <source>Pre-run check: not possible (see the details).</source>
+        <translation>Verificação prévia: não foi possível (veja os detalhes).</translation>
+    </message>
+    <message>
+        <source>The pre-run check of %1 could not run: %2</source>
+        <translation>A verificação prévia de %1 não pôde ser feita: %2</translation>
+    </message>
+    <message>
+        <source>Pre-run check of %1: ok.</source>
+        <translation>Verificação prévia de %1: ok.</translation>
+    </message>
+    <message>
+        <source>Pre-run check of %1: NOT OK: %2.</source>
+        <translation>Verificação prévia de %1: NÃO OK: %2.</translation>
+    </message>
+    <message>
+        <source>It ran on the simulated rail of the profile %1, in virtual time from homing, with the %2 (Kp %3, Ki %4, Kd %5) and the feed override at %6 %, as Cycle start runs it now.</source>
+        <translation>Feita no trilho simulado do perfil %1, em tempo virtual a partir da referência, com a %2 (Kp %3, Ki %4, Kd %5) e a correção de avanço em %6 %, como o Início de ciclo o executa agora.</translation>
+    </message>
+    <message>
+        <source>classic law</source>
+        <translation>lei clássica</translation>
+    </message>
+    <message>
+        <source>engineered law</source>
+        <translation>lei moderna</translation>
+    </message>
+    <message>
+        <source>It ran on the simulated machine of the profile %1, in virtual time from homing, with the feed override at %2 %, as Cycle start runs it now.</source>
+        <translation>Feita na máquina simulada do perfil %1, em tempo virtual a partir da referência, com a correção de avanço em %2 %, como o Início de ciclo o executa agora.</translation>
+    </message>
+    <message>
+        <source>An m00 is continued at once (the operator&apos;s wait is not in the cycle time); the Simulation dock&apos;s faults are not in it.</source>
+        <translation>Um m00 é continuado de imediato (a espera do operador não entra no tempo de ciclo); as falhas do painel Simulação não entram nela.</translation>
+    </message>
+    <message>
+        <source>Cycle time: unknown, still running after %1 s of machine time (the screens&apos; bound).</source>
+        <translation>Tempo de ciclo: desconhecido, ainda em execução após %1 s de tempo de máquina (o limite das telas).</translation>
+    </message>
+    <message>
+        <source>Cycle time: none, the program never started (homing did not end).</source>
+        <translation>Tempo de ciclo: nenhum, o programa não começou (a referência não terminou).</translation>
+    </message>
+    <message>
+        <source>Cycle time: %1 s from the program&apos;s start (after %2 s of homing).</source>
+        <translation>Tempo de ciclo: %1 s desde o início do programa (após %2 s de referência).</translation>
+    </message>
+    <message>
+        <source>Cycle time: %1 s from the program&apos;s start to where it stopped (after %2 s of homing).</source>
+        <translation>Tempo de ciclo: %1 s desde o início do programa até onde parou (após %2 s de referência).</translation>
+    </message>
+    <message>
+        <source>Envelope %1: %2 to %3 mm (soft limits %4 to %5 mm)</source>
+        <translation>Envelope %1: %2 a %3 mm (limites de software %4 a %5 mm)</translation>
+    </message>
+    <message>
+        <source>%1, OUTSIDE by %2 mm %3.</source>
+        <translation>%1, FORA por %2 mm %3.</translation>
+    </message>
+    <message>
+        <source>Worst following error: %1 mm on %2 %3, %4 s into the cycle.</source>
+        <translation>Maior erro de seguimento: %1 mm em %2 %3, %4 s após o início do ciclo.</translation>
+    </message>
+    <message>
+        <source>Worst following error: 0 mm.</source>
+        <translation>Maior erro de seguimento: 0 mm.</translation>
+    </message>
+    <message>
+        <source>Longest saturation of the drive: not modelled (the plotter&apos;s steppers have no drive level).</source>
+        <translation>Maior saturação do acionamento: não modelada (os motores de passo do plotter não têm nível de acionamento).</translation>
+    </message>
+    <message>
+        <source>Longest saturation of the drive: %1 s %2, %3 s into the cycle.</source>
+        <translation>Maior saturação do acionamento: %1 s %2, %3 s após o início do ciclo.</translation>
+    </message>
+    <message>
+        <source>Longest saturation of the drive: none.</source>
+        <translation>Maior saturação do acionamento: nenhuma.</translation>
+    </message>
+    <message>
+        <source>Alarms: none.</source>
+        <translation>Alarmes: nenhum.</translation>
+    </message>
+    <message>
+        <source>Warning %1 %2: %3</source>
+        <translation>Aviso %1 %2: %3</translation>
+    </message>
+    <message>
+        <source>Alarm %1 %2: %3</source>
+        <translation>Alarme %1 %2: %3</translation>
+    </message>
+    <message>
+        <source>... and %1 more.</source>
+        <translation>... e mais %1.</translation>
+    </message>
+    <message>
+        <source>m00: %1 stop(s) continued at once.</source>
+        <translation>m00: %1 parada(s) continuada(s) de imediato.</translation>
+    </message>
+</context>
+<context>
     <name>trilho</name>
     <message>
         <source>a verification move with the tuned gains was stopped by an alarm: %1</source>
@@ -1403,12 +1554,12 @@
         <translation>Compilação terminada !</translation>
     </message>
     <message>
-        <source>Cycle start</source>
-        <translation>Início de ciclo</translation>
-    </message>
-    <message>
         <source>Execute %1? %2%3 Then it runs the program.</source>
         <translation>Executar %1? %2%3 Depois executa o programa.</translation>
+    </message>
+    <message>
+        <source>Cycle start</source>
+        <translation>Início de ciclo</translation>
     </message>
     <message>
         <source> (the rail centre, where every program starts, as in the 1996 program)</source>
@@ -3041,16 +3192,16 @@
         <translation>Referenciar a máquina? %1</translation>
     </message>
     <message>
-        <source>Cycle start</source>
-        <translation>Início de ciclo</translation>
-    </message>
-    <message>
         <source>Run %1? %2%3</source>
         <translation>Executar %1? %2%3</translation>
     </message>
     <message>
         <source>Its position is not known, so it homes first: %1 </source>
         <translation>A posição não é conhecida, então primeiro faz a referência: %1 </translation>
+    </message>
+    <message>
+        <source>Cycle start</source>
+        <translation>Início de ciclo</translation>
     </message>
     <message>
         <source>Open program</source>

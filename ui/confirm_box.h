@@ -5,9 +5,13 @@
 
 namespace trilho::ui {
 
-inline bool askYesNoDefaultNo(QWidget* parent, const QString& title, const QString& text) {
+/// details: the box's "Show Details..." text (the Cycle start question's pre-run check), none
+/// when empty.
+inline bool askYesNoDefaultNo(QWidget* parent, const QString& title, const QString& text,
+                              const QString& details = {}) {
     QMessageBox box(QMessageBox::Question, title, text, QMessageBox::Yes | QMessageBox::No, parent);
     box.setObjectName(QStringLiteral("confirmation"));
+    if (!details.isEmpty()) box.setDetailedText(details);
     box.setDefaultButton(QMessageBox::No);
     return box.exec() == QMessageBox::Yes;
 }

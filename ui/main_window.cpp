@@ -14,6 +14,8 @@
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QStatusBar>
+#include <QTextDocument>
+#include <QTimer>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -21,6 +23,7 @@
 #include <QProgressBar>
 #include <QScrollArea>
 #include <QtConcurrent/QtConcurrentRun>
+#include <algorithm>
 #include "core/gcode/compiler.h"
 #include "core/gcode/diagnostic_text.h"
 #include "core/gcode/modal_state.h"
@@ -36,6 +39,7 @@
 #include "ui/jog_panel.h"
 #include "ui/machine_link.h"
 #include "ui/plot_panel.h"
+#include "ui/pre_run_check_text.h"
 #include "ui/program_panel.h"
 #include "ui/rail_view.h"
 #include "ui/run_controls.h"
@@ -44,6 +48,13 @@
 
 namespace trilho {
 namespace ui {
+
+namespace {
+/// An edit, a selection or a change of the law, gains, override or dialect rests this long
+/// before the pre-run check starts, ms: typing or dragging the override starts one check, when
+/// it stops, not one a key.
+constexpr int kCheckRestMs = 300;
+}  // namespace
 
 MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     : OperatorFrame(settings, parent), link_(link) {
@@ -104,6 +115,15 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     manual_->setCheckable(true);
     automatic_->setCheckable(true);
     manual_->setChecked(true);
+    check_ = new PreRunCheck(this);
+    checkTimer_ = new QTimer(this);
+    checkTimer_->setSingleShot(true);
+    checkTimer_->setInterval(kCheckRestMs);
+    connect(checkTimer_, &QTimer::timeout, this, [this] {
+        pendingCheck_.reset();
+        if (const std::optional<PreRunCheckKey> key = preRunCheckKey())
+            check_->start(*key, link_.profile(), program_->source(), compileOptions());
+    });
     buildDocks();
     stateLabel_ = new QLabel(this);
     hintLabel_ = new QLabel(this);
@@ -211,11 +231,13 @@ void MainWindow::addOptionItems(QMenu* options) {
         dialect_ = Dialect::Standard;
         settings_.setValue(QStringLiteral("dialect"), QStringLiteral("standard"));
         rememberSettings();
+        scheduleCheck();
     });
     classicDialect_ = dialectMenu_->addAction(QString(), this, [this] {
         dialect_ = Dialect::Classic;
         settings_.setValue(QStringLiteral("dialect"), QStringLiteral("classic"));
         rememberSettings();
+        scheduleCheck();
     });
     for (QAction* a : {standardDialect_, classicDialect_})
         a->setCheckable(true), dialects->addAction(a);
@@ -250,6 +272,10 @@ void MainWindow::buildDocks() {
 
     // The unsaved marker: "name *" in the Program field and the dock's title.
     connect(program_, &ProgramPanel::dirtyChanged, this, [this] { showProgramName(); });
+    // The pre-run check follows the program: each edit, and each load (a large one when read).
+    connect(program_->editor()->document(), &QTextDocument::contentsChanged, this,
+            &MainWindow::scheduleCheck);
+    connect(program_, &ProgramPanel::loaded, this, &MainWindow::scheduleCheck);
     // A large program loads on a worker thread: a Compile or Execute asked meanwhile runs when
     // it is loaded; a file that fails to load is no longer the selected one.
     connect(program_, &ProgramPanel::loaded, this, [this] {
@@ -263,6 +289,7 @@ void MainWindow::buildDocks() {
         selectedFile_.clear();
         panel_->setProgramName(QString());
         statusBar()->showMessage(error, 8000);
+        scheduleCheck();  // no program: nothing is checked
     });
     connect(program_, &ProgramPanel::startFromCursorRequested, this, [this] {
         compileEditor(true, [this](std::shared_ptr<Program> p) {
@@ -398,7 +425,51 @@ bool MainWindow::selectProgram(const QString& path) {
     settings_.setValue(QStringLiteral("lastProgram"), path);
     settings_.setValue(QStringLiteral("lastFolder"), QFileInfo(path).absolutePath());
     rememberSettings();
+    scheduleCheck();
     return true;
+}
+
+CompileOptions MainWindow::compileOptions() const {
+    CompileOptions options;
+    options.dialect = dialect_;
+    options.machine = link_.profile().limits;
+    // A file of garbage lists the first hundred, counts the rest (kListedDiagnostics).
+    options.maxDiagnostics = static_cast<std::size_t>(kListedDiagnostics);
+    return options;
+}
+
+std::optional<PreRunCheckKey> MainWindow::preRunCheckKey() const {
+    if (selectedFile_.isEmpty() || program_->loading()) return std::nullopt;
+    PreRunCheckKey key;
+    key.program = selection_;
+    key.revision = program_->revision();
+    key.dialect = static_cast<int>(dialect_);
+    key.options.maxSeconds = kScreenCheckSeconds;
+    // What Cycle start runs with now: the controller's law and gains (Options > Control law,
+    // the form's gains, the DNC's SetLaw), and its feed override.
+    key.options.railLoop = RailLoopChoice{last_.law, last_.gains};
+    key.options.feedOverride = std::clamp(last_.feedOverride, 0.0, 1.5);
+    return key;
+}
+
+bool MainWindow::preRunCheckReady() const {
+    const std::optional<PreRunCheckKey> key = preRunCheckKey();
+    if (!key) return false;
+    const PreRunCheck::State state = check_->stateFor(*key);
+    return state == PreRunCheck::State::Done || state == PreRunCheck::State::Failed;
+}
+
+void MainWindow::scheduleCheck() {
+    const std::optional<PreRunCheckKey> key = preRunCheckKey();
+    if (!key) {
+        pendingCheck_.reset();
+        checkTimer_->stop();
+        if (check_->key()) check_->clear();
+        return;
+    }
+    if (check_->key() == key || pendingCheck_ == key) return;
+    pendingCheck_ = key;
+    checkTimer_->start();  // (re)started: the check waits until the changes rest
 }
 
 void MainWindow::compileEditor(bool showInAlarms,
@@ -427,11 +498,7 @@ void MainWindow::compileEditor(bool showInAlarms,
             compileEditor(showInAlarms, then);
         return;
     }
-    CompileOptions options;
-    options.dialect = dialect_;
-    options.machine = link_.profile().limits;
-    // A file of garbage lists the first hundred, counts the rest (kListedDiagnostics).
-    options.maxDiagnostics = static_cast<std::size_t>(kListedDiagnostics);
+    const CompileOptions options = compileOptions();
     // What the operator sees is what runs: the editor's text, saved or not.
     std::shared_ptr<const std::string> text = program_->source();
     // What compiles must still be what is selected and shown when it ends: another program
@@ -509,17 +576,32 @@ void MainWindow::requestCycleStart() {
         return;
     }
     compileEditor(true, [this](std::shared_ptr<Program> program) {
-        if (program->ok() &&
-            !confirm(tr("Cycle start"),
-                     tr("Execute %1? %2%3 Then it runs the program.")
-                         .arg(QFileInfo(selectedFile_).fileName(),
-                              last_.homed ? QString()
-                                          : tr("Its position is not known, so it homes first: "
-                                               "%1 ")
-                                                .arg(homingText()),
-                              approachText(*program, 0)))) {
-            return;
+        if (!program->ok()) return startCompiled(std::move(program), 0);
+        // The pre-run check's line, of this revision with the settings it runs with, or that
+        // it still runs: the question never waits for it.
+        const QString file = QFileInfo(selectedFile_).fileName();
+        PreRunCheckSaid check;
+        if (const std::optional<PreRunCheckKey> key = preRunCheckKey()) {
+            if (check_->key() != key) {  // a change that has not rested yet: checked from now
+                checkTimer_->stop();
+                pendingCheck_.reset();
+                check_->start(*key, link_.profile(), program_->source(), compileOptions());
+            }
+            check = PreRunCheckText::say(*check_, *key, link_.profile(), file);
         }
+        const QString question =
+            tr("Execute %1? %2%3 Then it runs the program.")
+                .arg(
+                    file,
+                    last_.homed
+                        ? QString()
+                        : tr("Its position is not known, so it homes first: %1 ").arg(homingText()),
+                    approachText(*program, 0));
+        if (!confirm(
+                tr("Cycle start"),
+                check.line.isEmpty() ? question : question + QStringLiteral("\n\n") + check.line,
+                check.details))
+            return;
         startCompiled(std::move(program), 0);
     });
 }
@@ -712,6 +794,7 @@ void MainWindow::onStatus(const ControllerStatus& s) {
         timing += (timing.isEmpty() ? QString() : QStringLiteral("  |  ")) +
                   tr("%1 status lines not shown").arg(dropped);
     timingLabel_->setText(timing);
+    scheduleCheck();  // the law, gains and override the check runs with are the status'
 }
 
 QString MainWindow::stateText(ControllerState state) {

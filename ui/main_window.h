@@ -5,15 +5,18 @@
 #include <QSettings>
 #include <functional>
 #include <memory>
+#include <optional>
 
 #include "core/gcode/dialect.h"
 #include "core/profile/machine_kind.h"
 #include "core/rail/rail_controller.h"
 #include "ui/eliding_label.h"
 #include "ui/operator_frame.h"
+#include "ui/pre_run_check.h"
 #include "ui/theme.h"
 
 class QAction;
+class QTimer;
 class QDockWidget;
 class QLabel;
 class QProgressBar;
@@ -72,6 +75,14 @@ class MainWindow : public OperatorFrame {
     QAction* engineeredLawAction() const { return engineeredLaw_; }
     QToolButton* emergencyButton() const { return estopTool_; }
     bool compiling() const { return compiling_; }
+    /// The pre-run check of the selected program as it is now (its revision, dialect, law,
+    /// gains and feed override), run in the background for the Cycle start question.
+    PreRunCheck* preRunCheck() const { return check_; }
+    /// What a check must be of to be said in the Cycle start question now; none without a
+    /// program (or while one loads).
+    std::optional<PreRunCheckKey> preRunCheckKey() const;
+    /// The check of the program as it is now is done (or could not run).
+    bool preRunCheckReady() const;
     /// Says in the status bar that the history cannot be kept (e.g. a read-only folder).
     void reportJournalProblem(const QString& reason);
     /// A line about the journal opened (MachineLink::journalNotice): in the status lines, the
@@ -113,6 +124,11 @@ class MainWindow : public OperatorFrame {
     /// Compiles the editor's text (a long one on a worker thread) and calls then with it.
     void compileEditor(bool showInAlarms, std::function<void(std::shared_ptr<Program>)> then);
     void startCompiled(std::shared_ptr<Program> program, std::size_t fromIndex);
+    /// The compiler's options for the selected program (dialect, the machine's limits).
+    CompileOptions compileOptions() const;
+    /// Starts the pre-run check when what it must be of changed (an edit, a selection, the
+    /// law, gains, override or dialect): once that has rested kCheckRestMs; nothing otherwise.
+    void scheduleCheck();
     QString approachText(const Program& program, std::size_t fromIndex) const {
         return approachText(program, fromIndex, last_.homed, last_.servo.positionMm);
     }
@@ -157,6 +173,9 @@ class MainWindow : public OperatorFrame {
     Dialect dialect_ = Dialect::Standard;
     ControllerStatus last_;
     int plotDivider_ = 0;
+    PreRunCheck* check_;
+    QTimer* checkTimer_;  ///< an edit or a change of settings rests this long before a check
+    std::optional<PreRunCheckKey> pendingCheck_;  ///< waiting for checkTimer_
 };
 
 }  // namespace ui

@@ -293,8 +293,20 @@ bool OperatorFrame::switchTo(MachineKind next) {
     return true;
 }
 
-bool OperatorFrame::confirm(const QString& title, const QString& text) {
-    return confirmer_ ? confirmer_(title, text) : askYesNoDefaultNo(this, title, text);
+void OperatorFrame::setConfirmer(Confirmer confirmer) {
+    if (!confirmer) {
+        confirmer_ = nullptr;
+        return;
+    }
+    confirmer_ = [confirmer = std::move(confirmer)](const QString& title, const QString& text,
+                                                    const QString&) {
+        return confirmer(title, text);
+    };
+}
+
+bool OperatorFrame::confirm(const QString& title, const QString& text, const QString& details) {
+    return confirmer_ ? confirmer_(title, text, details)
+                      : askYesNoDefaultNo(this, title, text, details);
 }
 
 void OperatorFrame::setLanguage(const QString& lang) {

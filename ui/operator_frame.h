@@ -44,7 +44,12 @@ class OperatorFrame : public QMainWindow {
 
     /// Asks the operator yes or no; tests replace it to answer (and read) the question.
     using Confirmer = std::function<bool(const QString& title, const QString& text)>;
-    void setConfirmer(Confirmer confirmer) { confirmer_ = std::move(confirmer); }
+    /// The same with the question's details (its "Show Details..." text; empty when none).
+    using DetailedConfirmer =
+        std::function<bool(const QString& title, const QString& text, const QString& details)>;
+    /// Either setter replaces what the other set; none (a null function): the real question.
+    void setConfirmer(Confirmer confirmer);
+    void setDetailedConfirmer(DetailedConfirmer confirmer) { confirmer_ = std::move(confirmer); }
     void setLanguage(const QString& lang);
     QString language() const { return language_; }
     /// Windows > Reset layout: every dock where it was built, the plots in front, default sizes.
@@ -170,7 +175,8 @@ class OperatorFrame : public QMainWindow {
     /// The E-stop's caption and look, Reset E-stop and Acknowledge as the machine's state says.
     void showSafetyState(bool latched, bool alarmed);
     void showArmedFaults(const QString& text);
-    bool confirm(const QString& title, const QString& text);
+    /// Yes or no, No by default; details: the question's "Show Details..." text (none: empty).
+    bool confirm(const QString& title, const QString& text, const QString& details = {});
 
     void showEvent(QShowEvent* e) override;
     void changeEvent(QEvent* e) override;
@@ -196,7 +202,7 @@ class OperatorFrame : public QMainWindow {
     void applyDefaultDockSizes();
     void showDncState();
 
-    Confirmer confirmer_;
+    DetailedConfirmer confirmer_;
     QActionGroup* languages_ = nullptr;
     QList<QDockWidget*> docks_;      ///< every dock, in the order built
     QList<QDockWidget*> withdrawn_;  ///< hidden on this backend

@@ -61,9 +61,10 @@ class Machine {
 class RailMachine final : public Machine {
   public:
     RailMachine(const MachineProfile& profile, std::shared_ptr<const Program> program,
-                std::uint64_t seed, bool* loaded)
+                std::uint64_t seed, double feedOverride, bool* loaded)
         : session_(profile, seed) {
         RailController& c = session_.controller();
+        c.setFeedOverride(feedOverride);
         c.selectAutomatic();
         *loaded = c.loadProgram(std::move(program));
         c.start(0);  // after homing
@@ -97,11 +98,12 @@ class RailMachine final : public Machine {
 class XyMachine final : public Machine {
   public:
     XyMachine(const MachineProfile& profile, std::unique_ptr<XySession> session,
-              std::shared_ptr<const Program> program, bool* loaded)
+              std::shared_ptr<const Program> program, double feedOverride, bool* loaded)
         : session_(std::move(session)),
           plotter_(profile.kind == MachineKind::Plotter),
           clampPercent_(profile.dcTable.pwmClampPercent) {
         XyController& c = session_->controller();
+        c.setFeedOverride(feedOverride);
         c.selectAutomatic();
         *loaded = c.loadProgram(std::move(program));
         c.start(0);
@@ -349,7 +351,7 @@ bool ProgramCheck::ok() const {
                         [](const CheckedAlarm& a) { return !a.warning; });
 }
 
-std::unique_ptr<ProgramChecker> ProgramChecker::make(const MachineProfile& profile,
+std::unique_ptr<ProgramChecker> ProgramChecker::make(const MachineProfile& machine,
                                                      std::shared_ptr<const Program> program,
                                                      const ProgramCheckOptions& options,
                                                      std::string* error) {
@@ -359,26 +361,48 @@ std::unique_ptr<ProgramChecker> ProgramChecker::make(const MachineProfile& profi
     };
     if (!(options.maxSeconds > 0.0) || !std::isfinite(options.maxSeconds))
         return fail("the check's bound must be a positive number of seconds");
+    // The controllers clamp it; a figure outside is a caller's mistake, said rather than clamped.
+    if (!(options.feedOverride >= 0.0 && options.feedOverride <= 1.5))
+        return fail("the feed override must be from 0 to 1.5 (0 to 150 %)");
     if (!program) return fail("no program to check");
     if (!program->ok()) return fail("the program has compile errors: nothing to check");
-    const bool xy = profile.kind != MachineKind::Rail;
+    const bool xy = machine.kind != MachineKind::Rail;
     if (xy && program->y.size() != program->blocks.size())
         return fail("the program was compiled for a machine without Y: compile it for this one");
+    MachineProfile profile = machine;
+    if (options.railLoop) {
+        if (xy)
+            return fail(
+                "a control law and gains are the rail's: an XY machine's are its profile's");
+        const LoopGains& g = options.railLoop->gains;
+        if (!std::isfinite(g.kp) || !std::isfinite(g.ki) || !std::isfinite(g.kd))
+            return fail("the loop's gains must be finite numbers");
+        // As the screens' Options > Control law and `run --law`: the law comes with its period
+        // (issue 22 item 1), and runs with the gains given.
+        const LoopLaw law = options.railLoop->law;
+        const double engineeredS = profile.loop.law == LoopLaw::Engineered
+                                       ? profile.loop.samplePeriodS
+                                       : LoopParams{}.samplePeriodS;
+        profile.loop.samplePeriodS = periodForLaw(law, profile.loop.samplePeriodS, engineeredS);
+        profile.loop.law = law;
+        (law == LoopLaw::Classic ? profile.loop.classic : profile.loop.engineered) = g;
+    }
     bool loaded = false;
-    std::unique_ptr<Machine> machine;
+    std::unique_ptr<Machine> plant;
     if (xy) {
         XySessionMake made = makeXySession(profile, options.seed);
         if (!made.session) {
             if (error) *error = made.error;
             return nullptr;
         }
-        machine = std::make_unique<XyMachine>(profile, std::move(made.session), std::move(program),
-                                              &loaded);
+        plant = std::make_unique<XyMachine>(profile, std::move(made.session), std::move(program),
+                                            options.feedOverride, &loaded);
     } else {
-        machine = std::make_unique<RailMachine>(profile, std::move(program), options.seed, &loaded);
+        plant = std::make_unique<RailMachine>(profile, std::move(program), options.seed,
+                                              options.feedOverride, &loaded);
     }
     if (!loaded) return fail("the controller refused the program");
-    return std::make_unique<Checker>(profile, std::move(machine), options);
+    return std::make_unique<Checker>(profile, std::move(plant), options);
 }
 
 std::optional<ProgramCheck> checkProgram(const MachineProfile& profile,

@@ -10,7 +10,8 @@
 // here), seed `seed`. Automatic homes first; the program then starts (the rail's approach to
 // its centre included) and runs to its end. An m00 is continued at once: the operator's wait
 // is no machine time, and the stops are counted (operatorStops). Nothing is injected (no
-// faults, no late ticks).
+// faults, no late ticks). The rail's law and gains are the profile's and the feed override
+// 100 %, unless the options give others (the screens give the ones the machine runs with).
 //
 // What it measures (every period, mm and s):
 //  - cycle time: controller time from the first period that ends with the program Running
@@ -67,11 +68,29 @@
 
 namespace trilho {
 
+/// The rail's loop as the screens run it: Options > Control law and the gains on the form.
+struct RailLoopChoice {
+    LoopLaw law = LoopLaw::Engineered;
+    LoopGains gains;  ///< that law's (Kp, Ki, Kd in its own units, machine_profile.h)
+    bool operator==(const RailLoopChoice& o) const {
+        return law == o.law && gains.kp == o.gains.kp && gains.ki == o.gains.ki &&
+               gains.kd == o.gains.kd;
+    }
+};
+
 struct ProgramCheckOptions {
     /// Controller time from the session's start (homing included) after which a program that
     /// has not ended is given up, s. Must be > 0 and finite.
     double maxSeconds = 3600.0;
     std::uint64_t seed = 1;  ///< the simulation's randomness (as `run --seed`)
+    /// The rail only: the law and its gains instead of the profile's (the screens' live ones,
+    /// so the check runs what Cycle start will). The law comes with its period, as choosing it
+    /// on the screens or `run --law` does (periodForLaw). None: the profile's.
+    std::optional<RailLoopChoice> railLoop;
+    /// The feed override the program runs at, 0 to 1.5 (the controllers' range; the screens'
+    /// slider and keys). 0 holds every move: the check then ends at the bound.
+    double feedOverride = 1.0;
+    bool operator==(const ProgramCheckOptions&) const = default;
 };
 
 /// Why the check ended.

@@ -175,4 +175,96 @@ TEST(ProgramCheck, RefusesWhatItCannotCheckSayingWhy) {
     }
 }
 
+TEST(ProgramCheck, RunsTheLawGainsAndOverrideItIsGivenAsTheScreensRunThem) {
+    // The screens check with the law, gains and feed override the machine runs with (issue 31
+    // item 8 on the screens). The 1996 law under twice the payload coasts past the soft limit
+    // at 1270 mm (cli_check_test: AProgramThatLeavesTheSoftLimitsIsNotOkWithTheLine); the
+    // profile's engineered law stays inside.
+    MachineProfile heavy = MachineProfile::rail();
+    heavy.plant.massFactor = 2.0;
+    const auto program = compiled("G90\nG00 X1270\nG00 X-1270\nM02\n", heavy);
+    std::string error;
+    const auto profiles = checkProgram(heavy, program, {}, &error);
+    ASSERT_TRUE(profiles) << error;
+    EXPECT_TRUE(profiles->ok());
+    ProgramCheckOptions live;
+    live.railLoop = RailLoopChoice{LoopLaw::Classic, heavy.loop.classic};
+    const auto classic = checkProgram(heavy, program, live, &error);
+    ASSERT_TRUE(classic) << error;
+    EXPECT_FALSE(classic->ok());
+    EXPECT_TRUE(classic->envelope[0].outside);
+    EXPECT_EQ(classic->envelope[0].outsideLine, 2u);
+    // The same as a profile that names the law (with its 10 ms period), as `check --machine`.
+    MachineProfile named = heavy;
+    named.loop.law = LoopLaw::Classic;
+    named.loop.samplePeriodS = kClassicSamplePeriodS;
+    const auto byProfile = checkProgram(named, program, {}, &error);
+    ASSERT_TRUE(byProfile) << error;
+    EXPECT_EQ(classic->periods, byProfile->periods);
+    EXPECT_EQ(classic->envelope[0].maxMm, byProfile->envelope[0].maxMm);
+    EXPECT_EQ(classic->cycleTimeS, byProfile->cycleTimeS);
+    // The profile's own law and gains given explicitly change nothing.
+    ProgramCheckOptions same;
+    same.railLoop = RailLoopChoice{LoopLaw::Engineered, heavy.loop.engineered};
+    const auto explicitOwn = checkProgram(heavy, program, same, &error);
+    ASSERT_TRUE(explicitOwn) << error;
+    EXPECT_EQ(explicitOwn->cycleTimeS, profiles->cycleTimeS);
+    EXPECT_EQ(explicitOwn->worstFollowingErrorMm, profiles->worstFollowingErrorMm);
+    // Softer gains follow worse.
+    ProgramCheckOptions soft;
+    soft.railLoop = RailLoopChoice{LoopLaw::Engineered, LoopGains{0.3, 0.0, 0.0}};
+    const auto softer = checkProgram(heavy, program, soft, &error);
+    ASSERT_TRUE(softer) << error;
+    EXPECT_GT(softer->worstFollowingErrorMm, profiles->worstFollowingErrorMm);
+
+    // The feed override: at half the feed a feed move takes longer; at 0 nothing moves and
+    // the check ends at its bound; on the DC table too.
+    const MachineProfile rail = MachineProfile::rail();
+    const auto feed = compiled("G90\nG01 X1000 F10\nM02\n", rail);
+    const auto full = checkProgram(rail, feed, {}, &error);
+    ASSERT_TRUE(full) << error;
+    ProgramCheckOptions half;
+    half.feedOverride = 0.5;
+    const auto slow = checkProgram(rail, feed, half, &error);
+    ASSERT_TRUE(slow) << error;
+    EXPECT_EQ(slow->end, CheckEnd::Finished);
+    EXPECT_GT(slow->cycleTimeS, full->cycleTimeS * 1.5);
+    ProgramCheckOptions held;
+    held.feedOverride = 0.0;
+    held.maxSeconds = 30.0;
+    const auto stopped = checkProgram(rail, feed, held, &error);
+    ASSERT_TRUE(stopped) << error;
+    EXPECT_EQ(stopped->end, CheckEnd::TimeLimit);
+    const MachineProfile table = MachineProfile::xyDcTable();
+    const auto tableFeed = compiled("G90\nG01 X100 Y50 F20\nM02\n", table);
+    const auto tableFull = checkProgram(table, tableFeed, {}, &error);
+    const auto tableSlow = checkProgram(table, tableFeed, half, &error);
+    ASSERT_TRUE(tableFull && tableSlow) << error;
+    EXPECT_GT(tableSlow->cycleTimeS, tableFull->cycleTimeS * 1.5);
+}
+
+TEST(ProgramCheck, RefusesALiveChoiceItCannotRunSayingWhy) {
+    std::string error;
+    const MachineProfile rail = MachineProfile::rail();
+    const auto program = compiled("G00 X10\nM02\n", rail);
+    for (double f : {-0.1, 1.51, std::nan(""), HUGE_VAL, -HUGE_VAL}) {
+        ProgramCheckOptions o;
+        o.feedOverride = f;
+        EXPECT_FALSE(ProgramChecker::make(rail, program, o, &error)) << f;
+        EXPECT_NE(error.find("feed override"), std::string::npos) << error;
+    }
+    for (double g : {std::nan(""), HUGE_VAL}) {
+        ProgramCheckOptions o;
+        o.railLoop = RailLoopChoice{LoopLaw::Engineered, LoopGains{1.0, g, 0.0}};
+        EXPECT_FALSE(ProgramChecker::make(rail, program, o, &error)) << g;
+        EXPECT_NE(error.find("gains"), std::string::npos) << error;
+    }
+    // An XY machine's law is its profile's.
+    const MachineProfile table = MachineProfile::xyDcTable();
+    ProgramCheckOptions o;
+    o.railLoop = RailLoopChoice{};
+    EXPECT_FALSE(ProgramChecker::make(table, compiled("G00 X10 Y10\nM02\n", table), o, &error));
+    EXPECT_NE(error.find("rail's"), std::string::npos) << error;
+}
+
 }  // namespace

@@ -38,6 +38,7 @@
 
 #include "core/gcode/compiler.h"
 #include "core/machine/event_text.h"
+#include "host/check/program_check.h"
 #include "tests/support/test_fonts.h"
 #include "tests/support/widget_test_main.h"
 #include "translations/i18n.h"
@@ -51,6 +52,8 @@
 #include "ui/machine_link.h"
 #include "ui/main_window.h"
 #include "ui/plot_panel.h"
+#include "ui/pre_run_check.h"
+#include "ui/pre_run_check_text.h"
 #include "ui/program_panel.h"
 #include "ui/run_controls.h"
 #include "ui/select_file_dialog.h"
@@ -522,6 +525,137 @@ class OperatorScreensTest : public QObject {
         QVERIFY(defaultNo);
         QTest::qWait(200);
         QCOMPARE(status().state, ControllerState::AutoIdle);
+    }
+
+    /// The pre-run check of text through the check's API (what `trilho-cli check` runs), as
+    /// the screens run it: their bound, the law and gains given (none: the profile's).
+    static ProgramCheck apiCheck(const MachineProfile& profile, const QByteArray& text,
+                                 std::optional<RailLoopChoice> loop = std::nullopt) {
+        CompileOptions options;
+        options.machine = profile.limits;
+        auto program = std::make_shared<Program>(compile(text.toStdString(), options));
+        ProgramCheckOptions o;
+        o.maxSeconds = kScreenCheckSeconds;
+        o.railLoop = loop;
+        std::string error;
+        const std::optional<ProgramCheck> c = checkProgram(profile, program, o, &error);
+        if (!c) qFatal("%s", error.c_str());
+        return *c;
+    }
+
+    // Issue 31 item 8 on the screens: the Cycle start question carries the pre-run check's
+    // line (the cycle time the check API gives for the same program), its details a click away;
+    // after an edit the old line is never shown, and it never waits for the check.
+    void cycleStartQuestionCarriesThePreRunCheckOfThisRevision() {
+        const QByteArray first = "N10 G90\nN20 G01 X300 F40\nN30 G00 X-200\nN40 M02\n";
+        QVERIFY(window_->selectProgram(writeProgram("check.G", first)));
+        QTRY_VERIFY_WITH_TIMEOUT(window_->preRunCheckReady(), 20000);
+        const ProgramCheck expected = apiCheck(link_->profile(), first);
+        QVERIFY(expected.ok());
+        QVERIFY(expected.worstFollowingErrorLine > 0);
+        const QString line =
+            QStringLiteral("Pre-run check: cycle %1 s, worst following error %2 mm at line %3.")
+                .arg(expected.cycleTimeS, 0, 'f', 1)
+                .arg(expected.worstFollowingErrorMm, 0, 'f', 1)
+                .arg(expected.worstFollowingErrorLine);
+        QStringList details;
+        answer_ = false;
+        window_->setDetailedConfirmer(
+            [this, &details](const QString& title, const QString& text, const QString& more) {
+                questions_ << title << text;
+                details << more;
+                return answer_;
+            });
+        window_->requestCycleStart();
+        QCOMPARE(questions_.value(0), QStringLiteral("Cycle start"));
+        QVERIFY2(questions_.value(1).endsWith(QStringLiteral("\n\n") + line),
+                 qPrintable(questions_.value(1) + QStringLiteral(" | expected ") + line));
+        // The details: the cycle time to the millisecond, what it ran with.
+        QVERIFY2(
+            details.value(0).contains(QStringLiteral("Cycle time: %1 s from the program's start")
+                                          .arg(expected.cycleTimeS, 0, 'f', 3)),
+            qPrintable(details.value(0)));
+        QVERIFY(details.value(0).contains(QStringLiteral("engineered law")));
+        QVERIFY(details.value(0).contains(QStringLiteral("feed override at 100 %")));
+        QVERIFY2(details.value(0).contains(QStringLiteral("Envelope x: %1 to %2 mm")
+                                               .arg(expected.envelope[0].minMm, 0, 'f', 3)
+                                               .arg(expected.envelope[0].maxMm, 0, 'f', 3)),
+                 qPrintable(details.value(0)));
+        QCOMPARE(status().state, ControllerState::Manual);  // No: nothing moved
+
+        // An edit: asked at once, the question says the check still runs, never the old line.
+        const QByteArray edited = "N10 G90\nN20 G01 X600 F20\nN30 G00 X-500\nN40 M02\n";
+        CodeEditor* editor = window_->programPanel()->editor();
+        editor->selectAll();
+        editor->insertPlainText(QString::fromLatin1(edited));
+        questions_.clear();
+        details.clear();
+        window_->requestCycleStart();
+        QCOMPARE(questions_.value(0), QStringLiteral("Cycle start"));
+        QVERIFY(!questions_.value(1).contains(line));
+        QVERIFY2(questions_.value(1).endsWith(QStringLiteral("Pre-run check: still running.")),
+                 qPrintable(questions_.value(1)));
+        QVERIFY(details.value(0).isEmpty());
+        // Once it is done, the edited program's own figures.
+        QTRY_VERIFY_WITH_TIMEOUT(window_->preRunCheckReady(), 20000);
+        const ProgramCheck after = apiCheck(link_->profile(), edited);
+        QVERIFY(QString::number(after.cycleTimeS, 'f', 1) !=
+                QString::number(expected.cycleTimeS, 'f', 1));
+        questions_.clear();
+        window_->requestCycleStart();
+        QVERIFY2(questions_.value(1).endsWith(
+                     QStringLiteral("Pre-run check: cycle %1 s, worst following error %2 mm at "
+                                    "line %3.")
+                         .arg(after.cycleTimeS, 0, 'f', 1)
+                         .arg(after.worstFollowingErrorMm, 0, 'f', 1)
+                         .arg(after.worstFollowingErrorLine)),
+                 qPrintable(questions_.value(1)));
+        // Yes runs it: the question's line took nothing from the run.
+        answer_ = true;
+        goAutomatic();
+        window_->requestCycleStart();
+        QTRY_VERIFY_WITH_TIMEOUT(status().state == ControllerState::Running, 5000);
+        link_->stop();
+        QTRY_COMPARE_WITH_TIMEOUT(status().state, ControllerState::AutoIdle, 10000);
+    }
+
+    // The law the screens run (Options > Control law) is the one checked: the 1996 law under
+    // twice the payload coasts past the soft limit at 1270 mm, said plainly with its line; the
+    // profile's engineered law would have been ok.
+    void aProgramThatLeavesTheSoftLimitsIsSaidNotOk() {
+        window_.reset();
+        link_.reset();
+        MachineProfile heavy = MachineProfile::rail();
+        heavy.plant.massFactor = 2.0;
+        link_ = std::make_unique<MachineLink>(heavy);
+        window_ = std::make_unique<MainWindow>(*link_, *settings_);
+        answer_ = false;
+        window_->setConfirmer([this](const QString& title, const QString& text) {
+            questions_ << title << text;
+            return answer_;
+        });
+        window_->show();
+        QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+        window_->classicLawAction()->trigger();
+        QTRY_COMPARE(status().law, LoopLaw::Classic);
+        const QByteArray text = "G90\nG00 X1270 ; to the soft limit\nG00 X-1270\nM02\n";
+        QVERIFY(window_->selectProgram(writeProgram("limits.G", text)));
+        QTRY_VERIFY_WITH_TIMEOUT(window_->preRunCheckReady(), 20000);
+        const ProgramCheck checked =
+            apiCheck(heavy, text, RailLoopChoice{LoopLaw::Classic, status().gains});
+        QVERIFY(!checked.ok());
+        QVERIFY(checked.envelope[0].outside);
+        QVERIFY(apiCheck(heavy, text).ok());  // the profile's law: inside
+        window_->requestCycleStart();
+        QCOMPARE(questions_.value(0), QStringLiteral("Cycle start"));
+        const QString said = questions_.value(1).section(QStringLiteral("\n\n"), 1);
+        QCOMPARE(said, PreRunCheckText::line(checked, heavy));
+        QVERIFY2(said.contains(QStringLiteral("x goes %1 mm beyond its soft limits at line 2")
+                                   .arg(checked.envelope[0].beyondMm, 0, 'f', 1)),
+                 qPrintable(said));
+        QVERIFY(said.startsWith(QStringLiteral("Pre-run check: ")));
+        QVERIFY(!said.contains(QStringLiteral("cycle")));
+        QCOMPARE(status().state, ControllerState::Manual);  // the operator said No
     }
 
     // Issue 19 items 2 and 3: a mode change never moves the rail unasked; Automatic and the

@@ -42,6 +42,7 @@
 #include "core/profile/machine_profile.h"
 #include "core/protocol/table_host.h"
 #include "hal/serial/serial_line.h"
+#include "host/check/program_check.h"
 #include "host/dnc/dnc_server.h"
 #include "host/dnc/modbus_tcp_listener.h"
 #include "host/session/xy_device_session.h"
@@ -57,6 +58,7 @@
 #include "ui/machine_link.h"
 #include "ui/machine_screens.h"
 #include "ui/main_window.h"
+#include "ui/pre_run_check.h"
 #include "ui/program_library_panel.h"
 #include "ui/start_screen.h"
 #include "ui/workbench/workbench_window.h"
@@ -834,6 +836,145 @@ class XyScreensTest : public QObject {
         link->advance(0.05);
         QCOMPARE(link->status().feedOverride, 1.0);
         QVERIFY(link->status().singleBlock);
+    }
+
+    /// The pre-run check of text through the check's API (what `trilho-cli check` runs) with
+    /// the screens' bound and the feed override given.
+    static ProgramCheck apiCheck(const MachineProfile& profile, const QByteArray& text,
+                                 double feedOverride = 1.0) {
+        CompileOptions options;
+        options.machine = profile.limits;
+        auto program = std::make_shared<Program>(compile(text.toStdString(), options));
+        ProgramCheckOptions o;
+        o.maxSeconds = kScreenCheckSeconds;
+        o.feedOverride = feedOverride;
+        std::string error;
+        const std::optional<ProgramCheck> c = checkProgram(profile, program, o, &error);
+        if (!c) qFatal("%s", error.c_str());
+        return *c;
+    }
+
+    /// The line of an ok check (at no line when no block was executing: the approach).
+    static QString okLine(const ProgramCheck& c) {
+        const QString head =
+            QStringLiteral("Pre-run check: cycle %1 s, worst following error %2 mm")
+                .arg(c.cycleTimeS, 0, 'f', 1)
+                .arg(c.worstFollowingErrorMm, 0, 'f', 1);
+        return c.worstFollowingErrorLine > 0
+                   ? head + QStringLiteral(" at line %1.").arg(c.worstFollowingErrorLine)
+                   : head + QLatin1Char('.');
+    }
+
+    // Issue 31 item 8 on the DC table: the Cycle start question carries the pre-run check's
+    // line (the check API's cycle time for the same program at the override it runs at), the
+    // details a click away; a newly loaded program, or a changed override, never shows the old
+    // line; an alarm the check met is said with its code and line.
+    void dcTableCycleStartQuestionCarriesThePreRunCheck() {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        const MachineProfile profile = shipped("xy_dc_table.json");
+        auto link = virtualLink(profile);
+        XyMainWindow w(*link, settings);
+        QStringList asked, details;
+        w.setDetailedConfirmer([&](const QString& title, const QString& text, const QString& more) {
+            asked << title << text;
+            details << more;
+            return false;
+        });
+        w.show();
+        const QString path = dir.filePath(QStringLiteral("check.G"));
+        auto write = [&](const QByteArray& text) {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            f.write(text);
+        };
+        const QByteArray first = "G90\nG01 X100 Y50 F40\nG00 X20 Y120\nM02\n";
+        write(first);
+        QVERIFY(w.selectProgram(path));
+        QTRY_VERIFY_WITH_TIMEOUT(w.preRunCheckReady(), 20000);
+        const ProgramCheck expected = apiCheck(profile, first);
+        QVERIFY(expected.ok());
+        w.startButton()->click();
+        QCOMPARE(asked.value(0), QStringLiteral("Cycle start"));
+        QVERIFY2(asked.value(1).endsWith(QStringLiteral("\n\n") + okLine(expected)),
+                 qPrintable(asked.value(1) + QStringLiteral(" | expected ") + okLine(expected)));
+        QVERIFY2(
+            details.value(0).contains(QStringLiteral("Cycle time: %1 s from the program's start")
+                                          .arg(expected.cycleTimeS, 0, 'f', 3)),
+            qPrintable(details.value(0)));
+        QVERIFY(details.value(0).contains(QStringLiteral("Envelope y: ")));
+        QVERIFY(details.value(0).contains(QStringLiteral("feed override at 100 %")));
+
+        // The file edited and selected again: asked at once, without the old line.
+        const QByteArray second = "G90\nG01 X200 Y150 F20\nG00 X10 Y10\nM02\n";
+        write(second);
+        QVERIFY(w.selectProgram(path));
+        asked.clear();
+        details.clear();
+        w.startButton()->click();
+        QVERIFY(!asked.value(1).contains(okLine(expected)));
+        QVERIFY2(asked.value(1).endsWith(QStringLiteral("Pre-run check: still running.")),
+                 qPrintable(asked.value(1)));
+        QTRY_VERIFY_WITH_TIMEOUT(w.preRunCheckReady(), 20000);
+        const ProgramCheck edited = apiCheck(profile, second);
+        QVERIFY(okLine(edited) != okLine(expected));
+        asked.clear();
+        w.startButton()->click();
+        QVERIFY2(asked.value(1).endsWith(okLine(edited)), qPrintable(asked.value(1)));
+
+        // The override lowered to 80 %: the check runs at it, and says so.
+        w.findChild<QAction*>(QStringLiteral("overrideDown"))->trigger();
+        w.findChild<QAction*>(QStringLiteral("overrideDown"))->trigger();
+        link->advance(0.05);
+        QCOMPARE(link->status().feedOverride, 0.8);
+        asked.clear();
+        details.clear();
+        w.startButton()->click();
+        QVERIFY(!asked.value(1).contains(okLine(edited)));
+        QTRY_VERIFY_WITH_TIMEOUT(w.preRunCheckReady(), 20000);
+        const ProgramCheck slower = apiCheck(profile, second, 0.8);
+        QVERIFY(slower.cycleTimeS > edited.cycleTimeS);
+        asked.clear();
+        details.clear();
+        w.startButton()->click();
+        QVERIFY2(asked.value(1).endsWith(okLine(slower)), qPrintable(asked.value(1)));
+        QVERIFY(details.value(0).contains(QStringLiteral("feed override at 80 %")));
+        // At 0 % nothing moves: the check reaches its bound and says why.
+        for (int i = 0; i < 8; ++i)
+            w.findChild<QAction*>(QStringLiteral("overrideDown"))->trigger();
+        link->advance(0.05);
+        QCOMPARE(link->status().feedOverride, 0.0);
+        QTRY_VERIFY_WITH_TIMEOUT(w.preRunCheckReady(), 20000);
+        asked.clear();
+        w.startButton()->click();
+        QVERIFY2(asked.value(1).endsWith(
+                     QStringLiteral("Pre-run check: no end within %1 s of machine time: the "
+                                    "feed override is at 0 %, nothing moves.")
+                         .arg(kScreenCheckSeconds)),
+                 qPrintable(asked.value(1)));
+        link->advance(1.0);
+        QCOMPARE(link->status().state, ControllerState::Manual);  // No: nothing moved
+
+        // Twenty times the payload: the table cannot follow the feed move (alarm 3, line 3).
+        MachineProfile heavy = profile;
+        heavy.dcTable.massFactor *= 20.0;
+        auto heavyLink = virtualLink(heavy);
+        XyMainWindow h(*heavyLink, settings);
+        h.setConfirmer([&](const QString& title, const QString& text) {
+            asked << title << text;
+            return false;
+        });
+        const QByteArray alarm = "G90\nG04 X0.5\nG01 X100 Y100 F100\nM02\n";
+        write(alarm);
+        QVERIFY(h.selectProgram(path));
+        QTRY_VERIFY_WITH_TIMEOUT(h.preRunCheckReady(), 20000);
+        const ProgramCheck tripped = apiCheck(heavy, alarm);
+        QCOMPARE(tripped.end, CheckEnd::Alarm);
+        asked.clear();
+        h.startButton()->click();
+        QVERIFY2(asked.value(1).endsWith(
+                     QStringLiteral("Pre-run check: alarm 3 (Following error) at line 3.")),
+                 qPrintable(asked.value(1)));
     }
 
     void workAreaPaintsOnlyTheNewSegment() {

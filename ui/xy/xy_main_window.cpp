@@ -21,6 +21,7 @@
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QTimer>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -50,6 +51,7 @@
 #include "ui/dnc_link.h"
 #include "ui/journal_notice.h"
 #include "ui/machine_choice.h"
+#include "ui/pre_run_check_text.h"
 #include "ui/program_panel.h"
 #include "ui/xy/calibration_dialog.h"
 #include "ui/xy/dc_table_panel.h"
@@ -95,6 +97,17 @@ bool moving(ControllerState s) {
 XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     : OperatorFrame(settings, parent), link_(link) {
     const MachineProfile& profile = link_.profile();
+    // The pre-run check (issue 31 item 8): a change rests 300 ms first (a held override key
+    // starts one check, when released).
+    check_ = new PreRunCheck(this);
+    checkTimer_ = new QTimer(this);
+    checkTimer_->setSingleShot(true);
+    checkTimer_->setInterval(300);
+    connect(checkTimer_, &QTimer::timeout, this, [this] {
+        pendingCheck_.reset();
+        if (const std::optional<PreRunCheckKey> key = preRunCheckKey())
+            check_->start(*key, link_.profile(), program_);
+    });
     view_ = new WorkAreaView(this);
     const AxisTravel& x = profile.limits.x;
     const AxisTravel& y = profile.limits.y;
@@ -592,21 +605,68 @@ void XyMainWindow::requestHome() {
     link_.post([](XyController& c) { c.home(); });
 }
 
+std::optional<PreRunCheckKey> XyMainWindow::preRunCheckKey() const {
+    if (!program_ || loadingProgram_) return std::nullopt;
+    PreRunCheckKey key;
+    key.program = programGeneration_;  // each selection, even of the same file
+    key.options.maxSeconds = kScreenCheckSeconds;
+    key.options.feedOverride = std::clamp(last_.feedOverride, 0.0, 1.5);
+    return key;
+}
+
+bool XyMainWindow::preRunCheckReady() const {
+    const std::optional<PreRunCheckKey> key = preRunCheckKey();
+    if (!key) return false;
+    const PreRunCheck::State state = check_->stateFor(*key);
+    return state == PreRunCheck::State::Done || state == PreRunCheck::State::Failed;
+}
+
+void XyMainWindow::scheduleCheck() {
+    const std::optional<PreRunCheckKey> key = preRunCheckKey();
+    if (!key) {
+        pendingCheck_.reset();
+        checkTimer_->stop();
+        if (check_->key()) check_->clear();
+        return;
+    }
+    if (check_->key() == key || pendingCheck_ == key) return;
+    pendingCheck_ = key;
+    checkTimer_->start();  // (re)started: the check waits until the changes rest
+}
+
 void XyMainWindow::startProgram(bool ask) {
     if (loadingProgram_) {
         startWhenLoaded_ = ask;  // asked (or run) once it is read
         return;
     }
     if (!program_) return;
-    if (ask && !confirm(tr("Cycle start"),
-                        tr("Run %1? %2%3")
-                            .arg(QFileInfo(programPath_).fileName(),
-                                 last_.homed ? QString()
-                                             : tr("Its position is not known, so it homes "
-                                                  "first: %1 ")
-                                                   .arg(homingText()),
-                                 approachText(*program_))))
-        return;
+    if (ask) {
+        // The pre-run check's line, of this program at this override, or that it still runs:
+        // the question never waits for it.
+        const QString file = QFileInfo(programPath_).fileName();
+        PreRunCheckSaid check;
+        if (const std::optional<PreRunCheckKey> key = preRunCheckKey()) {
+            if (check_->key() != key) {  // a change that has not rested yet: checked from now
+                checkTimer_->stop();
+                pendingCheck_.reset();
+                check_->start(*key, link_.profile(), program_);
+            }
+            check = PreRunCheckText::say(*check_, *key, link_.profile(), file);
+        }
+        const QString question =
+            tr("Run %1? %2%3")
+                .arg(
+                    file,
+                    last_.homed
+                        ? QString()
+                        : tr("Its position is not known, so it homes first: %1 ").arg(homingText()),
+                    approachText(*program_));
+        if (!confirm(
+                tr("Cycle start"),
+                check.line.isEmpty() ? question : question + QStringLiteral("\n\n") + check.line,
+                check.details))
+            return;
+    }
     auto program = program_;
     view_->clearFollowed();
     link_.post([program](XyController& c) {
@@ -713,6 +773,7 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
             addHistory(line, journalKind(e), alarm ? static_cast<int>(e.alarm) : 0);
     }
     last_ = status;
+    scheduleCheck();  // a program loaded, the override the check runs at: the status'
     if (journal_) journal_->syncIfDue(journalClock_.elapsed());
     showLinkState();
     const XySample& s = status.sample;

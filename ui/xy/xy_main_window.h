@@ -14,6 +14,7 @@
 #include "core/gcode/program.h"
 #include "host/session/xy_link.h"
 #include "ui/operator_frame.h"
+#include "ui/pre_run_check.h"
 
 class QLabel;
 class QListWidget;
@@ -22,6 +23,7 @@ class QAction;
 class QMenu;
 class QSettings;
 class QSplitter;
+class QTimer;
 
 namespace trilho {
 class Journal;
@@ -91,6 +93,14 @@ class XyMainWindow : public OperatorFrame {
     QPushButton* estopButton() const { return estopPush_; }
     QPushButton* stopButton() const { return stop_; }
     const std::shared_ptr<const Program>& program() const { return program_; }
+    /// The pre-run check of the program loaded, with the feed override it runs at, run in the
+    /// background for the Cycle start question.
+    PreRunCheck* preRunCheck() const { return check_; }
+    /// What a check must be of to be said in the Cycle start question now; none without a
+    /// program (or while one loads).
+    std::optional<PreRunCheckKey> preRunCheckKey() const;
+    /// The check of the program and override as they are now is done (or could not run).
+    bool preRunCheckReady() const;
 
   signals:
     /// Options > Connection chose another backend: port empty for the simulated machine.
@@ -139,6 +149,9 @@ class XyMainWindow : public OperatorFrame {
     void addHistory(const QString& line, const QString& kind, int alarmCode = 0);
     void chooseConnection();
     void showLinkState();
+    /// Starts the pre-run check when what it must be of changed (a program loaded, the feed
+    /// override): once that has rested; nothing otherwise.
+    void scheduleCheck();
 
     XyLink& link_;
     WorkAreaView* view_;
@@ -181,6 +194,9 @@ class XyMainWindow : public OperatorFrame {
     QString journalPath_;
     QElapsedTimer journalClock_;
     bool journalWarned_ = false;
+    PreRunCheck* check_ = nullptr;
+    QTimer* checkTimer_ = nullptr;  ///< a change of the override rests this long before a check
+    std::optional<PreRunCheckKey> pendingCheck_;  ///< waiting for checkTimer_
 };
 
 }  // namespace ui
