@@ -53,7 +53,6 @@ namespace {
 /// An edit, a selection or a change of the law, gains, override or dialect rests this long
 /// before the pre-run check starts, ms: typing or dragging the override starts one check, when
 /// it stops, not one a key.
-constexpr int kCheckRestMs = 300;
 }  // namespace
 
 MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
@@ -116,14 +115,10 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     automatic_->setCheckable(true);
     manual_->setChecked(true);
     check_ = new PreRunCheck(this);
-    checkTimer_ = new QTimer(this);
-    checkTimer_->setSingleShot(true);
-    checkTimer_->setInterval(kCheckRestMs);
-    connect(checkTimer_, &QTimer::timeout, this, [this] {
-        pendingCheck_.reset();
-        if (const std::optional<PreRunCheckKey> key = preRunCheckKey())
-            check_->start(*key, link_.profile(), program_->source(), compileOptions());
-    });
+    check_->setScreen([this] { return preRunCheckKey(); },
+                      [this](const PreRunCheckKey& key) {
+                          check_->start(key, link_.profile(), program_->source(), compileOptions());
+                      });
     buildDocks();
     stateLabel_ = new QLabel(this);
     hintLabel_ = new QLabel(this);
@@ -453,23 +448,11 @@ std::optional<PreRunCheckKey> MainWindow::preRunCheckKey() const {
 }
 
 bool MainWindow::preRunCheckReady() const {
-    const std::optional<PreRunCheckKey> key = preRunCheckKey();
-    if (!key) return false;
-    const PreRunCheck::State state = check_->stateFor(*key);
-    return state == PreRunCheck::State::Done || state == PreRunCheck::State::Failed;
+    return check_->ready();
 }
 
 void MainWindow::scheduleCheck() {
-    const std::optional<PreRunCheckKey> key = preRunCheckKey();
-    if (!key) {
-        pendingCheck_.reset();
-        checkTimer_->stop();
-        if (check_->key()) check_->clear();
-        return;
-    }
-    if (check_->key() == key || pendingCheck_ == key) return;
-    pendingCheck_ = key;
-    checkTimer_->start();  // (re)started: the check waits until the changes rest
+    check_->schedule();
 }
 
 void MainWindow::compileEditor(bool showInAlarms,
@@ -582,11 +565,7 @@ void MainWindow::requestCycleStart() {
         const QString file = QFileInfo(selectedFile_).fileName();
         PreRunCheckSaid check;
         if (const std::optional<PreRunCheckKey> key = preRunCheckKey()) {
-            if (check_->key() != key) {  // a change that has not rested yet: checked from now
-                checkTimer_->stop();
-                pendingCheck_.reset();
-                check_->start(*key, link_.profile(), program_->source(), compileOptions());
-            }
+            check_->startIfOther(*key);  // a change that has not rested yet: checked from now
             check = PreRunCheckText::say(*check_, *key, link_.profile(), file);
         }
         const QString question =

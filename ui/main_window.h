@@ -127,7 +127,8 @@ class MainWindow : public OperatorFrame {
     /// The compiler's options for the selected program (dialect, the machine's limits).
     CompileOptions compileOptions() const;
     /// Starts the pre-run check when what it must be of changed (an edit, a selection, the
-    /// law, gains, override or dialect): once that has rested kCheckRestMs; nothing otherwise.
+    /// law, gains, override or dialect): once that has rested PreRunCheck::kRestMs; nothing
+    /// otherwise.
     void scheduleCheck();
     QString approachText(const Program& program, std::size_t fromIndex) const {
         return approachText(program, fromIndex, last_.homed, last_.servo.positionMm);
@@ -174,8 +175,6 @@ class MainWindow : public OperatorFrame {
     ControllerStatus last_;
     int plotDivider_ = 0;
     PreRunCheck* check_;
-    QTimer* checkTimer_;  ///< an edit or a change of settings rests this long before a check
-    std::optional<PreRunCheckKey> pendingCheck_;  ///< waiting for checkTimer_
 };
 
 }  // namespace ui

@@ -33,7 +33,48 @@ Outcome runCheck(const MachineProfile& profile, std::shared_ptr<const Program> p
 
 }  // namespace
 
-PreRunCheck::PreRunCheck(QObject* parent) : QObject(parent) {}
+PreRunCheck::PreRunCheck(QObject* parent) : QObject(parent), rest_(new QTimer(this)) {
+    rest_->setSingleShot(true);
+    rest_->setInterval(kRestMs);
+    connect(rest_, &QTimer::timeout, this, [this] {
+        pending_.reset();
+        if (!currentKey_) return;
+        if (const std::optional<PreRunCheckKey> key = currentKey_()) startCheck_(*key);
+    });
+}
+
+void PreRunCheck::setScreen(std::function<std::optional<PreRunCheckKey>()> currentKey,
+                            std::function<void(const PreRunCheckKey&)> startCheck) {
+    currentKey_ = std::move(currentKey);
+    startCheck_ = std::move(startCheck);
+}
+
+void PreRunCheck::schedule() {
+    const std::optional<PreRunCheckKey> key = currentKey_ ? currentKey_() : std::nullopt;
+    if (!key) {
+        pending_.reset();
+        rest_->stop();
+        if (key_) clear();
+        return;
+    }
+    if (key_ == key || pending_ == key) return;
+    pending_ = key;
+    rest_->start();  // (re)started: the check waits until the changes rest
+}
+
+bool PreRunCheck::ready() const {
+    const std::optional<PreRunCheckKey> key = currentKey_ ? currentKey_() : std::nullopt;
+    if (!key) return false;
+    const State state = stateFor(*key);
+    return state == State::Done || state == State::Failed;
+}
+
+void PreRunCheck::startIfOther(const PreRunCheckKey& key) {
+    if (key_ == key) return;
+    rest_->stop();
+    pending_.reset();
+    startCheck_(key);
+}
 
 PreRunCheck::~PreRunCheck() {
     // The pool outlives the screens: the check under way ends at its next slice.

@@ -10,8 +10,10 @@
 // core on the rail (1 ms periods) for a program that never ends, at the pool's low priority;
 // on the screens' thread only the start (a copy of the editor's text) and the result's arrival.
 #include <QObject>
+#include <QTimer>
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -51,6 +53,20 @@ class PreRunCheck : public QObject {
     explicit PreRunCheck(QObject* parent = nullptr);
     ~PreRunCheck() override;
 
+    /// What the screen would check now (none: no program) and how it starts that check (the
+    /// rail compiles its editor's text, the XY machines give their program). Set once.
+    void setScreen(std::function<std::optional<PreRunCheckKey>()> currentKey,
+                   std::function<void(const PreRunCheckKey&)> startCheck);
+    /// After a change (an edit, a load, the law, gains, override or dialect): the check of the
+    /// screen's key starts once the changes have rested kRestMs; no program clears it.
+    void schedule();
+    /// Whether the check of the screen's key is done or failed.
+    bool ready() const;
+    /// The question is asked now: a key the check is not of is checked from now.
+    void startIfOther(const PreRunCheckKey& key);
+    /// ms a change rests before it is checked (a held override key starts one check).
+    static constexpr int kRestMs = 300;
+
     /// Checks program (compiled for profile) under key, in the background; the check under way
     /// is cancelled. Nothing when key is the check already under way or done.
     void start(const PreRunCheckKey& key, const MachineProfile& profile,
@@ -82,6 +98,10 @@ class PreRunCheck : public QObject {
     State state_ = State::None;
     std::optional<ProgramCheck> result_;
     QString error_;
+    std::function<std::optional<PreRunCheckKey>()> currentKey_;
+    std::function<void(const PreRunCheckKey&)> startCheck_;
+    QTimer* rest_ = nullptr;                     ///< a change rests this long before a check
+    std::optional<PreRunCheckKey> pending_;      ///< waiting for rest_
     std::shared_ptr<std::atomic<bool>> cancel_;  ///< the check under way's
     int generation_ = 0;                         ///< a newer start makes an older result stale
 };

@@ -100,14 +100,9 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     // The pre-run check (issue 31 item 8): a change rests 300 ms first (a held override key
     // starts one check, when released).
     check_ = new PreRunCheck(this);
-    checkTimer_ = new QTimer(this);
-    checkTimer_->setSingleShot(true);
-    checkTimer_->setInterval(300);
-    connect(checkTimer_, &QTimer::timeout, this, [this] {
-        pendingCheck_.reset();
-        if (const std::optional<PreRunCheckKey> key = preRunCheckKey())
-            check_->start(*key, link_.profile(), program_);
-    });
+    check_->setScreen(
+        [this] { return preRunCheckKey(); },
+        [this](const PreRunCheckKey& key) { check_->start(key, link_.profile(), program_); });
     view_ = new WorkAreaView(this);
     const AxisTravel& x = profile.limits.x;
     const AxisTravel& y = profile.limits.y;
@@ -615,23 +610,11 @@ std::optional<PreRunCheckKey> XyMainWindow::preRunCheckKey() const {
 }
 
 bool XyMainWindow::preRunCheckReady() const {
-    const std::optional<PreRunCheckKey> key = preRunCheckKey();
-    if (!key) return false;
-    const PreRunCheck::State state = check_->stateFor(*key);
-    return state == PreRunCheck::State::Done || state == PreRunCheck::State::Failed;
+    return check_->ready();
 }
 
 void XyMainWindow::scheduleCheck() {
-    const std::optional<PreRunCheckKey> key = preRunCheckKey();
-    if (!key) {
-        pendingCheck_.reset();
-        checkTimer_->stop();
-        if (check_->key()) check_->clear();
-        return;
-    }
-    if (check_->key() == key || pendingCheck_ == key) return;
-    pendingCheck_ = key;
-    checkTimer_->start();  // (re)started: the check waits until the changes rest
+    check_->schedule();
 }
 
 void XyMainWindow::startProgram(bool ask) {
@@ -646,11 +629,7 @@ void XyMainWindow::startProgram(bool ask) {
         const QString file = QFileInfo(programPath_).fileName();
         PreRunCheckSaid check;
         if (const std::optional<PreRunCheckKey> key = preRunCheckKey()) {
-            if (check_->key() != key) {  // a change that has not rested yet: checked from now
-                checkTimer_->stop();
-                pendingCheck_.reset();
-                check_->start(*key, link_.profile(), program_);
-            }
+            check_->startIfOther(*key);  // a change that has not rested yet: checked from now
             check = PreRunCheckText::say(*check_, *key, link_.profile(), file);
         }
         const QString question =

@@ -195,8 +195,6 @@ class XyMainWindow : public OperatorFrame {
     QElapsedTimer journalClock_;
     bool journalWarned_ = false;
     PreRunCheck* check_ = nullptr;
-    QTimer* checkTimer_ = nullptr;  ///< a change of the override rests this long before a check
-    std::optional<PreRunCheckKey> pendingCheck_;  ///< waiting for checkTimer_
 };
 
 }  // namespace ui
