@@ -563,11 +563,8 @@ void MainWindow::requestCycleStart() {
         // The pre-run check's line, of this revision with the settings it runs with, or that
         // it still runs: the question never waits for it.
         const QString file = QFileInfo(selectedFile_).fileName();
-        PreRunCheckSaid check;
-        if (const std::optional<PreRunCheckKey> key = preRunCheckKey()) {
-            check_->startIfOther(*key);  // a change that has not rested yet: checked from now
-            check = PreRunCheckText::say(*check_, *key, link_.profile(), file);
-        }
+        const PreRunCheckSaid check =
+            PreRunCheckText::sayAtQuestion(*check_, link_.profile(), file);
         const QString question =
             tr("Execute %1? %2%3 Then it runs the program.")
                 .arg(

@@ -60,6 +60,10 @@ class PreRunCheck : public QObject {
     /// After a change (an edit, a load, the law, gains, override or dialect): the check of the
     /// screen's key starts once the changes have rested kRestMs; no program clears it.
     void schedule();
+    /// What the screen would check now (none: no program, or no screen set).
+    std::optional<PreRunCheckKey> screenKey() const {
+        return currentKey_ ? currentKey_() : std::nullopt;
+    }
     /// Whether the check of the screen's key is done or failed.
     bool ready() const;
     /// The question is asked now: a key the check is not of is checked from now.

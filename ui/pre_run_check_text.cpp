@@ -120,6 +120,14 @@ QString PreRunCheckText::line(const ProgramCheck& c, const MachineProfile& profi
         .arg(fixed(c.cycleTimeS, 1), fixed(c.worstFollowingErrorMm, 1));
 }
 
+PreRunCheckSaid PreRunCheckText::sayAtQuestion(PreRunCheck& check, const MachineProfile& profile,
+                                               const QString& file) {
+    const std::optional<PreRunCheckKey> key = check.screenKey();
+    if (!key) return {};
+    check.startIfOther(*key);
+    return say(check, *key, profile, file);
+}
+
 PreRunCheckSaid PreRunCheckText::say(const PreRunCheck& check, const PreRunCheckKey& key,
                                      const MachineProfile& profile, const QString& file) {
     PreRunCheckSaid said;

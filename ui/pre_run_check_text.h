@@ -26,6 +26,11 @@ class PreRunCheckText {
     /// program's file name, for the details' first line).
     static PreRunCheckSaid say(const PreRunCheck& check, const PreRunCheckKey& key,
                                const MachineProfile& profile, const QString& file);
+    /// At the question: the screen's program as it is now, checked from now when the check is
+    /// of another (a change that has not rested yet); its line, or that it still runs; nothing
+    /// with no program.
+    static PreRunCheckSaid sayAtQuestion(PreRunCheck& check, const MachineProfile& profile,
+                                         const QString& file);
     /// Only the line of a done check, run at feedOverride (0 to 1.5).
     static QString line(const ProgramCheck& check, const MachineProfile& profile,
                         double feedOverride = 1.0);

@@ -627,11 +627,8 @@ void XyMainWindow::startProgram(bool ask) {
         // The pre-run check's line, of this program at this override, or that it still runs:
         // the question never waits for it.
         const QString file = QFileInfo(programPath_).fileName();
-        PreRunCheckSaid check;
-        if (const std::optional<PreRunCheckKey> key = preRunCheckKey()) {
-            check_->startIfOther(*key);  // a change that has not rested yet: checked from now
-            check = PreRunCheckText::say(*check_, *key, link_.profile(), file);
-        }
+        const PreRunCheckSaid check =
+            PreRunCheckText::sayAtQuestion(*check_, link_.profile(), file);
         const QString question =
             tr("Run %1? %2%3")
                 .arg(
