@@ -260,11 +260,7 @@ int check(const QStringList& args) {
         QStringLiteral("Machine profile: a file, or the name of a shipped one "
                        "(rail, xy_dc_table, ...; default: rail)."),
         QStringLiteral("PROFILE"));
-    const QCommandLineOption massOpt(
-        QStringLiteral("mass-factor"),
-        QStringLiteral("Multiply the simulated moving mass, on the rail and the DC table (the "
-                       "controller is not told; refused on the plotter)."),
-        QStringLiteral("F"), QStringLiteral("1"));
+    const QCommandLineOption massOpt = simulatedMassOption();
     const QCommandLineOption maxOpt(
         QStringLiteral("max-seconds"),
         QStringLiteral("Give up a program still running after this much machine time, homing "
@@ -273,12 +269,8 @@ int check(const QStringList& args) {
     const QCommandLineOption seedOpt(QStringLiteral("seed"),
                                      QStringLiteral("Seed of the simulation's randomness."),
                                      QStringLiteral("N"));
-    const QCommandLineOption dialectOpt(QStringLiteral("dialect"),
-                                        QStringLiteral("classic or standard (default)."),
-                                        QStringLiteral("dialect"), QStringLiteral("standard"));
-    const QCommandLineOption langOpt(QStringLiteral("lang"),
-                                     QStringLiteral("Message language: en, pt_BR or es."),
-                                     QStringLiteral("lang"), QStringLiteral("en"));
+    const QCommandLineOption dialectOpt = dialectOption();
+    const QCommandLineOption langOpt = languageOption();
     const QCommandLineOption jsonOpt(QStringLiteral("json"),
                                      QStringLiteral("Print one JSON object."));
     parser.addOptions({machineOpt, massOpt, maxOpt, seedOpt, dialectOpt, langOpt, jsonOpt});

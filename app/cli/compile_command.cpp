@@ -25,13 +25,9 @@ int compileFile(const QStringList& args) {
     QCommandLineParser parser;
     parser.setApplicationDescription(
         QStringLiteral("Check a .G program and list every diagnostic."));
-    QCommandLineOption dialectOpt(QStringLiteral("dialect"),
-                                  QStringLiteral("classic or standard (default)."),
-                                  QStringLiteral("dialect"), QStringLiteral("standard"));
+    const QCommandLineOption dialectOpt = dialectOption();
     QCommandLineOption jsonOpt(QStringLiteral("json"), QStringLiteral("Print one JSON object."));
-    QCommandLineOption langOpt(QStringLiteral("lang"),
-                               QStringLiteral("Message language: en, pt_BR or es."),
-                               QStringLiteral("lang"), QStringLiteral("en"));
+    const QCommandLineOption langOpt = languageOption();
     QCommandLineOption machineOpt(
         QStringLiteral("machine"),
         QStringLiteral("Machine profile: axes and soft limits; a file, or the name of a shipped "

@@ -46,6 +46,23 @@ std::optional<QString> readAxis(const QCommandLineParser& parser, const QCommand
     return std::nullopt;
 }
 
+QCommandLineOption dialectOption() {
+    return {QStringLiteral("dialect"), QStringLiteral("classic or standard (default)."),
+            QStringLiteral("dialect"), QStringLiteral("standard")};
+}
+
+QCommandLineOption languageOption() {
+    return {QStringLiteral("lang"), QStringLiteral("Message language: en, pt_BR or es."),
+            QStringLiteral("lang"), QStringLiteral("en")};
+}
+
+QCommandLineOption simulatedMassOption() {
+    return {QStringLiteral("mass-factor"),
+            QStringLiteral("Multiply the simulated moving mass, on the rail and the DC table (the "
+                           "controller is not told; refused on the plotter)."),
+            QStringLiteral("F"), QStringLiteral("1")};
+}
+
 std::optional<QString> readDialect(const QCommandLineParser& parser, const QCommandLineOption& opt,
                                    Dialect& dialect) {
     const auto parsed = parseDialect(parser.value(opt).toStdString());

@@ -3,6 +3,7 @@
 // in its range, a seed, an axis. Each returns the one-line message naming the option and the
 // value typed when the value is wrong (the command reports it with usageError), nothing when
 // it is right or not given.
+#include <QCommandLineOption>
 #include <QString>
 #include <cstdint>
 #include <optional>
@@ -24,6 +25,12 @@ std::optional<QString> readSeed(const QCommandLineParser& parser, const QCommand
 /// --axis x|y into `axis` ('x' or 'y'), unchanged when not given.
 std::optional<QString> readAxis(const QCommandLineParser& parser, const QCommandLineOption& opt,
                                 char& axis);
+
+/// The options several commands take, named and explained the same in each one's --help:
+/// --dialect (classic or standard), --lang (en, pt_BR, es), --mass-factor F.
+QCommandLineOption dialectOption();
+QCommandLineOption languageOption();
+QCommandLineOption simulatedMassOption();
 
 /// --dialect classic|standard into `dialect`: "unknown dialect 'TEXT' (classic or standard)".
 std::optional<QString> readDialect(const QCommandLineParser& parser, const QCommandLineOption& opt,

@@ -114,25 +114,17 @@ int runCommand(const QStringList& args) {
     QCommandLineParser parser;
     parser.setApplicationDescription(
         QStringLiteral("Compile, home and run a program on the simulated rail."));
-    const QCommandLineOption dialectOpt(QStringLiteral("dialect"),
-                                        QStringLiteral("classic or standard (default)."),
-                                        QStringLiteral("dialect"), QStringLiteral("standard"));
+    const QCommandLineOption dialectOpt = dialectOption();
     const QCommandLineOption lawOpt(
         QStringLiteral("law"),
         QStringLiteral("The rail's law: classic (the 1996 equation, at its 10 ms) or engineered; "
                        "default: the profile's."),
         QStringLiteral("law"));
-    const QCommandLineOption langOpt(QStringLiteral("lang"),
-                                     QStringLiteral("Message language: en, pt_BR or es."),
-                                     QStringLiteral("lang"), QStringLiteral("en"));
+    const QCommandLineOption langOpt = languageOption();
     const QCommandLineOption virtualOpt(
         QStringLiteral("virtual-time"),
         QStringLiteral("Run in virtual time, as fast as possible."));
-    const QCommandLineOption massOpt(
-        QStringLiteral("mass-factor"),
-        QStringLiteral("Multiply the simulated moving mass, on the rail and the DC table (the "
-                       "controller is not told; refused on the plotter)."),
-        QStringLiteral("F"), QStringLiteral("1"));
+    const QCommandLineOption massOpt = simulatedMassOption();
     const QCommandLineOption continueOpt(
         QStringLiteral("continue-after"),
         QStringLiteral("Press Continue this many seconds after each m00."),
