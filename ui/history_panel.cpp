@@ -2,6 +2,7 @@
 
 #include <QEvent>
 #include <QFileDialog>
+#include <QFontMetrics>
 #include <QFutureWatcher>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -10,6 +11,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
+#include <algorithm>
 
 #include "core/journal/journal.h"
 #include "ui/background_pool.h"
@@ -70,6 +72,22 @@ QString HistoryPanel::kindText(const QString& kind) {
 
 void HistoryPanel::retranslate() {
     table_->setHorizontalHeaderLabels({tr("Time"), tr("Kind"), tr("Code"), tr("Text")});
+    // Time and Kind wide enough for their longest text in this font and language (a fixed
+    // width: measuring 10,000 rows at each line would cost the screens' thread); Text takes
+    // the rest.
+    const QFontMetrics fm = table_->fontMetrics();
+    constexpr int kPad = 16;  // the cell's margins and the grid line
+    table_->setColumnWidth(0,
+                           std::max(fm.horizontalAdvance(QStringLiteral("8888-88-88 88:88:88.888")),
+                                    fm.horizontalAdvance(tr("Time"))) +
+                               kPad);
+    int kindWidth = fm.horizontalAdvance(tr("Kind"));
+    for (const char* kind : {"alarm", "warning", "ack", "status", "start", "stop"})
+        kindWidth = std::max(kindWidth, fm.horizontalAdvance(kindText(QLatin1String(kind))));
+    table_->setColumnWidth(1, kindWidth + kPad);
+    table_->setColumnWidth(
+        2, std::max(fm.horizontalAdvance(QStringLiteral("88")), fm.horizontalAdvance(tr("Code"))) +
+               kPad);
     for (int r = 0; r < table_->rowCount(); ++r)
         if (QTableWidgetItem* k = table_->item(r, 1))
             k->setText(kindText(k->data(Qt::UserRole).toString()));

@@ -244,6 +244,32 @@ class OperatorScreensTest : public QObject {
                  qPrintable(real->toolTip()));
     }
 
+    void historyColumnsShowTheirWholeText() {
+        // Issue 31 item 6: the History's Time column cut its time. Time, Kind and Code show
+        // their whole text in each language.
+        struct English {
+            ~English() { installLanguage(QStringLiteral("en")); }
+        } english;
+        for (const char* lang : {"en", "pt_BR", "es"}) {
+            installLanguage(QString::fromLatin1(lang));
+            HistoryPanel history;
+            history.add(QStringLiteral("2026-12-06 03:07:25.123"), QStringLiteral("warning"), 14,
+                        QStringLiteral("Warning 14: ..."));
+            history.add(QStringLiteral("2026-12-06 03:07:26.000"), QStringLiteral("ack"), 3,
+                        QStringLiteral("Alarm 3 acknowledged."));
+            QTableWidget* t = history.table();
+            const QFontMetrics fm = t->fontMetrics();
+            for (int row = 0; row < t->rowCount(); ++row)
+                for (int column = 0; column < 3; ++column) {
+                    const QString text = t->item(row, column)->text();
+                    QVERIFY2(t->columnWidth(column) >= fm.horizontalAdvance(text) + 8,
+                             qPrintable(QStringLiteral("%1: '%2' in %3 px")
+                                            .arg(QLatin1String(lang), text)
+                                            .arg(t->columnWidth(column))));
+                }
+        }
+    }
+
     void theSetpointShowsOnlyWhileTheLoopHasOne() {
         // Issue 31 item 2: the Loop's Setpoint kept 850.00 in Manual after an E-stop and its
         // reset; a setpoint is shown only while the position loop follows or holds one.
