@@ -54,6 +54,7 @@
 #include "ui/dnc_link.h"
 #include "ui/dnc_settings.h"
 #include "ui/guide_dialog.h"
+#include "ui/history_panel.h"
 #include "ui/keys_dialog.h"
 #include "ui/machine_link.h"
 #include "ui/machine_screens.h"
@@ -110,8 +111,8 @@ void writeKilledJournal(const QString& path) {
 /// Every line of the screen's history, one a line.
 QString historyText(const XyMainWindow& w) {
     QStringList lines;
-    for (int i = 0; i < w.history()->count(); ++i)
-        lines << w.history()->item(i)->text();
+    for (int i = 0; i < w.history()->table()->rowCount(); ++i)
+        lines << w.history()->table()->item(i, 3)->text();
     return lines.join(QLatin1Char('\n'));
 }
 
@@ -473,6 +474,41 @@ class XyScreensTest : public QObject {
         MachineLink railLink(MachineProfile::rail());
         MainWindow rail(railLink, settings);
         check(rail, "rail");
+    }
+
+    void xyHistoryIsTheRailsWithTimeKindCodeAndAcknowledge() {
+        // Issue 31 item 6: the XY History was a plain list (no time, code, export or
+        // acknowledge). It is the rail's: an alarm's row has its time, kind and code, and the
+        // History's Acknowledge acknowledges it.
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        w.setConfirmer([](const QString&, const QString&) { return true; });
+        w.simulation()->jamX()->click();
+        w.tablePanel()->xBox()->setValue(100);
+        w.tablePanel()->yBox()->setValue(0);
+        w.tablePanel()->sendButton()->click();
+        QVERIFY(advanceUntil(
+            *link, [&] { return link->status().activeAlarms != 0; }, 30.0));
+        w.simulation()->clearAll()->click();
+        link->advance(0.1);
+        QTableWidget* t = w.history()->table();
+        int alarmRow = -1;
+        for (int row = 0; row < t->rowCount(); ++row)
+            if (t->item(row, 1)->data(Qt::UserRole).toString() == QLatin1String("alarm"))
+                alarmRow = row;
+        QVERIFY(alarmRow >= 0);
+        QVERIFY(QDateTime::fromString(t->item(alarmRow, 0)->text(),
+                                      QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz"))
+                    .isValid());
+        QCOMPARE(t->item(alarmRow, 2)->text(),
+                 QString::number(static_cast<int>(link->status().lastAlarm)));
+        auto* ack = w.history()->findChild<QPushButton*>();
+        QVERIFY(ack);
+        ack->click();
+        link->advance(0.1);
+        QCOMPARE(link->status().activeAlarms, 0u);
     }
 
     void homeIsDisabledWhileTheEmergencyStopIsLatched() {
@@ -1215,7 +1251,7 @@ class XyScreensTest : public QObject {
         QVERIFY(std::abs(s.sample.y.positionMm - last.to.y()) < 0.11);
         QVERIFY(w.workArea()->followedCount() > 20);
         QVERIFY(w.plots()->pointCount() > 20);
-        QVERIFY(w.history()->count() > 3);
+        QVERIFY(w.history()->table()->rowCount() > 3);
         QVERIFY(w.positionLabel()->text().contains(QString::number(s.sample.x.positionMm, 'f', 2)));
     }
 
@@ -1513,9 +1549,9 @@ class XyScreensTest : public QObject {
         w.setConfirmer([](const QString&, const QString&) { return true; });
         QVERIFY(!w.selectProgram(bad));
         QVERIFY(!w.startButton()->isEnabled());
-        QVERIFY(w.history()->count() >= 1);
-        QVERIFY(w.history()->item(0)->text().contains(QStringLiteral("bad.G")));
-        QVERIFY(w.history()->item(0)->text().contains(QStringLiteral("2")));  // the line
+        QVERIFY(w.history()->table()->rowCount() >= 1);
+        QVERIFY(w.history()->table()->item(0, 3)->text().contains(QStringLiteral("bad.G")));
+        QVERIFY(w.history()->table()->item(0, 3)->text().contains(QStringLiteral("2")));  // line
     }
 
     /// The plotter's board on a serial line (trilho-device behind socat, so the line can be
@@ -1556,8 +1592,8 @@ class XyScreensTest : public QObject {
         QVERIFY(w.selectProgram(QStringLiteral(TRILHO_PROGRAMS_DIR "/plotter_quadrado.G")));
         w.startButton()->click();
         auto historyHas = [&](const QString& text) {
-            for (int i = 0; i < w.history()->count(); ++i)
-                if (w.history()->item(i)->text().contains(text)) return true;
+            for (int i = 0; i < w.history()->table()->rowCount(); ++i)
+                if (w.history()->table()->item(i, 3)->text().contains(text)) return true;
             return false;
         };
         QTRY_VERIFY_WITH_TIMEOUT(historyHas(QStringLiteral("Line to x=36.6 y=36")), 15000);

@@ -49,6 +49,7 @@
 #include "host/dnc/xy_dnc_machine.h"
 #include "ui/background_pool.h"
 #include "ui/dnc_link.h"
+#include "ui/history_panel.h"
 #include "ui/journal_notice.h"
 #include "ui/machine_choice.h"
 #include "ui/pre_run_check_text.h"
@@ -113,8 +114,10 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
         QRectF(x.softMinMm, y.softMinMm, x.softMaxMm - x.softMinMm, y.softMaxMm - y.softMinMm),
         origin);
     plots_ = new XyPlots(this);
-    history_ = new QListWidget(this);
+    // The rail's History (issue 31 item 6): time, kind, code, Acknowledge and Export CSV.
+    history_ = new HistoryPanel(this);
     history_->setObjectName(QStringLiteral("xyHistory"));
+    connect(history_, &HistoryPanel::acknowledgeRequested, this, &XyMainWindow::acknowledgeAlarms);
 
     // The readout: big figures an operator reads from a step away.
     state_ = new QLabel(this);
@@ -675,6 +678,7 @@ bool XyMainWindow::openJournal(const QString& path, QString* error) {
         return false;
     }
     journalPath_ = journal_->path();  // this process' own file when another trilho keeps path
+    history_->setJournalPath(journalPath_);  // History's Export CSV reads it
     journal_->markStart(Journal::whoAmI());
     // After screens that stopped without their end mark: what is known of the machine now.
     // A simulated plant is made with this screen at its origin; a board outlived the screens.
@@ -724,12 +728,8 @@ void XyMainWindow::addHistory(const QString& line, const QString& kind, int alar
         statusBar()->showMessage(
             tr("The history could not be written: %1").arg(journal_->health().error), 15000);
     }
-    auto* item = new QListWidgetItem(line, history_);
-    if (kind == QLatin1String("alarm")) item->setForeground(QColor(190, 0, 0));
-    if (kind == QLatin1String("warning")) item->setForeground(QColor(150, 90, 0));  // amber
-    while (history_->count() > 2000)
-        delete history_->takeItem(0);
-    history_->scrollToBottom();
+    history_->add(QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")),
+                  kind, alarmCode, line);
 }
 
 void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,

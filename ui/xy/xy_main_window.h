@@ -30,6 +30,8 @@ class Journal;
 class SerialLinkMotion;
 namespace ui {
 
+class HistoryPanel;
+
 class WorkAreaView;
 class XyPlots;
 class DcTablePanel;
@@ -86,7 +88,7 @@ class XyMainWindow : public OperatorFrame {
     XyPlots* plots() const { return plots_; }
     DcTablePanel* tablePanel() const { return table_; }
     PlotterPanel* plotterPanel() const { return plotter_; }
-    QListWidget* history() const { return history_; }
+    HistoryPanel* history() const { return history_; }
     QLabel* stateLabel() const { return state_; }
     QLabel* positionLabel() const { return position_; }
     QPushButton* startButton() const { return start_; }
@@ -158,7 +160,7 @@ class XyMainWindow : public OperatorFrame {
     XyPlots* plots_;
     DcTablePanel* table_ = nullptr;
     PlotterPanel* plotter_ = nullptr;
-    QListWidget* history_;
+    HistoryPanel* history_;
     QLabel *state_, *position_, *block_, *program_label_;
     QPushButton *open_, *automaticButton_, *start_, *hold_, *resume_, *stop_, *estopPush_,
         *resetPush_, *ackPush_;
