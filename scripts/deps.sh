@@ -25,6 +25,10 @@ TRILHO_PACKAGES=(
   # use, are in fonts-dejavu-extra), and Noto Sans Mono, the monospace fontconfig picks once
   # fonts-noto-mono is on a desktop (it moved the rail's readout by 11 px at 1024x768).
   fonts-dejavu-core fonts-dejavu-extra fonts-noto-mono
+  # and the other sets a Debian 12 desktop may bring, which the layout test runs with each
+  # (layoutHoldsWithEachFontSet): Noto Sans (fontconfig's "Sans Serif" once installed, KDE's
+  # font), Liberation (GNOME, LibreOffice) and URW base35 (Ghostscript, ImageMagick).
+  fonts-noto-core fonts-liberation2 fonts-urw-base35
 )
 check=1
 [ "${1:-}" = "--no-check" ] && check=0

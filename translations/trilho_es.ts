@@ -1338,12 +1338,16 @@
 <context>
     <name>trilho::ui::JogPanel</name>
     <message>
-        <source>◀ hold to jog</source>
-        <translation>◀ mantenga para mover</translation>
+        <source>Hold a key to jog</source>
+        <translation>Mantenga una tecla para mover</translation>
     </message>
     <message>
-        <source>hold to jog ▶</source>
-        <translation>mantenga para mover ▶</translation>
+        <source>Hold to jog toward -X</source>
+        <translation>Mantenga para mover hacia -X</translation>
+    </message>
+    <message>
+        <source>Hold to jog toward +X</source>
+        <translation>Mantenga para mover hacia +X</translation>
     </message>
     <message>
         <source>Jog speed %1 mm/s</source>

@@ -1338,12 +1338,16 @@
 <context>
     <name>trilho::ui::JogPanel</name>
     <message>
-        <source>◀ hold to jog</source>
-        <translation>◀ segure para mover</translation>
+        <source>Hold a key to jog</source>
+        <translation>Segure uma tecla para mover</translation>
     </message>
     <message>
-        <source>hold to jog ▶</source>
-        <translation>segure para mover ▶</translation>
+        <source>Hold to jog toward -X</source>
+        <translation>Segure para mover para -X</translation>
+    </message>
+    <message>
+        <source>Hold to jog toward +X</source>
+        <translation>Segure para mover para +X</translation>
     </message>
     <message>
         <source>Jog speed %1 mm/s</source>

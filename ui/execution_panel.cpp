@@ -10,6 +10,7 @@
 #include <QPainter>
 #include <QPushButton>
 #include <QStyleOption>
+#include <QVBoxLayout>
 #include <cmath>
 
 #include "ui/gauge_widget.h"
@@ -54,7 +55,6 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
     auto* grid = new QGridLayout(this);
     grid->setContentsMargins(16, 2, 16, 2);
     grid->setHorizontalSpacing(36);
-    grid->setVerticalSpacing(2);
 
     // Alarmes and Status, the two drop-down lists across the top (360,120 / 1560,120,7695,300).
     alarmsLabel_ = new QLabel(this);
@@ -74,7 +74,6 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
     top->addWidget(statusLabel_, 1, 0);
     top->addWidget(status_, 1, 1);
     top->setColumnStretch(1, 1);
-    grid->addLayout(top, 0, 0);
 
     // Modo Automático (600,1200,3975,2175).
     autoFrame_ = frame(this);
@@ -199,14 +198,24 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
     l->addWidget(error_, 2, 1, 1, 2);
     l->setColumnStretch(1, 1);
 
-    grid->addWidget(autoFrame_, 1, 0, 2, 1);
-    grid->addWidget(manualFrame_, 3, 0, 2, 1);
-    grid->addWidget(dataFrame_, 0, 1, 2, 1);
-    grid->addWidget(controllerFrame_, 2, 1, 2, 1);
-    grid->addWidget(loopFrame_, 4, 1);
+    // Two columns stacked on their own, as the VB form's frames were: in one grid the frames
+    // that span rows of the other column left 10 px unused at 10 pt (issue 35).
+    auto* leftColumn = new QVBoxLayout;
+    auto* rightColumn = new QVBoxLayout;
+    for (QVBoxLayout* column : {leftColumn, rightColumn})
+        column->setSpacing(2);
+    leftColumn->addLayout(top);
+    leftColumn->addWidget(autoFrame_);
+    leftColumn->addWidget(manualFrame_, 1);  // down to the Loop frame's bottom, as on the form
+    rightColumn->addWidget(dataFrame_);
+    rightColumn->addWidget(controllerFrame_);
+    rightColumn->addWidget(loopFrame_);
+    rightColumn->addStretch(1);
+    grid->addLayout(leftColumn, 0, 0);
+    grid->addLayout(rightColumn, 0, 1);
     grid->setColumnStretch(0, 4);
     grid->setColumnStretch(1, 3);
-    grid->setRowStretch(5, 1);
+    grid->setRowStretch(1, 1);  // below the frames, not inside them
 
     connect(continue_, &QPushButton::clicked, this, &ExecutionPanel::continuePressed);
     connect(left_, &QPushButton::clicked, this, &ExecutionPanel::leftPressed);
@@ -214,6 +223,17 @@ ExecutionPanel::ExecutionPanel(QWidget* parent) : QWidget(parent) {
     connect(stop_, &QPushButton::clicked, this, &ExecutionPanel::stopPressed);
     retranslate();
     setAutomaticMode(false);
+    fitRows();
+}
+
+void ExecutionPanel::fitRows() {
+    for (QWidget* w : findChildren<QWidget*>()) {
+        if (!qobject_cast<QLineEdit*>(w) && !qobject_cast<QComboBox*>(w)) continue;
+        if (qobject_cast<QComboBox*>(w->parentWidget())) continue;  // a combo's own line edit
+        w->setFixedHeight(w->fontMetrics().height() + 5);
+    }
+    for (QPushButton* b : {continue_, stop_})
+        b->setFixedHeight(b->fontMetrics().height() + 5);
 }
 
 void ExecutionPanel::retranslate() {
@@ -250,6 +270,7 @@ void ExecutionPanel::paintEvent(QPaintEvent*) {
 
 void ExecutionPanel::changeEvent(QEvent* e) {
     if (e->type() == QEvent::LanguageChange) retranslate();
+    if (e->type() == QEvent::FontChange || e->type() == QEvent::StyleChange) fitRows();
     QWidget::changeEvent(e);
 }
 

@@ -71,6 +71,11 @@ class ExecutionPanel : public QWidget {
         QPaintEvent* e) override;  ///< lets the theme's style sheet paint the background
 
   private:
+    /// Fields and the buttons among them as tall as the text plus 6 px, not the style's h + 8:
+    /// the 285-twip (19 px) boxes of the VB form, and the form's height follows the font's line
+    /// rather than the style's padding (issue 35: at 10 pt in Nimbus Sans the form needed
+    /// 343 px of the 308 a 768-line screen leaves it).
+    void fitRows();
     void retranslate();
     QLineEdit* readOnly();
     QComboBox *alarms_, *status_;

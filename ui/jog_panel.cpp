@@ -27,19 +27,31 @@ JogPanel::JogPanel(QWidget* parent) : QWidget(parent) {
     speed_->setValue(40);
     speedLabel_ = new QLabel(this);
     incrementLabel_ = new QLabel(this);
+    holdLabel_ = new QLabel(this);
+    // The arrows alone on the keys, the words once above them: two keys that each said
+    // "◀ mantenga para mover" made the dock 361 px wide in es at 10 pt, and the window 1068 px
+    // on a 1024 screen (issue 35).
+    for (QPushButton* b : {holdLeft_, holdRight_}) {
+        QFont f = b->font();
+        f.setBold(true);
+        b->setFont(f);
+    }
+    holdLeft_->setText(QStringLiteral("◀"));
+    holdRight_->setText(QStringLiteral("▶"));
     auto* g = new QGridLayout(this);
     // Labels above their controls: the dock stays narrow enough for a 1024-wide screen.
-    g->addWidget(holdLeft_, 0, 0);
-    g->addWidget(holdRight_, 0, 1);
-    g->addWidget(speedLabel_, 1, 0, 1, 2);
-    g->addWidget(speed_, 2, 0, 1, 2);
-    g->addWidget(incrementLabel_, 3, 0, 1, 2);
+    g->addWidget(holdLabel_, 0, 0, 1, 2);
+    g->addWidget(holdLeft_, 1, 0);
+    g->addWidget(holdRight_, 1, 1);
+    g->addWidget(speedLabel_, 2, 0, 1, 2);
+    g->addWidget(speed_, 3, 0, 1, 2);
+    g->addWidget(incrementLabel_, 4, 0, 1, 2);
     auto* steps = new QHBoxLayout;
     steps->addWidget(stepMinus_);
     steps->addWidget(increment_);
     steps->addWidget(stepPlus_);
-    g->addLayout(steps, 4, 0, 1, 2);
-    g->setRowStretch(5, 1);
+    g->addLayout(steps, 5, 0, 1, 2);
+    g->setRowStretch(6, 1);
 
     connect(holdLeft_, &QPushButton::pressed, this, [this] { emit jogStart(-1); });
     connect(holdRight_, &QPushButton::pressed, this, [this] { emit jogStart(+1); });
@@ -70,8 +82,11 @@ void JogPanel::setManual(bool manual) {
 }
 
 void JogPanel::retranslate() {
-    holdLeft_->setText(tr("◀ hold to jog"));
-    holdRight_->setText(tr("hold to jog ▶"));
+    holdLabel_->setText(tr("Hold a key to jog"));
+    holdLeft_->setToolTip(tr("Hold to jog toward -X"));
+    holdRight_->setToolTip(tr("Hold to jog toward +X"));
+    holdLeft_->setAccessibleName(holdLeft_->toolTip());
+    holdRight_->setAccessibleName(holdRight_->toolTip());
     // The operator thinks in mm/s, as the Speed field shows; the slider is a share of the cap.
     speedLabel_->setText(tr("Jog speed %1 mm/s").arg(std::lround(jogFraction() * rapidMmS_)));
     incrementLabel_->setText(tr("Step"));

@@ -37,7 +37,7 @@ class JogPanel : public QWidget {
     QPushButton *holdLeft_, *holdRight_, *stepMinus_, *stepPlus_;
     QSlider* speed_;
     QComboBox* increment_;
-    QLabel *speedLabel_, *incrementLabel_;
+    QLabel *speedLabel_, *incrementLabel_, *holdLabel_;
     double rapidMmS_ = 0.0, maxFraction_ = 0.5;
 };
 

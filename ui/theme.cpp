@@ -54,7 +54,7 @@ void applyTheme(QApplication& app, Theme theme) {
     app.setStyleSheet(QStringLiteral(
         "QWidget#executionPanel, QWidget#startScreen { background-color: rgb(128,128,255); }"
         "QGroupBox#vbFrame { background-color: rgb(192,192,192); border: 2px groove white; "
-        "margin-top: 1.2em; }"
+        "margin-top: 1em; }"
         "QGroupBox#vbFrame::title { subcontrol-origin: margin; left: 8px; padding: 0 3px; }"
         // The form's captions were bold, italic, underlined labels inside the silver boxes.
         "QGroupBox#vbFrame { font-weight: bold; font-style: italic; text-decoration: underline; }"

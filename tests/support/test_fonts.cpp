@@ -16,6 +16,8 @@ namespace testing {
 namespace {
 const QString kDejaVu = QStringLiteral("/usr/share/fonts/truetype/dejavu/");
 const QString kNoto = QStringLiteral("/usr/share/fonts/truetype/noto/");
+const QString kLiberation = QStringLiteral("/usr/share/fonts/truetype/liberation2/");
+const QString kUrw = QStringLiteral("/usr/share/fonts/opentype/urw-base35/");
 
 QStringList dejaVuSans() {
     return {kDejaVu + QStringLiteral("DejaVuSans.ttf"),
@@ -73,6 +75,44 @@ FontSet dejaVuWithNotoMono(int pointSize) {
             {kNoto + QStringLiteral("NotoSansMono-Regular.ttf"),
              kNoto + QStringLiteral("NotoSansMono-Bold.ttf")},
             pointSize};
+}
+
+FontSet notoFonts(int pointSize) {
+    return {
+        QStringLiteral("Noto %1 pt").arg(pointSize),
+        {kNoto + QStringLiteral("NotoSans-Regular.ttf"),
+         kNoto + QStringLiteral("NotoSans-Bold.ttf"), kNoto + QStringLiteral("NotoSans-Italic.ttf"),
+         kNoto + QStringLiteral("NotoSans-BoldItalic.ttf")},
+        {kNoto + QStringLiteral("NotoSansMono-Regular.ttf"),
+         kNoto + QStringLiteral("NotoSansMono-Bold.ttf")},
+        pointSize};
+}
+
+FontSet liberationFonts(int pointSize) {
+    return {QStringLiteral("Liberation %1 pt").arg(pointSize),
+            {kLiberation + QStringLiteral("LiberationSans-Regular.ttf"),
+             kLiberation + QStringLiteral("LiberationSans-Bold.ttf"),
+             kLiberation + QStringLiteral("LiberationSans-Italic.ttf"),
+             kLiberation + QStringLiteral("LiberationSans-BoldItalic.ttf")},
+            {kLiberation + QStringLiteral("LiberationMono-Regular.ttf"),
+             kLiberation + QStringLiteral("LiberationMono-Bold.ttf")},
+            pointSize};
+}
+
+FontSet urwFonts(int pointSize) {
+    return {QStringLiteral("URW Nimbus %1 pt").arg(pointSize),
+            {kUrw + QStringLiteral("NimbusSans-Regular.otf"),
+             kUrw + QStringLiteral("NimbusSans-Bold.otf"),
+             kUrw + QStringLiteral("NimbusSans-Italic.otf"),
+             kUrw + QStringLiteral("NimbusSans-BoldItalic.otf")},
+            {kUrw + QStringLiteral("NimbusMonoPS-Regular.otf"),
+             kUrw + QStringLiteral("NimbusMonoPS-Bold.otf")},
+            pointSize};
+}
+
+QList<FontSet> everyFontSet(int pointSize) {
+    return {dejaVuFonts(pointSize), dejaVuWithNotoMono(pointSize), notoFonts(pointSize),
+            liberationFonts(pointSize), urwFonts(pointSize)};
 }
 
 QString useFonts(const FontSet& set) {

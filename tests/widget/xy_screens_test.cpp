@@ -1429,6 +1429,44 @@ class XyScreensTest : public QObject {
         }
     }
 
+    // Issue 35: both XY windows fit 1366x768 and 1024x768 with each font set a Debian 12
+    // desktop may bring (DejaVu, Noto, Liberation, URW Nimbus), at 9 pt and at 10 pt, in every
+    // language.
+    void xyWindowsFitWithEachFontSet() {
+        struct Restore {
+            ~Restore() { testing::useFontsOrDie(testing::dejaVuFonts()); }
+        } restore;
+        for (int points : {9, 10})
+            for (const testing::FontSet& set : testing::everyFontSet(points)) {
+                const QString error = testing::useFonts(set);
+                QVERIFY2(error.isEmpty(), qPrintable(error));
+                for (const char* machine : {"xy_dc_table.json", "xy_plotter.json"})
+                    for (const QSize screen : {QSize(1366, 768), QSize(1024, 768)}) {
+                        QTemporaryDir dir;
+                        QSettings settings(dir.filePath(QStringLiteral("s.ini")),
+                                           QSettings::IniFormat);
+                        auto link = virtualLink(shipped(machine));
+                        XyMainWindow w(*link, settings);
+                        struct English {
+                            XyMainWindow& window;
+                            ~English() { window.setLanguage(QStringLiteral("en")); }
+                        } english{w};
+                        w.resize(screen.width(), screen.height() - 30);
+                        w.show();
+                        QVERIFY(QTest::qWaitForWindowExposed(&w));
+                        for (const char* lang : {"en", "pt_BR", "es"}) {
+                            w.setLanguage(QString::fromLatin1(lang));
+                            QCoreApplication::processEvents();
+                            checkFits(
+                                w, screen,
+                                QStringLiteral("%1 with %2 in %3")
+                                    .arg(QLatin1String(machine), set.name, QLatin1String(lang)));
+                            if (QTest::currentTestFailed()) return;
+                        }
+                    }
+            }
+    }
+
     // Issue 21: the workbench from the DC table's window, per axis; on the plotter (no encoder)
     // its margin test.
     void theDcTableOpensTheWorkbenchAndThePlotterItsMarginTest() {
