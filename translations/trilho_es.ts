@@ -2529,6 +2529,14 @@
         <translation>Seleccionar</translation>
     </message>
     <message>
+        <source>Examples</source>
+        <translation>Ejemplos</translation>
+    </message>
+    <message>
+        <source>Home folder</source>
+        <translation>Carpeta personal</translation>
+    </message>
+    <message>
         <source>Path</source>
         <translation>Ruta</translation>
     </message>
@@ -2537,8 +2545,16 @@
         <translation>Archivos</translation>
     </message>
     <message>
+        <source>&amp;Open</source>
+        <translation>&amp;Abrir</translation>
+    </message>
+    <message>
         <source>E&amp;xit</source>
         <translation>Sa&amp;lir</translation>
+    </message>
+    <message>
+        <source>Files (%1 for other machines not shown)</source>
+        <translation>Archivos (%1 de otras máquinas no mostrados)</translation>
     </message>
 </context>
 <context>

@@ -2529,6 +2529,14 @@
         <translation>Selecionar</translation>
     </message>
     <message>
+        <source>Examples</source>
+        <translation>Exemplos</translation>
+    </message>
+    <message>
+        <source>Home folder</source>
+        <translation>Pasta pessoal</translation>
+    </message>
+    <message>
         <source>Path</source>
         <translation>Caminho</translation>
     </message>
@@ -2537,8 +2545,16 @@
         <translation>Arquivos</translation>
     </message>
     <message>
+        <source>&amp;Open</source>
+        <translation>&amp;Abrir</translation>
+    </message>
+    <message>
         <source>E&amp;xit</source>
         <translation>Sai&amp;r</translation>
+    </message>
+    <message>
+        <source>Files (%1 for other machines not shown)</source>
+        <translation>Arquivos (%1 de outras máquinas não mostrados)</translation>
     </message>
 </context>
 <context>

@@ -399,6 +399,7 @@ void MainWindow::setTheme(Theme theme) {
 void MainWindow::chooseFile() {
     SelectFileDialog dialog(settings_.value(QStringLiteral("lastFolder"), examplesDir()).toString(),
                             this);
+    dialog.showOnlyProgramsFor(compileOptions());  // not the XY tables' programs
     if (dialog.exec() == QDialog::Accepted && !dialog.selectedFile().isEmpty())
         selectProgram(dialog.selectedFile());
     settings_.setValue(QStringLiteral("lastFolder"), dialog.currentFolder());

@@ -897,12 +897,16 @@ class OperatorScreensTest : public QObject {
                 return found.isValid();
             }(),
             10000);
-        // Up in the folder tree goes to the parent folder, as a click would.
+        // Up in the folder tree goes to the parent folder, as a click would (in a folder below
+        // the place's root: the examples' folder is a place, the top of its tree).
+        QTemporaryDir outside;
+        QVERIFY(QDir(outside.path()).mkpath(QStringLiteral("sub")));
+        dialog.setFolder(outside.filePath(QStringLiteral("sub")));
         QTreeView* tree = dialog.folderTree();
         tree->setFocus();
         QTest::keyClick(tree, Qt::Key_Left);  // collapse, then
         QTest::keyClick(tree, Qt::Key_Left);  // to the parent
-        QTRY_COMPARE(QDir(dialog.currentFolder()), QDir(QStringLiteral(TRILHO_PROGRAMS_DIR "/..")));
+        QTRY_COMPARE(QDir(dialog.currentFolder()), QDir(outside.path()));
         // A folder typed in the path field, then Enter on a file, opens it.
         dialog.pathField()->setFocus();
         dialog.pathField()->setText(QStringLiteral(TRILHO_PROGRAMS_DIR));
@@ -924,6 +928,76 @@ class OperatorScreensTest : public QObject {
         QTest::keyClick(list, Qt::Key_Return);
         QCOMPARE(dialog.result(), int(QDialog::Accepted));
         QCOMPARE(QFileInfo(dialog.selectedFile()).fileName(), QStringLiteral("ciclo_carga.G"));
+    }
+
+    // Issue 31 item 6: the Select dialog has an Open button (the default, live once a file is
+    // chosen), roots its folder tree at the place the folder is in (the examples), not at "/",
+    // and on the rail lists only programs the rail can run: the XY examples name a y axis.
+    void selectDialogOpensRootsAtItsPlaceAndListsOnlyTheRailsPrograms() {
+        SelectFileDialog dialog(QStringLiteral(TRILHO_PROGRAMS_DIR));
+        dialog.showOnlyProgramsFor(CompileOptions{});  // the rail: x only
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        QCOMPARE(QDir(dialog.treeRoot()), QDir(QStringLiteral(TRILHO_PROGRAMS_DIR)));
+        QListView* list = dialog.fileList();
+        const auto names = [&] {
+            QStringList all;
+            for (int r = 0; r < list->model()->rowCount(list->rootIndex()); ++r)
+                all << list->model()->index(r, 0, list->rootIndex()).data().toString();
+            return all;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(names().contains(QLatin1String("ciclo_carga.G")), 10000);
+        // The XY examples, by their names (mesa_xy_*, plotter_*), are not listed; each of them
+        // names y (checked here, not taken from the dialog).
+        int xyExamples = 0;
+        for (const QFileInfo& f : QDir(QStringLiteral(TRILHO_PROGRAMS_DIR))
+                                      .entryInfoList({QStringLiteral("*.G")}, QDir::Files)) {
+            const bool xy = f.fileName().startsWith(QLatin1String("mesa_xy_")) ||
+                            f.fileName().startsWith(QLatin1String("plotter_"));
+            if (!xy) continue;
+            ++xyExamples;
+            QVERIFY2(!names().contains(f.fileName()), qPrintable(f.fileName()));
+        }
+        QVERIFY(xyExamples >= 2);
+        QTRY_COMPARE(dialog.filesLabel()->text(),
+                     QStringLiteral("Files (%1 for other machines not shown)").arg(xyExamples));
+        // Open: the default button, live once a file is chosen; it opens that file.
+        QVERIFY(dialog.openButton()->isDefault());
+        QVERIFY(!dialog.openButton()->isEnabled());
+        const int row = static_cast<int>(names().indexOf(QLatin1String("ciclo_carga.G")));
+        list->setCurrentIndex(list->model()->index(row, 0, list->rootIndex()));
+        QVERIFY(dialog.openButton()->isEnabled());
+        dialog.openButton()->click();
+        QCOMPARE(dialog.result(), int(QDialog::Accepted));
+        QCOMPARE(QFileInfo(dialog.selectedFile()).fileName(), QStringLiteral("ciclo_carga.G"));
+    }
+
+    // The places: choosing the home folder roots the tree there; without a machine every
+    // program is listed.
+    void selectDialogPlacesRootTheTree() {
+        SelectFileDialog dialog(QStringLiteral(TRILHO_PROGRAMS_DIR));
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        QComboBox* places = dialog.placeList();
+        const int home = places->findData(QDir::homePath());
+        QVERIFY(home >= 0);
+        places->setCurrentIndex(home);
+        emit places->activated(home);
+        QCOMPARE(QDir(dialog.treeRoot()), QDir(QDir::homePath()));
+        QCOMPARE(QDir(dialog.currentFolder()), QDir(QDir::homePath()));
+        dialog.setFolder(QStringLiteral(TRILHO_PROGRAMS_DIR));
+        QCOMPARE(QDir(dialog.treeRoot()), QDir(QStringLiteral(TRILHO_PROGRAMS_DIR)));
+        QListView* list = dialog.fileList();
+        QTRY_VERIFY_WITH_TIMEOUT(
+            [&] {
+                for (int r = 0; r < list->model()->rowCount(list->rootIndex()); ++r)
+                    if (list->model()->index(r, 0, list->rootIndex()).data().toString() ==
+                        QLatin1String("mesa_xy_quadrado.G"))
+                        return true;
+                return false;
+            }(),
+            10000);
+        QCOMPARE(dialog.filesLabel()->text(), QStringLiteral("Files"));
     }
 
     // ---- (10) small defects ----
