@@ -22,6 +22,8 @@
 #include <QProcess>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
@@ -1424,6 +1426,42 @@ class XyScreensTest : public QObject {
                                            QLatin1String(lang)));
                         if (QTest::currentTestFailed()) return;
                     }
+                }
+            }
+        }
+    }
+
+    // Issue 31 item 6: the side column's controls scroll on a short screen, but the state and
+    // the X/Y readout stay in view: scrolled to the Jog step and below, the readout was gone.
+    void xyReadoutStaysInViewWhenTheSideColumnScrolls() {
+        for (const char* machine : {"xy_plotter.json", "xy_dc_table.json"}) {
+            QTemporaryDir dir;
+            QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+            auto link = virtualLink(shipped(machine));
+            XyMainWindow w(*link, settings);
+            w.resize(1024, 738);
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QCoreApplication::processEvents();
+            for (QScrollArea* area : w.findChildren<QScrollArea*>()) {
+                if (!area->isVisible()) continue;
+                area->verticalScrollBar()->setValue(area->verticalScrollBar()->maximum());
+            }
+            QCoreApplication::processEvents();
+            for (QLabel* label : {w.stateLabel(), w.positionLabel()}) {
+                QVERIFY(label->isVisible());
+                // Its whole rectangle shows: inside every scroll viewport it sits in.
+                const QRect inWindow(label->mapTo(&w, QPoint(0, 0)), label->size());
+                for (QWidget* p = label->parentWidget(); p && p != &w; p = p->parentWidget()) {
+                    const QRect clip(p->mapTo(&w, QPoint(0, 0)), p->size());
+                    QVERIFY2(clip.contains(inWindow),
+                             qPrintable(QStringLiteral("%1 on %2: %3 at y %4, cut by %5 at y %6-%7")
+                                            .arg(QLatin1String(machine), label->objectName(),
+                                                 label->text())
+                                            .arg(inWindow.y())
+                                            .arg(QString::fromLatin1(p->metaObject()->className()))
+                                            .arg(clip.top())
+                                            .arg(clip.bottom())));
                 }
             }
         }

@@ -257,20 +257,27 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
         machinePanel = plotter_;
     }
 
+    // The side column: the state and the X/Y readout always in view at its top, the machine's
+    // controls below them. Only the controls scroll when the screen is short (issue 19: the
+    // windows needed 798 px, so the status bar with the link's state was below a 768-px
+    // screen; issue 31 item 6: with the whole column scrolling, reaching the Jog step took the
+    // readout out of view).
+    auto* sideColumn = new QWidget(this);
+    auto* sideColumnLayout = new QVBoxLayout(sideColumn);
+    sideColumnLayout->setContentsMargins(0, 0, 0, 0);
     auto* readout = new QVBoxLayout;
+    readout->setContentsMargins(9, 9, 9, 0);
     readout->addWidget(state_);
     readout->addWidget(position_);
     readout->addWidget(block_);
     readout->addWidget(program_label_);
+    sideColumnLayout->addLayout(readout);
     auto* side = new QWidget(this);
     auto* sideLayout = new QVBoxLayout(side);
-    sideLayout->addLayout(readout);
     sideLayout->addWidget(machinePanel);
     sideLayout->addStretch(1);
-
-    // The side column scrolls when the screen is short (issue 19: the windows needed 798 px,
-    // so the status bar with the link's state was below a 768-px screen).
     auto* sideScroll = new QScrollArea(this);
+    sideScroll->setObjectName(QStringLiteral("xyControlsScroll"));
     sideScroll->setWidget(side);
     sideScroll->setWidgetResizable(true);
     sideScroll->setFrameShape(QFrame::NoFrame);
@@ -278,9 +285,10 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     side->setMinimumWidth(side->sizeHint().width());
     sideScroll->setMinimumWidth(side->sizeHint().width() +
                                 sideScroll->verticalScrollBar()->sizeHint().width());
+    sideColumnLayout->addWidget(sideScroll, 1);
     auto* split = new QSplitter(Qt::Horizontal, this);
     split->addWidget(view_);
-    split->addWidget(sideScroll);
+    split->addWidget(sideColumn);
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 2);
 
