@@ -10,6 +10,8 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
+#include "ui/wheel_needs_focus.h"
+
 namespace trilho {
 namespace ui {
 
@@ -62,14 +64,13 @@ SimulationPanel::SimulationPanel(QWidget* parent) : QWidget(parent) {
     v->addWidget(clear_);
     v->addStretch(1);
 
-    // A value changes only by deliberate input: a wheel needs the box's focus (a click), and
-    // typing takes effect on Enter or on leaving the box, not at each digit.
+    // A value changes only by deliberate input: a wheel needs the box's focus (a click; issue 19
+    // item 5: two wheel steps over the dock set cable slip 0.010), and typing takes effect on
+    // Enter or on leaving the box, not at each digit.
     for (QAbstractSpinBox* box :
-         std::initializer_list<QAbstractSpinBox*>{lostHz_, slip_, noise_, lateMs_, lateRate_}) {
-        box->setFocusPolicy(Qt::StrongFocus);
+         std::initializer_list<QAbstractSpinBox*>{lostHz_, slip_, noise_, lateMs_, lateRate_})
         box->setKeyboardTracking(false);
-        box->installEventFilter(this);
-    }
+    wheelNeedsFocus(this);
     for (QCheckBox* c : {stuck_, amplifier_, torn_})
         connect(c, &QCheckBox::toggled, this, &SimulationPanel::emitFaults);
     connect(lostHz_, &QSpinBox::valueChanged, this, &SimulationPanel::emitFaults);
@@ -121,17 +122,6 @@ QString SimulationPanel::armedText() const {
                      .arg(lateMs_->value())
                      .arg(lateRate_->value(), 0, 'f', 3);
     return armed.join(QStringLiteral(", "));
-}
-
-bool SimulationPanel::eventFilter(QObject* watched, QEvent* event) {
-    if (event->type() == QEvent::Wheel) {
-        auto* box = qobject_cast<QAbstractSpinBox*>(watched);
-        if (box && !box->hasFocus()) {
-            event->ignore();
-            return true;
-        }
-    }
-    return QWidget::eventFilter(watched, event);
 }
 
 void SimulationPanel::retranslate() {

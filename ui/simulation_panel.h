@@ -39,9 +39,6 @@ class SimulationPanel : public QWidget {
 
   protected:
     void changeEvent(QEvent* e) override;
-    /// A wheel turned over a number box that does not have the focus scrolls nothing in it
-    /// (issue 19 item 5: two wheel steps over the dock set cable slip 0.010).
-    bool eventFilter(QObject* watched, QEvent* event) override;
 
   private:
     void retranslate();

@@ -869,4 +869,14 @@ RunLoad loadRunRecord(const QString& csvPath, char axis) {
     return out;
 }
 
+std::size_t gainChangeTick(const RunConditions& c) {
+    const double atS = c.gainChange ? c.gainChange->atS : 0.0;
+    return static_cast<std::size_t>(std::llround(c.preRollS / c.periodS)) +
+           static_cast<std::size_t>(std::llround(atS / c.periodS));
+}
+
+const TuningGains& gainsAtTick(const RunConditions& c, std::size_t k) {
+    return c.gainChange && k >= gainChangeTick(c) ? c.gainChange->gains : c.gains;
+}
+
 }  // namespace trilho

@@ -62,6 +62,13 @@ struct RunConditions {
     std::optional<GainChange> gainChange;  ///< none: one set of gains throughout
 };
 
+/// The tick at which a step test's gain change takes effect: the step's tick (after preRollS)
+/// plus atS, each rounded to whole periods. The one rule the experiment and the P, I, D page
+/// use (issue 33 bug 2).
+std::size_t gainChangeTick(const RunConditions& c);
+/// The gains the loop used on tick k: the change's from gainChangeTick on, the test's before.
+const TuningGains& gainsAtTick(const RunConditions& c, std::size_t k);
+
 /// Per tick, all the same length. Loop terms in DAC codes around 128 (rail) or PWM percent
 /// (DC table; p, i and ff only). sumCodes = p + i + d + ff before the clamp; commandCodes the
 /// loop's command (engineered: after the clamp and slew limit; classic: the unclamped sum);

@@ -145,8 +145,7 @@ StepTestResult runRail(const StepTestSpec& spec, StepTestResult r) {
     for (std::size_t k = 0; k <= ticks; ++k) {
         const double t = static_cast<double>(k) * dt;
         if (k == preTicks) servo.moveTo(target, c.speedFraction, false);
-        if (c.gainChange &&
-            k == preTicks + static_cast<std::size_t>(std::llround(c.gainChange->atS / dt))) {
+        if (c.gainChange && k == gainChangeTick(c)) {
             servo.setGains(c.law, LoopGains{c.gainChange->gains.kp, c.gainChange->gains.ki,
                                             c.gainChange->gains.kd});
             changed = true;

@@ -2,6 +2,7 @@
 // the teaching view's equation and "what if", saved and loaded runs, autotune, and the same
 // numbers as `trilho-cli tune step --json` to the digit.
 #include <qcustomplot.h>
+#include <QApplication>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QGroupBox>
@@ -12,12 +13,15 @@
 #include <QListWidget>
 #include <QProcess>
 #include <QPushButton>
+#include <QScreen>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QStatusBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QWheelEvent>
+#include <cmath>
 
 #include <sys/resource.h>
 #include <unistd.h>
@@ -171,6 +175,134 @@ class WorkbenchTest : public QObject {
         // On the step tick the loop was just reset: e[k-1] is e[k], and D is zero (no kick);
         // the page substitutes what the law used, so its arithmetic holds.
         QVERIFY2(eq.contains(QStringLiteral("x (10.0000 - 10.0000) = 0.000")), qPrintable(eq));
+    }
+
+    // Issue 33 bug 1: the Period box runs the 1996 law at what it says (lesson 1: the same law at
+    // 10 ms and at 1 ms), as `tune step --period` does, and the run saved reads back (tune
+    // metrics refused its sidecar: "the classic law needs at least 0.008 s").
+    void theClassicLawRunsAtThePeriodInTheBox() {
+        QTemporaryDir dir;
+        WorkbenchWindow w(MachineProfile::rail());
+        w.findChild<QComboBox*>(QStringLiteral("law"))->setCurrentIndex(1);
+        w.findChild<QDoubleSpinBox*>(QStringLiteral("period"))->setValue(1.0);
+        w.runStep();
+        QVERIFY(waitRun(w));
+        const WorkbenchRun& run = *w.runs()[0];
+        QCOMPARE(run.record.conditions.law, LoopLaw::Classic);
+        QCOMPARE(run.record.conditions.periodS, 0.001);
+        QVERIFY2(run.name.contains(QStringLiteral("at 1 ms")), qPrintable(run.name));
+        const QJsonObject json =
+            cli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--machine"),
+                 QStringLiteral("rail"), QStringLiteral("--law"), QStringLiteral("classic"),
+                 QStringLiteral("--period"), QStringLiteral("0.001"), QStringLiteral("--amplitude"),
+                 QStringLiteral("10"), QStringLiteral("--json")});
+        const QJsonObject metrics = json.contains(QStringLiteral("metrics"))
+                                        ? json[QStringLiteral("metrics")].toObject()
+                                        : json;
+        QVERIFY2(metrics.contains(QStringLiteral("iae")), "trilho-cli tune step printed no JSON");
+        QCOMPARE(metrics[QStringLiteral("iae")].toDouble(), run.metrics.iae);
+        // Saved, it reads back in the workbench and in `tune metrics`.
+        const QString path = dir.filePath(QStringLiteral("classic1ms.csv"));
+        QString error;
+        QSignalSpy saved(&w, &WorkbenchWindow::runSaved);
+        QVERIFY2(w.saveRun(0, path, &error), qPrintable(error));
+        QTRY_COMPARE(saved.count(), 1);
+        QVERIFY2(saved.at(0).at(1).toString().isEmpty(), qPrintable(saved.at(0).at(1).toString()));
+        QSignalSpy loaded(&w, &WorkbenchWindow::runLoaded);
+        w.loadRun(path);
+        QTRY_COMPARE(loaded.count(), 1);
+        QVERIFY2(loaded.at(0).at(0).toString().isEmpty(),
+                 qPrintable(loaded.at(0).at(0).toString()));
+        QCOMPARE(w.runs()[1]->record.conditions.periodS, 0.001);
+        QProcess metricsRun;
+        metricsRun.start(QStringLiteral(TRILHO_CLI),
+                         {QStringLiteral("tune"), QStringLiteral("metrics"), path});
+        QVERIFY(metricsRun.waitForFinished(60000));
+        QVERIFY2(metricsRun.exitCode() == 0, metricsRun.readAllStandardError().constData());
+    }
+
+    // Issue 33 bug 2: after a bumpless gain change the P, I, D page works the equation with the
+    // gains in force at the tick shown (it wrote the old Kp 1.2 at tick 150 after Kp 2.4).
+    void theTermsPageUsesTheGainsInForceAtItsTick() {
+        WorkbenchWindow w(MachineProfile::rail());
+        w.findChild<QDoubleSpinBox*>(QStringLiteral("kp"))->setValue(1.2);
+        w.findChild<QGroupBox*>(QStringLiteral("gainChange"))->setChecked(true);
+        w.findChild<QDoubleSpinBox*>(QStringLiteral("changeAt"))->setValue(0.1);
+        w.findChild<QDoubleSpinBox*>(QStringLiteral("newKp"))->setValue(2.4);
+        w.runStep();
+        QVERIFY(waitRun(w));
+        TermsView* terms = w.terms();
+        const RunConditions& c = terms->run()->record.conditions;
+        QVERIFY(c.gainChange.has_value());
+        const auto changeTick = static_cast<int>(std::llround(c.preRollS / c.periodS) +
+                                                 std::llround(c.gainChange->atS / c.periodS));
+        terms->setTick(changeTick - 1);
+        QVERIFY2(terms->equation()->text().contains(QStringLiteral("Kp e = 1.2000 x")),
+                 qPrintable(terms->equation()->text()));
+        for (int k : {changeTick, changeTick + 50}) {
+            terms->setTick(k);
+            QVERIFY2(terms->equation()->text().contains(QStringLiteral("Kp e = 2.4000 x")),
+                     qPrintable(terms->equation()->text()));
+        }
+    }
+
+    // Issue 33 bug 3: a wheel turned over the left panel scrolls it and changes no value, as on
+    // the main screens (Kp went 1.2 -> 0.9 and the Seed changed); a box the operator clicked
+    // into takes the wheel.
+    void theWheelChangesNoValueWithoutFocus() {
+        WorkbenchWindow w(MachineProfile::rail());
+        w.resize(1024, 600);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto* kp = w.findChild<QDoubleSpinBox*>(QStringLiteral("kp"));
+        auto* seed = w.findChild<QSpinBox*>(QStringLiteral("seed"));
+        QVERIFY(kp && seed);
+        const double kpBefore = kp->value();
+        const int seedBefore = seed->value();
+        for (QAbstractSpinBox* box : std::initializer_list<QAbstractSpinBox*>{kp, seed}) {
+            QVERIFY(!box->hasFocus());
+            const QPoint at = box->rect().center();
+            QWheelEvent wheel(at, box->mapToGlobal(at), QPoint(), QPoint(0, -120), Qt::NoButton,
+                              Qt::NoModifier, Qt::NoScrollPhase, false);
+            QApplication::sendEvent(box, &wheel);
+        }
+        QCOMPARE(kp->value(), kpBefore);
+        QCOMPARE(seed->value(), seedBefore);
+        auto* law = w.findChild<QComboBox*>(QStringLiteral("law"));
+        const int lawBefore = law->currentIndex();
+        QWheelEvent wheel(law->rect().center(), law->mapToGlobal(law->rect().center()), QPoint(),
+                          QPoint(0, -120), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(law, &wheel);
+        QCOMPARE(law->currentIndex(), lawBefore);
+        // With the focus (a click), the wheel is the box's.
+        kp->setFocus();
+        QTRY_VERIFY(kp->hasFocus());
+        const QPoint at = kp->rect().center();
+        QWheelEvent focused(at, kp->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton,
+                            Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(kp, &focused);
+        QVERIFY(kp->value() != kpBefore);
+    }
+
+    // Issue 33 bug 4: the workbench opens no larger than the screen it is on (it opened at
+    // 1280x720 on a 1024x768 screen); on a large screen at 1280x720.
+    void theWorkbenchOpensWithinItsScreen() {
+        QCOMPARE(WorkbenchWindow::initialSize(QSize(1024, 738), QSize(918, 500)), QSize(1024, 720));
+        QCOMPARE(WorkbenchWindow::initialSize(QSize(1366, 738), QSize(918, 500)), QSize(1280, 720));
+        QCOMPARE(WorkbenchWindow::initialSize(QSize(1920, 1050), QSize(918, 500)),
+                 QSize(1280, 720));
+        QCOMPARE(WorkbenchWindow::initialSize(QSize(800, 570), QSize(918, 500)), QSize(918, 570));
+        WorkbenchWindow w(MachineProfile::rail());
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        const QSize room = w.screen()->availableSize();
+        QVERIFY2(w.width() <= std::max(room.width(), w.minimumSizeHint().width()) &&
+                     w.height() <= std::max(room.height(), w.minimumSizeHint().height()),
+                 qPrintable(QStringLiteral("%1x%2 on %3x%4")
+                                .arg(w.width())
+                                .arg(w.height())
+                                .arg(room.width())
+                                .arg(room.height())));
     }
 
     // A run saved (CSV + JSON sidecar) and loaded back has the same channels and metrics. Both

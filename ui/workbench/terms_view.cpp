@@ -216,7 +216,8 @@ void TermsView::showTick() {
 QString TermsView::equationHtml(const RunRecord& r, std::size_t k) {
     const RunChannels& c = r.channels;
     if (k >= c.size()) return {};
-    const TuningGains& g = r.conditions.gains;
+    // The gains in force on this tick: after a bumpless change, the new ones (issue 33 bug 2).
+    const TuningGains& g = gainsAtTick(r.conditions, k);
     const double periodMs = r.conditions.periodS * 1e3;
     const double e = at(c.setpointMm, k) - at(c.positionMm, k);
     // The e[k-1] the law used, from its own D term: the loop is reset when a move starts, so

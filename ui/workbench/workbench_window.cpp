@@ -13,6 +13,7 @@
 #include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScreen>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSpinBox>
@@ -33,6 +34,7 @@
 #include "host/tuning/plotter_margin_sweep.h"
 #include "host/tuning/relay_comparison.h"
 #include "ui/background_pool.h"
+#include "ui/wheel_needs_focus.h"
 #include "ui/workbench/margin_view.h"
 #include "ui/workbench/model_view.h"
 #include "ui/workbench/run_overlay.h"
@@ -101,7 +103,16 @@ WorkbenchWindow::WorkbenchWindow(const MachineProfile& profile, QWidget* parent)
     retranslate();
     lawChanged();
     fitForm();
-    resize(1280, 720);
+    wheelNeedsFocus(this);  // no value changes under a wheel turned to scroll the panel
+    // 1280x720 where there is room; on a 1024x768 screen its width (issue 33 bug 4: it opened
+    // wider than the screen). 30 px are left for the title bar.
+    const QScreen* on = screen();
+    const QSize room = on ? on->availableSize() - QSize(0, 30) : QSize(1280, 720);
+    resize(initialSize(room, minimumSizeHint()));
+}
+
+QSize WorkbenchWindow::initialSize(const QSize& available, const QSize& least) {
+    return QSize(1280, 720).boundedTo(available).expandedTo(least);
 }
 
 void WorkbenchWindow::build() {
@@ -436,9 +447,11 @@ StepTestSpec WorkbenchWindow::currentSpec() const {
     s.seed = static_cast<std::uint64_t>(seed_->value());
     if (rail_) {
         const auto law = static_cast<LoopLaw>(law_->currentData().toInt());
+        // The law and the period as the CLI's --law and --period give them: the profile stays
+        // the machine's (issue 33 bug 1: the 1996 law ran at its own 10 ms whatever the Period
+        // box said, and a profile saying "classic at 1 ms" in the sidecar was refused).
         s.law = law;
-        s.profile.loop.law = law;
-        s.profile.loop.samplePeriodS = period_->value() / 1e3;
+        s.periodS = period_->value() / 1e3;
         TuningGains g = profileGains(profile_, 0, law);
         g.kp = kp_->value();
         g.ki = ki_->value();
@@ -567,13 +580,12 @@ void WorkbenchWindow::compareLaws() {
     if (busy_ || !rail_) return;
     StepTestSpec classic = currentSpec();
     classic.law = LoopLaw::Classic;
-    classic.profile.loop.law = LoopLaw::Classic;
-    classic.profile.loop.samplePeriodS = kClassicPeriodMs / 1e3;
+    classic.periodS = kClassicPeriodMs / 1e3;
+    classic.gainChange.reset();  // the 1996 law has no bumpless transfer
     classic.gains = profileGains(profile_, 0, LoopLaw::Classic);
     StepTestSpec engineered = currentSpec();
     engineered.law = LoopLaw::Engineered;
-    engineered.profile.loop.law = LoopLaw::Engineered;
-    engineered.profile.loop.samplePeriodS = profile_.loop.samplePeriodS;
+    engineered.periodS = profile_.loop.samplePeriodS;
     engineered.gains = profileGains(profile_, 0, LoopLaw::Engineered);
     using Pair = std::pair<Prepared, Prepared>;
     inBackground<Pair>(
@@ -602,7 +614,10 @@ void WorkbenchWindow::whatIfRun(const TuningGains& gains) {
 void WorkbenchWindow::identify() {
     if (busy_ || !tunable()) return;
     if (!rail_) return identifyTableAxis();
-    const MachineProfile profile = currentSpec().profile;
+    MachineProfile profile = currentSpec().profile;
+    // The frequency view is of the engineered loop: at the Period box's when that law is chosen.
+    if (static_cast<LoopLaw>(law_->currentData().toInt()) == LoopLaw::Engineered)
+        profile.loop.samplePeriodS = period_->value() / 1e3;
     const auto seed = static_cast<std::uint64_t>(seed_->value());
     const double mass = mass_->value();
     struct Out {

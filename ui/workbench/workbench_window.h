@@ -84,6 +84,9 @@ class WorkbenchWindow : public QMainWindow {
 
     RunOverlay* overlay() const { return overlay_; }
     TermsView* terms() const { return terms_; }
+    /// The size the window opens at on a screen with `available` room: 1280x720, no larger than
+    /// the room, no smaller than the window's least size.
+    static QSize initialSize(const QSize& available, const QSize& least);
     ModelView* model() const { return model_; }
     MarginView* marginView() const { return marginView_; }
     QTabWidget* tabs() const { return tabs_; }
