@@ -83,11 +83,11 @@ DcAxisIdentification identifyDcAxis(const IdentificationRecord& rec, const Machi
 
     if (!rec.error.isEmpty()) {
         id.error = rec.error;
-    } else if (!(id.fitVelocityPct >= kMinFitVelocityPct)) {
+    } else if (!(id.fitVelocityPct >= kMinDcFitVelocityPct)) {
         id.error = QCoreApplication::translate(
                        "trilho", "the model fits the held-out run at %1 % on velocity, under %2 %")
                        .arg(id.fitVelocityPct, 0, 'f', 1)
-                       .arg(kMinFitVelocityPct, 0, 'f', 0);
+                       .arg(kMinDcFitVelocityPct, 0, 'f', 0);
     } else {
         id.accepted = true;
     }

@@ -16,6 +16,13 @@ namespace trilho {
 /// +-this, s: one count (0.106 mm on x) is 21 mm/s over one 5 ms period, 2.6 mm/s over 40 ms;
 /// the model's velocity is filtered alike, so the window costs no bias.
 inline constexpr double kDcVelocityHalfWindowS = 0.02;
+/// The held-out fit on velocity, percent, a DC axis' model needs (the rail's is 90 %). Chosen
+/// (issue 33 item 5): the experiment's pulses are fixed, so the heavier the payload the less
+/// speed they reach against the count's quantisation, and the held-out fit falls with the
+/// payload while the model stays right: 89 % at x10, 82 % at x15, 76.5 % at x20, with the
+/// inertia identified within 1 % and the verification moves' settling predicted within 7 %.
+/// The gate that a model is good enough to run is the prediction checked on the table.
+inline constexpr double kMinDcFitVelocityPct = 75.0;
 
 struct DcAxisIdentification {
     DcAxisModel model;

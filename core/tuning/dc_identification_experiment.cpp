@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/tuning/dc_axis_identification.h"
+#include "core/tuning/dc_loop_design.h"
 #include "core/xy/xy_event_text.h"
 
 namespace trilho {
@@ -28,8 +30,11 @@ constexpr Segment kValidatePart[] = {{20.0, 0.15}, {-15.0, 0.25}, {12.0, 0.15}, 
 /// Room the experiment needs each side of its start, mm: its 21 mm of travel at the default
 /// motor and load, 30 % more for a faster motor, and the coast.
 constexpr double kRoomMm = 30.0;
-/// The return: a fifth of the rapid speed, the profile's own loop and acceleration.
+/// The return: a fifth of the rapid speed, the profile's own acceleration.
 constexpr double kReturnSpeedFraction = 0.2;
+/// The fit on the fitted part, percent of velocity, above which the return runs on gains
+/// designed from it. Chosen: the fitted part fits 95-97 % from x0.5 to x10.
+constexpr double kReturnMinFitPct = 80.0;
 
 }  // namespace
 
@@ -37,7 +42,8 @@ IdentificationRecord runDcIdentificationExperiment(DcAxisRig& rig) {
     IdentificationRecord rec;
     rec.periodS = rig.periodS();
     const int axis = rig.axis();
-    const MachineProfile& profile = rig.profile();
+    // A copy: the return may run on another profile (below), which replaces the rig's.
+    const MachineProfile profile = rig.profile();
     const AxisTravel& travel = axis == 0 ? profile.limits.x : profile.limits.y;
     const DcAxisParams& params = axis == 0 ? profile.dcTable.x : profile.dcTable.y;
     const double countMm = params.mmPerTurn * params.radPerCount / (2.0 * 3.14159265358979323846);
@@ -106,6 +112,22 @@ IdentificationRecord runDcIdentificationExperiment(DcAxisRig& rig) {
 
     bool ok = runPart(kFitPart, rec.fit) && runPart(kValidatePart, rec.validate);
     rig.motion().releaseDirect();
+    // The return runs on gains designed from the data just taken (issue 33 item 5): the payload
+    // is unknown to the profile, and on the profile's gains an axis at five times its inertia
+    // rang (it was not back within a count in the time bound) and at eight tripped the
+    // over-current. Without a model from the data, the profile's gains.
+    bool returnTuned = false;
+    if (ok && rig.motion().fault() == AlarmCode::None) {
+        const DcAxisIdentification id = identifyDcAxis(rec, profile, axis);
+        // A return needs a model near enough to damp the loop, not one judged fit to tune with:
+        // at x10 the held-out part fits 88.6 % (under the 90 % an identification needs), the
+        // fitted part 95.7 %.
+        if (id.accepted || id.fitVelocityTrainPct >= kReturnMinFitPct) {
+            rig.reloadProfile(
+                tunedDcProfile(profile, axis, designDcAxisLoop(id, profile, axis, {})));
+            returnTuned = true;
+        }
+    }
     if (rig.motion().fault() == AlarmCode::None) {
         XyPoint back = rig.motion().measured();
         (axis == 0 ? back.x : back.y) = rec.startMm;
@@ -126,6 +148,8 @@ IdentificationRecord runDcIdentificationExperiment(DcAxisRig& rig) {
     }
     rec.endMm = rig.positionMm();
     rec.experimentTimeS = rig.elapsedS() - t0;
+    if (returnTuned && rig.motion().fault() == AlarmCode::None)
+        rig.reloadProfile(profile);  // the experiment leaves the machine's own gains
     if (ok && std::abs(rec.endMm - rec.startMm) > countMm * (1.0 + 1e-6))
         rec.error =
             QCoreApplication::translate(

@@ -229,7 +229,14 @@ bool DcTableMotion::checkEncoder(std::size_t k, std::int64_t counted, double dtS
     // 10 mm and 1.5 s.
     const bool away = v == 0.0 ? target != 0.0 : target * v > 0.0 && std::abs(target) > std::abs(v);
     constexpr double kSpeedUpInertia = 2.0;
-    const double tau = a.timeConstantS * (away ? kSpeedUpInertia : kMinMassFactor);
+    // Under setDirect (the identification experiment: a bounded open-loop drive of known
+    // pulses, inside its +-100 mm envelope) speeding up as the heaviest payload the profile
+    // allows: the experiment runs before the payload is known, and at x12-x20 the x2 model read
+    // the slow start of a 30 % pulse as a dead encoder (issue 33 item 5). A dead encoder is
+    // then caught after more travel, inside the experiment's envelope (test
+    // AnEncoderThatDiesInTheExperimentIsCaught).
+    const double speedUp = directAxis_ == static_cast<int>(k) ? kMaxMassFactor : kSpeedUpInertia;
+    const double tau = a.timeConstantS * (away ? speedUp : kMinMassFactor);
     const double next = v + (target - v) * std::min(1.0, dtS / tau);
     v = v != 0.0 && next * v < 0.0 ? 0.0 : next;
     if (!drivesOn_) {
