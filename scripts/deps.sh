@@ -25,6 +25,11 @@ TRILHO_PACKAGES=(
   # use, are in fonts-dejavu-extra), and Noto Sans Mono, the monospace fontconfig picks once
   # fonts-noto-mono is on a desktop (it moved the rail's readout by 11 px at 1024x768).
   fonts-dejavu-core fonts-dejavu-extra fonts-noto-mono
+  # The boards' own firmware (firmware/, issue 32): avr-gcc and avr-libc cross-compile it in the
+  # normal build (binutils-avr, avr-objcopy and avr-size, comes with gcc-avr); libsimavr runs it
+  # cycle for cycle against the plants in the tests (hal/firmware_sim), simavr is the same
+  # simulator as a command, for looking at an image by hand.
+  gcc-avr avr-libc simavr libsimavr-dev
 )
 check=1
 [ "${1:-}" = "--no-check" ] && check=0
