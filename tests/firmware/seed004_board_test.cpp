@@ -1,0 +1,163 @@
+// Issue 32 item 3: seed 004's own firmware (firmware/seed004, avr-gcc) on libsimavr, wired to
+// trilho's DC table plant, in virtual time. The figures asserted are the seed's code's own.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "hal/firmware_sim/seed004_board.h"
+
+using namespace trilho;
+
+namespace {
+std::unique_ptr<Seed004Board> boot(const char* elf, double baud = 9600.0) {
+    Seed004BoardOptions o;
+    o.elfPath = elf;
+    o.lineBaud = baud;
+    std::string error;
+    auto b = Seed004Board::load(o, &error);
+    EXPECT_TRUE(b) << error;
+    return b;
+}
+
+/// The seed's host (a LabVIEW panel) as the board can read it: one byte, then past the board's
+/// 32.8 ms wait before the next.
+void sendPaced(Seed004Board& b, const std::vector<std::uint8_t>& bytes) {
+    for (std::uint8_t v : bytes) {
+        b.send({v});
+        ASSERT_TRUE(b.runFor(0.040)) << b.chip().stateText();
+    }
+}
+
+std::vector<std::uint8_t> setPoint(int xMm, int yMm) {
+    return {static_cast<std::uint8_t>(xMm >> 8), static_cast<std::uint8_t>(xMm & 0xff),
+            static_cast<std::uint8_t>(yMm >> 8), static_cast<std::uint8_t>(yMm & 0xff)};
+}
+
+/// Runs until the program has written n OCR1x values on channel (its loop's samples), or limitS.
+void runUntilWrites(Seed004Board& b, int channel, std::size_t n, double limitS) {
+    // config_pwm wrote each channel once at boot.
+    auto count = [&] {
+        std::size_t k = 0;
+        for (const OcrWrite& w : b.ocrWrites())
+            k += w.channel == channel;
+        return k - 1;
+    };
+    const double end = b.seconds() + limitS;
+    while (count() < n && b.seconds() < end)
+        ASSERT_TRUE(b.runFor(0.005)) << b.chip().stateText();
+}
+
+/// The writes of channel after cycle from (config_pwm's OCR1A = OCR1B = 1 at boot left out).
+std::vector<OcrWrite> writesOf(const Seed004Board& b, int channel, std::uint64_t from) {
+    std::vector<OcrWrite> out;
+    for (const OcrWrite& w : b.ocrWrites())
+        if (w.channel == channel && w.cycle > from) out.push_back(w);
+    return out;
+}
+
+constexpr double kCyclesPerMs = Seed004Board::kClockHz / 1000.0;
+}  // namespace
+
+// config_pwm: Timer 1 fast PWM, TOP = ICR1 = 247, OCR1A = OCR1B = 1: both channels at
+// 2/248 of the period (0.8 %), under the plant's friction (3 %): the table stays at rest.
+TEST(Seed004Main, BootsWithBothChannelsAtOneOfIcr247AndTheTableAtRest) {
+    auto b = boot(TRILHO_SEED004_ELF);
+    ASSERT_TRUE(b);
+    ASSERT_TRUE(b->runFor(0.5));
+    EXPECT_EQ(b->icr1(), 247);
+    EXPECT_EQ(b->ocr(0), 1);
+    EXPECT_EQ(b->ocr(1), 1);
+    EXPECT_NEAR(b->dutyPercent(0), 100.0 * 2 / 248, 1e-9);
+    EXPECT_NEAR(b->dutyPercent(1), 100.0 * 2 / 248, 1e-9);
+    EXPECT_EQ(b->plant().positionMm(0), 0.0);
+    EXPECT_EQ(b->plant().positionMm(1), 0.0);
+    EXPECT_TRUE(b->uart().takeOutput().empty());  // the main program sends nothing
+}
+
+// The seed's example, (0,0) -> (180,120), sent as its host does (hiX loX hiY loY, one byte per
+// 32.8 ms wait). The program plans long3 = 3 floor(N) = 339 samples (tf = 1.7 s), runs the x
+// loop on OCR1A to its end, then the y loop on OCR1B: one axis after the other, as printed.
+TEST(Seed004Main, SetPointRunsXOnOcr1aThenYOnOcr1bForwards) {
+    auto b = boot(TRILHO_SEED004_ELF);
+    ASSERT_TRUE(b);
+    ASSERT_TRUE(b->runFor(0.1));
+    const std::uint64_t sent = b->chip().cycle();
+    sendPaced(*b, setPoint(180, 120));
+    EXPECT_EQ(b->chip().ramFloat("spx_fin"), 180.0f);
+    EXPECT_EQ(b->chip().ramFloat("spy_fin"), 120.0f);
+    runUntilWrites(*b, 0, 339, 5.0);
+    EXPECT_EQ(b->chip().ramU16("long3"), 339);
+    const std::vector<OcrWrite> x = writesOf(*b, 0, sent);
+    ASSERT_EQ(x.size(), 339u);
+    EXPECT_TRUE(writesOf(*b, 1, sent).empty());
+    EXPECT_FALSE(b->reverse(0));
+    EXPECT_FALSE(b->reverse(1));
+    // The x loop moved x forwards, near its target, and nothing moved y (OCR1B still 1).
+    EXPECT_NEAR(b->plant().positionMm(0), 180.0, 1.5);
+    EXPECT_EQ(b->plant().positionMm(1), 0.0);
+    // max = 50 %: OCR1A = floor(50 / 0.405) = 123 at most.
+    std::uint16_t top = 0;
+    for (const OcrWrite& w : x)
+        top = std::max(top, w.value);
+    EXPECT_GT(top, 60);
+    EXPECT_LE(top, 123);
+    runUntilWrites(*b, 1, 339, 5.0);
+    ASSERT_EQ(writesOf(*b, 1, sent).size(), 339u);
+    EXPECT_GT(b->plant().positionMm(1), 110.0);
+    // x's last duty, (OCR1A + 1) / 248, is under the friction: x coasted to rest near 180.
+    EXPECT_LT(b->dutyPercent(0), 3.0 * 0.9);
+    EXPECT_EQ(b->plant().velocityMmS(0), 0.0);
+    EXPECT_NEAR(b->plant().positionMm(0), 180.0, 1.5);
+}
+
+// The real sample period: _delay_loop_2(10000) is 40,000 cycles (5 ms) and the loop's body,
+// software floating point on the AVR, adds to it. Measured between consecutive OCR1A writes.
+TEST(Seed004Main, RealSamplePeriodIsFiveMsPlusTheBody) {
+    auto b = boot(TRILHO_SEED004_ELF);
+    ASSERT_TRUE(b);
+    ASSERT_TRUE(b->runFor(0.1));
+    const std::uint64_t sent = b->chip().cycle();
+    sendPaced(*b, setPoint(180, 120));
+    runUntilWrites(*b, 0, 339, 5.0);
+    const std::vector<OcrWrite> x = writesOf(*b, 0, sent);
+    ASSERT_EQ(x.size(), 339u);
+    std::uint64_t lo = UINT64_MAX, hi = 0;
+    for (std::size_t i = 1; i < x.size(); ++i) {
+        lo = std::min(lo, x[i].cycle - x[i - 1].cycle);
+        hi = std::max(hi, x[i].cycle - x[i - 1].cycle);
+    }
+    const double meanMs = static_cast<double>(x.back().cycle - x.front().cycle) / kCyclesPerMs /
+                          static_cast<double>(x.size() - 1);
+    std::printf("x loop: %llu..%llu cycles per sample, mean %.4f ms\n",
+                static_cast<unsigned long long>(lo), static_cast<unsigned long long>(hi), meanMs);
+    // Measured: 41,452..43,169 cycles, mean 5.313 ms (firmware/seed004/README.md).
+    EXPECT_GT(lo, 41000u);
+    EXPECT_LT(hi, 44000u);
+    EXPECT_GT(meanMs, 5.25);
+    EXPECT_LT(meanMs, 5.40);
+}
+
+// The seed's truth after a move: nothing sets OCR1B back to zero, so the y motor stays driven
+// at the loop's last duty, and with spy_ini = spy_fin the encoder handler counts its pulses
+// down (pulsos_y--): the board's own position count walks away from the table's.
+TEST(Seed004Main, AfterTheMoveTheLastDutyStaysOnAndTheCountWalksBack) {
+    auto b = boot(TRILHO_SEED004_ELF);
+    ASSERT_TRUE(b);
+    ASSERT_TRUE(b->runFor(0.1));
+    sendPaced(*b, setPoint(180, 120));
+    runUntilWrites(*b, 1, 339, 8.0);
+    ASSERT_TRUE(b->runFor(0.05));
+    const std::uint16_t last = b->ocr(1);
+    const std::uint16_t count = b->chip().ramU16("pulsos_y");
+    const double y = b->plant().positionMm(1);
+    ASSERT_TRUE(b->runFor(1.0));
+    EXPECT_EQ(b->ocr(1), last);
+    EXPECT_GT(b->dutyPercent(1), 3.0 * 1.1);         // above the plant's friction
+    EXPECT_GT(b->plant().positionMm(1), y + 5.0);    // still moving forwards
+    EXPECT_LT(b->chip().ramU16("pulsos_y"), count);  // counted backwards
+}
