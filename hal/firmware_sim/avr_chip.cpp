@@ -33,11 +33,24 @@ std::unique_ptr<AvrChip> AvrChip::load(const std::string& elfPath, const std::st
         if (error) *error = why;
         return std::unique_ptr<AvrChip>();
     };
-    if (!std::ifstream(elfPath)) return fail(elfPath + ": cannot open the firmware image");
+    std::ifstream file(elfPath, std::ios::binary);
+    if (!file) return fail(elfPath + ": cannot open the firmware image");
+    // simavr's reader takes any file, a text one as an empty image (the chip then runs erased
+    // flash): the ELF magic and machine AVR (EM_AVR, 83, at byte 18) are checked here first.
+    char header[20] = {};
+    file.read(header, sizeof header);
+    const bool elf = file.gcount() == sizeof header && std::memcmp(header,
+                                                                   "\x7f"
+                                                                   "ELF",
+                                                                   4) == 0;
+    if (!elf || static_cast<unsigned char>(header[18]) != 83 || header[19] != 0)
+        return fail(elfPath + ": not an AVR ELF image (avr-gcc's output) simavr can read");
     elf_firmware_t f;
     std::memset(&f, 0, sizeof f);
-    if (elf_read_firmware(elfPath.c_str(), &f) != 0)
-        return fail(elfPath + ": not an AVR ELF image simavr can read");
+    if (elf_read_firmware(elfPath.c_str(), &f) != 0 || f.flashsize == 0) {
+        freeImage(f, false);
+        return fail(elfPath + ": not an AVR ELF image (avr-gcc's output) simavr can read");
+    }
     std::unique_ptr<AvrChip> chip(new AvrChip);
     chip->avr_ = avr_make_mcu_by_name(mcu.c_str());
     if (!chip->avr_) {

@@ -161,3 +161,113 @@ TEST(Seed004Main, AfterTheMoveTheLastDutyStaysOnAndTheCountWalksBack) {
     EXPECT_GT(b->plant().positionMm(1), y + 5.0);    // still moving forwards
     EXPECT_LT(b->chip().ramU16("pulsos_y"), count);  // counted backwards
 }
+
+// The receiver as the ATmega128 has it. The program reads a byte, then waits 32.8 ms
+// (_delay_loop_2(65530)) before it polls again. Four bytes back to back (4.2 ms at 9600 bit/s)
+// to a board that is polling: the first is read at once, the next two wait in the two-byte
+// buffer and the fourth in the shift register; no start bit follows, so nothing is lost, and
+// the board takes one byte per 32.8 ms.
+TEST(Seed004Uart, FourBytesBackToBackToAPollingBoardAllArriveOnePer32ms) {
+    auto b = boot(TRILHO_SEED004_ELF);
+    ASSERT_TRUE(b);
+    ASSERT_TRUE(b->runFor(0.1));
+    b->send(setPoint(180, 120));
+    ASSERT_TRUE(b->runFor(0.020));
+    EXPECT_EQ(b->uart().stats().read, 1u);
+    EXPECT_EQ(b->uart().buffered(), 2u);
+    ASSERT_TRUE(b->runFor(0.030));  // 50 ms
+    EXPECT_EQ(b->uart().stats().read, 2u);
+    ASSERT_TRUE(b->runFor(0.030));  // 80 ms
+    EXPECT_EQ(b->uart().stats().read, 3u);
+    ASSERT_TRUE(b->runFor(0.030));  // 110 ms
+    EXPECT_EQ(b->uart().stats().read, 4u);
+    EXPECT_EQ(b->uart().stats().overruns, 0u);
+    ASSERT_TRUE(b->runFor(0.030));
+    EXPECT_EQ(b->chip().ramFloat("spx_fin"), 180.0f);
+    EXPECT_EQ(b->chip().ramFloat("spy_fin"), 120.0f);
+}
+
+// A fifth byte's start bit finds the fourth still waiting in the shift register: the fourth is
+// lost (DOR), and the board builds its set point from bytes 1, 2, 3 and 5.
+TEST(Seed004Uart, FiveBytesBackToBackLoseTheFourth) {
+    auto b = boot(TRILHO_SEED004_ELF);
+    ASSERT_TRUE(b);
+    ASSERT_TRUE(b->runFor(0.1));
+    b->send({0x00, 0xB4, 0x00, 0x78, 0x01});
+    ASSERT_TRUE(b->runFor(0.150));
+    EXPECT_EQ(b->uart().stats().overruns, 1u);
+    EXPECT_EQ(b->uart().stats().read, 4u);
+    EXPECT_EQ(b->chip().ramFloat("spx_fin"), 180.0f);
+    EXPECT_EQ(b->chip().ramFloat("spy_fin"), 1.0f);  // dato3 = 0 * 256, dato4 = 0x01
+}
+
+// The seed's host sending the next set point while the board runs a move (it reads nothing
+// for seconds): four bytes back to back fill the buffer and the shift register, the fourth's
+// start bit loses the third (DOR). After the move the board reads three bytes and waits for a
+// fourth that never comes.
+TEST(Seed004Uart, FourBytesDuringAMoveOverrunOnceAndTheBoardWaits) {
+    auto b = boot(TRILHO_SEED004_ELF);
+    ASSERT_TRUE(b);
+    ASSERT_TRUE(b->runFor(0.1));
+    sendPaced(*b, setPoint(180, 120));
+    ASSERT_TRUE(b->runFor(1.0));  // in the x loop
+    const std::uint64_t readBefore = b->uart().stats().read;
+    b->send(setPoint(10, 10));
+    ASSERT_TRUE(b->runFor(0.1));
+    EXPECT_EQ(b->uart().stats().overruns, 1u);
+    EXPECT_EQ(b->uart().stats().read, readBefore);  // busy: nothing read
+    ASSERT_TRUE(b->runFor(5.0));                    // the move ends; the board polls again
+    EXPECT_EQ(b->uart().stats().read, readBefore + 3);
+    EXPECT_EQ(b->chip().ramU8("temp"), 3);  // waiting for its fourth byte
+    EXPECT_EQ(b->chip().ramFloat("spx_fin"), 180.0f);
+}
+
+// The open-loop calibration program: OCR1A starts at 1 and grows by one (0.4 %) every two
+// 32.8 ms waits while no encoder pulse has come; the first pulse freezes the duty, and from
+// then on the count goes out LSB then MSB (38400 bit/s) every 10 + 32.8 ms.
+TEST(Seed004Calibration, RampsOcr1aUntilTheFirstPulseThenStreamsTheCount) {
+    auto b = boot(TRILHO_SEED004_CALIBRATION_ELF, 38400.0);
+    ASSERT_TRUE(b);
+    ASSERT_TRUE(b->runFor(0.2));
+    EXPECT_EQ(b->icr1(), 247);
+    EXPECT_EQ(b->ocr(0), 1 + 3);  // three 65.5 ms steps in 0.2 s
+    EXPECT_EQ(b->plant().positionMm(0), 0.0);
+    while (b->encoderEdges(0) == 0 && b->seconds() < 5.0)
+        ASSERT_TRUE(b->runFor(0.001));
+    ASSERT_GT(b->encoderEdges(0), 0u);
+    ASSERT_TRUE(b->runFor(0.070));  // past the step that was under way
+    const std::uint16_t frozen = b->ocr(0);
+    // The axis broke away between the plant's friction (3 % +-10 %) and one step above it.
+    EXPECT_GT(b->dutyPercent(0), 3.0 * 0.9);
+    EXPECT_LT(b->dutyPercent(0), 3.0 * 1.1 + 2 * 100.0 / 248);
+    b->uart().takeOutput();
+    ASSERT_TRUE(b->runFor(2.0));
+    EXPECT_EQ(b->ocr(0), frozen);
+    EXPECT_FALSE(b->reverse(0));
+    const std::vector<TimedByte> out = b->uart().takeOutput();
+    // 2 s / 42.8 ms a pair: 46 or 47 pairs.
+    ASSERT_GE(out.size(), 92u);
+    ASSERT_LE(out.size(), 94u);
+    std::uint16_t last = 0;
+    for (std::size_t i = 0; i + 1 < out.size(); i += 2) {
+        const std::uint16_t count =
+            static_cast<std::uint16_t>(out[i].value | (out[i + 1].value << 8));
+        EXPECT_GE(count, last);
+        last = count;
+    }
+    EXPECT_GT(last, 0);
+    EXPECT_LE(last, b->chip().ramU16("pulsos"));
+    EXPECT_GT(b->plant().positionMm(0), 0.0);
+}
+
+// A wrong image is a clear message naming the file, never a crash.
+TEST(Seed004Board, AMissingOrForeignImageIsRefusedWithItsPath) {
+    Seed004BoardOptions o;
+    std::string error;
+    o.elfPath = "/nonexistent/seed004.elf";
+    EXPECT_FALSE(Seed004Board::load(o, &error));
+    EXPECT_NE(error.find("/nonexistent/seed004.elf: cannot open"), std::string::npos) << error;
+    o.elfPath = TRILHO_SEED004_WARNINGS;  // a text file
+    EXPECT_FALSE(Seed004Board::load(o, &error));
+    EXPECT_NE(error.find("not an AVR ELF image"), std::string::npos) << error;
+}
