@@ -1,5 +1,7 @@
 #include "hal/firmware_sim/avr_chip.h"
 
+#include <cstdarg>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -12,6 +14,14 @@ namespace trilho {
 namespace {
 /// avr-gcc links RAM at 0x800000 in the ELF's address space (simavr's AVR_SEGMENT_OFFSET_*).
 constexpr std::uint32_t kRamSegment = 0x800000;
+
+/// simavr's own logger prints its notes ("Loaded 6694 .text ...") on stdout, where
+/// trilho-device prints the pty path a caller reads: only its errors are kept, on stderr.
+void logErrorsOnly(avr_t*, const int level, const char* format, va_list ap) {
+    if (level > LOG_ERROR) return;
+    std::fputs("simavr: ", stderr);
+    std::vfprintf(stderr, format, ap);
+}
 
 void freeImage(elf_firmware_t& f, bool symbolsInUse) {
     std::free(f.flash);
@@ -45,6 +55,7 @@ std::unique_ptr<AvrChip> AvrChip::load(const std::string& elfPath, const std::st
                                                                    4) == 0;
     if (!elf || static_cast<unsigned char>(header[18]) != 83 || header[19] != 0)
         return fail(elfPath + ": not an AVR ELF image (avr-gcc's output) simavr can read");
+    avr_global_logger_set(&logErrorsOnly);
     elf_firmware_t f;
     std::memset(&f, 0, sizeof f);
     if (elf_read_firmware(elfPath.c_str(), &f) != 0 || f.flashsize == 0) {

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "hal/firmware_sim/seed004_board.h"
+#include "hal/firmware_sim/seed004_device.h"
 
 using namespace trilho;
 
@@ -270,4 +271,32 @@ TEST(Seed004Board, AMissingOrForeignImageIsRefusedWithItsPath) {
     o.elfPath = TRILHO_SEED004_WARNINGS;  // a text file
     EXPECT_FALSE(Seed004Board::load(o, &error));
     EXPECT_NE(error.find("not an AVR ELF image"), std::string::npos) << error;
+}
+
+// trilho-device --firmware seed004: the harness behind the DeviceFirmware interface the runner
+// steps every millisecond with bytes as they come.
+TEST(Seed004Device, RunsTheBoardAsTheRunnerStepsIt) {
+    auto b = boot(TRILHO_SEED004_ELF);
+    ASSERT_TRUE(b);
+    Seed004Device device(std::move(b));
+    double now = 0.0;
+    auto run = [&](double s) {
+        for (int i = 0; i < static_cast<int>(s / 0.001 + 0.5); ++i) {
+            now += 0.001;
+            device.step(0.001, now);
+        }
+    };
+    run(0.1);
+    for (std::uint8_t v : setPoint(180, 120)) {
+        device.receive(v, now);
+        run(0.040);
+    }
+    run(6.0);
+    EXPECT_FALSE(device.stopped());
+    EXPECT_NEAR(device.board().seconds(), now, 1e-6);
+    EXPECT_TRUE(device.takeOutput().empty());  // the main program answers nothing
+    EXPECT_NEAR(device.board().plant().positionMm(0), 180.0, 1.5);
+    EXPECT_GT(device.board().plant().positionMm(1), 110.0);
+    EXPECT_NE(device.summary().find("bytes read 4, overruns (DOR) 0"), std::string::npos)
+        << device.summary();
 }
