@@ -163,6 +163,61 @@ TEST(Seed004Main, AfterTheMoveTheLastDutyStaysOnAndTheCountWalksBack) {
     EXPECT_LT(b->chip().ramU16("pulsos_y"), count);  // counted backwards
 }
 
+// A move backwards, (180,120) -> (100,60), as the seed's code runs it. Its final time is
+// (v^2 - a (ini - fin)) / (a v), written for forward moves: backwards it shrinks (tfx =
+// -0.033 s, tfy = 0.1 s), so the y branch runs with tf = 0.1 s (long3 = 18), the minimum
+// acceleration check fails (tc = 0.5 s > tf/2) and the arrays keep the previous move's points;
+// that branch takes fabs of the other axis' error (the swapped fabs), so both errors stay
+// signed, negative, and the clamp to min = 0 writes OCR 0: the direction bits say backwards
+// and nothing moves.
+TEST(Seed004Main, ABackwardMoveSetsBothDirectionBitsAndDrivesNothing) {
+    auto b = boot(TRILHO_SEED004_ELF);
+    ASSERT_TRUE(b);
+    ASSERT_TRUE(b->runFor(0.1));
+    sendPaced(*b, setPoint(180, 120));
+    ASSERT_TRUE(b->runFor(5.0));
+    const double x = b->plant().positionMm(0), y = b->plant().positionMm(1);
+    const std::uint64_t sent = b->chip().cycle();
+    sendPaced(*b, setPoint(100, 60));
+    ASSERT_TRUE(b->runFor(1.0));
+    EXPECT_NEAR(b->chip().ramFloat("tfx"), -1500.0f / 45000.0f, 1e-6);
+    EXPECT_NEAR(b->chip().ramFloat("tfy"), 0.1f, 1e-6);
+    EXPECT_EQ(b->chip().ramU16("long3"), 18);
+    EXPECT_TRUE(b->reverse(0));
+    EXPECT_TRUE(b->reverse(1));
+    const std::vector<OcrWrite> wx = writesOf(*b, 0, sent), wy = writesOf(*b, 1, sent);
+    ASSERT_EQ(wx.size(), 18u);
+    ASSERT_EQ(wy.size(), 18u);
+    for (const OcrWrite& w : wx)
+        EXPECT_EQ(w.value, 0);
+    for (const OcrWrite& w : wy)
+        EXPECT_EQ(w.value, 0);
+    EXPECT_NEAR(b->plant().positionMm(0), x, 0.5);
+    EXPECT_NEAR(b->plant().positionMm(1), y, 1.5);  // y's creep of the last move, then rest
+}
+
+// bits_de_giro only ORs bits into PORTC: once a move has set them, a move forwards runs
+// backwards. (180,120) -> (100,60) -> (150,100): x, commanded forwards, goes backwards at the
+// 50 % clamp (OCR1A 123) past the origin; trilho's plant has no end of travel to stop it.
+TEST(Seed004Main, BitsDeGiroNeverClearsSoTheNextForwardMoveRunsBackwards) {
+    auto b = boot(TRILHO_SEED004_ELF);
+    ASSERT_TRUE(b);
+    ASSERT_TRUE(b->runFor(0.1));
+    sendPaced(*b, setPoint(180, 120));
+    ASSERT_TRUE(b->runFor(5.0));
+    sendPaced(*b, setPoint(100, 60));
+    ASSERT_TRUE(b->runFor(1.0));
+    const double x = b->plant().positionMm(0);
+    sendPaced(*b, setPoint(150, 100));
+    ASSERT_TRUE(b->runFor(0.6));
+    EXPECT_EQ(b->chip().ramFloat("spx_fin"), 150.0f);
+    EXPECT_TRUE(b->reverse(0));
+    EXPECT_TRUE(b->reverse(1));
+    EXPECT_EQ(b->ocr(0), 123);
+    EXPECT_LT(b->plant().positionMm(0), x - 50.0);
+    EXPECT_LT(b->plant().velocityMmS(0), 0.0);
+}
+
 // The receiver as the ATmega128 has it. The program reads a byte, then waits 32.8 ms
 // (_delay_loop_2(65530)) before it polls again. Four bytes back to back (4.2 ms at 9600 bit/s)
 // to a board that is polling: the first is read at once, the next two wait in the two-byte
