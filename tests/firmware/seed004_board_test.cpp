@@ -218,6 +218,29 @@ TEST(Seed004Main, BitsDeGiroNeverClearsSoTheNextForwardMoveRunsBackwards) {
     EXPECT_LT(b->plant().velocityMmS(0), 0.0);
 }
 
+// Over-current: x jams in its loop, the plant's comparator trips, PE5 rises, and the
+// program's INT5 handler stops Timer 1 (TCCR1A = TCCR1B = 0): both channels off, as printed.
+TEST(Seed004Main, AJamTripsInt5AndTheHandlerStopsTimer1) {
+    auto b = boot(TRILHO_SEED004_ELF);
+    ASSERT_TRUE(b);
+    ASSERT_TRUE(b->runFor(0.1));
+    sendPaced(*b, setPoint(180, 120));
+    ASSERT_TRUE(b->runFor(0.8));          // in the x loop
+    ASSERT_NE(b->chip().data8(0x4F), 0);  // TCCR1A: COM1A1, COM1B1, WGM11
+    b->plant().setJammed(0, true);
+    double waited = 0.0;
+    while (!b->plant().readOverCurrent(0) && waited < 1.0) {
+        ASSERT_TRUE(b->runFor(0.001));
+        waited += 0.001;
+    }
+    ASSERT_TRUE(b->plant().readOverCurrent(0));
+    ASSERT_TRUE(b->runFor(0.001));
+    EXPECT_EQ(b->chip().data8(0x4F), 0);  // TCCR1A
+    EXPECT_EQ(b->chip().data8(0x4E), 0);  // TCCR1B
+    EXPECT_EQ(b->dutyPercent(0), 0.0);
+    EXPECT_EQ(b->dutyPercent(1), 0.0);
+}
+
 // The receiver as the ATmega128 has it. The program reads a byte, then waits 32.8 ms
 // (_delay_loop_2(65530)) before it polls again. Four bytes back to back (4.2 ms at 9600 bit/s)
 // to a board that is polling: the first is read at once, the next two wait in the two-byte
