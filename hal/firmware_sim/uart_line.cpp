@@ -34,6 +34,8 @@ UartLine::UartLine(AvrChip& chip, double lineBaud) : chip_(chip), baud_(lineBaud
     avr_ioctl(avr, AVR_IOCTL_UART_SET_FLAGS('0'), &flags);
     // The receive buffer is this model's: UDR0 reads come here (simavr's handler is replaced,
     // its 64-byte FIFO stays empty), UCSR0B writes too (RXEN off flushes the buffer).
+    simavrUdrRead_ = avr->io[ioIndex(kUdr0)].r.c;
+    simavrUdrParam_ = avr->io[ioIndex(kUdr0)].r.param;
     avr->io[ioIndex(kUdr0)].r.c = &UartLine::onUdrRead;
     avr->io[ioIndex(kUdr0)].r.param = this;
     avr_register_io_write(avr, kUcsr0B, &UartLine::onControlWrite, this);
@@ -42,7 +44,11 @@ UartLine::UartLine(AvrChip& chip, double lineBaud) : chip_(chip), baud_(lineBaud
 }
 
 UartLine::~UartLine() {
-    avr_cycle_timer_cancel(chip_.core(), &UartLine::onTimer, this);
+    avr_t* avr = chip_.core();
+    avr_cycle_timer_cancel(avr, &UartLine::onTimer, this);
+    // The chip may outlive this model: UDR0 reads go back to simavr's handler.
+    avr->io[ioIndex(kUdr0)].r.c = simavrUdrRead_;
+    avr->io[ioIndex(kUdr0)].r.param = simavrUdrParam_;
 }
 
 std::uint64_t UartLine::frameCycles() const {

@@ -83,6 +83,9 @@ class UartLine {
     std::uint64_t lineFreeAt_ = 0;
     std::vector<TimedByte> out_;
     UartLineStats stats_;
+    /// simavr's UDR0 read handler (its avr_io_read_t), put back on destruction.
+    std::uint8_t (*simavrUdrRead_)(avr_t*, std::uint16_t, void*) = nullptr;
+    void* simavrUdrParam_ = nullptr;
 };
 
 }  // namespace trilho
