@@ -22,9 +22,8 @@
 #include "hal/emulator/plotter_firmware.h"
 #include "hal/emulator/table_firmware.h"
 #ifdef TRILHO_HAS_FIRMWARE
-#include <QFileInfo>
-
 #include "hal/firmware_sim/seed004_device.h"
+#include "host/common/data_paths.h"
 #endif
 
 using namespace trilho;
@@ -210,9 +209,7 @@ int main(int argc, char* argv[]) {
         if (profile.kind != MachineKind::DcTable)
             return usage(QStringLiteral("the table needs an xy-dc-table profile"));
 #ifdef TRILHO_HAS_FIRMWARE
-        const QString name = image + QStringLiteral(".elf");
-        QString path = QStringLiteral(TRILHO_FIRMWARE_BUILD_DIR "/seed004/") + name;
-        if (!QFileInfo::exists(path)) path = QStringLiteral(TRILHO_FIRMWARE_INSTALL_DIR "/") + name;
+        const QString path = firmwareDir() + QLatin1Char('/') + image + QStringLiteral(".elf");
         Seed004BoardOptions o;
         o.elfPath = path.toStdString();
         o.lineBaud = settings.baud;
