@@ -104,6 +104,8 @@ bool AvrChip::runUntil(std::uint64_t cycle) {
 }
 
 bool AvrChip::runFor(double seconds) {
+    // Nothing to run for no time, a negative or a not-a-number one (the cast would wrap).
+    if (!(seconds > 0.0)) return avr_->state != cpu_Crashed && avr_->state != cpu_Done;
     return runUntil(cycle() + static_cast<std::uint64_t>(seconds * clockHz_ + 0.5));
 }
 

@@ -26,6 +26,16 @@ void noSleep(avr_t*, avr_cycle_count_t) {}
 }  // namespace
 
 std::unique_ptr<Seed004Board> Seed004Board::load(const Seed004BoardOptions& o, std::string* error) {
+    // The plant step: at least a cycle, at most 1 ms (an encoder count lasts 0.7 ms at 150 mm/s:
+    // a longer step would merge edges the chip must see apart). The line: a UART's range.
+    if (!(o.stepS >= 1.0 / kClockHz && o.stepS <= 0.001)) {
+        if (error) *error = "plant step " + std::to_string(o.stepS) + " s: must be 125 ns to 1 ms";
+        return nullptr;
+    }
+    if (!(o.lineBaud >= 50.0 && o.lineBaud <= 1e6)) {
+        if (error) *error = "line rate " + std::to_string(o.lineBaud) + " bit/s: must be 50 to 1e6";
+        return nullptr;
+    }
     std::unique_ptr<AvrChip> chip = AvrChip::load(o.elfPath, "atmega128", kClockHz, error);
     if (!chip) return nullptr;
     std::unique_ptr<Seed004Board> b(new Seed004Board(o.plant, o.plantSeed));

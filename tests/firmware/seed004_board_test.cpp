@@ -339,6 +339,69 @@ TEST(Seed004Calibration, RampsOcr1aUntilTheFirstPulseThenStreamsTheCount) {
     EXPECT_GT(b->plant().positionMm(0), 0.0);
 }
 
+// Attacks on the harness with the seed's code: a flood, set points at the ends of the range.
+// A flood of 1000 bytes back to back at a board that reads one per 32.8 ms: it reads 4, two
+// wait in the buffer, one in the shift register, and 993 are lost (DOR); nothing else happens.
+TEST(Seed004Attack, AFloodIsCountedAsOverruns) {
+    auto b = boot(TRILHO_SEED004_ELF);
+    ASSERT_TRUE(b);
+    ASSERT_TRUE(b->runFor(0.1));
+    b->send(std::vector<std::uint8_t>(1000, 0x01));
+    ASSERT_TRUE(b->runFor(3.0)) << b->chip().stateText();
+    EXPECT_EQ(b->uart().stats().read, 4u);
+    EXPECT_EQ(b->uart().stats().overruns, 993u);
+    EXPECT_EQ(b->uart().buffered(), 2u);
+}
+
+// (300,300): tf = 3.5 s, long3 = 498 samples into arrays of 480 (the seed's "2.4 s"): the
+// writes run past arr_sp1 into the stack's end of RAM and the x loop drives on (trilho's plant
+// has no end of travel).
+TEST(Seed004Attack, AMovePast480SamplesOverrunsTheArrays) {
+    auto b = boot(TRILHO_SEED004_ELF);
+    ASSERT_TRUE(b);
+    ASSERT_TRUE(b->runFor(0.1));
+    sendPaced(*b, setPoint(300, 300));
+    ASSERT_TRUE(b->runFor(3.0)) << b->chip().stateText();
+    EXPECT_EQ(b->chip().ramU16("long3"), 498);
+    EXPECT_GT(b->plant().positionMm(0), 400.0);
+}
+
+// (65535, 65535) mm: long3 = 21944, the planning loops write far past RAM's end and simavr
+// stops the core ("Invalid write address ... out of ram"): the harness says the chip crashed
+// and stays up.
+TEST(Seed004Attack, TheLargestSetPointCrashesTheChipAndTheHarnessSaysSo) {
+    auto b = boot(TRILHO_SEED004_ELF);
+    ASSERT_TRUE(b);
+    ASSERT_TRUE(b->runFor(0.1));
+    sendPaced(*b, setPoint(65535, 65535));
+    EXPECT_FALSE(b->runFor(10.0));
+    EXPECT_EQ(b->chip().stateText(), "crashed");
+    EXPECT_FALSE(b->runFor(1.0));  // it stays crashed
+    EXPECT_EQ(b->plant().positionMm(0), 0.0);
+}
+
+// The harness' own inputs: no time, negative or NaN time runs nothing; a step or a line rate
+// out of range is refused with the figure.
+TEST(Seed004Attack, BadRunTimesAndOptionsAreRefused) {
+    auto b = boot(TRILHO_SEED004_ELF);
+    ASSERT_TRUE(b);
+    const std::uint64_t c = b->chip().cycle();
+    EXPECT_TRUE(b->runFor(0.0));
+    EXPECT_TRUE(b->runFor(-1.0));
+    EXPECT_TRUE(b->runFor(std::nan("")));
+    EXPECT_EQ(b->chip().cycle(), c);
+    Seed004BoardOptions o;
+    o.elfPath = TRILHO_SEED004_ELF;
+    std::string error;
+    o.stepS = -1.0;
+    EXPECT_FALSE(Seed004Board::load(o, &error));
+    EXPECT_NE(error.find("plant step"), std::string::npos) << error;
+    o.stepS = 25e-6;
+    o.lineBaud = 0.0;
+    EXPECT_FALSE(Seed004Board::load(o, &error));
+    EXPECT_NE(error.find("line rate"), std::string::npos) << error;
+}
+
 // A wrong image is a clear message naming the file, never a crash.
 TEST(Seed004Board, AMissingOrForeignImageIsRefusedWithItsPath) {
     Seed004BoardOptions o;
