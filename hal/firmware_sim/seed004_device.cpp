@@ -30,15 +30,22 @@ std::vector<std::uint8_t> Seed004Device::takeOutput() {
 
 std::string Seed004Device::summary() const {
     const UartLineStats& s = board_->uart().stats();
-    char line[256];
+    char line[320];
     std::snprintf(line, sizeof line,
                   "board time %.3f s, bytes read %llu, overruns (DOR) %llu, sent %llu, x %.2f mm, "
-                  "y %.2f mm%s",
+                  "y %.2f mm",
                   board_->seconds(), static_cast<unsigned long long>(s.read),
                   static_cast<unsigned long long>(s.overruns),
                   static_cast<unsigned long long>(s.sent), board_->plant().positionMm(0),
-                  board_->plant().positionMm(1), stopped_ ? ", the core STOPPED" : "");
-    return line;
+                  board_->plant().positionMm(1));
+    std::string out = line;
+    // Bytes the chip could not take at all: a line rate its UBRR0 does not match (--baud), or
+    // sent before the program enabled its receiver.
+    if (s.baudMismatch)
+        out += ", lost to a rate the chip does not run at " + std::to_string(s.baudMismatch);
+    if (s.receiverOff) out += ", lost with the receiver off " + std::to_string(s.receiverOff);
+    if (stopped_) out += ", the core STOPPED (" + board_->chip().stateText() + ")";
+    return out;
 }
 
 }  // namespace trilho

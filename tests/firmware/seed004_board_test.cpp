@@ -402,6 +402,22 @@ TEST(Seed004Attack, BadRunTimesAndOptionsAreRefused) {
     EXPECT_NE(error.find("line rate"), std::string::npos) << error;
 }
 
+// A host at another rate than the program's UBRR0 (trilho-device --baud 19200 against the
+// main program's 9600): the chip takes none of its bytes, and the summary says why.
+TEST(Seed004Device, BytesAtAnotherRateAreLostAndSaidSo) {
+    auto b = boot(TRILHO_SEED004_ELF, 19200.0);
+    ASSERT_TRUE(b);
+    Seed004Device device(std::move(b));
+    device.step(0.1, 0.1);
+    for (std::uint8_t v : setPoint(180, 120))
+        device.receive(v, 0.1);
+    device.step(0.5, 0.6);
+    EXPECT_EQ(device.board().uart().stats().read, 0u);
+    EXPECT_EQ(device.board().uart().stats().baudMismatch, 4u);
+    EXPECT_NE(device.summary().find("lost to a rate the chip does not run at 4"), std::string::npos)
+        << device.summary();
+}
+
 // A wrong image is a clear message naming the file, never a crash.
 TEST(Seed004Board, AMissingOrForeignImageIsRefusedWithItsPath) {
     Seed004BoardOptions o;
