@@ -7,6 +7,11 @@
 set -euo pipefail
 TRILHO_PACKAGES=(
   build-essential cmake ninja-build pkg-config
+  # The boards' own firmware (firmware/, issue 32): avr-gcc and avr-libc cross-compile it in the
+  # normal build (binutils-avr, avr-objcopy and avr-size, comes with gcc-avr); libsimavr runs it
+  # cycle for cycle against the plants in the tests (hal/firmware_sim), simavr is the same
+  # simulator as a command, for looking at an image by hand.
+  gcc-avr avr-libc simavr libsimavr-dev
   qt6-base-dev qt6-serialport-dev qt6-serialbus-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
   qt6-translations-l10n
   libqcustomplot-dev libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev libgl1-mesa-dev

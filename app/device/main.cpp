@@ -6,6 +6,8 @@
 //                 [--machine PROFILE]
 //                 [--calibration [--calibration-axis x|y] [--calibration-percent P]]
 //                 (table: seed 004's open-loop calibration program)
+//                 [--firmware seed004|seed004-calibration]
+//                 (table: seed 004's own firmware, firmware/seed004, on libsimavr)
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QSerialPort>
@@ -19,6 +21,10 @@
 #include "core/profile/machine_profile.h"
 #include "hal/emulator/plotter_firmware.h"
 #include "hal/emulator/table_firmware.h"
+#ifdef TRILHO_HAS_FIRMWARE
+#include "hal/firmware_sim/seed004_device.h"
+#include "host/common/data_paths.h"
+#endif
 
 using namespace trilho;
 
@@ -103,9 +109,16 @@ int main(int argc, char* argv[]) {
         QStringLiteral("calibration-percent"),
         QStringLiteral("table --calibration: its fixed PWM, percent (default 25)."),
         QStringLiteral("P"));
+    const QCommandLineOption firmwareOpt(
+        QStringLiteral("firmware"),
+        QStringLiteral("table: run the board's own firmware on a simulated ATmega128 at 8 MHz "
+                       "instead of the emulator: seed004 (the main program, 9600 bit/s) or "
+                       "seed004-calibration (the open-loop program, 38400 bit/s)."),
+        QStringLiteral("IMAGE"));
     parser.addOptions({ptyOpt, portOpt, baudOpt, corruptOpt, everyOpt, dropOpt, delayOpt, dupOpt,
                        outCorruptOpt, outDropOpt, outDupOpt, outDelayOpt, seedOpt, unpacedOpt,
-                       machineOpt, calibrationOpt, calibrationAxisOpt, calibrationPercentOpt});
+                       machineOpt, calibrationOpt, calibrationAxisOpt, calibrationPercentOpt,
+                       firmwareOpt});
     parser.process(app);
 
     const QStringList args = parser.positionalArguments();
@@ -125,11 +138,25 @@ int main(int argc, char* argv[]) {
         calibrationAxis != QLatin1String("y"))
         return usage(
             QStringLiteral("--calibration-axis: must be x or y (got %1)").arg(calibrationAxis));
+    const QString image = parser.value(firmwareOpt);
+    if (parser.isSet(firmwareOpt)) {
+        if (board != QLatin1String("table"))
+            return usage(QStringLiteral("--firmware is the table's (seed 004's board)"));
+        if (image != QLatin1String("seed004") && image != QLatin1String("seed004-calibration"))
+            return usage(
+                QStringLiteral("--firmware: seed004 or seed004-calibration (got %1)").arg(image));
+        if (parser.isSet(calibrationOpt))
+            return usage(
+                QStringLiteral("--firmware runs the seed's own programs: "
+                               "--firmware seed004-calibration, not --calibration"));
+    }
     if (parser.isSet(ptyOpt) && parser.isSet(portOpt))
         return usage(QStringLiteral("--pty and --port exclude each other"));
 
     RunnerSettings settings;
     settings.baud = board == QLatin1String("plotter") ? 57600 : 9600;
+    // The calibration program sets UBRR0L = 0x19 with U2X: 38400 bit/s (seed 004 annex 7).
+    if (image == QLatin1String("seed004-calibration")) settings.baud = 38400;
     auto number = [&](const QCommandLineOption& o, double lo, double hi, double& into) {
         if (!parser.isSet(o)) return true;
         bool ok = false;
@@ -178,6 +205,25 @@ int main(int argc, char* argv[]) {
         if (profile.kind != MachineKind::Plotter)
             return usage(QStringLiteral("the plotter needs an xy-plotter profile"));
         firmware = std::make_unique<PlotterFirmware>(profile, settings.faults.seed);
+    } else if (parser.isSet(firmwareOpt)) {
+        if (profile.kind != MachineKind::DcTable)
+            return usage(QStringLiteral("the table needs an xy-dc-table profile"));
+#ifdef TRILHO_HAS_FIRMWARE
+        const QString path = firmwareDir() + QLatin1Char('/') + image + QStringLiteral(".elf");
+        Seed004BoardOptions o;
+        o.elfPath = path.toStdString();
+        o.lineBaud = settings.baud;
+        o.plant = profile.dcTable;
+        o.plantSeed = settings.faults.seed;
+        std::string error;
+        std::unique_ptr<Seed004Board> chip = Seed004Board::load(o, &error);
+        if (!chip) return usage(QString::fromStdString(error));
+        firmware = std::make_unique<Seed004Device>(std::move(chip));
+#else
+        return usage(
+            QStringLiteral("--firmware: this trilho-device was built without the "
+                           "firmware (TRILHO_BUILD_FIRMWARE=OFF)"));
+#endif
     } else {
         if (profile.kind != MachineKind::DcTable)
             return usage(QStringLiteral("the table needs an xy-dc-table profile"));
@@ -205,6 +251,9 @@ int main(int argc, char* argv[]) {
         runner = std::make_unique<DeviceRunner>(std::move(firmware), pty.masterFd(), settings);
         std::printf("trilho-device: %s on %s at %d bit/s\n", qPrintable(board),
                     pty.slavePath().c_str(), settings.baud);
+        if (parser.isSet(firmwareOpt))
+            std::printf("trilho-device: firmware %s on a simulated ATmega128 at 8 MHz\n",
+                        qPrintable(image));
     }
     std::fflush(stdout);
 

@@ -46,6 +46,11 @@ QString docsDir() {
                               : QStringLiteral(TRILHO_SOURCE_DIR "/docs");
 }
 
+QString firmwareDir() {
+    return runningInstalled() ? installedDataDir() + QStringLiteral("/firmware")
+                              : QStringLiteral(TRILHO_BUILD_DIR "/firmware");
+}
+
 QString machineProfilePath(const QString& nameOrPath) {
     if (nameOrPath.isEmpty()) return machinesDir() + QStringLiteral("/rail.json");
     if (QFileInfo::exists(nameOrPath) || nameOrPath.contains(QLatin1Char('/'))) return nameOrPath;

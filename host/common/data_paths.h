@@ -17,6 +17,8 @@ QString machinesDir();
 QString translationsDir();
 /// The guides (operator.md, teaching.md, ... and their screenshots) Help opens.
 QString docsDir();
+/// The boards' firmware images (seed004.elf, seed004-calibration.elf: firmware/, issue 32).
+QString firmwareDir();
 /// True when the running executable is the installed one (not in the build tree).
 bool runningInstalled();
 

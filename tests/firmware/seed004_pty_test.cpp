@@ -1,0 +1,145 @@
+// Issue 32: `trilho-device table --firmware seed004|seed004-calibration --pty`, the seed's own
+// firmware on the simulated ATmega128 in real time, as a process on a real pseudo-terminal.
+// The runner's clock is the wall clock: board time follows it whatever the host's load, so
+// the waits below are the board's own durations, with conditions (no fixed sleeps) where the
+// board says something.
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTest>
+#include <functional>
+#include <vector>
+
+namespace {
+
+bool waitFor(const std::function<bool()>& cond, double timeoutS) {
+    QElapsedTimer clock;
+    clock.start();
+    while (!cond()) {
+        if (static_cast<double>(clock.elapsed()) > timeoutS * 1000.0) return false;
+        QTest::qWait(5);
+    }
+    return true;
+}
+
+struct Device {
+    QProcess process;
+    QString path, out;
+    bool start(const QStringList& args, int baud) {
+        process.setProgram(QStringLiteral(TRILHO_DEVICE));
+        process.setArguments(args);
+        process.start();
+        if (!process.waitForStarted(5000)) return false;
+        const QRegularExpression re(QStringLiteral("table on (\\S+) at %1 bit/s").arg(baud));
+        return waitFor(
+            [&] {
+                out += QString::fromUtf8(process.readAllStandardOutput());
+                const auto m = re.match(out);
+                if (m.hasMatch()) path = m.captured(1);
+                return !path.isEmpty();
+            },
+            10.0);
+    }
+    /// SIGTERM, and what it printed last (its summary line).
+    QString stop() {
+        process.terminate();
+        process.waitForFinished(5000);
+        out += QString::fromUtf8(process.readAllStandardOutput());
+        return out;
+    }
+    ~Device() {
+        if (process.state() != QProcess::NotRunning) {
+            process.terminate();
+            if (!process.waitForFinished(5000)) process.kill();
+        }
+    }
+};
+
+int openRaw(const QString& path, speed_t speed) {
+    const int fd = ::open(path.toLocal8Bit().constData(), O_RDWR | O_NOCTTY | O_NONBLOCK);
+    if (fd < 0) return fd;
+    termios t{};
+    tcgetattr(fd, &t);
+    cfmakeraw(&t);
+    cfsetispeed(&t, speed);
+    cfsetospeed(&t, speed);
+    tcsetattr(fd, TCSANOW, &t);
+    return fd;
+}
+
+}  // namespace
+
+// The calibration program streams its count, LSB then MSB, every 42.8 ms once the axis moves.
+TEST(Seed004Pty, CalibrationImageStreamsARisingCount) {
+    Device d;
+    ASSERT_TRUE(d.start({QStringLiteral("table"), QStringLiteral("--firmware"),
+                         QStringLiteral("seed004-calibration"), QStringLiteral("--pty")},
+                        38400))
+        << d.out.toStdString();
+    const int fd = openRaw(d.path, B38400);
+    ASSERT_GE(fd, 0);
+    std::vector<unsigned char> got;
+    ASSERT_TRUE(waitFor(
+        [&] {
+            unsigned char buf[64];
+            const ssize_t n = ::read(fd, buf, sizeof buf);
+            if (n > 0) got.insert(got.end(), buf, buf + n);
+            return got.size() >= 40;
+        },
+        20.0));
+    ::close(fd);
+    unsigned last = 0;
+    for (std::size_t i = 0; i + 1 < got.size(); i += 2) {
+        const unsigned count = got[i] | (got[i + 1] << 8);
+        EXPECT_GE(count, last);
+        last = count;
+    }
+    EXPECT_GT(last, 0u);
+    EXPECT_LT(last, 1300u);
+}
+
+// The main program: a set point sent back to back (four bytes; the board is polling, so the
+// buffer and the shift register hold them), no answer, and the table moved along x. The 4 s
+// are the board's: its x loop ends 2.1 s after the fourth byte.
+TEST(Seed004Pty, MainImageTakesASetPointAndAnswersNothing) {
+    Device d;
+    ASSERT_TRUE(d.start({QStringLiteral("table"), QStringLiteral("--firmware"),
+                         QStringLiteral("seed004"), QStringLiteral("--pty")},
+                        9600))
+        << d.out.toStdString();
+    const int fd = openRaw(d.path, B9600);
+    ASSERT_GE(fd, 0);
+    const unsigned char setPoint[4] = {0x00, 0xB4, 0x00, 0x78};  // (180, 120) mm
+    ASSERT_EQ(::write(fd, setPoint, sizeof setPoint), 4);
+    QElapsedTimer clock;
+    clock.start();
+    std::size_t answered = 0;
+    while (clock.elapsed() < 4000) {
+        unsigned char buf[64];
+        const ssize_t n = ::read(fd, buf, sizeof buf);
+        if (n > 0) answered += static_cast<std::size_t>(n);
+        QTest::qWait(20);
+    }
+    ::close(fd);
+    EXPECT_EQ(answered, 0u);
+    const QString out = d.stop();
+    EXPECT_TRUE(out.contains(QStringLiteral("bytes read 4, overruns (DOR) 0, sent 0")))
+        << out.toStdString();
+    const QRegularExpression x(QStringLiteral("x (\\d+\\.\\d+) mm"));
+    const auto m = x.match(out);
+    ASSERT_TRUE(m.hasMatch()) << out.toStdString();
+    EXPECT_NEAR(m.captured(1).toDouble(), 180.0, 1.5);
+}
+
+int main(int argc, char** argv) {
+    QCoreApplication app(argc, argv);
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}
