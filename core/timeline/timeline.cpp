@@ -105,6 +105,33 @@ std::uint32_t eventLine(const ControllerEvent& e, const Program* program, std::i
     return 0;
 }
 
+void TimelineRecorder::add(const ControllerEvent& e, const QString& text, std::int32_t blockIndex,
+                           std::uint32_t blockLine) {
+    std::uint32_t line = eventLine(e, program_, blockIndex, blockLine);
+    // An alarm that stopped the run in the period it came: the block running a period before.
+    if (line == 0 && e.kind == EventKind::AlarmRaised && inRun_) line = runningLine_;
+    if (auto mark = timelineMark(e, line, text)) {
+        if (mark->kind == MarkKind::Start) inRun_ = true;  // a start from a block says so
+        timeline_.add(std::move(*mark));
+    }
+}
+
+void TimelineRecorder::observe(ControllerState state, double timeS, std::int32_t blockIndex,
+                               std::uint32_t blockLine) {
+    const bool inRun = state == ControllerState::Running || state == ControllerState::Waiting ||
+                       state == ControllerState::Paused;
+    if (inRun && !inRun_ && state == ControllerState::Running) {
+        // Running from the approach on, before its first block begins: that block's line.
+        std::uint32_t line = blockIndex >= 0 ? blockLine : 0;
+        if (line == 0 && program_ && !program_->blocks.empty())
+            line = program_->blocks.front().line;
+        timeline_.add({timeS, MarkKind::Start, 0, line, QString()});
+    }
+    if (inRun && !inRun_ && state != ControllerState::Running) return;  // not started yet
+    inRun_ = inRun;
+    runningLine_ = inRun && blockIndex >= 0 ? blockLine : 0;
+}
+
 QString journalKindOf(MarkKind kind) {
     switch (kind) {
         case MarkKind::Start:

@@ -14,6 +14,7 @@
 
 #include "core/journal/journal.h"
 #include "core/machine/controller_event.h"
+#include "core/machine/controller_state.h"
 
 namespace trilho {
 
@@ -85,6 +86,38 @@ std::optional<TimelineMark> timelineMark(const ControllerEvent& e, std::uint32_t
 /// none (a homing, Manual).
 std::uint32_t eventLine(const ControllerEvent& e, const Program* program, std::int32_t blockIndex,
                         std::uint32_t blockLine);
+
+/// Keeps a machine's timeline as its events are drained (the screens' poll, `trilho-cli run`'s
+/// periods): each event's mark with its line, the program's start when the run is first seen
+/// running, and the line that was running a period before, for an alarm that ended the block
+/// it came from in the period it was raised (the block is let go by then).
+class TimelineRecorder {
+  public:
+    /// The program of the runs to come (its blocks give the marks' lines); null: none.
+    void setProgram(const Program* program) { program_ = program; }
+    /// An event drained while the block at blockIndex (-1: none) of source line blockLine ran;
+    /// text: the history's line for it.
+    void add(const ControllerEvent& e, const QString& text, std::int32_t blockIndex,
+             std::uint32_t blockLine);
+    /// After each drain: marks the start when a run is first seen (Running, at its block's
+    /// line) and notes the line running.
+    void observe(ControllerState state, double timeS, std::int32_t blockIndex,
+                 std::uint32_t blockLine);
+    /// A mark the controller does not make (an override change, a DNC write).
+    void addMark(TimelineMark mark) { timeline_.add(std::move(mark)); }
+    const Timeline& timeline() const { return timeline_; }
+    void clear() {
+        timeline_.clear();
+        inRun_ = false;
+        runningLine_ = 0;
+    }
+
+  private:
+    Timeline timeline_;
+    const Program* program_ = nullptr;
+    bool inRun_ = false;             ///< a run is in progress (Running, Waiting, Paused)
+    std::uint32_t runningLine_ = 0;  ///< the line running at the last observe(); 0: none
+};
 
 /// The journal's kind for a mark ("alarm", "hold", "mode", ...). The journal keeps "start" and
 /// "stop" for the screens' own marks, so the run's start and end, and the operator's stop,
