@@ -14,6 +14,7 @@
 
 #include "core/files/atomic_file.h"
 #include "ui/plot_legend.h"
+#include "ui/timeline_strip.h"
 
 namespace trilho {
 namespace ui {
@@ -69,6 +70,12 @@ PlotPanel::PlotPanel(QWidget* parent) : QWidget(parent) {
     plots->addWidget(position_, 1);
     plots->addWidget(error_, 1);
     v->addLayout(plots, 1);
+    // The timeline under both plots, on their time axis (the position plot's, which the error
+    // plot shares).
+    strip_ = new TimelineStrip(this);
+    v->addWidget(strip_);
+    connect(position_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), strip_,
+            [this](const QCPRange& r) { strip_->setTimeRange(r.lower, r.upper); });
     connect(pause_, &QPushButton::toggled, this, &PlotPanel::setPaused);
     connect(png_, &QPushButton::clicked, this, [this] {
         const QString f = QFileDialog::getSaveFileName(this, tr("Export PNG"), QString(),
@@ -111,6 +118,16 @@ void PlotPanel::changeEvent(QEvent* e) {
 void PlotPanel::setPaused(bool paused) {
     paused_ = paused;
     if (pause_->isChecked() != paused) pause_->setChecked(paused);
+    if (!paused) replot();  // back to the live end
+}
+
+void PlotPanel::showMoment(double timeS) {
+    setPaused(true);
+    const double w = window_->value();
+    for (QCustomPlot* p : {position_, error_}) {
+        p->xAxis->setRange(timeS - w / 2, timeS + w / 2);
+        p->replot(QCustomPlot::rpQueuedReplot);
+    }
 }
 
 int PlotPanel::sampleCount() const {
