@@ -844,7 +844,12 @@ void MainWindow::showTimelineMark(const TimelineMark& mark) {
 
 void MainWindow::onEvent(const ControllerEvent& e) {
     const QString line = historyLine(e);
-    timelineEvent(e, line);
+    {
+        // The block the servo thread shows now (the status of this poll comes after its
+        // events): the m00 that waits, the block an alarm stopped.
+        const ControllerStatus now = link_.worker().snapshot();
+        timelineEvent(e, line, now.blockIndex, now.blockLine);
+    }
     const QString online = onlineStatus(e);
     if (!online.isEmpty()) setOnline([e] { return onlineStatus(e); });
     if (e.kind == EventKind::AlarmAcknowledged || e.kind == EventKind::EStopReset) {

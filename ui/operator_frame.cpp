@@ -402,9 +402,10 @@ void OperatorFrame::setTimelineProgram(std::shared_ptr<const Program> program) {
     timeline_.setProgram(timelineProgram_.get());
 }
 
-void OperatorFrame::timelineEvent(const ControllerEvent& e, const QString& text) {
+void OperatorFrame::timelineEvent(const ControllerEvent& e, const QString& text,
+                                  std::int32_t blockIndex, std::uint32_t blockLine) {
     const std::size_t before = timeline_.timeline().size();
-    timeline_.add(e, text, timelineBlock_, timelineLine_);
+    timeline_.add(e, text, blockIndex, blockLine);
     if (timelineStrip_ && timeline_.timeline().size() != before) timelineStrip_->refresh();
 }
 

@@ -189,9 +189,10 @@ class OperatorFrame : public QMainWindow {
     void setTimelineStrip(TimelineStrip* strip);
     /// The program of the runs to come (kept while its marks may name its lines).
     void setTimelineProgram(std::shared_ptr<const Program> program);
-    /// A controller's event as drained (text: its history line), with the block the last
-    /// status showed running.
-    void timelineEvent(const ControllerEvent& e, const QString& text);
+    /// A controller's event as drained (text: its history line), with the block the machine
+    /// shows running now (blockIndex -1: none).
+    void timelineEvent(const ControllerEvent& e, const QString& text, std::int32_t blockIndex,
+                       std::uint32_t blockLine);
     /// Each status: the run's start when first seen, the time and line of marks to come.
     void timelineStatus(ControllerState state, double timeS, std::int32_t blockIndex,
                         std::uint32_t blockLine);

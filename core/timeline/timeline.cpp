@@ -89,6 +89,16 @@ std::optional<TimelineMark> timelineMark(const ControllerEvent& e, std::uint32_t
 std::uint32_t eventLine(const ControllerEvent& e, const Program* program, std::int32_t blockIndex,
                         std::uint32_t blockLine) {
     if (!program) return 0;
+    switch (e.kind) {
+        // Not of a block: a mode is chosen, an alarm acknowledged, between runs or on a hold.
+        case EventKind::ModeManual:
+        case EventKind::ModeAutomatic:
+        case EventKind::EStopReset:
+        case EventKind::AlarmAcknowledged:
+            return 0;
+        default:
+            break;
+    }
     const auto& blocks = program->blocks;
     const bool running = blockIndex >= 0 && static_cast<std::size_t>(blockIndex) < blocks.size();
     if (e.n >= 0) {
@@ -121,10 +131,11 @@ void TimelineRecorder::observe(ControllerState state, double timeS, std::int32_t
     const bool inRun = state == ControllerState::Running || state == ControllerState::Waiting ||
                        state == ControllerState::Paused;
     if (inRun && !inRun_ && state == ControllerState::Running) {
-        // Running from the approach on, before its first block begins: that block's line.
+        // A run from a block said so (StartFromBlock) and is in already: this one runs from
+        // the program's first block, whichever the status shows by the time it is seen (the
+        // approach, or a block after status blocks that took no time).
         std::uint32_t line = blockIndex >= 0 ? blockLine : 0;
-        if (line == 0 && program_ && !program_->blocks.empty())
-            line = program_->blocks.front().line;
+        if (program_ && !program_->blocks.empty()) line = program_->blocks.front().line;
         timeline_.add({timeS, MarkKind::Start, 0, line, QString()});
     }
     if (inRun && !inRun_ && state != ControllerState::Running) return;  // not started yet

@@ -83,7 +83,7 @@ std::optional<TimelineMark> timelineMark(const ControllerEvent& e, std::uint32_t
 
 /// The program line an event belongs to: its block's (n), or the block running when it was
 /// drained (blockIndex >= 0 with blockLine), or the program's last block for its end; 0 when
-/// none (a homing, Manual).
+/// none (a homing, Manual) and for the events of no block (a mode chosen, an acknowledgement).
 std::uint32_t eventLine(const ControllerEvent& e, const Program* program, std::int32_t blockIndex,
                         std::uint32_t blockLine);
 

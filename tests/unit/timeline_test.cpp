@@ -84,6 +84,11 @@ TEST(Timeline, EventLineIsTheBlocksOrTheRunningOne) {
     EXPECT_EQ(eventLine(event(EventKind::ProgramEnd), &p, -1, 6), 6u);
     EXPECT_EQ(eventLine(event(EventKind::AlarmRaised, AlarmCode::FinalPositionOff), &p, -1, 6), 6u);
     EXPECT_EQ(eventLine(event(EventKind::ProgramEnd), nullptr, -1, 6), 0u);
+    // A mode chosen, an acknowledgement: of no block, whatever runs (drained with a run's
+    // first status, the mode change was marked at its block).
+    EXPECT_EQ(eventLine(event(EventKind::ModeAutomatic), &p, 1, 3), 0u);
+    EXPECT_EQ(eventLine(event(EventKind::AlarmAcknowledged, AlarmCode::FollowingError), &p, 1, 3),
+              0u);
     // An n the program does not have, a block index past its end: no line, no crash.
     EXPECT_EQ(eventLine(event(EventKind::Paused, AlarmCode::None, 999), &p, 99, 3), 0u);
 }

@@ -51,7 +51,7 @@ class TimelineStripTest : public QObject {
         QVERIFY(s.sizeHint().height() <= 32);
         QCOMPARE(s.xOf(5.0), 100);
         QCOMPARE(s.xOf(15.0), 300);
-        QCOMPARE(colourAt(s, 300), QColor(200, 0, 0));   // the alarm red
+        QCOMPARE(colourAt(s, 300), QColor(200, 0, 0));    // the alarm red
         QCOMPARE(colourAt(s, 200), QColor(230, 150, 0));  // the warning amber
         QCOMPARE(colourAt(s, 100), TimelineStrip::colourOf(MarkKind::Hold));
         QVERIFY(TimelineStrip::colourOf(MarkKind::Hold) != QColor(200, 0, 0));

@@ -758,7 +758,7 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
         dncLink()->noteEvent(e);
         const bool alarm = e.kind == EventKind::AlarmRaised;
         const QString line = xyHistoryLine(e);
-        timelineEvent(e, line);
+        timelineEvent(e, line, status.blockIndex, status.blockLine);
         if (!line.isEmpty())
             addHistory(line, journalKind(e), alarm ? static_cast<int>(e.alarm) : 0);
     }
