@@ -3207,6 +3207,10 @@
         <translation>%1: el ensayo no tiene muestras</translation>
     </message>
     <message>
+        <source>The run&apos;s events are not shown: %1</source>
+        <translation>Los eventos de la ejecución no se muestran: %1</translation>
+    </message>
+    <message>
         <source>Save run</source>
         <translation>Guardar ensayo</translation>
     </message>

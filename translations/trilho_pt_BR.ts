@@ -3207,6 +3207,10 @@
         <translation>%1: o ensaio não tem amostras</translation>
     </message>
     <message>
+        <source>The run&apos;s events are not shown: %1</source>
+        <translation>Os eventos da execução não são mostrados: %1</translation>
+    </message>
+    <message>
         <source>Save run</source>
         <translation>Salvar ensaio</translation>
     </message>

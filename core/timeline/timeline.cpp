@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "core/gcode/program.h"
 #include "core/machine/alarm.h"
@@ -28,7 +29,9 @@ std::optional<MarkKind> markKindFromName(QStringView name) {
 }
 
 void Timeline::add(TimelineMark mark) {
-    if (!marks_.empty() && mark.timeS < marks_.back().timeS) mark.timeS = marks_.back().timeS;
+    const double last = marks_.empty() ? 0.0 : marks_.back().timeS;
+    // NaN or infinite (no source gives one; a lookup by time needs order): at the last mark.
+    if (!std::isfinite(mark.timeS) || (!marks_.empty() && mark.timeS < last)) mark.timeS = last;
     if (marks_.size() == kMaxMarks) {
         // Drop the oldest tenth at once: a flood costs one move per 10,000 marks, not one each.
         const std::size_t drop = kMaxMarks / 10;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <QTemporaryDir>
+#include <cmath>
 #include <string>
 
 #include "core/gcode/compiler.h"
@@ -98,8 +99,12 @@ TEST(Timeline, NeverRunsBackAndStaysBounded) {
     t.add({2.0, MarkKind::Hold, 0, 1, QStringLiteral("a")});
     t.add({1.0, MarkKind::Resume, 0, 1, QStringLiteral("b")});
     EXPECT_EQ(t.marks()[1].timeS, 2.0);
+    t.add({std::nan(""), MarkKind::Hold, 0, 1, QString()});
+    t.add({HUGE_VAL, MarkKind::Hold, 0, 1, QString()});
+    EXPECT_EQ(t.marks()[2].timeS, 2.0);
+    EXPECT_EQ(t.marks()[3].timeS, 2.0);
     EXPECT_EQ(t.indexAtOrAfter(1.5), 0u);
-    EXPECT_EQ(t.indexAtOrAfter(2.5), 2u);
+    EXPECT_EQ(t.indexAtOrAfter(2.5), 4u);
     t.clear();
     for (std::size_t i = 0; i < Timeline::kMaxMarks + 5; ++i)
         t.add({static_cast<double>(i), MarkKind::Warning, 14, 0, QString()});
