@@ -56,24 +56,24 @@ PlotPanel::PlotPanel(QWidget* parent) : QWidget(parent) {
     window_->setRange(2, 600);
     window_->setValue(20);
     window_->setSuffix(QStringLiteral(" s"));
+    // The timeline under both plots, on their time axis (the position plot's, which the error
+    // plot shares), in one row with the plots' buttons: a row of its own made the dock 24 px
+    // taller and the 1996 form scroll at 1024x768.
+    strip_ = new TimelineStrip(this);
     auto* buttons = new QHBoxLayout;
+    buttons->addWidget(strip_, 1);
     buttons->addWidget(pause_);
     buttons->addWidget(window_);
-    buttons->addStretch();
     buttons->addWidget(png_);
     buttons->addWidget(csv_);
     auto* v = new QVBoxLayout(this);
-    v->addLayout(buttons);
     // Side by side: on a 768-line screen the dock is about 200 px high, and two plots stacked
     // there were 60 px each, their tick labels overprinted.
     auto* plots = new QHBoxLayout;
     plots->addWidget(position_, 1);
     plots->addWidget(error_, 1);
     v->addLayout(plots, 1);
-    // The timeline under both plots, on their time axis (the position plot's, which the error
-    // plot shares).
-    strip_ = new TimelineStrip(this);
-    v->addWidget(strip_);
+    v->addLayout(buttons);
     connect(position_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), strip_,
             [this](const QCPRange& r) { strip_->setTimeRange(r.lower, r.upper); });
     connect(pause_, &QPushButton::toggled, this, &PlotPanel::setPaused);
