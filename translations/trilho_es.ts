@@ -1303,6 +1303,38 @@
         <translation>estado</translation>
     </message>
     <message>
+        <source>hold</source>
+        <translation>espera</translation>
+    </message>
+    <message>
+        <source>resume</source>
+        <translation>reanudación</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>detenido</translation>
+    </message>
+    <message>
+        <source>mode</source>
+        <translation>modo</translation>
+    </message>
+    <message>
+        <source>run start</source>
+        <translation>inicio</translation>
+    </message>
+    <message>
+        <source>run end</source>
+        <translation>fin</translation>
+    </message>
+    <message>
+        <source>override</source>
+        <translation>corrección</translation>
+    </message>
+    <message>
+        <source>DNC write</source>
+        <translation>Escritura DNC</translation>
+    </message>
+    <message>
         <source>start</source>
         <translation>inicio</translation>
     </message>
@@ -1333,6 +1365,14 @@
     <message>
         <source>Export CSV</source>
         <translation>Exportar CSV</translation>
+    </message>
+    <message>
+        <source>Timeline</source>
+        <translation>Línea de tiempo</translation>
+    </message>
+    <message>
+        <source>The alarms, warnings, holds, overrides, mode changes and DNC writes of the history on a time axis</source>
+        <translation>Las alarmas, avisos, esperas, correcciones de avance, cambios de modo y escrituras DNC del historial en un eje de tiempo</translation>
     </message>
 </context>
 <context>
@@ -2154,6 +2194,10 @@
         <source>Simulated fault armed: %1</source>
         <translation>Falla simulada activa: %1</translation>
     </message>
+    <message>
+        <source>Feed override %1 %</source>
+        <translation>Corrección de avance %1 %</translation>
+    </message>
 </context>
 <context>
     <name>trilho::ui::PlotPanel</name>
@@ -2803,6 +2847,76 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::TimelineDialog</name>
+    <message>
+        <source>History timeline</source>
+        <translation>Línea de tiempo del historial</translation>
+    </message>
+    <message>
+        <source>Reading the history...</source>
+        <translation>Leyendo el historial...</translation>
+    </message>
+    <message>
+        <source>The history has no alarm, warning, hold, override, mode change or DNC write.</source>
+        <translation>El historial no tiene alarma, aviso, espera, corrección de avance, cambio de modo ni escritura DNC.</translation>
+    </message>
+    <message>
+        <source>Marks from the history: %1; times in seconds from its first entry. Click a mark to find it in the list.</source>
+        <translation>Marcas del historial: %1; tiempos en segundos desde la primera entrada. Haga clic en una marca para encontrarla en la lista.</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::TimelineStrip</name>
+    <message>
+        <source>Program start</source>
+        <translation>Inicio del programa</translation>
+    </message>
+    <message>
+        <source>Program end</source>
+        <translation>Fin del programa</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Alarma</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Aviso</translation>
+    </message>
+    <message>
+        <source>Acknowledged</source>
+        <translation>Reconocido</translation>
+    </message>
+    <message>
+        <source>Held</source>
+        <translation>En espera</translation>
+    </message>
+    <message>
+        <source>Resumed</source>
+        <translation>Reanudado</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Detenido</translation>
+    </message>
+    <message>
+        <source>Feed override</source>
+        <translation>Corrección de avance</translation>
+    </message>
+    <message>
+        <source>Mode change</source>
+        <translation>Cambio de modo</translation>
+    </message>
+    <message>
+        <source>DNC write</source>
+        <translation>Escritura DNC</translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation>línea %1</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::WorkbenchWindow</name>
     <message>
         <source>Tuning workbench: %1</source>
@@ -3091,6 +3205,10 @@
     <message>
         <source>%1: the run has no samples</source>
         <translation>%1: el ensayo no tiene muestras</translation>
+    </message>
+    <message>
+        <source>The run&apos;s events are not shown: %1</source>
+        <translation>Los eventos de la ejecución no se muestran: %1</translation>
     </message>
     <message>
         <source>Save run</source>

@@ -1303,6 +1303,38 @@
         <translation>estado</translation>
     </message>
     <message>
+        <source>hold</source>
+        <translation>espera</translation>
+    </message>
+    <message>
+        <source>resume</source>
+        <translation>retomada</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>parado</translation>
+    </message>
+    <message>
+        <source>mode</source>
+        <translation>modo</translation>
+    </message>
+    <message>
+        <source>run start</source>
+        <translation>início</translation>
+    </message>
+    <message>
+        <source>run end</source>
+        <translation>fim</translation>
+    </message>
+    <message>
+        <source>override</source>
+        <translation>correção</translation>
+    </message>
+    <message>
+        <source>DNC write</source>
+        <translation>Escrita DNC</translation>
+    </message>
+    <message>
         <source>start</source>
         <translation>início</translation>
     </message>
@@ -1333,6 +1365,14 @@
     <message>
         <source>Export CSV</source>
         <translation>Exportar CSV</translation>
+    </message>
+    <message>
+        <source>Timeline</source>
+        <translation>Linha do tempo</translation>
+    </message>
+    <message>
+        <source>The alarms, warnings, holds, overrides, mode changes and DNC writes of the history on a time axis</source>
+        <translation>Os alarmes, avisos, esperas, correções de avanço, mudanças de modo e escritas DNC do histórico num eixo de tempo</translation>
     </message>
 </context>
 <context>
@@ -2154,6 +2194,10 @@
         <source>Simulated fault armed: %1</source>
         <translation>Falha simulada ativa: %1</translation>
     </message>
+    <message>
+        <source>Feed override %1 %</source>
+        <translation>Correção de avanço %1 %</translation>
+    </message>
 </context>
 <context>
     <name>trilho::ui::PlotPanel</name>
@@ -2803,6 +2847,76 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::TimelineDialog</name>
+    <message>
+        <source>History timeline</source>
+        <translation>Linha do tempo do histórico</translation>
+    </message>
+    <message>
+        <source>Reading the history...</source>
+        <translation>Lendo o histórico...</translation>
+    </message>
+    <message>
+        <source>The history has no alarm, warning, hold, override, mode change or DNC write.</source>
+        <translation>O histórico não tem alarme, aviso, espera, correção de avanço, mudança de modo nem escrita DNC.</translation>
+    </message>
+    <message>
+        <source>Marks from the history: %1; times in seconds from its first entry. Click a mark to find it in the list.</source>
+        <translation>Marcas do histórico: %1; tempos em segundos desde a primeira entrada. Clique numa marca para achá-la na lista.</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::TimelineStrip</name>
+    <message>
+        <source>Program start</source>
+        <translation>Início do programa</translation>
+    </message>
+    <message>
+        <source>Program end</source>
+        <translation>Fim do programa</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Alarme</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Aviso</translation>
+    </message>
+    <message>
+        <source>Acknowledged</source>
+        <translation>Reconhecido</translation>
+    </message>
+    <message>
+        <source>Held</source>
+        <translation>Em espera</translation>
+    </message>
+    <message>
+        <source>Resumed</source>
+        <translation>Retomado</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Parado</translation>
+    </message>
+    <message>
+        <source>Feed override</source>
+        <translation>Correção de avanço</translation>
+    </message>
+    <message>
+        <source>Mode change</source>
+        <translation>Mudança de modo</translation>
+    </message>
+    <message>
+        <source>DNC write</source>
+        <translation>Escrita DNC</translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation>linha %1</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::WorkbenchWindow</name>
     <message>
         <source>Tuning workbench: %1</source>
@@ -3091,6 +3205,10 @@
     <message>
         <source>%1: the run has no samples</source>
         <translation>%1: o ensaio não tem amostras</translation>
+    </message>
+    <message>
+        <source>The run&apos;s events are not shown: %1</source>
+        <translation>Os eventos da execução não são mostrados: %1</translation>
     </message>
     <message>
         <source>Save run</source>

@@ -45,7 +45,17 @@ bool DncLink::start(const DncSettings& settings, QString* error) {
     note_ = std::move(made.noteEvent);
     server_ = std::make_unique<dnc::DncServer>(*machine_,
                                                dnc::ProgramLibrary(settings.programs(), options));
+    // A write the machine took comes first as written (the server says it just before the
+    // same history line): said once, as written, not again as a plain line.
+    connect(server_.get(), &dnc::DncServer::written, this, [this](const QString& line) {
+        lastWritten_ = line;
+        emit written(line);
+    });
     connect(server_.get(), &dnc::DncServer::historyLine, this, [this](const QString& line) {
+        if (!lastWritten_.isEmpty() && line == lastWritten_) {
+            lastWritten_.clear();
+            return;
+        }
         if (line.startsWith(QLatin1String("DNC:"))) emit historyLine(line);
     });
     connect(server_.get(), &dnc::DncServer::clientsChanged, this, &DncLink::stateChanged);

@@ -65,6 +65,9 @@ class DncLink : public QObject {
     /// The link's own history lines ("DNC: ..."); the controller's own lines already reach
     /// the history from MachineLink and are not repeated.
     void historyLine(const QString& line);
+    /// A supervisor's write the machine took (a command applied, a program saved): its line
+    /// (given here instead of historyLine).
+    void written(const QString& line);
 
   private:
     const MachineProfile& profile_;
@@ -72,7 +75,8 @@ class DncLink : public QObject {
     std::function<void(const ControllerEvent&)> note_;
     DncSettings settings_;
     QString error_;
-    QString shortError_;  ///< the failure for the status bar
+    QString shortError_;   ///< the failure for the status bar
+    QString lastWritten_;  ///< the write just said: its history line follows, not said again
     std::unique_ptr<dnc::DncMachine> machine_;
     std::unique_ptr<dnc::DncServer> server_;  ///< destroyed before machine_
 };

@@ -15,6 +15,7 @@
 
 #include "core/journal/journal.h"
 #include "ui/background_pool.h"
+#include "ui/timeline_dialog.h"
 
 namespace trilho {
 namespace ui {
@@ -29,14 +30,18 @@ HistoryPanel::HistoryPanel(QWidget* parent) : QWidget(parent) {
     table_->setSelectionBehavior(QAbstractItemView::SelectRows);
     ack_ = new QPushButton(this);
     export_ = new QPushButton(this);
+    timeline_ = new QPushButton(this);
+    timeline_->setObjectName(QStringLiteral("historyTimeline"));
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(ack_);
     buttons->addStretch();
+    buttons->addWidget(timeline_);
     buttons->addWidget(export_);
     auto* v = new QVBoxLayout(this);
     v->addLayout(buttons);
     v->addWidget(table_);
     connect(ack_, &QPushButton::clicked, this, &HistoryPanel::acknowledgeRequested);
+    connect(timeline_, &QPushButton::clicked, this, [this] { openTimeline(); });
     connect(export_, &QPushButton::clicked, this, [this] {
         const QString f = QFileDialog::getSaveFileName(this, tr("Export history"), QString(),
                                                        QStringLiteral("CSV (*.csv)"));
@@ -59,11 +64,27 @@ HistoryPanel::HistoryPanel(QWidget* parent) : QWidget(parent) {
     retranslate();
 }
 
+TimelineDialog* HistoryPanel::openTimeline() {
+    auto* d = new TimelineDialog(journal_, this);
+    d->setAttribute(Qt::WA_DeleteOnClose);
+    d->show();
+    return d;
+}
+
 QString HistoryPanel::kindText(const QString& kind) {
     if (kind == QLatin1String("alarm")) return tr("alarm");
     if (kind == QLatin1String("warning")) return tr("warning");
     if (kind == QLatin1String("ack")) return tr("acknowledged");
     if (kind == QLatin1String("status")) return tr("status");
+    // The timeline's marks (core/timeline/timeline.h's journalKindOf).
+    if (kind == QLatin1String("hold")) return tr("hold");
+    if (kind == QLatin1String("resume")) return tr("resume");
+    if (kind == QLatin1String("halt")) return tr("stopped");
+    if (kind == QLatin1String("mode")) return tr("mode");
+    if (kind == QLatin1String("run_start")) return tr("run start");
+    if (kind == QLatin1String("run_end")) return tr("run end");
+    if (kind == QLatin1String("override")) return tr("override");
+    if (kind == QLatin1String("dnc_write")) return tr("DNC write");
     // The screens' marks (Journal::markStart and close).
     if (kind == QLatin1String("start")) return tr("start");
     if (kind == QLatin1String("stop")) return tr("stop");
@@ -82,7 +103,8 @@ void HistoryPanel::retranslate() {
                                     fm.horizontalAdvance(tr("Time"))) +
                                kPad);
     int kindWidth = fm.horizontalAdvance(tr("Kind"));
-    for (const char* kind : {"alarm", "warning", "ack", "status", "start", "stop"})
+    for (const char* kind : {"alarm", "warning", "ack", "status", "start", "stop", "hold", "resume",
+                             "halt", "mode", "run_start", "run_end", "override", "dnc_write"})
         kindWidth = std::max(kindWidth, fm.horizontalAdvance(kindText(QLatin1String(kind))));
     table_->setColumnWidth(1, kindWidth + kPad);
     table_->setColumnWidth(
@@ -93,6 +115,10 @@ void HistoryPanel::retranslate() {
             k->setText(kindText(k->data(Qt::UserRole).toString()));
     ack_->setText(tr("Acknowledge alarms"));
     export_->setText(tr("Export CSV"));
+    timeline_->setText(tr("Timeline"));
+    timeline_->setToolTip(
+        tr("The alarms, warnings, holds, overrides, mode changes and DNC "
+           "writes of the history on a time axis"));
 }
 
 void HistoryPanel::changeEvent(QEvent* e) {

@@ -8,6 +8,8 @@ class QTableWidget;
 namespace trilho {
 namespace ui {
 
+class TimelineDialog;
+
 class HistoryPanel : public QWidget {
     Q_OBJECT
   public:
@@ -18,6 +20,8 @@ class HistoryPanel : public QWidget {
     bool exportCsv(const QString& path, QString* error = nullptr);
     /// The Kind column's text for the journal's word (alarm, ack, status) in the UI language.
     static QString kindText(const QString& kind);
+    /// History > Timeline: the journal's marks in a dialog of their own (non-modal).
+    TimelineDialog* openTimeline();
 
   signals:
     void acknowledgeRequested();
@@ -29,7 +33,7 @@ class HistoryPanel : public QWidget {
   private:
     void retranslate();
     QTableWidget* table_;
-    QPushButton *ack_, *export_;
+    QPushButton *ack_, *export_, *timeline_;
     QString journal_;
 };
 

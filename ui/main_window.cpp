@@ -45,6 +45,7 @@
 #include "ui/run_controls.h"
 #include "ui/select_file_dialog.h"
 #include "ui/simulation_panel.h"
+#include "ui/timeline_strip.h"
 
 namespace trilho {
 namespace ui {
@@ -158,6 +159,8 @@ MainWindow::MainWindow(MachineLink& link, QSettings& settings, QWidget* parent)
     connect(runControls_, &RunControls::stopRequested, this, &MainWindow::controlledStop);
     connect(runControls_, &RunControls::singleBlockToggled, &link_, &MachineLink::setSingleBlock);
     connect(runControls_, &RunControls::feedOverrideChanged, &link_, &MachineLink::setFeedOverride);
+    connect(runControls_, &RunControls::feedOverrideChanged, this,
+            [this](double f) { markFeedOverride(f); });
     connect(panel_, &ExecutionPanel::gainEdited, this, &MainWindow::applyGain);
 
     dialect_ = settings_.value(QStringLiteral("dialect")).toString() == QLatin1String("classic")
@@ -258,6 +261,9 @@ void MainWindow::buildDocks() {
     jogDock_ = addPanelDock(jogPanel_, "jogDock", Qt::RightDockWidgetArea);
     simulation_ = new SimulationPanel(this);
     addFrameDocks(plots_, history_, simulation_, railDock_);
+    setTimelineStrip(plots_->timelineStrip());
+    connect(plots_->timelineStrip(), &TimelineStrip::liveRequested, this,
+            [this] { plots_->setPaused(false); });
     connect(simulation_, &SimulationPanel::faultsChanged, &link_, &MachineLink::setFaults);
     connect(simulation_, &SimulationPanel::lateTicksChanged, &link_, &MachineLink::setLateTicks);
     connect(simulation_, &SimulationPanel::armedChanged, this, &MainWindow::showArmedFaults);
@@ -691,13 +697,14 @@ void MainWindow::startCompiled(std::shared_ptr<Program> program, std::size_t fro
         return;
     }
     dro_->setProgramBlocks(static_cast<int>(program->blocks.size()));
+    setTimelineProgram(program);
     link_.run(program, fromIndex);
 }
 
-void MainWindow::addDncHistoryLine(const QString& line) {
+void MainWindow::addDncHistoryLine(const QString& line, const QString& kind) {
     history_->add(QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")),
-                  QStringLiteral("status"), 0, line);
-    link_.journalNote(QStringLiteral("status"), 0, line);
+                  kind, 0, line);
+    link_.journalNote(kind, 0, line);
 }
 
 void MainWindow::loadGainsFromSettings() {
@@ -728,6 +735,7 @@ void MainWindow::applyGain(int which, double value) {
 
 void MainWindow::onStatus(const ControllerStatus& s) {
     last_ = s;
+    timelineStatus(s.state, s.timeS, s.blockIndex, s.blockLine);
     // The law may change from the DNC link: the menu says the one that runs.
     if (classicLaw_->isChecked() != (s.law == LoopLaw::Classic))
         (s.law == LoopLaw::Classic ? classicLaw_ : engineeredLaw_)->setChecked(true);
@@ -828,8 +836,20 @@ QString MainWindow::nextStepText() const {
     return {};
 }
 
+void MainWindow::showTimelineMark(const TimelineMark& mark) {
+    if (mark.line > 0) program_->showLine(static_cast<int>(mark.line));
+    plots_->showMoment(mark.timeS);
+    statusBar()->showMessage(TimelineStrip::describe(mark), 8000);
+}
+
 void MainWindow::onEvent(const ControllerEvent& e) {
     const QString line = historyLine(e);
+    {
+        // The block the servo thread shows now (the status of this poll comes after its
+        // events): the m00 that waits, the block an alarm stopped.
+        const ControllerStatus now = link_.worker().snapshot();
+        timelineEvent(e, line, now.blockIndex, now.blockLine);
+    }
     const QString online = onlineStatus(e);
     if (!online.isEmpty()) setOnline([e] { return onlineStatus(e); });
     if (e.kind == EventKind::AlarmAcknowledged || e.kind == EventKind::EStopReset) {

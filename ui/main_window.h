@@ -109,7 +109,8 @@ class MainWindow : public OperatorFrame {
     KeysDialog::Machine keysMachine() const override { return KeysDialog::Machine::Rail; }
     void openFromLibrary(const QString& path) override;
     void retranslate() override;
-    void addDncHistoryLine(const QString& line) override;
+    void addDncHistoryLine(const QString& line, const QString& kind) override;
+    void showTimelineMark(const TimelineMark& mark) override;
     void addCommandItems(QMenu* command) override;
     void addOptionItems(QMenu* options) override;
     bool machineKey(QKeyEvent* key, QWidget* focus) override;

@@ -20,6 +20,7 @@
 #include <QTimer>
 #include <QToolBar>
 #include <QToolButton>
+#include <cmath>
 
 #include "core/runtime/estop_stamp.h"
 #include "host/common/data_paths.h"
@@ -33,6 +34,7 @@
 #include "ui/machine_choice.h"
 #include "ui/program_library_panel.h"
 #include "ui/settings_saved.h"
+#include "ui/timeline_strip.h"
 #include "ui/workbench/workbench_window.h"
 
 namespace trilho {
@@ -388,9 +390,59 @@ void OperatorFrame::showArmedFaults(const QString& text) {
     faultArmedAction_->setVisible(!text.isEmpty());
 }
 
+void OperatorFrame::setTimelineStrip(TimelineStrip* strip) {
+    timelineStrip_ = strip;
+    strip->setTimeline(&timeline_.timeline());
+    connect(strip, &TimelineStrip::markClicked, this,
+            [this](const TimelineMark& m) { showTimelineMark(m); });
+}
+
+void OperatorFrame::setTimelineProgram(std::shared_ptr<const Program> program) {
+    timelineProgram_ = std::move(program);
+    timeline_.setProgram(timelineProgram_.get());
+}
+
+void OperatorFrame::timelineEvent(const ControllerEvent& e, const QString& text,
+                                  std::int32_t blockIndex, std::uint32_t blockLine) {
+    const std::size_t before = timeline_.timeline().size();
+    timeline_.add(e, text, blockIndex, blockLine);
+    if (timelineStrip_ && timeline_.timeline().size() != before) timelineStrip_->refresh();
+}
+
+void OperatorFrame::timelineStatus(ControllerState state, double timeS, std::int32_t blockIndex,
+                                   std::uint32_t blockLine) {
+    const std::size_t before = timeline_.timeline().size();
+    timeline_.observe(state, timeS, blockIndex, blockLine);
+    timelineNowS_ = timeS;
+    timelineBlock_ = blockIndex;
+    timelineLine_ = blockLine;
+    if (timelineStrip_ && timeline_.timeline().size() != before) timelineStrip_->refresh();
+}
+
+void OperatorFrame::markTimeline(MarkKind kind, int code, const QString& text) {
+    timeline_.addMark({timelineNowS_, kind, code, timelineBlock_ >= 0 ? timelineLine_ : 0u, text});
+    if (timelineStrip_) timelineStrip_->refresh();
+}
+
+void OperatorFrame::markFeedOverride(double factor) {
+    const int percent = static_cast<int>(std::lround(factor * 100.0));
+    if (percent == timelineOverride_) return;  // set again to what it was: no change
+    timelineOverride_ = percent;
+    const QString text = tr("Feed override %1 %").arg(percent);
+    markTimeline(MarkKind::Override, percent, text);
+    // Journalled, so History > Timeline has it (code: the percent).
+    addDncHistoryLine(text, journalKindOf(MarkKind::Override));
+}
+
 void OperatorFrame::startDnc() {
     connect(dnc_, &DncLink::stateChanged, this, &OperatorFrame::showDncState);
-    connect(dnc_, &DncLink::historyLine, this, [this](const QString& l) { addDncHistoryLine(l); });
+    // A supervisor's write the machine took is a mark of the timeline.
+    connect(dnc_, &DncLink::written, this, [this](const QString& line) {
+        markTimeline(MarkKind::DncWrite, 0, line);
+        addDncHistoryLine(line, journalKindOf(MarkKind::DncWrite));
+    });
+    connect(dnc_, &DncLink::historyLine, this,
+            [this](const QString& l) { addDncHistoryLine(l, QStringLiteral("status")); });
     // Served again at start when it was on, always with Remote off (consent is given anew by
     // the operator, never remembered).
     const DncSettings dnc = DncSettings::load(settings_);

@@ -13,9 +13,11 @@
 #include <QMainWindow>
 #include <cstdint>
 #include <functional>
+#include <memory>
 
 #include "core/profile/machine_kind.h"
 #include "core/profile/machine_profile.h"
+#include "core/timeline/timeline.h"
 #include "ui/keys_dialog.h"
 
 class QAbstractButton;
@@ -35,6 +37,7 @@ namespace ui {
 class DncDialog;
 class DncLink;
 class ProgramLibraryPanel;
+class TimelineStrip;
 class WorkbenchWindow;
 
 class OperatorFrame : public QMainWindow {
@@ -58,6 +61,9 @@ class OperatorFrame : public QMainWindow {
     void openWorkbench();
     /// Options > DNC (non-modal, one at a time): shown and returned.
     DncDialog* openDncDialog();
+    /// The alarm timeline (issue 31 item 7): the machine's marks since the screens started.
+    const Timeline& timeline() const { return timeline_.timeline(); }
+    TimelineStrip* timelineStrip() const { return timelineStrip_; }
     /// File > Machine... once chosen: asks first when the machine moves, stops it and emits
     /// machineChosen; false when the operator said No (or next is this machine).
     bool switchTo(MachineKind next);
@@ -124,8 +130,10 @@ class OperatorFrame : public QMainWindow {
     virtual void openFromLibrary(const QString& path) = 0;
     /// Every caption in the UI language; the machine's own and then retranslateFrame().
     virtual void retranslate() = 0;
-    /// A history line for the DNC link's events (its connections, downloads, refusals).
-    virtual void addDncHistoryLine(const QString& line) = 0;
+    /// A history line of the frame's own, journalled under kind: the DNC link's events (its
+    /// connections, downloads, refusals: "status"; a write the machine took: "dnc_write"), an
+    /// override change ("override").
+    virtual void addDncHistoryLine(const QString& line, const QString& kind) = 0;
     /// The machine's part of the menus, called while they are built: File after Open, Command
     /// after Home, Options after Language.
     virtual void addFileItems(QMenu*) {}
@@ -175,6 +183,26 @@ class OperatorFrame : public QMainWindow {
     /// The E-stop's caption and look, Reset E-stop and Acknowledge as the machine's state says.
     void showSafetyState(bool latched, bool alarmed);
     void showArmedFaults(const QString& text);
+    // ---- the alarm timeline (issue 31 item 7) ----
+    /// The strip that shows it (under the machine's plots); a click on a mark goes to
+    /// showTimelineMark().
+    void setTimelineStrip(TimelineStrip* strip);
+    /// The program of the runs to come (kept while its marks may name its lines).
+    void setTimelineProgram(std::shared_ptr<const Program> program);
+    /// A controller's event as drained (text: its history line), with the block the machine
+    /// shows running now (blockIndex -1: none).
+    void timelineEvent(const ControllerEvent& e, const QString& text, std::int32_t blockIndex,
+                       std::uint32_t blockLine);
+    /// Each status: the run's start when first seen, the time and line of marks to come.
+    void timelineStatus(ControllerState state, double timeS, std::int32_t blockIndex,
+                        std::uint32_t blockLine);
+    /// A mark the controller does not make (an override change, a DNC write), now.
+    void markTimeline(MarkKind kind, int code, const QString& text);
+    /// The operator's feed override changed (factor: 1 is 100 %).
+    void markFeedOverride(double factor);
+    /// A mark was clicked: the machine's program at its line, its plots at its moment.
+    virtual void showTimelineMark(const TimelineMark& mark) = 0;
+
     /// Yes or no, No by default; details: the question's "Show Details..." text (none: empty).
     bool confirm(const QString& title, const QString& text, const QString& details = {});
 
@@ -217,6 +245,13 @@ class OperatorFrame : public QMainWindow {
     DncLink* dnc_ = nullptr;
     DncDialog* dncDialog_ = nullptr;
     WorkbenchWindow* workbenchWindow_ = nullptr;
+    TimelineRecorder timeline_;
+    std::shared_ptr<const Program> timelineProgram_;
+    TimelineStrip* timelineStrip_ = nullptr;
+    double timelineNowS_ = 0.0;        ///< the machine's time at the last status, s
+    std::int32_t timelineBlock_ = -1;  ///< the block it showed running (-1: none)
+    std::uint32_t timelineLine_ = 0;   ///< and its source line
+    int timelineOverride_ = 100;       ///< the last override marked, percent
 };
 
 }  // namespace ui

@@ -14,6 +14,7 @@
 
 #include "core/files/atomic_file.h"
 #include "ui/plot_legend.h"
+#include "ui/timeline_strip.h"
 
 namespace trilho {
 namespace ui {
@@ -55,20 +56,26 @@ PlotPanel::PlotPanel(QWidget* parent) : QWidget(parent) {
     window_->setRange(2, 600);
     window_->setValue(20);
     window_->setSuffix(QStringLiteral(" s"));
+    // The timeline under both plots, on their time axis (the position plot's, which the error
+    // plot shares), in one row with the plots' buttons: a row of its own made the dock 24 px
+    // taller and the 1996 form scroll at 1024x768.
+    strip_ = new TimelineStrip(this);
     auto* buttons = new QHBoxLayout;
+    buttons->addWidget(strip_, 1);
     buttons->addWidget(pause_);
     buttons->addWidget(window_);
-    buttons->addStretch();
     buttons->addWidget(png_);
     buttons->addWidget(csv_);
     auto* v = new QVBoxLayout(this);
-    v->addLayout(buttons);
     // Side by side: on a 768-line screen the dock is about 200 px high, and two plots stacked
     // there were 60 px each, their tick labels overprinted.
     auto* plots = new QHBoxLayout;
     plots->addWidget(position_, 1);
     plots->addWidget(error_, 1);
     v->addLayout(plots, 1);
+    v->addLayout(buttons);
+    connect(position_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), strip_,
+            [this](const QCPRange& r) { strip_->setTimeRange(r.lower, r.upper); });
     connect(pause_, &QPushButton::toggled, this, &PlotPanel::setPaused);
     connect(png_, &QPushButton::clicked, this, [this] {
         const QString f = QFileDialog::getSaveFileName(this, tr("Export PNG"), QString(),
@@ -111,6 +118,16 @@ void PlotPanel::changeEvent(QEvent* e) {
 void PlotPanel::setPaused(bool paused) {
     paused_ = paused;
     if (pause_->isChecked() != paused) pause_->setChecked(paused);
+    if (!paused) replot();  // back to the live end
+}
+
+void PlotPanel::showMoment(double timeS) {
+    setPaused(true);
+    const double w = window_->value();
+    for (QCustomPlot* p : {position_, error_}) {
+        p->xAxis->setRange(timeS - w / 2, timeS + w / 2);
+        p->replot(QCustomPlot::rpQueuedReplot);
+    }
 }
 
 int PlotPanel::sampleCount() const {

@@ -13,6 +13,8 @@ class QSpinBox;
 namespace trilho {
 namespace ui {
 
+class TimelineStrip;
+
 class PlotPanel : public QWidget {
     Q_OBJECT
   public:
@@ -26,6 +28,11 @@ class PlotPanel : public QWidget {
     bool exportCsv(const QString& path, QString* error = nullptr);
     int sampleCount() const;
     QCustomPlot* positionPlot() const { return position_; }
+    /// The alarm timeline's strip under the plots, on their time axis.
+    TimelineStrip* timelineStrip() const { return strip_; }
+    /// Pauses the plots and centres their window on timeS (a mark clicked on the strip);
+    /// Pause again goes back to the live end.
+    void showMoment(double timeS);
 
   protected:
     void changeEvent(QEvent* e) override;
@@ -37,6 +44,7 @@ class PlotPanel : public QWidget {
     QCPGraph *setpointGraph_, *positionGraph_, *errorGraph_, *driveGraph_;
     QPushButton *pause_, *png_, *csv_;
     QSpinBox* window_;
+    TimelineStrip* strip_;
     bool paused_ = false;
     double lastT_ = -1.0;
     unsigned restFrames_ = 0;  ///< samples at rest, for the slower replot

@@ -63,6 +63,8 @@ class ProgramPanel : public QWidget {
     void showDiagnostics(const std::vector<Diagnostic>& diagnostics, const QStringList& messages,
                          std::size_t omitted = 0);
     void setExecutingLine(int line);
+    /// Scrolls to the source line (1-based) and puts the cursor there (a timeline mark).
+    void showLine(int line) { goToLine(line, 1); }
     /// 1-based line of the cursor (for "start from the selected block").
     int cursorLine() const;
     CodeEditor* editor() const { return editor_; }

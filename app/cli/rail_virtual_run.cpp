@@ -44,9 +44,10 @@ Outcome runRailVirtual(const MachineProfile& profile, std::shared_ptr<const Prog
     if (trace.active()) traceQueue.emplace(trace, formatRailTraceRow);
     while (true) {
         session.step();
-        c.drainEvents([&](const ControllerEvent& e) { report.add(e); });
         const ControllerStatus& s = c.status();
+        c.drainEvents([&](const ControllerEvent& e) { report.add(e, s.blockIndex, s.blockLine); });
         report.cycle.observe(s.state, s.timeS);
+        report.timeline.observe(s.state, s.timeS, s.blockIndex, s.blockLine);
         if (startedAt < 0 && s.state == ControllerState::Running) {
             startedAt = session.elapsedS();
             faults.tickJitterMaxS = options.tickJitterMs / 1000.0;
@@ -69,7 +70,9 @@ Outcome runRailVirtual(const MachineProfile& profile, std::shared_ptr<const Prog
         double still = 0.0;
         while (session.elapsedS() < end && still < 0.1) {
             session.step();
-            c.drainEvents([&](const ControllerEvent& e) { report.add(e); });
+            const ControllerStatus& s = c.status();
+            c.drainEvents(
+                [&](const ControllerEvent& e) { report.add(e, s.blockIndex, s.blockLine); });
             if (traceQueue) traceQueue->push(traceRowOf(c.status()));
             still = std::abs(rail.state().velocityMmS) < 1e-6 ? still + 0.001 : 0.0;
         }

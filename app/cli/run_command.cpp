@@ -37,6 +37,7 @@
 #include "core/gcode/source_file.h"
 #include "core/machine/event_text.h"
 #include "core/runtime/servo_worker.h"
+#include "core/timeline/events_file.h"
 #include "core/tuning/run_record.h"
 #include "core/tuning/trace_writer.h"
 #include "hal/sim/fault_schedule.h"
@@ -91,19 +92,24 @@ Outcome runRealTime(const MachineProfile& profile, std::shared_ptr<const Program
             interrupted = true;
             worker.requestEmergencyStop();
         }
-        worker.drainEvents([&](const ControllerEvent& e) { report.add(e); });
+        // The snapshot before the events: the block it shows ran when they were posted or
+        // before (the marks' lines).
+        const ControllerStatus s = worker.snapshot();
+        worker.drainEvents(
+            [&](const ControllerEvent& e) { report.add(e, s.blockIndex, s.blockLine); });
         worker.drainTrace([&](const TraceRow& r) { railTraceRow(trace, r); });
         trace.flush();
-        const ControllerStatus s = worker.snapshot();
+        report.timeline.observe(s.state, s.timeS, s.blockIndex, s.blockLine);
         if (s.lastCommandSeq < startSeq) continue;
         bool press = false;
         if (sup.check(s, static_cast<double>(monotonicNs() - t0) * 1e-9, outcome, press)) break;
         if (press) worker.send(CommandKind::Continue);
     }
     worker.stopThread();
-    worker.drainEvents([&](const ControllerEvent& e) { report.add(e); });
-    worker.drainTrace([&](const TraceRow& r) { railTraceRow(trace, r); });
     last = worker.snapshot();
+    worker.drainEvents(
+        [&](const ControllerEvent& e) { report.add(e, last.blockIndex, last.blockLine); });
+    worker.drainTrace([&](const TraceRow& r) { railTraceRow(trace, r); });
     plantMm = rail.state().positionMm;
     return outcome;
 }
@@ -137,8 +143,8 @@ int runCommand(const QStringList& args) {
         QStringLiteral("trace"),
         QStringLiteral("Write every servo tick to this CSV file (beside a "
                        "regular file, its conditions and how the "
-                       "run ended to the sidecar FILE.run.json, "
-                       "which 'tune metrics' reads)."),
+                       "run ended to the sidecar FILE.run.json, and its alarms, holds and "
+                       "mode changes to FILE.events.csv, which 'tune metrics' reads)."),
         QStringLiteral("FILE.csv"));
     const QCommandLineOption jsonOpt(QStringLiteral("json"),
                                      QStringLiteral("Print one JSON object."));
@@ -330,20 +336,29 @@ int runCommand(const QStringList& args) {
         // Never write the trace over the program it runs (or the profile).
         const QString traceCanonical = QFileInfo(options.tracePath).canonicalFilePath();
         const QString machine = machineProfilePath(parser.value(machineOpt));
-        // Nor its sidecar (NAME.run.json beside a regular NAME.csv) over either.
+        // Nor its sidecar (NAME.run.json beside a regular NAME.csv) nor its events
+        // (NAME.events.csv) over either.
         const QString sidecarCanonical =
             QFileInfo(runSidecarPath(options.tracePath)).canonicalFilePath();
-        for (const QString& written : {traceCanonical, sidecarCanonical})
+        const QString eventsCanonical =
+            QFileInfo(eventsPathFor(options.tracePath)).canonicalFilePath();
+        for (const QString& written : {traceCanonical, sidecarCanonical, eventsCanonical})
             if (!written.isEmpty() && (written == QFileInfo(file).canonicalFilePath() ||
                                        written == QFileInfo(machine).canonicalFilePath()))
-                return usage(QStringLiteral("--trace '%1' (or its sidecar %2) is an input of "
-                                            "this run: refusing to write over it")
-                                 .arg(options.tracePath, runSidecarPath(options.tracePath)));
-        // A sidecar path that is a device, a FIFO or a directory is said before the run.
+                return usage(QStringLiteral("--trace '%1' (or its sidecar %2, or its events %3) "
+                                            "is an input of this run: refusing to write over it")
+                                 .arg(options.tracePath, runSidecarPath(options.tracePath),
+                                      eventsPathFor(options.tracePath)));
+        // A sidecar or events path that is a device, a FIFO or a directory is said before the
+        // run.
+        const bool besideAFile =
+            !QFileInfo::exists(options.tracePath) || QFileInfo(options.tracePath).isFile();
         if (const QString refused = refuseToReplace(runSidecarPath(options.tracePath));
-            !refused.isEmpty() &&
-            (!QFileInfo::exists(options.tracePath) || QFileInfo(options.tracePath).isFile()))
+            !refused.isEmpty() && besideAFile)
             return usage(QStringLiteral("--trace: the sidecar %1").arg(refused));
+        if (const QString refused = refuseToReplace(eventsPathFor(options.tracePath));
+            !refused.isEmpty() && besideAFile)
+            return usage(QStringLiteral("--trace: the events file %1").arg(refused));
     }
     options.programFile = file;
     const bool xy = profile.kind != MachineKind::Rail;
@@ -359,6 +374,7 @@ int runCommand(const QStringList& args) {
         return usage(traceError);
     report.streamText = !options.json;
     report.xy = xy;
+    report.timeline.setProgram(program.get());
     if (xy) return runXyProgram(profile, program, options, report, trace);
 
     ControllerStatus last;

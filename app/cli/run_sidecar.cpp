@@ -7,6 +7,7 @@
 
 #include "core/files/atomic_file.h"
 #include "core/files/replace_target.h"
+#include "core/timeline/events_file.h"
 #include "core/tuning/run_record.h"
 #include "host/tuning/step_experiment.h"
 
@@ -93,8 +94,14 @@ QString finishTrace(TraceFile& trace, const RunOptions& options, double periodS,
     if (!trace.close()) return trace.error();
     // Beside a regular file only: a device or a FIFO has no "beside".
     if (!QFileInfo(path).isFile()) return {};
-    return writeRunSidecar(path, options.recordedProfile, periodS, options, options.programFile,
-                           rows, runAbortReason(outcome, report, options));
+    const QString sidecarFailure =
+        writeRunSidecar(path, options.recordedProfile, periodS, options, options.programFile, rows,
+                        runAbortReason(outcome, report, options));
+    if (!sidecarFailure.isEmpty()) return sidecarFailure;
+    // The run's marks on the trace's time axis (events_file.h), written whole or not at all.
+    QString error;
+    if (!writeEventsFile(eventsPathFor(path), report.timeline.timeline(), &error)) return error;
+    return {};
 }
 
 }  // namespace trilho::cli

@@ -15,7 +15,8 @@ namespace trilho::cli {
 /// Why the run did not end cleanly, in words; empty when it finished on its target.
 QString runAbortReason(Outcome outcome, const Report& report, const RunOptions& options);
 
-/// Closes the trace and, when it is a regular file written whole, writes its sidecar from
+/// Closes the trace and, when it is a regular file written whole, writes its events
+/// (NAME.events.csv, report.timeline) and its sidecar from
 /// options (recordedProfile, programFile, massFactor, seed), periodS (the loop period the run
 /// used, s) and the run's end. Returns what failed, naming the file, to say after the run's
 /// own report; empty when all was written (or there was no trace).

@@ -22,6 +22,7 @@
 #include "core/machine/controller_event.h"
 #include "core/machine/event_text.h"
 #include "core/profile/machine_profile.h"
+#include "core/timeline/timeline.h"
 #include "core/xy/xy_event_text.h"
 #include "hal/sim/fault_schedule.h"
 #include "host/session/run_end.h"
@@ -66,8 +67,13 @@ struct Report {
     /// time, and the XY machines in real time); the rail's real-time run polls the servo
     /// thread's snapshot every 5 ms and does not feed it, so it reports none.
     CycleClock cycle;
-    void add(const ControllerEvent& e) {
+    /// The run's marks (alarms, holds, mode changes, its start and end), with the program line
+    /// each belongs to: written beside the trace as NAME.events.csv (events_file.h).
+    TimelineRecorder timeline;
+    /// An event, drained while the block at blockIndex (-1: none), source line blockLine, ran.
+    void add(const ControllerEvent& e, std::int32_t blockIndex = -1, std::uint32_t blockLine = 0) {
         const QString line = xy ? xyHistoryLine(e) : historyLine(e);
+        timeline.add(e, line, blockIndex, blockLine);
         if (streamText) {
             out(line + QLatin1Char('\n'));
         } else {

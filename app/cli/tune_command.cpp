@@ -5,10 +5,12 @@
 #include <QCommandLineParser>
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "app/cli/cli_output.h"
 #include "app/cli/commands.h"
@@ -16,6 +18,7 @@
 #include "app/cli/run_support.h"
 #include "core/files/atomic_file.h"
 #include "core/files/replace_target.h"
+#include "core/timeline/events_file.h"
 #include "core/tuning/run_record.h"
 #include "host/common/data_paths.h"
 #include "host/tuning/reports/step_report.h"
@@ -309,6 +312,48 @@ int stepCommand(const QStringList& args) {
     return r.ok() ? kOk : kAlarm;
 }
 
+/// The events file beside a trace (events_file.h), if there is one; one that cannot be read is
+/// said (its place named) and left out, the metrics stand.
+std::optional<Timeline> readEventsBeside(const QString& trace) {
+    const QString path = eventsPathFor(trace);
+    if (!QFileInfo::exists(QString::fromLocal8Bit(localPath(path)))) return std::nullopt;
+    TimelineLoad load = readEventsFile(QString::fromLocal8Bit(localPath(path)));
+    if (!load.timeline) {
+        err(QStringLiteral("trilho-cli tune metrics: %1 (its events are not listed)\n")
+                .arg(load.error));
+        return std::nullopt;
+    }
+    return std::move(load.timeline);
+}
+
+QJsonArray eventsJson(const Timeline& t) {
+    QJsonArray a;
+    for (const TimelineMark& m : t.marks())
+        a.append(QJsonObject{
+            {QStringLiteral("time_s"), m.timeS},
+            {QStringLiteral("kind"), QString::fromLatin1(markKindName(m.kind))},
+            {QStringLiteral("code"), m.code},
+            {QStringLiteral("line"),
+             m.line > 0 ? QJsonValue(static_cast<double>(m.line)) : QJsonValue(QJsonValue::Null)},
+            {QStringLiteral("text"), m.text}});
+    return a;
+}
+
+QString eventsText(const Timeline& t, const QString& path) {
+    QString s = QStringLiteral("events (%1, from %2):\n").arg(t.size()).arg(path);
+    for (const TimelineMark& m : t.marks()) {
+        QString row = QStringLiteral("  %1 s  %2  %3  %4")
+                          .arg(m.timeS, 10, 'f', 4)
+                          .arg(QString::fromLatin1(markKindName(m.kind)), -9)
+                          .arg(m.line > 0 ? QStringLiteral("line %1").arg(m.line) : QString(), -11)
+                          .arg(m.text);
+        while (row.endsWith(QLatin1Char(' ')))
+            row.chop(1);
+        s += row + QLatin1Char('\n');
+    }
+    return s;
+}
+
 int metricsCommand(const QStringList& args) {
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral(
@@ -380,13 +425,18 @@ int metricsCommand(const QStringList& args) {
                                   : QStringLiteral("TRUNCATED: ") + flaws.truncation));
         return kAlarm;
     }
-    if (parser.isSet(jsonOpt))
-        out(QString::fromUtf8(
-                QJsonDocument(traceReportJson(files.front(), rec, m, countsPerMm, flaws))
-                    .toJson(QJsonDocument::Compact)) +
-            QLatin1Char('\n'));
-    else
-        out(traceReportText(files.front(), m, flaws));
+    // The run's marks, when `run --trace` wrote them beside it (NAME.events.csv): listed after
+    // the metrics; a report without them is the same as before they existed.
+    const std::optional<Timeline> events = readEventsBeside(files.front());
+    if (parser.isSet(jsonOpt)) {
+        QJsonObject o = traceReportJson(files.front(), rec, m, countsPerMm, flaws);
+        if (events) o[QStringLiteral("events")] = eventsJson(*events);
+        out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
+    } else {
+        QString text = traceReportText(files.front(), m, flaws);
+        if (events) text += eventsText(*events, eventsPathFor(files.front()));
+        out(text);
+    }
     // Measured either way; a record that is not clean is no success (as `tune step` aborted).
     return aborted || truncated ? kAlarm : kOk;
 }

@@ -94,9 +94,10 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
             if (link) QCoreApplication::processEvents();  // the serial line's bytes
         }
         session.step(dtS);
-        c.drainEvents([&](const ControllerEvent& e) { report.add(e); });
         const XyStatus& s = c.status();
+        c.drainEvents([&](const ControllerEvent& e) { report.add(e, s.blockIndex, s.blockLine); });
         report.cycle.observe(s.state, s.timeS);
+        report.timeline.observe(s.state, s.timeS, s.blockIndex, s.blockLine);
         if (!ticks.armed() && s.state == ControllerState::Running) ticks.arm();
         if (traceQueue)
             traceQueue->push(xyTraceRow(s));
@@ -118,7 +119,9 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
         // and the trace with it (it stopped at the alarm).
         for (int i = 0; i < 400; ++i) {
             session.step();
-            c.drainEvents([&](const ControllerEvent& e) { report.add(e); });
+            const XyStatus& s = c.status();
+            c.drainEvents(
+                [&](const ControllerEvent& e) { report.add(e, s.blockIndex, s.blockLine); });
             if (traceQueue)
                 traceQueue->push(xyTraceRow(c.status()));
             else if (trace.active())

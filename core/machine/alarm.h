@@ -53,6 +53,14 @@ constexpr AlarmSeverity alarmSeverity(AlarmCode code) {
     }
 }
 
+/// Whether the history says "Warning N" of it (and the journal and the timeline list it as a
+/// warning): the warnings but compile errors and the manual soft limit, which the 1996 texts
+/// said as alarms.
+constexpr bool saidAsWarning(AlarmCode code) {
+    return alarmSeverity(code) == AlarmSeverity::Warning && code != AlarmCode::CompileErrors &&
+           code != AlarmCode::SoftLimit;
+}
+
 constexpr std::uint32_t alarmBit(AlarmCode code) {
     return 1u << static_cast<unsigned>(code);
 }

@@ -5,6 +5,7 @@
 #include <iterator>
 
 #include "core/gcode/diagnostic_text.h"
+#include "core/timeline/timeline.h"
 
 namespace trilho {
 namespace {
@@ -217,8 +218,7 @@ namespace {
 /// A warning (the machine goes on) says so: "Warning 13: ...", not "Alarm 13". Compile errors
 /// and the soft limit keep the 1996 program's "Alarm" line.
 bool saysWarning(const ControllerEvent& e) {
-    return e.kind == EventKind::AlarmRaised && alarmSeverity(e.alarm) == AlarmSeverity::Warning &&
-           e.alarm != AlarmCode::CompileErrors && e.alarm != AlarmCode::SoftLimit;
+    return e.kind == EventKind::AlarmRaised && saidAsWarning(e.alarm);
 }
 }  // namespace
 
@@ -226,6 +226,9 @@ QString journalKind(const ControllerEvent& e) {
     if (saysWarning(e)) return QStringLiteral("warning");
     if (e.kind == EventKind::AlarmRaised) return QStringLiteral("alarm");
     if (e.kind == EventKind::AlarmAcknowledged) return QStringLiteral("ack");
+    // A mark of the timeline (a hold, a mode change, the run's end) under its own kind, so
+    // History > Timeline reads it back from the journal (timelineFromJournal).
+    if (const auto mark = timelineMark(e, 0, QString())) return journalKindOf(mark->kind);
     return QStringLiteral("status");
 }
 

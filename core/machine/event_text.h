@@ -15,7 +15,9 @@ QString onlineStatus(const ControllerEvent& e);
 /// The alarm's text; value fills its %1 (mm, s) where the text has one.
 QString alarmText(AlarmCode code, double value = 0.0);
 /// The kind an event is journalled and listed under in History: "alarm", "warning" (an
-/// alarm of warning severity, said "Warning N: ..."; the machine goes on), "ack" or "status".
+/// alarm of warning severity, said "Warning N: ..."; the machine goes on), "ack", a mark of
+/// the timeline's own ("hold", "resume", "halt", "mode", "run_start", "run_end":
+/// core/timeline/timeline.h's journalKindOf) or "status".
 QString journalKind(const ControllerEvent& e);
 /// Untranslated sources, for the translation-completeness test.
 const char* historySource(EventKind kind);

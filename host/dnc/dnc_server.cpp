@@ -301,7 +301,10 @@ void DncServer::refresh() {
         link_.commandSeq = pending_->seq;
         link_.commandResult =
             appliedOutcome(pending_->command, pending_->result, pending_->seq, pending_->client);
-        if (!pending_->appliedLine.isEmpty()) emit historyLine(pending_->appliedLine);
+        if (!pending_->appliedLine.isEmpty()) {
+            emit written(pending_->appliedLine);
+            emit historyLine(pending_->appliedLine);
+        }
         pending_.reset();
     }
     fillInputRegisters(s, link_, input_, machine_.profile().kind, machine_.yAxis());
@@ -603,6 +606,7 @@ void DncServer::finishCommand(std::uint16_t seq, CommandResult r, std::optional<
     }
     if (!said.isEmpty()) {
         drainMachineEvents();  // what the machine said on its way (a mode change) comes first
+        emit written(said);
         emit historyLine(said);
     }
     // A result known now (busy, no program, ...) is echoed now, and leaves a command still on
@@ -769,8 +773,10 @@ void DncServer::runCommand(Command c, std::uint16_t argument, std::uint16_t seq,
             // correct it and commit again (another client may take it once the owner has not
             // written for 30 s).
             downloadOwner_.clear();
-            emit historyLine(
-                QStringLiteral("DNC: program %1 saved (%2 bytes)").arg(argument).arg(length));
+            const QString saved =
+                QStringLiteral("DNC: program %1 saved (%2 bytes)").arg(argument).arg(length);
+            emit written(saved);
+            emit historyLine(saved);
             return finish(CommandResult::Applied);
         }
         case Command::None:

@@ -65,6 +65,10 @@ class DncServer : public QObject {
   signals:
     /// A line for the history (history lines of the controller, and the link's own).
     void historyLine(const QString& line);
+    /// A supervisor's write the machine took (a command applied, a program saved), with its
+    /// history line, just before the same line is given to historyLine: the alarm timeline's
+    /// DNC write.
+    void written(const QString& line);
     /// A TCP client connected or went away (clientCount() says how many now).
     void clientsChanged();
 

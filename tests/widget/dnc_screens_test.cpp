@@ -23,6 +23,7 @@
 #include <QTest>
 #include <QToolButton>
 #include <QTreeWidget>
+#include <algorithm>
 #include <cmath>
 
 #include "core/dnc/register_map.h"
@@ -320,6 +321,22 @@ class DncScreensTest : public QObject {
         // Command 1 (start program), argument 42, seq 7: registers 8..10 in one request.
         QCOMPARE(command(dnc::Command::StartProgram, 42, 7), quint16(dnc::CommandResult::Applied));
         QVERIFY(historyHas(QStringLiteral("DNC: program 42 started")));
+        // A write the machine took is a mark of the alarm timeline (issue 31 item 7), listed
+        // once in the History, under its own kind.
+        {
+            const auto& marks = window_->timeline().marks();
+            QVERIFY(std::any_of(marks.begin(), marks.end(), [](const TimelineMark& m) {
+                return m.kind == MarkKind::DncWrite &&
+                       m.text.contains(QStringLiteral("DNC: program 42 started"));
+            }));
+            QTableWidget* t = window_->history()->table();
+            QStringList kinds;
+            for (int r = 0; r < t->rowCount(); ++r)
+                if (t->item(r, 3) &&
+                    t->item(r, 3)->text().contains(QStringLiteral("DNC: program 42 started")))
+                    kinds << t->item(r, 1)->data(Qt::UserRole).toString();
+            QCOMPARE(kinds, QStringList{QStringLiteral("dnc_write")});
+        }
         QCOMPARE(readInput(dnc::in::kProgram), quint16(42));
         // It homes first (automatic from manual), then runs to x = 20 mm and ends there.
         QTRY_VERIFY_WITH_TIMEOUT(link_->status().homed && link_->status().programFinished, 60000);

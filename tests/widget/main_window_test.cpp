@@ -22,6 +22,7 @@
 #include <QToolButton>
 #include <QWheelEvent>
 #include <atomic>
+#include <cmath>
 
 #include <QCheckBox>
 #include <QLabel>
@@ -42,6 +43,7 @@
 #include "ui/simulation_panel.h"
 #include "ui/start_screen.h"
 #include "ui/theme.h"
+#include "ui/timeline_strip.h"
 #include "ui/workbench/workbench_window.h"
 
 using namespace trilho;
@@ -263,6 +265,38 @@ class MainWindowTest : public QObject {
         QTest::mouseClick(panel()->continueButton(), Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(status().programFinished, 10000);
         QVERIFY(!panel()->continueButton()->isEnabled());
+    }
+
+    // Issue 31 item 7: the m00's hold is marked under the plots at its line; a click on it
+    // scrolls the program to that line and pauses the plots on its moment.
+    void aClickOnTheTimelinesHoldShowsItsLineAndMoment() {
+        goAutomatic();
+        QVERIFY(window_->selectProgram(
+            writeProgram("mark.G", "N10 G0 X30\n\nN20 M0\nN30 G0 X0\nN40 M2\n")));
+        window_->executeAction()->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(panel()->continueButton()->isEnabled(), 10000);
+        QTest::mouseClick(panel()->continueButton(), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(status().programFinished, 10000);
+        QTRY_VERIFY(!window_->timeline().empty() &&
+                    window_->timeline().marks().back().kind == MarkKind::End);
+        const auto& marks = window_->timeline().marks();
+        const auto hold = std::find_if(marks.begin(), marks.end(), [](const TimelineMark& m) {
+            return m.kind == MarkKind::Hold;
+        });
+        QVERIFY(hold != marks.end());
+        QCOMPARE(hold->line, 3u);
+        QCOMPARE(marks.back().line, 5u);
+        window_->programPanel()->showLine(1);
+        TimelineStrip* strip = window_->plots()->timelineStrip();
+        QVERIFY(strip->isVisible());
+        QVERIFY(strip->height() <= 32);
+        // The plots' window is 20 s: the hold, a few seconds ago, is on it.
+        QTRY_VERIFY(strip->xOf(hold->timeS) > 0 && strip->xOf(hold->timeS) < strip->width());
+        QTest::mouseClick(strip, Qt::LeftButton, {},
+                          QPoint(strip->xOf(hold->timeS), strip->height() / 2));
+        QCOMPARE(window_->programPanel()->cursorLine(), 3);
+        QVERIFY(window_->plots()->paused());
+        QVERIFY(std::abs(strip->fromS() + strip->toS() - 2 * hold->timeS) < 1e-6);  // centred
     }
 
     void manualKeysDriveTheRail() {

@@ -814,10 +814,15 @@ class OperatorScreensTest : public QObject {
         window_->setLanguage(QStringLiteral("pt_BR"));
         goAutomatic();
         QTableWidget* table = window_->history()->table();
-        QTRY_VERIFY(table->rowCount() > 0);
-        QCOMPARE(table->item(0, 1)->text(), QStringLiteral("estado"));
+        QTRY_VERIFY(table->rowCount() > 1);
+        // The mode change is a mark of the timeline, journalled as "mode" (issue 31 item 7);
+        // the homing's lines are status lines.
+        QCOMPARE(table->item(0, 1)->data(Qt::UserRole).toString(), QStringLiteral("mode"));
+        QCOMPARE(table->item(0, 1)->text(), QStringLiteral("modo"));
+        QCOMPARE(table->item(1, 1)->text(), QStringLiteral("estado"));
         window_->setLanguage(QStringLiteral("es"));
-        QTRY_COMPARE(table->item(0, 1)->text(), QStringLiteral("estado"));
+        QTRY_COMPARE(table->item(0, 1)->text(), QStringLiteral("modo"));
+        QTRY_COMPARE(table->item(1, 1)->text(), QStringLiteral("estado"));
         QTest::keyClick(window_.get(), Qt::Key_F1);
         QTRY_VERIFY([&] {
             for (int r = 0; r < table->rowCount(); ++r)

@@ -28,6 +28,7 @@
 #include <QThreadPool>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include "core/timeline/events_file.h"
 #include "tests/support/widget_test_main.h"
 #include "translations/i18n.h"
 #include "ui/background_pool.h"
@@ -348,6 +349,60 @@ class WorkbenchTest : public QObject {
         QVERIFY2(error.contains(QStringLiteral("bad.csv")), qPrintable(error));
         QCOMPARE(w.runs().size(), std::size_t(2));
         QVERIFY(!w.loadingRun());
+    }
+
+    // Issue 31 item 7: a trace loaded with its events beside it (`run --trace`'s
+    // NAME.events.csv) shows the run's marks on the overlay at their time from the step; a bad
+    // events file is said with its place and the run still loads.
+    void aLoadedRunOverlaysItsEvents() {
+        QTemporaryDir dir;
+        RunRecord r;
+        r.conditions.profile = MachineProfile::rail();
+        for (std::size_t k = 0; k < 3000; ++k) {
+            const double t = static_cast<double>(k) * 1e-3;
+            r.channels.timeS.push_back(t);
+            r.channels.blockN.push_back(10);
+            const double x = t < 1.0 ? 0.0 : 10.0;  // a step at 1 s
+            for (auto* c : {&r.channels.setpointMm, &r.channels.positionMm})
+                c->push_back(x);
+            r.channels.errorMm.push_back(0.0);
+            r.channels.velocityMmS.push_back(0.0);
+            r.channels.drive.push_back(128);
+        }
+        const QString path = dir.filePath(QStringLiteral("traced.csv"));
+        QString error;
+        QVERIFY2(saveRunRecord(r, path, nullptr, &error), qPrintable(error));
+        Timeline events;
+        events.add({1.5, MarkKind::Hold, 0, 3, QStringLiteral("held")});
+        events.add({2.25, MarkKind::Alarm, 3, 4, QStringLiteral("Alarm 3")});
+        QVERIFY2(writeEventsFile(eventsPathFor(path), events, &error), qPrintable(error));
+        WorkbenchWindow w(MachineProfile::rail());
+        QSignalSpy loaded(&w, &WorkbenchWindow::runLoaded);
+        w.loadRun(path);
+        QTRY_VERIFY_WITH_TIMEOUT(loaded.count() == 1, 30000);
+        QVERIFY2(loaded.at(0).at(0).toString().isEmpty(),
+                 qPrintable(loaded.at(0).at(0).toString()));
+        QCOMPARE(w.runs()[0]->events.size(), 2u);
+        QCustomPlot* plot = w.overlay()->plot();
+        QCOMPARE(plot->itemCount(), 2);
+        const double step = w.runs()[0]->plot->timeOriginS;
+        QVERIFY(std::abs(step - 1.0) < 0.01);
+        auto* alarm = qobject_cast<QCPItemStraightLine*>(plot->item(1));
+        QVERIFY(alarm);
+        QVERIFY(std::abs(alarm->point1->coords().x() - (2.25 - step)) < 1e-9);
+        QCOMPARE(alarm->pen().color(), QColor(200, 0, 0));
+        // A bad events file: the run loads, its marks are not drawn, the status bar says why.
+        QFile bad(eventsPathFor(path));
+        QVERIFY(bad.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        bad.write("time_s,kind,code,line,text\n1,hodl,0,,x\n");
+        bad.close();
+        w.loadRun(path);
+        QTRY_VERIFY_WITH_TIMEOUT(loaded.count() == 2, 30000);
+        QCOMPARE(w.runs().size(), std::size_t(2));
+        QVERIFY(w.runs()[1]->events.empty());
+        QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral("traced.events.csv:2:3")),
+                 qPrintable(w.statusBar()->currentMessage()));
+        QCOMPARE(plot->itemCount(), 2);  // the first run's marks only
     }
 
     // Issue 30 item 3: the screens' long work (runs, programs, plots' paths) runs on their own

@@ -64,6 +64,7 @@
 #include "ui/pre_run_check.h"
 #include "ui/program_library_panel.h"
 #include "ui/start_screen.h"
+#include "ui/timeline_strip.h"
 #include "ui/workbench/workbench_window.h"
 #include "ui/xy/dc_table_panel.h"
 #include "ui/xy/plotter_panel.h"
@@ -1255,6 +1256,62 @@ class XyScreensTest : public QObject {
         QVERIFY(w.plots()->pointCount() > 20);
         QVERIFY(w.history()->table()->rowCount() > 3);
         QVERIFY(w.positionLabel()->text().contains(QString::number(s.sample.x.positionMm, 'f', 2)));
+    }
+
+    // Issue 31 item 7: the strip under the XY plots marks the run (its start, the m00's hold at
+    // its line, the operator's override, the resume and the end) on the plots' time axis; a
+    // click on the hold shows its moment and says its line, a click away goes back to live.
+    void xyTimelineMarksTheRunUnderThePlots() {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        w.setConfirmer([](const QString&, const QString&) { return true; });
+        w.resize(1024, 738);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        const QString prog = dir.filePath(QStringLiteral("hold.G"));
+        {
+            QFile f(prog);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("G90\nG00 X50 Y50\nM00\nG01 X100 Y50 F60\nM02\n");
+        }
+        QVERIFY(w.selectProgram(prog));
+        w.startButton()->click();
+        QVERIFY(advanceUntil(
+            *link, [&] { return link->status().state == ControllerState::Paused; }, 30.0));
+        w.findChild<QAction*>(QStringLiteral("overrideDown"))->trigger();
+        link->advance(0.05);
+        w.findChild<QAction*>(QStringLiteral("continue"))->trigger();
+        QVERIFY(advanceUntil(
+            *link, [&] { return link->status().programFinished; }, 60.0));
+        link->advance(0.1);
+        QString kinds;
+        for (const TimelineMark& m : w.timeline().marks())
+            kinds += QStringLiteral("%1@%2 ").arg(QLatin1String(markKindName(m.kind))).arg(m.line);
+        QCOMPARE(kinds, QStringLiteral("mode@0 start@1 hold@3 override@3 resume@4 end@5 "));
+        const TimelineMark hold = w.timeline().marks()[2];
+        QCOMPARE(w.timeline().marks()[3].code, 90);
+        TimelineStrip* strip = w.plots()->timelineStrip();
+        QVERIFY(strip->isVisible());
+        QVERIFY(strip->height() <= 32);
+        // On the plots' time axis: the range the position plot shows.
+        QCOMPARE(strip->toS(), w.plots()->findChild<QCustomPlot*>()->xAxis->range().upper);
+        const int x = strip->xOf(hold.timeS);
+        QVERIFY(x > 0 && x < strip->width());
+        QTest::mouseClick(strip, Qt::LeftButton, {}, QPoint(x, strip->height() / 2));
+        QVERIFY(!w.plots()->following());
+        QVERIFY(std::abs(strip->fromS() - (hold.timeS - XyPlots::kWindowS / 2)) < 1e-6);
+        QVERIFY(w.statusBar()->currentMessage().contains(QStringLiteral("line 3")));
+        // Live again on a click away from any mark (the strip's left end, before the run).
+        QTest::mouseClick(strip, Qt::LeftButton, {}, QPoint(1, strip->height() / 2));
+        QVERIFY(w.plots()->following());
+        // The journal kept the hold and the override under their own kinds.
+        QStringList historyKinds;
+        for (int r = 0; r < w.history()->table()->rowCount(); ++r)
+            historyKinds << w.history()->table()->item(r, 1)->data(Qt::UserRole).toString();
+        QVERIFY(historyKinds.contains(QStringLiteral("hold")));
+        QVERIFY(historyKinds.contains(QStringLiteral("override")));
     }
 
     void dcTableFrontPanelSendMovesToTheTypedSetPoint() {

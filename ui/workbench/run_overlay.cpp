@@ -147,6 +147,25 @@ void RunOverlay::rebuild() {
     }
     plot_->rescaleAxes();
     plot_->xAxis->setRange(std::min(-0.01, plot_->xAxis->range().lower), maxT);
+    // The runs' alarm timelines (issue 31 item 7): a vertical line at each mark, on the run's
+    // own time from its step; alarms red, warnings amber, the rest dotted in the run's colour.
+    plot_->clearItems();
+    for (std::size_t k = 0; k < runs_.size(); ++k) {
+        const WorkbenchRunPtr& run = runs_[k];
+        if (!shown_[k] || !run->plot) continue;
+        std::size_t drawn = 0;
+        for (const TimelineMark& m : run->events.marks()) {
+            if (++drawn > kMaxOverlayMarks) break;  // a flood of warnings: the first ones
+            auto* line = new QCPItemStraightLine(plot_);
+            const double x = m.timeS - run->plot->timeOriginS;
+            line->point1->setCoords(x, 0.0);
+            line->point2->setCoords(x, 1.0);
+            const QPen pen = m.kind == MarkKind::Alarm     ? QPen(QColor(200, 0, 0), 1.5)
+                             : m.kind == MarkKind::Warning ? QPen(QColor(230, 150, 0), 1.5)
+                                                           : QPen(run->color, 1, Qt::DotLine);
+            line->setPen(pen);
+        }
+    }
     replotIfShown(this, plot_, stale_);
 
     table_->clear();

@@ -1,8 +1,10 @@
 #pragma once
 // The workbench's overlay (issue 21 item 3): every shown run's response on one plot, aligned on
 // its step (t = 0 at the step, displacement from the start), its setpoint dashed in the same
-// colour, and below a table of the runs' metrics side by side, one column per run. Clicking a
-// column selects the run (the teaching view shows it).
+// colour, the marks of its alarm timeline when it has one (NAME.events.csv beside a loaded
+// trace: alarms, holds, mode changes as vertical lines), and below a table of the runs' metrics
+// side by side, one column per run. Clicking a column selects the run (the teaching view shows
+// it).
 #include <QWidget>
 #include <vector>
 
@@ -17,6 +19,9 @@ namespace ui {
 class RunOverlay : public QWidget {
     Q_OBJECT
   public:
+    /// A run's timeline marks drawn at most (vertical lines: a flood of warnings would cost
+    /// each replot).
+    static constexpr std::size_t kMaxOverlayMarks = 200;
     explicit RunOverlay(QWidget* parent = nullptr);
     /// The runs, and for each whether its curves are drawn (empty: all); the points are the
     /// runs' own (RunPlot), shared, so this never walks a run's ticks.

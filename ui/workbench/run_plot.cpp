@@ -55,6 +55,7 @@ std::shared_ptr<const RunPlot> makeRunPlot(const RunRecord& record, const StepMe
     const RunChannels& c = record.channels;
     const double t0 = m.ok ? m.stepTimeS : (c.size() ? c.timeS[0] : 0.0);
     const double y0 = m.ok ? m.startMm : (c.size() ? c.setpointMm[0] : 0.0);
+    plot->timeOriginS = t0;
     plot->response = plotPoints(c.timeS, c.positionMm, t0, y0);
     plot->setpoint = plotPoints(c.timeS, c.setpointMm, t0, y0);
     while (plot->firstStepTick + 1 < c.size() &&

@@ -36,6 +36,9 @@ struct RunPlot {
     double driveOffset = 0.0;  ///< subtracted from the drive (the rail's DAC zero, 128)
     /// Where the lessons begin: the first tick whose setpoint differs from the first one.
     std::size_t firstStepTick = 0;
+    /// The run's time at the overlay's t = 0 (the step, or the first tick), s: a mark of the
+    /// run's timeline at time t is drawn at t - timeOriginS.
+    double timeOriginS = 0.0;
 };
 
 /// Above this many points a graph is dense (more than about two a pixel on a screen-wide plot).

@@ -7,6 +7,7 @@
 #include <QString>
 #include <memory>
 
+#include "core/timeline/timeline.h"
 #include "core/tuning/run_record.h"
 #include "core/tuning/step_metrics.h"
 
@@ -22,6 +23,9 @@ struct WorkbenchRun {
     QString name;                         ///< "1: engineered kp 1.2 ki 0.5 kd 0.02, 10 mm"
     QString abortReason;                  ///< empty when the test ran to its end
     QColor color;
+    /// The run's alarm timeline, when `run --trace` wrote it beside the loaded trace
+    /// (NAME.events.csv); empty otherwise. The overlay draws its marks.
+    Timeline events;
 };
 
 using WorkbenchRunPtr = std::shared_ptr<const WorkbenchRun>;

@@ -5,6 +5,7 @@
 #include <QDoubleSpinBox>
 #include <QEvent>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QFutureWatcher>
 #include <QGroupBox>
@@ -23,6 +24,7 @@
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include "core/timeline/events_file.h"
 #include "core/tuning/dc_axis_autotune.h"
 #include "core/tuning/dc_identification_experiment.h"
 #include "core/tuning/frequency_response.h"
@@ -826,6 +828,7 @@ void WorkbenchWindow::startLoad(const QString& csvPath, bool tell) {
     struct Loaded {
         Prepared prepared;
         QString error;
+        QString eventsError;  ///< an events file beside the run that could not be read
     };
     auto* watcher = new QFutureWatcher<Loaded>(this);
     connect(watcher, &QFutureWatcher<Loaded>::finished, this, [this, watcher, name, tell] {
@@ -841,6 +844,8 @@ void WorkbenchWindow::startLoad(const QString& csvPath, bool tell) {
             return;
         }
         addRun(std::move(l.prepared.run), name);
+        // The run stands without its events: said (after the run's own line), with its place.
+        if (!l.eventsError.isEmpty()) statusBar()->showMessage(l.eventsError, 15000);
         emit runLoaded(QString());
     });
     // Read, parsed, measured and its plot made on a worker thread: the screens (E-stop among
@@ -863,6 +868,15 @@ void WorkbenchWindow::startLoad(const QString& csvPath, bool tell) {
         r.abortReason = load.record->conditions.abortReason;
         r.record = std::move(*load.record);
         l.prepared = prepare(std::move(r));
+        // The run's events beside it (`run --trace`'s NAME.events.csv), for the overlay.
+        const QString events = eventsPathFor(csvPath);
+        if (QFileInfo::exists(events)) {
+            TimelineLoad t = readEventsFile(events);
+            if (t.timeline)
+                l.prepared.run->events = std::move(*t.timeline);
+            else
+                l.eventsError = tr("The run's events are not shown: %1").arg(t.error);
+        }
         return l;
     }));
 }

@@ -54,6 +54,7 @@
 #include "ui/machine_choice.h"
 #include "ui/pre_run_check_text.h"
 #include "ui/program_panel.h"
+#include "ui/timeline_strip.h"
 #include "ui/xy/calibration_dialog.h"
 #include "ui/xy/dc_table_panel.h"
 #include "ui/xy/plotter_comm_log.h"
@@ -322,6 +323,8 @@ XyMainWindow::XyMainWindow(XyLink& link, QSettings& settings, QWidget* parent)
     // puts them back.
     simulation_ = new XySimulationPanel(profile.kind, this);
     addFrameDocks(plots_, history_, simulation_);
+    setTimelineStrip(plots_->timelineStrip());
+    connect(plots_->timelineStrip(), &TimelineStrip::liveRequested, plots_, &XyPlots::followLive);
     addLibraryDock(Qt::BottomDockWidgetArea, simulationDock_);
     plotDock_->raise();
     // A board on a serial line has no simulated plant: no faults to offer.
@@ -389,6 +392,7 @@ void XyMainWindow::setOverride(int percent) {
     overridePercent_ = std::clamp(percent, 0, 150);  // the rail's slider's range
     const double factor = overridePercent_ / 100.0;
     link_.post([factor](XyController& c) { c.setFeedOverride(factor); });
+    markFeedOverride(factor);
     override_->setText(tr("Feed override %1 %").arg(overridePercent_));
 }
 
@@ -529,6 +533,7 @@ bool XyMainWindow::applyProgram(const QString& path, ProgramRead read) {
         return false;
     }
     program_ = program;
+    setTimelineProgram(program);
     programPath_ = path;
     view_->setPlannedPath(std::move(read.path));
     view_->clearFollowed();
@@ -753,10 +758,12 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
         dncLink()->noteEvent(e);
         const bool alarm = e.kind == EventKind::AlarmRaised;
         const QString line = xyHistoryLine(e);
+        timelineEvent(e, line, status.blockIndex, status.blockLine);
         if (!line.isEmpty())
             addHistory(line, journalKind(e), alarm ? static_cast<int>(e.alarm) : 0);
     }
     last_ = status;
+    timelineStatus(status.state, status.timeS, status.blockIndex, status.blockLine);
     scheduleCheck();  // a program loaded, the override the check runs at: the status'
     if (journal_) journal_->syncIfDue(journalClock_.elapsed());
     showLinkState();
@@ -950,6 +957,12 @@ void XyMainWindow::retranslate() {
     program_label_->setText(program_ ? tr("Program: %1").arg(programName_)
                                      : tr("No program loaded"));
     state_->setText(stateText(last_.state));
+}
+
+void XyMainWindow::showTimelineMark(const TimelineMark& mark) {
+    // No program text on this screen: the line is said with the mark.
+    plots_->showMoment(mark.timeS);
+    statusBar()->showMessage(TimelineStrip::describe(mark), 8000);
 }
 
 }  // namespace ui

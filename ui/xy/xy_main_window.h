@@ -129,14 +129,15 @@ class XyMainWindow : public OperatorFrame {
     KeysDialog::Machine keysMachine() const override { return KeysDialog::Machine::Xy; }
     void openFromLibrary(const QString& path) override;
     void retranslate() override;
-    void addDncHistoryLine(const QString& line) override {
-        addHistory(line, QStringLiteral("status"));
+    void addDncHistoryLine(const QString& line, const QString& kind) override {
+        addHistory(line, kind);
     }
     void addFileItems(QMenu* file) override;
     void addOptionItems(QMenu* options) override;
     /// Space is typed in a text field too (a port name), not only in an editor.
     bool typesSpace(QWidget* focus) const override;
     void resetMachineLayout() override;
+    void showTimelineMark(const TimelineMark& mark) override;
 
   private:
     /// What homing does on this machine, for the questions that lead to it.

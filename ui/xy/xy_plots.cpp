@@ -5,6 +5,7 @@
 #include <QVBoxLayout>
 #include <array>
 #include "ui/plot_legend.h"
+#include "ui/timeline_strip.h"
 
 namespace trilho {
 namespace ui {
@@ -38,6 +39,11 @@ XyPlots::XyPlots(QWidget* parent) : QWidget(parent) {
     v->setContentsMargins(0, 0, 0, 0);
     v->addWidget(position_, 1);
     v->addWidget(velocity_, 1);
+    // The timeline under both plots, on their time axis.
+    strip_ = new TimelineStrip(this);
+    v->addWidget(strip_);
+    connect(position_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), strip_,
+            [this](const QCPRange& r) { strip_->setTimeRange(r.lower, r.upper); });
     retranslate();
 }
 
@@ -65,9 +71,14 @@ void XyPlots::addSample(double tS, const XySample& s) {
     if (!changed_ && tS - lastDrawnT_ < kRestPeriodS) return;
     changed_ = false;
     lastDrawnT_ = tS;
+    if (held_) return;  // a moment shown from the timeline stays until followLive()
     ++replots_;
+    drawAxes(std::max(0.0, from), std::max(kWindowS, tS));
+}
+
+void XyPlots::drawAxes(double from, double to) {
     for (QCustomPlot* p : {position_, velocity_}) {
-        p->xAxis->setRange(std::max(0.0, from), std::max(kWindowS, tS));
+        p->xAxis->setRange(from, to);
         // The values' own range (a flat line at 0 gets +-1, not QCustomPlot's default).
         QCPRange r;
         bool any = false;
@@ -83,6 +94,16 @@ void XyPlots::addSample(double tS, const XySample& s) {
         p->yAxis->setRange(r.lower - margin, r.upper + margin);
         p->replot(QCustomPlot::rpQueuedReplot);
     }
+}
+
+void XyPlots::showMoment(double timeS) {
+    held_ = true;
+    drawAxes(timeS - kWindowS / 2, timeS + kWindowS / 2);
+}
+
+void XyPlots::followLive() {
+    held_ = false;
+    drawAxes(std::max(0.0, lastT_ - kWindowS), std::max(kWindowS, lastT_));
 }
 
 void XyPlots::clear() {

@@ -12,6 +12,8 @@ class QCPGraph;
 namespace trilho {
 namespace ui {
 
+class TimelineStrip;
+
 class XyPlots : public QWidget {
     Q_OBJECT
   public:
@@ -20,6 +22,13 @@ class XyPlots : public QWidget {
     void clear();
     /// Points held by the position plot's x graph (tests).
     int pointCount() const;
+    /// The alarm timeline's strip under the plots, on their time axis.
+    TimelineStrip* timelineStrip() const { return strip_; }
+    /// Holds the plots' window centred on timeS (a mark clicked on the strip) until
+    /// followLive() (a click on the strip away from any mark).
+    void showMoment(double timeS);
+    void followLive();
+    bool following() const { return !held_; }
 
     /// Pictures drawn so far (tests: once a second while nothing moves).
     int replotCount() const { return replots_; }
@@ -33,7 +42,10 @@ class XyPlots : public QWidget {
 
   private:
     void retranslate();
+    void drawAxes(double from, double to);
     QCustomPlot *position_, *velocity_;
+    TimelineStrip* strip_;
+    bool held_ = false;  ///< showing a moment, not the live end
     QCPGraph *xSet_, *xPos_, *ySet_, *yPos_, *xVel_, *yVel_;
     double lastT_ = 0.0;
     double lastReplotT_ = -1.0;
