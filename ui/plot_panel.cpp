@@ -74,8 +74,7 @@ PlotPanel::PlotPanel(QWidget* parent) : QWidget(parent) {
     plots->addWidget(error_, 1);
     v->addLayout(plots, 1);
     v->addLayout(buttons);
-    connect(position_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), strip_,
-            [this](const QCPRange& r) { strip_->setTimeRange(r.lower, r.upper); });
+    strip_->followAxisOf(position_);  // under the position plot's time axis, px for px
     connect(pause_, &QPushButton::toggled, this, &PlotPanel::setPaused);
     connect(png_, &QPushButton::clicked, this, [this] {
         const QString f = QFileDialog::getSaveFileName(this, tr("Export PNG"), QString(),

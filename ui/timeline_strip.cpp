@@ -1,5 +1,7 @@
 #include "ui/timeline_strip.h"
 
+#include <qcustomplot.h>
+
 #include <QHelpEvent>
 #include <QMouseEvent>
 #include <QPainter>
@@ -40,8 +42,33 @@ void TimelineStrip::setTimeRange(double fromS, double toS) {
 
 int TimelineStrip::xOf(double timeS) const {
     const double span = to_ - from_;
-    const double x = (timeS - from_) / span * std::max(1, width() - 1);
+    const int left = spanLeft_ < 0 ? 0 : spanLeft_;
+    const int right = spanLeft_ < 0 ? width() - 1 : spanRight_;
+    const double x = left + (timeS - from_) / span * std::max(1, right - left);
     return static_cast<int>(std::lround(std::clamp(x, -1e6, 1e6)));
+}
+
+void TimelineStrip::setAxisSpan(int leftPx, int rightPx) {
+    if (rightPx <= leftPx) return;  // a plot not laid out yet
+    if (leftPx == spanLeft_ && rightPx == spanRight_) return;
+    spanLeft_ = leftPx;
+    spanRight_ = rightPx;
+    update();
+}
+
+void TimelineStrip::followAxisOf(QCustomPlot* plot) {
+    connect(plot->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
+            [this](const QCPRange& r) { setTimeRange(r.lower, r.upper); });
+    connect(plot, &QCustomPlot::afterReplot, this, [this, plot] {
+        const QCPRange r = plot->xAxis->range();
+        const auto at = [&](double t) {
+            const QPoint global =
+                plot->mapToGlobal(QPoint(qRound(plot->xAxis->coordToPixel(t)), 0));
+            return mapFromGlobal(global).x();
+        };
+        setTimeRange(r.lower, r.upper);
+        setAxisSpan(at(r.lower), at(r.upper));
+    });
 }
 
 QColor TimelineStrip::colourOf(MarkKind kind) {
@@ -97,8 +124,10 @@ QString TimelineStrip::describe(const TimelineMark& m) {
 
 std::optional<TimelineMark> TimelineStrip::markAt(int x) const {
     if (!timeline_ || timeline_->empty()) return std::nullopt;
-    const double pxS = (to_ - from_) / std::max(1, width() - 1);
-    const double t = from_ + x * pxS;
+    const int left = spanLeft_ < 0 ? 0 : spanLeft_;
+    const int right = spanLeft_ < 0 ? width() - 1 : spanRight_;
+    const double pxS = (to_ - from_) / std::max(1, right - left);
+    const double t = from_ + (x - left) * pxS;
     const auto& marks = timeline_->marks();
     // The marks near t (by time, sorted), the nearest in px; an alarm wins a tie.
     std::size_t i = timeline_->indexAtOrAfter(t - kPickPx * pxS);
@@ -116,10 +145,16 @@ std::optional<TimelineMark> TimelineStrip::markAt(int x) const {
 
 void TimelineStrip::paintEvent(QPaintEvent*) {
     QPainter p(this);
-    p.fillRect(rect(), palette().color(QPalette::Base));
+    // The band under the plot's axis only; beside it the panel's own background.
+    const int left = std::max(0, spanLeft_ < 0 ? 0 : spanLeft_);
+    const int right = std::min(width() - 1, spanLeft_ < 0 ? width() - 1 : spanRight_);
+    const QRect band(left, 0, std::max(1, right - left + 1), height());
+    p.fillRect(rect(), palette().color(QPalette::Window));
+    p.fillRect(band, palette().color(QPalette::Base));
     p.setPen(palette().color(QPalette::Mid));
-    p.drawLine(0, height() / 2, width(), height() / 2);
-    p.drawRect(rect().adjusted(0, 0, -1, -1));
+    p.drawLine(band.left(), height() / 2, band.right(), height() / 2);
+    p.drawRect(band.adjusted(0, 0, -1, -1));
+    p.setClipRect(band);
     if (!timeline_) return;
     const auto& marks = timeline_->marks();
     // Neutral marks first, then warnings, then alarms: red is never hidden under grey.

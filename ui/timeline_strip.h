@@ -9,6 +9,8 @@
 
 #include "core/timeline/timeline.h"
 
+class QCustomPlot;
+
 namespace trilho {
 namespace ui {
 
@@ -28,6 +30,12 @@ class TimelineStrip : public QWidget {
     double fromS() const { return from_; }
     double toS() const { return to_; }
     void refresh() { update(); }
+    /// The strip's px that show fromS and toS (the plot's axis, mapped into the strip), so a
+    /// mark sits under its moment in the plot above; until set, the strip's whole width.
+    void setAxisSpan(int leftPx, int rightPx);
+    /// Follows `plot`'s time axis: its range and where its axis lies over the strip, after
+    /// each of its replots (both in the same window).
+    void followAxisOf(QCustomPlot* plot);
 
     /// The x of a time, px, in this widget.
     int xOf(double timeS) const;
@@ -57,6 +65,7 @@ class TimelineStrip : public QWidget {
   private:
     const Timeline* timeline_ = nullptr;
     double from_ = 0.0, to_ = 20.0;
+    int spanLeft_ = -1, spanRight_ = -1;  ///< -1: the whole width
 };
 
 }  // namespace ui

@@ -10,12 +10,15 @@
 #include <QTest>
 #include <QToolTip>
 
+#include <qcustomplot.h>
 #include "core/journal/journal.h"
 #include "tests/support/widget_test_main.h"
 #include "translations/i18n.h"
 #include "ui/history_panel.h"
+#include "ui/plot_panel.h"
 #include "ui/timeline_dialog.h"
 #include "ui/timeline_strip.h"
+#include "ui/xy/xy_plots.h"
 
 using namespace trilho;
 using namespace trilho::ui;
@@ -89,6 +92,44 @@ class TimelineStripTest : public QObject {
         // With no timeline, nothing to pick, nothing drawn but the strip.
         s.setTimeline(nullptr);
         QVERIFY(!s.markAt(100));
+    }
+
+    // A mark sits under its moment: the strip's x of a time is the position plot's x of that
+    // time (the rail's strip beside the plots' buttons, the XY's under its stacked plots; the
+    // strip spread the plots' range over its own width, 245 px off at 1366x768).
+    void aMarkSitsUnderItsMomentInThePlot() {
+        const Timeline t = sample();
+        PlotPanel rail;
+        XyPlots xy;
+        struct Case {
+            QWidget* panel;
+            TimelineStrip* strip;
+            QCustomPlot* plot;
+        };
+        QCustomPlot* xyPlot = xy.findChildren<QCustomPlot*>().value(0);
+        QVERIFY(xyPlot);
+        for (const Case& c : {Case{&rail, rail.timelineStrip(), rail.positionPlot()},
+                              Case{&xy, xy.timelineStrip(), xyPlot}}) {
+            c.panel->resize(900, 260);
+            c.panel->show();
+            QVERIFY(QTest::qWaitForWindowExposed(c.panel));
+            c.strip->setTimeline(&t);
+            c.plot->xAxis->setRange(0.0, 20.0);
+            c.plot->replot();
+            QCoreApplication::processEvents();
+            for (double time : {2.0, 5.0, 15.0}) {
+                const int inPlot =
+                    c.plot->mapTo(c.panel, QPoint(qRound(c.plot->xAxis->coordToPixel(time)), 0))
+                        .x();
+                const int inStrip = c.strip->mapTo(c.panel, QPoint(c.strip->xOf(time), 0)).x();
+                QVERIFY2(std::abs(inPlot - inStrip) <= 1,
+                         qPrintable(QStringLiteral("t = %1 s: plot x %2, strip x %3")
+                                        .arg(time)
+                                        .arg(inPlot)
+                                        .arg(inStrip)));
+            }
+            c.panel->hide();
+        }
     }
 
     void theStripsTextsAreTranslated() {

@@ -42,8 +42,7 @@ XyPlots::XyPlots(QWidget* parent) : QWidget(parent) {
     // The timeline under both plots, on their time axis.
     strip_ = new TimelineStrip(this);
     v->addWidget(strip_);
-    connect(position_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), strip_,
-            [this](const QCPRange& r) { strip_->setTimeRange(r.lower, r.upper); });
+    strip_->followAxisOf(position_);  // under the position plot's time axis, px for px
     retranslate();
 }
 
