@@ -16,51 +16,12 @@
 #include <QTest>
 #include <functional>
 #include <vector>
+#include "tests/support/device_process.h"
 
 namespace {
 
-bool waitFor(const std::function<bool()>& cond, double timeoutS) {
-    QElapsedTimer clock;
-    clock.start();
-    while (!cond()) {
-        if (static_cast<double>(clock.elapsed()) > timeoutS * 1000.0) return false;
-        QTest::qWait(5);
-    }
-    return true;
-}
-
-struct Device {
-    QProcess process;
-    QString path, out;
-    bool start(const QStringList& args, int baud) {
-        process.setProgram(QStringLiteral(TRILHO_DEVICE));
-        process.setArguments(args);
-        process.start();
-        if (!process.waitForStarted(5000)) return false;
-        const QRegularExpression re(QStringLiteral("table on (\\S+) at %1 bit/s").arg(baud));
-        return waitFor(
-            [&] {
-                out += QString::fromUtf8(process.readAllStandardOutput());
-                const auto m = re.match(out);
-                if (m.hasMatch()) path = m.captured(1);
-                return !path.isEmpty();
-            },
-            10.0);
-    }
-    /// SIGTERM, and what it printed last (its summary line).
-    QString stop() {
-        process.terminate();
-        process.waitForFinished(5000);
-        out += QString::fromUtf8(process.readAllStandardOutput());
-        return out;
-    }
-    ~Device() {
-        if (process.state() != QProcess::NotRunning) {
-            process.terminate();
-            if (!process.waitForFinished(5000)) process.kill();
-        }
-    }
-};
+using trilho::testing::waitFor;
+using Device = trilho::testing::DeviceProcess;
 
 int openRaw(const QString& path, speed_t speed) {
     const int fd = ::open(path.toLocal8Bit().constData(), O_RDWR | O_NOCTTY | O_NONBLOCK);

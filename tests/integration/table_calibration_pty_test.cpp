@@ -31,6 +31,7 @@
 #include "core/profile/machine_profile.h"
 #include "hal/emulator/table_firmware.h"
 #include "tests/support/calibration_streams.h"
+#include "tests/support/device_process.h"
 
 using namespace trilho;
 
@@ -39,41 +40,8 @@ namespace {
 const QString kShipped = QStringLiteral(TRILHO_MACHINES_DIR "/xy_dc_table.json");
 constexpr double kPercent = 15.0;  ///< the emulated program's PWM, percent
 
-bool waitFor(const std::function<bool()>& cond, double timeoutS) {
-    QElapsedTimer clock;
-    clock.start();
-    while (!cond()) {
-        if (static_cast<double>(clock.elapsed()) > timeoutS * 1000.0) return false;
-        QTest::qWait(5);
-    }
-    return true;
-}
-
-struct Device {
-    QProcess process;
-    QString path, out;
-    bool start(const QStringList& args) {
-        process.setProgram(QStringLiteral(TRILHO_DEVICE));
-        process.setArguments(args);
-        process.start();
-        if (!process.waitForStarted(5000)) return false;
-        static const QRegularExpression re(QStringLiteral("table on (\\S+) at 9600 bit/s"));
-        return waitFor(
-            [&] {
-                out += QString::fromUtf8(process.readAllStandardOutput());
-                const auto m = re.match(out);
-                if (m.hasMatch()) path = m.captured(1);
-                return !path.isEmpty();
-            },
-            10.0);
-    }
-    ~Device() {
-        if (process.state() != QProcess::NotRunning) {
-            process.terminate();
-            if (!process.waitForFinished(5000)) process.kill();
-        }
-    }
-};
+using trilho::testing::waitFor;
+using Device = trilho::testing::DeviceProcess;
 
 struct Cli {
     int exit = -1;

@@ -14,51 +14,19 @@
 
 #include "core/protocol/table_host.h"
 #include "hal/serial/serial_line.h"
+#include "tests/support/device_process.h"
 
 using namespace trilho;
 
 namespace {
 
 /// Processes events (and calls `each`) until cond() holds or timeoutS passes.
+/// Polls every 2 ms: the table's answers come within a few ms.
 bool waitFor(const std::function<bool()>& cond, double timeoutS,
              const std::function<void()>& each = {}) {
-    QElapsedTimer clock;
-    clock.start();
-    while (!cond()) {
-        if (static_cast<double>(clock.elapsed()) > timeoutS * 1000.0) return false;
-        if (each) each();
-        QTest::qWait(2);
-    }
-    return true;
+    return trilho::testing::waitFor(cond, timeoutS, each, 2);
 }
-
-struct Device {
-    QProcess process;
-    QString path;
-    QString out;
-
-    bool start(const QStringList& args) {
-        process.setProgram(QStringLiteral(TRILHO_DEVICE));
-        process.setArguments(args);
-        process.start();
-        if (!process.waitForStarted(5000)) return false;
-        static const QRegularExpression re(QStringLiteral("table on (\\S+) at 9600 bit/s"));
-        return waitFor(
-            [&] {
-                out += QString::fromUtf8(process.readAllStandardOutput());
-                const auto m = re.match(out);
-                if (m.hasMatch()) path = m.captured(1);
-                return !path.isEmpty();
-            },
-            10.0);
-    }
-    ~Device() {
-        if (process.state() != QProcess::NotRunning) {
-            process.terminate();  // SIGTERM: trilho-device prints its summary and ends
-            if (!process.waitForFinished(5000)) process.kill();
-        }
-    }
-};
+using Device = trilho::testing::DeviceProcess;
 
 /// TableHost on a SerialLine at 9600 bit/s, as the screens drive the table: the host hears each
 /// byte the line receives, stamped now() (s), and pump() polls it and writes what it has due.
