@@ -53,7 +53,8 @@ struct ClosedLoopPoles {
     double largestMagnitude = 0.0;       ///< max |z|: the loop is stable below 1
     bool stable = false;
     /// The slowest complex pair (largest |z|), or the slowest real pole when there is no pair;
-    /// poles at the origin (deadbeat) are never dominant unless all are there.
+    /// poles at the origin (deadbeat) and dipoles (a zero within a tenth of the pole's distance
+    /// to the unit circle) are never dominant unless all are.
     PoleFigures dominant;
 };
 
@@ -80,7 +81,7 @@ struct RootLocus {
     double lowerKp = 0.0;
 };
 
-/// kpMin..kpMax: defaults (0) the spec's Kp / 100 to x 100 (Kp 0: 1e-3 to 1e3 of the law's unit).
+/// kpMin..kpMax: defaults (0) the spec's Kp / 100 to x 1000 (Kp 0 or less: 1e-3 to 1e3).
 RootLocus rootLocusOverKp(const DiscreteLoopSpec& spec, double kpMin = 0.0, double kpMax = 0.0,
                           int points = 200);
 

@@ -118,6 +118,22 @@ TEST(ClosedLoopPoles, ClassicLawDerivativeIsPerMillisecondOfThePeriod) {
     EXPECT_FALSE(i.stable);
 }
 
+TEST(ClosedLoopPoles, ASlowIntegralDipoleIsNotTheDominantPole) {
+    // The rail's model and tuned gains: the integral's pole sits beside its zero kp / (kp + ki
+    // T) = 1.2 / 1.2005 = 0.999584; the dominant is the next, the loop's own time constant.
+    const ClosedLoopPoles p =
+        closedLoopPoles(spec(14.84, 0.015, LoopLaw::Engineered, {1.2, 0.5, 0.02}, 0.001));
+    ASSERT_EQ(p.poles.size(), 4u);
+    EXPECT_GT(p.poles[0].real(), 0.9995);  // the dipole's pole
+    bool zeroBeside = false;
+    for (ZPoint z : p.zeros)
+        zeroBeside |= std::abs(z.real() - 1.2 / 1.2005) < 1e-9;
+    EXPECT_TRUE(zeroBeside);
+    EXPECT_EQ(p.dominant.z, p.poles[1]);
+    EXPECT_LT(p.dominant.z.real(), 0.99);
+    EXPECT_NEAR(p.dominant.naturalFrequencyRadS, -std::log(p.poles[1].real()) / 0.001, 1e-9);
+}
+
 /// The linear loop as the servo runs it: PositionLoop (engineered) on the plant's exact
 /// discretisation, the measured velocity filtered as RailServo does; returns the largest
 /// |error| over ticks [from, to).
