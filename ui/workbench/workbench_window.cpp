@@ -39,6 +39,7 @@
 #include "ui/wheel_needs_focus.h"
 #include "ui/workbench/margin_view.h"
 #include "ui/workbench/model_view.h"
+#include "ui/workbench/poles_view.h"
 #include "ui/workbench/run_overlay.h"
 #include "ui/workbench/run_plot.h"
 #include "ui/workbench/terms_view.h"
@@ -104,6 +105,7 @@ WorkbenchWindow::WorkbenchWindow(const MachineProfile& profile, QWidget* parent)
     build();
     retranslate();
     lawChanged();
+    updatePoles();
     fitForm();
     wheelNeedsFocus(this);  // no value changes under a wheel turned to scroll the panel
     // 1280x720 where there is room; on a 1024x768 screen its width (issue 33 bug 4: it opened
@@ -287,6 +289,12 @@ void WorkbenchWindow::build() {
         else
             model_->hide();
     }
+    // The closed loop's poles: the rail's laws (the DC table's axis is not worked out yet).
+    polesView_ = new PolesView(this);
+    if (rail_)
+        tabs_->addTab(polesView_, QString());
+    else
+        polesView_->hide();
     auto* split = new QSplitter(Qt::Horizontal);
     split->addWidget(scroll);
     split->addWidget(tabs_);
@@ -305,6 +313,9 @@ void WorkbenchWindow::build() {
             if (!changeBox_->isChecked()) to->setValue(v);
         });
     connect(axis_, &QComboBox::currentIndexChanged, this, &WorkbenchWindow::lawChanged);
+    for (QDoubleSpinBox* box : {kp_, ki_, kd_, period_})
+        connect(box, &QDoubleSpinBox::valueChanged, this, &WorkbenchWindow::updatePoles);
+    connect(law_, &QComboBox::currentIndexChanged, this, &WorkbenchWindow::updatePoles);
     connect(run_, &QPushButton::clicked, this, &WorkbenchWindow::runStep);
     connect(compare_, &QPushButton::clicked, this, &WorkbenchWindow::compareLaws);
     connect(identify_, &QPushButton::clicked, this, &WorkbenchWindow::identify);
@@ -403,6 +414,7 @@ void WorkbenchWindow::retranslate() {
     tabs_->setTabText(0, tr("Responses"));
     tabs_->setTabText(1, tr("P, I, D terms"));
     if (tunable()) tabs_->setTabText(2, tr("Model"));
+    if (rail_) tabs_->setTabText(3, tr("Poles"));
 }
 
 void WorkbenchWindow::changeEvent(QEvent* e) {
@@ -437,6 +449,15 @@ void WorkbenchWindow::lawChanged() {
                                                   : profile_.loop.samplePeriodS * 1e3);
     else
         period_->setValue(profile_.dcTable.samplePeriodS * 1e3);
+}
+
+void WorkbenchWindow::updatePoles() {
+    if (!rail_) return;
+    // As currentSpec gives the law, gains and period to a step test (and `tune poles` takes
+    // them): the Period box for either law.
+    polesView_->setLoop(static_cast<LoopLaw>(law_->currentData().toInt()),
+                        {kp_->value(), ki_->value(), kd_->value()}, period_->value() / 1e3,
+                        profile_.loop.derivativeFilterS);
 }
 
 StepTestSpec WorkbenchWindow::currentSpec() const {
@@ -639,6 +660,7 @@ void WorkbenchWindow::identify() {
         },
         [this, profile](Out o) {
             model_->showIdentification(o.id, o.frequency, profile.loop.engineered);
+            if (o.id.accepted) polesView_->setModel(o.id.model);
             tabs_->setCurrentWidget(model_);
             statusBar()->showMessage(o.id.accepted
                                          ? tr("Identified: fit %1 % on held-out velocity.")
@@ -663,6 +685,7 @@ void WorkbenchWindow::autotune() {
         },
         [this](AutotuneResult r) {
             model_->showAutotune(r);
+            if (r.identification.accepted) polesView_->setModel(r.identification.model);
             tabs_->setCurrentWidget(model_);
             if (r.ok) {
                 tuned_ = r.tuned;

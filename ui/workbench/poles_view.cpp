@@ -1,0 +1,189 @@
+#include "ui/workbench/poles_view.h"
+
+#include <qcustomplot.h>
+#include <QEvent>
+#include <QLabel>
+#include <QSplitter>
+#include <QVBoxLayout>
+#include <cmath>
+#include <numbers>
+
+namespace trilho {
+namespace ui {
+
+namespace {
+
+QString num(double v, int decimals) {
+    return std::isfinite(v) ? QString::number(v, 'f', decimals) : QStringLiteral("inf");
+}
+
+QString zText(ZPoint z) {
+    if (z.imag() == 0.0) return num(z.real(), 6);
+    return QStringLiteral("%1 %2 j%3")
+        .arg(num(z.real(), 6), z.imag() < 0.0 ? QStringLiteral("-") : QStringLiteral("+"),
+             num(std::abs(z.imag()), 6));
+}
+
+QCPCurve* scatter(QCustomPlot* plot, const std::vector<ZPoint>& points, QCPScatterStyle style) {
+    auto* c = new QCPCurve(plot->xAxis, plot->yAxis);
+    QVector<double> t, x, y;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        t << static_cast<double>(i);
+        x << points[i].real();
+        y << points[i].imag();
+    }
+    c->setData(t, x, y);
+    c->setLineStyle(QCPCurve::lsNone);
+    c->setScatterStyle(style);
+    return c;
+}
+
+}  // namespace
+
+PolesView::PolesView(QWidget* parent) : QWidget(parent) {
+    summary_ = new QLabel(this);
+    summary_->setObjectName(QStringLiteral("polesSummary"));
+    summary_->setTextFormat(Qt::RichText);
+    summary_->setWordWrap(true);
+    summary_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    summary_->setMinimumWidth(300);
+    plane_ = new QCustomPlot(this);
+    plane_->setObjectName(QStringLiteral("zPlane"));
+    plane_->setMinimumSize(240, 240);
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    split->addWidget(summary_);
+    split->addWidget(plane_);
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 2);
+    auto* v = new QVBoxLayout(this);
+    v->setContentsMargins(0, 0, 0, 0);
+    v->addWidget(split);
+    summary_->setText(summaryText());
+}
+
+void PolesView::setModel(const RailModel& model) {
+    model_ = model;
+    recompute();
+}
+
+void PolesView::setLoop(LoopLaw law, const LoopGains& gains, double periodS,
+                        double derivativeFilterS) {
+    spec_.law = law;
+    spec_.gains = gains;
+    spec_.periodS = periodS;
+    spec_.derivativeFilterS = derivativeFilterS;
+    recompute();
+}
+
+void PolesView::recompute() {
+    if (!model_ || !(spec_.periodS > 0.0)) {
+        poles_ = {};
+        locus_ = {};
+    } else {
+        spec_.model = *model_;
+        poles_ = closedLoopPoles(spec_);
+        locus_ = rootLocusOverKp(spec_);
+    }
+    summary_->setText(summaryText());
+    plot();
+}
+
+QString PolesView::summaryText() const {
+    if (!model_)
+        return tr(
+            "Identify the plant to see the closed loop's poles and zeros for the gains in "
+            "the boxes.");
+    const ClosedLoopPoles& p = poles_;
+    QString h =
+        tr("<b>Closed loop at T = %1 ms</b> (%2 law, Kp %3 Ki %4 Kd %5; model K %6 mm/s "
+           "per code, tau %7 ms)")
+            .arg(num(spec_.periodS * 1e3, 3),
+                 spec_.law == LoopLaw::Classic ? tr("1996") : tr("engineered"),
+                 QString::number(spec_.gains.kp, 'g', 6), QString::number(spec_.gains.ki, 'g', 6),
+                 QString::number(spec_.gains.kd, 'g', 6), num(spec_.model.speedGainMmSPerCode, 3),
+                 num(spec_.model.timeConstantS * 1e3, 2));
+    h += QStringLiteral("<br>") + tr("poles (x):");
+    for (ZPoint z : p.poles)
+        h += QStringLiteral("<br>&nbsp;&nbsp;") +
+             tr("%1 (|z| %2)").arg(zText(z), num(std::abs(z), 6));
+    h += QStringLiteral("<br>") + tr("zeros (o):");
+    for (ZPoint z : p.zeros)
+        h += QStringLiteral("<br>&nbsp;&nbsp;") + zText(z);
+    h += QStringLiteral("<br>") +
+         (p.stable ? tr("largest |z| %1: stable, inside the unit circle.")
+                   : tr("<font color=\"#c00000\"><b>largest |z| %1: unstable, on or outside "
+                        "the unit circle.</b></font>"))
+             .arg(num(p.largestMagnitude, 6));
+    h += QStringLiteral("<br>") +
+         (p.dominant.complexPair ? tr("<b>Dominant pair</b> %1: damping %2, natural frequency "
+                                      "%3 rad/s (z = exp(sT), s = ln z / T)")
+                                 : tr("<b>Dominant pole</b> %1: damping %2, natural frequency "
+                                      "%3 rad/s (z = exp(sT), s = ln z / T)"))
+             .arg(zText(p.dominant.z), num(p.dominant.damping, 3),
+                  num(p.dominant.naturalFrequencyRadS, 2));
+    if (locus_.hasUpperLimit)
+        h += QStringLiteral("<br>") + tr("The loop leaves the unit circle above Kp %1.")
+                                          .arg(QString::number(locus_.upperKp, 'g', 5));
+    if (locus_.hasLowerLimit)
+        h += QStringLiteral("<br>") +
+             tr("... and below Kp %1.").arg(QString::number(locus_.lowerKp, 'g', 5));
+    if (!locus_.points.empty())
+        h += QStringLiteral("<br>") + tr("Root locus (grey): Kp from %1 to %2; the poles for the "
+                                         "Kp in the box are the crosses.")
+                                          .arg(QString::number(locus_.points.front().kp, 'g', 3),
+                                               QString::number(locus_.points.back().kp, 'g', 3));
+    return h;
+}
+
+void PolesView::plot() {
+    plane_->clearPlottables();
+    // The unit circle.
+    std::vector<ZPoint> circle;
+    for (int i = 0; i <= 360; ++i) {
+        const double a = 2.0 * std::numbers::pi * i / 360.0;
+        circle.emplace_back(std::cos(a), std::sin(a));
+    }
+    QCPCurve* c = scatter(plane_, circle, QCPScatterStyle(QCPScatterStyle::ssNone));
+    c->setLineStyle(QCPCurve::lsLine);
+    c->setPen(QPen(QColor(120, 120, 120), 1.0, Qt::DashLine));
+    c->setName(tr("unit circle"));
+    std::vector<ZPoint> locus;
+    for (const RootLocusPoint& pt : locus_.points)
+        locus.insert(locus.end(), pt.poles.begin(), pt.poles.end());
+    QCPCurve* l = scatter(plane_, locus, QCPScatterStyle(QCPScatterStyle::ssDisc, 2.5));
+    l->setPen(QPen(QColor(150, 150, 150)));
+    l->setName(tr("root locus (Kp)"));
+    QCPCurve* z = scatter(plane_, poles_.zeros, QCPScatterStyle(QCPScatterStyle::ssCircle, 10));
+    z->setPen(QPen(QColor(31, 119, 180), 2.0));
+    z->setName(tr("zeros"));
+    QCPCurve* p = scatter(plane_, poles_.poles, QCPScatterStyle(QCPScatterStyle::ssCross, 12));
+    p->setPen(QPen(QColor(214, 39, 40), 2.0));
+    p->setName(tr("poles"));
+    // The circle and every pole and zero of the boxes' gains in view, square.
+    double r = 1.2;
+    for (ZPoint q : poles_.poles)
+        r = std::max(r, 1.1 * std::abs(q));
+    for (ZPoint q : poles_.zeros)
+        r = std::max(r, 1.1 * std::abs(q));
+    r = std::min(r, 10.0);
+    plane_->xAxis->setRange(-r, r);
+    plane_->yAxis->setRange(-r, r);
+    plane_->xAxis->setLabel(tr("Re z"));
+    plane_->yAxis->setLabel(tr("Im z"));
+    if (plane_->width() > 0 && plane_->height() > 0)
+        plane_->yAxis->setScaleRatio(plane_->xAxis, 1.0);
+    plane_->legend->setVisible(true);
+    plane_->replot();
+}
+
+void PolesView::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::LanguageChange) {
+        summary_->setText(summaryText());
+        plot();
+    }
+    QWidget::changeEvent(e);
+}
+
+}  // namespace ui
+}  // namespace trilho
