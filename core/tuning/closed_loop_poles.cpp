@@ -184,10 +184,10 @@ ClosedLoopPoles closedLoopPoles(const DiscreteLoopSpec& s) {
     r.zeros = polynomialRoots(multiply(b, multiply(ce.num, cy.den)));
     r.largestMagnitude = largest(r.poles);
     r.stable = !r.poles.empty() && r.largestMagnitude < 1.0;
-    // Dominant: the slowest complex pair, else the slowest real pole (not one at the origin),
-    // leaving out dipoles: a pole that a zero lies within a tenth of its distance to the unit
-    // circle of contributes a residue that small (the slow integral trim, 0.99957 beside the
-    // zero 0.99958 on the tuned rail: not what the step shows).
+    // Dominant: the slowest pole (largest |z|; a pair's member with its partner), not one at
+    // the origin, leaving out dipoles: a pole that a zero lies within a tenth of its distance
+    // to the unit circle of contributes a residue that small (the slow integral trim, 0.99957
+    // beside the zero 0.99958 on the tuned rail: not what the step shows).
     auto dipole = [&r](ZPoint p) {
         const double reach = 0.1 * std::abs(1.0 - std::abs(p));
         return std::any_of(r.zeros.begin(), r.zeros.end(),
@@ -195,11 +195,7 @@ ClosedLoopPoles closedLoopPoles(const DiscreteLoopSpec& s) {
     };
     const ZPoint* pick = nullptr;
     for (const ZPoint& z : r.poles)
-        if (!isReal(z) && !dipole(z) && (!pick || std::abs(z) > std::abs(*pick))) pick = &z;
-    if (!pick)
-        for (const ZPoint& z : r.poles)
-            if (std::abs(z) > 0.0 && !dipole(z) && (!pick || std::abs(z) > std::abs(*pick)))
-                pick = &z;
+        if (std::abs(z) > 0.0 && !dipole(z) && (!pick || std::abs(z) > std::abs(*pick))) pick = &z;
     if (!pick)  // every pole a dipole's: the slowest
         for (const ZPoint& z : r.poles)
             if (std::abs(z) > 0.0 && (!pick || std::abs(z) > std::abs(*pick))) pick = &z;

@@ -52,9 +52,9 @@ struct ClosedLoopPoles {
     std::vector<double> characteristic;  ///< coefficients, highest power first, monic
     double largestMagnitude = 0.0;       ///< max |z|: the loop is stable below 1
     bool stable = false;
-    /// The slowest complex pair (largest |z|), or the slowest real pole when there is no pair;
-    /// poles at the origin (deadbeat) and dipoles (a zero within a tenth of the pole's distance
-    /// to the unit circle) are never dominant unless all are.
+    /// The slowest pole (largest |z|; of a pair, the member above the real axis); poles at the
+    /// origin (deadbeat) and dipoles (a zero within a tenth of the pole's distance to the unit
+    /// circle) are never dominant unless all are.
     PoleFigures dominant;
 };
 

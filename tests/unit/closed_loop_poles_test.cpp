@@ -134,6 +134,22 @@ TEST(ClosedLoopPoles, ASlowIntegralDipoleIsNotTheDominantPole) {
     EXPECT_NEAR(p.dominant.naturalFrequencyRadS, -std::log(p.poles[1].real()) / 0.001, 1e-9);
 }
 
+TEST(ClosedLoopPoles, TheDominantIsTheSlowestPoleNotThePair) {
+    // The autotuned rail (Kp 2.544295, Ki 0.127119, Kd 0.03821 on K 14.843, tau 15.03 ms): a
+    // pair at |z| 0.88 and a slower real pole at 0.968: the real one dominates (zeta 1).
+    const ClosedLoopPoles p = closedLoopPoles(
+        spec(14.843, 0.01503, LoopLaw::Engineered, {2.544295, 0.127119, 0.03821}, 0.001));
+    ASSERT_EQ(p.poles.size(), 4u);
+    int pairs = 0;
+    for (ZPoint z : p.poles)
+        pairs += z.imag() != 0.0;
+    EXPECT_EQ(pairs, 2);
+    EXPECT_FALSE(p.dominant.complexPair);
+    EXPECT_GT(p.dominant.z.real(), 0.96);
+    EXPECT_LT(p.dominant.z.real(), 0.99);
+    EXPECT_DOUBLE_EQ(p.dominant.damping, 1.0);
+}
+
 /// The linear loop as the servo runs it: PositionLoop (engineered) on the plant's exact
 /// discretisation, the measured velocity filtered as RailServo does; returns the largest
 /// |error| over ticks [from, to).

@@ -550,6 +550,14 @@ class WorkbenchTest : public QObject {
         QCOMPARE(marked->scatterStyle().shape(), QCPScatterStyle::ssCross);
         QCOMPARE(poles->locus().kpCurrent, 24.0);
         QVERIFY(poles->locus().hasUpperLimit);
+        // TRILHO_WORKBENCH_SHOTS=DIR: the page saved, to look at (not an assertion).
+        if (const QString dir = qEnvironmentVariable("TRILHO_WORKBENCH_SHOTS"); !dir.isEmpty()) {
+            w.resize(1366, 738);
+            w.show();
+            w.tabs()->setCurrentWidget(poles);
+            QTest::qWait(50);
+            w.grab().save(QStringLiteral("%1/workbench_poles.png").arg(dir));
+        }
         // Past the limit the page says unstable, as `tune poles` does.
         kp->setValue(160.0);
         compareWithCli({QStringLiteral("--kp"), QStringLiteral("160")});

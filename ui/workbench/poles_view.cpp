@@ -47,15 +47,22 @@ PolesView::PolesView(QWidget* parent) : QWidget(parent) {
     summary_->setWordWrap(true);
     summary_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    summary_->setMinimumWidth(300);
+    summary_->setMinimumWidth(260);
     plane_ = new QCustomPlot(this);
     plane_->setObjectName(QStringLiteral("zPlane"));
     plane_->setMinimumSize(240, 240);
+    // The z-plane square whatever the page's shape: the unit circle a circle. Set once the
+    // layout has the axis rect's size, before it is drawn.
+    connect(plane_, &QCustomPlot::afterLayout, this, [this] {
+        const QRect r = plane_->axisRect()->rect();
+        if (r.width() > 0 && r.height() > 0) plane_->yAxis->setScaleRatio(plane_->xAxis, 1.0);
+    });
     auto* split = new QSplitter(Qt::Horizontal, this);
     split->addWidget(summary_);
     split->addWidget(plane_);
-    split->setStretchFactor(0, 1);
-    split->setStretchFactor(1, 2);
+    split->setStretchFactor(0, 2);
+    split->setStretchFactor(1, 3);
+    split->setSizes({400, 600});
     auto* v = new QVBoxLayout(this);
     v->setContentsMargins(0, 0, 0, 0);
     v->addWidget(split);
@@ -171,8 +178,6 @@ void PolesView::plot() {
     plane_->yAxis->setRange(-r, r);
     plane_->xAxis->setLabel(tr("Re z"));
     plane_->yAxis->setLabel(tr("Im z"));
-    if (plane_->width() > 0 && plane_->height() > 0)
-        plane_->yAxis->setScaleRatio(plane_->xAxis, 1.0);
     plane_->legend->setVisible(true);
     plane_->replot();
 }
