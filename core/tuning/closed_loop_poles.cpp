@@ -122,7 +122,9 @@ PoleFigures poleFigures(ZPoint z, double periodS) {
         f.naturalFrequencyRadS = std::numeric_limits<double>::infinity();
         return f;
     }
-    const double sigma = std::log(r) / periodS;  // Re(s), 1/s
+    // Re(s), 1/s. On the circle to the solver's rounding (an integrator's z = 1 comes back as
+    // 1 + 2e-15): on it, not a growth of 1e-12 1/s.
+    const double sigma = std::abs(std::log(r)) < 1e-12 ? 0.0 : std::log(r) / periodS;
     const double omega =
         (f.complexPair ? std::arg(z) : (z.real() < 0.0 ? std::numbers::pi : 0.0)) / periodS;
     const double wn = std::hypot(sigma, omega);

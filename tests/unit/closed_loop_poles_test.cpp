@@ -56,6 +56,15 @@ TEST(ClosedLoopPoles, PureIntegratorWithPIsOnePoleAtOneMinusKTKp) {
     EXPECT_FALSE(u.stable);
     EXPECT_NEAR(u.largestMagnitude, 1.2, 1e-12);
     EXPECT_LT(u.dominant.damping, 0.0);
+    // No gain at all: the plant's own integrator, z = 1: on the circle, undamped, no frequency.
+    const ClosedLoopPoles none =
+        closedLoopPoles(spec(10.0, 0.015, LoopLaw::Engineered, {0.0, 0.0, 0.0}, 0.001));
+    ASSERT_EQ(none.poles.size(), 2u);
+    EXPECT_NEAR(none.poles[0].real(), 1.0, 1e-12);
+    EXPECT_NEAR(none.poles[1].real(), std::exp(-0.001 / 0.015), 1e-12);
+    EXPECT_FALSE(none.stable);
+    EXPECT_EQ(none.dominant.damping, 0.0);
+    EXPECT_EQ(none.dominant.naturalFrequencyRadS, 0.0);
 }
 
 TEST(ClosedLoopPoles, IntegratorWithLagAndPWorkedByHand) {
