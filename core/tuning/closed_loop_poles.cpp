@@ -55,7 +55,16 @@ Law lawOf(const DiscreteLoopSpec& s) {
     const double t = s.periodS;
     Law law;
     std::vector<Rational> e, y;
-    if (s.law == LoopLaw::Engineered) {
+    if (s.dcTableAxis) {
+        if (s.law == LoopLaw::Engineered) {
+            if (g.kp != 0.0) e.push_back({{g.kp}, {1.0}});
+            if (g.ki != 0.0) e.push_back({{g.ki * t, 0.0}, {1.0, -1.0}});  // as the rail's
+        } else {
+            // 100 (2 pi / mmPerTurn) (b0 + b1 z^-1) = c (b0 z + b1) / z.
+            const double c = 100.0 * 2.0 * std::numbers::pi / s.mmPerTurn;
+            if (s.b0 != 0.0 || s.b1 != 0.0) e.push_back({{c * s.b0, c * s.b1}, {1.0, 0.0}});
+        }
+    } else if (s.law == LoopLaw::Engineered) {
         if (g.kp != 0.0) e.push_back({{g.kp}, {1.0}});
         // I[k] = I[k-1] + ki T e[k]: ki T z / (z - 1).
         if (g.ki != 0.0) e.push_back({{g.ki * t, 0.0}, {1.0, -1.0}});
@@ -209,7 +218,20 @@ ClosedLoopPoles closedLoopPoles(const DiscreteLoopSpec& s) {
     return r;
 }
 
-RootLocus rootLocusOverKp(const DiscreteLoopSpec& spec, double kpMin, double kpMax, int points) {
+RootLocus rootLocusOverKp(const DiscreteLoopSpec& original, double kpMin, double kpMax,
+                          int points) {
+    // The DC table's seed law: "Kp" is 100 b0, b1 following at its ratio (see the header).
+    const bool seedLaw = original.dcTableAxis && original.law == LoopLaw::Classic;
+    const double ratio = original.b0 != 0.0 ? original.b1 / original.b0 : 0.0;
+    DiscreteLoopSpec spec = original;
+    if (seedLaw) spec.gains.kp = 100.0 * original.b0;
+    auto withKp = [seedLaw, ratio](DiscreteLoopSpec& s, double kp) {
+        s.gains.kp = kp;
+        if (seedLaw) {
+            s.b0 = kp / 100.0;
+            s.b1 = ratio * s.b0;
+        }
+    };
     RootLocus l;
     l.kpCurrent = spec.gains.kp;
     l.currentPoles = closedLoopPoles(spec).poles;
@@ -218,14 +240,14 @@ RootLocus rootLocusOverKp(const DiscreteLoopSpec& spec, double kpMin, double kpM
     if (!(kpMax > kpMin)) kpMax = base * 1000.0;
     points = std::max(points, 2);
     DiscreteLoopSpec s = spec;
-    auto stableAt = [&s](double kp) {
-        s.gains.kp = kp;
+    auto stableAt = [&s, &withKp](double kp) {
+        withKp(s, kp);
         return closedLoopPoles(s).stable;
     };
     std::vector<bool> stable;
     for (int i = 0; i < points; ++i) {
         const double kp = kpMin * std::pow(kpMax / kpMin, static_cast<double>(i) / (points - 1));
-        s.gains.kp = kp;
+        withKp(s, kp);
         const ClosedLoopPoles p = closedLoopPoles(s);
         l.points.push_back({kp, p.poles});
         stable.push_back(p.stable);

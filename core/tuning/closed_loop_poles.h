@@ -27,11 +27,20 @@ using ZPoint = std::complex<double>;
 
 /// The loop to analyse: the plant's model, the law and its gains, the period.
 struct DiscreteLoopSpec {
+    /// K and tau; on the DC table K is mm/s per PWM percent (dc_axis_model.h: the same
+    /// integrator behind a lag, friction left out like the rail's).
     RailModel model;
     LoopLaw law = LoopLaw::Engineered;
     LoopGains gains;
     double periodS = 0.001;
     double derivativeFilterS = 0.004;  ///< the engineered law's velocity filter, s
+    /// A DC table axis (core/control/dc_axis_loop.cpp) instead of the rail: Engineered is its
+    /// PI, u = kp e + ki T sum_{j<=k} e[j] (%, e in mm; kd unused); Classic is seed 004's
+    /// equation on the signed error, u = 100 (b0 e[k] + b1 e[k-1]), e in radians of the motor
+    /// (mm x 2 pi / mmPerTurn). The feed-forward and friction terms move no pole.
+    bool dcTableAxis = false;
+    double b0 = 0.0, b1 = 0.0;  ///< the seed's law, per rad
+    double mmPerTurn = 2.0;     ///< the axis' screw, mm per motor turn
 };
 
 /// The damping and natural frequency of a z-plane pole, through z = exp(s T):
@@ -81,7 +90,9 @@ struct RootLocus {
     double lowerKp = 0.0;
 };
 
-/// kpMin..kpMax: defaults (0) the spec's Kp / 100 to x 1000 (Kp 0 or less: 1e-3 to 1e3).
+/// kpMin..kpMax: defaults (0) the spec's Kp / 100 to x 1000 (Kp 0 or less: 1e-3 to 1e3). The
+/// DC table's seed law has no Kp: the sweep scales b0 and b1 together (b1 / b0 held: the zero
+/// stays), Kp standing for 100 b0 (%/rad) and kpCurrent for the spec's.
 RootLocus rootLocusOverKp(const DiscreteLoopSpec& spec, double kpMin = 0.0, double kpMax = 0.0,
                           int points = 200);
 

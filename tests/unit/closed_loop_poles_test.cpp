@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/control/position_loop.h"
 
@@ -157,6 +158,37 @@ TEST(ClosedLoopPoles, TheDominantIsTheSlowestPoleNotThePair) {
     EXPECT_GT(p.dominant.z.real(), 0.96);
     EXPECT_LT(p.dominant.z.real(), 0.99);
     EXPECT_DOUBLE_EQ(p.dominant.damping, 1.0);
+}
+
+TEST(ClosedLoopPoles, TheDcTableSeedLawWorkedByHand) {
+    // tau 0, K 1 mm/s per %, T 5 ms, mmPerTurn 2 pi (so e in rad = e in mm): seed 004's
+    // b0 0.198, b1 -0.179982: z (z - 1) + K T 100 (b0 z + b1) = z^2 - 0.901 z - 0.089991,
+    // z = (0.901 +- sqrt(1.171765)) / 2 = 0.9917405, -0.0907405.
+    DiscreteLoopSpec s = spec(1.0, 0.0, LoopLaw::Classic, {}, 0.005);
+    s.dcTableAxis = true;
+    s.b0 = 0.198;
+    s.b1 = -0.179982;
+    s.mmPerTurn = 2.0 * std::numbers::pi;
+    const ClosedLoopPoles p = closedLoopPoles(s);
+    ASSERT_EQ(p.poles.size(), 2u);
+    EXPECT_NEAR(p.poles[0].real(), 0.9917405, 1e-7);
+    EXPECT_NEAR(p.poles[1].real(), -0.0907405, 1e-7);
+    ASSERT_EQ(p.zeros.size(), 1u);  // the law's: -b1 / b0
+    EXPECT_NEAR(p.zeros[0].real(), 0.179982 / 0.198, 1e-12);
+    // The locus scales b0 and b1 together, "Kp" = 100 b0 = 19.8; Jury's 1 - a1 + a0 = 0 at
+    // 2 - 0.188991 g = 0: Kp 19.8 x 10.5825 = 209.534.
+    const RootLocus l = rootLocusOverKp(s);
+    EXPECT_DOUBLE_EQ(l.kpCurrent, 19.8);
+    ASSERT_EQ(l.currentPoles.size(), 2u);
+    EXPECT_NEAR(l.currentPoles[0].real(), 0.9917405, 1e-7);
+    ASSERT_TRUE(l.hasUpperLimit);
+    EXPECT_NEAR(l.upperKp, 2.0 / 0.188991 * 19.8, 1e-6);
+    // Its PI: P alone on the same plant is the rail's 1 - K T kp.
+    DiscreteLoopSpec pi = spec(1.0, 0.0, LoopLaw::Engineered, {40.0, 0.0, 99.0}, 0.005);
+    pi.dcTableAxis = true;  // kd is not the table's: ignored
+    const ClosedLoopPoles q = closedLoopPoles(pi);
+    ASSERT_EQ(q.poles.size(), 1u);
+    EXPECT_NEAR(q.poles[0].real(), 0.8, 1e-12);
 }
 
 /// The linear loop as the servo runs it: PositionLoop (engineered) on the plant's exact
