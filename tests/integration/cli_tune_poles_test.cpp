@@ -130,7 +130,69 @@ TEST(CliTunePoles, BadInputIsAUsageErrorThatSaysWhich) {
     const CliResult table = runCli({QStringLiteral("tune"), QStringLiteral("poles"),
                                     QStringLiteral("--machine"), QStringLiteral("xy_dc_table")});
     EXPECT_EQ(table.exit, 2);
-    EXPECT_TRUE(table.err.contains(QStringLiteral("not the rail"))) << table.err.toStdString();
+    EXPECT_TRUE(table.err.contains(QStringLiteral("--axis"))) << table.err.toStdString();
+    const CliResult plotter = runCli({QStringLiteral("tune"), QStringLiteral("poles"),
+                                      QStringLiteral("--machine"), QStringLiteral("xy_plotter")});
+    EXPECT_EQ(plotter.exit, 2);
+    EXPECT_TRUE(plotter.err.contains(QStringLiteral("tune margin"))) << plotter.err.toStdString();
+    for (const char* wrong : {"--kd", "--b0"}) {
+        const CliResult r =
+            runCli({QStringLiteral("tune"), QStringLiteral("poles"), QStringLiteral("--machine"),
+                    QStringLiteral("xy_dc_table"), QStringLiteral("--axis"), QStringLiteral("x"),
+                    QString::fromLatin1(wrong), QStringLiteral("1")});
+        EXPECT_EQ(r.exit, 2) << wrong;
+        EXPECT_TRUE(r.err.contains(QString::fromLatin1(wrong))) << r.err.toStdString();
+    }
+}
+
+// A DC table axis: its PI at 5 ms on the model `tune identify --axis x` finds; gains past the
+// locus's limit trip the over-current comparator in `tune step`, gains inside it settle.
+TEST(CliTunePoles, TheDcTableAxisAgreesWithItsStepTest) {
+    auto table = [](QStringList more) {
+        return QStringList{QStringLiteral("--machine"), QStringLiteral("xy_dc_table"),
+                           QStringLiteral("--axis"), QStringLiteral("x")} +
+               more;
+    };
+    auto run = [](const char* sub, QStringList args) {
+        return runCli(QStringList{QStringLiteral("tune"), QString::fromLatin1(sub)} + args +
+                      QStringList{QStringLiteral("--json")});
+    };
+    const CliResult id = run("identify", table({}));
+    const CliResult p0 = run("poles", table({}));
+    ASSERT_EQ(p0.exit, 0) << p0.err.toStdString();
+    const QJsonObject o = jsonOf(p0);
+    EXPECT_DOUBLE_EQ(o[QStringLiteral("speed_gain_mm_s_per_pct")].toDouble(),
+                     jsonOf(id)[QStringLiteral("speed_gain_mm_s_per_pct")].toDouble());
+    EXPECT_DOUBLE_EQ(o[QStringLiteral("sample_period_s")].toDouble(), 0.005);
+    EXPECT_EQ(o[QStringLiteral("closed_loop_poles_z")].toArray().size(), 3);  // PI: no filter
+    EXPECT_FALSE(o.contains(QStringLiteral("kd")));
+    const double limit = o[QStringLiteral("kp_stability_limit")].toDouble();
+    EXPECT_GT(limit, 80.0);
+    EXPECT_LT(limit, 200.0);
+    for (const char* kp : {"14", "80"}) {
+        const CliResult p = run("poles", table({QStringLiteral("--kp"), QString::fromLatin1(kp)}));
+        EXPECT_TRUE(jsonOf(p)[QStringLiteral("stable")].toBool()) << kp;
+        const CliResult s = run("step", table({QStringLiteral("--amplitude"), QStringLiteral("10"),
+                                               QStringLiteral("--kp"), QString::fromLatin1(kp)}));
+        EXPECT_EQ(s.exit, 0) << kp << s.out.toStdString();
+        EXPECT_TRUE(jsonOf(s)[QStringLiteral("ok")].toBool()) << kp;
+    }
+    const CliResult p = run("poles", table({QStringLiteral("--kp"), QStringLiteral("200")}));
+    EXPECT_FALSE(jsonOf(p)[QStringLiteral("stable")].toBool());
+    EXPECT_GT(jsonOf(p)[QStringLiteral("largest_pole_magnitude")].toDouble(), 1.05);
+    const CliResult s = run("step", table({QStringLiteral("--amplitude"), QStringLiteral("10"),
+                                           QStringLiteral("--kp"), QStringLiteral("200")}));
+    EXPECT_EQ(s.exit, 3);
+    EXPECT_TRUE(
+        jsonOf(s)[QStringLiteral("abort_reason")].toString().contains(QStringLiteral("alarm 17")))
+        << s.out.toStdString();
+    // Seed 004's law on the signed error: b0 and b1 in the JSON, its three poles.
+    const CliResult seed =
+        run("poles", table({QStringLiteral("--law"), QStringLiteral("classic")}));
+    const QJsonObject so = jsonOf(seed);
+    EXPECT_TRUE(so.contains(QStringLiteral("b0")));
+    EXPECT_FALSE(so.contains(QStringLiteral("kp")));
+    EXPECT_EQ(so[QStringLiteral("closed_loop_poles_z")].toArray().size(), 3);
 }
 
 TEST(CliTunePoles, AgreesWithTheStepTest) {

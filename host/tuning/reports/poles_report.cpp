@@ -26,6 +26,10 @@ QString lawName(LoopLaw law) {
     return law == LoopLaw::Classic ? QStringLiteral("classic") : QStringLiteral("engineered");
 }
 
+bool seedLaw(const DiscreteLoopSpec& l) {
+    return l.dcTableAxis && l.law == LoopLaw::Classic;
+}
+
 }  // namespace
 
 QJsonObject polesReportJson(const PolesReport& r) {
@@ -33,13 +37,20 @@ QJsonObject polesReportJson(const PolesReport& r) {
     const ClosedLoopPoles& p = r.poles;
     o[QStringLiteral("ok")] = true;
     o[QStringLiteral("law")] = lawName(r.loop.law);
-    o[QStringLiteral("kp")] = r.loop.gains.kp;
-    o[QStringLiteral("ki")] = r.loop.gains.ki;
-    o[QStringLiteral("kd")] = r.loop.gains.kd;
+    if (seedLaw(r.loop)) {  // seed 004's law on the signed error: its b0, b1 per rad
+        o[QStringLiteral("b0")] = r.loop.b0;
+        o[QStringLiteral("b1")] = r.loop.b1;
+    } else {
+        o[QStringLiteral("kp")] = r.loop.gains.kp;
+        o[QStringLiteral("ki")] = r.loop.gains.ki;
+        if (!r.loop.dcTableAxis) o[QStringLiteral("kd")] = r.loop.gains.kd;
+    }
     o[QStringLiteral("sample_period_s")] = p.periodS;
-    if (r.loop.law == LoopLaw::Engineered)
+    if (r.loop.law == LoopLaw::Engineered && !r.loop.dcTableAxis)
         o[QStringLiteral("derivative_filter_s")] = r.loop.derivativeFilterS;
-    o[QStringLiteral("speed_gain_mm_s_per_code")] = r.loop.model.speedGainMmSPerCode;
+    o[r.loop.dcTableAxis ? QStringLiteral("speed_gain_mm_s_per_pct")
+                         : QStringLiteral("speed_gain_mm_s_per_code")] =
+        r.loop.model.speedGainMmSPerCode;
     o[QStringLiteral("time_constant_s")] = r.loop.model.timeConstantS;
     o[QStringLiteral("closed_loop_poles_z")] = points(p.poles);
     o[QStringLiteral("closed_loop_zeros_z")] = points(p.zeros);
@@ -59,6 +70,8 @@ QJsonObject polesReportJson(const PolesReport& r) {
         r.locus.hasUpperLimit ? QJsonValue(r.locus.upperKp) : QJsonValue();
     o[QStringLiteral("kp_lower_stability_limit")] =
         r.locus.hasLowerLimit ? QJsonValue(r.locus.lowerKp) : QJsonValue();
+    if (seedLaw(r.loop))  // the locus's "Kp" there: 100 b0, b1 at its ratio
+        o[QStringLiteral("locus_gain")] = QStringLiteral("100 b0 (b1 / b0 held)");
     if (!r.locus.points.empty()) {
         o[QStringLiteral("locus_kp_min")] = r.locus.points.front().kp;
         o[QStringLiteral("locus_kp_max")] = r.locus.points.back().kp;
@@ -75,14 +88,26 @@ QJsonObject polesReportJson(const PolesReport& r) {
 
 QString polesReportText(const PolesReport& r) {
     const ClosedLoopPoles& p = r.poles;
-    QString t = QStringLiteral("model: K %1 mm/s per code, tau %2 s\n")
+    QString t = QStringLiteral("model: K %1 mm/s per %2, tau %3 s\n")
                     .arg(r.loop.model.speedGainMmSPerCode, 0, 'f', 3)
+                    .arg(r.loop.dcTableAxis ? QStringLiteral("PWM %") : QStringLiteral("code"))
                     .arg(r.loop.model.timeConstantS, 0, 'f', 4);
-    t += QStringLiteral("law: %1, Kp %2 Ki %3 Kd %4, period %5 s\n")
-             .arg(lawName(r.loop.law))
-             .arg(r.loop.gains.kp, 0, 'g', 6)
-             .arg(r.loop.gains.ki, 0, 'g', 6)
-             .arg(r.loop.gains.kd, 0, 'g', 6)
+    QString gains;
+    if (seedLaw(r.loop))
+        gains = QStringLiteral("b0 %1 b1 %2 (seed 004's, on the signed error)")
+                    .arg(r.loop.b0, 0, 'g', 6)
+                    .arg(r.loop.b1, 0, 'g', 6);
+    else if (r.loop.dcTableAxis)
+        gains = QStringLiteral("Kp %1 Ki %2")
+                    .arg(r.loop.gains.kp, 0, 'g', 6)
+                    .arg(r.loop.gains.ki, 0, 'g', 6);
+    else
+        gains = QStringLiteral("Kp %1 Ki %2 Kd %3")
+                    .arg(r.loop.gains.kp, 0, 'g', 6)
+                    .arg(r.loop.gains.ki, 0, 'g', 6)
+                    .arg(r.loop.gains.kd, 0, 'g', 6);
+    t += QStringLiteral("law: %1, %2, period %3 s\n")
+             .arg(lawName(r.loop.law), gains)
              .arg(p.periodS, 0, 'g', 6);
     t += QStringLiteral("closed-loop poles (z):\n");
     for (ZPoint z : p.poles)
@@ -99,11 +124,13 @@ QString polesReportText(const PolesReport& r) {
              .arg(zText(p.dominant.z))
              .arg(fixedOrNotReached(p.dominant.damping, 4))
              .arg(fixedOrNotReached(p.dominant.naturalFrequencyRadS, 2));
+    const QString gain = seedLaw(r.loop) ? QStringLiteral("100 b0") : QStringLiteral("Kp");
     if (r.locus.hasUpperLimit)
-        t += QStringLiteral("the loop leaves the unit circle above Kp %1\n")
+        t += QStringLiteral("the loop leaves the unit circle above %1 %2\n")
+                 .arg(gain)
                  .arg(r.locus.upperKp, 0, 'g', 5);
     if (r.locus.hasLowerLimit)
-        t += QStringLiteral("... and below Kp %1\n").arg(r.locus.lowerKp, 0, 'g', 5);
+        t += QStringLiteral("... and below %1 %2\n").arg(gain).arg(r.locus.lowerKp, 0, 'g', 5);
     return t;
 }
 
