@@ -2335,16 +2335,28 @@
         <translation>Identifique a planta para ver os polos e zeros da malha fechada com os ganhos das caixas.</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Closed loop at T = %1 ms&lt;/b&gt; (%2 law, Kp %3 Ki %4 Kd %5; model K %6 mm/s per code, tau %7 ms)</source>
-        <translation>&lt;b&gt;Malha fechada a T = %1 ms&lt;/b&gt; (lei %2, Kp %3 Ki %4 Kd %5; modelo K %6 mm/s por código, tau %7 ms)</translation>
+        <source>engineered</source>
+        <translation>moderna</translation>
+    </message>
+    <message>
+        <source>seed 004 (signed error)</source>
+        <translation>seed 004 (erro com sinal)</translation>
     </message>
     <message>
         <source>1996</source>
         <translation>1996</translation>
     </message>
     <message>
-        <source>engineered</source>
-        <translation>moderna</translation>
+        <source>&lt;b&gt;Closed loop at T = %1 ms&lt;/b&gt; (%2 law, %3; model K %4 %5, tau %6 ms)</source>
+        <translation>&lt;b&gt;Malha fechada a T = %1 ms&lt;/b&gt; (lei %2, %3; modelo K %4 %5, tau %6 ms)</translation>
+    </message>
+    <message>
+        <source>mm/s per PWM %</source>
+        <translation>mm/s por % de PWM</translation>
+    </message>
+    <message>
+        <source>mm/s per code</source>
+        <translation>mm/s por código</translation>
     </message>
     <message>
         <source>poles (x):</source>
@@ -2375,16 +2387,16 @@
         <translation>&lt;b&gt;Polo dominante&lt;/b&gt; %1: amortecimento %2, frequência natural %3 rad/s (z = exp(sT), s = ln z / T)</translation>
     </message>
     <message>
-        <source>The loop leaves the unit circle above Kp %1.</source>
-        <translation>A malha sai do círculo unitário acima de Kp %1.</translation>
+        <source>The loop leaves the unit circle above %1 %2.</source>
+        <translation>A malha sai do círculo unitário acima de %1 %2.</translation>
     </message>
     <message>
-        <source>... and below Kp %1.</source>
-        <translation>... e abaixo de Kp %1.</translation>
+        <source>... and below %1 %2.</source>
+        <translation>... e abaixo de %1 %2.</translation>
     </message>
     <message>
-        <source>Root locus (grey): Kp from %1 to %2; the poles for the Kp in the box are the crosses.</source>
-        <translation>Lugar das raízes (cinza): Kp de %1 a %2; os polos do Kp da caixa são as cruzes.</translation>
+        <source>Root locus (grey): %1 from %2 to %3; the poles for the gains in the boxes are the crosses.</source>
+        <translation>Lugar das raízes (cinza): %1 de %2 a %3; os polos dos ganhos das caixas são as cruzes.</translation>
     </message>
     <message>
         <source>unit circle</source>

@@ -731,7 +731,38 @@ class WorkbenchTest : public QObject {
         QCOMPARE(w.runs().size(), std::size_t(1));
         QCOMPARE(w.runs()[0]->record.conditions.axis, 'y');
         QVERIFY2(w.runs()[0]->metrics.ok, w.runs()[0]->metrics.problem.c_str());
-        QCOMPARE(w.tabs()->count(), 3);
+        QCOMPARE(w.tabs()->count(), 4);  // responses, terms, model, poles
+    }
+
+    // The DC table's Poles page: per axis, the poles `tune poles --machine xy_dc_table --axis y`
+    // prints once the axis is identified; another axis forgets them until it is identified.
+    void theDcTablePolesPageShowsTheCliPolesPerAxis() {
+        WorkbenchWindow w(MachineProfile::xyDcTable());
+        auto* axis = w.findChild<QComboBox*>(QStringLiteral("axis"));
+        axis->setCurrentIndex(1);
+        PolesView* poles = w.polesView();
+        QCOMPARE(w.tabs()->indexOf(poles), 3);
+        w.findChild<QPushButton*>(QStringLiteral("identify"))->click();
+        QVERIFY(waitRun(w));
+        QVERIFY(poles->hasModel());
+        const QJsonObject o =
+            cli({QStringLiteral("tune"), QStringLiteral("poles"), QStringLiteral("--machine"),
+                 QStringLiteral("xy_dc_table"), QStringLiteral("--axis"), QStringLiteral("y"),
+                 QStringLiteral("--json")});
+        const QJsonArray z = o[QStringLiteral("closed_loop_poles_z")].toArray();
+        const std::vector<ZPoint>& shown = poles->poles().poles;
+        QCOMPARE(static_cast<qsizetype>(shown.size()), z.size());
+        QCOMPARE(z.size(), 3);
+        for (qsizetype i = 0; i < z.size(); ++i) {
+            const auto k = static_cast<std::size_t>(i);
+            QVERIFY(std::abs(shown[k].real() - z[i][QStringLiteral("re")].toDouble()) < 1e-9);
+            QVERIFY(std::abs(shown[k].imag() - z[i][QStringLiteral("im")].toDouble()) < 1e-9);
+        }
+        QCOMPARE(poles->poles().periodS, 0.005);
+        QVERIFY(poles->summary()->text().contains(QStringLiteral("mm/s per PWM %")));
+        axis->setCurrentIndex(0);
+        QVERIFY(!poles->hasModel());
+        QVERIFY(poles->poles().poles.empty());
     }
 
     // The DC table's identification and autotune at the screens show the numbers `trilho-cli

@@ -74,12 +74,13 @@ void PolesView::setModel(const RailModel& model) {
     recompute();
 }
 
-void PolesView::setLoop(LoopLaw law, const LoopGains& gains, double periodS,
-                        double derivativeFilterS) {
-    spec_.law = law;
-    spec_.gains = gains;
-    spec_.periodS = periodS;
-    spec_.derivativeFilterS = derivativeFilterS;
+void PolesView::clearModel() {
+    model_.reset();
+    recompute();
+}
+
+void PolesView::setLoop(const DiscreteLoopSpec& spec) {
+    spec_ = spec;
     recompute();
 }
 
@@ -102,13 +103,19 @@ QString PolesView::summaryText() const {
             "Identify the plant to see the closed loop's poles and zeros for the gains in "
             "the boxes.");
     const ClosedLoopPoles& p = poles_;
+    const bool seedLaw = spec_.dcTableAxis && spec_.law == LoopLaw::Classic;
+    const QString law = spec_.law == LoopLaw::Engineered ? tr("engineered")
+                        : seedLaw                        ? tr("seed 004 (signed error)")
+                                                         : tr("1996");
+    auto g = [](double v) { return QString::number(v, 'g', 6); };
+    QString gains = seedLaw
+                        ? QStringLiteral("b0 %1 b1 %2").arg(g(spec_.b0), g(spec_.b1))
+                        : QStringLiteral("Kp %1 Ki %2").arg(g(spec_.gains.kp), g(spec_.gains.ki));
+    if (!spec_.dcTableAxis) gains += QStringLiteral(" Kd %1").arg(g(spec_.gains.kd));
     QString h =
-        tr("<b>Closed loop at T = %1 ms</b> (%2 law, Kp %3 Ki %4 Kd %5; model K %6 mm/s "
-           "per code, tau %7 ms)")
-            .arg(num(spec_.periodS * 1e3, 3),
-                 spec_.law == LoopLaw::Classic ? tr("1996") : tr("engineered"),
-                 QString::number(spec_.gains.kp, 'g', 6), QString::number(spec_.gains.ki, 'g', 6),
-                 QString::number(spec_.gains.kd, 'g', 6), num(spec_.model.speedGainMmSPerCode, 3),
+        tr("<b>Closed loop at T = %1 ms</b> (%2 law, %3; model K %4 %5, tau %6 ms)")
+            .arg(num(spec_.periodS * 1e3, 3), law, gains, num(spec_.model.speedGainMmSPerCode, 3),
+                 spec_.dcTableAxis ? tr("mm/s per PWM %") : tr("mm/s per code"),
                  num(spec_.model.timeConstantS * 1e3, 2));
     h += QStringLiteral("<br>") + tr("poles (x):");
     for (ZPoint z : p.poles)
@@ -129,16 +136,19 @@ QString PolesView::summaryText() const {
                                       "%3 rad/s (z = exp(sT), s = ln z / T)"))
              .arg(zText(p.dominant.z), num(p.dominant.damping, 3),
                   num(p.dominant.naturalFrequencyRadS, 2));
+    // The seed law has no Kp: its locus scales b0 and b1 together, "Kp" standing for 100 b0.
+    const QString gain = seedLaw ? QStringLiteral("100 b0") : QStringLiteral("Kp");
     if (locus_.hasUpperLimit)
-        h += QStringLiteral("<br>") + tr("The loop leaves the unit circle above Kp %1.")
-                                          .arg(QString::number(locus_.upperKp, 'g', 5));
+        h += QStringLiteral("<br>") + tr("The loop leaves the unit circle above %1 %2.")
+                                          .arg(gain, QString::number(locus_.upperKp, 'g', 5));
     if (locus_.hasLowerLimit)
         h += QStringLiteral("<br>") +
-             tr("... and below Kp %1.").arg(QString::number(locus_.lowerKp, 'g', 5));
+             tr("... and below %1 %2.").arg(gain, QString::number(locus_.lowerKp, 'g', 5));
     if (!locus_.points.empty())
-        h += QStringLiteral("<br>") + tr("Root locus (grey): Kp from %1 to %2; the poles for the "
-                                         "Kp in the box are the crosses.")
-                                          .arg(QString::number(locus_.points.front().kp, 'g', 3),
+        h += QStringLiteral("<br>") + tr("Root locus (grey): %1 from %2 to %3; the poles for the "
+                                         "gains in the boxes are the crosses.")
+                                          .arg(gain,
+                                               QString::number(locus_.points.front().kp, 'g', 3),
                                                QString::number(locus_.points.back().kp, 'g', 3));
     return h;
 }

@@ -22,8 +22,11 @@ class PolesView : public QWidget {
     explicit PolesView(QWidget* parent = nullptr);
     /// The model the poles are of (an identification's); none until one is accepted.
     void setModel(const RailModel& model);
-    /// The law, gains and period (s) of the boxes, and the engineered law's velocity filter.
-    void setLoop(LoopLaw law, const LoopGains& gains, double periodS, double derivativeFilterS);
+    /// Forgets the model (another DC table axis was chosen): no poles until the next one.
+    void clearModel();
+    /// The law, gains and period of the boxes, the engineered law's velocity filter, and on a
+    /// DC table axis its screw and seed gains (spec.model is ignored: the view's own).
+    void setLoop(const DiscreteLoopSpec& spec);
     bool hasModel() const { return model_.has_value(); }
     /// The poles shown (empty until there is a model).
     const ClosedLoopPoles& poles() const { return poles_; }

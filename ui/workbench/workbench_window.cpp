@@ -71,6 +71,15 @@ struct Prepared {
     QString gainChangeMissed;
 };
 
+/// A DC table axis's model as the poles take it: the same integrator behind a lag, K per PWM %
+/// (friction, which moves no pole, left out).
+RailModel asRailModel(const DcAxisModel& m) {
+    RailModel r;
+    r.speedGainMmSPerCode = m.speedGainMmSPerPercent;
+    r.timeConstantS = m.timeConstantS;
+    return r;
+}
+
 Prepared prepare(StepTestResult r) {
     Prepared p;
     p.run = std::make_shared<WorkbenchRun>();
@@ -289,9 +298,9 @@ void WorkbenchWindow::build() {
         else
             model_->hide();
     }
-    // The closed loop's poles: the rail's laws (the DC table's axis is not worked out yet).
+    // The closed loop's poles: the rail and each DC table axis (the plotter has no loop).
     polesView_ = new PolesView(this);
-    if (rail_)
+    if (tunable())
         tabs_->addTab(polesView_, QString());
     else
         polesView_->hide();
@@ -313,6 +322,9 @@ void WorkbenchWindow::build() {
             if (!changeBox_->isChecked()) to->setValue(v);
         });
     connect(axis_, &QComboBox::currentIndexChanged, this, &WorkbenchWindow::lawChanged);
+    // Another axis, another plant: its poles wait for its identification.
+    connect(axis_, &QComboBox::currentIndexChanged, polesView_, &PolesView::clearModel);
+    connect(axis_, &QComboBox::currentIndexChanged, this, &WorkbenchWindow::updatePoles);
     for (QDoubleSpinBox* box : {kp_, ki_, kd_, period_})
         connect(box, &QDoubleSpinBox::valueChanged, this, &WorkbenchWindow::updatePoles);
     connect(law_, &QComboBox::currentIndexChanged, this, &WorkbenchWindow::updatePoles);
@@ -414,7 +426,7 @@ void WorkbenchWindow::retranslate() {
     tabs_->setTabText(0, tr("Responses"));
     tabs_->setTabText(1, tr("P, I, D terms"));
     if (tunable()) tabs_->setTabText(2, tr("Model"));
-    if (rail_) tabs_->setTabText(3, tr("Poles"));
+    if (tunable()) tabs_->setTabText(3, tr("Poles"));
 }
 
 void WorkbenchWindow::changeEvent(QEvent* e) {
@@ -452,12 +464,27 @@ void WorkbenchWindow::lawChanged() {
 }
 
 void WorkbenchWindow::updatePoles() {
-    if (!rail_) return;
+    if (!tunable()) return;
     // As currentSpec gives the law, gains and period to a step test (and `tune poles` takes
-    // them): the Period box for either law.
-    polesView_->setLoop(static_cast<LoopLaw>(law_->currentData().toInt()),
-                        {kp_->value(), ki_->value(), kd_->value()}, period_->value() / 1e3,
-                        profile_.loop.derivativeFilterS);
+    // them): on the rail the boxes' law and period; on a DC table axis the profile's law (the
+    // boxes are its engineered Kp and Ki; the third, Kff, moves no pole) and its seed gains.
+    DiscreteLoopSpec spec;
+    spec.periodS = period_->value() / 1e3;
+    if (rail_) {
+        spec.law = static_cast<LoopLaw>(law_->currentData().toInt());
+        spec.gains = {kp_->value(), ki_->value(), kd_->value()};
+        spec.derivativeFilterS = profile_.loop.derivativeFilterS;
+    } else {
+        const DcAxisParams& a =
+            axis_->currentData().toInt() == 'y' ? profile_.dcTable.y : profile_.dcTable.x;
+        spec.dcTableAxis = true;
+        spec.law = tableStepLaw(profile_.dcTable.law);
+        spec.gains = {kp_->value(), ki_->value(), 0.0};
+        spec.b0 = a.classic.b0;
+        spec.b1 = a.classic.b1;
+        spec.mmPerTurn = a.mmPerTurn;
+    }
+    polesView_->setLoop(spec);
 }
 
 StepTestSpec WorkbenchWindow::currentSpec() const {
@@ -771,6 +798,7 @@ void WorkbenchWindow::identifyTableAxis() {
         },
         [this](Out o) {
             model_->showDcIdentification(o.id, o.frequency, o.gains);
+            if (o.id.accepted) polesView_->setModel(asRailModel(o.id.model));
             tabs_->setCurrentWidget(model_);
             statusBar()->showMessage(o.id.accepted
                                          ? tr("Identified: fit %1 % on held-out velocity.")
@@ -794,6 +822,8 @@ void WorkbenchWindow::autotuneTableAxis() {
         },
         [this](DcAutotuneResult r) {
             model_->showDcAutotune(r);
+            if (r.identification.accepted)
+                polesView_->setModel(asRailModel(r.identification.model));
             tabs_->setCurrentWidget(model_);
             if (r.ok) {
                 tuned_ = r.tuned;
