@@ -105,6 +105,16 @@ TEST(CliTunePoles, TheClassicLawAtItsOwnPeriod) {
     EXPECT_DOUBLE_EQ(fast[QStringLiteral("sample_period_s")].toDouble(), 0.001);
     EXPECT_NE(fast[QStringLiteral("largest_pole_magnitude")].toDouble(),
               o[QStringLiteral("largest_pole_magnitude")].toDouble());
+    // --locus: every point of the sweep, Kp / 100 to x 1000, each with its four poles.
+    const QJsonObject l =
+        poles({QStringLiteral("--law"), QStringLiteral("classic"), QStringLiteral("--locus")});
+    const QJsonArray locus = l[QStringLiteral("root_locus")].toArray();
+    ASSERT_EQ(locus.size(), 200);
+    EXPECT_NEAR(locus.first()[QStringLiteral("kp")].toDouble(), 0.002, 1e-15);
+    EXPECT_NEAR(locus.last()[QStringLiteral("kp")].toDouble(), 200.0, 1e-9);
+    for (const QJsonValue& pt : locus)
+        EXPECT_EQ(pt[QStringLiteral("poles_z")].toArray().size(), 4);
+    EXPECT_FALSE(o.contains(QStringLiteral("root_locus")));  // only when asked
 }
 
 TEST(CliTunePoles, BadInputIsAUsageErrorThatSaysWhich) {
