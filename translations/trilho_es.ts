@@ -2329,6 +2329,101 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::PolesView</name>
+    <message>
+        <source>Identify the plant to see the closed loop&apos;s poles and zeros for the gains in the boxes.</source>
+        <translation>Identifique la planta para ver los polos y ceros del lazo cerrado con las ganancias de las casillas.</translation>
+    </message>
+    <message>
+        <source>engineered</source>
+        <translation>moderna</translation>
+    </message>
+    <message>
+        <source>seed 004 (signed error)</source>
+        <translation>seed 004 (error con signo)</translation>
+    </message>
+    <message>
+        <source>1996</source>
+        <translation>1996</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Closed loop at T = %1 ms&lt;/b&gt; (%2 law, %3; model K %4 %5, tau %6 ms)</source>
+        <translation>&lt;b&gt;Lazo cerrado a T = %1 ms&lt;/b&gt; (ley %2, %3; modelo K %4 %5, tau %6 ms)</translation>
+    </message>
+    <message>
+        <source>mm/s per PWM %</source>
+        <translation>mm/s por % de PWM</translation>
+    </message>
+    <message>
+        <source>mm/s per code</source>
+        <translation>mm/s por código</translation>
+    </message>
+    <message>
+        <source>poles (x):</source>
+        <translation>polos (x):</translation>
+    </message>
+    <message>
+        <source>%1 (|z| %2)</source>
+        <translation>%1 (|z| %2)</translation>
+    </message>
+    <message>
+        <source>zeros (o):</source>
+        <translation>ceros (o):</translation>
+    </message>
+    <message>
+        <source>largest |z| %1: stable, inside the unit circle.</source>
+        <translation>mayor |z| %1: estable, dentro del círculo unitario.</translation>
+    </message>
+    <message>
+        <source>&lt;font color=&quot;#c00000&quot;&gt;&lt;b&gt;largest |z| %1: unstable, on or outside the unit circle.&lt;/b&gt;&lt;/font&gt;</source>
+        <translation>&lt;font color=&quot;#c00000&quot;&gt;&lt;b&gt;mayor |z| %1: inestable, sobre o fuera del círculo unitario.&lt;/b&gt;&lt;/font&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Dominant pair&lt;/b&gt; %1: damping %2, natural frequency %3 rad/s (z = exp(sT), s = ln z / T)</source>
+        <translation>&lt;b&gt;Par dominante&lt;/b&gt; %1: amortiguamiento %2, frecuencia natural %3 rad/s (z = exp(sT), s = ln z / T)</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Dominant pole&lt;/b&gt; %1: damping %2, natural frequency %3 rad/s (z = exp(sT), s = ln z / T)</source>
+        <translation>&lt;b&gt;Polo dominante&lt;/b&gt; %1: amortiguamiento %2, frecuencia natural %3 rad/s (z = exp(sT), s = ln z / T)</translation>
+    </message>
+    <message>
+        <source>The loop leaves the unit circle above %1 %2.</source>
+        <translation>El lazo sale del círculo unitario por encima de %1 %2.</translation>
+    </message>
+    <message>
+        <source>... and below %1 %2.</source>
+        <translation>... y por debajo de %1 %2.</translation>
+    </message>
+    <message>
+        <source>Root locus (grey): %1 from %2 to %3; the poles for the gains in the boxes are the crosses.</source>
+        <translation>Lugar de las raíces (gris): %1 de %2 a %3; los polos de las ganancias de las casillas son las cruces.</translation>
+    </message>
+    <message>
+        <source>unit circle</source>
+        <translation>círculo unitario</translation>
+    </message>
+    <message>
+        <source>root locus (Kp)</source>
+        <translation>lugar de las raíces (Kp)</translation>
+    </message>
+    <message>
+        <source>zeros</source>
+        <translation>ceros</translation>
+    </message>
+    <message>
+        <source>poles</source>
+        <translation>polos</translation>
+    </message>
+    <message>
+        <source>Re z</source>
+        <translation>Re z</translation>
+    </message>
+    <message>
+        <source>Im z</source>
+        <translation>Im z</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::PolygonDialog</name>
     <message>
         <source>line %1: expected two numbers, x and y in mm (got &apos;%2&apos;)</source>
@@ -3113,6 +3208,10 @@
     <message>
         <source>Model</source>
         <translation>Modelo</translation>
+    </message>
+    <message>
+        <source>Poles</source>
+        <translation>Polos</translation>
     </message>
     <message>
         <source>1996</source>

@@ -18,6 +18,8 @@ int tuneModelCommand(const QStringList& args, bool autotune);
 int tuneRelayCommand(const QStringList& args);
 /// tune margin (tune_margin_command.cpp): the plotter's speed and acceleration margin.
 int tuneMarginCommand(const QStringList& args);
+/// tune poles (tune_poles_command.cpp): the closed loop's poles and zeros.
+int tunePolesCommand(const QStringList& args);
 int tuneCommand(const QStringList& args);
 int calibrateCommand(const QStringList& args);
 

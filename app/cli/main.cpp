@@ -19,7 +19,7 @@ const char* kUsage =
     "  profile   check a machine profile (JSON) and print it in full\n"
     "  serve     run a machine headless with the DNC link (Modbus TCP/RTU)\n"
     "  tune      step tests, metrics, identification and autotune (tune step,\n"
-    "            tune metrics, tune identify, tune auto, tune relay, tune margin)\n"
+    "            tune metrics, tune identify, tune auto, tune relay, tune margin, tune poles)\n"
     "  calibrate measure an axis of the DC table from its board's calibration stream\n"
     "\n"
     "Options:\n"

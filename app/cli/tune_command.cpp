@@ -42,6 +42,7 @@ const char* kTuneUsage =
     "  relay     the relay experiment (Astrom-Hagglund) and its Ziegler-Nichols gains, to\n"
     "            teach with, beside the model-based gains of 'auto'; both run the same step\n"
     "  margin    the plotter's speed and acceleration margin against lost steps\n"
+    "  poles     the discrete closed loop's poles and zeros, damping and natural frequency\n"
     "\n"
     "Run 'trilho-cli tune <subcommand> --help' for its options.\n";
 
@@ -463,9 +464,11 @@ int tuneCommand(const QStringList& args) {
     if (sub == QLatin1String("auto")) return tuneModelCommand(rest, true);
     if (sub == QLatin1String("relay")) return tuneRelayCommand(rest);
     if (sub == QLatin1String("margin")) return tuneMarginCommand(rest);
+    if (sub == QLatin1String("poles")) return tunePolesCommand(rest);
     return usageError(
         "tune",
-        QStringLiteral("unknown subcommand '%1' (step, metrics, identify, auto, relay or margin)")
+        QStringLiteral(
+            "unknown subcommand '%1' (step, metrics, identify, auto, relay, margin or poles)")
             .arg(sub));
 }
 

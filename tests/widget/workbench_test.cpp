@@ -34,6 +34,7 @@
 #include "ui/background_pool.h"
 #include "ui/workbench/margin_view.h"
 #include "ui/workbench/model_view.h"
+#include "ui/workbench/poles_view.h"
 #include "ui/workbench/run_overlay.h"
 #include "ui/workbench/run_plot.h"
 #include "ui/workbench/terms_view.h"
@@ -497,6 +498,77 @@ class WorkbenchTest : public QObject {
         }
     }
 
+    // Issue 33 item 6: after Identify, the Poles page shows the closed loop of the identified
+    // model with the gains in the boxes: the poles `trilho-cli tune poles --json` prints for the
+    // same gains, law and period; the page follows the boxes as they change.
+    void thePolesPageShowsTheCliPolesForTheBoxesGains() {
+        WorkbenchWindow w(MachineProfile::rail());
+        PolesView* poles = w.polesView();
+        QVERIFY(poles);
+        QCOMPARE(w.tabs()->indexOf(poles), 3);
+        QVERIFY(!poles->hasModel());
+        QVERIFY(poles->poles().poles.empty());
+        w.findChild<QPushButton*>(QStringLiteral("identify"))->click();
+        QVERIFY(waitRun(w));
+        QVERIFY2(poles->hasModel(), qPrintable(w.model()->summary()->text()));
+        auto* kp = w.findChild<QDoubleSpinBox*>(QStringLiteral("kp"));
+        kp->setValue(24.0);  // a complex pair, damping 0.22
+        auto compareWithCli = [&](const QStringList& more) {
+            QStringList args{QStringLiteral("tune"), QStringLiteral("poles"),
+                             QStringLiteral("--machine"), QStringLiteral("rail"),
+                             QStringLiteral("--json")};
+            const QJsonObject o = cli(args + more);
+            QVERIFY2(!o.isEmpty(), "trilho-cli tune poles printed no JSON");
+            const QJsonArray z = o[QStringLiteral("closed_loop_poles_z")].toArray();
+            const std::vector<ZPoint>& shown = poles->poles().poles;
+            QCOMPARE(static_cast<qsizetype>(shown.size()), z.size());
+            for (qsizetype i = 0; i < z.size(); ++i) {
+                const auto k = static_cast<std::size_t>(i);
+                QVERIFY2(std::abs(shown[k].real() - z[i][QStringLiteral("re")].toDouble()) < 1e-9,
+                         qPrintable(QString::number(shown[k].real(), 'g', 17)));
+                QVERIFY(std::abs(shown[k].imag() - z[i][QStringLiteral("im")].toDouble()) < 1e-9);
+            }
+            QVERIFY(std::abs(poles->poles().dominant.damping -
+                             o[QStringLiteral("dominant_damping")].toDouble()) < 1e-9);
+            QCOMPARE(poles->poles().periodS, o[QStringLiteral("sample_period_s")].toDouble());
+            // The page says what it plots: every pole's z to six decimals, the damping.
+            const QString text = poles->summary()->text();
+            for (const QJsonValue& v : z)
+                QVERIFY2(text.contains(QString::number(v[QStringLiteral("re")].toDouble(), 'f', 6)),
+                         qPrintable(text));
+        };
+        compareWithCli({QStringLiteral("--kp"), QStringLiteral("24")});
+        QVERIFY(poles->poles().dominant.complexPair);
+        QVERIFY(poles->poles().stable);
+        QVERIFY(poles->summary()->text().contains(QStringLiteral("Dominant pair")));
+        // The plane: the unit circle, the locus, the zeros (o) and the poles (x), the boxes' Kp.
+        QCustomPlot* plane = poles->plane();
+        QCOMPARE(plane->plottableCount(), 4);
+        auto* marked = qobject_cast<QCPCurve*>(plane->plottable(3));
+        QVERIFY(marked);
+        QCOMPARE(marked->data()->size(), 4);
+        QCOMPARE(marked->scatterStyle().shape(), QCPScatterStyle::ssCross);
+        QCOMPARE(poles->locus().kpCurrent, 24.0);
+        QVERIFY(poles->locus().hasUpperLimit);
+        // TRILHO_WORKBENCH_SHOTS=DIR: the page saved, to look at (not an assertion).
+        if (const QString dir = qEnvironmentVariable("TRILHO_WORKBENCH_SHOTS"); !dir.isEmpty()) {
+            w.resize(1366, 738);
+            w.show();
+            w.tabs()->setCurrentWidget(poles);
+            QTest::qWait(50);
+            w.grab().save(QStringLiteral("%1/workbench_poles.png").arg(dir));
+        }
+        // Past the limit the page says unstable, as `tune poles` does.
+        kp->setValue(160.0);
+        compareWithCli({QStringLiteral("--kp"), QStringLiteral("160")});
+        QVERIFY(!poles->poles().stable);
+        QVERIFY(poles->summary()->text().contains(QStringLiteral("unstable")));
+        // The 1996 law at the Period box's 10 ms, its own gains.
+        w.findChild<QComboBox*>(QStringLiteral("law"))->setCurrentIndex(1);
+        compareWithCli({QStringLiteral("--law"), QStringLiteral("classic")});
+        QCOMPARE(poles->poles().periodS, 0.01);
+    }
+
     // The relay (Ziegler-Nichols) experiment beside the model-based result, from its button:
     // the numbers `trilho-cli tune relay` prints for the same rail, seed and mass.
     void theRelayExperimentShowsBesideTheModelWithTheCliNumbers() {
@@ -659,7 +731,38 @@ class WorkbenchTest : public QObject {
         QCOMPARE(w.runs().size(), std::size_t(1));
         QCOMPARE(w.runs()[0]->record.conditions.axis, 'y');
         QVERIFY2(w.runs()[0]->metrics.ok, w.runs()[0]->metrics.problem.c_str());
-        QCOMPARE(w.tabs()->count(), 3);
+        QCOMPARE(w.tabs()->count(), 4);  // responses, terms, model, poles
+    }
+
+    // The DC table's Poles page: per axis, the poles `tune poles --machine xy_dc_table --axis y`
+    // prints once the axis is identified; another axis forgets them until it is identified.
+    void theDcTablePolesPageShowsTheCliPolesPerAxis() {
+        WorkbenchWindow w(MachineProfile::xyDcTable());
+        auto* axis = w.findChild<QComboBox*>(QStringLiteral("axis"));
+        axis->setCurrentIndex(1);
+        PolesView* poles = w.polesView();
+        QCOMPARE(w.tabs()->indexOf(poles), 3);
+        w.findChild<QPushButton*>(QStringLiteral("identify"))->click();
+        QVERIFY(waitRun(w));
+        QVERIFY(poles->hasModel());
+        const QJsonObject o =
+            cli({QStringLiteral("tune"), QStringLiteral("poles"), QStringLiteral("--machine"),
+                 QStringLiteral("xy_dc_table"), QStringLiteral("--axis"), QStringLiteral("y"),
+                 QStringLiteral("--json")});
+        const QJsonArray z = o[QStringLiteral("closed_loop_poles_z")].toArray();
+        const std::vector<ZPoint>& shown = poles->poles().poles;
+        QCOMPARE(static_cast<qsizetype>(shown.size()), z.size());
+        QCOMPARE(z.size(), 3);
+        for (qsizetype i = 0; i < z.size(); ++i) {
+            const auto k = static_cast<std::size_t>(i);
+            QVERIFY(std::abs(shown[k].real() - z[i][QStringLiteral("re")].toDouble()) < 1e-9);
+            QVERIFY(std::abs(shown[k].imag() - z[i][QStringLiteral("im")].toDouble()) < 1e-9);
+        }
+        QCOMPARE(poles->poles().periodS, 0.005);
+        QVERIFY(poles->summary()->text().contains(QStringLiteral("mm/s per PWM %")));
+        axis->setCurrentIndex(0);
+        QVERIFY(!poles->hasModel());
+        QVERIFY(poles->poles().poles.empty());
     }
 
     // The DC table's identification and autotune at the screens show the numbers `trilho-cli

@@ -39,6 +39,7 @@
 #include "ui/wheel_needs_focus.h"
 #include "ui/workbench/margin_view.h"
 #include "ui/workbench/model_view.h"
+#include "ui/workbench/poles_view.h"
 #include "ui/workbench/run_overlay.h"
 #include "ui/workbench/run_plot.h"
 #include "ui/workbench/terms_view.h"
@@ -69,6 +70,15 @@ struct Prepared {
     std::shared_ptr<WorkbenchRun> run;
     QString gainChangeMissed;
 };
+
+/// A DC table axis's model as the poles take it: the same integrator behind a lag, K per PWM %
+/// (friction, which moves no pole, left out).
+RailModel asRailModel(const DcAxisModel& m) {
+    RailModel r;
+    r.speedGainMmSPerCode = m.speedGainMmSPerPercent;
+    r.timeConstantS = m.timeConstantS;
+    return r;
+}
 
 Prepared prepare(StepTestResult r) {
     Prepared p;
@@ -104,6 +114,7 @@ WorkbenchWindow::WorkbenchWindow(const MachineProfile& profile, QWidget* parent)
     build();
     retranslate();
     lawChanged();
+    updatePoles();
     fitForm();
     wheelNeedsFocus(this);  // no value changes under a wheel turned to scroll the panel
     // 1280x720 where there is room; on a 1024x768 screen its width (issue 33 bug 4: it opened
@@ -287,6 +298,12 @@ void WorkbenchWindow::build() {
         else
             model_->hide();
     }
+    // The closed loop's poles: the rail and each DC table axis (the plotter has no loop).
+    polesView_ = new PolesView(this);
+    if (tunable())
+        tabs_->addTab(polesView_, QString());
+    else
+        polesView_->hide();
     auto* split = new QSplitter(Qt::Horizontal);
     split->addWidget(scroll);
     split->addWidget(tabs_);
@@ -305,6 +322,12 @@ void WorkbenchWindow::build() {
             if (!changeBox_->isChecked()) to->setValue(v);
         });
     connect(axis_, &QComboBox::currentIndexChanged, this, &WorkbenchWindow::lawChanged);
+    // Another axis, another plant: its poles wait for its identification.
+    connect(axis_, &QComboBox::currentIndexChanged, polesView_, &PolesView::clearModel);
+    connect(axis_, &QComboBox::currentIndexChanged, this, &WorkbenchWindow::updatePoles);
+    for (QDoubleSpinBox* box : {kp_, ki_, kd_, period_})
+        connect(box, &QDoubleSpinBox::valueChanged, this, &WorkbenchWindow::updatePoles);
+    connect(law_, &QComboBox::currentIndexChanged, this, &WorkbenchWindow::updatePoles);
     connect(run_, &QPushButton::clicked, this, &WorkbenchWindow::runStep);
     connect(compare_, &QPushButton::clicked, this, &WorkbenchWindow::compareLaws);
     connect(identify_, &QPushButton::clicked, this, &WorkbenchWindow::identify);
@@ -403,6 +426,7 @@ void WorkbenchWindow::retranslate() {
     tabs_->setTabText(0, tr("Responses"));
     tabs_->setTabText(1, tr("P, I, D terms"));
     if (tunable()) tabs_->setTabText(2, tr("Model"));
+    if (tunable()) tabs_->setTabText(3, tr("Poles"));
 }
 
 void WorkbenchWindow::changeEvent(QEvent* e) {
@@ -437,6 +461,30 @@ void WorkbenchWindow::lawChanged() {
                                                   : profile_.loop.samplePeriodS * 1e3);
     else
         period_->setValue(profile_.dcTable.samplePeriodS * 1e3);
+}
+
+void WorkbenchWindow::updatePoles() {
+    if (!tunable()) return;
+    // As currentSpec gives the law, gains and period to a step test (and `tune poles` takes
+    // them): on the rail the boxes' law and period; on a DC table axis the profile's law (the
+    // boxes are its engineered Kp and Ki; the third, Kff, moves no pole) and its seed gains.
+    DiscreteLoopSpec spec;
+    spec.periodS = period_->value() / 1e3;
+    if (rail_) {
+        spec.law = static_cast<LoopLaw>(law_->currentData().toInt());
+        spec.gains = {kp_->value(), ki_->value(), kd_->value()};
+        spec.derivativeFilterS = profile_.loop.derivativeFilterS;
+    } else {
+        const DcAxisParams& a =
+            axis_->currentData().toInt() == 'y' ? profile_.dcTable.y : profile_.dcTable.x;
+        spec.dcTableAxis = true;
+        spec.law = tableStepLaw(profile_.dcTable.law);
+        spec.gains = {kp_->value(), ki_->value(), 0.0};
+        spec.b0 = a.classic.b0;
+        spec.b1 = a.classic.b1;
+        spec.mmPerTurn = a.mmPerTurn;
+    }
+    polesView_->setLoop(spec);
 }
 
 StepTestSpec WorkbenchWindow::currentSpec() const {
@@ -639,6 +687,7 @@ void WorkbenchWindow::identify() {
         },
         [this, profile](Out o) {
             model_->showIdentification(o.id, o.frequency, profile.loop.engineered);
+            if (o.id.accepted) polesView_->setModel(o.id.model);
             tabs_->setCurrentWidget(model_);
             statusBar()->showMessage(o.id.accepted
                                          ? tr("Identified: fit %1 % on held-out velocity.")
@@ -663,6 +712,7 @@ void WorkbenchWindow::autotune() {
         },
         [this](AutotuneResult r) {
             model_->showAutotune(r);
+            if (r.identification.accepted) polesView_->setModel(r.identification.model);
             tabs_->setCurrentWidget(model_);
             if (r.ok) {
                 tuned_ = r.tuned;
@@ -748,6 +798,7 @@ void WorkbenchWindow::identifyTableAxis() {
         },
         [this](Out o) {
             model_->showDcIdentification(o.id, o.frequency, o.gains);
+            if (o.id.accepted) polesView_->setModel(asRailModel(o.id.model));
             tabs_->setCurrentWidget(model_);
             statusBar()->showMessage(o.id.accepted
                                          ? tr("Identified: fit %1 % on held-out velocity.")
@@ -771,6 +822,8 @@ void WorkbenchWindow::autotuneTableAxis() {
         },
         [this](DcAutotuneResult r) {
             model_->showDcAutotune(r);
+            if (r.identification.accepted)
+                polesView_->setModel(asRailModel(r.identification.model));
             tabs_->setCurrentWidget(model_);
             if (r.ok) {
                 tuned_ = r.tuned;

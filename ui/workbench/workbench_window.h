@@ -33,6 +33,7 @@ namespace ui {
 
 class MarginView;
 class ModelView;
+class PolesView;
 class RunOverlay;
 class TermsView;
 
@@ -89,6 +90,8 @@ class WorkbenchWindow : public QMainWindow {
     static QSize initialSize(const QSize& available, const QSize& least);
     ModelView* model() const { return model_; }
     MarginView* marginView() const { return marginView_; }
+    /// The rail's Poles page (the last identified model, the boxes' law, gains and period).
+    PolesView* polesView() const { return polesView_; }
     QTabWidget* tabs() const { return tabs_; }
 
   signals:
@@ -107,6 +110,8 @@ class WorkbenchWindow : public QMainWindow {
     /// The form's column as wide as the form in the current language: never cut.
     void fitForm();
     void lawChanged();
+    /// The Poles page follows the boxes: law, gains, period.
+    void updatePoles();
     void setBusy(bool busy);
     /// The rail and the DC table have a plant to identify; the plotter (no encoder) has not.
     bool tunable() const { return profile_.kind != MachineKind::Plotter; }
@@ -152,6 +157,7 @@ class WorkbenchWindow : public QMainWindow {
     TermsView* terms_;
     ModelView* model_;
     MarginView* marginView_;
+    PolesView* polesView_;
     QGroupBox *testBox_, *tuneBox_, *runsBox_;
     /// The rail's engineered law: new gains part-way through the test (`--change-at`).
     QGroupBox* changeBox_;
