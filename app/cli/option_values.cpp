@@ -78,4 +78,19 @@ std::optional<QString> installLanguageOption(const QCommandLineParser& parser,
     return QStringLiteral("unknown language '%1' (en, pt_BR or es)").arg(parser.value(opt));
 }
 
+GainOptions gainOptions() {
+    return {QCommandLineOption(QStringLiteral("kp"), QStringLiteral("Proportional gain."),
+                               QStringLiteral("K")),
+            QCommandLineOption(QStringLiteral("ki"), QStringLiteral("Integral gain."),
+                               QStringLiteral("K")),
+            QCommandLineOption(QStringLiteral("kd"), QStringLiteral("Derivative gain (the rail)."),
+                               QStringLiteral("K")),
+            QCommandLineOption(QStringLiteral("b0"),
+                               QStringLiteral("b0 of the DC table's classic law."),
+                               QStringLiteral("B")),
+            QCommandLineOption(QStringLiteral("b1"),
+                               QStringLiteral("b1 of the DC table's classic law."),
+                               QStringLiteral("B"))};
+}
+
 }  // namespace trilho::cli

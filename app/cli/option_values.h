@@ -32,6 +32,13 @@ QCommandLineOption dialectOption();
 QCommandLineOption languageOption();
 QCommandLineOption simulatedMassOption();
 
+/// The loop gains the tuning commands take, named and explained the same in each one's --help:
+/// --kp, --ki, --kd (the rail), and --b0, --b1 (the DC table's classic law).
+struct GainOptions {
+    QCommandLineOption kp, ki, kd, b0, b1;
+};
+GainOptions gainOptions();
+
 /// --dialect classic|standard into `dialect`: "unknown dialect 'TEXT' (classic or standard)".
 std::optional<QString> readDialect(const QCommandLineParser& parser, const QCommandLineOption& opt,
                                    Dialect& dialect);

@@ -50,18 +50,12 @@ int tunePolesCommand(const QStringList& args) {
     const QCommandLineOption lawOpt(
         QStringLiteral("law"), QStringLiteral("classic or engineered (default: the profile's)."),
         QStringLiteral("LAW"));
-    const QCommandLineOption kpOpt(QStringLiteral("kp"), QStringLiteral("Proportional gain."),
-                                   QStringLiteral("K"));
-    const QCommandLineOption kiOpt(QStringLiteral("ki"), QStringLiteral("Integral gain."),
-                                   QStringLiteral("K"));
-    const QCommandLineOption kdOpt(
-        QStringLiteral("kd"), QStringLiteral("Derivative gain (the rail)."), QStringLiteral("K"));
-    const QCommandLineOption b0Opt(QStringLiteral("b0"),
-                                   QStringLiteral("b0 of the DC table's classic law."),
-                                   QStringLiteral("B"));
-    const QCommandLineOption b1Opt(QStringLiteral("b1"),
-                                   QStringLiteral("b1 of the DC table's classic law."),
-                                   QStringLiteral("B"));
+    const GainOptions gainOpts = gainOptions();
+    const QCommandLineOption& kpOpt = gainOpts.kp;
+    const QCommandLineOption& kiOpt = gainOpts.ki;
+    const QCommandLineOption& kdOpt = gainOpts.kd;
+    const QCommandLineOption& b0Opt = gainOpts.b0;
+    const QCommandLineOption& b1Opt = gainOpts.b1;
     const QCommandLineOption periodOpt(
         QStringLiteral("period"),
         QStringLiteral("Loop period, s (default: the law's own: 0.01 for the rail's classic "
