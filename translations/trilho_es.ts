@@ -312,6 +312,10 @@
         <translation>Embalamiento: la ley de la semilla 004 llevó un eje adelante, lejos de su punto de consigna (actúa sobre |e| con el sentido fijado para el movimiento, así que un eje que pasa su punto de consigna es llevado aún más lejos), y se cortaron los accionamientos en el límite de software en %1 mm. Reconozca y llévela de vuelta dentro de los límites.</translation>
     </message>
     <message>
+        <source>Move refused: seed 004&apos;s board would plan %1 samples for it and its arrays hold 480 (2.4 s). Its final-time formula counts forward moves only, so a return of more than 75 mm makes the count wrap to tens of thousands. Nothing was sent. Acknowledge, then give the move in shorter steps.</source>
+        <translation>Movimiento rechazado: la placa del seed 004 planificaría %1 muestras para él y sus arreglos guardan 480 (2,4 s). Su fórmula del tiempo final solo cuenta movimientos hacia adelante, y un retorno de más de 75 mm hace que la cuenta dé la vuelta a decenas de miles. No se envió nada. Reconozca y dé el movimiento en pasos más cortos.</translation>
+    </message>
+    <message>
         <source>%1: Travel to x=%2 y=%4 at maximum speed.</source>
         <translation>%1: Desplazamiento a x=%2 y=%4 a velocidad máxima.</translation>
     </message>
@@ -334,6 +338,10 @@
     <message>
         <source>Homing done: the table stands at x=%2 y=%4 from its power-on origin.</source>
         <translation>Referencia terminada: la mesa está en x=%2 y=%4 del origen al encenderla.</translation>
+    </message>
+    <message>
+        <source>Program sent: every set point went to the board, which confirms nothing (seed 004&apos;s own firmware). The position shown is the planned one.</source>
+        <translation>Programa enviado: todos los set points fueron a la placa, que no confirma nada (el firmware del propio seed 004). La posición mostrada es la planificada.</translation>
     </message>
     <message>
         <source>%1: Return to the machine&apos;s absolute zero.</source>
@@ -3475,6 +3483,10 @@
     <message>
         <source>the board&apos;s last set point, not homed</source>
         <translation>último punto de consigna de la placa, sin referencia</translation>
+    </message>
+    <message>
+        <source>planned, unconfirmed: the seed&apos;s board answers nothing</source>
+        <translation>planificada, sin confirmar: la placa del seed no responde nada</translation>
     </message>
     <message>
         <source>Block N%1, line %2</source>

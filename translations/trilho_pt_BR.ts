@@ -312,6 +312,10 @@
         <translation>Disparo: a lei da semente 004 levou um eixo adiante, para longe do seu ponto de ajuste (ela age sobre |e| com o sentido fixado para o movimento, então um eixo que passa do ponto de ajuste é levado ainda mais longe), e os acionamentos foram cortados no limite de software em %1 mm. Reconheça e leve-a de volta para dentro dos limites.</translation>
     </message>
     <message>
+        <source>Move refused: seed 004&apos;s board would plan %1 samples for it and its arrays hold 480 (2.4 s). Its final-time formula counts forward moves only, so a return of more than 75 mm makes the count wrap to tens of thousands. Nothing was sent. Acknowledge, then give the move in shorter steps.</source>
+        <translation>Movimento recusado: a placa do seed 004 planejaria %1 amostras para ele e seus vetores guardam 480 (2,4 s). Sua fórmula do tempo final só conta movimentos para a frente, e um retorno de mais de 75 mm faz a contagem dar a volta para dezenas de milhares. Nada foi enviado. Reconheça e dê o movimento em passos mais curtos.</translation>
+    </message>
+    <message>
         <source>%1: Travel to x=%2 y=%4 at maximum speed.</source>
         <translation>%1: Deslocamento para x=%2 y=%4 com velocidade máxima.</translation>
     </message>
@@ -334,6 +338,10 @@
     <message>
         <source>Homing done: the table stands at x=%2 y=%4 from its power-on origin.</source>
         <translation>Referência concluída: a mesa está em x=%2 y=%4 da origem ao ligar.</translation>
+    </message>
+    <message>
+        <source>Program sent: every set point went to the board, which confirms nothing (seed 004&apos;s own firmware). The position shown is the planned one.</source>
+        <translation>Programa enviado: todos os set points foram à placa, que não confirma nada (o firmware do próprio seed 004). A posição mostrada é a planejada.</translation>
     </message>
     <message>
         <source>%1: Return to the machine&apos;s absolute zero.</source>
@@ -3475,6 +3483,10 @@
     <message>
         <source>the board&apos;s last set point, not homed</source>
         <translation>último ponto de ajuste da placa, sem referência</translation>
+    </message>
+    <message>
+        <source>planned, unconfirmed: the seed&apos;s board answers nothing</source>
+        <translation>planejada, não confirmada: a placa do seed não responde nada</translation>
     </message>
     <message>
         <source>Block N%1, line %2</source>
