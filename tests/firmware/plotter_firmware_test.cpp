@@ -236,6 +236,7 @@ std::vector<std::uint8_t> packet(plotter_wire::Command c, std::uint16_t x = 0,
 /// Runs the board until it answers (or maxS of board time passes); the answers.
 std::vector<std::uint8_t> ask(PlotterFirmwareDevice& d, const std::vector<std::uint8_t>& bytes,
                               double maxS = 1.0) {
+    (void)d.takeOutput();  // what came before is not this packet's answer
     for (std::uint8_t b : bytes)
         d.receive(b, 0.0);
     std::vector<std::uint8_t> out;
@@ -301,4 +302,50 @@ TEST(PlotterFirmware, Point301IsRefusedAndNotStored) {
     EXPECT_EQ(d->board().stats().objects, 1u);
     // The next object starts empty: its first point is taken.
     EXPECT_EQ(ask(*d, packet(C::Move, 5, 5)), std::vector<std::uint8_t>{110});
+}
+
+// Garbage, floods and edge values: the board answers RESEND for what does not check, drops a
+// partial packet after 2 s, and then answers as before; an empty object is DONE at once; SPEED
+// 0 runs at the motors' 1000 events a second; a REQUEST while plotting is answered at once.
+TEST(PlotterFirmware, GarbageAndEdgeValuesLeaveItAnswering) {
+    auto d = loadBoard(TRILHO_PLOTTER_BRESENHAM_ELF);
+    ASSERT_TRUE(d);
+    d->step(0.01, 0.0);
+    std::vector<std::uint8_t> garbage;
+    std::uint32_t x = 12345;
+    for (int i = 0; i < 601; ++i) {  // 100 packets and one byte: a partial packet is left
+        x = x * 1103515245u + 12345u;
+        garbage.push_back(static_cast<std::uint8_t>(x >> 16));
+    }
+    d->board().send(garbage);
+    d->step(2.5, 0.0);  // the line's 104 ms and the receiver's 2 s timeout
+    const std::vector<std::uint8_t> answers = d->takeOutput();
+    EXPECT_EQ(answers.size(), 101u);  // 100 packets that do not check, the partial one's timeout
+    EXPECT_TRUE(
+        std::all_of(answers.begin(), answers.end(), [](std::uint8_t b) { return b == 114; }));
+    EXPECT_EQ(d->board().uart().stats().overruns, 0u) << "the board reads while it answers";
+    using C = plotter_wire::Command;
+    EXPECT_EQ(ask(*d, packet(C::Request)), std::vector<std::uint8_t>{107});
+    EXPECT_EQ(ask(*d, packet(C::End)), std::vector<std::uint8_t>{100}) << "an empty object";
+    EXPECT_EQ(ask(*d, packet(C::Speed, 0)), std::vector<std::uint8_t>{115});
+    EXPECT_EQ(ask(*d, packet(C::Line, 500, 0)), std::vector<std::uint8_t>{110});
+    const double t0 = d->board().seconds();
+    for (std::uint8_t b : packet(C::End))
+        d->receive(b, 0.0);
+    d->step(0.1, 0.0);
+    EXPECT_TRUE(d->takeOutput().empty()) << "plotting: no DONE yet";
+    for (std::uint8_t b : packet(C::Request))
+        d->receive(b, 0.0);
+    d->step(0.005, 0.0);
+    EXPECT_EQ(d->takeOutput(), std::vector<std::uint8_t>{107}) << "REQUEST while plotting";
+    std::vector<std::uint8_t> done;
+    while (done.empty() && d->board().seconds() - t0 < 2.0) {
+        d->step(0.001, 0.0);
+        done = d->takeOutput();
+    }
+    EXPECT_EQ(done, std::vector<std::uint8_t>{100});
+    EXPECT_EQ(d->board().plant().head().x, 500);
+    // 500 events at 1000 a second (SPEED 0 taken as 1, below the 500 us floor) and the pen.
+    EXPECT_NEAR(d->board().seconds() - t0, 0.05 + 0.5 + 500 * 38.7e-6, 0.01);
+    EXPECT_EQ(d->board().stats().objects, 2u);
 }
