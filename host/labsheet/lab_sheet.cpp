@@ -91,9 +91,13 @@ std::vector<LabSheetRow> labSheetRows(const LabSheet& sheet) {
     std::vector<std::vector<StepMetricLine>> lines;
     for (const LabSheetRun& run : sheet.runs)
         lines.push_back(stepMetricLines(run.metrics));
-    const std::size_t n = lines.empty() ? 0 : lines.front().size();
+    // A run without a step (a workbench run that never moved) has none: "no step" in its cells.
+    const std::vector<StepMetricLine>* names = nullptr;
+    for (const auto& l : lines)
+        if (!names || l.size() > names->size()) names = &l;
+    const std::size_t n = names ? names->size() : 0;
     for (std::size_t k = 0; k < n; ++k) {
-        LabSheetRow row{lines.front()[k].name, {}, true};
+        LabSheetRow row{(*names)[k].name, {}, true};
         for (const auto& l : lines)
             row.cells.push_back(k < l.size() ? l[k].value : QStringLiteral("no step"));
         rows.push_back(std::move(row));
