@@ -1004,7 +1004,8 @@ bool WorkbenchWindow::exportLabSheet(const QString& path, QString* error) {
     if (!format) return fail(tr("'%1': a lab sheet is a .pdf or a .png file").arg(path));
     const LabSheet sheet =
         workbenchLabSheet(runs_, shown_, tunable() ? polesView_->model() : std::nullopt, rail_);
-    if (sheet.runs.empty()) return fail(tr("No run is shown: there is nothing to put on a sheet."));
+    if (sheet.runs.empty())
+        return fail(tr("No run is shown: there is nothing to put on a lab sheet."));
     if (sheet.runs.size() > kMaxLabSheetRuns)
         return fail(tr("%1 runs are shown: at most %2 fit one sheet (untick some in the runs' "
                        "list)")
