@@ -16,6 +16,15 @@ constexpr int kTableMinFontPx = 9;  ///< smaller than this no one reads it print
 
 constexpr int kCellFlags = Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap;
 
+/// How a cell's text wraps: at its spaces, or anywhere when a word of it (a file's path, a
+/// date) is wider than the cell, so nothing is cut off at the cell's edge.
+int cellFlags(const QFontMetricsF& fm, const QString& text, double width) {
+    for (const QString& word : text.split(QLatin1Char(' '), Qt::SkipEmptyParts))
+        if (fm.horizontalAdvance(word) > width)
+            return Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWrapAnywhere;
+    return kCellFlags;
+}
+
 /// The table's geometry at one type size.
 struct TableLayout {
     int fontPx = kTableFontPx;
@@ -43,7 +52,8 @@ TableLayout layoutTable(const LabSheet& sheet, const std::vector<LabSheetRow>& r
     t.colW = (width - t.nameW) / n;
     const double pad = 0.45 * fm.height();
     auto cellH = [&](const QFontMetricsF& m, const QString& text) {
-        return m.boundingRect(QRectF(0, 0, t.colW - 12.0, 1e6), kCellFlags, text).height() + pad;
+        const double w = t.colW - 12.0;
+        return m.boundingRect(QRectF(0, 0, w, 1e6), cellFlags(m, text, w), text).height() + pad;
     };
     t.headerH = 0.0;
     for (const LabSheetRun& run : sheet.runs)
@@ -68,6 +78,7 @@ void paintTable(QPainter& p, const QRectF& area, const LabSheet& sheet) {
     p.save();
     p.setClipRect(area);
     const QFont font = labSheetFont(t.fontPx), bold = labSheetFont(t.fontPx, true);
+    const QFontMetricsF fm(font, p.device()), bm(bold, p.device());
     const QColor ink(30, 30, 30);
     double y = area.top();
     // Heading: each run's label in its colour.
@@ -78,7 +89,8 @@ void paintTable(QPainter& p, const QRectF& area, const LabSheet& sheet) {
         p.fillRect(QRectF(cell.left() + 2, cell.bottom() - 5, cell.width() - 4, 4),
                    sheet.runs[c].color);
         p.setPen(sheet.runs[c].color.darker(120));
-        p.drawText(cell.adjusted(6, 0, -6, -6), kCellFlags, sheet.runs[c].label);
+        p.drawText(cell.adjusted(6, 0, -6, -6), cellFlags(bm, sheet.runs[c].label, t.colW - 12),
+                   sheet.runs[c].label);
     }
     y += t.headerH;
     bool shade = false;
@@ -101,7 +113,7 @@ void paintTable(QPainter& p, const QRectF& area, const LabSheet& sheet) {
         for (std::size_t c = 0; c < row.cells.size(); ++c)
             p.drawText(QRectF(area.left() + t.nameW + t.colW * static_cast<double>(c) + 6, y,
                               t.colW - 12, h),
-                       kCellFlags, row.cells[c]);
+                       cellFlags(fm, row.cells[c], t.colW - 12), row.cells[c]);
         y += h;
     }
     p.setPen(QPen(QColor(90, 90, 90), 1.5));

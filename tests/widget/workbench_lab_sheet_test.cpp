@@ -7,6 +7,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QMessageBox>
 #include <QProcess>
@@ -64,6 +65,17 @@ void onNextModal(std::function<void(T*)> act) {
         }
     });
     timer->start();
+}
+
+/// Types path into a file dialog's name box and presses Save. selectFile alone does not fill
+/// the box while it has the focus (QFileDialog::selectFile), so the text is set directly.
+void typeAndSave(QFileDialog* d, const QString& path) {
+    d->selectFile(path);
+    auto* name = d->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"));
+    QVERIFY(name);
+    name->setText(path);
+    static_cast<QDialog*>(d)->accept();  // QFileDialog::accept, as its Save button
+    if (d->isVisible()) d->reject();     // refused: closed, so the test fails instead of hanging
 }
 
 }  // namespace
@@ -170,8 +182,7 @@ class WorkbenchLabSheetTest : public QObject {
         bool dialogSeen = false;
         onNextModal<QFileDialog>([&](QFileDialog* d) {
             dialogSeen = true;
-            d->selectFile(typed);
-            static_cast<QDialog*>(d)->accept();  // QFileDialog::accept, as its Save button
+            typeAndSave(d, typed);
         });
         w.exportAction()->trigger();
         QVERIFY(dialogSeen);
@@ -209,8 +220,7 @@ class WorkbenchLabSheetTest : public QObject {
                 warned = box->text();
                 box->close();
             });
-            d->selectFile(nowhere);
-            static_cast<QDialog*>(d)->accept();  // QFileDialog::accept, as its Save button
+            typeAndSave(d, nowhere);
         });
         w.exportAction()->trigger();
         QVERIFY2(warned.contains(nowhere), qPrintable(warned));
