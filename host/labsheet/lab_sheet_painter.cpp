@@ -9,10 +9,11 @@ namespace trilho {
 
 namespace {
 
-constexpr double kMargin = 80.0;  ///< sheet pixels, about 13.5 mm: inside any printer's margin
-constexpr double kPlotHeight = 600.0;
-constexpr int kTableFontPx = 16;    ///< the table's type when it fits
-constexpr int kTableMinFontPx = 9;  ///< smaller than this no one reads it printed
+constexpr double kMargin = 80.0;       ///< sheet pixels, about 13.5 mm: inside any printer's margin
+constexpr double kPlotHeight = 440.0;  ///< the responses
+constexpr double kDriveHeight = 210.0;  ///< the drive below them
+constexpr int kTableFontPx = 16;        ///< the table's type when it fits
+constexpr int kTableMinFontPx = 9;      ///< smaller than this no one reads it printed
 
 constexpr int kCellFlags = Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap;
 
@@ -167,9 +168,11 @@ void paintLabSheet(QPainter& p, const LabSheet& sheet) {
                                        : sheet.model);
     y += 8;
 
-    // The runs overlaid.
-    paintLabSheetPlot(p, QRectF(left, y, width, kPlotHeight), sheet);
-    y += kPlotHeight + 18;
+    // The runs overlaid: their responses, and below the drive their loops wrote.
+    paintLabSheetPlot(p, QRectF(left, y, width, kPlotHeight), sheet, LabSheetChannel::Position);
+    y += kPlotHeight + 4;
+    paintLabSheetPlot(p, QRectF(left, y, width, kDriveHeight), sheet, LabSheetChannel::Drive);
+    y += kDriveHeight + 18;
 
     // The table to the footer.
     const double footerTop = kLabSheetHeightPx - kMargin - 70.0;

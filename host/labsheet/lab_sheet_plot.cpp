@@ -23,6 +23,30 @@ Origin originOf(const LabSheetRun& run) {
             m.ok ? m.startMm : (c.size() ? c.setpointMm[0] : 0.0)};
 }
 
+/// The rail's DAC code at rest (its drive is plotted from it); a DC table's drive is a signed
+/// PWM %, plotted as it is (ui/workbench/run_plot.cpp's driveOffset).
+constexpr double kRailDacZero = 128.0;
+
+bool isTable(const LabSheetRun& run) {
+    return run.record->hasConditions && run.record->conditions.profile.kind == MachineKind::DcTable;
+}
+
+/// One curve: a channel of a run, less its origin, solid or dashed.
+struct Series {
+    const std::vector<double>* values;
+    Origin origin;
+    bool dashed;
+};
+
+/// The curves of a run on the plot of channel: position and its setpoint dashed, or the drive.
+std::vector<Series> seriesOf(const LabSheetRun& run, LabSheetChannel channel) {
+    const RunChannels& c = run.record->channels;
+    const Origin o = originOf(run);
+    if (channel == LabSheetChannel::Drive)
+        return {{&c.drive, {o.t0, isTable(run) ? 0.0 : kRailDacZero}, false}};
+    return {{&c.setpointMm, o, true}, {&c.positionMm, o, false}};
+}
+
 QString tickText(double v, double step) {
     // As many decimals as the step needs (0.05 -> 2), none for whole steps.
     const int decimals = std::clamp(static_cast<int>(std::ceil(-std::log10(step) - 1e-9)), 0, 6);
@@ -93,7 +117,9 @@ std::vector<double> labSheetTicks(double lo, double hi, int count) {
     return ticks;
 }
 
-void paintLabSheetPlot(QPainter& p, const QRectF& area, const LabSheet& sheet) {
+void paintLabSheetPlot(QPainter& p, const QRectF& area, const LabSheet& sheet,
+                       LabSheetChannel channel) {
+    const bool position = channel == LabSheetChannel::Position;
     p.save();
     const QFont tickFont = labSheetFont(15);
     const QFontMetricsF fm(tickFont, p.device());
@@ -110,10 +136,10 @@ void paintLabSheetPlot(QPainter& p, const QRectF& area, const LabSheet& sheet) {
         const Origin o = originOf(run);
         xLo = std::min(xLo, c.timeS.front() - o.t0);
         xHi = std::max(xHi, c.timeS.back() - o.t0);
-        for (const auto* v : {&c.positionMm, &c.setpointMm})
-            for (const double y : *v) {
-                yLo = std::min(yLo, y - o.y0);
-                yHi = std::max(yHi, y - o.y0);
+        for (const Series& series : seriesOf(run, channel))
+            for (const double y : *series.values) {
+                yLo = std::min(yLo, y - series.origin.y0);
+                yHi = std::max(yHi, y - series.origin.y0);
             }
     }
     if (!(yHi >= yLo)) yLo = 0.0, yHi = 1.0;
@@ -158,24 +184,40 @@ void paintLabSheetPlot(QPainter& p, const QRectF& area, const LabSheet& sheet) {
     p.save();
     p.translate(area.left() + fm.height() * 0.2, r.center().y());
     p.rotate(-90);
+    QString yLabel = QStringLiteral("displacement from the start (mm)");
+    if (!position) {
+        bool rail = false, table = false;
+        for (const LabSheetRun& run : sheet.runs)
+            (isTable(run) ? table : rail) = true;
+        yLabel = rail && table ? QStringLiteral("drive (codes-128 | %)")
+                 : table       ? QStringLiteral("drive (PWM %)")
+                               : QStringLiteral("drive (codes - 128)");
+    }
+    // Never wider than its axis (the drive's plot is short).
     p.drawText(QRectF(-r.height() / 2, 0, r.height(), fm.height()), Qt::AlignCenter,
-               QStringLiteral("displacement from the start (mm)"));
+               fm.elidedText(yLabel, Qt::ElideRight, r.height()));
     p.restore();
 
-    // The curves: setpoints dashed under the responses.
+    // The curves: dashed ones (setpoints) under the solid ones.
     p.setClipRect(r.adjusted(1, 1, -1, -1));
     p.setRenderHint(QPainter::Antialiasing, true);
-    for (const bool response : {false, true})
-        for (const LabSheetRun& run : sheet.runs) {
-            const RunChannels& c = run.record->channels;
-            const QPolygonF line = envelope(c.timeS, response ? c.positionMm : c.setpointMm,
-                                            originOf(run), xLo, sx, yLo, sy, r);
-            QPen pen(run.color, response ? 3.0 : 1.6, response ? Qt::SolidLine : Qt::DashLine);
-            pen.setJoinStyle(Qt::RoundJoin);
-            p.setPen(pen);
-            p.drawPolyline(line);
-        }
+    for (const bool dashed : {true, false})
+        for (const LabSheetRun& run : sheet.runs)
+            for (const Series& series : seriesOf(run, channel)) {
+                if (series.dashed != dashed) continue;
+                const QPolygonF line = envelope(run.record->channels.timeS, *series.values,
+                                                series.origin, xLo, sx, yLo, sy, r);
+                QPen pen(run.color, dashed ? 1.6 : (position ? 3.0 : 2.0),
+                         dashed ? Qt::DashLine : Qt::SolidLine);
+                pen.setJoinStyle(Qt::RoundJoin);
+                p.setPen(pen);
+                p.drawPolyline(line);
+            }
     p.setClipping(false);
+    if (!position) {  // the legend is the position plot's, above
+        p.restore();
+        return;
+    }
 
     // The legend, bottom right inside the plot (a step's response leaves that corner empty).
     const QFont legendFont = labSheetFont(15);
