@@ -1,8 +1,8 @@
 #pragma once
 // A lab sheet (issue 33 item 8): one A4 page a teacher prints and a student hands in, of the
-// runs compared in a lesson: their responses and drives overlaid, their conditions (machine, law, period,
-// gains, payload, test, when they ran) and their metrics side by side, the model when one was
-// identified, and the date the sheet was made. This is its content, as text; the page is drawn
+// runs compared in a lesson: their responses and drives overlaid, their conditions (machine, law,
+// period, gains, payload, test, when they ran) and their metrics side by side, the model when one
+// was identified, and the date the sheet was made. This is its content, as text; the page is drawn
 // by lab_sheet_painter.h and written by lab_sheet_file.h. `trilho-cli tune report` and the
 // workbench's File > Export... make the same sheet from the same runs.
 #include <QColor>
