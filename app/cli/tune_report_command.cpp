@@ -26,9 +26,9 @@ int tuneReportCommand(const QStringList& args) {
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral(
         "Make the lab sheet of saved runs (tune step --trace, run --trace, the workbench's Save "
-        "run): one A4 page with their responses overlaid, their machine, law, period, gains, "
-        "payload and test, and their metrics side by side as 'tune metrics' prints them, the "
-        "model when one was identified and the date. Written as a PDF, a PNG of the same page "
+        "run): one A4 page with their responses and drives overlaid, their machine, law, period, "
+        "gains, payload and test, and their metrics side by side as 'tune metrics' prints them, "
+        "the model when one was identified and the date. Written as a PDF, a PNG of the same page "
         "(1240 x 1754 px, 150 dpi), or both; each atomically. The sheet's text is printed."));
     const QCommandLineOption pdfOpt(QStringLiteral("pdf"),
                                     QStringLiteral("Write the sheet as a one-page PDF here."),
