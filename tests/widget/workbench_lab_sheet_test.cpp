@@ -12,6 +12,7 @@
 #include <QMessageBox>
 #include <QProcess>
 #include <QSignalSpy>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
@@ -100,7 +101,11 @@ class WorkbenchLabSheetTest : public QObject {
     }
 
   private slots:
-    void initTestCase() { installLanguage(QStringLiteral("en")); }
+    void initTestCase() {
+        installLanguage(QStringLiteral("en"));
+        // The file dialog keeps its history in the user's settings: not this test's.
+        QStandardPaths::setTestModeEnabled(true);
+    }
 
     // The sheet of the two runs on screen: a PNG of the page with both curves, and the same
     // metric rows as `tune report` prints of the same runs saved.
