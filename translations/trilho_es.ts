@@ -3206,6 +3206,18 @@
         <translation>Borrar</translation>
     </message>
     <message>
+        <source>&amp;File</source>
+        <translation>&amp;Archivo</translation>
+    </message>
+    <message>
+        <source>&amp;Export lab sheet...</source>
+        <translation>&amp;Exportar hoja de laboratorio...</translation>
+    </message>
+    <message>
+        <source>The runs shown, overlaid, with their gains, law, period, payload and metrics side by side: one A4 page, PDF or PNG</source>
+        <translation>Los ensayos mostrados, superpuestos, con sus ganancias, ley, período, carga y métricas lado a lado: una página A4, PDF o PNG</translation>
+    </message>
+    <message>
         <source>Margin</source>
         <translation>Margen</translation>
     </message>
@@ -3344,6 +3356,34 @@
     <message>
         <source>Saved %1: trilho-cli run --machine %1 uses it.</source>
         <translation>Guardado %1: trilho-cli run --machine %1 lo usa.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: a lab sheet is a .pdf or a .png file</source>
+        <translation>&apos;%1&apos;: una hoja de laboratorio es un archivo .pdf o .png</translation>
+    </message>
+    <message>
+        <source>No run is shown: there is nothing to put on a lab sheet.</source>
+        <translation>No se muestra ningún ensayo: no hay nada que poner en una hoja de laboratorio.</translation>
+    </message>
+    <message>
+        <source>%1 runs are shown: at most %2 fit one sheet (untick some in the runs&apos; list)</source>
+        <translation>Se muestran %1 ensayos: caben como máximo %2 en una hoja (desmarque algunos en la lista de ensayos)</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation>Imagen PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>Export lab sheet</source>
+        <translation>Exportar hoja de laboratorio</translation>
+    </message>
+    <message>
+        <source>Lab sheet written: %1</source>
+        <translation>Hoja de laboratorio escrita: %1</translation>
     </message>
 </context>
 <context>

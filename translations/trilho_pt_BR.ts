@@ -3206,6 +3206,18 @@
         <translation>Limpar</translation>
     </message>
     <message>
+        <source>&amp;File</source>
+        <translation>&amp;Arquivo</translation>
+    </message>
+    <message>
+        <source>&amp;Export lab sheet...</source>
+        <translation>&amp;Exportar folha de laboratório...</translation>
+    </message>
+    <message>
+        <source>The runs shown, overlaid, with their gains, law, period, payload and metrics side by side: one A4 page, PDF or PNG</source>
+        <translation>Os ensaios mostrados, sobrepostos, com seus ganhos, lei, período, carga e métricas lado a lado: uma página A4, PDF ou PNG</translation>
+    </message>
+    <message>
         <source>Margin</source>
         <translation>Margem</translation>
     </message>
@@ -3344,6 +3356,34 @@
     <message>
         <source>Saved %1: trilho-cli run --machine %1 uses it.</source>
         <translation>Salvo %1: trilho-cli run --machine %1 o usa.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: a lab sheet is a .pdf or a .png file</source>
+        <translation>&apos;%1&apos;: uma folha de laboratório é um arquivo .pdf ou .png</translation>
+    </message>
+    <message>
+        <source>No run is shown: there is nothing to put on a lab sheet.</source>
+        <translation>Nenhum ensaio está mostrado: não há o que pôr numa folha de laboratório.</translation>
+    </message>
+    <message>
+        <source>%1 runs are shown: at most %2 fit one sheet (untick some in the runs&apos; list)</source>
+        <translation>%1 ensaios estão mostrados: no máximo %2 cabem numa folha (desmarque alguns na lista de ensaios)</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation>Imagem PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>Export lab sheet</source>
+        <translation>Exportar folha de laboratório</translation>
+    </message>
+    <message>
+        <source>Lab sheet written: %1</source>
+        <translation>Folha de laboratório gravada: %1</translation>
     </message>
 </context>
 <context>
