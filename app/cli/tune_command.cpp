@@ -135,10 +135,27 @@ int stepCommand(const QStringList& args) {
         QStringLiteral("new-ki"), QStringLiteral("Ki from --change-at on."), QStringLiteral("K"));
     const QCommandLineOption newKdOpt(
         QStringLiteral("new-kd"), QStringLiteral("Kd from --change-at on."), QStringLiteral("K"));
+    // The teaching switches (issue 33 item 9).
+    const QCommandLineOption antiWindupOpt(
+        QStringLiteral("anti-windup"),
+        QStringLiteral("The engineered law's anti-windup: on (default) or off (its integral "
+                       "winds while the output is pinned)."),
+        QStringLiteral("on|off"));
+    const QCommandLineOption noiseOpt(
+        QStringLiteral("encoder-noise"),
+        QStringLiteral("Rail: the encoder reads up to +-N counts off, uniform each tick from the "
+                       "seed (0-100; default 0)."),
+        QStringLiteral("N"));
+    const QCommandLineOption quantOpt(
+        QStringLiteral("dac-quantisation"),
+        QStringLiteral("Rail, engineered law: on (default, the 8-bit DAC) or off (the amplifier "
+                       "gets the loop's command unrounded)."),
+        QStringLiteral("on|off"));
     parser.addOptions({machineOpt, axisOpt,     ampOpt,   startOpt,  lawOpt,      kpOpt,
                        kiOpt,      kdOpt,       kffOpt,   b0Opt,     b1Opt,       periodOpt,
                        massOpt,    seedOpt,     fracOpt,  settleOpt, durationOpt, traceOpt,
-                       jsonOpt,    changeAtOpt, newKpOpt, newKiOpt,  newKdOpt});
+                       jsonOpt,    changeAtOpt, newKpOpt, newKiOpt,  newKdOpt,    antiWindupOpt,
+                       noiseOpt,   quantOpt});
     if (auto done = parseArguments(parser, args, "tune step")) return *done;
     auto usage = [](const QString& m) { return usageError("tune step", m); };
     if (!parser.positionalArguments().isEmpty())
@@ -246,6 +263,25 @@ int stepCommand(const QStringList& args) {
     if (auto e = number(settleOpt, 0.0, 60.0, spec.settleS)) return *e;
     if (auto e = number(durationOpt, 0.01, 600.0, spec.maxDurationS)) return *e;
     if (auto m = readSeed(parser, seedOpt, spec.seed)) return usage(*m);
+    for (const auto& [opt, into] : {std::pair{&antiWindupOpt, &spec.antiWindup},
+                                    std::pair{&quantOpt, &spec.dacQuantisation}}) {
+        if (!parser.isSet(*opt)) continue;
+        const QString v = parser.value(*opt);
+        if (v != QLatin1String("on") && v != QLatin1String("off"))
+            return usage(
+                QStringLiteral("--%1 must be on or off (got '%2')").arg(opt->names().front(), v));
+        *into = v == QLatin1String("on");
+    }
+    if (parser.isSet(noiseOpt)) {
+        bool ok = false;
+        const int n = parser.value(noiseOpt).toInt(&ok);
+        if (!ok || n < 0 || n > kMaxEncoderNoiseCounts)
+            return usage(QStringLiteral("--encoder-noise must be a whole number of counts from 0 "
+                                        "to %1 (got '%2')")
+                             .arg(kMaxEncoderNoiseCounts)
+                             .arg(parser.value(noiseOpt)));
+        spec.encoderNoiseCounts = n;
+    }
     const QString tracePath = parser.value(traceOpt);
     if (!tracePath.isEmpty()) {
         // Never overwrite the profile the test runs on, with the trace or with its sidecar.

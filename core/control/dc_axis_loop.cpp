@@ -68,7 +68,7 @@ double DcAxisLoop::update(double setpointMm, double velocityMmS, double accelMmS
     const double ff = g.kff * (velocityMmS + axis_.timeConstantS * accelMmS2) + friction;
     const double free = ff + g.kp * eMm + g.ki * integral_;
     const bool pushingIntoClamp = (free > clamp_ && eMm > 0.0) || (free < -clamp_ && eMm < 0.0);
-    if (!pushingIntoClamp)
+    if (!pushingIntoClamp || !antiWindup_)
         integral_ += eMm * dtS * (phase_ == Phase::Settling ? kSettleIntegralBoost : 1.0);
     u_ = std::clamp(ff + g.kp * eMm + g.ki * integral_, -clamp_, clamp_);
     return u_;

@@ -24,6 +24,8 @@ class DcAxisLoop {
     /// dutyStepPercent: the drive's resolution, one duty step of the board's PWM in percent
     /// (100 / pwmDutyMax: 0.405 % on seed 004's ICR1 = 247), which floors the drive.
     DcAxisLoop(const DcAxisParams& axis, double clampPercent, DcLaw law, double dutyStepPercent);
+    /// Off: the engineered integral winds while the drive is clamped (a teaching switch).
+    void setAntiWindup(bool on) { antiWindup_ = on; }
 
     /// One period: setpoint, commanded velocity and acceleration (mm, mm/s, mm/s2), measured
     /// position (mm). Returns the signed PWM percent.
@@ -60,7 +62,8 @@ class DcAxisLoop {
     DcAxisParams axis_;
     double clamp_;
     DcLaw law_;
-    double dutyStep_;         ///< one PWM duty step, % (see the constructor)
+    double dutyStep_;  ///< one PWM duty step, % (see the constructor)
+    bool antiWindup_ = true;
     double ePrevRad_ = 0.0;   ///< seed laws: the last error, rad (|e| under Seed)
     double direction_ = 1.0;  ///< seed law: the move's direction bit as a sign
     double integral_ = 0.0;   ///< engineered: integral of e, mm.s

@@ -95,7 +95,10 @@ LoopOutput PositionLoop::engineered(const LoopInput& in) {
     const double candidate = integral_ + g.ki * e * in.dtS;
     const double unclamped = pdf + candidate;
     const bool pinned = (unclamped > limit && e > 0) || (unclamped < -limit && e < 0);
-    if (!pinned) integral_ = std::clamp(candidate, -limit, limit);
+    if (!antiWindup_)
+        integral_ = candidate;  // the teaching switch: a plain integrator, winding while pinned
+    else if (!pinned)
+        integral_ = std::clamp(candidate, -limit, limit);
     out.i = integral_;
     double u = pdf + integral_;
     double limited = std::clamp(u, -limit, limit);

@@ -45,6 +45,11 @@ class PositionLoop {
     /// Changes gains without a jump in the output (the integrator absorbs the difference).
     void setGains(LoopLaw law, const LoopGains& gains);
     void setLaw(LoopLaw law);
+    /// The engineered law's anti-windup (on by default: its integrator stops while the output
+    /// is pinned and stays within the output's range). Off only as a teaching switch (issue 33
+    /// item 9, the step experiment): a plain integrator that winds while pinned.
+    void setAntiWindup(bool on) { antiWindup_ = on; }
+    bool antiWindup() const { return antiWindup_; }
     LoopLaw law() const { return params_.law; }
     const LoopGains& gains() const {
         return params_.law == LoopLaw::Classic ? params_.classic : params_.engineered;
@@ -65,6 +70,7 @@ class PositionLoop {
     double errorSum_ = 0.0;  ///< mm, summed every tick (not scaled by the period, as the VB did)
     // engineered state
     double integral_ = 0.0;  ///< codes
+    bool antiWindup_ = true;
     double previousCommand_ = 0.0;
     double residue_ = 0.0;  ///< quantization error carried to the next tick, codes
     LoopInput last_{};

@@ -48,6 +48,8 @@ class RailServo {
     void setSoftLimitsActive(bool on) { limitsActive_ = on; }
     double speedOverride() const { return override_; }
     void setGains(LoopLaw law, const LoopGains& gains) { loop_.setGains(law, gains); }
+    /// The engineered law's anti-windup; off only as a teaching switch (PositionLoop).
+    void setAntiWindup(bool on) { loop_.setAntiWindup(on); }
     /// Chooses the law and, with it, its period (profile().loop.samplePeriodS): the classic
     /// law runs at the VB's 10 ms (kClassicSamplePeriodS) unless the period already suits it,
     /// the engineered law at the period it started with (the profile's, else the default 1 ms).

@@ -177,6 +177,9 @@ QByteArray runConditionsToJson(const RunConditions& c, const StepMetrics* metric
     o[QStringLiteral("tick_jitter_ms")] = c.tickJitterMs;
     o[QStringLiteral("jitter_rate")] = c.jitterRate;
     o[QStringLiteral("gain_change")] = gainChangeToJson(c);
+    o[QStringLiteral("anti_windup")] = c.antiWindup;
+    o[QStringLiteral("encoder_noise_counts")] = c.encoderNoiseCounts;
+    o[QStringLiteral("dac_quantisation")] = c.dacQuantisation;
     o[QStringLiteral("profile")] =
         QJsonDocument::fromJson(machineProfileToJson(c.profile)).object();
     if (metrics) o[QStringLiteral("metrics")] = stepMetricsToJson(*metrics);
@@ -690,6 +693,22 @@ std::optional<RunConditions> runConditionsFromJson(const QByteArray& json, const
         c.gainChange = gc;
     } else if (!change.isNull() && !change.isUndefined()) {
         return bad(QStringLiteral("gain_change"), QStringLiteral("must be an object or null"));
+    }
+    // The teaching switches (issue 33 item 9); a sidecar written before them has them on, 0.
+    for (const auto& [key, into] : {std::pair{"anti_windup", &c.antiWindup},
+                                    std::pair{"dac_quantisation", &c.dacQuantisation}}) {
+        const QJsonValue v = o.value(QLatin1String(key));
+        if (v.isBool())
+            *into = v.toBool();
+        else if (!v.isUndefined())
+            return bad(QLatin1String(key), QStringLiteral("must be true or false"));
+    }
+    if (const QJsonValue v = o.value(QStringLiteral("encoder_noise_counts")); !v.isUndefined()) {
+        const double n = v.toDouble(-1.0);
+        if (!v.isDouble() || !(n >= 0.0 && n <= 100.0) || n != std::floor(n))
+            return bad(QStringLiteral("encoder_noise_counts"),
+                       QStringLiteral("must be a whole number from 0 to 100"));
+        c.encoderNoiseCounts = static_cast<int>(n);
     }
     return c;
 }

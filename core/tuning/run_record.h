@@ -60,6 +60,10 @@ struct RunConditions {
     double tickJitterMs = 0.0;
     double jitterRate = 0.0;
     std::optional<GainChange> gainChange;  ///< none: one set of gains throughout
+    /// Teaching switches of a step test (issue 33 item 9; absent from older sidecars: on, 0, on).
+    bool antiWindup = true;       ///< the engineered law's anti-windup
+    int encoderNoiseCounts = 0;   ///< encoder read noise, +- counts a tick (the rail)
+    bool dacQuantisation = true;  ///< false: the rail's DAC of unlimited resolution
 };
 
 /// The tick at which a step test's gain change takes effect: the step's tick (after preRollS)

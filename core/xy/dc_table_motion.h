@@ -52,6 +52,12 @@ class DcTableMotion final : public XyMotion {
     bool homingMoves() const override { return false; }  // the power-on zero is the origin
     XyPoint commanded() const override { return commanded_; }
     XySample sample() const override { return sample_; }
+    /// The engineered law's anti-windup on both axes; off only as a teaching switch (issue 33
+    /// item 9, the step experiment): the integral winds while the drive is clamped.
+    void setAntiWindup(bool on) {
+        for (DcAxisLoop& l : loops_)
+            l.setAntiWindup(on);
+    }
 
     /// Direct drive of one axis (identification, core/tuning/dc_identification_experiment): the
     /// axis' loop is bypassed and `percent` (signed PWM %, held to the clamp) is written every

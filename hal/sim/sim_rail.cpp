@@ -44,7 +44,13 @@ void SimRail::placeAt(double positionMm) {
 std::int64_t SimRail::encoderCounts() const {
     if (stuck_) return stuckCounts_;
     return static_cast<std::int64_t>(std::floor(state_.drumMm * params_.countsPerMm + 0.5)) -
-           static_cast<std::int64_t>(lostCounts_);
+           static_cast<std::int64_t>(lostCounts_) + noiseCounts_;
+}
+
+void SimRail::setEncoderNoise(int counts, std::uint64_t seed) {
+    noiseMaxCounts_ = std::max(0, counts);
+    noiseRng_.seed(seed);
+    noiseCounts_ = 0;
 }
 
 std::uint16_t SimRail::readCounter() {
@@ -78,6 +84,9 @@ void SimRail::step(double dt) {
     const double h = dt / n;
     for (int i = 0; i < n; ++i)
         subStep(h);
+    if (noiseMaxCounts_ > 0)
+        noiseCounts_ = std::uniform_int_distribution<std::int64_t>(-noiseMaxCounts_,
+                                                                   noiseMaxCounts_)(noiseRng_);
     tornArmed_ = true;
 }
 
@@ -94,8 +103,8 @@ void SimRail::subStep(double h) {
 
     // DAC: channel A = V, channel B = 255 - V, each 0..255 -> -5..+5 V; the amplifier takes
     // A - B. Its offset is trimmed so that 128 is 0 V, as the document states: 127 codes a side.
-    s.referenceV =
-        std::clamp((static_cast<int>(driveCode()) - kDacZero) * (10.0 / 127.0), -10.0, 10.0);
+    const double code = std::isnan(fineCode_) ? static_cast<double>(driveCode()) : fineCode_;
+    s.referenceV = std::clamp((code - kDacZero) * (10.0 / 127.0), -10.0, 10.0);
 
     // Amplifier speed loop: first order towards the commanded speed; the force it may use is
     // the current limit, so the acceleration limit falls as the moving mass rises.

@@ -6,6 +6,7 @@
 // a centre switch that clears the counter. Deterministic for a seed; advanced only by step().
 #include <atomic>
 #include <cstdint>
+#include <limits>
 #include <random>
 
 #include "core/io/rail_io.h"
@@ -45,6 +46,15 @@ class SimRail final : public RailIo {
     const FaultInjection& faults() const { return faults_; }
     /// Puts the platform at rest at x (mm from the centre); the counter reads as if homed.
     void placeAt(double positionMm);
+    /// Teaching (issue 33 item 9): the counter reads up to +-counts off the truth, a uniform
+    /// integer drawn once a step() from its own generator (seeded here, so the plant's other
+    /// randomness is the same with or without it); 0 (the default) turns it off. The error does
+    /// not accumulate: it is read noise, not lost counts.
+    void setEncoderNoise(int counts, std::uint64_t seed);
+    /// Teaching (issue 33 item 9): a DAC of unlimited resolution. The reference follows this
+    /// code (fractional, 0-255) instead of the 8-bit code written; NaN (the default) goes back
+    /// to the written code. The caller sets it every tick, after the servo has written.
+    void setFineDrive(double code) { fineCode_ = code; }
     void setMassFactor(double factor) {
         params_.massFactor = factor;
         derive();
@@ -63,6 +73,10 @@ class SimRail final : public RailIo {
     FaultInjection faults_;
     PlantState state_;
     std::mt19937_64 rng_;
+    std::mt19937_64 noiseRng_;
+    int noiseMaxCounts_ = 0;
+    std::int64_t noiseCounts_ = 0;  ///< this step's read noise, counts
+    double fineCode_ = std::numeric_limits<double>::quiet_NaN();
     std::atomic<std::uint8_t> code_{kDacZero};
     double vmax_ = 0.0;               ///< mm/s at +10 V
     double forceMax_ = 0.0;           ///< N

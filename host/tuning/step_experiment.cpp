@@ -3,6 +3,7 @@
 #include <QDateTime>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/control/rail_servo.h"
 #include "core/tuning/trace_writer.h"
@@ -124,7 +125,10 @@ StepTestResult runRail(const StepTestSpec& spec, StepTestResult r) {
     const double dt = c.periodS;
     SimRail rail(profile.plant, spec.seed);
     rail.placeAt(c.startMm);
+    // The read noise draws from its own generator: the plant's other randomness is the same.
+    rail.setEncoderNoise(c.encoderNoiseCounts, spec.seed ^ 0x9E3779B97F4A7C15ull);
     RailServo servo(profile, rail);
+    servo.setAntiWindup(c.antiWindup);
     servo.resyncToCounter();
     servo.hold();
     const double target = c.startMm + c.amplitudeMm;
@@ -157,7 +161,13 @@ StepTestResult runRail(const StepTestSpec& spec, StepTestResult r) {
         // The classic law lets go of the drive once within 0.5 mm (the VB's motor(128)): the
         // servo then reports its position as the setpoint, the test still commands the target.
         const double sp = k >= preTicks && s.mode == ServoMode::Idle ? target : s.setpointMm;
-        pushCommon(ch, t, sp, s.positionMm, s.velocityMmS, o.code, s.setpointVelocityMmS,
+        // No DAC quantization: while the loop drives (the code written is the loop's), the
+        // amplifier gets the loop's command itself; what the record shows as the drive.
+        double drive = o.code;
+        if (!c.dacQuantisation && looping && rail.driveCode() == o.code)
+            drive = std::clamp(kDacZero + o.command, 0.0, 255.0);
+        rail.setFineDrive(drive != o.code ? drive : std::numeric_limits<double>::quiet_NaN());
+        pushCommon(ch, t, sp, s.positionMm, s.velocityMmS, drive, s.setpointVelocityMmS,
                    looping && o.saturated);
         ch.pCodes.push_back(q(o.p));
         ch.iCodes.push_back(q(o.i));
@@ -217,6 +227,7 @@ StepTestResult runTable(const StepTestSpec& spec, StepTestResult r) {
     else
         table.placeAt(otherMm, c.startMm);
     DcTableMotion motion(profile, table);
+    motion.setAntiWindup(c.antiWindup);
     motion.beginHoming();
     const XyPoint from = motion.measured();
     XyPoint to = from;
@@ -325,6 +336,18 @@ StepTestResult runStepTest(const StepTestSpec& spec) {
         return refuse(std::move(r), QStringLiteral("the gain change must come 0 to 600 s after "
                                                    "the step"));
     c.gainChange = spec.gainChange;
+    c.antiWindup = spec.antiWindup;
+    c.encoderNoiseCounts = spec.encoderNoiseCounts;
+    c.dacQuantisation = spec.dacQuantisation;
+    if (!(spec.encoderNoiseCounts >= 0 && spec.encoderNoiseCounts <= kMaxEncoderNoiseCounts))
+        return refuse(std::move(r), QStringLiteral("the encoder noise must be 0 to %1 counts "
+                                                   "(got %2)")
+                                        .arg(kMaxEncoderNoiseCounts)
+                                        .arg(spec.encoderNoiseCounts));
+    if (table && (spec.encoderNoiseCounts != 0 || !spec.dacQuantisation))
+        return refuse(std::move(r), QStringLiteral("the encoder noise and the DAC's "
+                                                   "quantization are the rail's (the DC table "
+                                                   "drives by PWM)"));
     if (!std::isfinite(spec.amplitudeMm) || spec.amplitudeMm == 0.0)
         return refuse(std::move(r),
                       QStringLiteral("the amplitude must be a non-zero number of mm"));
@@ -339,6 +362,13 @@ StepTestResult runStepTest(const StepTestSpec& spec) {
     c.law = spec.law ? *spec.law
                      : (table ? tableStepLaw(spec.profile.dcTable.law) : spec.profile.loop.law);
     c.gains = spec.gains ? *spec.gains : profileGains(spec.profile, spec.axis, c.law);
+    if (c.law == LoopLaw::Classic && !spec.antiWindup)
+        return refuse(std::move(r), QStringLiteral("the classic law has no anti-windup to turn "
+                                                   "off (its integral always winds)"));
+    if (c.law == LoopLaw::Classic && !spec.dacQuantisation)
+        return refuse(std::move(r), QStringLiteral("the classic law rounds to a DAC code in its "
+                                                   "own equation: the DAC's quantization can be "
+                                                   "turned off for the engineered law"));
     c.periodS = spec.periodS                ? *spec.periodS
                 : table                     ? spec.profile.dcTable.samplePeriodS
                 : c.law == LoopLaw::Classic ? kRailClassicPeriodS
@@ -403,6 +433,9 @@ StepTestSpec specFromConditions(const RunConditions& c) {
     s.maxDurationS = c.maxDurationS;
     s.envelopeMarginMm = c.envelopeMarginMm;
     s.gainChange = c.gainChange;
+    s.antiWindup = c.antiWindup;
+    s.encoderNoiseCounts = c.encoderNoiseCounts;
+    s.dacQuantisation = c.dacQuantisation;
     return s;
 }
 

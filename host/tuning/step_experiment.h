@@ -66,7 +66,19 @@ struct StepTestSpec {
     /// The rail's engineered law only: new gains part-way through the test (bumpless, as the
     /// main screen's boxes change them: the integral absorbs the difference).
     std::optional<GainChange> gainChange;
+    /// Teaching switches (issue 33 item 9). The engineered law's anti-windup (rail and DC
+    /// table); off, its integral winds while the output is pinned.
+    bool antiWindup = true;
+    /// The rail: the encoder reads up to +-this many counts off (uniform, drawn each tick from
+    /// the seed), 0 to kMaxEncoderNoiseCounts.
+    int encoderNoiseCounts = 0;
+    /// The rail's engineered law: false drives the amplifier from the loop's command with no
+    /// 8-bit rounding (a DAC of unlimited resolution), to see what the quantization costs.
+    bool dacQuantisation = true;
 };
+
+/// The largest encoder read noise a test takes, counts (22.8 counts/mm: 4.4 mm).
+inline constexpr int kMaxEncoderNoiseCounts = 100;
 
 enum class StepAbort : std::uint8_t {
     None,

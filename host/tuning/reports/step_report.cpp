@@ -1,5 +1,7 @@
 #include "host/tuning/reports/step_report.h"
 
+#include <QStringList>
+
 #include "host/tuning/reports/metrics_report.h"
 
 namespace trilho {
@@ -13,6 +15,9 @@ QJsonObject stepReportJson(const StepTestResult& r) {
     o[QStringLiteral("ok")] = r.ok() && r.metrics.ok;
     o[QStringLiteral("gain_change")] = gainChangeToJson(c);
     if (!r.gainChangeMissed.isEmpty()) o[QStringLiteral("gain_change_missed")] = r.gainChangeMissed;
+    o[QStringLiteral("anti_windup")] = c.antiWindup;
+    o[QStringLiteral("encoder_noise_counts")] = c.encoderNoiseCounts;
+    o[QStringLiteral("dac_quantisation")] = c.dacQuantisation;
     return o;
 }
 
@@ -43,6 +48,13 @@ QString stepReportText(const StepTestResult& r) {
                  .arg(c.gainChange->atS)
                  .arg(changed);
     }
+    // The teaching switches, said only when they differ from the machine's own.
+    QStringList switches;
+    if (!c.antiWindup) switches << QStringLiteral("anti-windup off");
+    if (c.encoderNoiseCounts > 0)
+        switches << QStringLiteral("encoder noise +-%1 counts").arg(c.encoderNoiseCounts);
+    if (!c.dacQuantisation) switches << QStringLiteral("DAC quantization off");
+    if (!switches.isEmpty()) t += switches.join(QStringLiteral(", ")) + QLatin1Char('\n');
     if (!r.gainChangeMissed.isEmpty())
         t += QStringLiteral("NOTE: %1: the run had one set of gains\n").arg(r.gainChangeMissed);
     if (!r.ok()) t += QStringLiteral("ABORTED: %1\n").arg(r.abortReason);
