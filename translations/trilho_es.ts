@@ -2471,6 +2471,45 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::PredictionView</name>
+    <message>
+        <source>Identify the plant to see the step the model predicts for the gains in the boxes; drag a gain&apos;s slider to move it.</source>
+        <translation>Identifique la planta para ver el escalón que el modelo predice para las ganancias de las casillas; arrastre el control deslizante de una ganancia para moverlo.</translation>
+    </message>
+    <message>
+        <source>No prediction: the period or the model is not valid.</source>
+        <translation>Sin predicción: el período o el modelo no es válido.</translation>
+    </message>
+    <message>
+        <source>Step of %1 mm predicted on the model (linear: no clamp, no feed-forward):</source>
+        <translation>Escalón de %1 mm predicho en el modelo (lineal: sin limitación, sin feed-forward):</translation>
+    </message>
+    <message>
+        <source>the loop is unstable, the response grows.</source>
+        <translation>el lazo es inestable, la respuesta crece.</translation>
+    </message>
+    <message>
+        <source>overshoot %1 %, not settled within %2 s.</source>
+        <translation>sobreimpulso %1 %, no establecido en %2 s.</translation>
+    </message>
+    <message>
+        <source>overshoot %1 %, settling (2 %) %2 s.</source>
+        <translation>sobreimpulso %1 %, establecimiento (2 %) %2 s.</translation>
+    </message>
+    <message>
+        <source>Grey: where the drag started.</source>
+        <translation>Gris: donde empezó el arrastre.</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>tiempo (s)</translation>
+    </message>
+    <message>
+        <source>position (mm)</source>
+        <translation>posición (mm)</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::ProgramLibraryPanel</name>
     <message>
         <source>Folder: %1</source>
@@ -2820,6 +2859,37 @@
     <message>
         <source>Stepper XY plotter</source>
         <translation>Plotter XY con motores paso a paso</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::TeachingSwitches</name>
+    <message>
+        <source>Teaching switches</source>
+        <translation>Interruptores didácticos</translation>
+    </message>
+    <message>
+        <source>Anti-windup</source>
+        <translation>Anti-windup</translation>
+    </message>
+    <message>
+        <source>Off: the engineered law&apos;s integral winds while the drive is pinned (lesson 14)</source>
+        <translation>Apagado: la integral de la ley diseñada se acumula mientras el accionamiento está saturado (lección 14)</translation>
+    </message>
+    <message>
+        <source>Encoder noise (counts)</source>
+        <translation>Ruido del encoder (cuentas)</translation>
+    </message>
+    <message>
+        <source>The counter reads up to this many counts off, each tick, from the seed (lesson 15)</source>
+        <translation>El contador lee hasta ese número de cuentas de más o de menos, en cada período, a partir de la semilla (lección 15)</translation>
+    </message>
+    <message>
+        <source>DAC quantization (8 bits)</source>
+        <translation>Cuantización del DAC (8 bits)</translation>
+    </message>
+    <message>
+        <source>Off: the amplifier gets the loop&apos;s command unrounded (lesson 15)</source>
+        <translation>Apagado: el amplificador recibe el comando del lazo sin redondeo (lección 15)</translation>
     </message>
 </context>
 <context>
@@ -3236,6 +3306,10 @@
     <message>
         <source>Poles</source>
         <translation>Polos</translation>
+    </message>
+    <message>
+        <source>Prediction</source>
+        <translation>Predicción</translation>
     </message>
     <message>
         <source>1996</source>

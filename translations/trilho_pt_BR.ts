@@ -2471,6 +2471,45 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::PredictionView</name>
+    <message>
+        <source>Identify the plant to see the step the model predicts for the gains in the boxes; drag a gain&apos;s slider to move it.</source>
+        <translation>Identifique a planta para ver o degrau que o modelo prevê para os ganhos nas caixas; arraste o controle deslizante de um ganho para movê-lo.</translation>
+    </message>
+    <message>
+        <source>No prediction: the period or the model is not valid.</source>
+        <translation>Sem previsão: o período ou o modelo não é válido.</translation>
+    </message>
+    <message>
+        <source>Step of %1 mm predicted on the model (linear: no clamp, no feed-forward):</source>
+        <translation>Degrau de %1 mm previsto no modelo (linear: sem limitação, sem feed-forward):</translation>
+    </message>
+    <message>
+        <source>the loop is unstable, the response grows.</source>
+        <translation>a malha é instável, a resposta cresce.</translation>
+    </message>
+    <message>
+        <source>overshoot %1 %, not settled within %2 s.</source>
+        <translation>sobressinal %1 %, não acomodado em %2 s.</translation>
+    </message>
+    <message>
+        <source>overshoot %1 %, settling (2 %) %2 s.</source>
+        <translation>sobressinal %1 %, acomodação (2 %) %2 s.</translation>
+    </message>
+    <message>
+        <source>Grey: where the drag started.</source>
+        <translation>Cinza: onde o arrasto começou.</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>tempo (s)</translation>
+    </message>
+    <message>
+        <source>position (mm)</source>
+        <translation>posição (mm)</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::ProgramLibraryPanel</name>
     <message>
         <source>Folder: %1</source>
@@ -2820,6 +2859,37 @@
     <message>
         <source>Stepper XY plotter</source>
         <translation>Plotter XY com motores de passo</translation>
+    </message>
+</context>
+<context>
+    <name>trilho::ui::TeachingSwitches</name>
+    <message>
+        <source>Teaching switches</source>
+        <translation>Chaves didáticas</translation>
+    </message>
+    <message>
+        <source>Anti-windup</source>
+        <translation>Anti-windup</translation>
+    </message>
+    <message>
+        <source>Off: the engineered law&apos;s integral winds while the drive is pinned (lesson 14)</source>
+        <translation>Desligado: a integral da lei projetada acumula enquanto o acionamento está saturado (lição 14)</translation>
+    </message>
+    <message>
+        <source>Encoder noise (counts)</source>
+        <translation>Ruído do encoder (contagens)</translation>
+    </message>
+    <message>
+        <source>The counter reads up to this many counts off, each tick, from the seed (lesson 15)</source>
+        <translation>O contador lê até esse número de contagens a mais ou a menos, a cada período, a partir da semente (lição 15)</translation>
+    </message>
+    <message>
+        <source>DAC quantization (8 bits)</source>
+        <translation>Quantização do DAC (8 bits)</translation>
+    </message>
+    <message>
+        <source>Off: the amplifier gets the loop&apos;s command unrounded (lesson 15)</source>
+        <translation>Desligado: o amplificador recebe o comando da malha sem arredondamento (lição 15)</translation>
     </message>
 </context>
 <context>
@@ -3236,6 +3306,10 @@
     <message>
         <source>Poles</source>
         <translation>Polos</translation>
+    </message>
+    <message>
+        <source>Prediction</source>
+        <translation>Previsão</translation>
     </message>
     <message>
         <source>1996</source>

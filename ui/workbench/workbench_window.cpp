@@ -41,11 +41,14 @@
 #include "host/tuning/relay_comparison.h"
 #include "ui/background_pool.h"
 #include "ui/wheel_needs_focus.h"
+#include "ui/workbench/log_gain_slider.h"
 #include "ui/workbench/margin_view.h"
 #include "ui/workbench/model_view.h"
 #include "ui/workbench/poles_view.h"
+#include "ui/workbench/prediction_view.h"
 #include "ui/workbench/run_overlay.h"
 #include "ui/workbench/run_plot.h"
+#include "ui/workbench/teaching_switches.h"
 #include "ui/workbench/terms_view.h"
 #include "ui/workbench/workbench_lab_sheet.h"
 
@@ -210,6 +213,10 @@ void WorkbenchWindow::build() {
     cf->addRow(newKdLabel_, newKd_);
     f->addRow(changeBox_);
     changeBox_->setVisible(rail_);
+    // Issue 33 item 9: anti-windup, encoder noise, DAC quantization (lessons 14 and 15).
+    switches_ = new TeachingSwitches(testBox_);
+    f->addRow(switches_);
+    switches_->setVisible(!plotter());
     f->addRow(run_);
     f->addRow(compare_);
     // The plotter's test: the margin of its speed and acceleration against lost steps (it has
@@ -223,6 +230,12 @@ void WorkbenchWindow::build() {
                                                           ki_, kd_, mass_})
             f->setRowVisible(w, false);
         run_->hide();
+    }
+    if (!plotter()) {
+        // Issue 33 item 9: a log-scale slider under each gain box; pressing one keeps the
+        // Prediction page's response as the grey reference the drag is compared with.
+        gainSliders_ = {LogGainSlider::underBox(f, kp_), LogGainSlider::underBox(f, ki_),
+                        LogGainSlider::underBox(f, kd_)};
     }
     if (!rail_) {
         // The table's classic law has other gains (b0, b1): the boxes are the engineered law's.
@@ -309,6 +322,12 @@ void WorkbenchWindow::build() {
         tabs_->addTab(polesView_, QString());
     else
         polesView_->hide();
+    // The step the model predicts for the boxes' gains, moved live by the sliders.
+    predictionView_ = new PredictionView(this);
+    if (tunable())
+        tabs_->addTab(predictionView_, QString());
+    else
+        predictionView_->hide();
     auto* split = new QSplitter(Qt::Horizontal);
     split->addWidget(scroll);
     split->addWidget(tabs_);
@@ -333,6 +352,11 @@ void WorkbenchWindow::build() {
     for (QDoubleSpinBox* box : {kp_, ki_, kd_, period_})
         connect(box, &QDoubleSpinBox::valueChanged, this, &WorkbenchWindow::updatePoles);
     connect(law_, &QComboBox::currentIndexChanged, this, &WorkbenchWindow::updatePoles);
+    connect(amplitude_, &QDoubleSpinBox::valueChanged, this, &WorkbenchWindow::updatePoles);
+    // A model identified while another page showed: the Prediction page catches up when shown.
+    connect(tabs_, &QTabWidget::currentChanged, this, &WorkbenchWindow::updatePoles);
+    for (LogGainSlider* s : gainSliders_)
+        connect(s, &QSlider::sliderPressed, predictionView_, &PredictionView::keepReference);
     connect(run_, &QPushButton::clicked, this, &WorkbenchWindow::runStep);
     connect(compare_, &QPushButton::clicked, this, &WorkbenchWindow::compareLaws);
     connect(identify_, &QPushButton::clicked, this, &WorkbenchWindow::identify);
@@ -445,6 +469,7 @@ void WorkbenchWindow::retranslate() {
     tabs_->setTabText(1, tr("P, I, D terms"));
     if (tunable()) tabs_->setTabText(2, tr("Model"));
     if (tunable()) tabs_->setTabText(3, tr("Poles"));
+    if (tunable()) tabs_->setTabText(tabs_->indexOf(predictionView_), tr("Prediction"));
 }
 
 void WorkbenchWindow::changeEvent(QEvent* e) {
@@ -474,6 +499,8 @@ void WorkbenchWindow::lawChanged() {
     kd_->setValue(rail_ ? g.kd : g.kff);
     // Only the engineered law changes gains bumplessly (the 1996 law has no such transfer).
     changeBox_->setEnabled(rail_ && law == LoopLaw::Engineered);
+    switches_->setLaw(
+        rail_, rail_ ? law == LoopLaw::Engineered : profile_.dcTable.law == DcLaw::Engineered);
     if (rail_)
         period_->setValue(law == LoopLaw::Classic ? kClassicPeriodMs
                                                   : profile_.loop.samplePeriodS * 1e3);
@@ -503,6 +530,7 @@ void WorkbenchWindow::updatePoles() {
         spec.mmPerTurn = a.mmPerTurn;
     }
     polesView_->setLoop(spec);
+    predictionView_->setLoop(polesView_->model(), spec, amplitude_->value());
 }
 
 StepTestSpec WorkbenchWindow::currentSpec() const {
@@ -539,6 +567,7 @@ StepTestSpec WorkbenchWindow::currentSpec() const {
         g.kff = kd_->value();
         s.gains = g;
     }
+    switches_->apply(s);  // anti-windup, encoder noise, DAC quantization (where they apply)
     return s;
 }
 

@@ -33,9 +33,12 @@ class QTabWidget;
 namespace trilho {
 namespace ui {
 
+class LogGainSlider;
 class MarginView;
 class ModelView;
 class PolesView;
+class PredictionView;
+class TeachingSwitches;
 class RunOverlay;
 class TermsView;
 
@@ -101,6 +104,11 @@ class WorkbenchWindow : public QMainWindow {
     /// The rail's Poles page (the last identified model, the boxes' law, gains and period).
     PolesView* polesView() const { return polesView_; }
     QTabWidget* tabs() const { return tabs_; }
+    /// Issue 33 item 9: the Prediction page, the sliders under Kp, Ki and Kd (Kff on the DC
+    /// table; none on the plotter) and the teaching switches.
+    PredictionView* predictionView() const { return predictionView_; }
+    const std::vector<LogGainSlider*>& gainSliders() const { return gainSliders_; }
+    TeachingSwitches* teachingSwitches() const { return switches_; }
 
   signals:
     void runFinished();
@@ -168,6 +176,9 @@ class WorkbenchWindow : public QMainWindow {
     ModelView* model_;
     MarginView* marginView_;
     PolesView* polesView_;
+    PredictionView* predictionView_;
+    std::vector<LogGainSlider*> gainSliders_;
+    TeachingSwitches* switches_;
     QGroupBox *testBox_, *tuneBox_, *runsBox_;
     /// The rail's engineered law: new gains part-way through the test (`--change-at`).
     QGroupBox* changeBox_;
