@@ -114,6 +114,25 @@ class WorkbenchSlidersTest : public QObject {
             after.settlingTimeS != before.settlingTimeS,
             qPrintable(QStringLiteral("%1 %2").arg(after.settlingTimeS).arg(before.settlingTimeS)));
         QVERIFY(p->summary()->text().contains(QStringLiteral("Grey")));
+        // Lesson 16's figures, each as the page prints it.
+        auto* kpBox = w.findChild<QDoubleSpinBox*>(QStringLiteral("kp"));
+        const struct {
+            double kp, overshootPct, settlingS;
+        } lesson[] = {
+            {0.3, 21.2, 2.022}, {1.2, 2.7, 1.180}, {4.8, 7.8, 0.083}, {48.0, 66.3, 0.145}};
+        for (const auto& l : lesson) {
+            kpBox->setValue(l.kp);
+            QVERIFY2(std::abs(p->prediction().overshootPct - l.overshootPct) < 0.05,
+                     qPrintable(QString::number(p->prediction().overshootPct)));
+            QVERIFY2(std::abs(p->prediction().settlingTimeS - l.settlingS) < 0.0015,
+                     qPrintable(QString::number(p->prediction().settlingTimeS)));
+        }
+        // Past the Poles page's stability limit (Kp 143.2): the response grows.
+        kpBox->setValue(150.0);
+        QVERIFY(p->prediction().diverged);
+        QVERIFY(!w.polesView()->poles().stable);
+        QVERIFY(p->summary()->text().contains(QStringLiteral("unstable")));
+        kpBox->setValue(kp);
         // The page says the figures it plots.
         QVERIFY2(p->summary()->text().contains(QString::number(after.overshootPct, 'f', 1)),
                  qPrintable(p->summary()->text()));

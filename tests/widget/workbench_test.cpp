@@ -731,7 +731,7 @@ class WorkbenchTest : public QObject {
         QCOMPARE(w.runs().size(), std::size_t(1));
         QCOMPARE(w.runs()[0]->record.conditions.axis, 'y');
         QVERIFY2(w.runs()[0]->metrics.ok, w.runs()[0]->metrics.problem.c_str());
-        QCOMPARE(w.tabs()->count(), 4);  // responses, terms, model, poles
+        QCOMPARE(w.tabs()->count(), 5);  // responses, terms, model, poles, prediction
     }
 
     // The DC table's Poles page: per axis, the poles `tune poles --machine xy_dc_table --axis y`
