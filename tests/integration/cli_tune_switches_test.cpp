@@ -26,20 +26,20 @@ class CliTuneSwitches : public ::testing::Test {
   protected:
     QTemporaryDir dir;
     QStringList step(const QStringList& more) {
-        return QStringList{QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--json")} +
+        return QStringList{QStringLiteral("tune"), QStringLiteral("step"),
+                           QStringLiteral("--json")} +
                more;
     }
 };
 
 TEST_F(CliTuneSwitches, LessonFourteensOvershootWithAndWithoutAntiWindup) {
-    const QString profile =
-        writeIn(dir, QStringLiteral("rail-ferror-400.json"),
-                R"({"kind": "rail", "loop": {"followingErrorLimitMm": 400,
+    const QString profile = writeIn(dir, QStringLiteral("rail-ferror-400.json"),
+                                    R"({"kind": "rail", "loop": {"followingErrorLimitMm": 400,
                     "minFollowingErrorMm": 400}})");
-    const QStringList common{QStringLiteral("--machine"),   profile,
-                             QStringLiteral("--amplitude"), QStringLiteral("30"),
+    const QStringList common{QStringLiteral("--machine"),     profile,
+                             QStringLiteral("--amplitude"),   QStringLiteral("30"),
                              QStringLiteral("--mass-factor"), QStringLiteral("6"),
-                             QStringLiteral("--ki"),        QStringLiteral("2")};
+                             QStringLiteral("--ki"),          QStringLiteral("2")};
     const CliResult on = runCli(step(common));
     const CliResult off =
         runCli(step(common + QStringList{QStringLiteral("--anti-windup"), QStringLiteral("off")}));
@@ -53,19 +53,19 @@ TEST_F(CliTuneSwitches, LessonFourteensOvershootWithAndWithoutAntiWindup) {
     EXPECT_TRUE(a[QStringLiteral("anti_windup")].toBool());
     EXPECT_FALSE(b[QStringLiteral("anti_windup")].toBool());
     // The text report says the switch.
-    const CliResult text = runCli(QStringList{QStringLiteral("tune"), QStringLiteral("step")} +
-                                  common +
-                                  QStringList{QStringLiteral("--anti-windup"), QStringLiteral("off")});
+    const CliResult text =
+        runCli(QStringList{QStringLiteral("tune"), QStringLiteral("step")} + common +
+               QStringList{QStringLiteral("--anti-windup"), QStringLiteral("off")});
     EXPECT_TRUE(text.out.contains(QStringLiteral("anti-windup off"))) << text.out.toStdString();
 }
 
 TEST_F(CliTuneSwitches, NoiseAndQuantizationAreRecordedInTheSidecar) {
     const QString trace = dir.filePath(QStringLiteral("n.csv"));
-    const CliResult r = runCli(step({QStringLiteral("--machine"), QStringLiteral("rail"),
-                                     QStringLiteral("--amplitude"), QStringLiteral("10"),
-                                     QStringLiteral("--encoder-noise"), QStringLiteral("2"),
-                                     QStringLiteral("--dac-quantisation"), QStringLiteral("off"),
-                                     QStringLiteral("--trace"), trace}));
+    const CliResult r = runCli(
+        step({QStringLiteral("--machine"), QStringLiteral("rail"), QStringLiteral("--amplitude"),
+              QStringLiteral("10"), QStringLiteral("--encoder-noise"), QStringLiteral("2"),
+              QStringLiteral("--dac-quantisation"), QStringLiteral("off"),
+              QStringLiteral("--trace"), trace}));
     ASSERT_EQ(r.exit, 0) << r.err.toStdString();
     EXPECT_EQ(json(r)[QStringLiteral("encoder_noise_counts")].toInt(), 2);
     QFile side(trace + QStringLiteral(".run.json"));
@@ -83,8 +83,10 @@ TEST_F(CliTuneSwitches, BadValuesAreRefusedWithTheirOptionNamed) {
         const char* says;
     };
     const Case cases[] = {
-        {{QStringLiteral("--anti-windup"), QStringLiteral("maybe")}, "--anti-windup must be on or off"},
-        {{QStringLiteral("--dac-quantisation"), QStringLiteral("")}, "--dac-quantisation must be on or off"},
+        {{QStringLiteral("--anti-windup"), QStringLiteral("maybe")},
+         "--anti-windup must be on or off"},
+        {{QStringLiteral("--dac-quantisation"), QStringLiteral("")},
+         "--dac-quantisation must be on or off"},
         {{QStringLiteral("--encoder-noise"), QStringLiteral("-1")}, "--encoder-noise must be"},
         {{QStringLiteral("--encoder-noise"), QStringLiteral("101")}, "--encoder-noise must be"},
         {{QStringLiteral("--encoder-noise"), QStringLiteral("1.5")}, "--encoder-noise must be"},
@@ -97,16 +99,16 @@ TEST_F(CliTuneSwitches, BadValuesAreRefusedWithTheirOptionNamed) {
          "engineered law"},
     };
     for (const Case& c : cases) {
-        const CliResult r = runCli(
-            step(QStringList{QStringLiteral("--amplitude"), QStringLiteral("10")} + c.args));
+        const CliResult r =
+            runCli(step(QStringList{QStringLiteral("--amplitude"), QStringLiteral("10")} + c.args));
         EXPECT_EQ(r.exit, 2) << c.args.join(' ').toStdString();
         EXPECT_TRUE(r.err.contains(QLatin1String(c.says)))
             << c.args.join(' ').toStdString() << ": " << r.err.toStdString();
     }
-    const CliResult table = runCli(step({QStringLiteral("--machine"), QStringLiteral("xy_dc_table"),
-                                         QStringLiteral("--axis"), QStringLiteral("x"),
-                                         QStringLiteral("--amplitude"), QStringLiteral("10"),
-                                         QStringLiteral("--encoder-noise"), QStringLiteral("1")}));
+    const CliResult table = runCli(
+        step({QStringLiteral("--machine"), QStringLiteral("xy_dc_table"), QStringLiteral("--axis"),
+              QStringLiteral("x"), QStringLiteral("--amplitude"), QStringLiteral("10"),
+              QStringLiteral("--encoder-noise"), QStringLiteral("1")}));
     EXPECT_EQ(table.exit, 2);
     EXPECT_TRUE(table.err.contains(QStringLiteral("the rail's"))) << table.err.toStdString();
 }
