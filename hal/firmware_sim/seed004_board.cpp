@@ -152,7 +152,10 @@ std::uint64_t Seed004Board::onStep(avr_t*, std::uint64_t when, void* self) {
 void Seed004Board::onOcrWrite(avr_t*, std::uint16_t address, std::uint8_t, void* self) {
     auto* b = static_cast<Seed004Board*>(self);
     const int channel = address == kOcr1A ? 0 : 1;
-    b->ocrWrites_.push_back({b->chip_->cycle(), channel, b->ocr(channel)});
+    b->ocrWrites_.push_back({b->chip_->cycle(),
+                             channel,
+                             b->ocr(channel),
+                             {b->plant_.positionMm(0), b->plant_.positionMm(1)}});
 }
 
 }  // namespace trilho

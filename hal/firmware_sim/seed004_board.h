@@ -35,6 +35,7 @@ struct OcrWrite {
     std::uint64_t cycle = 0;
     int channel = 0;
     std::uint16_t value = 0;
+    std::array<double, 2> plantMm{};  ///< where the table's x, y were then (a lab's instrument)
 };
 
 class Seed004Board {
