@@ -1,8 +1,13 @@
-// Issue 32 item 5, a first cut: seed 004's own firmware against trilho's in-process `seed` law
-// (DcLaw::Seed, DcTableMotion) on the same plant (the default profile's DC table, plant seed 1),
-// on the seed's example (0,0) -> (180,120). Both run the x loop, then the y loop; the figures
-// asserted are measured, and the test fails when the two part further. What differs and why:
-// docs/seeds.md (DC table, "The seed's own firmware against the `seed` law").
+// Issue 32 item 5: seed 004's own firmware against trilho's in-process `seed` law (DcLaw::Seed,
+// DcTableMotion) on the same plant (the default profile's DC table, plant seed 1).
+//  - SeedExampleFirmwareAgainstTrilhosSeedLaw: the seed's example (0,0) -> (180,120), both sides.
+//  - TwentySeededMovesTickByTick: Seed004Host's 20 seeded moves, move by move (samples, period,
+//    end positions, duty differences), and the reference: trilho's DcAxisLoop replayed on the
+//    firmware's own set points and counts equals its OCR1A / OCR1B at every sample.
+//  - TheExamplesDifferencesOneCauseAtATime: a model of the board that equals the firmware, each
+//    artefact switched alone to trilho's choice.
+// Every figure asserted is measured; the tests fail when either side changes. What differs and
+// why: docs/seeds.md (DC table, "The seed's own firmware against the `seed` law").
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -529,8 +534,8 @@ struct Artefacts {
 /// SimDcTable stepped every 25 us as the harness steps it, the law DcAxisLoop's. With every
 /// artefact copied it is the firmware (checked below); each one replaced moves the end by its
 /// share. Returns, mm: x at the X loop's last sample, y at the Y loop's, x at the Y loop's (x runs
-/// on while the Y loop runs if its last PWM is above its friction).
-std::array<double, 3> boardModel(const MachineProfile& profile, const ChipMove& chip,
+/// on while the Y loop runs if its last PWM is above its friction), and that last x duty (%).
+std::array<double, 4> boardModel(const MachineProfile& profile, const ChipMove& chip,
                                  const Artefacts& a) {
     constexpr std::uint64_t kStep = 200;  // cycles: Seed004BoardOptions::stepS 25 us at 8 MHz
     SimDcTable plant(profile.dcTable, 1);
@@ -581,7 +586,7 @@ std::array<double, 3> boardModel(const MachineProfile& profile, const ChipMove& 
                 rd[ax][k] = wr[ax][k] = c;
     }
     // Run: plant steps on the harness' 200-cycle grid, the drive as last written.
-    double drive[2] = {0.0, 0.0}, xEnd = 0.0;
+    double drive[2] = {0.0, 0.0}, xEnd = 0.0, lastX = 0.0;
     std::uint64_t s = t0 / kStep * kStep;
     const auto runTo = [&](std::uint64_t cycle) {
         for (; s <= cycle; s += kStep) {
@@ -605,11 +610,11 @@ std::array<double, 3> boardModel(const MachineProfile& profile, const ChipMove& 
             runTo(wr[ax][k]);
             drive[ax] = a.pwmHigh ? 100.0 * (duty + 1.0) / 248.0 : 100.0 * duty / 247.0;
         }
+        if (ax == 0) xEnd = plant.positionMm(0), lastX = drive[0];
         if (!a.pwmLeftOn) drive[ax] = 0.0;
-        if (ax == 0) xEnd = plant.positionMm(0);
     }
     runTo(wr[1].back());
-    return {xEnd, plant.positionMm(1), plant.positionMm(0)};
+    return {xEnd, plant.positionMm(1), plant.positionMm(0), lastX};
 }
 
 }  // namespace
@@ -643,12 +648,13 @@ TEST(SeedLawGolden, TheExamplesDifferencesOneCauseAtATime) {
         "firmware: x %.3f mm at the X loop's end, y %.3f at the Y loop's, x %.3f then; "
         "trilho: y %.3f, x %.3f\n",
         m.xLoopEndMm, m.endMm[1], m.endMm[0], law.yEnd, law.xEnd);
-    std::printf("%-48s  %10s %10s %10s\n", "", "x (X end)", "y (Y end)", "x (Y end)");
-    std::vector<std::array<double, 3>> ends;
+    std::printf("%-48s  %10s %10s %10s %12s\n", "", "x (X end)", "y (Y end)", "x (Y end)",
+                "last x PWM %");
+    std::vector<std::array<double, 4>> ends;
     for (const Row& r : rows) {
         ends.push_back(boardModel(profile, m, r.a));
-        std::printf("%-48s  %10.3f %10.3f %10.3f\n", r.what, ends.back()[0], ends.back()[1],
-                    ends.back()[2]);
+        std::printf("%-48s  %10.3f %10.3f %10.3f %12.2f\n", r.what, ends.back()[0], ends.back()[1],
+                    ends.back()[2], ends.back()[3]);
     }
     // The model with every artefact is the firmware, to the micrometre (the same plant, its
     // steps, the chip's instants): the causes below are the whole difference.
