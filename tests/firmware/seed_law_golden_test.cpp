@@ -180,6 +180,9 @@ float ramFloatAt(const AvrChip& chip, int address) {
 std::vector<float> ramArray(const AvrChip& chip, const char* symbol, std::size_t n) {
     const int a = chip.ramAddress(symbol);
     std::vector<float> out;
+    // The ATmega128's RAM ends at 0x10FF: a missing symbol or a count past it reads nothing.
+    EXPECT_TRUE(a >= 0 && a + 4 * static_cast<long>(n) <= 0x1100) << symbol << " " << n;
+    if (!(a >= 0 && a + 4 * static_cast<long>(n) <= 0x1100)) return out;
     for (std::size_t i = 0; i < n; ++i)
         out.push_back(ramFloatAt(chip, a + 4 * static_cast<int>(i)));
     return out;
@@ -187,8 +190,8 @@ std::vector<float> ramArray(const AvrChip& chip, const char* symbol, std::size_t
 
 /// The moves of Seed004Host's test (same generator): 20 from wherever the last ended, both
 /// directions, both orders of tf, long3 <= 480 (trilho's host refuses the others).
-std::vector<std::array<int, 2>> seededTargets() {
-    std::mt19937 rng(4);
+std::vector<std::array<int, 2>> seededTargets(unsigned seed = 4) {
+    std::mt19937 rng(seed);
     std::uniform_int_distribution<int> mm(0, 200);
     std::vector<std::array<int, 2>> out;
     int fx = 0, fy = 0;
@@ -216,16 +219,22 @@ std::vector<ChipMove> firmwareMoves(const MachineProfile& profile,
     const auto cycles = [&](double s) {
         return static_cast<std::uint64_t>(s * Seed004Board::kClockHz);
     };
-    // Both bytes of each count: a load of either byte stops the chip before the read.
-    std::vector<std::uint32_t> loadsOf[2], loads;
+    // The position the law uses is 0.314 pulsos as the program reads it: avr-gcc keeps posx_rad
+    // in registers through the loop (stored after it), so the test stops the chip at each of the
+    // main program's loads of pulsos_x / pulsos_y (interrupts enabled: not the encoder handlers'
+    // own) and takes each byte as it is loaded (an interrupt between the low and the high byte's
+    // load is the program's own torn read); each OCR write takes the last count read.
+    std::vector<std::uint32_t> loadsOf[2][2], loads;  // [axis][low, high byte]
     for (std::size_t a = 0; a < 2; ++a) {
         const int at = b->chip().ramAddress(a == 0 ? "pulsos_x" : "pulsos_y");
-        loadsOf[a] = b->chip().loadsOf(static_cast<std::uint16_t>(at));
-        loads.insert(loads.end(), loadsOf[a].begin(), loadsOf[a].end());
+        EXPECT_GE(at, 0);
+        for (std::size_t h = 0; h < 2; ++h) {
+            loadsOf[a][h] = b->chip().loadsOf(static_cast<std::uint16_t>(at + static_cast<int>(h)));
+            EXPECT_FALSE(loadsOf[a][h].empty());
+            loads.insert(loads.end(), loadsOf[a][h].begin(), loadsOf[a][h].end());
+        }
     }
-    EXPECT_FALSE(loadsOf[0].empty());
-    EXPECT_FALSE(loadsOf[1].empty());
-    std::uint16_t lastRead[2] = {0, 0};
+    std::uint8_t readByte[2][2] = {{0, 0}, {0, 0}};
     std::uint64_t lastReadCycle[2] = {0, 0};
     std::vector<float> lastArray(480, 0.0f);  // the arrays are zero at reset (.bss)
     int fx = 0, fy = 0;
@@ -234,51 +243,59 @@ std::vector<ChipMove> firmwareMoves(const MachineProfile& profile,
         m.fromX = fx, m.fromY = fy, m.x = t[0], m.y = t[1];
         const Seed004Plan plan = seed004Plan(fx, fy, t[0], t[1]);
         const std::size_t first = b->ocrWrites().size();
+        const std::size_t want = first + 2u * plan.long3;
+        std::size_t seen = first;
+        // Runs to cycle `until` (or until the move's last write), every write and load taken.
+        const auto advance = [&](std::uint64_t until) {
+            while (b->chip().cycle() < until && b->ocrWrites().size() < want) {
+                const long pc = b->chip().runUntilPc(
+                    loads, std::min(until, b->chip().cycle() + cycles(0.0005)));
+                for (; seen < b->ocrWrites().size(); ++seen) {
+                    const OcrWrite& w = b->ocrWrites()[seen];
+                    if (seen == first) {
+                        m.long3 = b->chip().ramU16("long3");
+                        m.xFirst = b->chip().ramFloat("tfx") >= b->chip().ramFloat("tfy");
+                        m.sp1 = ramArray(b->chip(), "arr_sp1", m.long3);
+                        m.sp2 = ramArray(b->chip(), "arr_sp2", m.long3);
+                        m.bit[0] = b->reverse(0), m.bit[1] = b->reverse(1);
+                        const std::vector<float> now = ramArray(b->chip(), "arr_sp1", 480);
+                        m.freshArrays = now != lastArray;
+                        lastArray = now;
+                    }
+                    const auto c = static_cast<std::size_t>(w.channel);
+                    const auto count =
+                        static_cast<std::uint16_t>(readByte[c][0] | readByte[c][1] << 8);
+                    m.ocr[c].push_back(w.value);
+                    m.cycle[c].push_back(w.cycle);
+                    m.posRad[c].push_back(0.314f * static_cast<float>(count));
+                    m.readCycle[c].push_back(lastReadCycle[c]);
+                    if (seen + 1 == first + plan.long3) m.xLoopEndMm = w.plantMm[0];
+                    if (seen + 1 == want) m.endMm[0] = w.plantMm[0], m.endMm[1] = w.plantMm[1];
+                }
+                if (pc < 0 || !b->chip().interruptsEnabled()) continue;
+                const auto at = static_cast<std::uint32_t>(pc);
+                for (std::size_t a = 0; a < 2; ++a)
+                    for (std::size_t h = 0; h < 2; ++h)
+                        if (std::count(loadsOf[a][h].begin(), loadsOf[a][h].end(), at)) {
+                            const int addr = b->chip().ramAddress(a == 0 ? "pulsos_x" : "pulsos_y");
+                            readByte[a][h] = b->chip().data8(
+                                static_cast<std::uint16_t>(addr + static_cast<int>(h)));
+                            if (h == 0) lastReadCycle[a] = b->chip().cycle();
+                        }
+            }
+        };
+        // The set point as trilho's host for this board sends it (Seed004Host): 40 ms a byte (a
+        // move whose arrays are kept, no planning, starts its X loop before the last gap is
+        // over), the next set point seed004BusyS after this one's first byte.
+        const std::uint64_t t0 = b->chip().cycle();
         for (int v : {t[0] >> 8, t[0] & 0xff, t[1] >> 8, t[1] & 0xff}) {
             b->send({static_cast<std::uint8_t>(v)});
-            EXPECT_TRUE(b->runUntilCycle(b->chip().cycle() + cycles(0.040)));
+            advance(b->chip().cycle() + cycles(0.040));
         }
-        // The position the law uses is 0.314 pulsos as the program reads it: avr-gcc keeps
-        // posx_rad in registers through the loop (stored after it), so the test stops the chip
-        // at each of the main program's loads of pulsos_x / pulsos_y (interrupts enabled: not
-        // the encoder handlers' own) and reads the count there; each OCR write takes the last.
-        std::size_t seen = first;
-        const std::size_t want = first + 2u * plan.long3;
-        const std::uint64_t limit = b->chip().cycle() + cycles(1.0 + 2 * 0.0057 * plan.long3);
-        while (b->ocrWrites().size() < want && b->chip().cycle() < limit) {
-            const long pc =
-                b->chip().runUntilPc(loads, std::min(limit, b->chip().cycle() + cycles(0.0005)));
-            for (; seen < b->ocrWrites().size(); ++seen) {
-                const OcrWrite& w = b->ocrWrites()[seen];
-                if (seen == first) {
-                    m.long3 = b->chip().ramU16("long3");
-                    m.xFirst = b->chip().ramFloat("tfx") >= b->chip().ramFloat("tfy");
-                    m.sp1 = ramArray(b->chip(), "arr_sp1", m.long3);
-                    m.sp2 = ramArray(b->chip(), "arr_sp2", m.long3);
-                    m.bit[0] = b->reverse(0), m.bit[1] = b->reverse(1);
-                    const std::vector<float> now = ramArray(b->chip(), "arr_sp1", 480);
-                    m.freshArrays = now != lastArray;
-                    lastArray = now;
-                }
-                const auto c = static_cast<std::size_t>(w.channel);
-                m.ocr[c].push_back(w.value);
-                m.cycle[c].push_back(w.cycle);
-                m.posRad[c].push_back(0.314f * static_cast<float>(lastRead[c]));
-                m.readCycle[c].push_back(lastReadCycle[c]);
-                if (seen + 1 == first + plan.long3) m.xLoopEndMm = w.plantMm[0];
-                if (seen + 1 == want) m.endMm[0] = w.plantMm[0], m.endMm[1] = w.plantMm[1];
-            }
-            if (pc >= 0 && b->chip().interruptsEnabled())
-                for (std::size_t a = 0; a < 2; ++a)
-                    if (std::count(loadsOf[a].begin(), loadsOf[a].end(),
-                                   static_cast<std::uint32_t>(pc)))
-                        lastRead[a] = b->chip().ramU16(a == 0 ? "pulsos_x" : "pulsos_y"),
-                        lastReadCycle[a] = b->chip().cycle();
-        }
+        advance(b->chip().cycle() + cycles(1.0 + 2 * 0.0057 * plan.long3));
         EXPECT_EQ(b->ocrWrites().size(), want) << "move to " << t[0] << "," << t[1];
         EXPECT_EQ(m.long3, plan.long3);
-        // Its last sample's 5 ms, then the program polls the line again.
-        EXPECT_TRUE(b->runUntilCycle(b->chip().cycle() + cycles(0.006)));
+        EXPECT_TRUE(b->runUntilCycle(t0 + cycles(seed004BusyS(plan))));
         out.push_back(std::move(m));
         fx = t[0], fy = t[1];
     }
@@ -431,8 +448,8 @@ TEST(SeedLawGolden, TwentySeededMovesTickByTick) {
                 1e3 * static_cast<double>(sumPeriod) / static_cast<double>(periods) / 8e6);
     // The measured sample period: _delay_loop_2(10000) = 40,000 cycles plus the body.
     EXPECT_EQ(minPeriod, 41266u);
-    EXPECT_EQ(maxPeriod, 45166u);
-    EXPECT_NEAR(1e3 * static_cast<double>(sumPeriod) / static_cast<double>(periods) / 8e6, 5.4088,
+    EXPECT_EQ(maxPeriod, 45182u);
+    EXPECT_NEAR(1e3 * static_cast<double>(sumPeriod) / static_cast<double>(periods) / 8e6, 5.4031,
                 0.0001);
     EXPECT_GT(branch2, 0);
     EXPECT_LT(branch2, 20);
@@ -452,25 +469,25 @@ TEST(SeedLawGolden, TwentySeededMovesTickByTick) {
     };
     const Golden golden[20] = {
         {357, 359, 193.040, 192.710, 176.429, 175.038, 19.15, 14.00, 0, true},      // 0
-        {99, 73, 392.406, 194.418, 73.296, 158.529, 113.25, 83.70, 0, false},       // 1
-        {33, 167, 427.768, 144.308, 3.636, 142.664, 17.94, 90.84, 3, false},        // 2
-        {96, 110, 427.768, 140.685, 3.636, 124.966, 10.51, 22.32, 0, false},        // 3
-        {174, 67, 72.610, 178.641, -173.961, 124.591, 37.55, 0.00, 3, false},       // 4
-        {225, 337, 19.069, 2.315, -545.963, 137.993, 79.67, 43.17, 0, true},        // 5
-        {165, 52, -316.403, 37.356, -697.530, 138.003, 21.81, 0.00, 3, false},      // 6
-        {147, 38, -658.023, 69.216, -1039.139, 138.003, 9.68, 0.00, 3, false},      // 7
-        {192, 35, -1095.055, 98.514, -1476.157, 138.003, 9.60, 0.00, 3, false},     // 8
-        {252, 178, -1150.635, 40.280, -1786.968, 118.320, 50.03, 20.04, 0, true},   // 9
-        {276, 54, -1718.183, 76.262, -2072.832, 118.182, 23.15, 0.00, 3, true},     // 10
-        {165, 37, -1753.798, 107.346, -2275.541, 118.182, 113.59, 0.00, 3, false},  // 11
-        {42, 201, -1753.798, 33.263, -2275.541, 82.043, 34.17, 7.14, 0, false},     // 12
-        {216, 52, -2196.412, 68.442, -2497.797, 81.817, 21.48, 0.00, 3, true},      // 13
-        {45, 190, -2232.051, 2.295, -2579.123, 118.591, 34.84, 8.84, 0, false},     // 14
-        {201, 52, -2643.424, 37.110, -2785.424, 118.875, 22.35, 0.00, 3, true},     // 15
-        {201, 125, -2695.246, 9.267, -3040.872, 126.059, 38.30, 13.26, 0, true},    // 16
-        {345, 52, -3406.488, 44.065, -3398.817, 126.153, 22.38, 0.00, 3, true},     // 17
-        {96, 37, -3639.866, 75.148, -3632.188, 126.153, 9.41, 0.00, 3, false},      // 18
-        {342, 37, -3702.501, 106.173, -4040.939, 126.153, 113.43, 0.00, 3, true},   // 19
+        {99, 73, 392.406, 194.418, 78.162, 158.529, 113.25, 83.70, 0, false},       // 1
+        {33, 167, 458.720, 144.308, -21.971, 142.664, 17.94, 93.28, 3, false},      // 2
+        {96, 110, 458.720, 140.685, -21.971, 124.966, 10.51, 22.32, 0, false},      // 3
+        {174, 67, 103.572, 178.641, -199.568, 124.591, 37.55, 0.00, 3, false},      // 4
+        {225, 337, 9.805, 2.315, -521.131, 137.993, 79.67, 10.28, 0, true},         // 5
+        {165, 52, -326.475, 37.356, -686.998, 138.003, 21.81, 0.00, 3, false},      // 6
+        {147, 38, -704.407, 69.216, -958.640, 138.003, 9.68, 0.00, 3, false},       // 7
+        {192, 35, -1174.795, 98.514, -1429.013, 138.003, 9.60, 0.00, 3, false},     // 8
+        {252, 178, -1264.383, 40.280, -1773.769, 118.320, 50.03, 20.04, 0, true},   // 9
+        {276, 54, -1831.982, 76.262, -2059.632, 118.182, 23.15, 0.00, 3, true},     // 10
+        {165, 37, -1899.490, 107.346, -2294.318, 118.182, 113.59, 0.00, 3, false},  // 11
+        {42, 201, -1899.490, 33.263, -2294.318, 82.043, 34.17, 7.14, 0, false},     // 12
+        {216, 52, -2342.127, 68.442, -2516.579, 81.817, 21.48, 0.00, 3, true},      // 13
+        {45, 190, -2407.019, 2.295, -2627.157, 118.591, 34.84, 8.84, 0, false},     // 14
+        {201, 52, -2818.387, 37.110, -2833.457, 118.875, 22.35, 0.00, 3, true},     // 15
+        {201, 125, -2898.588, 9.267, -3117.198, 126.059, 38.30, 13.26, 0, true},    // 16
+        {345, 52, -3609.830, 44.065, -3476.335, 126.153, 22.38, 0.00, 3, true},     // 17
+        {96, 37, -3878.203, 75.148, -3744.699, 126.153, 9.41, 0.00, 3, false},      // 18
+        {342, 37, -3967.252, 106.173, -4179.949, 126.153, 113.43, 0.00, 3, true},   // 19
     };
     for (std::size_t i = 0; i < 20; ++i) {
         const Golden& g = golden[i];
@@ -504,14 +521,14 @@ TEST(SeedLawGolden, TwentySeededMovesTickByTick) {
     // equation with the firmware's duty gives its OCR1A / OCR1B at every sample of the 20 moves.
     EXPECT_EQ(same.samples, 7338u);
     EXPECT_EQ(same.off, 0u);
-    // Each artefact alone, on the same inputs: the fabs slip of the second branch (2577 samples,
+    // Each artefact alone, on the same inputs: the fabs slip of the second branch (2802 samples,
     // up to the whole 123 counts: an axis that lags in reverse is driven at 0), trilho's position
-    // at the count's centre (347 samples, up to 7 counts), trilho's duty formula (22, by 1).
-    EXPECT_EQ(noSlip.off, 2577u);
+    // at the count's centre (289 samples, up to 7 counts), trilho's duty formula (13, by 1).
+    EXPECT_EQ(noSlip.off, 2802u);
     EXPECT_EQ(noSlip.worst, 123);
-    EXPECT_EQ(halfCount.off, 347u);
+    EXPECT_EQ(halfCount.off, 289u);
     EXPECT_EQ(halfCount.worst, 7);
-    EXPECT_EQ(duty.off, 22u);
+    EXPECT_EQ(duty.off, 13u);
     EXPECT_EQ(duty.worst, 1);
 }
 
@@ -674,4 +691,19 @@ TEST(SeedLawGolden, TheExamplesDifferencesOneCauseAtATime) {
     for (std::size_t i = 0; i < 8; ++i)
         for (std::size_t k = 0; k < 3; ++k)
             EXPECT_NEAR(ends[i][k], golden[i][k], 0.002) << rows[i].what;
+}
+
+// Soak (ctest -L soak): the law is the same on five more seeds' 20 moves each.
+TEST(SeedLawGolden, DISABLED_TheLawIsTheSameOnFiveMoreSeeds) {
+    MachineProfile profile = MachineProfile::xyDcTable();
+    profile.dcTable.law = DcLaw::Seed;
+    for (unsigned seed = 5; seed < 10; ++seed) {
+        const std::vector<ChipMove> chip = firmwareMoves(profile, seededTargets(seed));
+        ASSERT_EQ(chip.size(), 20u);
+        const Replay same = replayLaw(profile, chip, true, 0.0, firmwareDuty);
+        std::printf("seed %u: %zu samples, %zu differ, worst %d\n", seed, same.samples, same.off,
+                    same.worst);
+        EXPECT_GT(same.samples, 0u);
+        EXPECT_EQ(same.off, 0u) << "seed " << seed;
+    }
 }
