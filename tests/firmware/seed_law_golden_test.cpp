@@ -248,8 +248,13 @@ std::vector<ChipMove> firmwareMoves(const MachineProfile& profile,
         // Runs to cycle `until` (or until the move's last write), every write and load taken.
         const auto advance = [&](std::uint64_t until) {
             while (b->chip().cycle() < until && b->ocrWrites().size() < want) {
+                const std::uint64_t before = b->chip().cycle();
                 const long pc = b->chip().runUntilPc(
                     loads, std::min(until, b->chip().cycle() + cycles(0.0005)));
+                if (b->chip().cycle() == before) {  // the core stopped: say so, do not spin
+                    ADD_FAILURE() << "the chip stopped: " << b->chip().stateText();
+                    return;
+                }
                 for (; seen < b->ocrWrites().size(); ++seen) {
                     const OcrWrite& w = b->ocrWrites()[seen];
                     if (seen == first) {
