@@ -204,8 +204,17 @@ std::vector<std::array<int, 2>> seededTargets(unsigned seed = 4) {
     return out;
 }
 
+/// What the encoder handlers and the pins see between the samples, as it changes: the count's
+/// sign each handler applies (spx_fin > spx_ini: +1, else -1) and the direction bits (PORTC).
+struct BoardState {
+    std::uint64_t cycle = 0;
+    int sign[2] = {1, 1};
+    bool bit[2] = {false, false};
+};
+
 std::vector<ChipMove> firmwareMoves(const MachineProfile& profile,
-                                    const std::vector<std::array<int, 2>>& targets) {
+                                    const std::vector<std::array<int, 2>>& targets,
+                                    std::vector<BoardState>* states = nullptr) {
     Seed004BoardOptions o;
     o.elfPath = TRILHO_SEED004_ELF;
     o.plant = profile.dcTable;
@@ -237,6 +246,20 @@ std::vector<ChipMove> firmwareMoves(const MachineProfile& profile,
     std::uint8_t readByte[2][2] = {{0, 0}, {0, 0}};
     std::uint64_t lastReadCycle[2] = {0, 0};
     std::vector<float> lastArray(480, 0.0f);  // the arrays are zero at reset (.bss)
+    // Records the handlers' signs and the bits when they change (states given; every 50 us).
+    const auto poll = [&] {
+        if (!states) return;
+        BoardState now;
+        now.cycle = b->chip().cycle();
+        now.sign[0] = b->chip().ramFloat("spx_fin") > b->chip().ramFloat("spx_ini") ? 1 : -1;
+        now.sign[1] = b->chip().ramFloat("spy_fin") > b->chip().ramFloat("spy_ini") ? 1 : -1;
+        now.bit[0] = b->reverse(0), now.bit[1] = b->reverse(1);
+        const BoardState* last = states->empty() ? nullptr : &states->back();
+        if (!last || last->sign[0] != now.sign[0] || last->sign[1] != now.sign[1] ||
+            last->bit[0] != now.bit[0] || last->bit[1] != now.bit[1])
+            states->push_back(now);
+    };
+    poll();
     int fx = 0, fy = 0;
     for (const auto& t : targets) {
         ChipMove m;
@@ -250,7 +273,8 @@ std::vector<ChipMove> firmwareMoves(const MachineProfile& profile,
             while (b->chip().cycle() < until && b->ocrWrites().size() < want) {
                 const std::uint64_t before = b->chip().cycle();
                 const long pc = b->chip().runUntilPc(
-                    loads, std::min(until, b->chip().cycle() + cycles(0.0005)));
+                    loads, std::min(until, b->chip().cycle() + cycles(states ? 0.00005 : 0.0005)));
+                poll();
                 if (b->chip().cycle() == before) {  // the core stopped: say so, do not spin
                     ADD_FAILURE() << "the chip stopped: " << b->chip().stateText();
                     return;
@@ -300,11 +324,34 @@ std::vector<ChipMove> firmwareMoves(const MachineProfile& profile,
         advance(b->chip().cycle() + cycles(1.0 + 2 * 0.0057 * plan.long3));
         EXPECT_EQ(b->ocrWrites().size(), want) << "move to " << t[0] << "," << t[1];
         EXPECT_EQ(m.long3, plan.long3);
+        if (states) {
+            while (b->chip().cycle() < t0 + cycles(seed004BusyS(plan))) {
+                const std::uint64_t to =
+                    std::min(t0 + cycles(seed004BusyS(plan)), b->chip().cycle() + cycles(0.00005));
+                EXPECT_TRUE(b->runUntilCycle(to));
+                poll();
+            }
+        }
         EXPECT_TRUE(b->runUntilCycle(t0 + cycles(seed004BusyS(plan))));
         out.push_back(std::move(m));
         fx = t[0], fy = t[1];
     }
     return out;
+}
+
+/// The 20 seeded moves on the chip, run once for the tests that read them (7 s), the handlers'
+/// signs and the bits recorded as they change.
+struct ChipRun {
+    std::vector<ChipMove> moves;
+    std::vector<BoardState> states;
+};
+const ChipRun& seededChipRun(const MachineProfile& profile) {
+    static const ChipRun run = [&] {
+        ChipRun r;
+        r.moves = firmwareMoves(profile, seededTargets(), &r.states);
+        return r;
+    }();
+    return run;
 }
 
 /// trilho's `seed` law (DcTableMotion) on the same plant over the same set points: the duty of
@@ -406,7 +453,7 @@ TEST(SeedLawGolden, TwentySeededMovesTickByTick) {
     MachineProfile profile = MachineProfile::xyDcTable();
     profile.dcTable.law = DcLaw::Seed;
     const auto targets = seededTargets();
-    const std::vector<ChipMove> chip = firmwareMoves(profile, targets);
+    const std::vector<ChipMove>& chip = seededChipRun(profile).moves;
     std::vector<std::pair<AlarmCode, double>> faults;
     const std::vector<LoopRun> law = trilhoMoves(profile, targets, &faults);
     ASSERT_EQ(chip.size(), 20u);
@@ -711,4 +758,160 @@ TEST(SeedLawGolden, DISABLED_TheLawIsTheSameOnFiveMoreSeeds) {
         EXPECT_GT(same.samples, 0u);
         EXPECT_EQ(same.off, 0u) << "seed " << seed;
     }
+}
+
+// --- The 20 moves' departures, one slip of the seed's code at a time ---
+
+namespace {
+
+/// The slips of seed 004's program that part its table from trilho's on the 20 moves, each
+/// copied (true) or as its comments mean it (false).
+struct SeedSlips {
+    bool bitsStick = true;         ///< bits_de_giro ORs the bits in / each move sets its own
+    bool countsBySetPoint = true;  ///< the handlers count by the set point's sign / by the motion
+    bool fabsSlip = true;          ///< the second branch's signed errors / |e| in both
+};
+
+/// The board over all the moves on one SimDcTable, stepped on the harness' grid: the law at the
+/// chip's read cycles on its arrays, its duty at its write cycles, the PWM kept between writes
+/// and moves, the handlers' signs and the bits as the chip had them (states), each slip copied or
+/// not. Returns each move's x, y at its Y loop's last write, mm; tripped: the first move at whose
+/// end the over-current input had stopped the PWM (SimDcTable stops it as the seed's INT5 / INT7
+/// handlers stop Timer 1, for good), or -1.
+std::vector<std::array<double, 2>> boardModelMoves(const MachineProfile& profile,
+                                                   const std::vector<ChipMove>& moves,
+                                                   const std::vector<BoardState>& states,
+                                                   const SeedSlips& slips, int* tripped) {
+    *tripped = -1;
+    constexpr std::uint64_t kStep = 200;
+    SimDcTable plant(profile.dcTable, 1);
+    struct Action {
+        std::uint64_t cycle;
+        int kind;  // 0: the law reads, 1: it writes OCR1x
+        std::size_t move, axis, k;
+    };
+    std::vector<Action> acts;
+    for (std::size_t mi = 0; mi < moves.size(); ++mi)
+        for (std::size_t ax = 0; ax < 2; ++ax)
+            for (std::size_t k = 0; k < moves[mi].ocr[ax].size(); ++k) {
+                acts.push_back({moves[mi].readCycle[ax][k], 0, mi, ax, k});
+                acts.push_back({moves[mi].cycle[ax][k], 1, mi, ax, k});
+            }
+    std::stable_sort(acts.begin(), acts.end(), [](const Action& a, const Action& b) {
+        return a.cycle != b.cycle ? a.cycle < b.cycle : a.kind < b.kind;
+    });
+    int ocr[2] = {1, 1}, pending[2] = {1, 1};  // config_pwm: OCR1A = OCR1B = 1
+    std::uint16_t pulsos[2] = {0, 0};
+    std::uint16_t enc[2] = {plant.readEncoder(0), plant.readEncoder(1)};
+    int sign[2] = {-1, -1};  // spx_fin = spx_ini = 0 at reset: not greater, counts down
+    bool chipBit[2] = {false, false}, ownBit[2] = {false, false};
+    std::size_t si = 0;
+    std::uint64_t s = kStep;
+    const auto runTo = [&](std::uint64_t c) {
+        for (; s <= c; s += kStep) {
+            for (; si < states.size() && states[si].cycle <= s; ++si)
+                for (int ax = 0; ax < 2; ++ax)
+                    sign[ax] = states[si].sign[ax], chipBit[ax] = states[si].bit[ax];
+            for (int ax = 0; ax < 2; ++ax) {
+                const bool reverse = slips.bitsStick ? chipBit[ax] : ownBit[ax];
+                plant.axis(ax).setDrive((reverse ? -1.0 : 1.0) * 100.0 * (ocr[ax] + 1) / 248.0);
+            }
+            plant.step(static_cast<double>(kStep) / 8e6);
+            for (std::size_t ax = 0; ax < 2; ++ax) {
+                const std::uint16_t now = plant.readEncoder(static_cast<int>(ax));
+                const auto d = static_cast<std::int16_t>(static_cast<std::uint16_t>(now - enc[ax]));
+                enc[ax] = now;
+                pulsos[ax] = static_cast<std::uint16_t>(
+                    pulsos[ax] + (slips.countsBySetPoint ? sign[ax] * std::abs(d) : d));
+            }
+        }
+    };
+    std::vector<std::array<double, 2>> ends(moves.size());
+    std::array<DcAxisLoop, 2> loops{
+        DcAxisLoop(profile.dcTable.x, profile.dcTable.pwmClampPercent, DcLaw::Seed, 0.405),
+        DcAxisLoop(profile.dcTable.y, profile.dcTable.pwmClampPercent, DcLaw::Seed, 0.405)};
+    std::size_t current = moves.size();
+    for (const Action& a : acts) {
+        runTo(a.cycle);
+        const ChipMove& m = moves[a.move];
+        if (a.move != current) {  // the move's first read: bits_de_giro has just run
+            current = a.move;
+            ownBit[0] = !(m.x > m.fromX), ownBit[1] = !(m.y > m.fromY);
+            const bool signedError = slips.fabsSlip && !m.xFirst;
+            for (int ax = 0; ax < 2; ++ax)
+                loops[static_cast<std::size_t>(ax)] =
+                    DcAxisLoop(ax == 0 ? profile.dcTable.x : profile.dcTable.y,
+                               profile.dcTable.pwmClampPercent,
+                               signedError ? DcLaw::SeedSigned : DcLaw::Seed, 0.405);
+        }
+        if (a.kind == 0) {
+            const DcAxisParams& p = a.axis == 0 ? profile.dcTable.x : profile.dcTable.y;
+            const double mmPerRad = p.mmPerTurn / (2.0 * std::numbers::pi);
+            const std::vector<float>& sp = (a.axis == 0) == m.xFirst ? m.sp1 : m.sp2;
+            const float pos = 0.314f * static_cast<float>(pulsos[a.axis]);
+            const bool signedError = slips.fabsSlip && !m.xFirst;
+            double u = loops[a.axis].update(sp[a.k] * mmPerRad, 0.0, 0.0, pos * mmPerRad, 0.005);
+            u = std::clamp(signedError ? u : std::abs(u), 0.0, profile.dcTable.pwmClampPercent);
+            pending[a.axis] = firmwareDuty(u);
+        } else {
+            ocr[a.axis] = pending[a.axis];
+            if (a.axis == 1 && a.k + 1 == m.ocr[1].size())
+                ends[a.move] = {plant.positionMm(0), plant.positionMm(1)};
+            if (a.axis == 1 && a.k + 1 == m.ocr[1].size() && *tripped < 0 && !plant.pwmRunning())
+                *tripped = static_cast<int>(a.move);
+        }
+    }
+    return ends;
+}
+
+}  // namespace
+
+TEST(SeedLawGolden, TheTwentyMovesDeparturesOneSlipAtATime) {
+    MachineProfile profile = MachineProfile::xyDcTable();
+    profile.dcTable.law = DcLaw::Seed;
+    const std::vector<ChipMove>& chip = seededChipRun(profile).moves;
+    const std::vector<BoardState>& states = seededChipRun(profile).states;
+    ASSERT_EQ(chip.size(), 20u);
+    struct Row {
+        const char* what;
+        SeedSlips slips;
+    };
+    const Row rows[5] = {{"every slip of the seed's code", {true, true, true}},
+                         {"but the bits set per move", {false, true, true}},
+                         {"but the counts follow the motion", {true, false, true}},
+                         {"but both", {false, false, true}},
+                         {"but both, and |e| in the second branch", {false, false, false}}};
+    std::vector<std::array<double, 2>> ends[5];
+    int tripped[5];
+    for (std::size_t r = 0; r < 5; ++r)
+        ends[r] = boardModelMoves(profile, chip, states, rows[r].slips, &tripped[r]);
+    std::printf("move  chip x, y at the Y loop's end; the model: %s | %s | %s | %s | %s\n",
+                rows[0].what, rows[1].what, rows[2].what, rows[3].what, rows[4].what);
+    for (std::size_t i = 0; i < 20; ++i) {
+        std::printf("%2zu  %9.3f %9.3f", i, chip[i].endMm[0], chip[i].endMm[1]);
+        for (std::size_t r = 0; r < 5; ++r)
+            std::printf(" | %9.3f %9.3f", ends[r][i][0], ends[r][i][1]);
+        std::printf("\n");
+    }
+    for (std::size_t r = 0; r < 5; ++r)
+        std::printf("%-40s over-current stopped the PWM at move %d\n", rows[r].what, tripped[r]);
+    // With every slip copied the model is the chip on all 20 moves (measured within 0.001 mm):
+    // nothing else parts the chip's table from the law's.
+    for (std::size_t i = 0; i < 20; ++i) {
+        EXPECT_NEAR(ends[0][i][0], chip[i].endMm[0], 0.002) << "move " << i;
+        EXPECT_NEAR(ends[0][i][1], chip[i].endMm[1], 0.002) << "move " << i;
+    }
+    EXPECT_EQ(tripped[0], -1);
+    // Each slip's share, measured: moves 0 and 1 are the same under all (their departure is the
+    // kept arrays and the PWM left on); the fabs slip parts y from move 2, the bits x from
+    // move 4; the counts alone from move 5; with the bits set per move the reversals at speed
+    // trip the over-current input and the board stops for good.
+    for (std::size_t r = 1; r < 5; ++r)
+        for (std::size_t i = 0; i < 2; ++i)
+            EXPECT_NEAR(ends[r][i][1], chip[i].endMm[1], 0.002) << rows[r].what << ", move " << i;
+    EXPECT_NEAR(ends[4][2][1], 10.348, 0.002);
+    EXPECT_NEAR(ends[1][4][0], 813.878, 0.002);
+    EXPECT_NEAR(ends[2][5][0], -5.537, 0.002);
+    EXPECT_EQ(tripped[1], 5);
+    EXPECT_EQ(tripped[2], -1);
 }
