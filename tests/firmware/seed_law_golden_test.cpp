@@ -3,7 +3,9 @@
 //  - SeedExampleFirmwareAgainstTrilhosSeedLaw: the seed's example (0,0) -> (180,120), both sides.
 //  - TwentySeededMovesTickByTick: Seed004Host's 20 seeded moves, move by move (samples, period,
 //    end positions, duty differences), and the reference: trilho's DcAxisLoop replayed on the
-//    firmware's own set points and counts equals its OCR1A / OCR1B at every sample.
+//    firmware's own set points and counts equals its OCR1A / OCR1B at every sample; a board
+//    model over the 20 moves equals the chip's table, then each slip of the seed's code is set
+//    as its comments mean it.
 //  - TheExamplesDifferencesOneCauseAtATime: a model of the board that equals the firmware, each
 //    artefact switched alone to trilho's choice.
 // Every figure asserted is measured; the tests fail when either side changes. What differs and
@@ -339,8 +341,8 @@ std::vector<ChipMove> firmwareMoves(const MachineProfile& profile,
     return out;
 }
 
-/// The 20 seeded moves on the chip, run once for the tests that read them (7 s), the handlers'
-/// signs and the bits recorded as they change.
+/// The 20 seeded moves on the chip (8 s), the handlers' signs and the bits recorded as they
+/// change.
 struct ChipRun {
     std::vector<ChipMove> moves;
     std::vector<BoardState> states;
@@ -448,6 +450,10 @@ int trilhoDuty(double u) {  // DcTableMotion::writeDrives: floor(u 247 / 100)
 }
 
 }  // namespace
+
+static void departuresOneSlipAtATime(const MachineProfile& profile,
+                                     const std::vector<ChipMove>& chip,
+                                     const std::vector<BoardState>& states);
 
 TEST(SeedLawGolden, TwentySeededMovesTickByTick) {
     MachineProfile profile = MachineProfile::xyDcTable();
@@ -582,6 +588,8 @@ TEST(SeedLawGolden, TwentySeededMovesTickByTick) {
     EXPECT_EQ(halfCount.worst, 7);
     EXPECT_EQ(duty.off, 13u);
     EXPECT_EQ(duty.worst, 1);
+    // Then the departures of the chip's table, one slip of the seed's code at a time.
+    departuresOneSlipAtATime(profile, chip, seededChipRun(profile).states);
 }
 
 // --- The causes one at a time: a model of the board on the same plant ---
@@ -866,11 +874,11 @@ std::vector<std::array<double, 2>> boardModelMoves(const MachineProfile& profile
 
 }  // namespace
 
-TEST(SeedLawGolden, TheTwentyMovesDeparturesOneSlipAtATime) {
-    MachineProfile profile = MachineProfile::xyDcTable();
-    profile.dcTable.law = DcLaw::Seed;
-    const std::vector<ChipMove>& chip = seededChipRun(profile).moves;
-    const std::vector<BoardState>& states = seededChipRun(profile).states;
+/// The 20 moves' departures, one slip at a time (run by TwentySeededMovesTickByTick, on its
+/// chip run: the chip's 20 moves take 8 s).
+static void departuresOneSlipAtATime(const MachineProfile& profile,
+                                     const std::vector<ChipMove>& chip,
+                                     const std::vector<BoardState>& states) {
     ASSERT_EQ(chip.size(), 20u);
     struct Row {
         const char* what;
