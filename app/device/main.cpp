@@ -6,8 +6,9 @@
 //                 [--machine PROFILE]
 //                 [--calibration [--calibration-axis x|y] [--calibration-percent P]]
 //                 (table: seed 004's open-loop calibration program)
-//                 [--firmware seed004|seed004-calibration]
-//                 (table: seed 004's own firmware, firmware/seed004, on libsimavr)
+//                 [--firmware seed004|seed004-calibration|table]
+//                 (table: seed 004's own firmware, firmware/seed004, or trilho's table
+//                 firmware, firmware/table, on libsimavr)
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QSerialPort>
@@ -113,7 +114,8 @@ int main(int argc, char* argv[]) {
         QStringLiteral("firmware"),
         QStringLiteral("table: run the board's own firmware on a simulated ATmega128 at 8 MHz "
                        "instead of the emulator: seed004 (the main program, 9600 bit/s) or "
-                       "seed004-calibration (the open-loop program, 38400 bit/s)."),
+                       "seed004-calibration (the open-loop program, 38400 bit/s); table (trilho's "
+                       "table firmware, firmware/table: the emulator's protocol, 9600 bit/s)."),
         QStringLiteral("IMAGE"));
     parser.addOptions({ptyOpt, portOpt, baudOpt, corruptOpt, everyOpt, dropOpt, delayOpt, dupOpt,
                        outCorruptOpt, outDropOpt, outDupOpt, outDelayOpt, seedOpt, unpacedOpt,
@@ -142,12 +144,14 @@ int main(int argc, char* argv[]) {
     if (parser.isSet(firmwareOpt)) {
         if (board != QLatin1String("table"))
             return usage(QStringLiteral("--firmware is the table's (seed 004's board)"));
-        if (image != QLatin1String("seed004") && image != QLatin1String("seed004-calibration"))
+        if (image != QLatin1String("seed004") && image != QLatin1String("seed004-calibration") &&
+            image != QLatin1String("table"))
             return usage(
-                QStringLiteral("--firmware: seed004 or seed004-calibration (got %1)").arg(image));
+                QStringLiteral("--firmware: seed004, seed004-calibration or table (got %1)")
+                    .arg(image));
         if (parser.isSet(calibrationOpt))
             return usage(
-                QStringLiteral("--firmware runs the seed's own programs: "
+                QStringLiteral("--firmware runs the board's own programs: "
                                "--firmware seed004-calibration, not --calibration"));
     }
     if (parser.isSet(ptyOpt) && parser.isSet(portOpt))
