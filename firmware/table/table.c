@@ -24,12 +24,15 @@
  * Arithmetic: single-precision float (avr-libc's; avr-gcc's double is the same 32 bits). The
  * law and the planner are the emulator's, written in mm, mm/s and seconds; float keeps them
  * as written, so this file can be read line by line against the C++ (the point of the
- * exercise), and a 5 ms period leaves room: one period's body measures about 1.2 ms
- * (README.md, "Measured"). Fixed point would save time the board does not need and cost the
- * line-by-line match. Time itself is counted in integers (ticks), so nothing drifts.
+ * exercise), and its 24 bits hold 300 mm to 0.02 um. The cost is time: a period's body takes
+ * up to 2.5 ms of the 5 ms (soft float, about 150 cycles a multiply), which the board has; the
+ * receiver is polled between its parts (poll_rx). Fixed point would buy time the board does not
+ * need and lose the line-by-line match. Time itself is counted in integers (ticks), so nothing
+ * drifts.
  */
 #include <avr/interrupt.h>
 #include <avr/io.h>
+#include <avr/sleep.h>
 #include <math.h>
 #include <stdint.h>
 
@@ -81,6 +84,8 @@ volatile uint8_t stat_last_fault;   /* why the last CAN: 3 following, 12 settle,
 volatile uint16_t run_x, run_y;     /* the set point begun last ((0, 0) at power-on) */
 volatile uint8_t moves;             /* moves begun since power-on, mod 256 (in every answer) */
 volatile uint8_t moving;            /* a set point runs: its answer is due */
+volatile uint16_t stat_loop_us_max; /* the longest period's body, us (Timer 3's clock): it must
+                                       stay under the receiver's 3 ms of buffer */
 
 /* ---- time: Timer 3, CTC, 1 ms ---- */
 static volatile uint32_t g_ms;       /* ms since power-on */
@@ -202,6 +207,36 @@ static void send_byte(uint8_t b) {
     UCSR0B |= (1 << UDRIE0);
 }
 
+/* ---- the receiver: UART0 polled (RXC0) into a ring, each byte with its time. UDR0 holds two
+   bytes and the shift register a third (3.1 ms at 9600 bit/s): poll_rx() runs in the main loop
+   and between the parts of a period's body (which takes up to about 2.3 ms whole), so the
+   receiver is never left longer than one part (stat_rx_gap_us_max). ---- */
+#define RX_RING 16
+static uint8_t g_ring[RX_RING];
+static uint32_t g_ring_us[RX_RING];
+static uint8_t g_ring_head, g_ring_tail;
+static uint32_t g_last_poll_us;
+volatile uint16_t stat_rx_gap_us_max; /* the longest time the receiver went unpolled, us */
+volatile uint32_t stat_rx_ring_full;  /* bytes dropped for a full ring (none expected) */
+
+static void poll_rx(void) {
+    const uint32_t now = now_us();
+    const uint32_t gap = now - g_last_poll_us;
+    g_last_poll_us = now;
+    if (gap > stat_rx_gap_us_max) stat_rx_gap_us_max = gap > 65535UL ? 65535U : (uint16_t)gap;
+    while (UCSR0A & (1 << RXC0)) {
+        const uint8_t b = UDR0;
+        const uint8_t next = (uint8_t)((g_ring_head + 1) % RX_RING);
+        if (next == g_ring_tail) {
+            ++stat_rx_ring_full;
+            continue;
+        }
+        g_ring[g_ring_head] = b;
+        g_ring_us[g_ring_head] = now;
+        g_ring_head = next;
+    }
+}
+
 /* ---- the planner: SyncTrapezoid over Trapezoid::restToRest (core/motion) ---- */
 typedef struct {
     float start[2], dir[2]; /* mm; unit direction (0, 0 for a null move) */
@@ -234,6 +269,7 @@ static void plan_line(float x0, float y0, float x1, float y1) {
         if (RAPID_MM_S / share < speed) speed = RAPID_MM_S / share;
         if (ACCEL_MM_S2 / share < accel) accel = ACCEL_MM_S2 / share;
     }
+    poll_rx();
     const float dist = p->length;
     const float peak = sqrtf(accel * dist);
     float dur[3], acc[3];
@@ -420,8 +456,11 @@ static void begin_move(float x, float y) {
 static void motion_tick(void) {
     int16_t counted[2];
     read_encoders(counted);
-    for (uint8_t k = 0; k < 2; ++k)
+    for (uint8_t k = 0; k < 2; ++k) {
+        poll_rx();
         if (!check_encoder(k, counted[k])) break;
+    }
+    poll_rx();
     for (uint8_t k = 0; k < 2; ++k)
         if (g_drives_on && g_over_current[k]) raise_fault(FAULT_OVER_CURRENT);
     if (!g_drives_on) return;
@@ -443,6 +482,7 @@ static void motion_tick(void) {
             g_settling_for = 0;
         }
     }
+    poll_rx();
     float u[2];
     float worst = 0.0f;
     uint8_t in_window = 1;
@@ -456,8 +496,10 @@ static void motion_tick(void) {
         const uint8_t axis_in = fabsf(e) <= window;
         in_window = in_window && axis_in;
         const uint8_t phase = !still ? TRACKING : axis_in ? IN_POSITION : AXIS_SETTLING;
+        poll_rx();
         u[k] = axis_loop(k, phase, g_commanded[k], g_cmd_v[k], g_cmd_a[k]);
     }
+    poll_rx();
     if (worst > FOLLOWING_MM) {
         raise_fault(FAULT_FOLLOWING);
         return;
@@ -543,8 +585,7 @@ static void loop_tick(void) {
 static uint8_t g_rx[4], g_have;
 static uint32_t g_last_byte_us;
 
-static void receive(uint8_t b) {
-    const uint32_t now = now_us();
+static void receive(uint8_t b, uint32_t now) {
     if ((g_have & 1) && now - g_last_byte_us > GAP_US) {
         ++stat_stale;
         g_have = 0;
@@ -580,6 +621,7 @@ int main(void) {
     TCCR3B = (1 << WGM32) | (1 << CS31);
     OCR3A = 999;
     ETIMSK |= (1 << OCIE3A);
+    set_sleep_mode(SLEEP_MODE_IDLE); /* the timers, the UART and INT4..7 run on */
     {
         int16_t counted[2];
         read_encoders(counted); /* the power-on origin: counts 0, the table where it stands */
@@ -588,15 +630,35 @@ int main(void) {
     }
     sei();
     for (;;) {
-        /* The receiver holds two bytes and the shift register (3 ms at 9600 bit/s): polled
-           here between periods, whose body takes about 1.2 ms. */
-        while (UCSR0A & (1 << RXC0))
-            receive(UDR0);
-        if (g_loop_due) {
+        poll_rx();
+        while (g_ring_tail != g_ring_head) {
+            const uint8_t b = g_ring[g_ring_tail];
+            const uint32_t at = g_ring_us[g_ring_tail];
+            g_ring_tail = (uint8_t)((g_ring_tail + 1) % RX_RING);
+            receive(b, at);
+        }
+        if (!g_loop_due) {
+            /* Nothing due: idle until the next interrupt, Timer 3's 1 ms at the latest, so the
+               receiver is polled at least every millisecond (it holds 3.1 ms). Checked with
+               interrupts off, so a period that falls due meanwhile is not slept through. */
+            cli();
+            if (!g_loop_due) {
+                sleep_enable();
+                sei();
+                sleep_cpu();
+                sleep_disable();
+            }
+            sei();
+            continue;
+        }
+        {
             cli();
             --g_loop_due;
             sei();
+            const uint32_t start = now_us();
             loop_tick();
+            const uint32_t took = now_us() - start;
+            if (took > stat_loop_us_max) stat_loop_us_max = took > 65535UL ? 65535U : (uint16_t)took;
         }
     }
 }
