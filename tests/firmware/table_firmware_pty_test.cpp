@@ -3,9 +3,10 @@
 // by the default xy_dc_table host as tests/integration/table_pty_test.cpp and
 // device_link_test.cpp drive the C++ emulator (`trilho-device table`), with the same
 // assertions: the same answers counted, the same summary counters, the killed host's move
-// finished and taken for what it is, and `trilho-cli run --port` driving mesa_xy_quadrado.G
-// to its end at the origin. Those files keep the emulator's side; this one runs the firmware.
-// Waits are on conditions with deadlines, never bare sleeps.
+// finished and taken for what it is, `trilho-cli run --port` driving mesa_xy_quadrado.G to
+// its end at the origin, and the board unplugged under a run said as such. Those files keep the
+// emulator's side; this one runs the firmware. Waits are on conditions with deadlines, never bare
+// sleeps.
 #include <gtest/gtest.h>
 
 #include <QCoreApplication>
@@ -164,6 +165,35 @@ TEST(TableFirmwarePty, TrilhoCliRunsTheSquareProgramToItsEnd) {
     ASSERT_TRUE(m.hasMatch()) << said.toStdString();
     EXPECT_NEAR(m.captured(1).toDouble(), 0.0, 0.11);
     EXPECT_NEAR(m.captured(2).toDouble(), 0.0, 0.11);
+}
+
+// device_link_test's AnUnpluggedDeviceIsSaidWithinTwoAndAHalfSeconds, on the table: the board
+// (trilho-device --firmware table) killed under a running trilho-cli run --port, once the first
+// line of the program is under way: the run ends exit 3 saying the device was unplugged.
+TEST(TableFirmwarePty, AnUnpluggedBoardIsSaidWithinTwoAndAHalfSeconds) {
+    Device device;
+    ASSERT_TRUE(device.start(kFirmware)) << device.out.toStdString();
+    QProcess cli;
+    cli.start(QStringLiteral(TRILHO_CLI),
+              {QStringLiteral("run"), QStringLiteral("--machine"), QStringLiteral("xy_dc_table"),
+               QStringLiteral("--port"), device.path,
+               QStringLiteral(TRILHO_PROGRAMS_DIR "/mesa_xy_quadrado.G")});
+    QString said;
+    ASSERT_TRUE(waitFor(
+        [&] {
+            said += QString::fromUtf8(cli.readAllStandardOutput());
+            return said.contains(QStringLiteral("Line to"));
+        },
+        30.0))
+        << said.toStdString();
+    device.process.kill();
+    QElapsedTimer since;
+    since.start();
+    ASSERT_TRUE(cli.waitForFinished(10000));
+    EXPECT_LT(since.elapsed(), 2500);
+    EXPECT_EQ(cli.exitCode(), 3);
+    const QString err = QString::fromUtf8(cli.readAllStandardError());
+    EXPECT_TRUE(err.contains(QStringLiteral("unplugged"))) << err.toStdString();
 }
 
 int main(int argc, char** argv) {
