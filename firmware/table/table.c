@@ -198,12 +198,16 @@ ISR(USART0_UDRE_vect) {
     g_tx_tail = (uint8_t)((g_tx_tail + 1) & 63);
 }
 
+volatile uint32_t stat_answers_dropped; /* whole answers not sent: the line was full */
+
+/* Room in the ring, bytes (one slot stays empty to tell full from empty). */
+static uint8_t tx_room(void) {
+    return (uint8_t)(63 - ((g_tx_head - g_tx_tail) & 63));
+}
+
 static void send_byte(uint8_t b) {
-    /* One answer a set point and one set point at a time: 64 bytes hold five answers. */
-    const uint8_t next = (uint8_t)((g_tx_head + 1) & 63);
-    if (next == g_tx_tail) return;
     g_tx[g_tx_head] = b;
-    g_tx_head = next;
+    g_tx_head = (uint8_t)((g_tx_head + 1) & 63);
     UCSR0B |= (1 << UDRIE0);
 }
 
@@ -528,6 +532,17 @@ static void answer(uint8_t code, uint16_t x, uint16_t y, uint16_t bx, uint16_t b
                                          (uint8_t)(bx >> 8), (uint8_t)bx,
                                          (uint8_t)(by >> 8), (uint8_t)by,
                                          moves};
+    /* An answer takes 11.5 ms on the line; a host that sends set points faster (a flood: a NAK
+       every 4.2 ms) fills the 63 bytes: the answer that does not fit whole is not sent at all,
+       and counted, so what goes out is always whole frames (a partial one would cost the
+       host's decoder the next frame too). */
+    cli();
+    const uint8_t room = tx_room();
+    sei();
+    if (room < ANSWER_BYTES) {
+        ++stat_answers_dropped;
+        return;
+    }
     uint8_t sum = 0;
     for (uint8_t i = 0; i < sizeof a; ++i) {
         send_byte(a[i]);

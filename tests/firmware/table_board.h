@@ -27,6 +27,7 @@ inline const char* kindName(TableBoardKind k) {
 struct TableBoardStats {
     std::uint64_t setPoints = 0, reached = 0, refused = 0, cut = 0, staleBytes = 0,
                   ignoredMoving = 0;
+    std::uint64_t answersDropped = 0;  ///< whole answers not sent for a full line (firmware)
 };
 
 class TableBoard {
@@ -53,7 +54,7 @@ class EmulatedTableBoard final : public TableBoard {
     SimDcTable& table() override { return device_.table(); }
     TableBoardStats stats() override {
         const TableFirmwareStats& s = device_.stats();
-        return {s.setPoints, s.reached, s.refused, s.cut, s.staleBytes, s.ignoredMoving};
+        return {s.setPoints, s.reached, s.refused, s.cut, s.staleBytes, s.ignoredMoving, 0};
     }
     bool moving() override { return device_.moving(); }
     std::uint8_t moves() override { return device_.moves(); }
@@ -90,8 +91,10 @@ class FirmwareTableBoard final : public TableBoard {
     std::vector<std::uint8_t> takeOutput() override { return device_->takeOutput(); }
     SimDcTable& table() override { return device_->board().plant(); }
     TableBoardStats stats() override {
-        return {u32("stat_set_points"), u32("stat_reached"), u32("stat_refused"),
-                u32("stat_cut"),        u32("stat_stale"),   u32("stat_ignored")};
+        return {u32("stat_set_points"),     u32("stat_reached"),
+                u32("stat_refused"),        u32("stat_cut"),
+                u32("stat_stale"),          u32("stat_ignored"),
+                u32("stat_answers_dropped")};
     }
     bool moving() override { return chip().ramU8("moving") != 0; }
     std::uint8_t moves() override { return chip().ramU8("moves"); }

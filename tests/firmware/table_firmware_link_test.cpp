@@ -32,6 +32,7 @@ constexpr double kDtS = 0.001;  ///< virtual time per step, s
 struct Reached {
     table_wire::SetPointMm target;
     double xMm, yMm;  ///< the plant's true position when the host took the ACK
+    double atS;       ///< when, s of board time
 };
 
 /// Host and board joined by two virtual wires; bytes towards each side pass LineFaults.
@@ -80,7 +81,7 @@ struct Link {
             host.receive(b, at);
             if (host.stats().acknowledged > acks)
                 reached.push_back({*host.reached(), device->table().positionMm(0),
-                                   device->table().positionMm(1)});
+                                   device->table().positionMm(1), at});
         });
         t += kDtS;
     }
@@ -174,8 +175,13 @@ TEST_P(TableBoards, ASquareReachesEachCornerWithAnAck) {
     EXPECT_EQ(link.host.stats().sent, kSquare.size() + 1);
     EXPECT_EQ(link.host.stats().timeouts, 0u);
     EXPECT_EQ(link.host.stats().unexpected, 0u);
-    std::printf("%s: square of %zu set points: %.3f s of board time in %.2f s of wall time\n",
-                test::kindName(GetParam()), kSquare.size(), link.t, wall.seconds());
+    std::printf(
+        "%s: square of %zu set points: %.3f s of board time in %.2f s of wall time; "
+        "ACKs at",
+        test::kindName(GetParam()), kSquare.size(), link.t, wall.seconds());
+    for (const Reached& r : link.reached)
+        std::printf(" %.3f", r.atS);
+    std::printf(" s\n");
 }
 
 // The answers byte for byte (docs/protocols.md B), a stale partial coordinate, a repeat while
@@ -312,6 +318,72 @@ TEST_P(TableBoards, AJamCutsTheDrivesThenTheTableRunsAgain) {
     ASSERT_TRUE(link.run(30.0)) << link.host.error();
     ASSERT_EQ(link.reached.size(), 1u);
     expectWithinACount(link);
+}
+
+// A dead encoder (DcTableMotion's plausibility check, alarm 16): x's count freezes mid-move,
+// the drive runs on with no count, the board cuts both drives and answers CAN; the host says
+// so, and the table stops near where the count froze.
+TEST_P(TableBoards, AStuckEncoderCutsTheDrives) {
+    Link link(GetParam());
+    ASSERT_TRUE(link.host.moveTo(200, 100));
+    while (link.t < 0.5)
+        link.step();
+    const double frozeAt = link.device->table().positionMm(0);
+    link.device->table().setEncoderStuck(0, true);
+    link.run(10.0);
+    ASSERT_TRUE(link.host.failed());
+    EXPECT_EQ(link.host.error(),
+              "the table cut its drives on the way to set point (200, 100) mm: an over-current, "
+              "a following error, a move that never settled or its soft-limit guard (a CAN "
+              "does not say which)");
+    EXPECT_EQ(link.device->stats().cut, 1u);
+    for (int i = 0; i < 500; ++i)
+        link.step();
+    const double x = link.device->table().positionMm(0);
+    EXPECT_GT(x, frozeAt);
+    EXPECT_LT(x, frozeAt + 20.0);  // DcTableMotion: stopped well inside 20 mm of the freeze
+    std::printf("%s: x's encoder froze at %.2f mm; the table stopped at %.2f mm\n",
+                test::kindName(GetParam()), frozeAt, x);
+}
+
+// A flood: 250 set points outside the table back to back (1000 bytes, 1.04 s at 9600 bit/s),
+// each answered NAK in 11.5 ms of line where the next one comes in 4.2 ms. Nothing moves, and
+// what comes back is whole answers only, each a NAK of (400, 40) (the emulator queues all 250
+// on its unbounded line; the firmware's 63-byte line ring sends what fits whole and counts the
+// rest: sent + dropped = 250).
+TEST_P(TableBoards, AFloodOfSetPointsIsAnsweredInWholeFramesAndNothingMoves) {
+    Link link(GetParam());
+    auto& d = *link.device;
+    std::vector<std::uint8_t> flood;
+    for (int i = 0; i < 250; ++i)
+        for (std::uint8_t b : table_wire::encodeSetPoint(400, 40))
+            flood.push_back(b);
+    link.down.send(flood, link.t);
+    table_wire::AnswerDecoder decoder;
+    std::size_t bytes = 0, naks = 0;
+    for (const double end = link.t + 4.0; link.t < end; link.t += kDtS) {
+        link.down.deliver(link.t, [&](std::uint8_t b, double at) { d.receive(b, at); });
+        d.step(kDtS, link.t);
+        link.up.send(d.takeOutput(), link.t);
+        link.up.deliver(link.t, [&](std::uint8_t b, double at) {
+            ++bytes;
+            if (auto a = decoder.feed(b, at)) {
+                EXPECT_EQ(a->code, table_wire::kNak);
+                EXPECT_EQ(a->setPoint.x, 400);
+                EXPECT_EQ(a->setPoint.y, 40);
+                ++naks;
+            }
+        });
+    }
+    EXPECT_EQ(d.stats().setPoints, 250u);
+    EXPECT_EQ(d.stats().refused, 250u);
+    EXPECT_EQ(bytes, naks * table_wire::kAnswerBytes);  // whole frames, nothing else
+    EXPECT_EQ(naks + d.stats().answersDropped, 250u);
+    EXPECT_EQ(d.table().positionMm(0), 0.0);
+    EXPECT_EQ(d.table().positionMm(1), 0.0);
+    std::printf("%s: a flood of 250 set points: %zu NAKs sent whole, %llu not sent\n",
+                test::kindName(GetParam()), naks,
+                static_cast<unsigned long long>(d.stats().answersDropped));
 }
 
 // late_answers_test's LateAnswers.TheTableNeverCallsDoneAPathTheBoardDidNotRun: answers 1.5 s
