@@ -6,7 +6,7 @@
 //                 [--machine PROFILE]
 //                 [--calibration [--calibration-axis x|y] [--calibration-percent P]]
 //                 (table: seed 004's open-loop calibration program)
-//                 [--firmware seed004|seed004-calibration|table]
+//                 [--firmware seed004|seed004-calibration|table|table-calibration]
 //                 (table: seed 004's own firmware, firmware/seed004, or trilho's table
 //                 firmware, firmware/table, on libsimavr)
 #include <QCommandLineParser>
@@ -115,7 +115,9 @@ int main(int argc, char* argv[]) {
         QStringLiteral("table: run the board's own firmware on a simulated ATmega128 at 8 MHz "
                        "instead of the emulator: seed004 (the main program, 9600 bit/s) or "
                        "seed004-calibration (the open-loop program, 38400 bit/s); table (trilho's "
-                       "table firmware, firmware/table: the emulator's protocol, 9600 bit/s)."),
+                       "table firmware, firmware/table: the emulator's protocol, 9600 bit/s) or "
+                       "table-calibration (its open-loop program: x at 25 %, the count every "
+                       "32 ms until 1300, 9600 bit/s)."),
         QStringLiteral("IMAGE"));
     parser.addOptions({ptyOpt, portOpt, baudOpt, corruptOpt, everyOpt, dropOpt, delayOpt, dupOpt,
                        outCorruptOpt, outDropOpt, outDupOpt, outDelayOpt, seedOpt, unpacedOpt,
@@ -145,10 +147,10 @@ int main(int argc, char* argv[]) {
         if (board != QLatin1String("table"))
             return usage(QStringLiteral("--firmware is the table's (seed 004's board)"));
         if (image != QLatin1String("seed004") && image != QLatin1String("seed004-calibration") &&
-            image != QLatin1String("table"))
-            return usage(
-                QStringLiteral("--firmware: seed004, seed004-calibration or table (got %1)")
-                    .arg(image));
+            image != QLatin1String("table") && image != QLatin1String("table-calibration"))
+            return usage(QStringLiteral("--firmware: seed004, seed004-calibration, table or "
+                                        "table-calibration (got %1)")
+                             .arg(image));
         if (parser.isSet(calibrationOpt))
             return usage(
                 QStringLiteral("--firmware runs the board's own programs: "

@@ -117,13 +117,17 @@ static uint32_t now_us(void) {
 /* ---- the encoders: channel A on INT4 / INT6, channel B on PE2 / PE3 ---- */
 static volatile int16_t g_count[2]; /* counts from the power-on origin */
 
+static volatile uint16_t g_edges[2]; /* every edge, either way (the calibration's pulsos) */
+
 ISR(INT4_vect) {
+    ++g_edges[0];
     if (PINE & (1 << PE2))
         ++g_count[0];
     else
         --g_count[0];
 }
 ISR(INT6_vect) {
+    ++g_edges[1];
     if (PINE & (1 << PE3))
         ++g_count[1];
     else
@@ -612,6 +616,61 @@ static void receive(uint8_t b, uint32_t now) {
     handle((uint16_t)(g_rx[0] << 8 | g_rx[1]), (uint16_t)(g_rx[2] << 8 | g_rx[3]));
 }
 
+#ifdef TABLE_CALIBRATION
+/* ---- the calibration image (table-calibration.elf): the emulator's open-loop program
+   (TableFirmware::Mode::Calibration, docs/protocols.md B "The calibration program"): one axis
+   forward at a fixed PWM, its count (every edge) sent LSB then MSB every 32 ms while under
+   1300; at the first check at or above 1300 the PWM stops and the board falls silent. The seed's
+   own program (firmware/seed004/calibration.c) ramps its PWM until the first pulse, waits 10 ms
+   between the two bytes and runs at 38400 bit/s; this one follows the emulator (xy.md). ---- */
+#ifndef CAL_AXIS
+#define CAL_AXIS 0 /* x: the seed drives OC1A and counts INT4; -DCAL_AXIS=1 for y */
+#endif
+#ifndef CAL_PERCENT
+#define CAL_PERCENT 25.0f /* TableFirmware::kCalibrationPercent */
+#endif
+#define CAL_PERIOD_MS 32 /* table_wire::kCalibrationPeriodS */
+#define CAL_STOP 1300    /* seed 004: while (pulsos < 1300) */
+
+volatile uint16_t cal_pulses;      /* the count (pulsos) at the last check */
+volatile uint8_t cal_done;         /* the PWM stopped at 1300 */
+volatile uint32_t stat_counts_sent; /* counts sent, 2 bytes each */
+
+static void calibration_run(void) {
+    uint32_t next = CAL_PERIOD_MS;
+    write_drive(CAL_AXIS, CAL_PERCENT);
+    for (;;) {
+        cli();
+        const uint32_t ms = g_ms;
+        sei();
+        if (ms < next) {
+            cli();
+            if (g_ms < next) {
+                sleep_enable();
+                sei();
+                sleep_cpu();
+                sleep_disable();
+            }
+            sei();
+            continue;
+        }
+        next += CAL_PERIOD_MS;
+        cli();
+        cal_pulses = g_edges[CAL_AXIS];
+        sei();
+        if (cal_done) continue;
+        if (cal_pulses < CAL_STOP) {
+            send_byte((uint8_t)(cal_pulses & 0xFF)); /* LSB first */
+            send_byte((uint8_t)(cal_pulses >> 8));
+            ++stat_counts_sent;
+            continue;
+        }
+        cal_done = 1;
+        write_drive(CAL_AXIS, 0.0f);
+    }
+}
+#endif
+
 int main(void) {
     cli();
     DDRB = 0xFF; /* PB5, PB6: PWM; the rest unused, driven low */
@@ -644,6 +703,11 @@ int main(void) {
         g_commanded[1] = g_measured[1];
     }
     sei();
+#ifdef TABLE_CALIBRATION
+    (void)loop_tick; /* the main program's, not this image's (the linker drops them) */
+    (void)receive;
+    calibration_run(); /* never returns; the UART is never read */
+#else
     for (;;) {
         poll_rx();
         while (g_ring_tail != g_ring_head) {
@@ -676,4 +740,5 @@ int main(void) {
             if (took > stat_loop_us_max) stat_loop_us_max = took > 65535UL ? 65535U : (uint16_t)took;
         }
     }
+#endif
 }

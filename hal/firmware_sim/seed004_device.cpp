@@ -42,9 +42,15 @@ long long counter(const AvrChip& chip, const char* symbol) {
 std::string Seed004Device::summary() const {
     const UartLineStats& s = board_->uart().stats();
     std::string protocol;
-    // trilho's table firmware counts what it answered, as the emulator's summary says it.
-    if (counter(board_->chip(), "stat_set_points") >= 0) {
-        const AvrChip& c = board_->chip();
+    const AvrChip& c = board_->chip();
+    if (counter(c, "stat_counts_sent") >= 0) {
+        // trilho's table firmware, its calibration image (table-calibration), as the
+        // emulator's --calibration says it.
+        protocol = "calibration: counts sent " + std::to_string(counter(c, "stat_counts_sent")) +
+                   ", pulses " + std::to_string(c.ramU16("cal_pulses")) +
+                   (c.ramU8("cal_done") ? ", stopped at 1300, " : ", running, ");
+    } else if (counter(c, "stat_set_points") >= 0) {
+        // trilho's table firmware counts what it answered, as the emulator's summary says it.
         protocol = "set points " + std::to_string(counter(c, "stat_set_points")) + ", ACK " +
                    std::to_string(counter(c, "stat_reached")) + ", NAK " +
                    std::to_string(counter(c, "stat_refused")) + ", CAN " +

@@ -42,12 +42,19 @@ class TableBoard {
     virtual std::uint8_t moves() = 0;
     /// Every set point the board began to run, in order.
     virtual std::vector<table_wire::SetPointMm> ran() = 0;
+    /// The calibration program: counts sent, the count (pulsos), whether it stopped at 1300.
+    virtual std::uint64_t countsSent() = 0;
+    virtual std::uint16_t calibrationCount() = 0;
+    virtual bool calibrationDone() = 0;
     double mmPerCount(int axis) { return table().axis(axis).mmPerCount(); }
 };
 
 class EmulatedTableBoard final : public TableBoard {
   public:
-    EmulatedTableBoard(const MachineProfile& p, std::uint64_t seed) : device_(p, seed) {}
+    EmulatedTableBoard(const MachineProfile& p, std::uint64_t seed, bool calibration)
+        : device_(p, seed,
+                  calibration ? TableFirmware::Mode::Calibration : TableFirmware::Mode::SetPoints) {
+    }
     void receive(std::uint8_t b, double at) override { device_.receive(b, at); }
     void step(double dtS, double nowS) override { device_.step(dtS, nowS); }
     std::vector<std::uint8_t> takeOutput() override { return device_.takeOutput(); }
@@ -59,6 +66,9 @@ class EmulatedTableBoard final : public TableBoard {
     bool moving() override { return device_.moving(); }
     std::uint8_t moves() override { return device_.moves(); }
     std::vector<table_wire::SetPointMm> ran() override { return device_.ran(); }
+    std::uint64_t countsSent() override { return device_.stats().countsSent; }
+    std::uint16_t calibrationCount() override { return device_.calibrationCount(); }
+    bool calibrationDone() override { return device_.calibrationDone(); }
 
   private:
     TableFirmware device_;
@@ -66,9 +76,9 @@ class EmulatedTableBoard final : public TableBoard {
 
 class FirmwareTableBoard final : public TableBoard {
   public:
-    FirmwareTableBoard(const MachineProfile& p, std::uint64_t seed) {
+    FirmwareTableBoard(const MachineProfile& p, std::uint64_t seed, bool calibration) {
         Seed004BoardOptions o;
-        o.elfPath = TRILHO_TABLE_ELF;
+        o.elfPath = calibration ? TRILHO_TABLE_CALIBRATION_ELF : TRILHO_TABLE_ELF;
         o.lineBaud = 9600;
         o.plant = p.dcTable;
         o.plantSeed = seed;
@@ -99,6 +109,9 @@ class FirmwareTableBoard final : public TableBoard {
     bool moving() override { return chip().ramU8("moving") != 0; }
     std::uint8_t moves() override { return chip().ramU8("moves"); }
     std::vector<table_wire::SetPointMm> ran() override { return ran_; }
+    std::uint64_t countsSent() override { return u32("stat_counts_sent"); }
+    std::uint16_t calibrationCount() override { return chip().ramU16("cal_pulses"); }
+    bool calibrationDone() override { return chip().ramU8("cal_done") != 0; }
     Seed004Board& board() { return device_->board(); }
     bool stopped() const { return device_->stopped(); }
 
@@ -115,10 +128,13 @@ class FirmwareTableBoard final : public TableBoard {
     std::vector<table_wire::SetPointMm> ran_;
 };
 
+/// calibration: the open-loop calibration program (TableFirmware::Mode::Calibration,
+/// table-calibration.elf) instead of the main program.
 inline std::unique_ptr<TableBoard> makeTableBoard(TableBoardKind k, const MachineProfile& p,
-                                                  std::uint64_t seed) {
-    if (k == TableBoardKind::Emulator) return std::make_unique<EmulatedTableBoard>(p, seed);
-    return std::make_unique<FirmwareTableBoard>(p, seed);
+                                                  std::uint64_t seed, bool calibration = false) {
+    if (k == TableBoardKind::Emulator)
+        return std::make_unique<EmulatedTableBoard>(p, seed, calibration);
+    return std::make_unique<FirmwareTableBoard>(p, seed, calibration);
 }
 
 }  // namespace trilho::test

@@ -46,8 +46,8 @@ struct Link {
     std::vector<Reached> reached;
 
     Link(TableBoardKind kind, const LineFaultSettings& faults = {}, double downDelayS = 0.0,
-         double upDelayS = 0.0)
-        : device(test::makeTableBoard(kind, profile, 7)),
+         double upDelayS = 0.0, bool calibration = false)
+        : device(test::makeTableBoard(kind, profile, 7, calibration)),
           host(config(profile)),
           down(9600, downDelayS),
           up(9600, upDelayS),
@@ -384,6 +384,44 @@ TEST_P(TableBoards, AFloodOfSetPointsIsAnsweredInWholeFramesAndNothingMoves) {
     std::printf("%s: a flood of 250 set points: %zu NAKs sent whole, %llu not sent\n",
                 test::kindName(GetParam()), naks,
                 static_cast<unsigned long long>(d.stats().answersDropped));
+}
+
+// table_link_test's TableLink.CalibrationCountsRiseEvery32msTo1300: the calibration program
+// (table-calibration.elf on the firmware) streams x's count every 32 ms, LSB then MSB, while
+// under 1300; then the motor stops and the board falls silent.
+TEST_P(TableBoards, CalibrationCountsRiseEvery32msTo1300) {
+    Link link(GetParam(), {}, 0.0, 0.0, true);
+    auto& d = *link.device;
+    table_wire::EncoderStreamDecoder decoder;
+    std::vector<std::pair<std::uint16_t, double>> counts;  // count, arrival of its MSB
+    while (link.t < 4.0) {
+        d.step(kDtS, link.t);
+        link.up.send(d.takeOutput(), link.t);
+        link.up.deliver(link.t, [&](std::uint8_t b, double at) {
+            if (auto c = decoder.feed(b, at)) counts.emplace_back(*c, at);
+        });
+        link.t += kDtS;
+    }
+    ASSERT_GT(counts.size(), 10u);
+    EXPECT_TRUE(d.calibrationDone());
+    EXPECT_GE(d.calibrationCount(), 1300);
+    EXPECT_EQ(decoder.resyncs(), 0u);
+    EXPECT_EQ(counts.size(), d.countsSent());
+    std::uint16_t biggestRise = 0;
+    for (std::size_t i = 1; i < counts.size(); ++i) {
+        EXPECT_GT(counts[i].first, counts[i - 1].first) << i;
+        EXPECT_NEAR(counts[i].second - counts[i - 1].second, 0.032, 0.0011) << i;
+        biggestRise = std::max<std::uint16_t>(biggestRise, counts[i].first - counts[i - 1].first);
+    }
+    EXPECT_LT(counts.back().first, 1300);
+    EXPECT_GE(counts.back().first + biggestRise, 1300);
+    EXPECT_EQ(d.table().axis(0).state().drivePercent, 0.0);
+    EXPECT_EQ(d.table().positionMm(1), 0.0);  // y never moved
+    std::printf(
+        "%s calibration: %zu counts, last %u at %.3f s, rise up to %u a period; %u "
+        "pulses, x at %.3f mm\n",
+        test::kindName(GetParam()), counts.size(), counts.back().first, counts.back().second,
+        biggestRise, d.calibrationCount(), d.table().positionMm(0));
 }
 
 // late_answers_test's LateAnswers.TheTableNeverCallsDoneAPathTheBoardDidNotRun: answers 1.5 s
