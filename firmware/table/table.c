@@ -217,8 +217,9 @@ static void send_byte(uint8_t b) {
 
 /* ---- the receiver: UART0 polled (RXC0) into a ring, each byte with its time. UDR0 holds two
    bytes and the shift register a third (3.1 ms at 9600 bit/s): poll_rx() runs in the main loop
-   and between the parts of a period's body (which takes up to about 2.3 ms whole), so the
-   receiver is never left longer than one part (stat_rx_gap_us_max). ---- */
+   and between the parts of a period's body (which takes up to about 2.5 ms whole), so the
+   receiver is never left unpolled longer than the idle millisecond and one part (1.6 ms
+   measured, stat_rx_gap_us_max). ---- */
 #define RX_RING 16
 static uint8_t g_ring[RX_RING];
 static uint32_t g_ring_us[RX_RING];
