@@ -424,6 +424,73 @@ TEST_P(TableBoards, CalibrationCountsRiseEvery32msTo1300) {
         biggestRise, d.calibrationCount(), d.table().positionMm(0));
 }
 
+// The two boards answer the same: 24 seeded set points, a third of them outside the table
+// (NAK), the edges 300 (inside) and 301 (outside) among them, each sent when the board is at
+// rest and answered before the next; every answer decoded from both boards' lines is the same
+// (code, set point as received, the one before, the move count), and both tables stand at the
+// last one reached within a count.
+TEST(TableBoardsAgree, TheSameSetPointsGetTheSameAnswersFromBothBoards) {
+    std::mt19937_64 rng(32);
+    std::vector<table_wire::SetPointMm> sent{{300, 0}, {301, 0}, {300, 300}, {0, 301}};
+    std::uniform_int_distribution<int> inside(0, 300), any(0, 65535), pick(0, 2);
+    while (sent.size() < 24) {
+        if (pick(rng) == 0)
+            sent.push_back(
+                {static_cast<std::uint16_t>(any(rng)), static_cast<std::uint16_t>(any(rng))});
+        else
+            sent.push_back(
+                {static_cast<std::uint16_t>(inside(rng)), static_cast<std::uint16_t>(inside(rng))});
+    }
+    std::vector<table_wire::DecodedAnswer> answers[2];
+    double at[2][2] = {};  // where each table ends, mm
+    for (int k = 0; k < 2; ++k) {
+        Link link(k == 0 ? TableBoardKind::Emulator : TableBoardKind::Firmware);
+        auto& d = *link.device;
+        table_wire::AnswerDecoder decoder;
+        for (const auto& sp : sent) {
+            const table_wire::SetPoint bytes = table_wire::encodeSetPoint(sp.x, sp.y);
+            link.down.send(std::vector<std::uint8_t>(bytes.begin(), bytes.end()), link.t);
+            const std::size_t before = answers[k].size();
+            for (const double end = link.t + 10.0; link.t < end && answers[k].size() == before;
+                 link.t += kDtS) {
+                link.down.deliver(link.t, [&](std::uint8_t b, double t) { d.receive(b, t); });
+                d.step(kDtS, link.t);
+                link.up.send(d.takeOutput(), link.t);
+                link.up.deliver(link.t, [&](std::uint8_t b, double t) {
+                    if (auto a = decoder.feed(b, t)) answers[k].push_back(*a);
+                });
+            }
+            ASSERT_EQ(answers[k].size(), before + 1)
+                << test::kindName(k == 0 ? TableBoardKind::Emulator : TableBoardKind::Firmware)
+                << ": no answer to (" << sp.x << ", " << sp.y << ")";
+        }
+        at[k][0] = d.table().positionMm(0);
+        at[k][1] = d.table().positionMm(1);
+    }
+    ASSERT_EQ(answers[0].size(), answers[1].size());
+    int naks = 0;
+    for (std::size_t i = 0; i < answers[0].size(); ++i) {
+        const auto &e = answers[0][i], &f = answers[1][i];
+        EXPECT_EQ(e.code, f.code) << i;
+        EXPECT_EQ(e.setPoint.x, f.setPoint.x) << i;
+        EXPECT_EQ(e.setPoint.y, f.setPoint.y) << i;
+        EXPECT_EQ(e.before.x, f.before.x) << i;
+        EXPECT_EQ(e.before.y, f.before.y) << i;
+        EXPECT_EQ(e.moves, f.moves) << i;
+        naks += e.code == table_wire::kNak;
+    }
+    EXPECT_EQ(answers[0][0].code, table_wire::kAck);  // (300, 0): the edge is inside
+    EXPECT_EQ(answers[0][1].code, table_wire::kNak);  // (301, 0)
+    EXPECT_EQ(answers[0][2].code, table_wire::kAck);  // (300, 300)
+    EXPECT_EQ(answers[0][3].code, table_wire::kNak);  // (0, 301)
+    EXPECT_NEAR(at[0][0], at[1][0], 2 * 0.106);       // each within a count of the same set point
+    EXPECT_NEAR(at[0][1], at[1][1], 2 * 0.100);
+    std::printf(
+        "%zu set points, %d refused: the same answers from both boards; the tables at "
+        "(%.3f, %.3f) and (%.3f, %.3f) mm\n",
+        sent.size(), naks, at[0][0], at[0][1], at[1][0], at[1][1]);
+}
+
 // late_answers_test's LateAnswers.TheTableNeverCallsDoneAPathTheBoardDidNotRun: answers 1.5 s
 // late each way (a 3 s round trip, beyond 2 s plus the move's time) and 2 % of the bytes
 // dropped both ways: done only with the board's trace the path asked, else a failure saying
