@@ -127,11 +127,14 @@ bool Seed004Board::timer1Running() const {
 }
 
 void Seed004Board::step() {
-    // The board restarting Timer 1 after an over-current stopped it (firmware/table clears the
-    // fault and holds; the seed's program never restarts it) re-arms the drives.
-    const bool running = timer1Running();
-    if (running && !timer1WasRunning_ && !plant_.pwmRunning()) plant_.restartPwm();
-    timer1WasRunning_ = running;
+    // Timer 1's clock running while an over-current holds the plant's drives off: the program
+    // restarted it (firmware/table clears the fault and holds), which re-arms the drives, as the
+    // comparator lets go once the drive is off. The over-current handlers stop the clock within
+    // cycles of the pin's rise, well inside the step after it, so the seed's programs (which
+    // never restart it) are never re-armed. (A write hook on TCCR1B would see the restart
+    // exactly, but simavr 1.6 shares at most four I/O registers between handlers, and UART0's
+    // UCSR0B, OCR1A and OCR1B take three.)
+    if (!plant_.pwmRunning() && timer1Running()) plant_.restartPwm();
     for (int i = 0; i < 2; ++i) {
         const double d = dutyPercent(i);
         plant_.axis(i).setDrive(reverse(i) ? -d : d);

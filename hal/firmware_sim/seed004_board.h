@@ -95,7 +95,6 @@ class Seed004Board {
     std::array<bool, 2> overCurrentLevel_{};
     std::array<avr_irq_t*, 2> encoderBPin_{};
     std::array<bool, 2> encoderBLevel_{};
-    bool timer1WasRunning_ = false;
     std::array<std::uint64_t, 2> edges_{};
     std::vector<OcrWrite> ocrWrites_;
 };
