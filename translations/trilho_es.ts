@@ -985,6 +985,10 @@
         <translation>Haga clic para arrancar la mesa hacia el punto de consigna</translation>
     </message>
     <message>
+        <source>Entry number: raise it by one before a new set point (the operator&apos;s entries, seed 004); a lower number shows an earlier entry, to send it again</source>
+        <translation>Número de ingreso: auméntelo en uno antes de un nuevo set point (los ingresos del operador, seed 004); un número menor muestra un ingreso anterior, para enviarlo de nuevo</translation>
+    </message>
+    <message>
         <source>Serial port</source>
         <translation>Puerto serie</translation>
     </message>

@@ -985,6 +985,10 @@
         <translation>Clique para partir a mesa rumo ao ponto de ajuste</translation>
     </message>
     <message>
+        <source>Entry number: raise it by one before a new set point (the operator&apos;s entries, seed 004); a lower number shows an earlier entry, to send it again</source>
+        <translation>Número da entrada: aumente-o de um antes de um novo set point (as entradas do operador, seed 004); um número menor mostra uma entrada anterior, para enviá-la de novo</translation>
+    </message>
+    <message>
         <source>Serial port</source>
         <translation>Porta serial</translation>
     </message>

@@ -18,6 +18,7 @@
 #include <cstdio>
 
 #include "app/device/device_runner.h"
+#include "app/device/host_open_watch.h"
 #include "app/device/pty_endpoint.h"
 #include "core/profile/machine_profile.h"
 #include "hal/emulator/plotter_firmware.h"
@@ -254,12 +255,34 @@ int main(int argc, char* argv[]) {
     } else {
         std::string error;
         if (!pty.open(&error)) return usage(QString::fromStdString(error));
-        runner = std::make_unique<DeviceRunner>(std::move(firmware), pty.masterFd(), settings);
+        // The calibration program runs from power-on and never reads the line: the board is
+        // powered when a host opens it (app/device/host_open_watch.h), not at the emulator's
+        // start, so an operator who types the calibrate command later hears the whole stream.
+        const bool waitsForHost =
+            parser.isSet(calibrationOpt) || image == QLatin1String("seed004-calibration");
+        if (waitsForHost) {
+            auto* watch = new HostOpenWatch(
+                QString::fromStdString(pty.slavePath()),
+                [&] {
+                    runner = std::make_unique<DeviceRunner>(std::move(firmware), pty.masterFd(),
+                                                            settings);
+                    std::printf("trilho-device: a host opened the line: the board is on\n");
+                    std::fflush(stdout);
+                },
+                &app);
+            QString why;
+            if (!watch->start(&why)) return usage(why);
+        } else {
+            runner = std::make_unique<DeviceRunner>(std::move(firmware), pty.masterFd(), settings);
+        }
         std::printf("trilho-device: %s on %s at %d bit/s\n", qPrintable(board),
                     pty.slavePath().c_str(), settings.baud);
         if (parser.isSet(firmwareOpt))
             std::printf("trilho-device: firmware %s on a simulated ATmega128 at 8 MHz\n",
                         qPrintable(image));
+        if (waitsForHost)
+            std::printf("trilho-device: the board is powered when a host opens %s\n",
+                        pty.slavePath().c_str());
     }
     std::fflush(stdout);
 
@@ -271,6 +294,9 @@ int main(int argc, char* argv[]) {
     });
     quitCheck.start(50);
     const int rc = app.exec();
-    std::printf("trilho-device: %s\n", runner->summary().c_str());
+    if (runner)
+        std::printf("trilho-device: %s\n", runner->summary().c_str());
+    else
+        std::printf("trilho-device: no host opened the line; the board was never powered\n");
     return rc;
 }
