@@ -258,8 +258,9 @@ int main(int argc, char* argv[]) {
         // The calibration program runs from power-on and never reads the line: the board is
         // powered when a host opens it (app/device/host_open_watch.h), not at the emulator's
         // start, so an operator who types the calibrate command later hears the whole stream.
-        const bool waitsForHost =
-            parser.isSet(calibrationOpt) || image == QLatin1String("seed004-calibration");
+        const bool waitsForHost = parser.isSet(calibrationOpt) ||
+                                  image == QLatin1String("seed004-calibration") ||
+                                  image == QLatin1String("table-calibration");
         if (waitsForHost) {
             auto* watch = new HostOpenWatch(
                 QString::fromStdString(pty.slavePath()),

@@ -223,6 +223,11 @@ TEST(TableFirmwarePty, TrilhoCliCalibrateHearsTheCalibrationImagesStream) {
     EXPECT_EQ(o[QStringLiteral("dropped")].toInt(), 0);
     const QString said = device.stop();
     EXPECT_TRUE(said.contains(QStringLiteral("stopped at 1300"))) << said.toStdString();
+    // The board is powered when the host opens the line (issue 32 item 10, as the emulator's
+    // --calibration): the host heard every count the board sent.
+    const auto sent = QRegularExpression(QStringLiteral("counts sent ([0-9]+)")).match(said);
+    ASSERT_TRUE(sent.hasMatch()) << said.toStdString();
+    EXPECT_EQ(o[QStringLiteral("counts")].toInt(), sent.captured(1).toInt());
     const QRegularExpression at(QStringLiteral("x (-?[0-9.]+) mm, y (-?[0-9.]+) mm"));
     const auto m = at.match(said);
     ASSERT_TRUE(m.hasMatch()) << said.toStdString();
