@@ -21,6 +21,7 @@ void SimRail::derive() {
     massKg_ = params_.movingMassKg * params_.massFactor + params_.reflectedMassKg;
     perMassMm_ = 1000.0 / massKg_;
     perTauM_ = 1.0 / (params_.speedLoopTauS * 1000.0);
+    perStiffness_ = 1.0 / params_.speedStiffnessNPerMmS();  // 0 for an ideal speed source
 }
 
 void SimRail::setFaults(const FaultInjection& faults) {
@@ -98,8 +99,14 @@ void SimRail::subStep(double h) {
         std::clamp((static_cast<int>(driveCode()) - kDacZero) * (10.0 / 127.0), -10.0, 10.0);
 
     // Amplifier speed loop: first order towards the commanded speed; the force it may use is
-    // the current limit, so the acceleration limit falls as the moving mass rises.
-    const double vCmd = s.referenceV / 10.0 * vmax_;
+    // the current limit, so the acceleration limit falls as the moving mass rises. An external
+    // load is answered with the loop's finite stiffness: the speed it settles at is the
+    // reference's plus load / stiffness (a load pushing towards +x speeds it that way) (the seed's
+    // 0.5 % regulation at the rated torque), and the amplifier supplies the load's force too,
+    // within the same current limit. Friction is compensated as before (the speed loop's integral),
+    // so with no load nothing changes.
+    const double load = loadN_;
+    const double vCmd = s.referenceV / 10.0 * vmax_ + load * perStiffness_;
     const double v = s.velocityMmS;
     const double vM = v / 1000.0;  // m/s
     const double friction = (v > 0   ? 1.0
@@ -110,14 +117,16 @@ void SimRail::subStep(double h) {
     double force = 0.0;
     if (!s.amplifierFaulted) {
         const double aWanted = (vCmd - v) * perTauM_;  // m/s2
-        force = std::clamp(massKg_ * aWanted + friction, -forceMax_, forceMax_);
+        force = std::clamp(massKg_ * aWanted + friction - load, -forceMax_, forceMax_);
     }
-    double a = (force - friction) * perMassMm_;  // mm/s2
+    // What drives the platform against its friction: the amplifier's force and the load.
+    const double drive = force + load;
+    double a = (drive - friction) * perMassMm_;  // mm/s2
     double vNext = v + a * h;
     // Coulomb friction stops the platform; it never reverses it.
-    if (v != 0.0 && (vNext > 0) != (v > 0) && std::abs(force) < params_.coulombFrictionN)
+    if (v != 0.0 && (vNext > 0) != (v > 0) && std::abs(drive) < params_.coulombFrictionN)
         vNext = 0.0;
-    if (v == 0.0 && std::abs(force) <= params_.coulombFrictionN) vNext = 0.0, a = 0.0;
+    if (v == 0.0 && std::abs(drive) <= params_.coulombFrictionN) vNext = 0.0, a = 0.0;
     double dx = 0.5 * (v + vNext) * h;
     double x = s.positionMm + dx;
     s.atHardStop = false;
