@@ -17,9 +17,9 @@ const double kTopSpeedMmS = 3000.0 / 60.0 / 10.0 * kPi * 120.0;
 const double kStiffness = (3.0 * 10.0 * 0.8 / 0.060) / (0.005 * kTopSpeedMmS);  // N per mm/s
 const double kMmSPerCode = kTopSpeedMmS / 127.0;
 const double kCountMm = 1.0 / 22.8;
-// Coulomb friction (40 N) holds a platform at rest while the speed loop's force, (193 kg / 15 ms)
-// x the speed it is asked for, stays under it: a band of 40 / 12.87 = 3.11 mm/s of command.
-const double kFrictionBandMmS = 40.0 / ((175.0 + 18.0) / 0.015 / 1000.0);
+// Coulomb friction (40 N) holds a platform at rest while the amplifier's push, the stiffness x
+// the speed it is asked for, is within 40 N of the load: a band of 40 / 42.44 = 0.94 mm/s.
+const double kFrictionBandMmS = 40.0 / kStiffness;
 
 DisturbanceTestSpec holdSpec(double forceN, double kp, double ki) {
     DisturbanceTestSpec s;
