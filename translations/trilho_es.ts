@@ -1012,6 +1012,10 @@
         <translation>Defina la carga y cuándo llega, luego Ejecutar: se usan la ley, las ganancias, el período, la masa y la semilla de la ventana. Pruebe Ki 0, luego Ki 5.</translation>
     </message>
     <message>
+        <source>&lt;b&gt;Not run:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;No ejecutado:&lt;/b&gt; %1</translation>
+    </message>
+    <message>
         <source>&lt;b&gt;Aborted:&lt;/b&gt; %1&lt;br&gt;</source>
         <translation>&lt;b&gt;Interrumpido:&lt;/b&gt; %1&lt;br&gt;</translation>
     </message>

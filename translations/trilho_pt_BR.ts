@@ -1012,6 +1012,10 @@
         <translation>Defina a carga e quando ela vem, depois Executar: usam-se a lei, os ganhos, o período, a massa e a semente da janela. Experimente Ki 0, depois Ki 5.</translation>
     </message>
     <message>
+        <source>&lt;b&gt;Not run:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;Não executado:&lt;/b&gt; %1</translation>
+    </message>
+    <message>
         <source>&lt;b&gt;Aborted:&lt;/b&gt; %1&lt;br&gt;</source>
         <translation>&lt;b&gt;Interrompido:&lt;/b&gt; %1&lt;br&gt;</translation>
     </message>

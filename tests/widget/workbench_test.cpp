@@ -787,6 +787,16 @@ class WorkbenchTest : public QObject {
                  qPrintable(view->metricsLabel()->text()));
         QVERIFY(view->result()->metrics.peakDeviationMm > 0.3);
         QVERIFY(std::isfinite(view->result()->metrics.recoveryTimeS));
+        // A test the experiment refuses says so, and why: moving under the 1996 law.
+        w.findChild<QComboBox*>(QStringLiteral("law"))
+            ->setCurrentIndex(w.findChild<QComboBox*>(QStringLiteral("law"))
+                                  ->findData(static_cast<int>(LoopLaw::Classic)));
+        view->whileBox()->setCurrentIndex(1);
+        view->runButton()->click();
+        QCOMPARE(view->result()->abort, StepAbort::Refused);
+        QVERIFY2(view->metricsLabel()->text().contains(QStringLiteral("Not run:")) &&
+                     view->metricsLabel()->text().contains(QStringLiteral("engineered law")),
+                 qPrintable(view->metricsLabel()->text()));
         WorkbenchWindow table(MachineProfile::xyDcTable());
         QVERIFY(!table.disturbanceView());
     }

@@ -133,6 +133,9 @@ QString DisturbanceView::metricsText() const {
     const DisturbanceTestResult& r = *result_;
     const DisturbanceMetrics& m = r.metrics;
     QString t;
+    // Refused before it ran (a move under the 1996 law, a load beyond a profile's bound).
+    if (r.abort == StepAbort::Refused)
+        return tr("<b>Not run:</b> %1").arg(r.abortReason.toHtmlEscaped());
     if (!r.ok()) t += tr("<b>Aborted:</b> %1<br>").arg(r.abortReason.toHtmlEscaped());
     if (!m.ok) return t + tr("No metrics: %1").arg(QString::fromStdString(m.problem));
     t += tr("Load %1 N at %2 s, Kp %3, Ki %4, Kd %5<br>")
