@@ -28,7 +28,11 @@ enum class DisturbanceWhile : std::uint8_t { Hold, Move };
 
 struct DisturbanceTestSpec {
     MachineProfile profile = MachineProfile::rail();
-    double forceN = 200.0;  ///< signed: positive pushes towards +x
+    double forceN = 200.0;  ///< the rail: signed, positive pushes towards +x
+    /// The DC table: the axis ('x' or 'y') and its load torque, percent of the motor's stall
+    /// torque at 100 % PWM (SimDcAxis::setLoadPercent), signed; the test holds (no move).
+    char axis = 0;
+    double loadPercent = 0.0;
     double atS = 0.5;       ///< when the load comes, s from the start of the test
     double observeS = 5.0;  ///< how long the test records after the load, s
     DisturbanceWhile during = DisturbanceWhile::Hold;
@@ -64,7 +68,8 @@ struct DisturbanceTestResult {
     /// The amplifier's stiffness the load met, N per mm/s (infinite: an ideal speed source).
     double stiffnessNPerMmS = 0.0;
     /// Where a proportional-only loop settles: F / (stiffness x Kp x mm/s a DAC code), mm (the
-    /// rail's engineered law; NaN for the classic law, whose 1996 rounding makes its own band).
+    /// rail's engineered law; NaN for the classic law, whose 1996 rounding makes its own band);
+    /// on the DC table's engineered law load % / kp.
     double proportionalDeviationMm = 0.0;
     bool ok() const { return abort == StepAbort::None; }
 };

@@ -127,11 +127,46 @@ TEST(DisturbanceTest, BadSpecsAreRefusedBeforeAnythingRuns) {
     s.speedFraction = 1.0;  // a rapid reaches the far end long before 5.5 s
     EXPECT_TRUE(refused(s));
     s = holdSpec(100.0, 1.2, 0.0);
-    s.profile = MachineProfile::xyDcTable();
+    s.profile = MachineProfile::xyDcTable();  // no axis
+    EXPECT_TRUE(refused(s));
+    s = holdSpec(100.0, 1.2, 0.0);
+    s.profile = MachineProfile::xyPlotter();
     EXPECT_TRUE(refused(s));
     s = holdSpec(100.0, 1.2, 0.0);
     s.periodS = 0.5;
     EXPECT_TRUE(refused(s));
+}
+
+// The DC table (a torque per axis, percent of the stall torque): under friction (3 %) the held
+// axis does not move; above it, the table's own encoder check, whose motor model knows no load,
+// reads the drive held against the load with no count as a dead encoder (alarm 16) and cuts:
+// what the machine does today, reported as an abort, never as a result.
+TEST(DisturbanceTest, OnTheDcTableALoadUnderFrictionMovesNothing) {
+    DisturbanceTestSpec s;
+    s.profile = MachineProfile::xyDcTable();
+    s.axis = 'x';
+    s.loadPercent = 2.0;
+    const DisturbanceTestResult r = runDisturbanceTest(s);
+    ASSERT_TRUE(r.ok()) << r.abortReason.toStdString();
+    EXPECT_EQ(r.metrics.peakDeviationMm, 0.0);
+    EXPECT_NEAR(r.proportionalDeviationMm, 2.0 / 14.0, 1e-12);  // load % / kp
+    EXPECT_NEAR(r.countsPerMm, 2.0 * kPi / (2.12 * 0.314), 1e-9);
+}
+
+TEST(DisturbanceTest, OnTheDcTableALoadAboveFrictionStopsOnTheEncoderCheck) {
+    DisturbanceTestSpec s;
+    s.profile = MachineProfile::xyDcTable();
+    s.axis = 'y';
+    s.loadPercent = 10.0;
+    const DisturbanceTestResult r = runDisturbanceTest(s);
+    EXPECT_EQ(r.abort, StepAbort::ServoFault);
+    EXPECT_TRUE(r.abortReason.contains(QStringLiteral("alarm 16"))) << r.abortReason.toStdString();
+    EXPECT_GT(r.metrics.peakDeviationMm, 0.1);  // it was pushed before the cut
+    s.axis = 0;
+    EXPECT_EQ(runDisturbanceTest(s).abort, StepAbort::Refused);
+    s.axis = 'x';
+    s.loadPercent = 101.0;  // beyond twice the 50 % clamp
+    EXPECT_EQ(runDisturbanceTest(s).abort, StepAbort::Refused);
 }
 
 TEST(DisturbanceTest, TheSameSpecGivesTheSameTraceBitForBit) {

@@ -14,16 +14,26 @@ QJsonObject disturbanceReportJson(const DisturbanceReport& r) {
     const DisturbanceMetrics& m = res.metrics;
     o[QStringLiteral("ok")] = res.ok() && m.ok;
     if (!res.ok()) o[QStringLiteral("abort_reason")] = res.abortReason;
-    o[QStringLiteral("force_n")] = r.spec.forceN;
+    const bool table = r.spec.profile.kind == MachineKind::DcTable;
+    if (table)
+        o[QStringLiteral("torque_pct")] = r.spec.loadPercent;
+    else
+        o[QStringLiteral("force_n")] = r.spec.forceN;
     o[QStringLiteral("at_s")] = r.spec.atS;
     o[QStringLiteral("while")] = disturbanceWhileName(r.spec.during);
     if (r.spec.during == DisturbanceWhile::Move)
         o[QStringLiteral("speed_fraction")] = r.spec.speedFraction;
     o[QStringLiteral("law")] =
         res.law == LoopLaw::Classic ? QStringLiteral("classic") : QStringLiteral("engineered");
-    o[QStringLiteral("kp")] = res.gains.kp;
-    o[QStringLiteral("ki")] = res.gains.ki;
-    o[QStringLiteral("kd")] = res.gains.kd;
+    if (table && res.law == LoopLaw::Classic) {  // seed 004's law: its b0, b1 per rad
+        o[QStringLiteral("b0")] = res.gains.b0;
+        o[QStringLiteral("b1")] = res.gains.b1;
+    } else {
+        o[QStringLiteral("kp")] = res.gains.kp;
+        o[QStringLiteral("ki")] = res.gains.ki;
+        o[table ? QStringLiteral("kff") : QStringLiteral("kd")] =
+            table ? res.gains.kff : res.gains.kd;
+    }
     o[QStringLiteral("amplifier_stiffness_n_per_mm_s")] = numberOrNull(res.stiffnessNPerMmS);
     o[QStringLiteral("proportional_deviation_mm")] = numberOrNull(res.proportionalDeviationMm);
     if (m.ok) {
@@ -48,32 +58,52 @@ QJsonObject disturbanceReportJson(const DisturbanceReport& r) {
 QString disturbanceReportText(const DisturbanceReport& r) {
     const DisturbanceTestResult& res = r.result;
     const DisturbanceMetrics& m = res.metrics;
+    const bool table = r.spec.profile.kind == MachineKind::DcTable;
     QString t;
-    t += QStringLiteral("Load disturbance on %1: %2 N at %3 s while %4%5\n")
-             .arg(r.conditions.machine)
-             .arg(r.spec.forceN)
-             .arg(r.spec.atS)
-             .arg(r.spec.during == DisturbanceWhile::Move ? QStringLiteral("moving")
-                                                          : QStringLiteral("holding"))
-             .arg(r.spec.during == DisturbanceWhile::Move
-                      ? QStringLiteral(" at %1 of the rapid speed").arg(r.spec.speedFraction)
-                      : QString());
-    t += QStringLiteral("  law %1, Kp %2, Ki %3, Kd %4, period %5 s\n")
-             .arg(res.law == LoopLaw::Classic ? QStringLiteral("classic")
-                                              : QStringLiteral("engineered"))
-             .arg(res.gains.kp)
-             .arg(res.gains.ki)
-             .arg(res.gains.kd)
-             .arg(res.periodS);
-    t += std::isfinite(res.stiffnessNPerMmS)
-             ? QStringLiteral("  amplifier stiffness %1 N per mm/s\n")
-                   .arg(res.stiffnessNPerMmS, 0, 'f', 2)
-             : QStringLiteral("  amplifier: an ideal speed source (no load slows it)\n");
-    if (std::isfinite(res.proportionalDeviationMm))
+    if (table)
         t += QStringLiteral(
-                 "  a proportional-only loop would settle %1 mm off (F / (stiffness x "
-                 "Kp x mm/s a code))\n")
-                 .arg(res.proportionalDeviationMm, 0, 'f', 3);
+                 "Load disturbance on %1 axis %2: %3 % of the stall torque at %4 s "
+                 "while holding\n")
+                 .arg(r.conditions.machine, r.conditions.axis)
+                 .arg(r.spec.loadPercent)
+                 .arg(r.spec.atS);
+    else
+        t += QStringLiteral("Load disturbance on %1: %2 N at %3 s while %4%5\n")
+                 .arg(r.conditions.machine)
+                 .arg(r.spec.forceN)
+                 .arg(r.spec.atS)
+                 .arg(r.spec.during == DisturbanceWhile::Move ? QStringLiteral("moving")
+                                                              : QStringLiteral("holding"))
+                 .arg(r.spec.during == DisturbanceWhile::Move
+                          ? QStringLiteral(" at %1 of the rapid speed").arg(r.spec.speedFraction)
+                          : QString());
+    if (table && res.law == LoopLaw::Classic)
+        t += QStringLiteral("  law seed 004 (signed error), b0 %1, b1 %2, period %3 s\n")
+                 .arg(res.gains.b0)
+                 .arg(res.gains.b1)
+                 .arg(res.periodS);
+    else
+        t += QStringLiteral("  law %1, Kp %2, Ki %3, %4 %5, period %6 s\n")
+                 .arg(res.law == LoopLaw::Classic ? QStringLiteral("classic")
+                                                  : QStringLiteral("engineered"))
+                 .arg(res.gains.kp)
+                 .arg(res.gains.ki)
+                 .arg(table ? QStringLiteral("Kff") : QStringLiteral("Kd"))
+                 .arg(table ? res.gains.kff : res.gains.kd)
+                 .arg(res.periodS);
+    if (table)
+        t +=
+            QStringLiteral("  a PWM drive, no speed loop: the motor's back EMF is its stiffness\n");
+    else
+        t += std::isfinite(res.stiffnessNPerMmS)
+                 ? QStringLiteral("  amplifier stiffness %1 N per mm/s\n")
+                       .arg(res.stiffnessNPerMmS, 0, 'f', 2)
+                 : QStringLiteral("  amplifier: an ideal speed source (no load slows it)\n");
+    if (std::isfinite(res.proportionalDeviationMm))
+        t += QStringLiteral("  a proportional-only loop would settle %1 mm off (%2)\n")
+                 .arg(res.proportionalDeviationMm, 0, 'f', 3)
+                 .arg(table ? QStringLiteral("load % / kp")
+                            : QStringLiteral("F / (stiffness x Kp x mm/s a code)"));
     if (!res.ok()) t += QStringLiteral("  ABORTED: %1\n").arg(res.abortReason);
     if (!m.ok) {
         t += QStringLiteral("  no metrics: %1\n").arg(QString::fromStdString(m.problem));
