@@ -5,7 +5,7 @@
 // the three numbers `trilho-cli tune disturbance` prints: peak deviation, recovery time and
 // steady deviation. The lesson is why Ki exists: run it with Ki 0, then with Ki, and compare.
 // A test of 5.5 s at 1 kHz runs on this thread in about 20 ms (the 2-core development
-// machine), the time of a replot.
+// machine), the time of a replot; the longest the boxes allow (the load at 60 s) about 0.2 s.
 #include <QWidget>
 #include <optional>
 
