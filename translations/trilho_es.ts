@@ -312,6 +312,10 @@
         <translation>Embalamiento: la ley de la semilla 004 llevó un eje adelante, lejos de su punto de consigna (actúa sobre |e| con el sentido fijado para el movimiento, así que un eje que pasa su punto de consigna es llevado aún más lejos), y se cortaron los accionamientos en el límite de software en %1 mm. Reconozca y llévela de vuelta dentro de los límites.</translation>
     </message>
     <message>
+        <source>Move refused: seed 004&apos;s board would plan %1 samples for it and its arrays hold 480 (2.4 s). Its final-time formula counts forward moves only, so a return of more than 75 mm makes the count wrap to tens of thousands. Nothing was sent. Acknowledge, then give the move in shorter steps.</source>
+        <translation>Movimiento rechazado: la placa del seed 004 planificaría %1 muestras para él y sus arreglos guardan 480 (2,4 s). Su fórmula del tiempo final solo cuenta movimientos hacia adelante, y un retorno de más de 75 mm hace que la cuenta dé la vuelta a decenas de miles. No se envió nada. Reconozca y dé el movimiento en pasos más cortos.</translation>
+    </message>
+    <message>
         <source>%1: Travel to x=%2 y=%4 at maximum speed.</source>
         <translation>%1: Desplazamiento a x=%2 y=%4 a velocidad máxima.</translation>
     </message>
@@ -334,6 +338,10 @@
     <message>
         <source>Homing done: the table stands at x=%2 y=%4 from its power-on origin.</source>
         <translation>Referencia terminada: la mesa está en x=%2 y=%4 del origen al encenderla.</translation>
+    </message>
+    <message>
+        <source>Program sent: every set point went to the board, which confirms nothing (seed 004&apos;s own firmware). The position shown is the planned one.</source>
+        <translation>Programa enviado: todos los set points fueron a la placa, que no confirma nada (el firmware del propio seed 004). La posición mostrada es la planificada.</translation>
     </message>
     <message>
         <source>%1: Return to the machine&apos;s absolute zero.</source>
@@ -983,6 +991,10 @@
     <message>
         <source>Click to start the table towards the set point</source>
         <translation>Haga clic para arrancar la mesa hacia el punto de consigna</translation>
+    </message>
+    <message>
+        <source>Entry number: raise it by one before a new set point (the operator&apos;s entries, seed 004); a lower number shows an earlier entry, to send it again</source>
+        <translation>Número de ingreso: auméntelo en uno antes de un nuevo set point (los ingresos del operador, seed 004); un número menor muestra un ingreso anterior, para enviarlo de nuevo</translation>
     </message>
     <message>
         <source>Serial port</source>
@@ -3281,6 +3293,18 @@
         <translation>Borrar</translation>
     </message>
     <message>
+        <source>&amp;File</source>
+        <translation>&amp;Archivo</translation>
+    </message>
+    <message>
+        <source>&amp;Export lab sheet...</source>
+        <translation>&amp;Exportar hoja de laboratorio...</translation>
+    </message>
+    <message>
+        <source>The runs shown, overlaid, with their gains, law, period, payload and metrics side by side: one A4 page, PDF or PNG</source>
+        <translation>Los ensayos mostrados, superpuestos, con sus ganancias, ley, período, carga y métricas lado a lado: una página A4, PDF o PNG</translation>
+    </message>
+    <message>
         <source>Margin</source>
         <translation>Margen</translation>
     </message>
@@ -3424,6 +3448,34 @@
         <source>Saved %1: trilho-cli run --machine %1 uses it.</source>
         <translation>Guardado %1: trilho-cli run --machine %1 lo usa.</translation>
     </message>
+    <message>
+        <source>&apos;%1&apos;: a lab sheet is a .pdf or a .png file</source>
+        <translation>&apos;%1&apos;: una hoja de laboratorio es un archivo .pdf o .png</translation>
+    </message>
+    <message>
+        <source>No run is shown: there is nothing to put on a lab sheet.</source>
+        <translation>No se muestra ningún ensayo: no hay nada que poner en una hoja de laboratorio.</translation>
+    </message>
+    <message>
+        <source>%1 runs are shown: at most %2 fit one sheet (untick some in the runs&apos; list)</source>
+        <translation>Se muestran %1 ensayos: caben como máximo %2 en una hoja (desmarque algunos en la lista de ensayos)</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation>Imagen PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>Export lab sheet</source>
+        <translation>Exportar hoja de laboratorio</translation>
+    </message>
+    <message>
+        <source>Lab sheet written: %1</source>
+        <translation>Hoja de laboratorio escrita: %1</translation>
+    </message>
 </context>
 <context>
     <name>trilho::ui::XyMainWindow</name>
@@ -3562,6 +3614,10 @@
     <message>
         <source>the board&apos;s last set point, not homed</source>
         <translation>último punto de consigna de la placa, sin referencia</translation>
+    </message>
+    <message>
+        <source>planned, unconfirmed: the seed&apos;s board answers nothing</source>
+        <translation>planificada, sin confirmar: la placa del seed no responde nada</translation>
     </message>
     <message>
         <source>Block N%1, line %2</source>

@@ -312,6 +312,10 @@
         <translation>Disparo: a lei da semente 004 levou um eixo adiante, para longe do seu ponto de ajuste (ela age sobre |e| com o sentido fixado para o movimento, então um eixo que passa do ponto de ajuste é levado ainda mais longe), e os acionamentos foram cortados no limite de software em %1 mm. Reconheça e leve-a de volta para dentro dos limites.</translation>
     </message>
     <message>
+        <source>Move refused: seed 004&apos;s board would plan %1 samples for it and its arrays hold 480 (2.4 s). Its final-time formula counts forward moves only, so a return of more than 75 mm makes the count wrap to tens of thousands. Nothing was sent. Acknowledge, then give the move in shorter steps.</source>
+        <translation>Movimento recusado: a placa do seed 004 planejaria %1 amostras para ele e seus vetores guardam 480 (2,4 s). Sua fórmula do tempo final só conta movimentos para a frente, e um retorno de mais de 75 mm faz a contagem dar a volta para dezenas de milhares. Nada foi enviado. Reconheça e dê o movimento em passos mais curtos.</translation>
+    </message>
+    <message>
         <source>%1: Travel to x=%2 y=%4 at maximum speed.</source>
         <translation>%1: Deslocamento para x=%2 y=%4 com velocidade máxima.</translation>
     </message>
@@ -334,6 +338,10 @@
     <message>
         <source>Homing done: the table stands at x=%2 y=%4 from its power-on origin.</source>
         <translation>Referência concluída: a mesa está em x=%2 y=%4 da origem ao ligar.</translation>
+    </message>
+    <message>
+        <source>Program sent: every set point went to the board, which confirms nothing (seed 004&apos;s own firmware). The position shown is the planned one.</source>
+        <translation>Programa enviado: todos os set points foram à placa, que não confirma nada (o firmware do próprio seed 004). A posição mostrada é a planejada.</translation>
     </message>
     <message>
         <source>%1: Return to the machine&apos;s absolute zero.</source>
@@ -983,6 +991,10 @@
     <message>
         <source>Click to start the table towards the set point</source>
         <translation>Clique para partir a mesa rumo ao ponto de ajuste</translation>
+    </message>
+    <message>
+        <source>Entry number: raise it by one before a new set point (the operator&apos;s entries, seed 004); a lower number shows an earlier entry, to send it again</source>
+        <translation>Número da entrada: aumente-o de um antes de um novo set point (as entradas do operador, seed 004); um número menor mostra uma entrada anterior, para enviá-la de novo</translation>
     </message>
     <message>
         <source>Serial port</source>
@@ -3281,6 +3293,18 @@
         <translation>Limpar</translation>
     </message>
     <message>
+        <source>&amp;File</source>
+        <translation>&amp;Arquivo</translation>
+    </message>
+    <message>
+        <source>&amp;Export lab sheet...</source>
+        <translation>&amp;Exportar folha de laboratório...</translation>
+    </message>
+    <message>
+        <source>The runs shown, overlaid, with their gains, law, period, payload and metrics side by side: one A4 page, PDF or PNG</source>
+        <translation>Os ensaios mostrados, sobrepostos, com seus ganhos, lei, período, carga e métricas lado a lado: uma página A4, PDF ou PNG</translation>
+    </message>
+    <message>
         <source>Margin</source>
         <translation>Margem</translation>
     </message>
@@ -3424,6 +3448,34 @@
         <source>Saved %1: trilho-cli run --machine %1 uses it.</source>
         <translation>Salvo %1: trilho-cli run --machine %1 o usa.</translation>
     </message>
+    <message>
+        <source>&apos;%1&apos;: a lab sheet is a .pdf or a .png file</source>
+        <translation>&apos;%1&apos;: uma folha de laboratório é um arquivo .pdf ou .png</translation>
+    </message>
+    <message>
+        <source>No run is shown: there is nothing to put on a lab sheet.</source>
+        <translation>Nenhum ensaio está mostrado: não há o que pôr numa folha de laboratório.</translation>
+    </message>
+    <message>
+        <source>%1 runs are shown: at most %2 fit one sheet (untick some in the runs&apos; list)</source>
+        <translation>%1 ensaios estão mostrados: no máximo %2 cabem numa folha (desmarque alguns na lista de ensaios)</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation>Imagem PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>Export lab sheet</source>
+        <translation>Exportar folha de laboratório</translation>
+    </message>
+    <message>
+        <source>Lab sheet written: %1</source>
+        <translation>Folha de laboratório gravada: %1</translation>
+    </message>
 </context>
 <context>
     <name>trilho::ui::XyMainWindow</name>
@@ -3562,6 +3614,10 @@
     <message>
         <source>the board&apos;s last set point, not homed</source>
         <translation>último ponto de ajuste da placa, sem referência</translation>
+    </message>
+    <message>
+        <source>planned, unconfirmed: the seed&apos;s board answers nothing</source>
+        <translation>planejada, não confirmada: a placa do seed não responde nada</translation>
     </message>
     <message>
         <source>Block N%1, line %2</source>

@@ -84,6 +84,15 @@ QString exitStatusHelp(const char* command) {
     } else if (c == "profile") {
         line(kOk, "the profile is valid (printed in full)");
         line(kUsage, "usage error, or a profile that cannot be read or is invalid (named)");
+    } else if (c == "tune report") {
+        line(kOk, "the lab sheet was written with every run, each a clean record");
+        line(kUsage,
+             "usage error, a run that cannot be read or has no step (named; the sheet of the "
+             "others is still written), or a sheet that cannot be written (named with the "
+             "reason; the old file is kept)");
+        line(kAlarm,
+             "the sheet was written, but a run on it is no clean record (aborted, or cut "
+             "short: marked on the sheet)");
     } else if (c == "tune" || c == "tune step" || c == "tune metrics") {
         line(kOk, c == "tune step"      ? "the test ran to its end (measured)"
                   : c == "tune metrics" ? "the trace was measured, a clean record"

@@ -22,6 +22,8 @@ int tuneMarginCommand(const QStringList& args);
 int tunePolesCommand(const QStringList& args);
 /// tune disturbance (tune_disturbance_command.cpp): a step of load while holding or moving.
 int tuneDisturbanceCommand(const QStringList& args);
+/// tune report (tune_report_command.cpp): the lab sheet of saved runs (PDF, PNG).
+int tuneReportCommand(const QStringList& args);
 int tuneCommand(const QStringList& args);
 int calibrateCommand(const QStringList& args);
 

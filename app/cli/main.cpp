@@ -1,6 +1,9 @@
 // trilho-cli <command> [options]: the headless face of trilho.
 #include <QCoreApplication>
+#include <QGuiApplication>
 #include <cstdio>
+#include <cstring>
+#include <memory>
 #include <new>
 
 #include "app/cli/cli_output.h"
@@ -20,7 +23,7 @@ const char* kUsage =
     "  serve     run a machine headless with the DNC link (Modbus TCP/RTU)\n"
     "  tune      step tests, metrics, identification and autotune (tune step,\n"
     "            tune metrics, tune identify, tune auto, tune relay, tune margin, tune poles,\n"
-    "            tune disturbance)\n"
+    "            tune disturbance, tune report)\n"
     "  calibrate measure an axis of the DC table from its board's calibration stream\n"
     "\n"
     "Options:\n"
@@ -35,7 +38,16 @@ static int dispatch(int argc, char* argv[]) {
     // No glib main loop: the command line has no screen to share it with, and Qt's own polls
     // the DNC link's sockets for less a request (`serve`; issue 20's cost against libmodbus).
     if (!qEnvironmentVariableIsSet("QT_NO_GLIB")) qputenv("QT_NO_GLIB", "1");
-    QCoreApplication app(argc, argv);
+    // `tune report` draws its lab sheet (fonts, QPainter), which needs Qt GUI's application; it
+    // shows no window, so on the offscreen platform: a display named in the environment that is
+    // not there (a session over ssh) would otherwise abort it. Every other command stays a
+    // QCoreApplication (no platform plugin, no fonts loaded).
+    const bool draws =
+        argc > 2 && std::strcmp(argv[1], "tune") == 0 && std::strcmp(argv[2], "report") == 0;
+    if (draws) qputenv("QT_QPA_PLATFORM", "offscreen");
+    const std::unique_ptr<QCoreApplication> app =
+        draws ? std::make_unique<QGuiApplication>(argc, argv)
+              : std::make_unique<QCoreApplication>(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("trilho-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(TRILHO_VERSION));
     QStringList args = QCoreApplication::arguments();

@@ -45,6 +45,7 @@ const char* kTuneUsage =
     "  poles     the discrete closed loop's poles and zeros, damping and natural frequency\n"
     "  disturbance  a step of load on the rail's platform while it holds or moves: peak\n"
     "            deviation, recovery time and steady deviation (why Ki exists)\n"
+    "  report    the lab sheet of saved runs: overlaid, metrics side by side (PDF, PNG)\n"
     "\n"
     "Run 'trilho-cli tune <subcommand> --help' for its options.\n";
 
@@ -462,11 +463,12 @@ int tuneCommand(const QStringList& args) {
     if (sub == QLatin1String("margin")) return tuneMarginCommand(rest);
     if (sub == QLatin1String("poles")) return tunePolesCommand(rest);
     if (sub == QLatin1String("disturbance")) return tuneDisturbanceCommand(rest);
+    if (sub == QLatin1String("report")) return tuneReportCommand(rest);
     return usageError(
         "tune",
         QStringLiteral(
             "unknown subcommand '%1' (step, metrics, identify, auto, relay, margin, poles or "
-            "disturbance)")
+            "disturbance or report)")
             .arg(sub));
 }
 

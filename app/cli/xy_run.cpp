@@ -138,6 +138,12 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
         o[QStringLiteral("axes_mm")] =
             QJsonObject{{QStringLiteral("x"), round4(x)}, {QStringLiteral("y"), round4(y)}};
         o[QStringLiteral("duration_s")] = round4(last.timeS);
+        // What the position rests on: a board that answers nothing gives the planned one.
+        o[QStringLiteral("position_basis")] =
+            last.positionBasis == XyPositionBasis::Planned        ? QStringLiteral("planned")
+            : last.positionBasis == XyPositionBasis::Unknown      ? QStringLiteral("unknown")
+            : last.positionBasis == XyPositionBasis::BoardLastSet ? QStringLiteral("board-last-set")
+                                                                  : QStringLiteral("known");
         if (link) {
             o[QStringLiteral("link")] =
                 QJsonObject{{QStringLiteral("port"), options.port},
@@ -155,7 +161,10 @@ int runXyProgram(const MachineProfile& profile, std::shared_ptr<const Program> p
         }
         out(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
     } else {
-        QString text = QStringLiteral("final position: x %1 mm, y %2 mm (%3 s)\n")
+        QString text = (last.positionBasis == XyPositionBasis::Planned
+                            ? QStringLiteral("planned position, unconfirmed (seed 004's board "
+                                             "answers nothing): x %1 mm, y %2 mm (%3 s)\n")
+                            : QStringLiteral("final position: x %1 mm, y %2 mm (%3 s)\n"))
                            .arg(x, 0, 'f', 3)
                            .arg(y, 0, 'f', 3)
                            .arg(last.timeS, 0, 'f', 3);

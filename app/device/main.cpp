@@ -8,6 +8,9 @@
 //                 (table: seed 004's open-loop calibration program)
 //                 [--firmware seed004|seed004-calibration]
 //                 (table: seed 004's own firmware, firmware/seed004, on libsimavr)
+//                 [--firmware [plotter-bresenham|plotter-float]]
+//                 (plotter: trilho's UNO firmware, firmware/plotter, on libsimavr; with no
+//                 image, the one of the profile's plotter.line)
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QSerialPort>
@@ -17,11 +20,13 @@
 #include <cstdio>
 
 #include "app/device/device_runner.h"
+#include "app/device/host_open_watch.h"
 #include "app/device/pty_endpoint.h"
 #include "core/profile/machine_profile.h"
 #include "hal/emulator/plotter_firmware.h"
 #include "hal/emulator/table_firmware.h"
 #ifdef TRILHO_HAS_FIRMWARE
+#include "hal/firmware_sim/plotter_firmware_device.h"
 #include "hal/firmware_sim/seed004_device.h"
 #include "host/common/data_paths.h"
 #endif
@@ -111,15 +116,24 @@ int main(int argc, char* argv[]) {
         QStringLiteral("P"));
     const QCommandLineOption firmwareOpt(
         QStringLiteral("firmware"),
-        QStringLiteral("table: run the board's own firmware on a simulated ATmega128 at 8 MHz "
-                       "instead of the emulator: seed004 (the main program, 9600 bit/s) or "
-                       "seed004-calibration (the open-loop program, 38400 bit/s)."),
+        QStringLiteral("Run a board's own firmware on a simulated chip instead of the emulator. "
+                       "table (ATmega128 at 8 MHz): seed004 (the main program, 9600 bit/s) or "
+                       "seed004-calibration (the open-loop program, 38400 bit/s). plotter "
+                       "(ATmega328P at 16 MHz): plotter-bresenham or plotter-float; given "
+                       "without an image, the one of the profile's plotter.line."),
         QStringLiteral("IMAGE"));
     parser.addOptions({ptyOpt, portOpt, baudOpt, corruptOpt, everyOpt, dropOpt, delayOpt, dupOpt,
                        outCorruptOpt, outDropOpt, outDupOpt, outDelayOpt, seedOpt, unpacedOpt,
                        machineOpt, calibrationOpt, calibrationAxisOpt, calibrationPercentOpt,
                        firmwareOpt});
-    parser.process(app);
+    // `plotter --firmware --pty`: --firmware with no image (the next argument an option, or
+    // none) takes the board's default, which QCommandLineParser cannot express by itself.
+    QStringList arguments = app.arguments();
+    for (qsizetype i = 1; i < arguments.size(); ++i)
+        if (arguments[i] == QLatin1String("--firmware") &&
+            (i + 1 == arguments.size() || arguments[i + 1].startsWith(QLatin1Char('-'))))
+            arguments.insert(i + 1, QStringLiteral("default"));
+    parser.process(arguments);
 
     const QStringList args = parser.positionalArguments();
     if (args.size() != 1) return usage(QStringLiteral("give the board: plotter or table"));
@@ -138,10 +152,17 @@ int main(int argc, char* argv[]) {
         calibrationAxis != QLatin1String("y"))
         return usage(
             QStringLiteral("--calibration-axis: must be x or y (got %1)").arg(calibrationAxis));
-    const QString image = parser.value(firmwareOpt);
-    if (parser.isSet(firmwareOpt)) {
-        if (board != QLatin1String("table"))
-            return usage(QStringLiteral("--firmware is the table's (seed 004's board)"));
+    QString image = parser.value(firmwareOpt);
+    if (parser.isSet(firmwareOpt) && board == QLatin1String("plotter")) {
+        if (image != QLatin1String("default") && image != QLatin1String("plotter-bresenham") &&
+            image != QLatin1String("plotter-float"))
+            return usage(QStringLiteral("--firmware: plotter-bresenham or plotter-float (got %1)")
+                             .arg(image));
+    } else if (parser.isSet(firmwareOpt)) {
+        if (image == QLatin1String("default"))
+            return usage(
+                QStringLiteral("--firmware: the table's image: seed004 or "
+                               "seed004-calibration"));
         if (image != QLatin1String("seed004") && image != QLatin1String("seed004-calibration"))
             return usage(
                 QStringLiteral("--firmware: seed004 or seed004-calibration (got %1)").arg(image));
@@ -204,7 +225,31 @@ int main(int argc, char* argv[]) {
     if (board == QLatin1String("plotter")) {
         if (profile.kind != MachineKind::Plotter)
             return usage(QStringLiteral("the plotter needs an xy-plotter profile"));
-        firmware = std::make_unique<PlotterFirmware>(profile, settings.faults.seed);
+        if (!parser.isSet(firmwareOpt)) {
+            firmware = std::make_unique<PlotterFirmware>(profile, settings.faults.seed);
+        } else {
+#ifdef TRILHO_HAS_FIRMWARE
+            // The line algorithm is the image's (firmware/plotter/README.md: a compile-time
+            // pair); with no image named, the profile's plotter.line says which.
+            if (image == QLatin1String("default"))
+                image = QStringLiteral("plotter-") +
+                        QString::fromLatin1(plotterLineName(profile.plotter.line).data());
+            PlotterBoardOptions o;
+            o.elfPath =
+                (firmwareDir() + QLatin1Char('/') + image + QStringLiteral(".elf")).toStdString();
+            o.lineBaud = settings.baud;
+            o.profile = profile;
+            o.plantSeed = settings.faults.seed;
+            std::string error;
+            std::unique_ptr<PlotterBoard> uno = PlotterBoard::load(o, &error);
+            if (!uno) return usage(QString::fromStdString(error));
+            firmware = std::make_unique<PlotterFirmwareDevice>(std::move(uno));
+#else
+            return usage(
+                QStringLiteral("--firmware: this trilho-device was built without the "
+                               "firmware (TRILHO_BUILD_FIRMWARE=OFF)"));
+#endif
+        }
     } else if (parser.isSet(firmwareOpt)) {
         if (profile.kind != MachineKind::DcTable)
             return usage(QStringLiteral("the table needs an xy-dc-table profile"));
@@ -248,12 +293,35 @@ int main(int argc, char* argv[]) {
     } else {
         std::string error;
         if (!pty.open(&error)) return usage(QString::fromStdString(error));
-        runner = std::make_unique<DeviceRunner>(std::move(firmware), pty.masterFd(), settings);
+        // The calibration program runs from power-on and never reads the line: the board is
+        // powered when a host opens it (app/device/host_open_watch.h), not at the emulator's
+        // start, so an operator who types the calibrate command later hears the whole stream.
+        const bool waitsForHost =
+            parser.isSet(calibrationOpt) || image == QLatin1String("seed004-calibration");
+        if (waitsForHost) {
+            auto* watch = new HostOpenWatch(
+                QString::fromStdString(pty.slavePath()),
+                [&] {
+                    runner = std::make_unique<DeviceRunner>(std::move(firmware), pty.masterFd(),
+                                                            settings);
+                    std::printf("trilho-device: a host opened the line: the board is on\n");
+                    std::fflush(stdout);
+                },
+                &app);
+            QString why;
+            if (!watch->start(&why)) return usage(why);
+        } else {
+            runner = std::make_unique<DeviceRunner>(std::move(firmware), pty.masterFd(), settings);
+        }
         std::printf("trilho-device: %s on %s at %d bit/s\n", qPrintable(board),
                     pty.slavePath().c_str(), settings.baud);
         if (parser.isSet(firmwareOpt))
-            std::printf("trilho-device: firmware %s on a simulated ATmega128 at 8 MHz\n",
-                        qPrintable(image));
+            std::printf(
+                "trilho-device: firmware %s on a simulated %s\n", qPrintable(image),
+                board == QLatin1String("plotter") ? "ATmega328P at 16 MHz" : "ATmega128 at 8 MHz");
+        if (waitsForHost)
+            std::printf("trilho-device: the board is powered when a host opens %s\n",
+                        pty.slavePath().c_str());
     }
     std::fflush(stdout);
 
@@ -265,6 +333,9 @@ int main(int argc, char* argv[]) {
     });
     quitCheck.start(50);
     const int rc = app.exec();
-    std::printf("trilho-device: %s\n", runner->summary().c_str());
+    if (runner)
+        std::printf("trilho-device: %s\n", runner->summary().c_str());
+    else
+        std::printf("trilho-device: no host opened the line; the board was never powered\n");
     return rc;
 }

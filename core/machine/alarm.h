@@ -31,6 +31,9 @@ enum class AlarmCode : std::uint8_t {
     /// The DC table under seed 004's law (|e|, the direction fixed for the move) drove an axis on,
     /// away from its set point, towards a soft limit: both drives cut there (value: the limit)
     SeedLawRunaway = 22,
+    /// Seed 004's own board (its firmware, answering nothing) would plan a move past its
+    /// 480-sample arrays: refused before anything was sent (value: the samples it would plan)
+    SeedMoveTooLong = 23,
     Count_
 };
 

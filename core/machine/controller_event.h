@@ -68,6 +68,13 @@ enum class XyHomingKind : std::uint8_t {
     PowerOnOrigin,
 };
 
+/// How a program ended (ProgramEnd's detail): on the position the machine measured, or only
+/// sent to a board that confirms nothing (seed 004's own firmware; issue 32 item 4).
+enum class ProgramEndKind : std::uint8_t {
+    Confirmed,
+    Planned,
+};
+
 /// Whether an event changes the online status box (the rest only add a history line).
 constexpr bool setsOnlineStatus(EventKind k) {
     switch (k) {

@@ -188,6 +188,13 @@ constexpr const char* kAlarm[static_cast<int>(AlarmCode::Count_)] = {
                       "on |e| with the direction fixed for the move, so an axis past its set point "
                       "is driven further), and the drives were cut at the soft limit at %1 mm. "
                       "Acknowledge, then move it back inside the limits."),
+    // Raised by the host of seed 004's own board only (core/protocol/seed004_host.h).
+    QT_TRANSLATE_NOOP(
+        "Controller",
+        "Move refused: seed 004's board would plan %1 samples for it and its arrays hold 480 "
+        "(2.4 s). Its final-time formula counts forward moves only, so a return of "
+        "more than 75 mm makes the count wrap to tens of thousands. Nothing was "
+        "sent. Acknowledge, then give the move in shorter steps."),
 };
 
 QString number(double v) {

@@ -91,7 +91,7 @@ class ProgramRunner {
     void pressContinue();
     /// m02 with the machine at rest offMm (>= 0) from its last target: ends the program, or
     /// says how far off it ended when that is outside windowMm (warning 13).
-    void endProgram(double offMm, double windowMm);
+    void endProgram(double offMm, double windowMm, ProgramEndKind kind = ProgramEndKind::Confirmed);
 
     std::shared_ptr<const Program> program_;
     std::size_t pc_ = 0;  ///< index of the block being executed
@@ -294,14 +294,14 @@ void ProgramRunner<Derived>::pressContinue() {
 }
 
 template <typename Derived>
-void ProgramRunner<Derived>::endProgram(double offMm, double windowMm) {
+void ProgramRunner<Derived>::endProgram(double offMm, double windowMm, ProgramEndKind kind) {
     auto& status = d().status_;
     // A program never reports success with the machine away from where it sent it: it says how
     // far instead.
     if (std::abs(offMm) > windowMm)
         d().raiseAlarm(AlarmCode::FinalPositionOff, offMm);
     else
-        d().post(EventKind::ProgramEnd);
+        d().postDetail(EventKind::ProgramEnd, kind);
     status.programFinished = true;
     status.blockIndex = -1;
     blockStarted_ = false;

@@ -129,7 +129,10 @@ void XyController::stepEnding(double) {
     const double off =
         haveTarget_ ? std::hypot(s.x.positionMm - lastTarget_.x, s.y.positionMm - lastTarget_.y)
                     : 0.0;
-    endProgram(off, profile_.loop.finalPositionWindowMm);
+    // A board that confirms nothing: the program was sent, its end is planned, not seen.
+    endProgram(off, profile_.loop.finalPositionWindowMm,
+               motion_->positionBasis() == XyPositionBasis::Planned ? ProgramEndKind::Planned
+                                                                    : ProgramEndKind::Confirmed);
 }
 
 void XyController::hold() {

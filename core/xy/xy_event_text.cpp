@@ -23,6 +23,10 @@ constexpr const char* kHomingInPlace = QT_TRANSLATE_NOOP(
     "Controller", "Homing: the table does not move; its origin is where it stood at power-on.");
 constexpr const char* kHomedInPlace = QT_TRANSLATE_NOOP(
     "Controller", "Homing done: the table stands at x=%2 y=%4 from its power-on origin.");
+constexpr const char* kProgramSent = QT_TRANSLATE_NOOP(
+    "Controller",
+    "Program sent: every set point went to the board, which confirms nothing (seed 004's own "
+    "firmware). The position shown is the planned one.");
 constexpr const char* kResetZero =
     QT_TRANSLATE_NOOP("Controller", "%1: Return to the machine's absolute zero.");
 
@@ -43,11 +47,7 @@ constexpr const char* kXyAlarm[static_cast<int>(AlarmCode::Count_)] = {
     QT_TRANSLATE_NOOP("Controller",
                       "Soft limit: the target is outside the table's travel, so the table stopped "
                       "at its limit. Move it back the other way, inside the limits."),
-    nullptr,
-    nullptr,
-    nullptr,
-    nullptr,
-    nullptr,
+    nullptr, nullptr, nullptr, nullptr, nullptr,
     QT_TRANSLATE_NOOP("Controller",
                       "Homing failed: the table's origin was not found. Check its sensor and "
                       "cable, acknowledge, then home again."),
@@ -75,10 +75,7 @@ constexpr const char* kXyAlarm[static_cast<int>(AlarmCode::Count_)] = {
                       "Over-current: a motor of the table (x or y axis) drew too much current at "
                       "%1 % PWM and the drives were cut. Free the axis, acknowledge, then home "
                       "again."),
-    nullptr,
-    nullptr,
-    nullptr,
-    nullptr,
+    nullptr, nullptr, nullptr, nullptr,
     // Issue 30 item 6: the soft-limit guard names why the seed's law got there.
     QT_TRANSLATE_NOOP("Controller",
                       "Runaway: seed 004's law drove an axis of the table (x or y) on, away from "
@@ -86,6 +83,7 @@ constexpr const char* kXyAlarm[static_cast<int>(AlarmCode::Count_)] = {
                       "axis that passes its set point is driven further. Both drives were cut at "
                       "the soft limit at %1 mm. Acknowledge, then move the table back inside the "
                       "limits (the seed-signed and engineered laws drive back instead)."),
+    nullptr,  // 23: the generic text names the table already
 };
 
 QString number(double v) {
@@ -122,6 +120,11 @@ QString xyHistoryLine(const ControllerEvent& e) {
             break;
         case EventKind::ResetZero:
             source = kResetZero;
+            break;
+        case EventKind::ProgramEnd:
+            if (e.detail != static_cast<std::uint8_t>(ProgramEndKind::Planned))
+                return historyLine(e);
+            source = kProgramSent;
             break;
         case EventKind::AlarmRaised: {
             // The rail's line with the table's text in place of the rail's (same frame:

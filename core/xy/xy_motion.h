@@ -39,6 +39,9 @@ enum class XyPositionBasis : std::uint8_t {
     BoardLastSet,  ///< the board's answer at connect: the set point it last started (it stands
                    ///< there unless that move was cut); not yet confirmed by a move or homing
     Unknown,       ///< nothing said yet: unknown until homed (the sample's 0 is no position)
+    /// The planned position, unconfirmed: a board that answers nothing (seed 004's own
+    /// firmware), the move taken as over when the board's timing says so (issue 32 item 4)
+    Planned,
 };
 
 enum class XyMove : std::uint8_t {

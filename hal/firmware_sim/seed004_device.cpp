@@ -30,10 +30,11 @@ std::vector<std::uint8_t> Seed004Device::takeOutput() {
 
 std::string Seed004Device::summary() const {
     const UartLineStats& s = board_->uart().stats();
-    char line[320];
+    char line[400];
     std::snprintf(line, sizeof line,
-                  "board time %.3f s, bytes read %llu, overruns (DOR) %llu, sent %llu, x %.2f mm, "
-                  "y %.2f mm",
+                  "board time %.3f s, bytes read %llu, overruns (DOR) %llu, sent %llu; lab "
+                  "instrument (the plant's encoders, which the board reports to no one): x %.2f "
+                  "mm, y %.2f mm",
                   board_->seconds(), static_cast<unsigned long long>(s.read),
                   static_cast<unsigned long long>(s.overruns),
                   static_cast<unsigned long long>(s.sent), board_->plant().positionMm(0),

@@ -11,9 +11,6 @@
 namespace trilho {
 
 namespace {
-// UART0 of the ATmega128, data-space addresses (avr-libc iom128.h: _SFR_IO8(n) is n + 0x20).
-constexpr std::uint16_t kUbrr0L = 0x29, kUcsr0B = 0x2A, kUcsr0A = 0x2B, kUdr0 = 0x2C;
-constexpr std::uint16_t kUbrr0H = 0x90, kUcsr0C = 0x95;
 constexpr std::uint8_t kRxc = 0x80, kDor = 0x08, kU2x = 0x02;  // UCSR0A
 constexpr std::uint8_t kRxen = 0x10, kUcsz2 = 0x04;            // UCSR0B
 /// A receiver samples the middle of each bit: frames at a rate more than this far from its own
@@ -26,7 +23,8 @@ std::uint16_t ioIndex(std::uint16_t dataAddress) {
 }
 }  // namespace
 
-UartLine::UartLine(AvrChip& chip, double lineBaud) : chip_(chip), baud_(lineBaud) {
+UartLine::UartLine(AvrChip& chip, double lineBaud, UartRegisters registers)
+    : chip_(chip), baud_(lineBaud), reg_(registers) {
     avr_t* avr = chip_.core();
     // simavr's UART would sleep the host on every poll of UCSR0A (AVR_UART_FLAG_POLL_SLEEP)
     // and print what the program sends (AVR_UART_FLAG_STDIO): neither, in virtual time.
@@ -34,11 +32,11 @@ UartLine::UartLine(AvrChip& chip, double lineBaud) : chip_(chip), baud_(lineBaud
     avr_ioctl(avr, AVR_IOCTL_UART_SET_FLAGS('0'), &flags);
     // The receive buffer is this model's: UDR0 reads come here (simavr's handler is replaced,
     // its 64-byte FIFO stays empty), UCSR0B writes too (RXEN off flushes the buffer).
-    simavrUdrRead_ = avr->io[ioIndex(kUdr0)].r.c;
-    simavrUdrParam_ = avr->io[ioIndex(kUdr0)].r.param;
-    avr->io[ioIndex(kUdr0)].r.c = &UartLine::onUdrRead;
-    avr->io[ioIndex(kUdr0)].r.param = this;
-    avr_register_io_write(avr, kUcsr0B, &UartLine::onControlWrite, this);
+    simavrUdrRead_ = avr->io[ioIndex(reg_.udr)].r.c;
+    simavrUdrParam_ = avr->io[ioIndex(reg_.udr)].r.param;
+    avr->io[ioIndex(reg_.udr)].r.c = &UartLine::onUdrRead;
+    avr->io[ioIndex(reg_.udr)].r.param = this;
+    avr_register_io_write(avr, reg_.ucsrB, &UartLine::onControlWrite, this);
     avr_irq_register_notify(avr_io_getirq(avr, AVR_IOCTL_UART_GETIRQ('0'), UART_IRQ_OUTPUT),
                             &UartLine::onOutput, this);
 }
@@ -47,8 +45,8 @@ UartLine::~UartLine() {
     avr_t* avr = chip_.core();
     avr_cycle_timer_cancel(avr, &UartLine::onTimer, this);
     // The chip may outlive this model: UDR0 reads go back to simavr's handler.
-    avr->io[ioIndex(kUdr0)].r.c = simavrUdrRead_;
-    avr->io[ioIndex(kUdr0)].r.param = simavrUdrParam_;
+    avr->io[ioIndex(reg_.udr)].r.c = simavrUdrRead_;
+    avr->io[ioIndex(reg_.udr)].r.param = simavrUdrParam_;
 }
 
 std::uint64_t UartLine::frameCycles() const {
@@ -57,17 +55,17 @@ std::uint64_t UartLine::frameCycles() const {
 }
 
 bool UartLine::receiverOn() const {
-    return (chip_.data8(kUcsr0B) & kRxen) != 0;
+    return (chip_.data8(reg_.ucsrB) & kRxen) != 0;
 }
 
 bool UartLine::chipTakesLineRate() const {
     const unsigned ubrr =
-        static_cast<unsigned>(((chip_.data8(kUbrr0H) & 0x0f) << 8) | chip_.data8(kUbrr0L));
-    const double perBit = (chip_.data8(kUcsr0A) & kU2x) ? 8.0 : 16.0;
+        static_cast<unsigned>(((chip_.data8(reg_.ubrrH) & 0x0f) << 8) | chip_.data8(reg_.ubrrL));
+    const double perBit = (chip_.data8(reg_.ucsrA) & kU2x) ? 8.0 : 16.0;
     const double chipBaud = chip_.clockHz() / (perBit * (ubrr + 1));
     // The frame must be 8N1 as the line's: 8 data bits (UCSZ 011), no parity, one stop bit.
-    const std::uint8_t c = chip_.data8(kUcsr0C);
-    const bool eightN1 = ((c >> 1) & 3) == 3 && !(chip_.data8(kUcsr0B) & kUcsz2) &&
+    const std::uint8_t c = chip_.data8(reg_.ucsrC);
+    const bool eightN1 = ((c >> 1) & 3) == 3 && !(chip_.data8(reg_.ucsrB) & kUcsz2) &&
                          ((c >> 4) & 3) == 0 && !(c & 0x08);
     return eightN1 && std::abs(chipBaud - baud_) <= kBaudTolerance * baud_;
 }
@@ -132,7 +130,7 @@ void UartLine::schedule() {
 }
 
 void UartLine::updateFlags() {
-    std::uint8_t& a = chip_.core()->data[kUcsr0A];
+    std::uint8_t& a = chip_.core()->data[reg_.ucsrA];
     a = static_cast<std::uint8_t>(a & ~(kRxc | kDor));
     if (!fifo_.empty())
         a = static_cast<std::uint8_t>(a | kRxc | (fifo_.front().overrun ? kDor : 0));

@@ -29,6 +29,16 @@ struct UartLineStats {
     std::uint64_t sent = 0;          ///< bytes the program wrote to UDR0
 };
 
+/// Where a chip keeps UART0's registers (data-space addresses, avr-libc's io headers); the
+/// bits are the same on both chips.
+struct UartRegisters {
+    std::uint16_t ubrrL, ucsrB, ucsrA, udr, ubrrH, ucsrC;
+    /// The ATmega128 (seed 004): iom128.h.
+    static constexpr UartRegisters atmega128() { return {0x29, 0x2A, 0x2B, 0x2C, 0x90, 0x95}; }
+    /// The ATmega328P (the Arduino UNO of seed 001): iom328p.h.
+    static constexpr UartRegisters atmega328p() { return {0xC4, 0xC1, 0xC0, 0xC6, 0xC5, 0xC2}; }
+};
+
 struct TimedByte {
     std::uint8_t value = 0;
     std::uint64_t cycle = 0;  ///< the chip's cycle at the end of the byte's frame
@@ -37,7 +47,7 @@ struct TimedByte {
 class UartLine {
   public:
     /// lineBaud: the host's bit rate, bit/s (the chip's UBRR0 must match it within 2 %).
-    UartLine(AvrChip& chip, double lineBaud);
+    UartLine(AvrChip& chip, double lineBaud, UartRegisters registers = UartRegisters::atmega128());
     ~UartLine();
     UartLine(const UartLine&) = delete;
     UartLine& operator=(const UartLine&) = delete;
@@ -75,6 +85,7 @@ class UartLine {
 
     AvrChip& chip_;
     double baud_;
+    UartRegisters reg_;
     std::deque<Queued> line_;
     std::optional<Queued> shifting_;      ///< the frame in the shift register, being received
     std::optional<std::uint8_t> parked_;  ///< complete, in the shift register, no room in UDR0

@@ -1,6 +1,7 @@
 #include "host/session/xy_device_session.h"
 
 #include "core/xy/plotter_link_motion.h"
+#include "core/xy/seed004_link_motion.h"
 #include "core/xy/table_link_motion.h"
 
 namespace trilho {
@@ -25,6 +26,8 @@ XyDeviceSession makeXyDeviceSession(const MachineProfile& profile, SerialSetting
     std::unique_ptr<SerialLinkMotion> motion;
     if (plotter)
         motion = std::make_unique<PlotterLinkMotion>(profile, send);
+    else if (profile.dcTable.law == DcLaw::Seed)
+        motion = std::make_unique<Seed004LinkMotion>(profile, send);  // the seed's own board
     else
         motion = std::make_unique<TableLinkMotion>(profile, send);
     SerialLinkMotion* m = motion.get();

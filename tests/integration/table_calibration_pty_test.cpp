@@ -129,6 +129,36 @@ TEST(TableCalibrationPty, TheHostDerivesMmPerTurnFromTheBoardsStream) {
     EXPECT_TRUE(w.readAll().contains("measured by trilho-cli calibrate"));
 }
 
+// Issue 32 item 10: run by hand, the operator starts trilho-device, reads the pty path and then
+// types the calibrate command, seconds later. The seed's board ran its open-loop program from
+// power-on, and its operator switched it on with LabVIEW listening; the emulated board is
+// powered when a host opens its line, so a host that opens it late hears the whole stream.
+// (Before, the program ran from the emulator's start and was over in 1.6 s.)
+TEST(TableCalibrationPty, TheBoardWaitsForTheHostToOpenTheLine) {
+    QTemporaryDir dir;
+    const QString host = hostProfile(dir, 2.12);
+    Device device;
+    ASSERT_TRUE(device.start({QStringLiteral("table"), QStringLiteral("--calibration"),
+                              QStringLiteral("--calibration-percent"), QString::number(kPercent),
+                              QStringLiteral("--machine"), kShipped}))
+        << device.out.toStdString();
+    // The operator reads the path and types: longer than the whole program takes once powered.
+    QElapsedTimer typing;
+    typing.start();
+    ASSERT_FALSE(waitFor([] { return false; }, 2.5));
+    device.out += QString::fromUtf8(device.process.readAllStandardOutput());
+    EXPECT_TRUE(device.out.contains(QStringLiteral("powered when a host opens")))
+        << device.out.toStdString();
+    const Cli r = runCli({QStringLiteral("calibrate"), QStringLiteral("--machine"), host,
+                          QStringLiteral("--port"), device.path, QStringLiteral("--travel-mm"),
+                          QStringLiteral("130"), QStringLiteral("--json"),
+                          QStringLiteral("--timeout"), QStringLiteral("30")});
+    ASSERT_EQ(r.exit, 0) << r.err.toStdString() << r.out.toStdString();
+    const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+    EXPECT_GT(o[QStringLiteral("counts")].toInt(), 30);  // the whole stream, as it came
+    EXPECT_GE(o[QStringLiteral("pulsesAtStop")].toDouble(), 1300.0);
+}
+
 TEST(TableCalibrationPty, BadInputsAreNamed) {
     QTemporaryDir dir;
     const QString host = hostProfile(dir, 2.12);

@@ -31,22 +31,26 @@ struct DeviceProcess {
     QProcess process;
     QString path, out;
 
-    /// Starts trilho-device with args and waits (10 s at most) for "table on PATH at BAUD
-    /// bit/s"; false if it did not start or never said it.
+    /// Starts trilho-device with args and waits (10 s at most) for "table (or plotter) on PATH
+    /// at BAUD bit/s"; false if it did not start, ended (out then holds its message: stderr is
+    /// merged) or never said it.
     bool start(const QStringList& args, int baud = 9600) {
         process.setProgram(QStringLiteral(TRILHO_DEVICE));
         process.setArguments(args);
+        process.setProcessChannelMode(QProcess::MergedChannels);
         process.start();
         if (!process.waitForStarted(5000)) return false;
-        const QRegularExpression re(QStringLiteral("table on (\\S+) at %1 bit/s").arg(baud));
+        const QRegularExpression re(
+            QStringLiteral("(?:table|plotter) on (\\S+) at %1 bit/s").arg(baud));
         return waitFor(
-            [&] {
-                out += QString::fromUtf8(process.readAllStandardOutput());
-                const auto m = re.match(out);
-                if (m.hasMatch()) path = m.captured(1);
-                return !path.isEmpty();
-            },
-            10.0);
+                   [&] {
+                       out += QString::fromUtf8(process.readAllStandardOutput());
+                       const auto m = re.match(out);
+                       if (m.hasMatch()) path = m.captured(1);
+                       return !path.isEmpty() || process.state() == QProcess::NotRunning;
+                   },
+                   10.0) &&
+               !path.isEmpty();
     }
     /// SIGTERM, and what it printed last (its summary line).
     QString stop() {

@@ -1187,12 +1187,27 @@ class XyScreensTest : public QObject {
         DcTablePanel* panel = w.tablePanel();
         QVERIFY(!panel->running());
         QVERIFY(panel->runIndicator()->styleSheet().contains(QStringLiteral("#d0202a")));  // red
-        // The counter left of the box steps it by 1 mm.
-        panel->xBox()->setValue(59);
-        panel->counter(0, true)->click();
-        QCOMPARE(panel->xBox()->value(), 60.0);
-        QVERIFY(panel->xBox()->x() > panel->counter(0, true)->x());
+        // The index left of each box counts the operator's entries (seed 004, annex 5, step 8:
+        // raised by one before each new set point); the box shows the entry at the index.
+        QCOMPARE(panel->entryIndex(0)->value(), 0);
+        QCOMPARE(panel->entryIndex(0)->maximum(), 0);  // no entry past the first yet
+        QVERIFY(panel->xBox()->x() > panel->entryIndex(0)->x());
+        panel->xBox()->setValue(35);
+        panel->yBox()->setValue(25);
+        panel->sendXButton()->click();
+        panel->sendYButton()->click();
+        QVERIFY(advanceUntil(
+            *link, [&] { return !link->status().motionBusy; }, 30.0));
+        QCOMPARE(panel->entryIndex(0)->maximum(), 1);  // a new entry may follow the sent one
+        panel->entryIndex(0)->setValue(1);
+        panel->entryIndex(1)->setValue(1);
+        panel->xBox()->setValue(60);
         panel->yBox()->setValue(40);
+        panel->entryIndex(0)->setValue(0);  // entry 0 is kept as it was sent
+        QCOMPARE(panel->xBox()->value(), 35.0);
+        panel->entryIndex(0)->setValue(1);
+        QCOMPARE(panel->xBox()->value(), 60.0);
+        QCOMPARE(panel->entryIndex(0)->maximum(), 1);  // entry 1 is not sent yet
         panel->sendXButton()->click();
         link->advance(2.0);  // the operator takes seconds to type y
         QVERIFY(!link->status().motionBusy);

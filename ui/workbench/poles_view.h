@@ -28,6 +28,8 @@ class PolesView : public QWidget {
     /// DC table axis its screw and seed gains (spec.model is ignored: the view's own).
     void setLoop(const DiscreteLoopSpec& spec);
     bool hasModel() const { return model_.has_value(); }
+    /// The model the poles are of, when one was accepted (the lab sheet prints it).
+    const std::optional<RailModel>& model() const { return model_; }
     /// The poles shown (empty until there is a model).
     const ClosedLoopPoles& poles() const { return poles_; }
     const RootLocus& locus() const { return locus_; }

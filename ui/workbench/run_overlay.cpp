@@ -2,6 +2,8 @@
 
 #include "ui/workbench/run_plot.h"
 
+#include "host/labsheet/lab_sheet.h"
+
 #include <qcustomplot.h>
 #include <QEvent>
 #include <QHeaderView>
@@ -15,10 +17,7 @@ namespace trilho {
 namespace ui {
 
 QColor workbenchColor(int index) {
-    static const QColor colours[] = {
-        QColor(31, 119, 180),  QColor(214, 39, 40), QColor(44, 160, 44),   QColor(255, 127, 14),
-        QColor(148, 103, 189), QColor(140, 86, 75), QColor(227, 119, 194), QColor(23, 190, 207)};
-    return colours[static_cast<std::size_t>(index) % std::size(colours)];
+    return labSheetColor(index);  // one palette: the lab sheet's curves are the overlay's
 }
 
 namespace {

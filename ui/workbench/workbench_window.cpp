@@ -12,6 +12,8 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
+#include <QMenu>
+#include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QScreen>
@@ -23,6 +25,7 @@
 #include <QTabWidget>
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
+#include <algorithm>
 
 #include "core/timeline/events_file.h"
 #include "core/tuning/dc_axis_autotune.h"
@@ -31,6 +34,7 @@
 #include "core/tuning/identification_experiment.h"
 #include "core/tuning/rail_autotune.h"
 #include "core/tuning/rail_identification.h"
+#include "host/labsheet/lab_sheet_file.h"
 #include "host/session/sim_dc_table_rig.h"
 #include "host/session/sim_rail_rig.h"
 #include "host/tuning/plotter_margin_sweep.h"
@@ -44,6 +48,7 @@
 #include "ui/workbench/run_overlay.h"
 #include "ui/workbench/run_plot.h"
 #include "ui/workbench/terms_view.h"
+#include "ui/workbench/workbench_lab_sheet.h"
 
 namespace trilho {
 namespace ui {
@@ -375,6 +380,14 @@ void WorkbenchWindow::build() {
         releaseInBackground(std::move(removed));
     });
     connect(clearRuns_, &QPushButton::clicked, this, &WorkbenchWindow::clearRuns);
+
+    // File > Export...: the lab sheet of the runs on the overlay (issue 33 item 8).
+    fileMenu_ = menuBar()->addMenu(QString());
+    fileMenu_->setObjectName(QStringLiteral("fileMenu"));
+    exportSheet_ =
+        fileMenu_->addAction(QString(), this, &WorkbenchWindow::exportLabSheetFromDialog);
+    exportSheet_->setObjectName(QStringLiteral("exportLabSheet"));
+    fileMenu_->menuAction()->setVisible(!plotter());  // the plotter has no step runs
 }
 
 void WorkbenchWindow::retranslate() {
@@ -436,6 +449,11 @@ void WorkbenchWindow::retranslate() {
     loadRun_->setText(tr("Load run..."));
     removeRun_->setText(tr("Remove"));
     clearRuns_->setText(tr("Clear"));
+    fileMenu_->setTitle(tr("&File"));
+    exportSheet_->setText(tr("&Export lab sheet..."));
+    exportSheet_->setToolTip(
+        tr("The runs shown, overlaid, with their gains, law, period, payload "
+           "and metrics side by side: one A4 page, PDF or PNG"));
     if (plotter()) {
         tabs_->setTabText(0, tr("Margin"));
         return;
@@ -993,6 +1011,50 @@ void WorkbenchWindow::saveTunedProfile() {
         return;
     }
     statusBar()->showMessage(tr("Saved %1: trilho-cli run --machine %1 uses it.").arg(path), 10000);
+}
+
+bool WorkbenchWindow::exportLabSheet(const QString& path, QString* error) {
+    auto fail = [&](const QString& why) {
+        if (error) *error = why;
+        return false;
+    };
+    const std::optional<LabSheetFormat> format = labSheetFormatFor(path);
+    if (!format) return fail(tr("'%1': a lab sheet is a .pdf or a .png file").arg(path));
+    const LabSheet sheet =
+        workbenchLabSheet(runs_, shown_, tunable() ? polesView_->model() : std::nullopt, rail_);
+    if (sheet.runs.empty())
+        return fail(tr("No run is shown: there is nothing to put on a lab sheet."));
+    if (sheet.runs.size() > kMaxLabSheetRuns)
+        return fail(tr("%1 runs are shown: at most %2 fit one sheet (untick some in the runs' "
+                       "list)")
+                        .arg(sheet.runs.size())
+                        .arg(kMaxLabSheetRuns));
+    // One page drawn here (a few ms; a long run is drawn as its envelope) and written whole.
+    QString why;
+    if (!writeLabSheet(sheet, *format, path, &why)) return fail(why);
+    return true;
+}
+
+void WorkbenchWindow::exportLabSheetFromDialog() {
+    if (std::find(shown_.begin(), shown_.end(), true) == shown_.end()) {
+        statusBar()->showMessage(tr("No run is shown: there is nothing to put on a lab sheet."),
+                                 8000);
+        return;
+    }
+    const QString pdf = tr("PDF (*.pdf)"), png = tr("PNG image (*.png)");
+    QString filter = pdf;
+    QString path = QFileDialog::getSaveFileName(this, tr("Export lab sheet"), QString(),
+                                                pdf + QStringLiteral(";;") + png, &filter);
+    if (path.isEmpty()) return;
+    // A name typed without its extension takes the chosen type's.
+    if (!labSheetFormatFor(path))
+        path += filter == png ? QStringLiteral(".png") : QStringLiteral(".pdf");
+    QString error;
+    if (!exportLabSheet(path, &error)) {
+        QMessageBox::warning(this, tr("Export lab sheet"), error);
+        return;
+    }
+    statusBar()->showMessage(tr("Lab sheet written: %1").arg(path), 10000);
 }
 
 }  // namespace ui

@@ -17,7 +17,9 @@
 #include "host/tuning/step_experiment.h"
 #include "ui/workbench/workbench_run.h"
 
+class QAction;
 class QCheckBox;
+class QMenu;
 class QComboBox;
 class QDoubleSpinBox;
 class QGroupBox;
@@ -81,6 +83,12 @@ class WorkbenchWindow : public QMainWindow {
     /// hold a load.
     using RunReader = std::function<RunLoad(const QString& csvPath)>;
     void setRunReader(RunReader reader) { runReader_ = std::move(reader); }
+    /// File > Export...: the lab sheet (host/labsheet) of the runs shown in the overlay, as
+    /// `trilho-cli tune report` makes it, to path (.pdf or .png), written atomically. False
+    /// with *error when no run is shown, more than fit one sheet, the name is neither, or the
+    /// file cannot be written (named, with the reason).
+    bool exportLabSheet(const QString& path, QString* error = nullptr);
+    QAction* exportAction() const { return exportSheet_; }
     /// The profile with the last autotune's gains, if one passed.
     const std::optional<MachineProfile>& tunedProfile() const { return tuned_; }
 
@@ -137,6 +145,8 @@ class WorkbenchWindow : public QMainWindow {
     void saveSelectedRun();
     void loadRunFromFile();
     void saveTunedProfile();
+    /// File > Export...: asks where, then exportLabSheet; a failure in a dialog.
+    void exportLabSheetFromDialog();
     QString runLabel(const RunConditions& c) const;
     /// Runs work on a worker thread, then done(result) on this thread.
     template <typename T>
@@ -176,6 +186,8 @@ class WorkbenchWindow : public QMainWindow {
     QPushButton *run_, *compare_, *identify_, *autotune_, *relay_, *saveTuned_;
     QListWidget* runList_;
     QPushButton *saveRun_, *loadRun_, *removeRun_, *clearRuns_;
+    QMenu* fileMenu_;
+    QAction* exportSheet_;
 };
 
 }  // namespace ui

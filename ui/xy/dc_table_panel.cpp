@@ -1,5 +1,7 @@
 #include "ui/xy/dc_table_panel.h"
 
+#include <algorithm>
+
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QEvent>
@@ -9,6 +11,7 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QSerialPortInfo>
+#include <QSpinBox>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -21,7 +24,7 @@ DcTablePanel::DcTablePanel(QWidget* parent) : QGroupBox(parent) {
         b->setDecimals(0);  // the board takes whole mm (two bytes per axis)
         b->setSuffix(QStringLiteral(" mm"));
         b->setKeyboardTracking(false);
-        // The counter is the panel's own arrows, left of the box (the LabVIEW control's).
+        // The arrows left of the box are the entry index's (the LabVIEW array control's).
         b->setButtonSymbols(QAbstractSpinBox::NoButtons);
         return b;
     };
@@ -39,20 +42,19 @@ DcTablePanel::DcTablePanel(QWidget* parent) : QGroupBox(parent) {
     QDoubleSpinBox* boxes[2] = {x_, y_};
     QPushButton* sends[2] = {sendX_, sendY_};
     for (int axis = 0; axis < 2; ++axis) {
-        auto* arrows = new QVBoxLayout;
-        arrows->setSpacing(0);
-        for (const bool up : {true, false}) {
-            auto* b = new QToolButton(this);
-            b->setArrowType(up ? Qt::UpArrow : Qt::DownArrow);
-            b->setAutoRepeat(true);
-            b->setFixedSize(22, 13);
-            b->setFocusPolicy(Qt::NoFocus);
-            QDoubleSpinBox* box = boxes[axis];
-            connect(b, &QToolButton::clicked, box, [box, up] { box->stepBy(up ? 1 : -1); });
-            counters_[axis][up ? 0 : 1] = b;
-            arrows->addWidget(b);
-        }
-        points->addLayout(arrows, axis, 0);
+        auto* index = new QSpinBox(this);
+        index->setObjectName(axis == 0 ? QStringLiteral("dcTableEntryX")
+                                       : QStringLiteral("dcTableEntryY"));
+        index->setRange(0, 0);
+        index->setFocusPolicy(Qt::ClickFocus);  // the wheel needs a click first, as elsewhere
+        index_[axis] = index;
+        entries_[axis].push_back(boxes[axis]->value());
+        connect(index, &QSpinBox::valueChanged, this, [this, axis] { showEntry(axis); });
+        QDoubleSpinBox* box = boxes[axis];
+        connect(box, &QDoubleSpinBox::valueChanged, this, [this, axis](double mm) {
+            entries_[axis][static_cast<std::size_t>(index_[axis]->value())] = mm;
+        });
+        points->addWidget(index, axis, 0);
         points->addWidget(boxes[axis], axis, 1);
         points->addWidget(sends[axis], axis, 2);
     }
@@ -98,6 +100,8 @@ DcTablePanel::DcTablePanel(QWidget* parent) : QGroupBox(parent) {
     v->addStretch();
     connect(send_, &QPushButton::clicked, this, [this] {
         sentX_.reset(), sentY_.reset();
+        for (int axis = 0; axis < 2; ++axis)
+            entrySent(axis);
         retranslate();
         emit sendRequested(x_->value(), y_->value());
     });
@@ -119,8 +123,23 @@ DcTablePanel::DcTablePanel(QWidget* parent) : QGroupBox(parent) {
     retranslate();
 }
 
+void DcTablePanel::showEntry(int axis) {
+    std::vector<double>& entries = entries_[axis];
+    QDoubleSpinBox* box = axis == 0 ? x_ : y_;
+    const auto at = static_cast<std::size_t>(index_[axis]->value());
+    if (at >= entries.size()) entries.resize(at + 1, entries.back());  // a new entry
+    box->setValue(entries[at]);
+    entries[at] = box->value();  // as the box holds it (its range, whole mm)
+}
+
+void DcTablePanel::entrySent(int axis) {
+    entriesSent_[axis] = std::max(entriesSent_[axis], index_[axis]->value() + 1);
+    index_[axis]->setMaximum(entriesSent_[axis]);
+}
+
 void DcTablePanel::sent(int axis) {
     // As the board: it waits for both coordinates, however far apart they come.
+    entrySent(axis);
     (axis == 0 ? sentX_ : sentY_) = (axis == 0 ? x_ : y_)->value();
     if (sentX_ && sentY_) {
         const double x = *sentX_, y = *sentY_;
@@ -128,10 +147,6 @@ void DcTablePanel::sent(int axis) {
         emit sendRequested(x, y);
     }
     retranslate();
-}
-
-QToolButton* DcTablePanel::counter(int axis, bool up) const {
-    return counters_[axis == 0 ? 0 : 1][up ? 0 : 1];
 }
 
 void DcTablePanel::setArea(double xMin, double xMax, double yMin, double yMax) {
@@ -187,6 +202,11 @@ void DcTablePanel::retranslate() {
     runLabel_->setText(running_ ? tr("Running") : tr("Stopped"));
     run_->setToolTip(running_ ? tr("Click to stop the table")
                               : tr("Click to start the table towards the set point"));
+    for (QSpinBox* index : index_)
+        index->setToolTip(
+            tr("Entry number: raise it by one before a new set point (the "
+               "operator's entries, seed 004); a lower number shows an earlier "
+               "entry, to send it again"));
     serial_->setTitle(tr("Serial port"));
     portLabel_->setText(tr("Port"));
     baudLabel_->setText(tr("Bit rate"));

@@ -724,6 +724,11 @@ QString XyMainWindow::positionText(const XyStatus& status) {
                                 .arg(s.x.positionMm, 0, 'f', 2)
                                 .arg(s.y.positionMm, 0, 'f', 2),
                             tr("the board's last set point, not homed"));
+        case XyPositionBasis::Planned:
+            return withNote(QStringLiteral("X %1  Y %2 mm")
+                                .arg(s.x.positionMm, 0, 'f', 2)
+                                .arg(s.y.positionMm, 0, 'f', 2),
+                            tr("planned, unconfirmed: the seed's board answers nothing"));
         case XyPositionBasis::Known:
             break;
     }

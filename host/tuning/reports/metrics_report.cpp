@@ -8,16 +8,14 @@ QString loopLawName(LoopLaw law) {
     return law == LoopLaw::Classic ? QStringLiteral("classic") : QStringLiteral("engineered");
 }
 
-QString stepMetricsText(const StepMetrics& m) {
-    if (!m.ok) return QStringLiteral("no metrics: %1\n").arg(QString::fromStdString(m.problem));
+std::vector<StepMetricLine> stepMetricLines(const StepMetrics& m) {
+    std::vector<StepMetricLine> lines;
+    if (!m.ok) return lines;
     const auto fmt = fixedOrNotReached;
-    QString t;
     auto row = [&](const char* name, const QString& value, const char* unit) {
         const bool reached = !value.startsWith(QLatin1String("not ")) && *unit;
-        t += QStringLiteral("  %1 %2%3\n")
-                 .arg(QLatin1String(name), -28)
-                 .arg(value)
-                 .arg(reached ? QLatin1Char(' ') + QLatin1String(unit) : QString());
+        lines.push_back({QLatin1String(name),
+                         value + (reached ? QLatin1Char(' ') + QLatin1String(unit) : QString())});
     };
     row("step",
         QStringLiteral("%1 -> %2 mm (%3 mm) at %4 s")
@@ -37,6 +35,14 @@ QString stepMetricsText(const StepMetrics& m) {
     row("following error RMS", fmt(m.followingErrorRmsMm, 4), "mm");
     row("time saturated",
         m.saturationKnown ? fmt(m.saturatedTimeS, 4) : QStringLiteral("not recorded"), "s");
+    return lines;
+}
+
+QString stepMetricsText(const StepMetrics& m) {
+    if (!m.ok) return QStringLiteral("no metrics: %1\n").arg(QString::fromStdString(m.problem));
+    QString t;
+    for (const StepMetricLine& line : stepMetricLines(m))
+        t += QStringLiteral("  %1 %2\n").arg(line.name, -28).arg(line.value);
     return t;
 }
 

@@ -4,6 +4,7 @@
 // of the same figures unrounded with the conditions of the run when they are known.
 #include <QJsonObject>
 #include <QString>
+#include <vector>
 
 #include "core/tuning/run_record.h"
 #include "core/tuning/step_metrics.h"
@@ -12,6 +13,18 @@ namespace trilho {
 
 /// "classic" or "engineered".
 QString loopLawName(LoopLaw law);
+
+/// One row of the metrics' text: its name ("rise time 10-90 %") and its value with its unit
+/// ("0.0720 s", "not reached").
+struct StepMetricLine {
+    QString name;
+    QString value;
+};
+
+/// The metrics' rows, in the order printed, rounded as printed: the one source of what
+/// `tune step`, `tune metrics` and the lab sheet (tune report, the workbench's File > Export)
+/// write. Empty when the metrics are not ok (m.problem says why).
+std::vector<StepMetricLine> stepMetricLines(const StepMetrics& m);
 
 /// The metrics as the text report prints them, a row each ("  rise time 10-90 %   0.0720 s"),
 /// or the line saying why there are none.
