@@ -450,10 +450,10 @@ TEST(CliProfile, DefaultIsTheShippedRailAndBadFilesAreNamed) {
 
 }  // namespace
 
-// Issue 33 item 10, lesson 14 (docs/teaching.md): the 1996 law on the seed's own metre-long
+// Issue 33 item 10, lesson 15 (docs/teaching.md): the 1996 law on the seed's own metre-long
 // rapids, against the engineered law. The figures are the lesson's; the test fails when either
 // law's behaviour changes.
-TEST_F(CliRun, Lesson14TheNineteenNinetySixLawOvershootsAndCoastsOnTheSeedsRapids) {
+TEST_F(CliRun, Lesson15TheNineteenNinetySixLawOvershootsAndCoastsOnTheSeedsRapids) {
     const auto peakAndEnd = [&](const char* law, const QByteArray& text) {
         const QString trace = dir.filePath(QStringLiteral("%1.csv").arg(QLatin1String(law)));
         const Result r =
