@@ -149,6 +149,25 @@ class WorkbenchDcLawTest : public QObject {
         QCOMPARE(m[QStringLiteral("period_s")].toDouble(), 0.005);
         QVERIFY(same(seed->metrics.peakMm, m[QStringLiteral("peak_mm")]));
     }
+
+    // A profile whose law is the seed's opens on it, with its b0 and b1; another axis, its own.
+    void aSeedProfileOpensOnItsLawAndEachAxisHasItsGains() {
+        MachineProfile p = MachineProfile::xyDcTable();
+        p.dcTable.law = DcLaw::Seed;
+        WorkbenchWindow w(p);
+        auto* law = w.findChild<QComboBox*>(QStringLiteral("law"));
+        auto* kp = w.findChild<QDoubleSpinBox*>(QStringLiteral("kp"));
+        auto* ki = w.findChild<QDoubleSpinBox*>(QStringLiteral("ki"));
+        QCOMPARE(law->currentIndex(), 0);
+        QCOMPARE(kp->value(), 0.198);
+        w.findChild<QComboBox*>(QStringLiteral("axis"))->setCurrentIndex(1);
+        QCOMPARE(kp->value(), 0.042);
+        QCOMPARE(ki->value(), -0.035994);
+        // Back to engineered: the boxes' range closes at 0 again and hold its gains.
+        law->setCurrentIndex(2);
+        QCOMPARE(ki->minimum(), 0.0);
+        QCOMPARE(ki->value(), 40.0);
+    }
 };
 
 TRILHO_WIDGET_TEST_MAIN(WorkbenchDcLawTest)
