@@ -1018,6 +1018,93 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::DisturbanceView</name>
+    <message>
+        <source>Set the load and when it comes, then Run: the window&apos;s law, gains, period, mass and seed are used. Try Ki 0, then Ki 5.</source>
+        <translation>Defina la carga y cuándo llega, luego Ejecutar: se usan la ley, las ganancias, el período, la masa y la semilla de la ventana. Pruebe Ki 0, luego Ki 5.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Not run:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;No ejecutado:&lt;/b&gt; %1</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Aborted:&lt;/b&gt; %1&lt;br&gt;</source>
+        <translation>&lt;b&gt;Interrumpido:&lt;/b&gt; %1&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>No metrics: %1</source>
+        <translation>Sin métricas: %1</translation>
+    </message>
+    <message>
+        <source>Load %1 N at %2 s, Kp %3, Ki %4, Kd %5&lt;br&gt;</source>
+        <translation>Carga %1 N a los %2 s, Kp %3, Ki %4, Kd %5&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>Peak deviation before the stop: &lt;b&gt;%1 mm&lt;/b&gt;; no recovery and no steady state were measured</source>
+        <translation>Desviación de pico antes de la parada: &lt;b&gt;%1 mm&lt;/b&gt;; no se midieron ni recuperación ni régimen</translation>
+    </message>
+    <message>
+        <source>Peak deviation: &lt;b&gt;%1 mm&lt;/b&gt; at %2 s after the load&lt;br&gt;</source>
+        <translation>Desviación de pico: &lt;b&gt;%1 mm&lt;/b&gt; %2 s después de la carga&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>Recovery time: &lt;b&gt;%1 s&lt;/b&gt; (back within %2 mm of where it was)&lt;br&gt;</source>
+        <translation>Tiempo de recuperación: &lt;b&gt;%1 s&lt;/b&gt; (de vuelta a menos de %2 mm de donde estaba)&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>Recovery time: &lt;b&gt;not reached&lt;/b&gt; (still more than %1 mm from where it was at the end)&lt;br&gt;</source>
+        <translation>Tiempo de recuperación: &lt;b&gt;no alcanzado&lt;/b&gt; (todavía a más de %1 mm de donde estaba, al final)&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>Steady deviation: &lt;b&gt;%1 mm&lt;/b&gt; (mean of the last %2 s)&lt;br&gt;</source>
+        <translation>Desviación en régimen: &lt;b&gt;%1 mm&lt;/b&gt; (media de los últimos %2 s)&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>Amplifier stiffness %1 N per mm/s: with Ki 0 the loop settles where Kp&apos;s drive gives back the speed the load adds, %2 mm</source>
+        <translation>Rigidez del amplificador %1 N por mm/s: con Ki 0 el lazo se asienta donde el accionamiento de Kp devuelve la velocidad que la carga añade, %2 mm</translation>
+    </message>
+    <message>
+        <source>The amplifier is an ideal speed source: no load slows it</source>
+        <translation>El amplificador es una fuente de velocidad ideal: ninguna carga lo frena</translation>
+    </message>
+    <message>
+        <source>Load on the platform</source>
+        <translation>Carga en la plataforma</translation>
+    </message>
+    <message>
+        <source>Load comes at</source>
+        <translation>La carga llega a los</translation>
+    </message>
+    <message>
+        <source>While</source>
+        <translation>Durante</translation>
+    </message>
+    <message>
+        <source>holding still</source>
+        <translation>detenido</translation>
+    </message>
+    <message>
+        <source>moving (10 % of rapid)</source>
+        <translation>moviéndose (10 % del rápido)</translation>
+    </message>
+    <message>
+        <source>Run load test</source>
+        <translation>Ejecutar prueba de carga</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>tiempo (s)</translation>
+    </message>
+    <message>
+        <source>deviation (mm)</source>
+        <translation>desviación (mm)</translation>
+    </message>
+    <message>
+        <source>load (N)</source>
+        <translation>carga (N)</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::DncDialog</name>
     <message>
         <source>Programs folder</source>
@@ -3236,6 +3323,10 @@
     <message>
         <source>Poles</source>
         <translation>Polos</translation>
+    </message>
+    <message>
+        <source>Disturbance</source>
+        <translation>Perturbación</translation>
     </message>
     <message>
         <source>1996</source>

@@ -1018,6 +1018,93 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::DisturbanceView</name>
+    <message>
+        <source>Set the load and when it comes, then Run: the window&apos;s law, gains, period, mass and seed are used. Try Ki 0, then Ki 5.</source>
+        <translation>Defina a carga e quando ela vem, depois Executar: usam-se a lei, os ganhos, o período, a massa e a semente da janela. Experimente Ki 0, depois Ki 5.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Not run:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;Não executado:&lt;/b&gt; %1</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Aborted:&lt;/b&gt; %1&lt;br&gt;</source>
+        <translation>&lt;b&gt;Interrompido:&lt;/b&gt; %1&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>No metrics: %1</source>
+        <translation>Sem métricas: %1</translation>
+    </message>
+    <message>
+        <source>Load %1 N at %2 s, Kp %3, Ki %4, Kd %5&lt;br&gt;</source>
+        <translation>Carga %1 N em %2 s, Kp %3, Ki %4, Kd %5&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>Peak deviation before the stop: &lt;b&gt;%1 mm&lt;/b&gt;; no recovery and no steady state were measured</source>
+        <translation>Desvio de pico antes da parada: &lt;b&gt;%1 mm&lt;/b&gt;; nem recuperação nem regime foram medidos</translation>
+    </message>
+    <message>
+        <source>Peak deviation: &lt;b&gt;%1 mm&lt;/b&gt; at %2 s after the load&lt;br&gt;</source>
+        <translation>Desvio de pico: &lt;b&gt;%1 mm&lt;/b&gt; %2 s após a carga&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>Recovery time: &lt;b&gt;%1 s&lt;/b&gt; (back within %2 mm of where it was)&lt;br&gt;</source>
+        <translation>Tempo de recuperação: &lt;b&gt;%1 s&lt;/b&gt; (de volta a menos de %2 mm de onde estava)&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>Recovery time: &lt;b&gt;not reached&lt;/b&gt; (still more than %1 mm from where it was at the end)&lt;br&gt;</source>
+        <translation>Tempo de recuperação: &lt;b&gt;não atingido&lt;/b&gt; (ainda a mais de %1 mm de onde estava, no fim)&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>Steady deviation: &lt;b&gt;%1 mm&lt;/b&gt; (mean of the last %2 s)&lt;br&gt;</source>
+        <translation>Desvio em regime: &lt;b&gt;%1 mm&lt;/b&gt; (média dos últimos %2 s)&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>Amplifier stiffness %1 N per mm/s: with Ki 0 the loop settles where Kp&apos;s drive gives back the speed the load adds, %2 mm</source>
+        <translation>Rigidez do amplificador %1 N por mm/s: com Ki 0 a malha para onde o acionamento de Kp devolve a velocidade que a carga acrescenta, %2 mm</translation>
+    </message>
+    <message>
+        <source>The amplifier is an ideal speed source: no load slows it</source>
+        <translation>O amplificador é uma fonte de velocidade ideal: nenhuma carga o desacelera</translation>
+    </message>
+    <message>
+        <source>Load on the platform</source>
+        <translation>Carga na plataforma</translation>
+    </message>
+    <message>
+        <source>Load comes at</source>
+        <translation>A carga vem em</translation>
+    </message>
+    <message>
+        <source>While</source>
+        <translation>Durante</translation>
+    </message>
+    <message>
+        <source>holding still</source>
+        <translation>parado</translation>
+    </message>
+    <message>
+        <source>moving (10 % of rapid)</source>
+        <translation>movendo (10 % do rápido)</translation>
+    </message>
+    <message>
+        <source>Run load test</source>
+        <translation>Executar teste de carga</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>tempo (s)</translation>
+    </message>
+    <message>
+        <source>deviation (mm)</source>
+        <translation>desvio (mm)</translation>
+    </message>
+    <message>
+        <source>load (N)</source>
+        <translation>carga (N)</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::DncDialog</name>
     <message>
         <source>Programs folder</source>
@@ -3236,6 +3323,10 @@
     <message>
         <source>Poles</source>
         <translation>Polos</translation>
+    </message>
+    <message>
+        <source>Disturbance</source>
+        <translation>Perturbação</translation>
     </message>
     <message>
         <source>1996</source>

@@ -43,6 +43,8 @@ const char* kTuneUsage =
     "            teach with, beside the model-based gains of 'auto'; both run the same step\n"
     "  margin    the plotter's speed and acceleration margin against lost steps\n"
     "  poles     the discrete closed loop's poles and zeros, damping and natural frequency\n"
+    "  disturbance  a step of load on the rail's platform while it holds or moves: peak\n"
+    "            deviation, recovery time and steady deviation (why Ki exists)\n"
     "  report    the lab sheet of saved runs: overlaid, metrics side by side (PDF, PNG)\n"
     "\n"
     "Run 'trilho-cli tune <subcommand> --help' for its options.\n";
@@ -451,12 +453,13 @@ int tuneCommand(const QStringList& args) {
     if (sub == QLatin1String("relay")) return tuneRelayCommand(rest);
     if (sub == QLatin1String("margin")) return tuneMarginCommand(rest);
     if (sub == QLatin1String("poles")) return tunePolesCommand(rest);
+    if (sub == QLatin1String("disturbance")) return tuneDisturbanceCommand(rest);
     if (sub == QLatin1String("report")) return tuneReportCommand(rest);
     return usageError(
         "tune",
         QStringLiteral(
             "unknown subcommand '%1' (step, metrics, identify, auto, relay, margin, poles or "
-            "report)")
+            "disturbance or report)")
             .arg(sub));
 }
 

@@ -41,6 +41,7 @@
 #include "host/tuning/relay_comparison.h"
 #include "ui/background_pool.h"
 #include "ui/wheel_needs_focus.h"
+#include "ui/workbench/disturbance_view.h"
 #include "ui/workbench/margin_view.h"
 #include "ui/workbench/model_view.h"
 #include "ui/workbench/poles_view.h"
@@ -320,6 +321,22 @@ void WorkbenchWindow::build() {
         tabs_->addTab(polesView_, QString());
     else
         polesView_->hide();
+    // A step of load on the rail's platform (issue 33 item 7), with the boxes' law and gains.
+    if (rail_) {
+        disturbanceView_ = new DisturbanceView(this);
+        tabs_->addTab(disturbanceView_, QString());
+        connect(disturbanceView_, &DisturbanceView::runRequested, this, [this] {
+            const StepTestSpec s = currentSpec();
+            DisturbanceTestSpec d;
+            d.profile = s.profile;
+            d.law = s.law;
+            d.gains = s.gains;
+            d.periodS = s.periodS;
+            d.massFactor = s.massFactor;
+            d.seed = s.seed;
+            disturbanceView_->run(d);
+        });
+    }
     auto* split = new QSplitter(Qt::Horizontal);
     split->addWidget(scroll);
     split->addWidget(tabs_);
@@ -466,6 +483,7 @@ void WorkbenchWindow::retranslate() {
     tabs_->setTabText(1, tr("P, I, D terms"));
     if (tunable()) tabs_->setTabText(2, tr("Model"));
     if (tunable()) tabs_->setTabText(3, tr("Poles"));
+    if (disturbanceView_) tabs_->setTabText(tabs_->indexOf(disturbanceView_), tr("Disturbance"));
 }
 
 void WorkbenchWindow::changeEvent(QEvent* e) {

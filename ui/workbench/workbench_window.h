@@ -36,6 +36,7 @@ namespace ui {
 class MarginView;
 class ModelView;
 class PolesView;
+class DisturbanceView;
 class RunOverlay;
 class TermsView;
 
@@ -100,6 +101,8 @@ class WorkbenchWindow : public QMainWindow {
     MarginView* marginView() const { return marginView_; }
     /// The rail's Poles page (the last identified model, the boxes' law, gains and period).
     PolesView* polesView() const { return polesView_; }
+    /// The rail's load-disturbance page (null on the other machines).
+    DisturbanceView* disturbanceView() const { return disturbanceView_; }
     QTabWidget* tabs() const { return tabs_; }
 
   signals:
@@ -170,6 +173,7 @@ class WorkbenchWindow : public QMainWindow {
     ModelView* model_;
     MarginView* marginView_;
     PolesView* polesView_;
+    DisturbanceView* disturbanceView_ = nullptr;
     QGroupBox *testBox_, *tuneBox_, *runsBox_;
     /// The rail's engineered law: new gains part-way through the test (`--change-at`).
     QGroupBox* changeBox_;
