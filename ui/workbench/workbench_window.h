@@ -121,6 +121,8 @@ class WorkbenchWindow : public QMainWindow {
     /// The form's column as wide as the form in the current language: never cut.
     void fitForm();
     void lawChanged();
+    /// The gain boxes' labels and ranges for the law (the DC table's seed laws: b0, b1).
+    void labelGains();
     /// The Poles page follows the boxes: law, gains, period.
     void updatePoles();
     void setBusy(bool busy);
