@@ -3189,6 +3189,18 @@
         <translation>Clásico (1996)</translation>
     </message>
     <message>
+        <source>Seed 004 (as written)</source>
+        <translation>Seed 004 (tal como escrita)</translation>
+    </message>
+    <message>
+        <source>Seed 004 signed</source>
+        <translation>Seed 004 con signo</translation>
+    </message>
+    <message>
+        <source>Seed 004 as written: u = 100 (b0 |e| + b1 |e_prev|), the direction bit fixed for the move (past the target it drives on); signed: the same gains on the signed error (it drives back); engineered: feed-forward and PI</source>
+        <translation>Seed 004 tal como escrita: u = 100 (b0 |e| + b1 |e_ant|), el bit de dirección fijo durante el movimiento (pasado el objetivo, sigue accionando); con signo: las mismas ganancias sobre el error con signo (acciona de vuelta); de ingeniería: feed-forward y PI</translation>
+    </message>
+    <message>
         <source>Period (ms)</source>
         <translation>Período (ms)</translation>
     </message>
@@ -3197,20 +3209,8 @@
         <translation>La ley de 1996 corría a 10 ms: sus ganancias son por ciclo, así que a 1 ms actúan diez veces más fuerte (una lección, no un ajuste)</translation>
     </message>
     <message>
-        <source>Kp</source>
-        <translation>Kp</translation>
-    </message>
-    <message>
-        <source>Ki</source>
-        <translation>Ki</translation>
-    </message>
-    <message>
-        <source>Kd</source>
-        <translation>Kd</translation>
-    </message>
-    <message>
-        <source>Kff</source>
-        <translation>Kff</translation>
+        <source>Seed 004 ran at 5 ms: its b0 and b1 are per tick, so at another period the same numbers are another law (a lesson, not a setting)</source>
+        <translation>El seed 004 corría a 5 ms: sus b0 y b1 son por período, así que en otro período los mismos números son otra ley (una lección, no un ajuste)</translation>
     </message>
     <message>
         <source>Mass factor</source>
@@ -3329,12 +3329,52 @@
         <translation>Perturbación</translation>
     </message>
     <message>
+        <source>b0 (per rad)</source>
+        <translation>b0 (por rad)</translation>
+    </message>
+    <message>
+        <source>Kp</source>
+        <translation>Kp</translation>
+    </message>
+    <message>
+        <source>b1 (per rad)</source>
+        <translation>b1 (por rad)</translation>
+    </message>
+    <message>
+        <source>Ki</source>
+        <translation>Ki</translation>
+    </message>
+    <message>
+        <source>Kd</source>
+        <translation>Kd</translation>
+    </message>
+    <message>
+        <source>Kff</source>
+        <translation>Kff</translation>
+    </message>
+    <message>
+        <source>Seed 004: u = 100 (b0 e + b1 e_prev) % PWM, e in rad of the motor, per tick: 100 (b0 + b1) is its proportional gain, -100 b1 a difference of e per tick</source>
+        <translation>Seed 004: u = 100 (b0 e + b1 e_ant) % de PWM, e en rad del motor, por período: 100 (b0 + b1) es su ganancia proporcional, -100 b1 una diferencia de e por período</translation>
+    </message>
+    <message>
+        <source>Seed 004&apos;s law as written has no poles: it drives by |e| with the move&apos;s direction bit fixed, not a linear loop (past the target it drives on). Its signed reading, with the same b0 and b1, has them.</source>
+        <translation>La ley del seed 004 tal como escrita no tiene polos: acciona por |e| con el bit de dirección del movimiento fijo, no es un lazo lineal (pasado el objetivo, sigue accionando). Su lectura con signo, con los mismos b0 y b1, los tiene.</translation>
+    </message>
+    <message>
         <source>1996</source>
         <translation>1996</translation>
     </message>
     <message>
         <source>engineered</source>
         <translation>moderna</translation>
+    </message>
+    <message>
+        <source>seed 004</source>
+        <translation>seed 004</translation>
+    </message>
+    <message>
+        <source>seed 004 signed</source>
+        <translation>seed 004 con signo</translation>
     </message>
     <message>
         <source>%1 %2, %3 mm at %4 ms, mass x%5</source>

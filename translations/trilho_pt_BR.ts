@@ -3189,6 +3189,18 @@
         <translation>Clássico (1996)</translation>
     </message>
     <message>
+        <source>Seed 004 (as written)</source>
+        <translation>Seed 004 (como escrita)</translation>
+    </message>
+    <message>
+        <source>Seed 004 signed</source>
+        <translation>Seed 004 com sinal</translation>
+    </message>
+    <message>
+        <source>Seed 004 as written: u = 100 (b0 |e| + b1 |e_prev|), the direction bit fixed for the move (past the target it drives on); signed: the same gains on the signed error (it drives back); engineered: feed-forward and PI</source>
+        <translation>Seed 004 como escrita: u = 100 (b0 |e| + b1 |e_ant|), o bit de direção fixo no movimento (passado o alvo, segue acionando); com sinal: os mesmos ganhos sobre o erro com sinal (aciona de volta); engenheirada: feed-forward e PI</translation>
+    </message>
+    <message>
         <source>Period (ms)</source>
         <translation>Período (ms)</translation>
     </message>
@@ -3197,20 +3209,8 @@
         <translation>A lei de 1996 rodava a 10 ms: seus ganhos são por ciclo, então a 1 ms agem dez vezes mais forte (uma lição, não um ajuste)</translation>
     </message>
     <message>
-        <source>Kp</source>
-        <translation>Kp</translation>
-    </message>
-    <message>
-        <source>Ki</source>
-        <translation>Ki</translation>
-    </message>
-    <message>
-        <source>Kd</source>
-        <translation>Kd</translation>
-    </message>
-    <message>
-        <source>Kff</source>
-        <translation>Kff</translation>
+        <source>Seed 004 ran at 5 ms: its b0 and b1 are per tick, so at another period the same numbers are another law (a lesson, not a setting)</source>
+        <translation>O seed 004 rodava a 5 ms: seus b0 e b1 são por período, então em outro período os mesmos números são outra lei (uma lição, não um ajuste)</translation>
     </message>
     <message>
         <source>Mass factor</source>
@@ -3329,12 +3329,52 @@
         <translation>Perturbação</translation>
     </message>
     <message>
+        <source>b0 (per rad)</source>
+        <translation>b0 (por rad)</translation>
+    </message>
+    <message>
+        <source>Kp</source>
+        <translation>Kp</translation>
+    </message>
+    <message>
+        <source>b1 (per rad)</source>
+        <translation>b1 (por rad)</translation>
+    </message>
+    <message>
+        <source>Ki</source>
+        <translation>Ki</translation>
+    </message>
+    <message>
+        <source>Kd</source>
+        <translation>Kd</translation>
+    </message>
+    <message>
+        <source>Kff</source>
+        <translation>Kff</translation>
+    </message>
+    <message>
+        <source>Seed 004: u = 100 (b0 e + b1 e_prev) % PWM, e in rad of the motor, per tick: 100 (b0 + b1) is its proportional gain, -100 b1 a difference of e per tick</source>
+        <translation>Seed 004: u = 100 (b0 e + b1 e_ant) % de PWM, e em rad do motor, por período: 100 (b0 + b1) é seu ganho proporcional, -100 b1 uma diferença de e por período</translation>
+    </message>
+    <message>
+        <source>Seed 004&apos;s law as written has no poles: it drives by |e| with the move&apos;s direction bit fixed, not a linear loop (past the target it drives on). Its signed reading, with the same b0 and b1, has them.</source>
+        <translation>A lei do seed 004 como escrita não tem polos: aciona por |e| com o bit de direção do movimento fixo, não é uma malha linear (passado o alvo, segue acionando). Sua leitura com sinal, com os mesmos b0 e b1, tem.</translation>
+    </message>
+    <message>
         <source>1996</source>
         <translation>1996</translation>
     </message>
     <message>
         <source>engineered</source>
         <translation>moderna</translation>
+    </message>
+    <message>
+        <source>seed 004</source>
+        <translation>seed 004</translation>
+    </message>
+    <message>
+        <source>seed 004 signed</source>
+        <translation>seed 004 com sinal</translation>
     </message>
     <message>
         <source>%1 %2, %3 mm at %4 ms, mass x%5</source>
