@@ -82,8 +82,13 @@ int main(int argc, char** argv) {
                      argv[1]);
         return 2;
     }
-    return run("seed004", TRILHO_SEED004_ELF, 9600, boardS, true) |
-           run("seed004-calibration", TRILHO_SEED004_CALIBRATION_ELF, 38400, boardS, false) |
-           runPlotter("plotter-bresenham", TRILHO_PLOTTER_BRESENHAM_ELF, boardS) |
-           runPlotter("plotter-float", TRILHO_PLOTTER_FLOAT_ELF, boardS);
+    int rc = run("seed004", TRILHO_SEED004_ELF, 9600, boardS, true) |
+             run("seed004-calibration", TRILHO_SEED004_CALIBRATION_ELF, 38400, boardS, false) |
+             runPlotter("plotter-bresenham", TRILHO_PLOTTER_BRESENHAM_ELF, boardS) |
+             runPlotter("plotter-float", TRILHO_PLOTTER_FLOAT_ELF, boardS);
+#ifdef TRILHO_TABLE_ELF
+    // trilho's table firmware (firmware/table): the same set point, then in position.
+    rc |= run("table", TRILHO_TABLE_ELF, 9600, boardS, true);
+#endif
+    return rc;
 }

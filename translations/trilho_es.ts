@@ -1018,6 +1018,93 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::DisturbanceView</name>
+    <message>
+        <source>Set the load and when it comes, then Run: the window&apos;s law, gains, period, mass and seed are used. Try Ki 0, then Ki 5.</source>
+        <translation>Defina la carga y cuándo llega, luego Ejecutar: se usan la ley, las ganancias, el período, la masa y la semilla de la ventana. Pruebe Ki 0, luego Ki 5.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Not run:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;No ejecutado:&lt;/b&gt; %1</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Aborted:&lt;/b&gt; %1&lt;br&gt;</source>
+        <translation>&lt;b&gt;Interrumpido:&lt;/b&gt; %1&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>No metrics: %1</source>
+        <translation>Sin métricas: %1</translation>
+    </message>
+    <message>
+        <source>Load %1 N at %2 s, Kp %3, Ki %4, Kd %5&lt;br&gt;</source>
+        <translation>Carga %1 N a los %2 s, Kp %3, Ki %4, Kd %5&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>Peak deviation before the stop: &lt;b&gt;%1 mm&lt;/b&gt;; no recovery and no steady state were measured</source>
+        <translation>Desviación de pico antes de la parada: &lt;b&gt;%1 mm&lt;/b&gt;; no se midieron ni recuperación ni régimen</translation>
+    </message>
+    <message>
+        <source>Peak deviation: &lt;b&gt;%1 mm&lt;/b&gt; at %2 s after the load&lt;br&gt;</source>
+        <translation>Desviación de pico: &lt;b&gt;%1 mm&lt;/b&gt; %2 s después de la carga&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>Recovery time: &lt;b&gt;%1 s&lt;/b&gt; (back within %2 mm of where it was)&lt;br&gt;</source>
+        <translation>Tiempo de recuperación: &lt;b&gt;%1 s&lt;/b&gt; (de vuelta a menos de %2 mm de donde estaba)&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>Recovery time: &lt;b&gt;not reached&lt;/b&gt; (still more than %1 mm from where it was at the end)&lt;br&gt;</source>
+        <translation>Tiempo de recuperación: &lt;b&gt;no alcanzado&lt;/b&gt; (todavía a más de %1 mm de donde estaba, al final)&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>Steady deviation: &lt;b&gt;%1 mm&lt;/b&gt; (mean of the last %2 s)&lt;br&gt;</source>
+        <translation>Desviación en régimen: &lt;b&gt;%1 mm&lt;/b&gt; (media de los últimos %2 s)&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>Amplifier stiffness %1 N per mm/s: with Ki 0 the loop settles where Kp&apos;s drive gives back the speed the load adds, %2 mm</source>
+        <translation>Rigidez del amplificador %1 N por mm/s: con Ki 0 el lazo se asienta donde el accionamiento de Kp devuelve la velocidad que la carga añade, %2 mm</translation>
+    </message>
+    <message>
+        <source>The amplifier is an ideal speed source: no load slows it</source>
+        <translation>El amplificador es una fuente de velocidad ideal: ninguna carga lo frena</translation>
+    </message>
+    <message>
+        <source>Load on the platform</source>
+        <translation>Carga en la plataforma</translation>
+    </message>
+    <message>
+        <source>Load comes at</source>
+        <translation>La carga llega a los</translation>
+    </message>
+    <message>
+        <source>While</source>
+        <translation>Durante</translation>
+    </message>
+    <message>
+        <source>holding still</source>
+        <translation>detenido</translation>
+    </message>
+    <message>
+        <source>moving (10 % of rapid)</source>
+        <translation>moviéndose (10 % del rápido)</translation>
+    </message>
+    <message>
+        <source>Run load test</source>
+        <translation>Ejecutar prueba de carga</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>tiempo (s)</translation>
+    </message>
+    <message>
+        <source>deviation (mm)</source>
+        <translation>desviación (mm)</translation>
+    </message>
+    <message>
+        <source>load (N)</source>
+        <translation>carga (N)</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::DncDialog</name>
     <message>
         <source>Programs folder</source>
@@ -2872,24 +2959,24 @@
         <translation>Anti-windup</translation>
     </message>
     <message>
-        <source>Off: the engineered law&apos;s integral winds while the drive is pinned (lesson 14)</source>
-        <translation>Apagado: la integral de la ley diseñada se acumula mientras el accionamiento está saturado (lección 14)</translation>
+        <source>Off: the engineered law&apos;s integral winds while the drive is pinned (lesson 17)</source>
+        <translation>Apagado: la integral de la ley diseñada se acumula mientras el accionamiento está saturado (lección 17)</translation>
     </message>
     <message>
         <source>Encoder noise (counts)</source>
         <translation>Ruido del encoder (cuentas)</translation>
     </message>
     <message>
-        <source>The counter reads up to this many counts off, each tick, from the seed (lesson 15)</source>
-        <translation>El contador lee hasta ese número de cuentas de más o de menos, en cada período, a partir de la semilla (lección 15)</translation>
+        <source>The counter reads up to this many counts off, each tick, from the seed (lesson 18)</source>
+        <translation>El contador lee hasta ese número de cuentas de más o de menos, en cada período, a partir de la semilla (lección 18)</translation>
     </message>
     <message>
         <source>DAC quantization (8 bits)</source>
         <translation>Cuantización del DAC (8 bits)</translation>
     </message>
     <message>
-        <source>Off: the amplifier gets the loop&apos;s command unrounded (lesson 15)</source>
-        <translation>Apagado: el amplificador recibe el comando del lazo sin redondeo (lección 15)</translation>
+        <source>Off: the amplifier gets the loop&apos;s command unrounded (lesson 18)</source>
+        <translation>Apagado: el amplificador recibe el comando del lazo sin redondeo (lección 18)</translation>
     </message>
 </context>
 <context>
@@ -3172,6 +3259,18 @@
         <translation>Clásico (1996)</translation>
     </message>
     <message>
+        <source>Seed 004 (as written)</source>
+        <translation>Seed 004 (tal como escrita)</translation>
+    </message>
+    <message>
+        <source>Seed 004 signed</source>
+        <translation>Seed 004 con signo</translation>
+    </message>
+    <message>
+        <source>Seed 004 as written: u = 100 (b0 |e| + b1 |e_prev|), the direction bit fixed for the move (past the target it drives on); signed: the same gains on the signed error (it drives back); engineered: feed-forward and PI</source>
+        <translation>Seed 004 tal como escrita: u = 100 (b0 |e| + b1 |e_ant|), el bit de dirección fijo durante el movimiento (pasado el objetivo, sigue accionando); con signo: las mismas ganancias sobre el error con signo (acciona de vuelta); de ingeniería: feed-forward y PI</translation>
+    </message>
+    <message>
         <source>Period (ms)</source>
         <translation>Período (ms)</translation>
     </message>
@@ -3180,20 +3279,8 @@
         <translation>La ley de 1996 corría a 10 ms: sus ganancias son por ciclo, así que a 1 ms actúan diez veces más fuerte (una lección, no un ajuste)</translation>
     </message>
     <message>
-        <source>Kp</source>
-        <translation>Kp</translation>
-    </message>
-    <message>
-        <source>Ki</source>
-        <translation>Ki</translation>
-    </message>
-    <message>
-        <source>Kd</source>
-        <translation>Kd</translation>
-    </message>
-    <message>
-        <source>Kff</source>
-        <translation>Kff</translation>
+        <source>Seed 004 ran at 5 ms: its b0 and b1 are per tick, so at another period the same numbers are another law (a lesson, not a setting)</source>
+        <translation>El seed 004 corría a 5 ms: sus b0 y b1 son por período, así que en otro período los mismos números son otra ley (una lección, no un ajuste)</translation>
     </message>
     <message>
         <source>Mass factor</source>
@@ -3312,12 +3399,56 @@
         <translation>Predicción</translation>
     </message>
     <message>
+        <source>Disturbance</source>
+        <translation>Perturbación</translation>
+    </message>
+    <message>
+        <source>b0 (per rad)</source>
+        <translation>b0 (por rad)</translation>
+    </message>
+    <message>
+        <source>Kp</source>
+        <translation>Kp</translation>
+    </message>
+    <message>
+        <source>b1 (per rad)</source>
+        <translation>b1 (por rad)</translation>
+    </message>
+    <message>
+        <source>Ki</source>
+        <translation>Ki</translation>
+    </message>
+    <message>
+        <source>Kd</source>
+        <translation>Kd</translation>
+    </message>
+    <message>
+        <source>Kff</source>
+        <translation>Kff</translation>
+    </message>
+    <message>
+        <source>Seed 004: u = 100 (b0 e + b1 e_prev) % PWM, e in rad of the motor, per tick: 100 (b0 + b1) is its proportional gain, -100 b1 a difference of e per tick</source>
+        <translation>Seed 004: u = 100 (b0 e + b1 e_ant) % de PWM, e en rad del motor, por período: 100 (b0 + b1) es su ganancia proporcional, -100 b1 una diferencia de e por período</translation>
+    </message>
+    <message>
+        <source>Seed 004&apos;s law as written has no poles: it drives by |e| with the move&apos;s direction bit fixed, not a linear loop (past the target it drives on). Its signed reading, with the same b0 and b1, has them.</source>
+        <translation>La ley del seed 004 tal como escrita no tiene polos: acciona por |e| con el bit de dirección del movimiento fijo, no es un lazo lineal (pasado el objetivo, sigue accionando). Su lectura con signo, con los mismos b0 y b1, los tiene.</translation>
+    </message>
+    <message>
         <source>1996</source>
         <translation>1996</translation>
     </message>
     <message>
         <source>engineered</source>
         <translation>moderna</translation>
+    </message>
+    <message>
+        <source>seed 004</source>
+        <translation>seed 004</translation>
+    </message>
+    <message>
+        <source>seed 004 signed</source>
+        <translation>seed 004 con signo</translation>
     </message>
     <message>
         <source>%1 %2, %3 mm at %4 ms, mass x%5</source>

@@ -1018,6 +1018,93 @@
     </message>
 </context>
 <context>
+    <name>trilho::ui::DisturbanceView</name>
+    <message>
+        <source>Set the load and when it comes, then Run: the window&apos;s law, gains, period, mass and seed are used. Try Ki 0, then Ki 5.</source>
+        <translation>Defina a carga e quando ela vem, depois Executar: usam-se a lei, os ganhos, o período, a massa e a semente da janela. Experimente Ki 0, depois Ki 5.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Not run:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;Não executado:&lt;/b&gt; %1</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Aborted:&lt;/b&gt; %1&lt;br&gt;</source>
+        <translation>&lt;b&gt;Interrompido:&lt;/b&gt; %1&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>No metrics: %1</source>
+        <translation>Sem métricas: %1</translation>
+    </message>
+    <message>
+        <source>Load %1 N at %2 s, Kp %3, Ki %4, Kd %5&lt;br&gt;</source>
+        <translation>Carga %1 N em %2 s, Kp %3, Ki %4, Kd %5&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>Peak deviation before the stop: &lt;b&gt;%1 mm&lt;/b&gt;; no recovery and no steady state were measured</source>
+        <translation>Desvio de pico antes da parada: &lt;b&gt;%1 mm&lt;/b&gt;; nem recuperação nem regime foram medidos</translation>
+    </message>
+    <message>
+        <source>Peak deviation: &lt;b&gt;%1 mm&lt;/b&gt; at %2 s after the load&lt;br&gt;</source>
+        <translation>Desvio de pico: &lt;b&gt;%1 mm&lt;/b&gt; %2 s após a carga&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>Recovery time: &lt;b&gt;%1 s&lt;/b&gt; (back within %2 mm of where it was)&lt;br&gt;</source>
+        <translation>Tempo de recuperação: &lt;b&gt;%1 s&lt;/b&gt; (de volta a menos de %2 mm de onde estava)&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>Recovery time: &lt;b&gt;not reached&lt;/b&gt; (still more than %1 mm from where it was at the end)&lt;br&gt;</source>
+        <translation>Tempo de recuperação: &lt;b&gt;não atingido&lt;/b&gt; (ainda a mais de %1 mm de onde estava, no fim)&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>Steady deviation: &lt;b&gt;%1 mm&lt;/b&gt; (mean of the last %2 s)&lt;br&gt;</source>
+        <translation>Desvio em regime: &lt;b&gt;%1 mm&lt;/b&gt; (média dos últimos %2 s)&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>Amplifier stiffness %1 N per mm/s: with Ki 0 the loop settles where Kp&apos;s drive gives back the speed the load adds, %2 mm</source>
+        <translation>Rigidez do amplificador %1 N por mm/s: com Ki 0 a malha para onde o acionamento de Kp devolve a velocidade que a carga acrescenta, %2 mm</translation>
+    </message>
+    <message>
+        <source>The amplifier is an ideal speed source: no load slows it</source>
+        <translation>O amplificador é uma fonte de velocidade ideal: nenhuma carga o desacelera</translation>
+    </message>
+    <message>
+        <source>Load on the platform</source>
+        <translation>Carga na plataforma</translation>
+    </message>
+    <message>
+        <source>Load comes at</source>
+        <translation>A carga vem em</translation>
+    </message>
+    <message>
+        <source>While</source>
+        <translation>Durante</translation>
+    </message>
+    <message>
+        <source>holding still</source>
+        <translation>parado</translation>
+    </message>
+    <message>
+        <source>moving (10 % of rapid)</source>
+        <translation>movendo (10 % do rápido)</translation>
+    </message>
+    <message>
+        <source>Run load test</source>
+        <translation>Executar teste de carga</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>tempo (s)</translation>
+    </message>
+    <message>
+        <source>deviation (mm)</source>
+        <translation>desvio (mm)</translation>
+    </message>
+    <message>
+        <source>load (N)</source>
+        <translation>carga (N)</translation>
+    </message>
+</context>
+<context>
     <name>trilho::ui::DncDialog</name>
     <message>
         <source>Programs folder</source>
@@ -2872,24 +2959,24 @@
         <translation>Anti-windup</translation>
     </message>
     <message>
-        <source>Off: the engineered law&apos;s integral winds while the drive is pinned (lesson 14)</source>
-        <translation>Desligado: a integral da lei projetada acumula enquanto o acionamento está saturado (lição 14)</translation>
+        <source>Off: the engineered law&apos;s integral winds while the drive is pinned (lesson 17)</source>
+        <translation>Desligado: a integral da lei projetada acumula enquanto o acionamento está saturado (lição 17)</translation>
     </message>
     <message>
         <source>Encoder noise (counts)</source>
         <translation>Ruído do encoder (contagens)</translation>
     </message>
     <message>
-        <source>The counter reads up to this many counts off, each tick, from the seed (lesson 15)</source>
-        <translation>O contador lê até esse número de contagens a mais ou a menos, a cada período, a partir da semente (lição 15)</translation>
+        <source>The counter reads up to this many counts off, each tick, from the seed (lesson 18)</source>
+        <translation>O contador lê até esse número de contagens a mais ou a menos, a cada período, a partir da semente (lição 18)</translation>
     </message>
     <message>
         <source>DAC quantization (8 bits)</source>
         <translation>Quantização do DAC (8 bits)</translation>
     </message>
     <message>
-        <source>Off: the amplifier gets the loop&apos;s command unrounded (lesson 15)</source>
-        <translation>Desligado: o amplificador recebe o comando da malha sem arredondamento (lição 15)</translation>
+        <source>Off: the amplifier gets the loop&apos;s command unrounded (lesson 18)</source>
+        <translation>Desligado: o amplificador recebe o comando da malha sem arredondamento (lição 18)</translation>
     </message>
 </context>
 <context>
@@ -3172,6 +3259,18 @@
         <translation>Clássico (1996)</translation>
     </message>
     <message>
+        <source>Seed 004 (as written)</source>
+        <translation>Seed 004 (como escrita)</translation>
+    </message>
+    <message>
+        <source>Seed 004 signed</source>
+        <translation>Seed 004 com sinal</translation>
+    </message>
+    <message>
+        <source>Seed 004 as written: u = 100 (b0 |e| + b1 |e_prev|), the direction bit fixed for the move (past the target it drives on); signed: the same gains on the signed error (it drives back); engineered: feed-forward and PI</source>
+        <translation>Seed 004 como escrita: u = 100 (b0 |e| + b1 |e_ant|), o bit de direção fixo no movimento (passado o alvo, segue acionando); com sinal: os mesmos ganhos sobre o erro com sinal (aciona de volta); engenheirada: feed-forward e PI</translation>
+    </message>
+    <message>
         <source>Period (ms)</source>
         <translation>Período (ms)</translation>
     </message>
@@ -3180,20 +3279,8 @@
         <translation>A lei de 1996 rodava a 10 ms: seus ganhos são por ciclo, então a 1 ms agem dez vezes mais forte (uma lição, não um ajuste)</translation>
     </message>
     <message>
-        <source>Kp</source>
-        <translation>Kp</translation>
-    </message>
-    <message>
-        <source>Ki</source>
-        <translation>Ki</translation>
-    </message>
-    <message>
-        <source>Kd</source>
-        <translation>Kd</translation>
-    </message>
-    <message>
-        <source>Kff</source>
-        <translation>Kff</translation>
+        <source>Seed 004 ran at 5 ms: its b0 and b1 are per tick, so at another period the same numbers are another law (a lesson, not a setting)</source>
+        <translation>O seed 004 rodava a 5 ms: seus b0 e b1 são por período, então em outro período os mesmos números são outra lei (uma lição, não um ajuste)</translation>
     </message>
     <message>
         <source>Mass factor</source>
@@ -3312,12 +3399,56 @@
         <translation>Previsão</translation>
     </message>
     <message>
+        <source>Disturbance</source>
+        <translation>Perturbação</translation>
+    </message>
+    <message>
+        <source>b0 (per rad)</source>
+        <translation>b0 (por rad)</translation>
+    </message>
+    <message>
+        <source>Kp</source>
+        <translation>Kp</translation>
+    </message>
+    <message>
+        <source>b1 (per rad)</source>
+        <translation>b1 (por rad)</translation>
+    </message>
+    <message>
+        <source>Ki</source>
+        <translation>Ki</translation>
+    </message>
+    <message>
+        <source>Kd</source>
+        <translation>Kd</translation>
+    </message>
+    <message>
+        <source>Kff</source>
+        <translation>Kff</translation>
+    </message>
+    <message>
+        <source>Seed 004: u = 100 (b0 e + b1 e_prev) % PWM, e in rad of the motor, per tick: 100 (b0 + b1) is its proportional gain, -100 b1 a difference of e per tick</source>
+        <translation>Seed 004: u = 100 (b0 e + b1 e_ant) % de PWM, e em rad do motor, por período: 100 (b0 + b1) é seu ganho proporcional, -100 b1 uma diferença de e por período</translation>
+    </message>
+    <message>
+        <source>Seed 004&apos;s law as written has no poles: it drives by |e| with the move&apos;s direction bit fixed, not a linear loop (past the target it drives on). Its signed reading, with the same b0 and b1, has them.</source>
+        <translation>A lei do seed 004 como escrita não tem polos: aciona por |e| com o bit de direção do movimento fixo, não é uma malha linear (passado o alvo, segue acionando). Sua leitura com sinal, com os mesmos b0 e b1, tem.</translation>
+    </message>
+    <message>
         <source>1996</source>
         <translation>1996</translation>
     </message>
     <message>
         <source>engineered</source>
         <translation>moderna</translation>
+    </message>
+    <message>
+        <source>seed 004</source>
+        <translation>seed 004</translation>
+    </message>
+    <message>
+        <source>seed 004 signed</source>
+        <translation>seed 004 com sinal</translation>
     </message>
     <message>
         <source>%1 %2, %3 mm at %4 ms, mass x%5</source>

@@ -20,6 +20,8 @@ int tuneRelayCommand(const QStringList& args);
 int tuneMarginCommand(const QStringList& args);
 /// tune poles (tune_poles_command.cpp): the closed loop's poles and zeros.
 int tunePolesCommand(const QStringList& args);
+/// tune disturbance (tune_disturbance_command.cpp): a step of load while holding or moving.
+int tuneDisturbanceCommand(const QStringList& args);
 /// tune report (tune_report_command.cpp): the lab sheet of saved runs (PDF, PNG).
 int tuneReportCommand(const QStringList& args);
 int tuneCommand(const QStringList& args);

@@ -23,7 +23,7 @@ const char* kUsage =
     "  serve     run a machine headless with the DNC link (Modbus TCP/RTU)\n"
     "  tune      step tests, metrics, identification and autotune (tune step,\n"
     "            tune metrics, tune identify, tune auto, tune relay, tune margin, tune poles,\n"
-    "            tune report)\n"
+    "            tune disturbance, tune report)\n"
     "  calibrate measure an axis of the DC table from its board's calibration stream\n"
     "\n"
     "Options:\n"

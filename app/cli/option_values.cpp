@@ -46,6 +46,51 @@ std::optional<QString> readAxis(const QCommandLineParser& parser, const QCommand
     return std::nullopt;
 }
 
+std::optional<QString> readLaw(const QCommandLineParser& parser, const QCommandLineOption& opt,
+                               bool dcTable, std::optional<LoopLaw>& law,
+                               std::optional<DcLaw>& tableLaw) {
+    if (!parser.isSet(opt)) return std::nullopt;
+    const QString l = parser.value(opt);
+    const QString name = opt.names().front();
+    if (dcTable) {
+        const std::optional<DcLaw> d = dcLawFromName(l.toStdString());
+        if (!d)
+            return l == QLatin1String("classic")
+                       ? QStringLiteral(
+                             "--%1 classic is the rail's: the DC table's laws are seed "
+                             "(seed 004 as written), seed-signed and engineered")
+                             .arg(name)
+                       : QStringLiteral(
+                             "--%1 on the DC table must be seed, seed-signed or "
+                             "engineered (got '%2')")
+                             .arg(name, l);
+        tableLaw = *d;
+        law = *d == DcLaw::Engineered ? LoopLaw::Engineered : LoopLaw::Classic;
+        return std::nullopt;
+    }
+    if (l == QLatin1String("classic")) {
+        law = LoopLaw::Classic;
+    } else if (l == QLatin1String("engineered")) {
+        law = LoopLaw::Engineered;
+    } else if (l == QLatin1String("seed") || l == QLatin1String("seed-signed")) {
+        return QStringLiteral(
+                   "--%1 %2 is the DC table's: the rail's laws are classic and "
+                   "engineered")
+            .arg(name, l);
+    } else {
+        return QStringLiteral("--%1 on the rail must be classic or engineered (got '%2')")
+            .arg(name, l);
+    }
+    return std::nullopt;
+}
+
+QString lawOptionHelp() {
+    return QStringLiteral(
+        "The loop's law (default: the profile's): on the rail classic (1996) or engineered; on "
+        "the DC table seed (seed 004 as written: |e| with the move's direction bit), "
+        "seed-signed (the same gains on the signed error) or engineered.");
+}
+
 QCommandLineOption dialectOption() {
     return {QStringLiteral("dialect"), QStringLiteral("classic or standard (default)."),
             QStringLiteral("dialect"), QStringLiteral("standard")};
@@ -79,18 +124,19 @@ std::optional<QString> installLanguageOption(const QCommandLineParser& parser,
 }
 
 GainOptions gainOptions() {
-    return {QCommandLineOption(QStringLiteral("kp"), QStringLiteral("Proportional gain."),
-                               QStringLiteral("K")),
-            QCommandLineOption(QStringLiteral("ki"), QStringLiteral("Integral gain."),
-                               QStringLiteral("K")),
-            QCommandLineOption(QStringLiteral("kd"), QStringLiteral("Derivative gain (the rail)."),
-                               QStringLiteral("K")),
-            QCommandLineOption(QStringLiteral("b0"),
-                               QStringLiteral("b0 of the DC table's classic law."),
-                               QStringLiteral("B")),
-            QCommandLineOption(QStringLiteral("b1"),
-                               QStringLiteral("b1 of the DC table's classic law."),
-                               QStringLiteral("B"))};
+    return {
+        QCommandLineOption(QStringLiteral("kp"), QStringLiteral("Proportional gain."),
+                           QStringLiteral("K")),
+        QCommandLineOption(QStringLiteral("ki"), QStringLiteral("Integral gain."),
+                           QStringLiteral("K")),
+        QCommandLineOption(QStringLiteral("kd"), QStringLiteral("Derivative gain (the rail)."),
+                           QStringLiteral("K")),
+        QCommandLineOption(QStringLiteral("b0"),
+                           QStringLiteral("b0 of the DC table's seed laws (seed, seed-signed)."),
+                           QStringLiteral("B")),
+        QCommandLineOption(QStringLiteral("b1"),
+                           QStringLiteral("b1 of the DC table's seed laws (seed, seed-signed)."),
+                           QStringLiteral("B"))};
 }
 
 }  // namespace trilho::cli

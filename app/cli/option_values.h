@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <optional>
 
+#include "core/control/dc_law.h"
+#include "core/control/loop_law.h"
 #include "core/gcode/dialect.h"
 
 class QCommandLineParser;
@@ -25,6 +27,17 @@ std::optional<QString> readSeed(const QCommandLineParser& parser, const QCommand
 /// --axis x|y into `axis` ('x' or 'y'), unchanged when not given.
 std::optional<QString> readAxis(const QCommandLineParser& parser, const QCommandLineOption& opt,
                                 char& axis);
+
+/// --law on the machine's loop (issue 33 item 5): the rail's classic or engineered into `law`;
+/// the DC table's seed, seed-signed or engineered into `tableLaw` (and `law`: Classic for the
+/// seed's two readings, whose gains are b0, b1). Unchanged when not given. Refused: a law the
+/// machine has not, named with the ones it has ("--law classic is the rail's: the DC table's
+/// laws are seed, seed-signed and engineered").
+std::optional<QString> readLaw(const QCommandLineParser& parser, const QCommandLineOption& opt,
+                               bool dcTable, std::optional<LoopLaw>& law,
+                               std::optional<DcLaw>& tableLaw);
+/// The help text of --law for the commands that take it.
+QString lawOptionHelp();
 
 /// The options several commands take, named and explained the same in each one's --help:
 /// --dialect (classic or standard), --lang (en, pt_BR, es), --mass-factor F.

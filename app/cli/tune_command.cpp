@@ -43,6 +43,8 @@ const char* kTuneUsage =
     "            teach with, beside the model-based gains of 'auto'; both run the same step\n"
     "  margin    the plotter's speed and acceleration margin against lost steps\n"
     "  poles     the discrete closed loop's poles and zeros, damping and natural frequency\n"
+    "  disturbance  a step of load on the rail's platform while it holds or moves: peak\n"
+    "            deviation, recovery time and steady deviation (why Ki exists)\n"
     "  report    the lab sheet of saved runs: overlaid, metrics side by side (PDF, PNG)\n"
     "\n"
     "Run 'trilho-cli tune <subcommand> --help' for its options.\n";
@@ -79,10 +81,7 @@ int stepCommand(const QStringList& args) {
         QStringLiteral("Where the test starts, mm (default: the rail centre, the middle of a "
                        "table axis)."),
         QStringLiteral("MM"));
-    const QCommandLineOption lawOpt(QStringLiteral("law"),
-                                    QStringLiteral("classic or engineered (default: the "
-                                                   "profile's)."),
-                                    QStringLiteral("LAW"));
+    const QCommandLineOption lawOpt(QStringLiteral("law"), lawOptionHelp(), QStringLiteral("LAW"));
     const GainOptions gainOpts = gainOptions();
     const QCommandLineOption& kpOpt = gainOpts.kp;
     const QCommandLineOption& kiOpt = gainOpts.ki;
@@ -97,7 +96,8 @@ int stepCommand(const QStringList& args) {
         QStringLiteral("period"),
         QStringLiteral("Loop period, s (default: the law's own: 0.01 for the rail's classic "
                        "law, whose gains are per tick of the VB's timer; otherwise the "
-                       "profile's)."),
+                       "profile's). The rail takes 0.0005-0.01, the DC table 0.001-0.05 for "
+                       "each of its laws (the seed's b0, b1 are per tick)."),
         QStringLiteral("S"));
     const QCommandLineOption massOpt(QStringLiteral("mass-factor"),
                                      QStringLiteral("Multiply the simulated moving mass (0.1-20)."),
@@ -191,19 +191,12 @@ int stepCommand(const QStringList& args) {
         if (auto e = number(startOpt, -1e4, 1e4, s)) return *e;
         spec.startMm = s;
     }
-    if (parser.isSet(lawOpt)) {
-        const QString l = parser.value(lawOpt);
-        if (l == QLatin1String("classic"))
-            spec.law = LoopLaw::Classic;
-        else if (l == QLatin1String("engineered"))
-            spec.law = LoopLaw::Engineered;
-        else
-            return usage(QStringLiteral("--law must be classic or engineered (got '%1')").arg(l));
-    }
+    if (auto m = readLaw(parser, lawOpt, table, spec.law, spec.tableLaw)) return usage(*m);
     const LoopLaw law =
         spec.law ? *spec.law
                  : (table ? tableStepLaw(spec.profile.dcTable.law) : spec.profile.loop.law);
     TuningGains g = profileGains(spec.profile, spec.axis, law);
+    // The seed's two laws (seed, seed-signed) take its gains b0 and b1.
     const bool dcClassic = table && law == LoopLaw::Classic;
     struct GainOpt {
         const QCommandLineOption* opt;
@@ -216,8 +209,8 @@ int stepCommand(const QStringList& args) {
         {&kiOpt, &g.ki, !dcClassic, "the rail and the DC table's engineered law"},
         {&kdOpt, &g.kd, !table, "the rail (the DC table's laws have no D term)"},
         {&kffOpt, &g.kff, table && !dcClassic, "the DC table's engineered law"},
-        {&b0Opt, &g.b0, dcClassic, "the DC table's classic law"},
-        {&b1Opt, &g.b1, dcClassic, "the DC table's classic law"},
+        {&b0Opt, &g.b0, dcClassic, "the DC table's seed laws (seed, seed-signed)"},
+        {&b1Opt, &g.b1, dcClassic, "the DC table's seed laws (seed, seed-signed)"},
     };
     bool anyGain = false;
     for (const GainOpt& o : gains) {
@@ -496,12 +489,13 @@ int tuneCommand(const QStringList& args) {
     if (sub == QLatin1String("relay")) return tuneRelayCommand(rest);
     if (sub == QLatin1String("margin")) return tuneMarginCommand(rest);
     if (sub == QLatin1String("poles")) return tunePolesCommand(rest);
+    if (sub == QLatin1String("disturbance")) return tuneDisturbanceCommand(rest);
     if (sub == QLatin1String("report")) return tuneReportCommand(rest);
     return usageError(
         "tune",
         QStringLiteral(
             "unknown subcommand '%1' (step, metrics, identify, auto, relay, margin, poles or "
-            "report)")
+            "disturbance or report)")
             .arg(sub));
 }
 

@@ -1,10 +1,11 @@
-// trilho-cli tune poles --machine M [--axis x|y] [--law classic|engineered]
+// trilho-cli tune poles --machine M [--axis x|y] [--law classic|engineered|seed-signed]
 //   [--kp K --ki K --kd K | --b0 B --b1 B] [--period S] [--mass-factor F] [--seed N] [--locus]
 //   [--json]
 // Issue 33 item 6: the discrete closed loop's poles and zeros, from the model identified on the
 // simulated rail or DC table axis (as `tune identify` does it, same start and seed) and the law,
 // gains and period given (default: the profile's; the rail's classic law at its own 10 ms; the
-// DC table's classic law is seed 004's on the signed error, as `tune step` runs it). The
+// DC table's seed-signed law is seed 004's on the signed error; its law 'seed', |e| with a fixed
+// direction bit, is no linear loop and is refused with that reason). The
 // arithmetic is core/tuning/closed_loop_poles, the report host/tuning/reports/poles_report.
 #include <QCommandLineParser>
 #include <QJsonDocument>
@@ -47,9 +48,7 @@ int tunePolesCommand(const QStringList& args) {
     const QCommandLineOption axisOpt(
         QStringLiteral("axis"), QStringLiteral("DC table: the axis, x or y (the rail has only x)."),
         QStringLiteral("x|y"));
-    const QCommandLineOption lawOpt(
-        QStringLiteral("law"), QStringLiteral("classic or engineered (default: the profile's)."),
-        QStringLiteral("LAW"));
+    const QCommandLineOption lawOpt(QStringLiteral("law"), lawOptionHelp(), QStringLiteral("LAW"));
     const GainOptions gainOpts = gainOptions();
     const QCommandLineOption& kpOpt = gainOpts.kp;
     const QCommandLineOption& kiOpt = gainOpts.ki;
@@ -104,16 +103,19 @@ int tunePolesCommand(const QStringList& args) {
         return usage(QStringLiteral("the DC table has two axes: choose one with --axis x or y"));
     const int axisIndex = axis == 'y' ? 1 : 0;
     const DcAxisParams& dcAxis = axisIndex == 1 ? profile.dcTable.y : profile.dcTable.x;
-    LoopLaw law = table ? tableStepLaw(profile.dcTable.law) : profile.loop.law;
-    if (parser.isSet(lawOpt)) {
-        const QString l = parser.value(lawOpt);
-        if (l == QLatin1String("classic"))
-            law = LoopLaw::Classic;
-        else if (l == QLatin1String("engineered"))
-            law = LoopLaw::Engineered;
-        else
-            return usage(QStringLiteral("--law must be classic or engineered (got '%1')").arg(l));
-    }
+    std::optional<LoopLaw> lawGiven;
+    std::optional<DcLaw> tableLaw;
+    if (auto m = readLaw(parser, lawOpt, table, lawGiven, tableLaw)) return usage(*m);
+    const LoopLaw law =
+        lawGiven ? *lawGiven : (table ? tableStepLaw(profile.dcTable.law) : profile.loop.law);
+    // Seed 004's law as written drives by |e| with the move's direction bit: not a linear loop
+    // (past the target it drives on, away), so it has no poles to give; its signed reading has.
+    if (table && (tableLaw ? *tableLaw : profile.dcTable.law) == DcLaw::Seed)
+        return usage(QStringLiteral(
+            "the DC table's law 'seed' (seed 004 as written) has no poles: it drives by |e| "
+            "with the move's direction bit fixed, not a linear loop (past the target it drives "
+            "on); its signed reading, --law seed-signed, has the same gains b0, b1 and its "
+            "poles"));
     DiscreteLoopSpec loop;
     loop.law = law;
     loop.dcTableAxis = table;
@@ -140,8 +142,8 @@ int tunePolesCommand(const QStringList& args) {
         {&kpOpt, &loop.gains.kp, !seedLaw, "the rail and the DC table's engineered law"},
         {&kiOpt, &loop.gains.ki, !seedLaw, "the rail and the DC table's engineered law"},
         {&kdOpt, &loop.gains.kd, !table, "the rail (the DC table's laws have no D term)"},
-        {&b0Opt, &loop.b0, seedLaw, "the DC table's classic law"},
-        {&b1Opt, &loop.b1, seedLaw, "the DC table's classic law"},
+        {&b0Opt, &loop.b0, seedLaw, "the DC table's seed laws (seed, seed-signed)"},
+        {&b1Opt, &loop.b1, seedLaw, "the DC table's seed laws (seed, seed-signed)"},
     };
     for (const GainOpt& o : gains) {
         if (!parser.isSet(*o.opt)) continue;

@@ -115,7 +115,7 @@ int tuneReportCommand(const QStringList& args) {
             QStringLiteral("%1: %2").arg(sheet.runs.size() + 1).arg(QFileInfo(file).fileName());
         if (record->hasConditions)
             run.label += QStringLiteral(" (%1, %2 ms)")
-                             .arg(loopLawName(record->conditions.law))
+                             .arg(runLawName(record->conditions))
                              .arg(QString::number(record->conditions.periodS * 1e3, 'g', 6));
         run.color = labSheetColor(static_cast<int>(sheet.runs.size()));
         run.metrics = m;

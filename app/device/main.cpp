@@ -6,8 +6,9 @@
 //                 [--machine PROFILE]
 //                 [--calibration [--calibration-axis x|y] [--calibration-percent P]]
 //                 (table: seed 004's open-loop calibration program)
-//                 [--firmware seed004|seed004-calibration]
-//                 (table: seed 004's own firmware, firmware/seed004, on libsimavr)
+//                 [--firmware seed004|seed004-calibration|table|table-calibration]
+//                 (table: seed 004's own firmware, firmware/seed004, or trilho's table
+//                 firmware, firmware/table, on libsimavr)
 //                 [--firmware [plotter-bresenham|plotter-float]]
 //                 (plotter: trilho's UNO firmware, firmware/plotter, on libsimavr; with no
 //                 image, the one of the profile's plotter.line)
@@ -118,9 +119,12 @@ int main(int argc, char* argv[]) {
         QStringLiteral("firmware"),
         QStringLiteral("Run a board's own firmware on a simulated chip instead of the emulator. "
                        "table (ATmega128 at 8 MHz): seed004 (the main program, 9600 bit/s) or "
-                       "seed004-calibration (the open-loop program, 38400 bit/s). plotter "
-                       "(ATmega328P at 16 MHz): plotter-bresenham or plotter-float; given "
-                       "without an image, the one of the profile's plotter.line."),
+                       "seed004-calibration (the open-loop program, 38400 bit/s); table (trilho's "
+                       "table firmware, firmware/table: the emulator's protocol, 9600 bit/s) or "
+                       "table-calibration (its open-loop program: x at 25 %, the count every 32 ms "
+                       "until 1300, 9600 bit/s). plotter (ATmega328P at 16 MHz): "
+                       "plotter-bresenham or plotter-float; given without an image, the one of "
+                       "the profile's plotter.line."),
         QStringLiteral("IMAGE"));
     parser.addOptions({ptyOpt, portOpt, baudOpt, corruptOpt, everyOpt, dropOpt, delayOpt, dupOpt,
                        outCorruptOpt, outDropOpt, outDupOpt, outDelayOpt, seedOpt, unpacedOpt,
@@ -161,14 +165,16 @@ int main(int argc, char* argv[]) {
     } else if (parser.isSet(firmwareOpt)) {
         if (image == QLatin1String("default"))
             return usage(
-                QStringLiteral("--firmware: the table's image: seed004 or "
-                               "seed004-calibration"));
-        if (image != QLatin1String("seed004") && image != QLatin1String("seed004-calibration"))
-            return usage(
-                QStringLiteral("--firmware: seed004 or seed004-calibration (got %1)").arg(image));
+                QStringLiteral("--firmware: the table's image: seed004, seed004-calibration, "
+                               "table or table-calibration"));
+        if (image != QLatin1String("seed004") && image != QLatin1String("seed004-calibration") &&
+            image != QLatin1String("table") && image != QLatin1String("table-calibration"))
+            return usage(QStringLiteral("--firmware: seed004, seed004-calibration, table or "
+                                        "table-calibration (got %1)")
+                             .arg(image));
         if (parser.isSet(calibrationOpt))
             return usage(
-                QStringLiteral("--firmware runs the seed's own programs: "
+                QStringLiteral("--firmware runs the board's own programs: "
                                "--firmware seed004-calibration, not --calibration"));
     }
     if (parser.isSet(ptyOpt) && parser.isSet(portOpt))
@@ -296,8 +302,9 @@ int main(int argc, char* argv[]) {
         // The calibration program runs from power-on and never reads the line: the board is
         // powered when a host opens it (app/device/host_open_watch.h), not at the emulator's
         // start, so an operator who types the calibrate command later hears the whole stream.
-        const bool waitsForHost =
-            parser.isSet(calibrationOpt) || image == QLatin1String("seed004-calibration");
+        const bool waitsForHost = parser.isSet(calibrationOpt) ||
+                                  image == QLatin1String("seed004-calibration") ||
+                                  image == QLatin1String("table-calibration");
         if (waitsForHost) {
             auto* watch = new HostOpenWatch(
                 QString::fromStdString(pty.slavePath()),

@@ -11,6 +11,7 @@
 #include <QMap>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <vector>
@@ -27,6 +28,15 @@ double PlantParams::maxSpeedMmS() const {
 
 double PlantParams::peakForceN() const {
     return peakTorqueNm * gearRatio * gearEfficiency / (drumDiameterMm / 2000.0);
+}
+
+double PlantParams::ratedForceN() const {
+    return ratedTorqueNm * gearRatio * gearEfficiency / (drumDiameterMm / 2000.0);
+}
+
+double PlantParams::speedStiffnessNPerMmS() const {
+    if (!(speedRegulationPercent > 0.0)) return std::numeric_limits<double>::infinity();
+    return ratedForceN() / (speedRegulationPercent / 100.0 * maxSpeedMmS());
 }
 
 MachineProfile MachineProfile::rail() {
@@ -94,11 +104,13 @@ void forEachRailNumber(MachineProfile& p, F&& f) {
     f("plant.gearRatio", pl.gearRatio, 1.0, 200.0);
     f("plant.drumDiameterMm", pl.drumDiameterMm, 10.0, 1000.0);
     f("plant.peakTorqueNm", pl.peakTorqueNm, 0.1, 100.0);
+    f("plant.ratedTorqueNm", pl.ratedTorqueNm, 0.1, 100.0);
     f("plant.gearEfficiency", pl.gearEfficiency, 0.1, 1.0);
     f("plant.movingMassKg", pl.movingMassKg, 1.0, 5000.0);
     f("plant.reflectedMassKg", pl.reflectedMassKg, 0.0, 1000.0);
     f("plant.massFactor", pl.massFactor, kMinMassFactor, kMaxMassFactor);
     f("plant.speedLoopTauS", pl.speedLoopTauS, 0.001, 1.0);
+    f("plant.speedRegulationPercent", pl.speedRegulationPercent, 0.0, 50.0);
     f("plant.coulombFrictionN", pl.coulombFrictionN, 0.0, 1000.0);
     f("plant.viscousFrictionNsPerM", pl.viscousFrictionNsPerM, 0.0, 1000.0);
     f("plant.countsPerMm", pl.countsPerMm, 0.1, 10000.0);

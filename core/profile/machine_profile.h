@@ -27,6 +27,7 @@ struct PlantParams {
     double gearRatio = 10.0;         ///< CESTARI K-40 worm reducer, 1:10
     double drumDiameterMm = 120.0;   ///< steel drum
     double peakTorqueNm = 5.0;       ///< chosen: amplifier current limit, 1.67x the rated 3 N.m
+    double ratedTorqueNm = 3.0;      ///< seed 000 section 2: the SD-2530's 3 N.m
     double gearEfficiency = 0.8;     ///< chosen: a 1:10 single-start worm is typically 0.75-0.85
     double movingMassKg = 175.0;     ///< chosen: ASEA robot about 125 kg plus a 50 kg platform
     double reflectedMassKg =
@@ -34,6 +35,11 @@ struct PlantParams {
     double massFactor = 1.0;  ///< multiplies movingMassKg (payload changes; the loop is not told)
     double speedLoopTauS =
         0.015;  ///< chosen: TRANSAXE 710 PI speed loop, first-order time constant
+    /// The speed loop's load regulation, percent of the top speed lost at the rated torque (seed
+    /// 000 section 3.5, the TRANSAXE 710's "precisão de regulação menor que 0,5 % com velocidade
+    /// máxima"): a load at the platform slows it by load / speedStiffnessNPerMmS() in steady
+    /// state, reached through the speed loop's lag. 0: an ideal speed source no load slows.
+    double speedRegulationPercent = 0.5;
     double coulombFrictionN = 40.0;       ///< chosen: rollers and cable
     double viscousFrictionNsPerM = 30.0;  ///< chosen
     double countsPerMm = 22.8;            ///< machine.md: 100 mm = 2280 counts
@@ -51,6 +57,11 @@ struct PlantParams {
     double maxSpeedMmS() const;
     /// Peak force at the cable, N.
     double peakForceN() const;
+    /// The rated torque's force at the cable, N: 3 N.m x 10 x 0.8 / 0.06 m = 400 N.
+    double ratedForceN() const;
+    /// N of load per mm/s of speed lost: ratedForceN / (speedRegulationPercent % of
+    /// maxSpeedMmS); 400 N / 9.42 mm/s = 42.4 N/(mm/s). Infinite at 0 %.
+    double speedStiffnessNPerMmS() const;
 };
 
 struct LoopGains {

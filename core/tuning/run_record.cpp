@@ -125,6 +125,17 @@ QJsonObject stepMetricsToJson(const StepMetrics& m) {
     return o;
 }
 
+DcLaw tableLawOf(const RunConditions& c) {
+    if (c.law == LoopLaw::Engineered) return DcLaw::Engineered;
+    return c.profile.dcTable.law == DcLaw::Seed ? DcLaw::Seed : DcLaw::SeedSigned;
+}
+
+QString runLawName(const RunConditions& c) {
+    if (c.profile.kind != MachineKind::DcTable) return lawName(c.law);
+    const std::string_view name = dcLawName(tableLawOf(c));
+    return QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size()));
+}
+
 QJsonObject tuningGainsToJson(const TuningGains& g, MachineKind kind, LoopLaw law) {
     QJsonObject o;
     if (kind == MachineKind::DcTable && law == LoopLaw::Classic) {
@@ -156,7 +167,7 @@ QByteArray runConditionsToJson(const RunConditions& c, const StepMetrics* metric
     o[QStringLiteral("kind")] = QString::fromLatin1(machineKindName(c.profile.kind).data());
     o[QStringLiteral("axis")] =
         c.axis ? QJsonValue(QString(QLatin1Char(c.axis))) : QJsonValue(QJsonValue::Null);
-    o[QStringLiteral("law")] = lawName(c.law);
+    o[QStringLiteral("law")] = runLawName(c);
     o[QStringLiteral("gains")] = tuningGainsToJson(c.gains, c.profile.kind, c.law);
     o[QStringLiteral("period_s")] = c.periodS;
     o[QStringLiteral("mass_factor")] = c.massFactor;
@@ -577,13 +588,24 @@ std::optional<RunConditions> runConditionsFromJson(const QByteArray& json, const
         return bad(QStringLiteral("axis"),
                    QStringLiteral("must be \"x\", \"y\" or null (got '%1')").arg(axis));
     const QString law = o.value(QStringLiteral("law")).toString();
+    const bool table = c.profile.kind == MachineKind::DcTable;
     if (law == QLatin1String("classic"))
         c.law = LoopLaw::Classic;
     else if (law == QLatin1String("engineered"))
         c.law = LoopLaw::Engineered;
+    else if (table && (law == QLatin1String("seed") || law == QLatin1String("seed-signed")))
+        c.law = LoopLaw::Classic;
     else
-        return bad(QStringLiteral("law"),
-                   QStringLiteral("must be \"classic\" or \"engineered\" (got '%1')").arg(law));
+        return bad(
+            QStringLiteral("law"),
+            table ? QStringLiteral("must be \"seed\", \"seed-signed\" or \"engineered\" "
+                                   "(got '%1')")
+                        .arg(law)
+                  : QStringLiteral("must be \"classic\" or \"engineered\" (got '%1')").arg(law));
+    // The DC table's run carries which law ran in its profile (tableLawOf): the sidecar's name
+    // says it too ("classic", before issue 33, was the signed reading).
+    if (table && c.law == LoopLaw::Classic)
+        c.profile.dcTable.law = law == QLatin1String("seed") ? DcLaw::Seed : DcLaw::SeedSigned;
     const QJsonObject g = o.value(QStringLiteral("gains")).toObject();
     for (const auto& [key, into] : {std::pair{"kp", &c.gains.kp},
                                     {"ki", &c.gains.ki},

@@ -73,6 +73,15 @@ std::size_t gainChangeTick(const RunConditions& c);
 /// The gains the loop used on tick k: the change's from gainChangeTick on, the test's before.
 const TuningGains& gainsAtTick(const RunConditions& c, std::size_t k);
 
+/// A DC table run's law: engineered, or (law Classic, the gains b0 and b1) which reading of seed
+/// 004's law ran, as the run's profile records it in dcTable.law (issue 33 item 5). A record
+/// under the classic law whose profile says engineered is from before the table's three laws
+/// were chosen: the signed reading, the only one its step tests ran.
+DcLaw tableLawOf(const RunConditions& c);
+/// The law's name in the sidecar, the CLI's reports and the screens: the rail's "classic" or
+/// "engineered"; the DC table's "seed", "seed-signed" or "engineered".
+QString runLawName(const RunConditions& c);
+
 /// Per tick, all the same length. Loop terms in DAC codes around 128 (rail) or PWM percent
 /// (DC table; p, i and ff only). sumCodes = p + i + d + ff before the clamp; commandCodes the
 /// loop's command (engineered: after the clamp and slew limit; classic: the unclamped sum);

@@ -103,6 +103,33 @@ bool AvrChip::runUntil(std::uint64_t cycle) {
     return true;
 }
 
+long AvrChip::runUntilPc(const std::vector<std::uint32_t>& pcs, std::uint64_t limit) {
+    do {
+        const int state = avr_run(avr_);
+        if (state == cpu_Done || state == cpu_Crashed) return -1;
+        // avr_run services a pending interrupt after the instruction, so a pc here is the next
+        // instruction the program itself executes.
+        for (std::uint32_t pc : pcs)
+            if (avr_->pc == pc) return static_cast<long>(pc);
+    } while (avr_->cycle < limit);
+    return -1;
+}
+
+std::vector<std::uint32_t> AvrChip::loadsOf(std::uint16_t address) const {
+    // lds Rd, k: 1001 000d dddd 0000, then k; flash words little endian.
+    std::vector<std::uint32_t> out;
+    const auto word = [&](std::uint32_t at) {
+        return static_cast<std::uint16_t>(avr_->flash[at] | avr_->flash[at + 1] << 8);
+    };
+    for (std::uint32_t at = 0; at + 3 <= avr_->flashend; at += 2)
+        if ((word(at) & 0xFE0F) == 0x9000 && word(at + 2) == address) out.push_back(at);
+    return out;
+}
+
+bool AvrChip::interruptsEnabled() const {
+    return avr_->sreg[S_I] != 0;
+}
+
 bool AvrChip::runFor(double seconds) {
     // Nothing to run for no time, a negative or a not-a-number one (the cast would wrap).
     if (!(seconds > 0.0)) return avr_->state != cpu_Crashed && avr_->state != cpu_Done;

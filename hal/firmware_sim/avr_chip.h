@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 struct avr_t;
 struct avr_irq_t;
@@ -30,6 +31,16 @@ class AvrChip {
     /// and stateText() says why: crashed, done, sleeping with interrupts off).
     bool runUntil(std::uint64_t cycle);
     bool runFor(double seconds);
+    /// Runs at least one instruction, then until the core is about to execute an instruction at
+    /// one of pcs (program byte addresses) or the cycle count reaches limit. Returns the address
+    /// reached, or -1 (the limit, or the core stopped). For tests that must see a value at the
+    /// instant the program reads it (a variable it keeps in registers otherwise).
+    long runUntilPc(const std::vector<std::uint32_t>& pcs, std::uint64_t limit);
+    /// The program byte addresses of every `lds Rd, address` (a load of that data-space byte)
+    /// in the flash.
+    std::vector<std::uint32_t> loadsOf(std::uint16_t address) const;
+    /// The global interrupt enable (SREG I): false inside an interrupt handler.
+    bool interruptsEnabled() const;
     std::string stateText() const;
 
     /// An I/O register or RAM byte by data-space address (an I/O register at IO address a is at

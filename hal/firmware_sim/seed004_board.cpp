@@ -19,6 +19,7 @@ constexpr std::uint16_t kPortC = 0x35, kDdrB = 0x37, kPortB = 0x38;
 constexpr int kOcPin[2] = {5, 6};           // OC1A = PB5, OC1B = PB6
 constexpr int kEncoderPin[2] = {4, 6};      // INT4 = PE4, INT6 = PE6
 constexpr int kOverCurrentPin[2] = {5, 7};  // INT5 = PE5, INT7 = PE7
+constexpr int kEncoderBPin[2] = {2, 3};     // channel B (firmware/table): PE2, PE3
 
 /// The virtual-time run never waits: simavr's default sleep would usleep the host while the
 /// chip sleeps (the seed's programs never do; a test's image might).
@@ -49,6 +50,7 @@ std::unique_ptr<Seed004Board> Seed004Board::load(const Seed004BoardOptions& o, s
         b->encoderPin_[i] = avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ('E'), kEncoderPin[i]);
         b->overCurrentPin_[i] =
             avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ('E'), kOverCurrentPin[i]);
+        b->encoderBPin_[i] = avr_io_getirq(avr, AVR_IOCTL_IOPORT_GETIRQ('E'), kEncoderBPin[i]);
         b->lastCount_[i] = b->plant_.readEncoder(i);
     }
     // The low byte's write completes a 16-bit write (the high byte goes first, to TEMP).
@@ -120,7 +122,19 @@ double Seed004Board::dutyPercent(int axis) const {
     return 0.0;
 }
 
+bool Seed004Board::timer1Running() const {
+    return (chip_->data8(kTccr1B) & 7) != 0;
+}
+
 void Seed004Board::step() {
+    // Timer 1's clock running while an over-current holds the plant's drives off: the program
+    // restarted it (firmware/table clears the fault and holds), which re-arms the drives, as the
+    // comparator lets go once the drive is off. The over-current handlers stop the clock within
+    // cycles of the pin's rise, well inside the step after it, so the seed's programs (which
+    // never restart it) are never re-armed. (A write hook on TCCR1B would see the restart
+    // exactly, but simavr 1.6 shares at most four I/O registers between handlers, and UART0's
+    // UCSR0B, OCR1A and OCR1B take three.)
+    if (!plant_.pwmRunning() && timer1Running()) plant_.restartPwm();
     for (int i = 0; i < 2; ++i) {
         const double d = dutyPercent(i);
         plant_.axis(i).setDrive(reverse(i) ? -d : d);
@@ -129,9 +143,16 @@ void Seed004Board::step() {
     for (int i = 0; i < 2; ++i) {
         const std::size_t k = static_cast<std::size_t>(i);
         const std::uint16_t now = plant_.readEncoder(i);
-        const int moved =
-            std::abs(static_cast<std::int16_t>(static_cast<std::uint16_t>(now - lastCount_[k])));
+        const int delta =
+            static_cast<std::int16_t>(static_cast<std::uint16_t>(now - lastCount_[k]));
+        const int moved = std::abs(delta);
         lastCount_[k] = now;
+        // Channel B is set before channel A's rising edge, high when the count went up: x1
+        // quadrature decoding as firmware/table reads it. The seed's program never reads it.
+        if (moved > 0 && (delta > 0) != encoderBLevel_[k]) {
+            encoderBLevel_[k] = delta > 0;
+            avr_raise_irq(encoderBPin_[k], encoderBLevel_[k] ? 1 : 0);
+        }
         for (int e = 0; e < moved; ++e) {
             avr_raise_irq(encoderPin_[k], 1);
             avr_raise_irq(encoderPin_[k], 0);
@@ -152,7 +173,10 @@ std::uint64_t Seed004Board::onStep(avr_t*, std::uint64_t when, void* self) {
 void Seed004Board::onOcrWrite(avr_t*, std::uint16_t address, std::uint8_t, void* self) {
     auto* b = static_cast<Seed004Board*>(self);
     const int channel = address == kOcr1A ? 0 : 1;
-    b->ocrWrites_.push_back({b->chip_->cycle(), channel, b->ocr(channel)});
+    b->ocrWrites_.push_back({b->chip_->cycle(),
+                             channel,
+                             b->ocr(channel),
+                             {b->plant_.positionMm(0), b->plant_.positionMm(1)}});
 }
 
 }  // namespace trilho

@@ -6,7 +6,13 @@
 //   PE4 (INT4) / PE6 (INT6): one rising edge per encoder count of x / y, in either direction
 //     (a single channel: the program decides the sign from its set point);
 //   PE5 (INT5) / PE7 (INT7): the x / y over-current comparators (high while tripped);
-//   UART0: the host's line (UartLine: the two-byte receive buffer, DOR).
+//   UART0: the host's line (UartLine: the two-byte receive buffer, DOR);
+//   PE2 / PE3: the x / y encoder's channel B, set before each rising edge of channel A, high when
+//     the count goes up (firmware/table reads it for the count's sign; the seed's pins leave it
+//     unread).
+// The same board runs trilho's table firmware (firmware/table: table.elf at 9600 bit/s): when
+// a program restarts Timer 1 after an over-current stopped it, the plant's drives are re-armed
+// (SimDcTable::restartPwm), as the comparator lets go once the drive is off.
 // In virtual time: the plant is stepped every stepS of the chip's own cycles, so a second of
 // board time is 8,000,000 cycles however fast the host runs it.
 #include <array>
@@ -22,7 +28,7 @@
 namespace trilho {
 
 struct Seed004BoardOptions {
-    std::string elfPath;  ///< firmware/seed004's seed004.elf or seed004-calibration.elf
+    std::string elfPath;  ///< seed004.elf, seed004-calibration.elf or table.elf (firmware/)
     double lineBaud =
         9600.0;           ///< the host's rate: the main program's 9600, the calibration's 38400
     DcTableParams plant;  ///< the table (its axes' mechanics)
@@ -35,6 +41,7 @@ struct OcrWrite {
     std::uint64_t cycle = 0;
     int channel = 0;
     std::uint16_t value = 0;
+    std::array<double, 2> plantMm{};  ///< where the table's x, y were then (a lab's instrument)
 };
 
 class Seed004Board {
@@ -75,6 +82,7 @@ class Seed004Board {
   private:
     Seed004Board(const DcTableParams& plant, std::uint64_t seed) : plant_(plant, seed) {}
     void step();
+    bool timer1Running() const;
     static std::uint64_t onStep(avr_t*, std::uint64_t when, void* self);
     static void onOcrWrite(avr_t*, std::uint16_t address, std::uint8_t value, void* self);
 
@@ -86,6 +94,8 @@ class Seed004Board {
     std::array<avr_irq_t*, 2> overCurrentPin_{};
     std::array<std::uint16_t, 2> lastCount_{};
     std::array<bool, 2> overCurrentLevel_{};
+    std::array<avr_irq_t*, 2> encoderBPin_{};
+    std::array<bool, 2> encoderBLevel_{};
     std::array<std::uint64_t, 2> edges_{};
     std::vector<OcrWrite> ocrWrites_;
 };

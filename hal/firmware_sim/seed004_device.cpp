@@ -28,8 +28,36 @@ std::vector<std::uint8_t> Seed004Device::takeOutput() {
     return out;
 }
 
+namespace {
+/// A 32-bit counter of the image by its symbol (firmware/table's stat_*), or -1 if it has none.
+long long counter(const AvrChip& chip, const char* symbol) {
+    const int a = chip.ramAddress(symbol);
+    if (a < 0) return -1;
+    const auto at = static_cast<std::uint16_t>(a);
+    return static_cast<long long>(chip.data16(at) | static_cast<std::uint32_t>(chip.data16(at + 2u))
+                                                        << 16);
+}
+}  // namespace
+
 std::string Seed004Device::summary() const {
     const UartLineStats& s = board_->uart().stats();
+    std::string protocol;
+    const AvrChip& c = board_->chip();
+    if (counter(c, "stat_counts_sent") >= 0) {
+        // trilho's table firmware, its calibration image (table-calibration), as the
+        // emulator's --calibration says it.
+        protocol = "calibration: counts sent " + std::to_string(counter(c, "stat_counts_sent")) +
+                   ", pulses " + std::to_string(c.ramU16("cal_pulses")) +
+                   (c.ramU8("cal_done") ? ", stopped at 1300, " : ", running, ");
+    } else if (counter(c, "stat_set_points") >= 0) {
+        // trilho's table firmware counts what it answered, as the emulator's summary says it.
+        protocol = "set points " + std::to_string(counter(c, "stat_set_points")) + ", ACK " +
+                   std::to_string(counter(c, "stat_reached")) + ", NAK " +
+                   std::to_string(counter(c, "stat_refused")) + ", CAN " +
+                   std::to_string(counter(c, "stat_cut")) + ", stale partials " +
+                   std::to_string(counter(c, "stat_stale")) + ", ignored while moving " +
+                   std::to_string(counter(c, "stat_ignored")) + ", ";
+    }
     char line[400];
     std::snprintf(line, sizeof line,
                   "board time %.3f s, bytes read %llu, overruns (DOR) %llu, sent %llu; lab "
@@ -39,7 +67,7 @@ std::string Seed004Device::summary() const {
                   static_cast<unsigned long long>(s.overruns),
                   static_cast<unsigned long long>(s.sent), board_->plant().positionMm(0),
                   board_->plant().positionMm(1));
-    std::string out = line;
+    std::string out = protocol + line;
     // Bytes the chip could not take at all: a line rate its UBRR0 does not match (--baud), or
     // sent before the program enabled its receiver.
     if (s.baudMismatch)

@@ -58,14 +58,16 @@ void SimDcAxis::step(double dtS) {
             v = 0.0;
             continue;
         }
-        // Torque in PWM percent: the drive less the back EMF, against Coulomb friction.
-        const double net = u - backEmf;
-        if (v == 0.0 && std::abs(u) <= frictionPercent_) continue;  // sticks
+        // Torque in PWM percent: the drive less the back EMF, plus the load, against Coulomb
+        // friction.
+        const double push = u + load_;  // what turns the axis at rest
+        const double net = push - backEmf;
+        if (v == 0.0 && std::abs(push) <= frictionPercent_) continue;  // sticks
         const double friction = v != 0.0 ? (v > 0 ? frictionPercent_ : -frictionPercent_)
-                                         : (u > 0 ? frictionPercent_ : -frictionPercent_);
+                                         : (push > 0 ? frictionPercent_ : -frictionPercent_);
         const double vNext = v + (net - friction) * perPercent * h / tau;
         // Friction stops the axis; it never reverses it.
-        v = (v != 0.0 && vNext * v < 0.0 && std::abs(u) <= frictionPercent_) ? 0.0 : vNext;
+        v = (v != 0.0 && vNext * v < 0.0 && std::abs(push) <= frictionPercent_) ? 0.0 : vNext;
         state_.positionMm += v * h;
     }
 }

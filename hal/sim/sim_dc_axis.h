@@ -5,6 +5,7 @@
 // radPerCount, and a motor current (proportional to the PWM percent not balanced by the back
 // EMF) that trips the over-current input when it stays above overCurrentPercent: driven hard
 // while stalled or jammed. Deterministic; advanced only by step(). Needs no controller header.
+#include <cmath>
 #include <cstdint>
 
 #include "core/profile/dc_table_params.h"
@@ -25,6 +26,13 @@ class SimDcAxis {
 
     /// Signed PWM percent, -100..100 (the direction bit and the duty, already combined).
     void setDrive(double percent) { state_.drivePercent = percent; }
+    /// A load torque on the axis (issue 33 item 7), in percent of the motor's stall torque at
+    /// 100 % PWM: the PWM percent that balances it at rest (seed 004 gives no torque figure;
+    /// the model's own unit). Positive pushes towards +. The PWM-driven motor's stiffness is its
+    /// back EMF: undriven, a load L above friction runs the axis at (L - friction) x the
+    /// no-load speed per percent. 0 (the default) leaves the axis as it was.
+    void setLoadPercent(double percent) { load_ = std::isfinite(percent) ? percent : 0.0; }
+    double loadPercent() const { return load_; }
     /// Advances dtS seconds (sub-steps of at most 0.25 ms).
     void step(double dtS);
     /// The encoder count: floor of the travel over one count's millimetres, kept in 16 bits.
@@ -47,6 +55,7 @@ class SimDcAxis {
   private:
     DcAxisParams params_;
     double frictionPercent_;
+    double load_ = 0.0;  ///< setLoadPercent: the load torque in PWM percent
     SimDcAxisState state_;
     bool overCurrent_ = false;
     bool encoderStuck_ = false;

@@ -21,6 +21,7 @@ void SimRail::derive() {
     massKg_ = params_.movingMassKg * params_.massFactor + params_.reflectedMassKg;
     perMassMm_ = 1000.0 / massKg_;
     perTauM_ = 1.0 / (params_.speedLoopTauS * 1000.0);
+    perStiffness_ = 1.0 / params_.speedStiffnessNPerMmS();  // 0 for an ideal speed source
 }
 
 void SimRail::setFaults(const FaultInjection& faults) {
@@ -38,6 +39,8 @@ void SimRail::placeAt(double positionMm) {
     state_.drumMm = positionMm;
     counterOffset_ = 0;
     lostCounts_ = 0;
+    vModel_ = 0.0;
+    loaded_ = loadN_ != 0.0;
     previousCounter_ = readCounter();
 }
 
@@ -107,7 +110,15 @@ void SimRail::subStep(double h) {
     s.referenceV = std::clamp((code - kDacZero) * (10.0 / 127.0), -10.0, 10.0);
 
     // Amplifier speed loop: first order towards the commanded speed; the force it may use is
-    // the current limit, so the acceleration limit falls as the moving mass rises.
+    // the current limit, so the acceleration limit falls as the moving mass rises. Friction is
+    // compensated (the speed loop's integral). Once a load has acted, the loop is modelled as
+    // what it is, a reference model and a finite stiffness: its speed reference vModel_ follows
+    // the command through the 15 ms lag, and the platform's departure from it is answered with
+    // the stiffness (N per mm/s of departure, the seed's 0.5 % regulation at the rated torque),
+    // so the whole load reaches the platform (it breaks away above Coulomb friction) and in
+    // steady state it runs load / stiffness faster in the load's direction, within m / stiffness
+    // (4.5 ms). Until then vModel_ is the platform's speed and the force is what it always was.
+    const double load = loadN_;
     const double vCmd = s.referenceV / 10.0 * vmax_;
     const double v = s.velocityMmS;
     const double vM = v / 1000.0;  // m/s
@@ -116,17 +127,27 @@ void SimRail::subStep(double h) {
                                      : 0.0) *
                                 params_.coulombFrictionN +
                             params_.viscousFrictionNsPerM * vM;
+    const bool stiff = loaded_ && perStiffness_ > 0.0;
+    if (!stiff || s.amplifierFaulted) vModel_ = v;
     double force = 0.0;
     if (!s.amplifierFaulted) {
-        const double aWanted = (vCmd - v) * perTauM_;  // m/s2
-        force = std::clamp(massKg_ * aWanted + friction, -forceMax_, forceMax_);
+        const double aWanted = (vCmd - vModel_) * perTauM_;  // m/s2
+        // An ideal speed source (no stiffness figure) cancels the load at once.
+        // Never more than closes the departure in one sub-step (a light platform, a stiff loop:
+        // explicit Euler would ring); 1/k = 4.5 ms against 1 ms sub-steps on the stock rail.
+        const double stiffness = std::min(1.0 / perStiffness_, massKg_ / (h * 1000.0));
+        const double answer = stiff ? (vModel_ - v) * stiffness : -load;
+        force = std::clamp(massKg_ * aWanted + friction + answer, -forceMax_, forceMax_);
+        if (stiff) vModel_ += aWanted * 1000.0 * h;
     }
-    double a = (force - friction) * perMassMm_;  // mm/s2
+    // What drives the platform against its friction: the amplifier's force and the load.
+    const double drive = force + load;
+    double a = (drive - friction) * perMassMm_;  // mm/s2
     double vNext = v + a * h;
     // Coulomb friction stops the platform; it never reverses it.
-    if (v != 0.0 && (vNext > 0) != (v > 0) && std::abs(force) < params_.coulombFrictionN)
+    if (v != 0.0 && (vNext > 0) != (v > 0) && std::abs(drive) < params_.coulombFrictionN)
         vNext = 0.0;
-    if (v == 0.0 && std::abs(force) <= params_.coulombFrictionN) vNext = 0.0, a = 0.0;
+    if (v == 0.0 && std::abs(drive) <= params_.coulombFrictionN) vNext = 0.0, a = 0.0;
     double dx = 0.5 * (v + vNext) * h;
     double x = s.positionMm + dx;
     s.atHardStop = false;

@@ -5,6 +5,7 @@
 // viscous friction, a 16-bit quadrature counter at 22.8 counts/mm that wraps, end switches and
 // a centre switch that clears the counter. Deterministic for a seed; advanced only by step().
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <random>
@@ -55,6 +56,16 @@ class SimRail final : public RailIo {
     /// code (fractional, 0-255) instead of the 8-bit code written; NaN (the default) goes back
     /// to the written code. The caller sets it every tick, after the servo has written.
     void setFineDrive(double code) { fineCode_ = code; }
+    /// A load on the platform, N (positive pushes towards +x): a hand, a tool's reaction, a
+    /// slope. The amplifier's speed loop answers it with its finite stiffness
+    /// (PlantParams::speedStiffnessNPerMmS): in steady state the platform runs loadN /
+    /// stiffness mm/s faster (in the load's direction) than the reference asks. Takes effect at the
+    /// next sub-step; 0 (the default) leaves the plant exactly as it was without this input.
+    void setLoadForceN(double loadN) {
+        loadN_ = std::isfinite(loadN) ? loadN : 0.0;
+        loaded_ = loaded_ || loadN_ != 0.0;
+    }
+    double loadForceN() const { return loadN_; }
     void setMassFactor(double factor) {
         params_.massFactor = factor;
         derive();
@@ -78,11 +89,16 @@ class SimRail final : public RailIo {
     std::int64_t noiseCounts_ = 0;  ///< this step's read noise, counts
     double fineCode_ = std::numeric_limits<double>::quiet_NaN();
     std::atomic<std::uint8_t> code_{kDacZero};
-    double vmax_ = 0.0;               ///< mm/s at +10 V
-    double forceMax_ = 0.0;           ///< N
-    double massKg_ = 1.0;             ///< moving plus reflected mass
-    double perMassMm_ = 0.0;          ///< 1000 / mass: N -> mm/s2 (a division saved every step)
-    double perTauM_ = 0.0;            ///< 1 / (tau * 1000): mm/s of speed error -> m/s2
+    double vmax_ = 0.0;          ///< mm/s at +10 V
+    double forceMax_ = 0.0;      ///< N
+    double massKg_ = 1.0;        ///< moving plus reflected mass
+    double perMassMm_ = 0.0;     ///< 1000 / mass: N -> mm/s2 (a division saved every step)
+    double perTauM_ = 0.0;       ///< 1 / (tau * 1000): mm/s of speed error -> m/s2
+    double perStiffness_ = 0.0;  ///< 1 / stiffness: N of load -> mm/s of speed lost
+    double loadN_ = 0.0;         ///< the external load, N (setLoadForceN)
+    /// The speed loop's reference model, mm/s: where the speed would be without the load.
+    double vModel_ = 0.0;
+    bool loaded_ = false;             ///< a load has acted since placeAt: the stiffness is modelled
     std::int64_t counterOffset_ = 0;  ///< counts subtracted so the counter reads 0 at the reset
     double lostCounts_ = 0.0;         ///< counts the card missed (fault)
     std::int64_t stuckCounts_ = 0;

@@ -59,7 +59,7 @@ std::vector<LabSheetRow> labSheetRows(const LabSheet& sheet) {
             row.cells.push_back(machineText(*run.record));
         rows.push_back(std::move(row));
     }
-    conditionRow("law", [](const RunConditions& c) { return loopLawName(c.law); });
+    conditionRow("law", [](const RunConditions& c) { return runLawName(c); });
     conditionRow("period", [](const RunConditions& c) {
         return QStringLiteral("%1 ms").arg(plain(c.periodS * 1e3));
     });

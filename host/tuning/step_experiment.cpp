@@ -209,7 +209,7 @@ StepTestResult runTable(const StepTestSpec& spec, StepTestResult r) {
     RunConditions& c = r.record.conditions;
     MachineProfile profile = c.profile;
     profile.dcTable.massFactor *= spec.massFactor;
-    profile.dcTable.law = tableDcLaw(c.law);
+    // profile.dcTable.law is the run's law (runStepTest recorded it in its conditions).
     DcAxisParams& ax = c.axis == 'x' ? profile.dcTable.x : profile.dcTable.y;
     if (c.law == LoopLaw::Classic)
         ax.classic = {c.gains.b0, c.gains.b1};
@@ -359,8 +359,19 @@ StepTestResult runStepTest(const StepTestSpec& spec) {
         !(spec.settleS >= 0.0 && spec.settleS <= 60.0) ||
         !(spec.maxDurationS >= 0.0 && spec.maxDurationS <= 600.0))
         return refuse(std::move(r), QStringLiteral("pre-roll, settle and duration out of range"));
-    c.law = spec.law ? *spec.law
-                     : (table ? tableStepLaw(spec.profile.dcTable.law) : spec.profile.loop.law);
+    if (spec.tableLaw && !table)
+        return refuse(std::move(r), QStringLiteral("the rail's laws are classic and engineered: "
+                                                   "seed and seed-signed are the DC table's"));
+    if (table) {
+        // The law the table runs, recorded in the run's profile (tableLawOf reads it back).
+        const DcLaw dcLaw = spec.tableLaw ? *spec.tableLaw
+                            : spec.law    ? tableDcLaw(*spec.law)
+                                          : spec.profile.dcTable.law;
+        c.profile.dcTable.law = dcLaw;
+        c.law = tableStepLaw(dcLaw);
+    } else {
+        c.law = spec.law ? *spec.law : spec.profile.loop.law;
+    }
     c.gains = spec.gains ? *spec.gains : profileGains(spec.profile, spec.axis, c.law);
     if (c.law == LoopLaw::Classic && !spec.antiWindup)
         return refuse(std::move(r), QStringLiteral("the classic law has no anti-windup to turn "
@@ -423,6 +434,7 @@ StepTestSpec specFromConditions(const RunConditions& c) {
     s.amplitudeMm = c.amplitudeMm;
     s.startMm = c.startMm;
     s.law = c.law;
+    if (c.profile.kind == MachineKind::DcTable) s.tableLaw = tableLawOf(c);
     s.gains = c.gains;
     s.periodS = c.periodS;
     s.massFactor = c.massFactor;

@@ -21,10 +21,10 @@
 
 namespace trilho {
 
-/// The table's laws as a step test names them (a run record has one law field, the rail's two):
-/// "classic" is seed 004's law on the signed error (DcLaw::SeedSigned), the reading a single-axis
-/// step can run; the seed's law as written runs the X loop and then the Y loop over a whole
-/// program, which is a program's test, not an axis step's.
+/// The table's laws in a run record's one law field (the rail's two): LoopLaw::Classic is
+/// either reading of seed 004's law (its gains b0, b1), the record's profile says which
+/// (tableLawOf, run_record.h). A spec's law alone (no tableLaw) keeps its old meaning: classic
+/// is the signed reading.
 inline LoopLaw tableStepLaw(DcLaw law) {
     return law == DcLaw::Engineered ? LoopLaw::Engineered : LoopLaw::Classic;
 }
@@ -52,6 +52,10 @@ struct StepTestSpec {
     std::optional<double> startMm;     ///< default: rail centre; table: the middle of the axis
     std::optional<LoopLaw> law;        ///< default: the profile's
     std::optional<TuningGains> gains;  ///< default: the profile's for the law
+    /// DC table: which of its three laws (issue 33 item 5); it sets `law` (the seed's two
+    /// readings are Classic). Default: from `law` when given (classic: seed-signed), otherwise
+    /// the profile's dcTable.law. Refused on the rail.
+    std::optional<DcLaw> tableLaw;
     /// Loop period, s; default: the law's (the rail's classic law: kRailClassicPeriodS, its own;
     /// otherwise the profile's). The 1996 gains are per tick: try 0.01 vs 0.001.
     std::optional<double> periodS;

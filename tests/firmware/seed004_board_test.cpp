@@ -457,3 +457,41 @@ TEST(Seed004Device, RunsTheBoardAsTheRunnerStepsIt) {
     EXPECT_NE(device.summary().find("bytes read 4, overruns (DOR) 0"), std::string::npos)
         << device.summary();
 }
+
+// The golden comparison's probe (issue 32 item 5): the main program's loads of pulsos_x are found
+// in the flash, the chip stops at one only with interrupts enabled (not the encoder handler's own
+// load), and an empty list or a limit already passed runs one instruction, then gives up.
+TEST(Seed004Probe, StopsAtTheMainLoopsLoadOfTheCount) {
+    auto b = boot(TRILHO_SEED004_ELF);
+    ASSERT_TRUE(b);
+    const int at = b->chip().ramAddress("pulsos_x");
+    ASSERT_GE(at, 0);
+    const std::vector<std::uint32_t> loads = b->chip().loadsOf(static_cast<std::uint16_t>(at));
+    EXPECT_GE(loads.size(), 3u);  // the INT4 handler's and the two branches' X loops
+    EXPECT_TRUE(b->chip().loadsOf(0xFFFF).empty());
+    std::uint64_t c = b->chip().cycle();
+    EXPECT_EQ(b->chip().runUntilPc({}, c + 1000), -1);
+    EXPECT_GE(b->chip().cycle(), c + 1000);
+    c = b->chip().cycle();
+    EXPECT_EQ(b->chip().runUntilPc(loads, 0), -1);
+    EXPECT_GT(b->chip().cycle(), c);
+    EXPECT_LT(b->chip().cycle(), c + 8);
+    // A set point: the chip stops at a load with interrupts on, the X loop's first sample about
+    // to read (nothing written yet), and its write follows on OCR1A.
+    ASSERT_TRUE(b->runFor(0.1));  // past the program's set-up: it polls the line
+    const std::size_t written = b->ocrWrites().size();
+    sendPaced(*b, {0, 180, 0, 120});
+    const std::uint64_t limit = b->chip().cycle() + Seed004Board::kClockHz;
+    long pc = -1;
+    while (b->chip().cycle() < limit) {
+        pc = b->chip().runUntilPc(loads, limit);
+        if (pc >= 0 && b->chip().interruptsEnabled()) break;
+    }
+    ASSERT_GE(pc, 0);
+    EXPECT_TRUE(std::count(loads.begin(), loads.end(), static_cast<std::uint32_t>(pc)));
+    EXPECT_EQ(b->ocrWrites().size(), written);
+    while (b->ocrWrites().size() == written && b->chip().cycle() < limit)
+        ASSERT_TRUE(b->runUntilCycle(b->chip().cycle() + 100));
+    ASSERT_EQ(b->ocrWrites().size(), written + 1);
+    EXPECT_EQ(b->ocrWrites().back().channel, 0);
+}

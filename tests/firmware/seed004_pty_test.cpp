@@ -16,6 +16,7 @@
 #include <QProcess>
 #include <QRegularExpression>
 #include <QTest>
+#include <cstdio>
 #include <functional>
 #include <vector>
 #include "tests/support/device_process.h"
@@ -137,6 +138,48 @@ TEST(Seed004Pty, TheSeedsHostRunsTheExampleProgramUnconfirmed) {
     EXPECT_TRUE(board.contains(QStringLiteral("bytes read 24, overruns (DOR) 0, sent 0")))
         << board.toStdString();
     EXPECT_TRUE(board.contains(QStringLiteral("lab instrument"))) << board.toStdString();
+}
+
+// Issue 32 item 4: trilho-cli calibrate against the seed's own open-loop program over the pty,
+// in real time (about 30 s: the program freezes its PWM at the first encoder pulse, just above
+// the friction, and the axis crawls to 1300 pulses at about 47 a second). The host's figures
+// against the lab instrument (the plant's encoders, printed by trilho-device): the travel over
+// the pulses at the stop is the profile's mm per pulse, within the coast after the cut.
+TEST(Seed004Pty, CalibrateHearsTheSeedsOwnCalibrationProgram) {
+    const QString profile = QStringLiteral(TRILHO_MACHINES_DIR "/xy_dc_table.json");
+    Device d;
+    ASSERT_TRUE(d.start({QStringLiteral("table"), QStringLiteral("--firmware"),
+                         QStringLiteral("seed004-calibration"), QStringLiteral("--pty"),
+                         QStringLiteral("--machine"), profile},
+                        38400))
+        << d.out.toStdString();
+    QProcess cli;
+    cli.start(QStringLiteral(TRILHO_CLI),
+              {QStringLiteral("calibrate"), QStringLiteral("--machine"), profile,
+               QStringLiteral("--port"), d.path, QStringLiteral("--baud"), QStringLiteral("38400"),
+               QStringLiteral("--json"), QStringLiteral("--timeout"), QStringLiteral("120")});
+    ASSERT_TRUE(cli.waitForFinished(180000));
+    const QString out = QString::fromUtf8(cli.readAllStandardOutput());
+    ASSERT_EQ(cli.exitCode(), 0) << out.toStdString()
+                                 << QString::fromUtf8(cli.readAllStandardError()).toStdString();
+    const QJsonObject o = QJsonDocument::fromJson(out.toUtf8()).object();
+    const QString board = d.stop();
+    const QRegularExpression x(QStringLiteral("lab instrument[^:]*: x (\\d+\\.\\d+) mm"));
+    const auto m = x.match(board);
+    ASSERT_TRUE(m.hasMatch()) << board.toStdString();
+    const double travelMm = m.captured(1).toDouble();
+    const double pulses = o[QStringLiteral("pulsesAtStop")].toDouble();
+    std::printf(
+        "calibrate on seed004-calibration: %d counts, last %d at %.2f s, %.2f pulses/s, "
+        "stop at %.0f; lab instrument %.2f mm: %.5f mm a pulse\n",
+        o[QStringLiteral("counts")].toInt(), o[QStringLiteral("lastCount")].toInt(),
+        o[QStringLiteral("lastS")].toDouble(), o[QStringLiteral("pulsesPerS")].toDouble(), pulses,
+        travelMm, travelMm / pulses);
+    EXPECT_GT(o[QStringLiteral("counts")].toInt(), 300);
+    EXPECT_LT(o[QStringLiteral("lastCount")].toInt(), 1300);  // the seed sends while < 1300
+    EXPECT_GE(pulses, 1300.0);
+    const double mmPerPulse = 2.12 * 0.314 / (2.0 * 3.141592653589793);  // the profile's x
+    EXPECT_NEAR(travelMm / pulses, mmPerPulse, 0.02 * mmPerPulse);
 }
 
 int main(int argc, char** argv) {

@@ -1,7 +1,9 @@
 // trilho-cli run: exit statuses, history, JSON and trace, in virtual time.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -447,3 +449,51 @@ TEST(CliProfile, DefaultIsTheShippedRailAndBadFilesAreNamed) {
 }
 
 }  // namespace
+
+// Issue 33 item 10, lesson 15 (docs/teaching.md): the 1996 law on the seed's own metre-long
+// rapids, against the engineered law. The figures are the lesson's; the test fails when either
+// law's behaviour changes.
+TEST_F(CliRun, Lesson15TheNineteenNinetySixLawOvershootsAndCoastsOnTheSeedsRapids) {
+    const auto peakAndEnd = [&](const char* law, const QByteArray& text) {
+        const QString trace = dir.filePath(QStringLiteral("%1.csv").arg(QLatin1String(law)));
+        const Result r =
+            run({QStringLiteral("--virtual-time"), QStringLiteral("--dialect"),
+                 QStringLiteral("classic"), QStringLiteral("--law"), QLatin1String(law),
+                 QStringLiteral("--trace"), trace, write(QStringLiteral("p.classic.G"), text)});
+        QFile f(trace);
+        EXPECT_TRUE(f.open(QIODevice::ReadOnly));
+        double peak = -1e9, low = 1e9, end = 0.0;
+        const QStringList lines =
+            QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        for (int i = 1; i < lines.size(); ++i) {
+            const double x = lines[i].split(QLatin1Char(','))[3].toDouble();
+            peak = std::max(peak, x), low = std::min(low, x), end = x;
+        }
+        return std::tuple{r, peak, low, end};
+    };
+    const QByteArray rapid = "n0010 g00 x1000\nn0020 m02\n";
+    const QByteArray back = "n0010 g00 x-0900\nn0020 g00 x0900\nn0030 m02\n";
+    {
+        const auto [r, peak, low, end] = peakAndEnd("classic", rapid);
+        EXPECT_EQ(r.exit, 0) << r.out.toStdString();
+        EXPECT_NEAR(peak, 1121.7, 2.0);  // 121.7 mm over: the integral without anti-windup
+        EXPECT_NEAR(end, 1000.4, 0.1);
+    }
+    {
+        const auto [r, peak, low, end] = peakAndEnd("classic", back);
+        EXPECT_NE(r.exit, 0);  // warning 13: no success off the target
+        EXPECT_TRUE(r.out.contains(QStringLiteral("Warning 13"))) << r.out.toStdString();
+        EXPECT_NEAR(low, -1005.1, 2.0);
+        EXPECT_NEAR(end, 1080.8, 3.0);  // let go at speed within 0.5 mm, coasted 180 mm
+    }
+    for (const QByteArray& text : {rapid, back}) {
+        const auto [r, peak, low, end] = peakAndEnd("engineered", text);
+        EXPECT_EQ(r.exit, 0) << r.out.toStdString();
+        const double target = text == rapid ? 1000.0 : 900.0;
+        EXPECT_LT(peak, target + 0.1);  // no overshoot: the seed's own requirement
+        EXPECT_NEAR(end, target, 0.1);
+        if (text == back) {
+            EXPECT_GT(low, -900.1);
+        }
+    }
+}

@@ -97,6 +97,134 @@ TEST(CliTuneDcTable, RefusalsAreUsageErrors) {
     }
 }
 
+// Issue 33 item 5: `tune step --machine xy_dc_table --law` takes the table's three laws (it took
+// only classic and engineered), each with its gains and at the --period given, and names the run
+// by its law; the seed's law as written ends its loop short of the target, its signed reading
+// never comes into position, the engineered law settles.
+TEST(CliTuneDcTable, StepRunsEachOfTheTablesThreeLaws) {
+    auto step = [](const char* law, const char* period) {
+        return runCli(
+            table("step", "x",
+                  {QStringLiteral("--amplitude"), QStringLiteral("10"), QStringLiteral("--law"),
+                   QString::fromLatin1(law), QStringLiteral("--period"),
+                   QString::fromLatin1(period), QStringLiteral("--json")}));
+    };
+    // Seed 004 as written: |e| with the move's direction bit, the loop ends with its
+    // trajectory, no in-position check: it stops at 8.90 mm of 10 (exit 0: the run ran to its
+    // end), nothing rises to 90 % or settles.
+    const CliResult seed = step("seed", "0.005");
+    ASSERT_EQ(seed.exit, 0) << seed.err.toStdString();
+    const QJsonObject so = jsonOf(seed);
+    EXPECT_EQ(so[QStringLiteral("law")].toString(), QStringLiteral("seed"));
+    EXPECT_DOUBLE_EQ(so[QStringLiteral("period_s")].toDouble(), 0.005);
+    const QJsonObject sg = so[QStringLiteral("gains")].toObject();
+    EXPECT_DOUBLE_EQ(sg[QStringLiteral("b0")].toDouble(), 0.198);
+    EXPECT_DOUBLE_EQ(sg[QStringLiteral("b1")].toDouble(), -0.179982);
+    EXPECT_FALSE(sg.contains(QStringLiteral("kp")));
+    EXPECT_NEAR(so[QStringLiteral("peak_mm")].toDouble(), 8.8995, 1e-4);
+    EXPECT_TRUE(so[QStringLiteral("rise_time_s")].isNull());
+    EXPECT_TRUE(so[QStringLiteral("settling_time_s")].isNull());
+    // The same gains on the signed error: closer (9.54 mm) but friction holds it outside the
+    // window until the test's time ends (exit 3).
+    const CliResult signedRun = step("seed-signed", "0.005");
+    EXPECT_EQ(signedRun.exit, 3);
+    const QJsonObject go = jsonOf(signedRun);
+    EXPECT_EQ(go[QStringLiteral("law")].toString(), QStringLiteral("seed-signed"));
+    EXPECT_NEAR(go[QStringLiteral("peak_mm")].toDouble(), 9.5352, 1e-4);
+    EXPECT_TRUE(go[QStringLiteral("abort_reason")].toString().contains(
+        QStringLiteral("before the axis was in position")));
+    // The engineered law: 0.65 % overshoot, settled in 0.33 s, within 0.39 counts.
+    const CliResult eng = step("engineered", "0.005");
+    ASSERT_EQ(eng.exit, 0) << eng.err.toStdString();
+    const QJsonObject eo = jsonOf(eng);
+    EXPECT_EQ(eo[QStringLiteral("law")].toString(), QStringLiteral("engineered"));
+    EXPECT_NEAR(eo[QStringLiteral("overshoot_pct")].toDouble(), 0.649, 0.001);
+    EXPECT_NEAR(eo[QStringLiteral("settling_time_s")].toDouble(), 0.325, 1e-9);
+    EXPECT_NEAR(eo[QStringLiteral("steady_state_error_counts")].toDouble(), 0.387, 0.001);
+    // The period is the law's: the seed's b0 and b1 are per tick, so at 50 ms the same numbers
+    // overshoot 74 % and leave the envelope; the engineered law at 1 ms has no overshoot.
+    const CliResult slow = step("seed", "0.05");
+    EXPECT_EQ(slow.exit, 3);
+    const QJsonObject lo = jsonOf(slow);
+    EXPECT_DOUBLE_EQ(lo[QStringLiteral("period_s")].toDouble(), 0.05);
+    EXPECT_NEAR(lo[QStringLiteral("overshoot_pct")].toDouble(), 74.24, 0.01);
+    EXPECT_TRUE(lo[QStringLiteral("abort_reason")].toString().contains(QStringLiteral("envelope")));
+    const QJsonObject fast = jsonOf(step("engineered", "0.001"));
+    EXPECT_DOUBLE_EQ(fast[QStringLiteral("period_s")].toDouble(), 0.001);
+    EXPECT_DOUBLE_EQ(fast[QStringLiteral("overshoot_pct")].toDouble(), 0.0);
+}
+
+// A seed-law run saved with --trace reads back with `tune metrics` under its law, with the
+// numbers the step printed.
+TEST(CliTuneDcTable, ASeedLawTraceReadsBackUnderItsLaw) {
+    QTemporaryDir dir;
+    const QString trace = dir.filePath(QStringLiteral("seed.csv"));
+    const CliResult s =
+        runCli(table("step", "y",
+                     {QStringLiteral("--amplitude"), QStringLiteral("10"), QStringLiteral("--law"),
+                      QStringLiteral("seed"), QStringLiteral("--period"), QStringLiteral("0.002"),
+                      QStringLiteral("--trace"), trace, QStringLiteral("--json")}));
+    ASSERT_EQ(s.exit, 0) << s.err.toStdString();
+    const CliResult m = runCli(
+        {QStringLiteral("tune"), QStringLiteral("metrics"), trace, QStringLiteral("--json")});
+    ASSERT_EQ(m.exit, 0) << m.err.toStdString();
+    const QJsonObject so = jsonOf(s), mo = jsonOf(m);
+    EXPECT_EQ(mo[QStringLiteral("law")].toString(), QStringLiteral("seed"));
+    EXPECT_DOUBLE_EQ(mo[QStringLiteral("period_s")].toDouble(), 0.002);
+    EXPECT_DOUBLE_EQ(mo[QStringLiteral("gains")].toObject()[QStringLiteral("b1")].toDouble(),
+                     -0.035994);  // the Y axis' seed gains
+    for (const char* key : {"peak_mm", "iae", "following_error_max_mm"})
+        EXPECT_DOUBLE_EQ(mo[QString::fromLatin1(key)].toDouble(),
+                         so[QString::fromLatin1(key)].toDouble())
+            << key;
+}
+
+// The table's laws by name only: classic is the rail's (refused, the three named), the seed's
+// gains only with its laws, no poles for the seed's |e| law; and the rail refuses the table's.
+TEST(CliTuneDcTable, ALawTheMachineHasNotIsRefusedByName) {
+    struct Case {
+        QStringList args;
+        const char* says;
+    };
+    const Case cases[] = {
+        {table("step", "x",
+               {QStringLiteral("--amplitude"), QStringLiteral("10"), QStringLiteral("--law"),
+                QStringLiteral("classic")}),
+         "--law classic is the rail's: the DC table's laws are seed (seed 004 as written), "
+         "seed-signed and engineered"},
+        {table("step", "x",
+               {QStringLiteral("--amplitude"), QStringLiteral("10"), QStringLiteral("--law"),
+                QStringLiteral("pid")}),
+         "--law on the DC table must be seed, seed-signed or engineered (got 'pid')"},
+        {table("step", "x",
+               {QStringLiteral("--amplitude"), QStringLiteral("10"), QStringLiteral("--law"),
+                QStringLiteral("seed"), QStringLiteral("--kp"), QStringLiteral("3")}),
+         "--kp is for the rail and the DC table's engineered law"},
+        {table("step", "x",
+               {QStringLiteral("--amplitude"), QStringLiteral("10"), QStringLiteral("--b0"),
+                QStringLiteral("0.2")}),
+         "--b0 is for the DC table's seed laws (seed, seed-signed)"},
+        {table("step", "x",
+               {QStringLiteral("--amplitude"), QStringLiteral("10"), QStringLiteral("--law"),
+                QStringLiteral("seed"), QStringLiteral("--period"), QStringLiteral("0.1")}),
+         "--period on the DC table must be a number from 0.001 to 0.05 s"},
+        {table("poles", "x", {QStringLiteral("--law"), QStringLiteral("seed")}),
+         "the DC table's law 'seed' (seed 004 as written) has no poles"},
+        {table("poles", "x", {QStringLiteral("--law"), QStringLiteral("classic")}),
+         "--law classic is the rail's"},
+        {{QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--amplitude"),
+          QStringLiteral("10"), QStringLiteral("--law"), QStringLiteral("seed")},
+         "--law seed is the DC table's: the rail's laws are classic and engineered"},
+    };
+    for (const Case& c : cases) {
+        const CliResult r = runCli(c.args);
+        EXPECT_EQ(r.exit, 2) << c.says << r.err.toStdString();
+        EXPECT_TRUE(r.err.contains(QLatin1String(c.says))) << r.err.toStdString();
+        EXPECT_EQ(r.err.count(QLatin1Char('\n')), 1) << r.err.toStdString();
+        EXPECT_TRUE(r.out.isEmpty()) << r.out.toStdString();
+    }
+}
+
 TEST(CliTuneMargin, ReportsTheLimitsAndTheMargins) {
     const CliResult r =
         runCli({QStringLiteral("tune"), QStringLiteral("margin"), QStringLiteral("--machine"),

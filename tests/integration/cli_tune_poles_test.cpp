@@ -198,7 +198,7 @@ TEST(CliTunePoles, TheDcTableAxisAgreesWithItsStepTest) {
         << s.out.toStdString();
     // Seed 004's law on the signed error: b0 and b1 in the JSON, its three poles.
     const CliResult seed =
-        run("poles", table({QStringLiteral("--law"), QStringLiteral("classic")}));
+        run("poles", table({QStringLiteral("--law"), QStringLiteral("seed-signed")}));
     const QJsonObject so = jsonOf(seed);
     EXPECT_TRUE(so.contains(QStringLiteral("b0")));
     EXPECT_FALSE(so.contains(QStringLiteral("kp")));

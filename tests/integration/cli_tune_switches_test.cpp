@@ -1,5 +1,5 @@
 // Issue 33 item 9 at the CLI: `tune step --anti-windup on|off --encoder-noise N
-// --dac-quantisation on|off` (docs/teaching.md lessons 14 and 15): the figures the lessons
+// --dac-quantisation on|off` (docs/teaching.md lessons 17 and 18): the figures the lessons
 // print, the sidecar that records them, and every bad value refused with its option named.
 #include <gtest/gtest.h>
 
@@ -32,7 +32,7 @@ class CliTuneSwitches : public ::testing::Test {
     }
 };
 
-TEST_F(CliTuneSwitches, LessonFourteensOvershootWithAndWithoutAntiWindup) {
+TEST_F(CliTuneSwitches, TheAntiWindupLessonsOvershootWithAndWithout) {
     const QString profile = writeIn(dir, QStringLiteral("rail-ferror-400.json"),
                                     R"({"kind": "rail", "loop": {"followingErrorLimitMm": 400,
                     "minFollowingErrorMm": 400}})");

@@ -156,6 +156,32 @@ TEST(SimDcAxis, SteadySpeedAndEncoderQuantisation) {
     EXPECT_EQ(axis.state().positionMm, 0.0);
 }
 
+// Issue 33 item 7: a load torque per axis, in PWM percent of the stall torque.
+TEST(SimDcAxis, ALoadTorqueTurnsTheAxisAgainstItsBackEmf) {
+    DcAxisParams p;  // 400 mm/s at 100 %: 4 mm/s a percent; 3 % friction
+    SimDcAxis axis(p);
+    axis.setLoadPercent(2.5);  // under friction: it stays
+    axis.step(0.5);
+    EXPECT_EQ(axis.state().positionMm, 0.0);
+    axis.setLoadPercent(10.0);  // undriven: (10 - 3) x 4 = 28 mm/s
+    axis.step(0.5);
+    EXPECT_NEAR(axis.state().velocityMmS, 28.0, 1e-5);  // 17 time constants
+    // Driven against it: 30 % - 10 % = 20 % of push, (20 - 3) x 4 = 68 mm/s backwards (the
+    // current, |30 + 7| % at first, stays under the 45 % trip).
+    axis.setDrive(-30.0);
+    axis.step(1.0);
+    EXPECT_FALSE(axis.overCurrent());
+    EXPECT_NEAR(axis.state().velocityMmS, -68.0, 1e-6);
+    // Held: a drive that balances the load within friction holds the axis still.
+    axis.placeAt(5.0);
+    axis.setDrive(-10.0);
+    axis.step(0.5);
+    EXPECT_EQ(axis.state().positionMm, 5.0);
+    // Garbage is no load; no load is the axis as it was.
+    axis.setLoadPercent(std::nan(""));
+    EXPECT_EQ(axis.loadPercent(), 0.0);
+}
+
 TEST(SimDcTable, OverCurrentOfOneAxisStopsBothChannels) {
     SimDcTable table;
     table.writePwm(0, 100, false);

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTemporaryDir>
 #include <cmath>
 
@@ -244,6 +246,53 @@ TEST(StepTest, AGainChangePartWayIsBumpless) {
     table.axis = 'x';
     table.gainChange = GainChange{0.1, {}};
     EXPECT_EQ(runStepTest(table).abort, StepAbort::Refused);
+}
+
+// Issue 33 item 5: a DC table step runs the law it is given, seed 004 as written among them;
+// the run's record says which (its profile's dcTable.law, the sidecar's "law"), reads back, and
+// reproduces bit for bit; an older sidecar's "classic" is the signed reading it then ran.
+TEST(StepTest, TheDcTablesLawIsRecordedAndReproduced) {
+    StepTestSpec spec;
+    spec.profile = MachineProfile::xyDcTable();
+    spec.axis = 'x';
+    spec.tableLaw = DcLaw::Seed;
+    spec.periodS = 0.005;
+    const StepTestResult seed = runStepTest(spec);
+    ASSERT_TRUE(seed.ok()) << seed.abortReason.toStdString();
+    const RunConditions& c = seed.record.conditions;
+    EXPECT_EQ(c.law, LoopLaw::Classic);
+    EXPECT_EQ(tableLawOf(c), DcLaw::Seed);
+    EXPECT_EQ(runLawName(c), QStringLiteral("seed"));
+    EXPECT_DOUBLE_EQ(c.gains.b0, 0.198);
+    EXPECT_NEAR(seed.metrics.peakMm, 8.8995, 1e-4);  // the loop ends short of 10 mm
+    QString error;
+    const std::optional<RunConditions> back =
+        runConditionsFromJson(runConditionsToJson(c, &seed.metrics), QStringLiteral("t"), &error);
+    ASSERT_TRUE(back) << error.toStdString();
+    EXPECT_EQ(tableLawOf(*back), DcLaw::Seed);
+    const StepTestResult again = runStepTest(specFromConditions(*back));
+    EXPECT_EQ(again.record.channels.positionMm, seed.record.channels.positionMm);
+    // The same gains on the signed error: another run (closer, never in position).
+    spec.tableLaw = DcLaw::SeedSigned;
+    const StepTestResult signedRun = runStepTest(spec);
+    EXPECT_EQ(tableLawOf(signedRun.record.conditions), DcLaw::SeedSigned);
+    EXPECT_NEAR(signedRun.metrics.peakMm, 9.5352, 1e-4);
+    // A sidecar from before: "classic" on the table reads as the signed reading.
+    QJsonObject old =
+        QJsonDocument::fromJson(runConditionsToJson(signedRun.record.conditions, nullptr)).object();
+    EXPECT_EQ(old.value(QStringLiteral("law")).toString(), QStringLiteral("seed-signed"));
+    old[QStringLiteral("law")] = QStringLiteral("classic");
+    const std::optional<RunConditions> legacy =
+        runConditionsFromJson(QJsonDocument(old).toJson(), QStringLiteral("old"), &error);
+    ASSERT_TRUE(legacy) << error.toStdString();
+    EXPECT_EQ(tableLawOf(*legacy), DcLaw::SeedSigned);
+    // A spec's law alone keeps its meaning (classic: signed); the rail has no seed law.
+    spec.tableLaw.reset();
+    spec.law = LoopLaw::Classic;
+    EXPECT_EQ(tableLawOf(runStepTest(spec).record.conditions), DcLaw::SeedSigned);
+    StepTestSpec rail;
+    rail.tableLaw = DcLaw::Seed;
+    EXPECT_EQ(runStepTest(rail).abort, StepAbort::Refused);
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // The step experiment's teaching switches (issue 33 item 9): the engineered law's anti-windup,
 // the encoder's read noise and the DAC's quantization. Each changes what the run measures, by
-// figures a wrong switch could not give (docs/teaching.md, lessons 14 and 15).
+// figures a wrong switch could not give (docs/teaching.md, lessons 17 and 18).
 #include <gtest/gtest.h>
 
 #include <QTemporaryDir>
@@ -13,7 +13,7 @@
 namespace trilho {
 namespace {
 
-/// Lesson 14's setup: a 30 mm step at six times the payload, Ki 2, on the rail with its
+/// Lesson 17's setup: a 30 mm step at six times the payload, Ki 2, on the rail with its
 /// following-error limit widened to 400 mm (the shipped 25 mm stops the x6 move before the
 /// drive has been pinned long enough to wind anything).
 StepTestSpec windupSpec(bool antiWindup) {

@@ -114,7 +114,7 @@ class WorkbenchSlidersTest : public QObject {
             after.settlingTimeS != before.settlingTimeS,
             qPrintable(QStringLiteral("%1 %2").arg(after.settlingTimeS).arg(before.settlingTimeS)));
         QVERIFY(p->summary()->text().contains(QStringLiteral("Grey")));
-        // Lesson 16's figures, each as the page prints it.
+        // Lesson 19's figures, each as the page prints it.
         auto* kpBox = w.findChild<QDoubleSpinBox*>(QStringLiteral("kp"));
         const struct {
             double kp, overshootPct, settlingS;

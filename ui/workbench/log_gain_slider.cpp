@@ -63,9 +63,14 @@ void LogGainSlider::wheelEvent(QWheelEvent* e) {
     QSlider::wheelEvent(e);
 }
 
+void LogGainSlider::setAllowed(bool allowed) {
+    allowed_ = allowed;
+    setEnabled(allowed_ && box_->isEnabled());
+}
+
 bool LogGainSlider::eventFilter(QObject* watched, QEvent* e) {
     if (watched == box_) {
-        if (e->type() == QEvent::EnabledChange) setEnabled(box_->isEnabled());
+        if (e->type() == QEvent::EnabledChange) setEnabled(allowed_ && box_->isEnabled());
         if (e->type() == QEvent::HideToParent) hide();
         if (e->type() == QEvent::ShowToParent) show();
     }

@@ -25,6 +25,9 @@ class LogGainSlider : public QSlider {
     void centreOn(double centre);
     double low() const { return low_; }
     double high() const { return high_; }
+    /// Whether the box's value is a gain the slider may set (false: disabled whatever the box,
+    /// e.g. the seed's b1, which is negative).
+    void setAllowed(bool allowed);
     /// The gain at a slider position (0 to kSteps): low x (high/low)^(position/kSteps).
     double gainAt(int position) const;
     /// The position of a gain (clamped to the range).
@@ -44,7 +47,8 @@ class LogGainSlider : public QSlider {
     QDoubleSpinBox* box_;
     double low_ = 1e-3, high_ = 10.0;
     bool writing_ = false;  ///< the box changes because the slider moved
-    bool centred_ = false;  ///< centred on a gain (not yet while the box was 0)
+    bool centred_ = false;
+    bool allowed_ = true;  ///< centred on a gain (not yet while the box was 0)
 };
 
 }  // namespace ui

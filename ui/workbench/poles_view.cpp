@@ -81,11 +81,17 @@ void PolesView::clearModel() {
 
 void PolesView::setLoop(const DiscreteLoopSpec& spec) {
     spec_ = spec;
+    refused_.clear();
+    recompute();
+}
+
+void PolesView::setLoopRefused(const QString& why) {
+    refused_ = why;
     recompute();
 }
 
 void PolesView::recompute() {
-    if (!model_ || !(spec_.periodS > 0.0)) {
+    if (!model_ || !(spec_.periodS > 0.0) || !refused_.isEmpty()) {
         poles_ = {};
         locus_ = {};
     } else {
@@ -98,6 +104,7 @@ void PolesView::recompute() {
 }
 
 QString PolesView::summaryText() const {
+    if (!refused_.isEmpty()) return refused_.toHtmlEscaped();
     if (!model_)
         return tr(
             "Identify the plant to see the closed loop's poles and zeros for the gains in "

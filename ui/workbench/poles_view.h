@@ -27,6 +27,9 @@ class PolesView : public QWidget {
     /// The law, gains and period of the boxes, the engineered law's velocity filter, and on a
     /// DC table axis its screw and seed gains (spec.model is ignored: the view's own).
     void setLoop(const DiscreteLoopSpec& spec);
+    /// A law without poles (seed 004's as written, |e| with a fixed direction bit): none are
+    /// shown, the page says why. The next setLoop shows poles again.
+    void setLoopRefused(const QString& why);
     bool hasModel() const { return model_.has_value(); }
     /// The model the poles are of, when one was accepted (the lab sheet prints it).
     const std::optional<RailModel>& model() const { return model_; }
@@ -49,6 +52,7 @@ class PolesView : public QWidget {
     DiscreteLoopSpec spec_;
     ClosedLoopPoles poles_;
     RootLocus locus_;
+    QString refused_;  ///< why the law has no poles (empty: it has)
 };
 
 }  // namespace ui

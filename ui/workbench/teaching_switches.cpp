@@ -51,13 +51,13 @@ void TeachingSwitches::retranslate() {
     setTitle(tr("Teaching switches"));
     antiWindup_->setText(tr("Anti-windup"));
     antiWindup_->setToolTip(
-        tr("Off: the engineered law's integral winds while the drive is pinned (lesson 14)"));
+        tr("Off: the engineered law's integral winds while the drive is pinned (lesson 17)"));
     noiseLabel_->setText(tr("Encoder noise (counts)"));
     noise_->setToolTip(
-        tr("The counter reads up to this many counts off, each tick, from the seed (lesson 15)"));
+        tr("The counter reads up to this many counts off, each tick, from the seed (lesson 18)"));
     quantisation_->setText(tr("DAC quantization (8 bits)"));
     quantisation_->setToolTip(
-        tr("Off: the amplifier gets the loop's command unrounded (lesson 15)"));
+        tr("Off: the amplifier gets the loop's command unrounded (lesson 18)"));
 }
 
 }  // namespace ui

@@ -41,6 +41,7 @@
 #include "host/tuning/relay_comparison.h"
 #include "ui/background_pool.h"
 #include "ui/wheel_needs_focus.h"
+#include "ui/workbench/disturbance_view.h"
 #include "ui/workbench/log_gain_slider.h"
 #include "ui/workbench/margin_view.h"
 #include "ui/workbench/model_view.h"
@@ -60,6 +61,12 @@ namespace {
 // The 1996 law's own period (the VB's `Amostragem Interval=10`, `periodo=10`): the workbench
 // runs it there unless the teacher sets another period on purpose.
 constexpr double kClassicPeriodMs = kRailClassicPeriodS * 1e3;
+
+/// The DC table's law box holds a DcLaw (the rail's a LoopLaw): seed 004 as written, its signed
+/// reading, or the engineered law (issue 33 item 5).
+DcLaw tableLawIn(const QComboBox* box) {
+    return static_cast<DcLaw>(box->currentData().toInt());
+}
 
 QDoubleSpinBox* spinBox(QWidget* parent, const char* name, double lo, double hi, int decimals,
                         double step) {
@@ -154,10 +161,20 @@ void WorkbenchWindow::build() {
     lawLabel_ = new QLabel(testBox_);
     law_ = new QComboBox(testBox_);
     law_->setObjectName(QStringLiteral("law"));
-    law_->addItem(QString(), QVariant::fromValue(int(LoopLaw::Engineered)));
-    law_->addItem(QString(), QVariant::fromValue(int(LoopLaw::Classic)));
     periodLabel_ = new QLabel(testBox_);
     period_ = spinBox(testBox_, "period", 0.5, 10.0, 1, 0.5);
+    if (rail_) {
+        law_->addItem(QString(), QVariant::fromValue(int(LoopLaw::Engineered)));
+        law_->addItem(QString(), QVariant::fromValue(int(LoopLaw::Classic)));
+    } else {
+        // The DC table's three laws, the profile's chosen; its loop periods as `tune step
+        // --period` takes them on the table (1 to 50 ms).
+        for (DcLaw l : {DcLaw::Seed, DcLaw::SeedSigned, DcLaw::Engineered})
+            law_->addItem(QString(), QVariant::fromValue(int(l)));
+        law_->setCurrentIndex(law_->findData(int(profile_.dcTable.law)));
+        period_->setRange(kMinTableSamplePeriodS * 1e3, kMaxTableSamplePeriodS * 1e3);
+        period_->setSingleStep(1.0);
+    }
     kpLabel_ = new QLabel(testBox_);
     kiLabel_ = new QLabel(testBox_);
     kdLabel_ = new QLabel(testBox_);
@@ -213,7 +230,7 @@ void WorkbenchWindow::build() {
     cf->addRow(newKdLabel_, newKd_);
     f->addRow(changeBox_);
     changeBox_->setVisible(rail_);
-    // Issue 33 item 9: anti-windup, encoder noise, DAC quantization (lessons 14 and 15).
+    // Issue 33 item 9: anti-windup, encoder noise, DAC quantization (lessons 17 and 18).
     switches_ = new TeachingSwitches(testBox_);
     f->addRow(switches_);
     switches_->setVisible(!plotter());
@@ -237,12 +254,7 @@ void WorkbenchWindow::build() {
         gainSliders_ = {LogGainSlider::underBox(f, kp_), LogGainSlider::underBox(f, ki_),
                         LogGainSlider::underBox(f, kd_)};
     }
-    if (!rail_) {
-        // The table's classic law has other gains (b0, b1): the boxes are the engineered law's.
-        law_->setEnabled(false);
-        period_->setEnabled(false);
-        compare_->hide();
-    }
+    if (!rail_) compare_->hide();  // the 1996 law against engineered is the rail's lesson
 
     tuneBox_ = new QGroupBox(form);
     auto* t = new QVBoxLayout(tuneBox_);
@@ -328,6 +340,22 @@ void WorkbenchWindow::build() {
         tabs_->addTab(predictionView_, QString());
     else
         predictionView_->hide();
+    // A step of load on the rail's platform (issue 33 item 7), with the boxes' law and gains.
+    if (rail_) {
+        disturbanceView_ = new DisturbanceView(this);
+        tabs_->addTab(disturbanceView_, QString());
+        connect(disturbanceView_, &DisturbanceView::runRequested, this, [this] {
+            const StepTestSpec s = currentSpec();
+            DisturbanceTestSpec d;
+            d.profile = s.profile;
+            d.law = s.law;
+            d.gains = s.gains;
+            d.periodS = s.periodS;
+            d.massFactor = s.massFactor;
+            d.seed = s.seed;
+            disturbanceView_->run(d);
+        });
+    }
     auto* split = new QSplitter(Qt::Horizontal);
     split->addWidget(scroll);
     split->addWidget(tabs_);
@@ -418,15 +446,25 @@ void WorkbenchWindow::retranslate() {
     speedLabel_->setText(tr("Speed (% of rapid)"));
     speed_->setToolTip(tr("100 %: a step at the rapid speed; below: a ramp"));
     lawLabel_->setText(tr("Control law"));
-    law_->setItemText(0, tr("Engineered"));
-    law_->setItemText(1, tr("Classic (1996)"));
+    if (rail_) {
+        law_->setItemText(0, tr("Engineered"));
+        law_->setItemText(1, tr("Classic (1996)"));
+    } else {
+        law_->setItemText(0, tr("Seed 004 (as written)"));
+        law_->setItemText(1, tr("Seed 004 signed"));
+        law_->setItemText(2, tr("Engineered"));
+        law_->setToolTip(
+            tr("Seed 004 as written: u = 100 (b0 |e| + b1 |e_prev|), the direction bit fixed "
+               "for the move (past the target it drives on); signed: the same gains on the "
+               "signed error (it drives back); engineered: feed-forward and PI"));
+    }
     periodLabel_->setText(tr("Period (ms)"));
-    period_->setToolTip(
-        tr("The 1996 law ran at 10 ms: its gains are per tick, so at 1 ms they "
-           "act ten times harder (a lesson, not a setting)"));
-    kpLabel_->setText(tr("Kp"));
-    kiLabel_->setText(tr("Ki"));
-    kdLabel_->setText(rail_ ? tr("Kd") : tr("Kff"));
+    period_->setToolTip(rail_ ? tr("The 1996 law ran at 10 ms: its gains are per tick, so at 1 ms "
+                                   "they act ten times harder (a lesson, not a setting)")
+                              : tr("Seed 004 ran at 5 ms: its b0 and b1 are per tick, so at "
+                                   "another period the same numbers are another law (a lesson, "
+                                   "not a setting)"));
+    labelGains();
     massLabel_->setText(tr("Mass factor"));
     mass_->setToolTip(tr("The plant's moving mass times this; the loop is not told"));
     seedLabel_->setText(tr("Seed"));
@@ -470,6 +508,7 @@ void WorkbenchWindow::retranslate() {
     if (tunable()) tabs_->setTabText(2, tr("Model"));
     if (tunable()) tabs_->setTabText(3, tr("Poles"));
     if (tunable()) tabs_->setTabText(tabs_->indexOf(predictionView_), tr("Prediction"));
+    if (disturbanceView_) tabs_->setTabText(tabs_->indexOf(disturbanceView_), tr("Disturbance"));
 }
 
 void WorkbenchWindow::changeEvent(QEvent* e) {
@@ -489,30 +528,67 @@ void WorkbenchWindow::fitForm() {
                                  formScroll_->verticalScrollBar()->sizeHint().width() + 8);
 }
 
+void WorkbenchWindow::labelGains() {
+    // On the DC table's seed laws the first two boxes are the seed's own b0 and b1 (per rad of
+    // the motor, per tick), as the profile, `tune step --b0 --b1` and docs/seeds.md write them;
+    // b1 is negative. Its Kp equivalent, 100 (b0 + b1) %/rad, is in the tooltip.
+    const bool seed = !rail_ && tableLawIn(law_) != DcLaw::Engineered;
+    kpLabel_->setText(seed ? tr("b0 (per rad)") : tr("Kp"));
+    kiLabel_->setText(seed ? tr("b1 (per rad)") : tr("Ki"));
+    kdLabel_->setText(rail_ ? tr("Kd") : tr("Kff"));
+    const QString seedTip =
+        tr("Seed 004: u = 100 (b0 e + b1 e_prev) % PWM, e in rad of the motor, per tick: "
+           "100 (b0 + b1) is its proportional gain, -100 b1 a difference of e per tick");
+    kp_->setToolTip(seed ? seedTip : QString());
+    ki_->setToolTip(seed ? seedTip : QString());
+    if (!rail_ && !plotter()) {
+        kp_->setRange(seed ? -1000.0 : 0.0, 1000.0);
+        ki_->setRange(seed ? -1000.0 : 0.0, 1000.0);
+        if (auto* f = qobject_cast<QFormLayout*>(testBox_->layout()))
+            f->setRowVisible(kd_, !seed);  // the seed's laws have no feed-forward
+    }
+}
+
 void WorkbenchWindow::lawChanged() {
     const auto law = static_cast<LoopLaw>(law_->currentData().toInt());
     const char axis = rail_ ? char(0) : static_cast<char>(axis_->currentData().toInt());
-    const TuningGains g =
-        profileGains(profile_, axis, rail_ ? law : tableStepLaw(profile_.dcTable.law));
+    if (!rail_) {
+        // The DC table: the chosen law's gains from the profile (b0, b1 for the seed's two),
+        // at the table's period.
+        const DcLaw dcLaw = tableLawIn(law_);
+        const TuningGains g = profileGains(profile_, axis, tableStepLaw(dcLaw));
+        labelGains();  // the boxes' range first: b1 is negative
+        const bool seed = dcLaw != DcLaw::Engineered;
+        kp_->setValue(seed ? g.b0 : g.kp);
+        ki_->setValue(seed ? g.b1 : g.ki);
+        kd_->setValue(seed ? 0.0 : g.kff);
+        changeBox_->setEnabled(false);
+        period_->setValue(profile_.dcTable.samplePeriodS * 1e3);
+        // Issue 33 item 9: the anti-windup is the engineered law's; the log sliders are for
+        // positive gains, not the seed's b0 and b1 (b1 is negative).
+        switches_->setLaw(false, !seed);
+        for (LogGainSlider* sl : gainSliders_)
+            sl->setAllowed(!seed);
+        return;
+    }
+    const TuningGains g = profileGains(profile_, axis, law);
     kp_->setValue(g.kp);
     ki_->setValue(g.ki);
-    kd_->setValue(rail_ ? g.kd : g.kff);
+    kd_->setValue(g.kd);
     // Only the engineered law changes gains bumplessly (the 1996 law has no such transfer).
     changeBox_->setEnabled(rail_ && law == LoopLaw::Engineered);
-    switches_->setLaw(
-        rail_, rail_ ? law == LoopLaw::Engineered : profile_.dcTable.law == DcLaw::Engineered);
-    if (rail_)
-        period_->setValue(law == LoopLaw::Classic ? kClassicPeriodMs
-                                                  : profile_.loop.samplePeriodS * 1e3);
-    else
-        period_->setValue(profile_.dcTable.samplePeriodS * 1e3);
+    switches_->setLaw(true, law == LoopLaw::Engineered);
+    for (LogGainSlider* sl : gainSliders_)
+        sl->setAllowed(true);
+    period_->setValue(law == LoopLaw::Classic ? kClassicPeriodMs
+                                              : profile_.loop.samplePeriodS * 1e3);
 }
 
 void WorkbenchWindow::updatePoles() {
     if (!tunable()) return;
     // As currentSpec gives the law, gains and period to a step test (and `tune poles` takes
-    // them): on the rail the boxes' law and period; on a DC table axis the profile's law (the
-    // boxes are its engineered Kp and Ki; the third, Kff, moves no pole) and its seed gains.
+    // them): the boxes' law, gains and period (on a DC table axis the third box, Kff, moves no
+    // pole; seed 004's law as written, |e| with a fixed direction bit, has none).
     DiscreteLoopSpec spec;
     spec.periodS = period_->value() / 1e3;
     if (rail_) {
@@ -522,11 +598,21 @@ void WorkbenchWindow::updatePoles() {
     } else {
         const DcAxisParams& a =
             axis_->currentData().toInt() == 'y' ? profile_.dcTable.y : profile_.dcTable.x;
+        const DcLaw dcLaw = tableLawIn(law_);
+        if (dcLaw == DcLaw::Seed) {
+            polesView_->setLoopRefused(
+                tr("Seed 004's law as written has no poles: it drives by |e| with the move's "
+                   "direction bit fixed, not a linear loop (past the target it drives on). Its "
+                   "signed reading, with the same b0 and b1, has them."));
+            return;
+        }
         spec.dcTableAxis = true;
-        spec.law = tableStepLaw(profile_.dcTable.law);
-        spec.gains = {kp_->value(), ki_->value(), 0.0};
-        spec.b0 = a.classic.b0;
-        spec.b1 = a.classic.b1;
+        spec.law = tableStepLaw(dcLaw);
+        const bool seed = dcLaw != DcLaw::Engineered;
+        spec.gains = {seed ? a.engineered.kp : kp_->value(), seed ? a.engineered.ki : ki_->value(),
+                      0.0};
+        spec.b0 = seed ? kp_->value() : a.classic.b0;
+        spec.b1 = seed ? ki_->value() : a.classic.b1;
         spec.mmPerTurn = a.mmPerTurn;
     }
     polesView_->setLoop(spec);
@@ -560,11 +646,22 @@ StepTestSpec WorkbenchWindow::currentSpec() const {
             change.gains.kd = newKd_->value();
             s.gainChange = change;
         }
-    } else if (profile_.dcTable.law == DcLaw::Engineered) {
-        TuningGains g = profileGains(profile_, s.axis, LoopLaw::Engineered);
-        g.kp = kp_->value();
-        g.ki = ki_->value();
-        g.kff = kd_->value();
+    } else {
+        // The DC table: the law, period and gains of the boxes, as `tune step --law --period
+        // --b0 --b1` (seed laws) or `--kp --ki --kff` (engineered) give them.
+        const DcLaw dcLaw = tableLawIn(law_);
+        s.tableLaw = dcLaw;
+        s.law = tableStepLaw(dcLaw);
+        s.periodS = period_->value() / 1e3;
+        TuningGains g = profileGains(profile_, s.axis, *s.law);
+        if (dcLaw == DcLaw::Engineered) {
+            g.kp = kp_->value();
+            g.ki = ki_->value();
+            g.kff = kd_->value();
+        } else {
+            g.b0 = kp_->value();
+            g.b1 = ki_->value();
+        }
         s.gains = g;
     }
     switches_->apply(s);  // anti-windup, encoder noise, DAC quantization (where they apply)
@@ -572,15 +669,21 @@ StepTestSpec WorkbenchWindow::currentSpec() const {
 }
 
 QString WorkbenchWindow::runLabel(const RunConditions& c) const {
-    const QString law = c.law == LoopLaw::Classic ? tr("1996") : tr("engineered");
-    const QString gains = rail_ ? QStringLiteral("Kp %1 Ki %2 Kd %3")
-                                      .arg(c.gains.kp, 0, 'g', 4)
-                                      .arg(c.gains.ki, 0, 'g', 4)
-                                      .arg(c.gains.kd, 0, 'g', 4)
-                                : QStringLiteral("Kp %1 Ki %2 Kff %3")
-                                      .arg(c.gains.kp, 0, 'g', 4)
-                                      .arg(c.gains.ki, 0, 'g', 4)
-                                      .arg(c.gains.kff, 0, 'g', 4);
+    QString law = c.law == LoopLaw::Classic ? tr("1996") : tr("engineered");
+    const bool table = c.profile.kind == MachineKind::DcTable;
+    if (table && c.law == LoopLaw::Classic)
+        law = tableLawOf(c) == DcLaw::Seed ? tr("seed 004") : tr("seed 004 signed");
+    const QString gains =
+        table && c.law == LoopLaw::Classic
+            ? QStringLiteral("b0 %1 b1 %2").arg(c.gains.b0, 0, 'g', 6).arg(c.gains.b1, 0, 'g', 6)
+        : rail_ ? QStringLiteral("Kp %1 Ki %2 Kd %3")
+                      .arg(c.gains.kp, 0, 'g', 4)
+                      .arg(c.gains.ki, 0, 'g', 4)
+                      .arg(c.gains.kd, 0, 'g', 4)
+                : QStringLiteral("Kp %1 Ki %2 Kff %3")
+                      .arg(c.gains.kp, 0, 'g', 4)
+                      .arg(c.gains.ki, 0, 'g', 4)
+                      .arg(c.gains.kff, 0, 'g', 4);
     QString text = tr("%1 %2, %3 mm at %4 ms, mass x%5")
                        .arg(law, gains)
                        .arg(c.amplitudeMm, 0, 'g', 5)
@@ -875,6 +978,7 @@ void WorkbenchWindow::autotuneTableAxis() {
             if (r.ok) {
                 tuned_ = r.tuned;
                 saveTuned_->setEnabled(true);
+                law_->setCurrentIndex(law_->findData(int(DcLaw::Engineered)));  // what it tuned
                 kp_->setValue(r.design.gains.kp);
                 ki_->setValue(r.design.gains.ki);
                 kd_->setValue(r.design.gains.kff);  // the table's third box is Kff

@@ -39,6 +39,7 @@ class ModelView;
 class PolesView;
 class PredictionView;
 class TeachingSwitches;
+class DisturbanceView;
 class RunOverlay;
 class TermsView;
 
@@ -103,6 +104,8 @@ class WorkbenchWindow : public QMainWindow {
     MarginView* marginView() const { return marginView_; }
     /// The rail's Poles page (the last identified model, the boxes' law, gains and period).
     PolesView* polesView() const { return polesView_; }
+    /// The rail's load-disturbance page (null on the other machines).
+    DisturbanceView* disturbanceView() const { return disturbanceView_; }
     QTabWidget* tabs() const { return tabs_; }
     /// Issue 33 item 9: the Prediction page, the sliders under Kp, Ki and Kd (Kff on the DC
     /// table; none on the plotter) and the teaching switches.
@@ -126,6 +129,8 @@ class WorkbenchWindow : public QMainWindow {
     /// The form's column as wide as the form in the current language: never cut.
     void fitForm();
     void lawChanged();
+    /// The gain boxes' labels and ranges for the law (the DC table's seed laws: b0, b1).
+    void labelGains();
     /// The Poles page follows the boxes: law, gains, period.
     void updatePoles();
     void setBusy(bool busy);
@@ -179,6 +184,7 @@ class WorkbenchWindow : public QMainWindow {
     PredictionView* predictionView_;
     std::vector<LogGainSlider*> gainSliders_;
     TeachingSwitches* switches_;
+    DisturbanceView* disturbanceView_ = nullptr;
     QGroupBox *testBox_, *tuneBox_, *runsBox_;
     /// The rail's engineered law: new gains part-way through the test (`--change-at`).
     QGroupBox* changeBox_;

@@ -52,7 +52,7 @@ QJsonObject runMetricsJson(const StepMetrics& m, const RunConditions* c) {
         o[QStringLiteral("machine")] = c->profile.name;
         o[QStringLiteral("axis")] =
             c->axis ? QJsonValue(QString(QLatin1Char(c->axis))) : QJsonValue(QJsonValue::Null);
-        o[QStringLiteral("law")] = loopLawName(c->law);
+        o[QStringLiteral("law")] = runLawName(*c);
         o[QStringLiteral("gains")] = tuningGainsToJson(c->gains, c->profile.kind, c->law);
         o[QStringLiteral("period_s")] = c->periodS;
         o[QStringLiteral("mass_factor")] = c->massFactor;

@@ -30,13 +30,18 @@ bool seedLaw(const DiscreteLoopSpec& l) {
     return l.dcTableAxis && l.law == LoopLaw::Classic;
 }
 
+/// The DC table's classic is seed 004's law on the signed error: its name there is seed-signed.
+QString polesLawName(const DiscreteLoopSpec& l) {
+    return seedLaw(l) ? QStringLiteral("seed-signed") : lawName(l.law);
+}
+
 }  // namespace
 
 QJsonObject polesReportJson(const PolesReport& r) {
     QJsonObject o = tuneConditionsJson(r.conditions);
     const ClosedLoopPoles& p = r.poles;
     o[QStringLiteral("ok")] = true;
-    o[QStringLiteral("law")] = lawName(r.loop.law);
+    o[QStringLiteral("law")] = polesLawName(r.loop);
     if (seedLaw(r.loop)) {  // seed 004's law on the signed error: its b0, b1 per rad
         o[QStringLiteral("b0")] = r.loop.b0;
         o[QStringLiteral("b1")] = r.loop.b1;
@@ -107,7 +112,7 @@ QString polesReportText(const PolesReport& r) {
                     .arg(r.loop.gains.ki, 0, 'g', 6)
                     .arg(r.loop.gains.kd, 0, 'g', 6);
     t += QStringLiteral("law: %1, %2, period %3 s\n")
-             .arg(lawName(r.loop.law), gains)
+             .arg(polesLawName(r.loop), gains)
              .arg(p.periodS, 0, 'g', 6);
     t += QStringLiteral("closed-loop poles (z):\n");
     for (ZPoint z : p.poles)

@@ -35,7 +35,7 @@ QString stepReportText(const StepTestResult& r) {
                     .arg(c.profile.name,
                          c.axis ? QStringLiteral(" axis ") + QLatin1Char(c.axis) : QString())
                     .arg(c.startMm)
-                    .arg(loopLawName(c.law), gainsText)
+                    .arg(runLawName(c), gainsText)
                     .arg(c.periodS * 1000.0)
                     .arg(c.massFactor)
                     .arg(c.seed);
