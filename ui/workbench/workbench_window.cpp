@@ -334,12 +334,6 @@ void WorkbenchWindow::build() {
         tabs_->addTab(polesView_, QString());
     else
         polesView_->hide();
-    // The step the model predicts for the boxes' gains, moved live by the sliders.
-    predictionView_ = new PredictionView(this);
-    if (tunable())
-        tabs_->addTab(predictionView_, QString());
-    else
-        predictionView_->hide();
     // A step of load on the rail's platform (issue 33 item 7), with the boxes' law and gains.
     if (rail_) {
         disturbanceView_ = new DisturbanceView(this);
@@ -356,6 +350,13 @@ void WorkbenchWindow::build() {
             disturbanceView_->run(d);
         });
     }
+    // The step the model predicts for the boxes' gains, moved live by the sliders
+    // (after the Disturbance page: the pages keep their places).
+    predictionView_ = new PredictionView(this);
+    if (tunable())
+        tabs_->addTab(predictionView_, QString());
+    else
+        predictionView_->hide();
     auto* split = new QSplitter(Qt::Horizontal);
     split->addWidget(scroll);
     split->addWidget(tabs_);
