@@ -13,6 +13,9 @@ namespace {
 /// the step's settling predicted outside 15 % in 6 of 200 at 1 x (worst 0.76), 1 at 2 x (0.78),
 /// 2 at 4 x (0.84); 8 x made the identification's positioned return ring.
 constexpr double kSettleIntegralBoost = 4.0;
+/// Periods in the window before a push out of it reads as a load, not as the approach's
+/// overshoot passing through. Chosen: the table's own in-position time (4 periods, 20 ms).
+constexpr int kRestingTicks = 4;
 }  // namespace
 
 DcAxisLoop::DcAxisLoop(const DcAxisParams& axis, double clampPercent, DcLaw law,
@@ -23,6 +26,17 @@ void DcAxisLoop::reset() {
     ePrevRad_ = 0.0;
     integral_ = 0.0;
     u_ = 0.0;
+    loadSeen_ = false;
+    restingTicks_ = 0;
+}
+
+void DcAxisLoop::setPhase(Phase p) {
+    // Pushed out of the window after resting in it (not a move's overshoot passing through):
+    // something pushes the axis while its drive rests, a load.
+    if (phase_ == Phase::InPosition && p == Phase::Settling && restingTicks_ > kRestingTicks)
+        loadSeen_ = true;
+    restingTicks_ = p == Phase::InPosition ? restingTicks_ + 1 : 0;
+    phase_ = p;
 }
 
 double DcAxisLoop::update(double setpointMm, double velocityMmS, double accelMmS2,
@@ -48,8 +62,15 @@ double DcAxisLoop::update(double setpointMm, double velocityMmS, double accelMmS
     }
     const DcEngineeredGains& g = axis_.engineered;
     if (phase_ == Phase::InPosition) {
-        // At rest the table needs no drive (its axes are level; friction holds it): the
-        // integral's last approach is no bias to keep (see Phase::InPosition).
+        // On a level table at rest friction holds the axis: the integral's last approach is no
+        // bias to keep (see Phase::InPosition). Once a load has pushed the axis out of the
+        // window (issue 33 item 7: a torque on the axis, met by the integral on the way back)
+        // the integral is the load's: it is kept, frozen, and so is its drive, so the load is
+        // held where the window is, not let go to push the axis out again.
+        // Until the axis has rested in the window for the in-position time, the integral is
+        // kept too: a load that pushes it straight out again is met by what the integral had.
+        if (loadSeen_ || restingTicks_ <= kRestingTicks)
+            return u_ = std::clamp(g.ki * integral_, -clamp_, clamp_);
         integral_ = 0.0;
         return u_ = 0.0;
     }

@@ -52,9 +52,15 @@ class DcAxisLoop {
                      ///< dropped; friction holds the table, the integral does not wind against
                      ///< it to jump the axis a count past its target (a limit cycle), and what
                      ///< it gathered on the approach does not push the next correction (a
-                     ///< knock, the next move) the way the axis last came
+                     ///< knock, the next move) the way the axis last came. Once something
+                     ///< pushed the axis out of the window while it rested there (a load,
+                     ///< loadSeen()) the integral is the load's: it is kept, frozen, and drives
+                     ///< on, so the load is held
     };
-    void setPhase(Phase p) { phase_ = p; }
+    void setPhase(Phase p);
+    /// The axis was pushed out of its window while it rested there (a load; until reset()):
+    /// InPosition then keeps the integral's drive, however small, to hold it.
+    bool loadSeen() const { return loadSeen_; }
     DcLaw law() const { return law_; }
     double output() const { return u_; }
 
@@ -69,6 +75,8 @@ class DcAxisLoop {
     double integral_ = 0.0;   ///< engineered: integral of e, mm.s
     double u_ = 0.0;
     Phase phase_ = Phase::Tracking;
+    bool loadSeen_ = false;  ///< see loadSeen()
+    int restingTicks_ = 0;   ///< consecutive periods in Phase::InPosition
 };
 
 }  // namespace trilho

@@ -21,6 +21,14 @@ constexpr double kEncoderStallMm = 1.0;
 /// The model counts no speed below this multiple of the friction's PWM percent: the seed
 /// varies each axis' friction by up to 10 %, and a drive near friction may not move at all.
 constexpr double kStallDeadBandFriction = 1.5;
+/// A holding drive the count evidence gives under this multiple of the friction is friction's
+/// (the seed varies each axis' friction by up to 10 %), no load (learnLoad).
+constexpr double kLoadEvidenceFriction = 1.1;
+/// How long after a load pushed an axis at rest the check follows the drive as the load's, s
+/// (learnLoad). Chosen: the engineered integral, at 4 x ki on a count of error (17 % a second),
+/// meets a load of 6 % (stuck between 4.9 % and 9.4 % of drive) in 0.26 s; a dead encoder
+/// in that time runs the axis unseen on what the drive grew beyond the load and friction.
+constexpr double kLoadSizingS = 0.5;
 /// The soft-limit guard's tolerance, mm, beyond the coast a move running onto the limit itself
 /// may be predicted to make (acceleration x (tau + period)^2 / 2, see checkSoftLimits), when
 /// the drive pushes towards the set point. Chosen: the rail's 0.5 mm (rail_servo.cpp).
@@ -152,6 +160,8 @@ void DcTableMotion::cut() {
     directAxis_ = -1;
     modelSpeedMmS_ = {};
     stallTravelMm_ = {};
+    loadHoldPercent_ = {};
+    loadSizingS_ = {};
     sinceCountS_ = {};
     phase_ = Phase::Idle;
     held_ = false;
@@ -206,7 +216,18 @@ bool DcTableMotion::checkEncoder(std::size_t k, std::int64_t counted, double dtS
     // drive on towards a setpoint it never sees reached, at up to the clamp's 200 mm/s.
     const DcAxisParams& a = k == 0 ? params_.x : params_.y;
     const double u = drivePercent_[k];
-    const double over = std::max(0.0, std::abs(u) - kStallDeadBandFriction * a.coulombPercent);
+    // A drive the way of the load's holding drive first holds the load (issue 33 item 7): only
+    // what it adds runs the axis. Never the other way: a load it does not know of makes the
+    // model slower, never faster, than the axis, so no evidence can raise a false alarm.
+    if (loadSizingS_[k] > 0.0) {
+        // A load pushed the axis and the count could not size it (learnLoad): the check takes
+        // the drive the loop has grown since as what holds it, for a bounded time.
+        loadHoldPercent_[k] = u;
+        loadSizingS_[k] = std::max(0.0, loadSizingS_[k] - dtS);
+    }
+    const double hold = loadHoldPercent_[k];
+    const double push = hold != 0.0 && u * hold > 0.0 ? std::abs(u) - std::abs(hold) : std::abs(u);
+    const double over = std::max(0.0, push - kStallDeadBandFriction * a.coulombPercent);
     const double target = over > 0.0 ? std::copysign(over * a.noLoadSpeedMmS / 100.0, u) : 0.0;
     double& v = modelSpeedMmS_[k];
     sinceCountS_[k] += dtS;
@@ -215,6 +236,7 @@ bool DcTableMotion::checkEncoder(std::size_t k, std::int64_t counted, double dtS
         v = static_cast<double>(counted) * mmPerCount_[k] / sinceCountS_[k];
         sinceCountS_[k] = 0.0;
         stallTravelMm_[k] = 0.0;
+        learnLoad(k, counted, v);
         return true;
     }
     // Between counts: slowing down (and through zero, only from rest) as the lightest payload
@@ -249,6 +271,31 @@ bool DcTableMotion::checkEncoder(std::size_t k, std::int64_t counted, double dtS
     if (stallTravelMm_[k] < kEncoderStallMm) return true;
     raise(AlarmCode::EncoderStalled, stallTravelMm_[k]);
     return false;
+}
+
+void DcTableMotion::learnLoad(std::size_t k, std::int64_t counted, double meanSpeedMmS) {
+    // Only from counts the loop's own drive made at rest (holding or settling, no profile, no
+    // open-loop drive) under a law with feedback: a dead encoder gives no count, so it can never
+    // teach the check a load, and a moving profile's inertia is no load.
+    if (!drivesOn_ || phase_ == Phase::Moving || directAxis_ == static_cast<int>(k) ||
+        params_.law == DcLaw::Seed)
+        return;
+    // The motor at its mean speed since the last count, with the friction against the way it
+    // went: v / (mm/s a percent) = u + load - friction sign(v), so the drive that holds the
+    // load is u - friction sign(v) - v / (mm/s a percent).
+    const DcAxisParams& a = k == 0 ? params_.x : params_.y;
+    const double perPercent = a.noLoadSpeedMmS / 100.0;
+    const double way = counted > 0 ? 1.0 : -1.0;
+    const double hold = drivePercent_[k] - a.coulombPercent * way - meanSpeedMmS / perPercent;
+    // Under friction (with the 10 % the plant varies by) friction holds it: no load to know.
+    loadHoldPercent_[k] = std::abs(hold) > kLoadEvidenceFriction * a.coulombPercent
+                              ? std::clamp(hold, -params_.pwmClampPercent, params_.pwmClampPercent)
+                              : 0.0;
+    // A count the drive could not have made (it pushed the other way, or less than friction)
+    // proves a load and bounds it only from below: from rest the mean speed since the last
+    // count says nothing. Until the next count, for at most kLoadSizingS, the drive the loop's
+    // integral grows to meet it is taken as the load's.
+    loadSizingS_[k] = way * drivePercent_[k] < a.coulombPercent ? kLoadSizingS : 0.0;
 }
 
 bool DcTableMotion::checkSoftLimits(double dtS) {

@@ -87,6 +87,8 @@ class DcTableMotion final : public XyMotion {
     void writeDrives(const std::array<double, 2>& percent);
     /// The encoder plausibility check of one axis; false (raised) when it ran without counts.
     bool checkEncoder(std::size_t k, std::int64_t counted, double dtS);
+    /// What a count of axis k at rest says of a load on it (loadHoldPercent_).
+    void learnLoad(std::size_t k, std::int64_t counted, double meanSpeedMmS);
     /// The seed law's soft-limit guard (see the header comment) after a period of dtS; false
     /// (raised) when it cut the drives.
     bool checkSoftLimits(double dtS);
@@ -104,6 +106,10 @@ class DcTableMotion final : public XyMotion {
     std::array<double, 2> modelSpeedMmS_{};  ///< the motor model of the encoder check, mm/s
     std::array<double, 2> stallTravelMm_{};  ///< mm the model ran since the count last changed
     std::array<double, 2> sinceCountS_{};    ///< s since each axis' count last changed
+    /// The drive, PWM %, that holds a load on each axis as the last count at rest told it
+    /// (learnLoad); 0 for none known. The encoder check's model runs the axis on the rest.
+    std::array<double, 2> loadHoldPercent_{};
+    std::array<double, 2> loadSizingS_{};  ///< s left of following the drive as the load's
     Phase phase_ = Phase::Idle;
     SyncTrapezoid plan_;
     double planTimeS_ = 0.0;

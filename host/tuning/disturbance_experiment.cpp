@@ -9,6 +9,7 @@
 #include "core/tuning/servo_fault_name.h"
 #include "core/tuning/trace_writer.h"
 #include "core/xy/dc_table_motion.h"
+#include "core/xy/xy_event_text.h"
 #include "hal/sim/sim_dc_table.h"
 #include "hal/sim/sim_rail.h"
 
@@ -81,9 +82,15 @@ DisturbanceTestResult runTable(const DisturbanceTestSpec& spec, DisturbanceTestR
     profile.dcTable.samplePeriodS = r.periodS;
     r.countsPerMm = 2.0 * 3.14159265358979323846 / (ax.mmPerTurn * ax.radPerCount);
     r.stiffnessNPerMmS = std::numeric_limits<double>::quiet_NaN();  // no speed loop: PWM drive
-    r.proportionalDeviationMm = r.law == LoopLaw::Engineered && r.gains.kp > 0.0
-                                    ? spec.loadPercent / r.gains.kp
-                                    : std::numeric_limits<double>::quiet_NaN();
+    // Without an integral the engineered law meets the load with kp e plus its friction term
+    // and one duty step (DcAxisLoop, Phase::Settling); friction then holds the axis anywhere
+    // its push is within the friction: the middle of that band.
+    const double beyond =
+        std::abs(spec.loadPercent) - ax.coulombPercent - 100.0 / profile.dcTable.pwmDutyMax;
+    r.proportionalDeviationMm =
+        r.law == LoopLaw::Engineered && r.gains.kp > 0.0
+            ? std::copysign(std::max(0.0, beyond), spec.loadPercent) / r.gains.kp
+            : std::numeric_limits<double>::quiet_NaN();
     const std::size_t k = spec.axis == 'x' ? 0 : 1;
     const double midX = 0.5 * (base.limits.x.softMinMm + base.limits.x.softMaxMm);
     const double midY = 0.5 * (base.limits.y.softMinMm + base.limits.y.softMaxMm);
@@ -114,10 +121,10 @@ DisturbanceTestResult runTable(const DisturbanceTestSpec& spec, DisturbanceTestR
         table.step(dt);
         if (motion.fault() != AlarmCode::None) {
             r.abort = StepAbort::ServoFault;
-            r.abortReason = QStringLiteral("the table stopped: alarm %1 (%2) at %3 s")
+            r.abortReason = QStringLiteral("the table stopped at %1 s: alarm %2, %3")
+                                .arg(t)
                                 .arg(static_cast<int>(motion.fault()))
-                                .arg(motion.faultValue())
-                                .arg(t);
+                                .arg(xyAlarmText(motion.fault(), motion.faultValue()));
             break;
         }
         saturatedForS = sat && i >= forceTick ? saturatedForS + dt : 0.0;

@@ -69,7 +69,8 @@ struct DisturbanceTestResult {
     double stiffnessNPerMmS = 0.0;
     /// Where a proportional-only loop settles: F / (stiffness x Kp x mm/s a DAC code), mm (the
     /// rail's engineered law; NaN for the classic law, whose 1996 rounding makes its own band);
-    /// on the DC table's engineered law load % / kp.
+    /// on the DC table's engineered law (|load| - friction - a duty step) / kp, the middle of
+    /// the band friction holds it in (0 under friction).
     double proportionalDeviationMm = 0.0;
     bool ok() const { return abort == StepAbort::None; }
 };

@@ -78,8 +78,11 @@ TEST_F(CliTrace, TheBytesAreThoseOfTheFormerWriter) {
         {{QStringLiteral("--machine"), QStringLiteral("xy_dc_table"),
           program("mesa_xy_quadrado.G")},
          0,
-         166391,  // issue 21 items 5-6: the table's loop now finishes each move sooner
-         "43f4afed7979a614cdaad94cb6311cdc979d95e8a9e9ad416a32dc48089fa016"},
+         // Issue 21 items 5-6: the table's loop finishes each move sooner; issue 33 item 7: it
+         // keeps its integral for the in-position time (4 periods), and the square ends 55 ms
+         // sooner (13.190 s).
+         165762,
+         "cb707f532d336b1492b1f84cea281720df474f07cdc29a61a00fd9c418937e48"},
         {{QStringLiteral("--machine"), QStringLiteral("xy_plotter"), program("plotter_quadrado.G")},
          0,
          113024,

@@ -127,14 +127,51 @@ TEST(DcAxisLoop, InPositionDropsTheApproachsIntegral) {
     loop.setPhase(DcAxisLoop::Phase::Settling);
     for (int i = 0; i < 50; ++i)
         loop.update(count, 0.0, 0.0, 0.0, dt);  // a count short for 0.25 s
+    // In the window: the integral's drive is kept, frozen, for the in-position time (4
+    // periods), then dropped.
+    loop.setPhase(DcAxisLoop::Phase::InPosition);
+    const double kept = loop.update(0.0, 0.0, 0.0, 0.0, dt);
+    EXPECT_GT(kept, 3.0);  // a count short for 0.25 s at 4 x ki: 40 x 0.106 = 4.2 %
+    for (int i = 0; i < 3; ++i) {
+        loop.setPhase(DcAxisLoop::Phase::InPosition);
+        EXPECT_EQ(loop.update(0.0, 0.0, 0.0, 0.0, dt), kept);
+    }
     loop.setPhase(DcAxisLoop::Phase::InPosition);
     EXPECT_EQ(loop.update(0.0, 0.0, 0.0, 0.0, dt), 0.0);
+    EXPECT_FALSE(loop.loadSeen());
     // Knocked a count the other way: the same drive as a loop that never settled before.
     loop.setPhase(DcAxisLoop::Phase::Settling);
     DcAxisLoop fresh(t.x, t.pwmClampPercent, DcLaw::Engineered, step);
     fresh.setPhase(DcAxisLoop::Phase::Settling);
     EXPECT_DOUBLE_EQ(loop.update(-count, 0.0, 0.0, 0.0, dt),
                      fresh.update(-count, 0.0, 0.0, 0.0, dt));
+}
+
+// Issue 33 item 7: pushed out of its window after resting there, the axis has a load on it;
+// the integral that brings it back is then kept in the window, frozen, and holds the load.
+TEST(DcAxisLoop, ALoadThatPushesTheAxisOutOfItsWindowIsHeldByTheIntegral) {
+    const DcTableParams t;
+    const double step = 100.0 / t.pwmDutyMax, dt = 0.005, count = 0.106;
+    DcAxisLoop loop(t.x, t.pwmClampPercent, DcLaw::Engineered, step);
+    for (int i = 0; i < 10; ++i) {  // resting: dropped, no drive
+        loop.setPhase(DcAxisLoop::Phase::InPosition);
+        EXPECT_EQ(loop.update(0.0, 0.0, 0.0, 0.0, dt), 0.0);
+    }
+    EXPECT_FALSE(loop.loadSeen());
+    loop.setPhase(DcAxisLoop::Phase::Settling);  // pushed a count past its target
+    EXPECT_TRUE(loop.loadSeen());
+    double u = 0.0;
+    for (int i = 0; i < 40; ++i)
+        u = loop.update(0.0, 0.0, 0.0, count, dt);
+    // Friction term and a duty step, kp e, and the integral at 4 x ki: all against the load.
+    const double integralDrive = -t.x.engineered.ki * 4.0 * count * 40 * dt;
+    EXPECT_NEAR(u, -(t.x.coulombPercent + step) - t.x.engineered.kp * count + integralDrive, 1e-9);
+    for (int i = 0; i < 20; ++i) {  // back in the window: the integral's drive holds the load
+        loop.setPhase(DcAxisLoop::Phase::InPosition);
+        EXPECT_NEAR(loop.update(0.0, 0.0, 0.0, 0.0, dt), integralDrive, 1e-9);
+    }
+    loop.reset();  // a cut forgets the load
+    EXPECT_FALSE(loop.loadSeen());
 }
 
 TEST(SimDcAxis, SteadySpeedAndEncoderQuantisation) {

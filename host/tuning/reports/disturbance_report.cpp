@@ -102,7 +102,8 @@ QString disturbanceReportText(const DisturbanceReport& r) {
     if (std::isfinite(res.proportionalDeviationMm))
         t += QStringLiteral("  a proportional-only loop would settle %1 mm off (%2)\n")
                  .arg(res.proportionalDeviationMm, 0, 'f', 3)
-                 .arg(table ? QStringLiteral("load % / kp")
+                 .arg(table ? QStringLiteral("(|load| - friction - a duty step) / kp, where "
+                                             "friction holds it")
                             : QStringLiteral("F / (stiffness x Kp x mm/s a code)"));
     if (!res.ok()) t += QStringLiteral("  ABORTED: %1\n").arg(res.abortReason);
     if (!m.ok) {
