@@ -2,7 +2,8 @@
 //   [--speed-fraction F] [--observe S] [--start MM] [--law classic|engineered]
 //   [--kp K --ki K --kd K] [--period S] [--mass-factor F] [--seed N] [--json]
 // trilho-cli tune disturbance --machine xy_dc_table --axis x|y --torque-pct T [--at S]
-//   [--observe S] [--law L] [--kp K --ki K | --b0 B --b1 B] [--period S] [...] [--json]
+//   [--while hold|move] [--speed-fraction F] [--observe S] [--law L]
+//   [--kp K --ki K | --b0 B --b1 B] [--period S] [...] [--json]
 // Issue 33 item 7: a step of load on the simulated rail's platform while the servo holds it (or
 // moves it at a constant speed), and what the loop made of it: peak deviation, recovery time
 // and steady deviation. The lesson is why Ki exists: with --ki 0 a constant load leaves a
@@ -34,7 +35,7 @@ int tuneDisturbanceCommand(const QStringList& args) {
         "stiffness (the profile's plant.speedRegulationPercent: the seed's 0.5 % at the rated "
         "torque). With --ki 0 a constant load leaves a steady deviation; an integral rejects "
         "it. On the DC table (--axis x|y) the load is a torque on the axis, --torque-pct, held "
-        "at the middle of its travel."));
+        "at the middle of its travel or moving from there towards its far end."));
     const QCommandLineOption machineOpt(
         QStringLiteral("machine"),
         QStringLiteral("Machine profile: a file, or the name of a shipped one (default: rail)."),
@@ -135,11 +136,11 @@ int tuneDisturbanceCommand(const QStringList& args) {
         if (!parser.isSet(torqueOpt)) return usage(QStringLiteral("--torque-pct T is required"));
         const double maxLoad = 2.0 * spec.profile.dcTable.pwmClampPercent;
         if (auto e = number(torqueOpt, -maxLoad, maxLoad, spec.loadPercent)) return *e;
-        for (const QCommandLineOption* o : {&whileOpt, &fracOpt, &startOpt})
-            if (parser.isSet(*o))
-                return usage(QStringLiteral("--%1 is for the rail: the DC table's load test "
-                                            "holds the axis at the middle of its travel")
-                                 .arg(o->names().front()));
+        if (parser.isSet(startOpt))
+            return usage(
+                QStringLiteral("--start is for the rail: the DC table's axis starts at "
+                               "the middle of its travel (and moves towards its far "
+                               "soft limit with --while move)"));
     } else {
         if (parser.isSet(torqueOpt))
             return usage(

@@ -274,12 +274,9 @@ bool DcTableMotion::checkEncoder(std::size_t k, std::int64_t counted, double dtS
 }
 
 void DcTableMotion::learnLoad(std::size_t k, std::int64_t counted, double meanSpeedMmS) {
-    // Only from counts the loop's own drive made at rest (holding or settling, no profile, no
-    // open-loop drive) under a law with feedback: a dead encoder gives no count, so it can never
-    // teach the check a load, and a moving profile's inertia is no load.
-    if (!drivesOn_ || phase_ == Phase::Moving || directAxis_ == static_cast<int>(k) ||
-        params_.law == DcLaw::Seed)
-        return;
+    // Only from counts the loop's own drive made (no open-loop drive) under a law with feedback:
+    // a dead encoder gives no count, so it can never teach the check a load.
+    if (!drivesOn_ || directAxis_ == static_cast<int>(k) || params_.law == DcLaw::Seed) return;
     // The motor at its mean speed since the last count, with the friction against the way it
     // went: v / (mm/s a percent) = u + load - friction sign(v), so the drive that holds the
     // load is u - friction sign(v) - v / (mm/s a percent).
@@ -291,11 +288,13 @@ void DcTableMotion::learnLoad(std::size_t k, std::int64_t counted, double meanSp
     loadHoldPercent_[k] = std::abs(hold) > kLoadEvidenceFriction * a.coulombPercent
                               ? std::clamp(hold, -params_.pwmClampPercent, params_.pwmClampPercent)
                               : 0.0;
-    // A count the drive could not have made (it pushed the other way, or less than friction)
-    // proves a load and bounds it only from below: from rest the mean speed since the last
-    // count says nothing. Until the next count, for at most kLoadSizingS, the drive the loop's
-    // integral grows to meet it is taken as the load's.
-    loadSizingS_[k] = way * drivePercent_[k] < a.coulombPercent ? kLoadSizingS : 0.0;
+    // At rest (no profile: a profile's braking is no load), a count the drive could not have
+    // made (it pushed the other way, or less than friction) proves a load and bounds it only
+    // from below: from rest the mean speed since the last count says nothing. Until the next
+    // count, for at most kLoadSizingS, the drive the loop's integral grows to meet it is taken
+    // as the load's.
+    const bool unexplained = way * drivePercent_[k] < a.coulombPercent;
+    loadSizingS_[k] = phase_ != Phase::Moving && unexplained ? kLoadSizingS : 0.0;
 }
 
 bool DcTableMotion::checkSoftLimits(double dtS) {

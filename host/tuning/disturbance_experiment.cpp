@@ -32,6 +32,72 @@ QString faultText(ServoFault f, double value) {
     return QStringLiteral("%1 (%2)").arg(servoFaultName(f)).arg(value, 0, 'f', 3);
 }
 
+/// One tick of either machine into the trace, on the record's rounding.
+void record(DisturbanceTrace& tr, double t, double setpointMm, double positionMm, double load,
+            double drive, bool saturated) {
+    tr.timeS.push_back(q(t));
+    tr.setpointMm.push_back(q(setpointMm));
+    tr.positionMm.push_back(q(positionMm));
+    tr.loadN.push_back(load);
+    tr.drive.push_back(q(drive));
+    tr.saturated.push_back(saturated ? 1 : 0);
+}
+
+/// The guards both machines' tests share, after a tick at t: saturation for longer than
+/// kMaxSaturationS once the load is on (a move's start may saturate briefly), and the
+/// envelope. False (r.abort set) when the test stops here; the caller then cuts its drive.
+bool withinGuards(DisturbanceTestResult& r, double& saturatedForS, bool saturated, bool loadOn,
+                  double deviationMm, const DisturbanceTestSpec& spec, double t,
+                  const QString& what) {
+    saturatedForS = saturated && loadOn ? saturatedForS + r.periodS : 0.0;
+    if (saturatedForS > kMaxSaturationS + 1e-9) {
+        r.abort = StepAbort::Saturation;
+        r.abortReason = QStringLiteral(
+                            "saturated for more than %1 ms without a break at %2 s: the "
+                            "loop cannot hold this load")
+                            .arg(kMaxSaturationS * 1000.0)
+                            .arg(t);
+        return false;
+    }
+    if (std::abs(deviationMm) > spec.envelopeMm) {
+        r.abort = StepAbort::Envelope;
+        r.abortReason = QStringLiteral("the %1 strayed more than %2 mm from its set point at %3 s")
+                            .arg(what)
+                            .arg(spec.envelopeMm)
+                            .arg(t);
+        return false;
+    }
+    return true;
+}
+
+/// The metrics of the trace, the load on at tick forceTick.
+DisturbanceMetrics measure(const DisturbanceTestResult& r, std::size_t forceTick) {
+    DisturbanceSignals sig;
+    sig.timeS = r.trace.timeS;
+    sig.setpointMm = r.trace.setpointMm;
+    sig.positionMm = r.trace.positionMm;
+    sig.forceAtS = static_cast<double>(forceTick) * r.periodS;
+    sig.countsPerMm = r.countsPerMm;
+    return measureDisturbance(sig);
+}
+
+/// A move must still cruise when the test ends (the deviation is measured from the lag before
+/// the load): empty when it does, else why not.
+QString brakesTooSoon(double startMm, double targetMm, double speedMmS, double accelMmS2,
+                      double speedFraction, double endS) {
+    const Trapezoid plan = Trapezoid::restToRest(startMm, targetMm, speedMmS, accelMmS2);
+    // The braking takes as long as the start (a symmetric trapezoid).
+    const double cruiseEndS = plan.duration() - plan.peakSpeed() / accelMmS2;
+    if (endS < cruiseEndS) return {};
+    return QStringLiteral(
+               "the move from %1 mm at %2 of the rapid speed brakes at %3 s, before "
+               "the test ends at %4 s: start further back, move slower or observe less")
+        .arg(startMm)
+        .arg(speedFraction)
+        .arg(cruiseEndS, 0, 'f', 2)
+        .arg(endS, 0, 'f', 2);
+}
+
 }  // namespace
 
 namespace {
@@ -49,9 +115,6 @@ DisturbanceTestResult runTable(const DisturbanceTestSpec& spec, DisturbanceTestR
                                                    "%1 to %2 (twice the board's PWM clamp)")
                                         .arg(-maxLoad)
                                         .arg(maxLoad));
-    if (spec.during != DisturbanceWhile::Hold)
-        return refuse(std::move(r), QStringLiteral("on the DC table the load test holds the axis "
-                                                   "still (--while hold)"));
     if (!(spec.atS >= 0.0 && spec.atS <= 60.0) ||
         !(spec.observeS >= 0.1 && spec.observeS <= 120.0) ||
         !(spec.massFactor >= 0.1 && spec.massFactor <= 20.0) ||
@@ -92,32 +155,47 @@ DisturbanceTestResult runTable(const DisturbanceTestSpec& spec, DisturbanceTestR
             ? std::copysign(std::max(0.0, beyond), spec.loadPercent) / r.gains.kp
             : std::numeric_limits<double>::quiet_NaN();
     const std::size_t k = spec.axis == 'x' ? 0 : 1;
-    const double midX = 0.5 * (base.limits.x.softMinMm + base.limits.x.softMaxMm);
-    const double midY = 0.5 * (base.limits.y.softMinMm + base.limits.y.softMaxMm);
+    const XyPoint mid{0.5 * (base.limits.x.softMinMm + base.limits.x.softMaxMm),
+                      0.5 * (base.limits.y.softMinMm + base.limits.y.softMaxMm)};
+    const AxisTravel& travel = k == 0 ? base.limits.x : base.limits.y;
+    const double endS = spec.atS + spec.observeS;
+    const bool moving = spec.during == DisturbanceWhile::Move;
+    XyPoint target = mid;
+    if (moving) {
+        // From the middle towards the axis' far soft limit, the other axis held; the test must
+        // end while the set point still cruises.
+        if (r.law != LoopLaw::Engineered)
+            return refuse(std::move(r), QStringLiteral("a load while moving needs the engineered "
+                                                       "law: the seed's laws have no integral "
+                                                       "and nothing to hold a load with"));
+        if (!(spec.speedFraction > 0.0 && spec.speedFraction <= 1.0))
+            return refuse(std::move(r), QStringLiteral("the speed fraction must be in (0, 1]"));
+        (k == 0 ? target.x : target.y) = travel.softMaxMm;
+        const double from = k == 0 ? mid.x : mid.y;
+        const QString why =
+            brakesTooSoon(from, travel.softMaxMm, base.motion.rapidSpeedMmS * spec.speedFraction,
+                          base.motion.accelerationMmS2, spec.speedFraction, endS);
+        if (!why.isEmpty()) return refuse(std::move(r), why);
+    }
     SimDcTable table(profile.dcTable, spec.seed);
-    table.placeAt(midX, midY);
+    table.placeAt(mid.x, mid.y);
     DcTableMotion motion(profile, table);
     motion.beginHoming();
+    if (moving) motion.beginMove(target, XyMove::Draw, spec.speedFraction);
     const double dt = r.periodS;
-    const double endS = spec.atS + spec.observeS;
     const auto ticks = static_cast<std::size_t>(std::ceil(endS / dt - 1e-9));
     const auto forceTick = static_cast<std::size_t>(std::llround(spec.atS / dt));
     const double clamp = profile.dcTable.pwmClampPercent;
-    DisturbanceTrace& tr = r.trace;
+    SimDcAxis& loaded = table.axis(static_cast<int>(k));
     double saturatedForS = 0.0;
     for (std::size_t i = 0; i <= ticks; ++i) {
         const double t = static_cast<double>(i) * dt;
-        if (i == forceTick) table.axis(static_cast<int>(k)).setLoadPercent(spec.loadPercent);
+        if (i == forceTick) loaded.setLoadPercent(spec.loadPercent);
         motion.tick(dt);
         const XySample s = motion.sample();
         const XyAxisSample& a = k == 0 ? s.x : s.y;
         const bool sat = std::abs(a.drive) >= clamp - 1e-9;
-        tr.timeS.push_back(q(t));
-        tr.setpointMm.push_back(q(a.setpointMm));
-        tr.positionMm.push_back(q(a.positionMm));
-        tr.loadN.push_back(table.axis(static_cast<int>(k)).loadPercent());
-        tr.drive.push_back(q(a.drive));
-        tr.saturated.push_back(sat ? 1 : 0);
+        record(r.trace, t, a.setpointMm, a.positionMm, loaded.loadPercent(), a.drive, sat);
         table.step(dt);
         if (motion.fault() != AlarmCode::None) {
             r.abort = StepAbort::ServoFault;
@@ -127,35 +205,13 @@ DisturbanceTestResult runTable(const DisturbanceTestSpec& spec, DisturbanceTestR
                                 .arg(xyAlarmText(motion.fault(), motion.faultValue()));
             break;
         }
-        saturatedForS = sat && i >= forceTick ? saturatedForS + dt : 0.0;
-        if (saturatedForS > kMaxSaturationS + 1e-9) {
+        if (!withinGuards(r, saturatedForS, sat, i >= forceTick, a.positionMm - a.setpointMm, spec,
+                          t, QStringLiteral("axis"))) {
             motion.cut();
-            r.abort = StepAbort::Saturation;
-            r.abortReason = QStringLiteral(
-                                "saturated for more than %1 ms without a break at %2 s: the loop "
-                                "cannot hold this load")
-                                .arg(kMaxSaturationS * 1000.0)
-                                .arg(t);
-            break;
-        }
-        if (std::abs(a.positionMm - a.setpointMm) > spec.envelopeMm) {
-            motion.cut();
-            r.abort = StepAbort::Envelope;
-            r.abortReason = QStringLiteral(
-                                "the axis strayed more than %1 mm from its set point "
-                                "at %2 s")
-                                .arg(spec.envelopeMm)
-                                .arg(t);
             break;
         }
     }
-    DisturbanceSignals sig;
-    sig.timeS = tr.timeS;
-    sig.setpointMm = tr.setpointMm;
-    sig.positionMm = tr.positionMm;
-    sig.forceAtS = static_cast<double>(forceTick) * dt;
-    sig.countsPerMm = r.countsPerMm;
-    r.metrics = measureDisturbance(sig);
+    r.metrics = measure(r, forceTick);
     return r;
 }
 
@@ -221,20 +277,10 @@ DisturbanceTestResult runDisturbanceTest(const DisturbanceTestSpec& spec) {
     if (moving) {
         // Towards the far soft limit; the test must end while the setpoint still cruises.
         targetMm = travel.softMaxMm;
-        const Trapezoid plan = Trapezoid::restToRest(spec.startMm, targetMm,
-                                                     base.motion.rapidSpeedMmS * spec.speedFraction,
-                                                     base.motion.accelerationMmS2);
-        // The braking takes as long as the start (a symmetric trapezoid).
-        const double cruiseEndS = plan.duration() - plan.peakSpeed() / base.motion.accelerationMmS2;
-        if (endS >= cruiseEndS)
-            return refuse(std::move(r),
-                          QStringLiteral("the move from %1 mm at %2 of the rapid speed brakes "
-                                         "at %3 s, before the test ends at %4 s: start further "
-                                         "left, move slower or observe less")
-                              .arg(spec.startMm)
-                              .arg(spec.speedFraction)
-                              .arg(cruiseEndS, 0, 'f', 2)
-                              .arg(endS, 0, 'f', 2));
+        const QString why =
+            brakesTooSoon(spec.startMm, targetMm, base.motion.rapidSpeedMmS * spec.speedFraction,
+                          base.motion.accelerationMmS2, spec.speedFraction, endS);
+        if (!why.isEmpty()) return refuse(std::move(r), why);
     }
 
     MachineProfile profile = base;
@@ -271,12 +317,7 @@ DisturbanceTestResult runDisturbanceTest(const DisturbanceTestSpec& spec) {
         const ServoSample& s = servo.sample();
         const bool looping = s.mode == ServoMode::Move || s.mode == ServoMode::Hold;
         const bool sat = looping && s.loop.saturated;
-        tr.timeS.push_back(q(t));
-        tr.setpointMm.push_back(q(s.setpointMm));
-        tr.positionMm.push_back(q(s.positionMm));
-        tr.loadN.push_back(rail.loadForceN());
-        tr.drive.push_back(s.loop.code);
-        tr.saturated.push_back(sat ? 1 : 0);
+        record(tr, t, s.setpointMm, s.positionMm, rail.loadForceN(), s.loop.code, sat);
         rail.step(dt);
         if (s.fault != ServoFault::None) {
             r.abort = StepAbort::ServoFault;
@@ -285,36 +326,13 @@ DisturbanceTestResult runDisturbanceTest(const DisturbanceTestSpec& spec) {
                                 .arg(t);
             break;
         }
-        // Saturation only counts once the load is on: a move's start may saturate briefly.
-        saturatedForS = sat && k >= forceTick ? saturatedForS + dt : 0.0;
-        if (saturatedForS > kMaxSaturationS + 1e-9) {
+        if (!withinGuards(r, saturatedForS, sat, k >= forceTick, s.positionMm - s.setpointMm, spec,
+                          t, QStringLiteral("platform"))) {
             servo.emergencyStop();
-            r.abort = StepAbort::Saturation;
-            r.abortReason = QStringLiteral(
-                                "saturated for more than %1 ms without a break at %2 s: the loop "
-                                "cannot hold this load")
-                                .arg(kMaxSaturationS * 1000.0)
-                                .arg(t);
-            break;
-        }
-        if (std::abs(s.positionMm - s.setpointMm) > spec.envelopeMm) {
-            servo.emergencyStop();
-            r.abort = StepAbort::Envelope;
-            r.abortReason = QStringLiteral(
-                                "the platform strayed more than %1 mm from its "
-                                "setpoint at %2 s")
-                                .arg(spec.envelopeMm)
-                                .arg(t);
             break;
         }
     }
-    DisturbanceSignals sig;
-    sig.timeS = tr.timeS;
-    sig.setpointMm = tr.setpointMm;
-    sig.positionMm = tr.positionMm;
-    sig.forceAtS = static_cast<double>(forceTick) * dt;
-    sig.countsPerMm = r.countsPerMm;
-    r.metrics = measureDisturbance(sig);
+    r.metrics = measure(r, forceTick);
     return r;
 }
 

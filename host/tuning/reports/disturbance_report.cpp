@@ -60,23 +60,24 @@ QString disturbanceReportText(const DisturbanceReport& r) {
     const DisturbanceMetrics& m = res.metrics;
     const bool table = r.spec.profile.kind == MachineKind::DcTable;
     QString t;
+    const QString during =
+        r.spec.during == DisturbanceWhile::Move
+            ? QStringLiteral("moving at %1 of the rapid speed").arg(r.spec.speedFraction)
+            : QStringLiteral("holding");
     if (table)
         t += QStringLiteral(
                  "Load disturbance on %1 axis %2: %3 % of the stall torque at %4 s "
-                 "while holding\n")
+                 "while %5\n")
                  .arg(r.conditions.machine, r.conditions.axis)
                  .arg(r.spec.loadPercent)
-                 .arg(r.spec.atS);
+                 .arg(r.spec.atS)
+                 .arg(during);
     else
-        t += QStringLiteral("Load disturbance on %1: %2 N at %3 s while %4%5\n")
+        t += QStringLiteral("Load disturbance on %1: %2 N at %3 s while %4\n")
                  .arg(r.conditions.machine)
                  .arg(r.spec.forceN)
                  .arg(r.spec.atS)
-                 .arg(r.spec.during == DisturbanceWhile::Move ? QStringLiteral("moving")
-                                                              : QStringLiteral("holding"))
-                 .arg(r.spec.during == DisturbanceWhile::Move
-                          ? QStringLiteral(" at %1 of the rapid speed").arg(r.spec.speedFraction)
-                          : QString());
+                 .arg(during);
     if (table && res.law == LoopLaw::Classic)
         t += QStringLiteral("  law seed 004 (signed error), b0 %1, b1 %2, period %3 s\n")
                  .arg(res.gains.b0)
