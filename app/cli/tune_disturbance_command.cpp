@@ -74,8 +74,7 @@ int tuneDisturbanceCommand(const QStringList& args) {
         QStringLiteral("start"), QStringLiteral("Where the platform starts, mm from the centre."),
         QStringLiteral("MM"), QStringLiteral("-1000"));
     const QCommandLineOption lawOpt(
-        QStringLiteral("law"), QStringLiteral("classic or engineered (default: the profile's)."),
-        QStringLiteral("LAW"));
+        QStringLiteral("law"), lawOptionHelp(), QStringLiteral("LAW"));
     const GainOptions gainOpts = gainOptions();
     const QCommandLineOption periodOpt(
         QStringLiteral("period"),
@@ -167,16 +166,12 @@ int tuneDisturbanceCommand(const QStringList& args) {
         return usage(QStringLiteral("--while must be hold or move (got '%1')").arg(during));
     if (parser.isSet(fracOpt) && spec.during != DisturbanceWhile::Move)
         return usage(QStringLiteral("--speed-fraction is for --while move"));
-    LoopLaw law = table ? tableStepLaw(spec.profile.dcTable.law) : spec.profile.loop.law;
-    if (parser.isSet(lawOpt)) {
-        const QString l = parser.value(lawOpt);
-        if (l == QLatin1String("classic"))
-            law = LoopLaw::Classic;
-        else if (l == QLatin1String("engineered"))
-            law = LoopLaw::Engineered;
-        else
-            return usage(QStringLiteral("--law must be classic or engineered (got '%1')").arg(l));
-    }
+    std::optional<LoopLaw> chosen;
+    if (table) spec.tableLaw = spec.profile.dcTable.law;
+    if (auto m = readLaw(parser, lawOpt, table, chosen, spec.tableLaw)) return usage(*m);
+    const LoopLaw law = chosen                 ? *chosen
+                        : table                ? tableStepLaw(spec.profile.dcTable.law)
+                                               : spec.profile.loop.law;
     spec.law = law;
     TuningGains gains = profileGains(spec.profile, spec.axis, law);
     const bool seedLaw = table && law == LoopLaw::Classic;

@@ -41,6 +41,9 @@ struct DisturbanceTestSpec {
     double speedFraction = 0.1;
     double startMm = -1000.0;
     std::optional<LoopLaw> law;        ///< default: the profile's
+    /// The DC table: which of its laws (law Classic: seed or seed-signed; default: the
+    /// profile's when it is one of them, else seed-signed, as tableDcLaw).
+    std::optional<DcLaw> tableLaw;
     std::optional<TuningGains> gains;  ///< default: the profile's for the law
     std::optional<double> periodS;     ///< default: the law's (the classic law's own 10 ms)
     double massFactor = 1.0;           ///< multiplies the profile's (the loop is not told)

@@ -84,8 +84,18 @@ DisturbanceView::DisturbanceView(QWidget* parent) : QWidget(parent) {
     retranslate();
 }
 
+void DisturbanceView::setTable(double maxLoadPercent) {
+    table_ = true;
+    force_->setRange(-maxLoadPercent, maxLoadPercent);
+    force_->setDecimals(1);
+    force_->setSingleStep(1.0);
+    force_->setValue(10.0);  // above friction (3 %), well inside what the loop holds
+    force_->setSuffix(QStringLiteral(" %"));
+    retranslate();
+}
+
 void DisturbanceView::run(DisturbanceTestSpec spec) {
-    spec.forceN = force_->value();
+    (table_ ? spec.loadPercent : spec.forceN) = force_->value();
     spec.atS = at_->value();
     spec.during = static_cast<DisturbanceWhile>(while_->currentData().toInt());
     spec_ = spec;
@@ -117,7 +127,7 @@ void DisturbanceView::show(const DisturbanceTestResult& r) {
         }
         plot_->rescaleAxes();
         // The load's axis from 0 to a little beyond it, whatever its sign.
-        const double f = spec_.forceN;
+        const double f = table_ ? spec_.loadPercent : spec_.forceN;
         plot_->yAxis2->setRange(std::min(0.0, f) * 1.2 - 1.0, std::max(0.0, f) * 1.2 + 1.0);
         plot_->yAxis->scaleRange(1.15);
     }
@@ -127,9 +137,11 @@ void DisturbanceView::show(const DisturbanceTestResult& r) {
 
 QString DisturbanceView::metricsText() const {
     if (!result_)
-        return tr(
-            "Set the load and when it comes, then Run: the window's law, gains, period, "
-            "mass and seed are used. Try Ki 0, then Ki 5.");
+        return table_ ? tr("Set the load torque and when it comes, then Run: the window's "
+                           "axis, law, gains, period, mass and seed are used. Try Ki 0, then "
+                           "Ki 40.")
+                      : tr("Set the load and when it comes, then Run: the window's law, gains, "
+                           "period, mass and seed are used. Try Ki 0, then Ki 5.");
     const DisturbanceTestResult& r = *result_;
     const DisturbanceMetrics& m = r.metrics;
     QString t;
@@ -138,12 +150,21 @@ QString DisturbanceView::metricsText() const {
         return tr("<b>Not run:</b> %1").arg(r.abortReason.toHtmlEscaped());
     if (!r.ok()) t += tr("<b>Aborted:</b> %1<br>").arg(r.abortReason.toHtmlEscaped());
     if (!m.ok) return t + tr("No metrics: %1").arg(QString::fromStdString(m.problem));
-    t += tr("Load %1 N at %2 s, Kp %3, Ki %4, Kd %5<br>")
-             .arg(spec_.forceN)
-             .arg(spec_.atS)
-             .arg(r.gains.kp)
-             .arg(r.gains.ki)
-             .arg(r.gains.kd);
+    if (table_)
+        t += tr("Load %1 % of the stall torque on axis %2 at %3 s, Kp %4, Ki %5, Kff %6<br>")
+                 .arg(spec_.loadPercent)
+                 .arg(QChar::fromLatin1(spec_.axis))
+                 .arg(spec_.atS)
+                 .arg(r.gains.kp)
+                 .arg(r.gains.ki)
+                 .arg(r.gains.kff);
+    else
+        t += tr("Load %1 N at %2 s, Kp %3, Ki %4, Kd %5<br>")
+                 .arg(spec_.forceN)
+                 .arg(spec_.atS)
+                 .arg(r.gains.kp)
+                 .arg(r.gains.ki)
+                 .arg(r.gains.kd);
     if (!r.ok())
         return t + tr("Peak deviation before the stop: <b>%1 mm</b>; no recovery and no steady "
                       "state were measured")
@@ -158,7 +179,13 @@ QString DisturbanceView::metricsText() const {
                    .arg(num(m.recoveryBandMm, 3));
     t += tr("Steady deviation: <b>%1 mm</b> (mean of the last %2 s)<br>")
              .arg(num(m.steadyDeviationMm, 3), num(m.steadyWindowS, 2));
-    if (std::isfinite(r.proportionalDeviationMm) && std::isfinite(r.stiffnessNPerMmS))
+    if (table_ && std::isfinite(r.proportionalDeviationMm))
+        t += tr("A PWM drive, no speed loop: with Ki 0 the loop rests about %1 mm off, where its "
+                "drive less friction and a duty step meets the load, give or take friction's band")
+                 .arg(num(r.proportionalDeviationMm, 3));
+    else if (table_)
+        t += tr("A PWM drive, no speed loop: the motor's back EMF is its stiffness");
+    else if (std::isfinite(r.proportionalDeviationMm) && std::isfinite(r.stiffnessNPerMmS))
         t += tr("Amplifier stiffness %1 N per mm/s: with Ki 0 the loop settles where Kp's "
                 "drive gives back the speed the load adds, %2 mm")
                  .arg(num(r.stiffnessNPerMmS, 2), num(r.proportionalDeviationMm, 3));
@@ -168,7 +195,7 @@ QString DisturbanceView::metricsText() const {
 }
 
 void DisturbanceView::retranslate() {
-    forceLabel_->setText(tr("Load on the platform"));
+    forceLabel_->setText(table_ ? tr("Load torque on the axis") : tr("Load on the platform"));
     atLabel_->setText(tr("Load comes at"));
     whileLabel_->setText(tr("While"));
     while_->setItemText(0, tr("holding still"));
@@ -176,7 +203,7 @@ void DisturbanceView::retranslate() {
     run_->setText(tr("Run load test"));
     plot_->xAxis->setLabel(tr("time (s)"));
     plot_->yAxis->setLabel(tr("deviation (mm)"));
-    plot_->yAxis2->setLabel(tr("load (N)"));
+    plot_->yAxis2->setLabel(table_ ? tr("load (% of stall torque)") : tr("load (N)"));
     metrics_->setText(metricsText());
 }
 

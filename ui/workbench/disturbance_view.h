@@ -24,6 +24,9 @@ class DisturbanceView : public QWidget {
     Q_OBJECT
   public:
     explicit DisturbanceView(QWidget* parent = nullptr);
+    /// The DC table: the load is a torque on the window's axis, percent of the motor's stall
+    /// torque at 100 % PWM (up to twice the board's clamp), not a force on the rail's platform.
+    void setTable(double maxLoadPercent);
 
     /// Runs the test with the page's load, time and "while" on spec (the window's law, gains,
     /// period, mass and seed), and shows it.
@@ -60,6 +63,7 @@ class DisturbanceView : public QWidget {
     QCustomPlot* plot_;
     std::optional<DisturbanceTestResult> result_;
     DisturbanceTestSpec spec_;
+    bool table_ = false;  ///< setTable(): the load box is a torque in %
 };
 
 }  // namespace ui

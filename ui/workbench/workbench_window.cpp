@@ -334,9 +334,11 @@ void WorkbenchWindow::build() {
         tabs_->addTab(polesView_, QString());
     else
         polesView_->hide();
-    // A step of load on the rail's platform (issue 33 item 7), with the boxes' law and gains.
-    if (rail_) {
+    // A step of load on the rail's platform or a DC table axis (issue 33 item 7), with the
+    // boxes' law, gains and axis.
+    if (tunable()) {
         disturbanceView_ = new DisturbanceView(this);
+        if (!rail_) disturbanceView_->setTable(2.0 * profile_.dcTable.pwmClampPercent);
         tabs_->addTab(disturbanceView_, QString());
         connect(disturbanceView_, &DisturbanceView::runRequested, this, [this] {
             const StepTestSpec s = currentSpec();
@@ -347,6 +349,8 @@ void WorkbenchWindow::build() {
             d.periodS = s.periodS;
             d.massFactor = s.massFactor;
             d.seed = s.seed;
+            d.axis = s.axis;
+            d.tableLaw = s.tableLaw;
             disturbanceView_->run(d);
         });
     }

@@ -23,8 +23,15 @@ QJsonObject disturbanceReportJson(const DisturbanceReport& r) {
     o[QStringLiteral("while")] = disturbanceWhileName(r.spec.during);
     if (r.spec.during == DisturbanceWhile::Move)
         o[QStringLiteral("speed_fraction")] = r.spec.speedFraction;
+    // The DC table's law by its own name (seed, seed-signed, engineered), as --law takes it.
+    const DcLaw tableLaw = r.spec.tableLaw && tableStepLaw(*r.spec.tableLaw) == res.law
+                               ? *r.spec.tableLaw
+                               : tableDcLaw(res.law);
     o[QStringLiteral("law")] =
-        res.law == LoopLaw::Classic ? QStringLiteral("classic") : QStringLiteral("engineered");
+        table ? QString::fromLatin1(dcLawName(tableLaw).data(),
+                                    static_cast<qsizetype>(dcLawName(tableLaw).size()))
+        : res.law == LoopLaw::Classic ? QStringLiteral("classic")
+                                      : QStringLiteral("engineered");
     if (table && res.law == LoopLaw::Classic) {  // seed 004's law: its b0, b1 per rad
         o[QStringLiteral("b0")] = res.gains.b0;
         o[QStringLiteral("b1")] = res.gains.b1;
@@ -79,7 +86,9 @@ QString disturbanceReportText(const DisturbanceReport& r) {
                  .arg(r.spec.atS)
                  .arg(during);
     if (table && res.law == LoopLaw::Classic)
-        t += QStringLiteral("  law seed 004 (signed error), b0 %1, b1 %2, period %3 s\n")
+        t += QStringLiteral("  law seed 004 %1, b0 %2, b1 %3, period %4 s\n")
+                 .arg(r.spec.tableLaw == DcLaw::Seed ? QStringLiteral("as written (|e|)")
+                                                     : QStringLiteral("(signed error)"))
                  .arg(res.gains.b0)
                  .arg(res.gains.b1)
                  .arg(res.periodS);
