@@ -68,6 +68,80 @@ TEST(DcTableLoadAttack, ADeadEncoderAtTheStartOfAMoveRightAfterAKnockIsCaughtWit
                 worst);
 }
 
+// DEFECT (bf79620, learnLoad never runs in a move): a load of 25-30 % held at rest teaches the
+// check a holding drive of about the load's; the load then goes (the workpiece is lifted off)
+// as a move starts the way of that holding drive, on a level table. learnLoad does not run
+// while the profile moves, so the whole move's drive in that direction is discounted by a
+// load that is no longer there, and an encoder that dies 0.3 s into the move at F5 is caught
+// only after 23-30 mm of travel, past the 20 mm the check states for a level table.
+TEST(DcTableLoadAttack, ALoadGoneAtTheStartOfAMoveDoesNotBlindTheDeadEncoderCheck) {
+    double worst = 0.0;
+    for (double load : {25.0, 30.0}) {
+        for (int sign : {+1, -1}) {
+            SCOPED_TRACE("held load " + std::to_string(load * sign) + " %");
+            const MachineProfile profile = test::tableProfileForMoves();
+            XySessionMake made = makeXySession(profile, 1, {150, 150});
+            XySession& s = *made.session;
+            auto& table = dynamic_cast<SimDcTable&>(s.plant());
+            XyController& c = s.controller();
+            s.runUntil([] { return false; }, 0.05);
+            table.axis(0).setLoadPercent(load * sign);
+            s.runUntil([&] { return inAlarm(s); }, 2.0);  // pushed, met, held
+            ASSERT_FALSE(inAlarm(s));
+            table.axis(0).setLoadPercent(0.0);            // gone as the move starts
+            c.moveTo({150.0 - 120.0 * sign, 150}, 0.05);  // the way the holding drive pushes
+            s.runUntil([&] { return inAlarm(s); }, 0.3);
+            ASSERT_FALSE(inAlarm(s));
+            const double atFault = table.positionMm(0);
+            table.setEncoderStuck(0, true);
+            ASSERT_TRUE(s.runUntil([&] { return inAlarm(s); }, 30.0));
+            EXPECT_EQ(c.status().lastAlarm, AlarmCode::EncoderStalled);
+            s.runUntil([] { return false; }, 1.0);
+            const double rest = std::abs(table.positionMm(0) - atFault);
+            EXPECT_LT(rest, kDeadEncoderBoundMm);
+            worst = std::max(worst, rest);
+        }
+    }
+    std::printf("dead encoder after a held load went: at rest at most %.2f mm from the fault\n",
+                worst);
+}
+
+// DEFECT (bf79620, kRestingTicks counts periods, not the in-position time): at a 20 ms period
+// (dcTable.samplePeriodS may be 1-50 ms) the in-position time is one period, but the integral
+// is kept for four (80 ms); a payload x3 passing through the window for one sample is declared
+// in position (the motion idle, the move done) and, the approach's integral kept, rings on
+// after it: up to 0.67 mm from the target (6 counts) with no move in progress. Before bf79620
+// the same moves stayed within 0.15 mm once done.
+TEST(DcTableLoadAttack, AtA20msPeriodAMoveDoneStaysWithinTwoCountsOfItsTarget) {
+    MachineProfile profile = test::tableProfileForMoves();
+    profile.dcTable.massFactor = 3.0;
+    profile.dcTable.samplePeriodS = 0.02;
+    XySessionMake made = makeXySession(profile, 1, {150, 150});
+    XySession& s = *made.session;
+    auto& table = dynamic_cast<SimDcTable&>(s.plant());
+    s.runUntil([] { return false; }, 0.1);
+    const double twoCounts = 2.0 * table.axis(0).mmPerCount();
+    double worst = 0.0;
+    const XyPoint targets[] = {{160, 150},    {150.3, 150}, {100, 120},
+                               {100.05, 120}, {180, 170},   {179.9, 170.1}};
+    for (XyPoint t : targets) {
+        SCOPED_TRACE("to (" + std::to_string(t.x) + ", " + std::to_string(t.y) + ")");
+        s.controller().moveTo(t, 0.3);
+        ASSERT_TRUE(
+            s.runUntil([&] { return inAlarm(s) || !s.controller().motion().busy(); }, 20.0));
+        ASSERT_FALSE(inAlarm(s));
+        double off = 0.0;
+        for (int i = 0; i < 25; ++i) {  // 0.5 s after the move was done
+            s.step();
+            off = std::max(
+                {off, std::abs(table.positionMm(0) - t.x), std::abs(table.positionMm(1) - t.y)});
+        }
+        EXPECT_LT(off, twoCounts);
+        worst = std::max(worst, off);
+    }
+    std::printf("20 ms period, x3: at most %.3f mm from the target after done\n", worst);
+}
+
 // PROBE: moves, then idle: does the count change at rest (limit cycle), alarm, end outside window.
 TEST(DcTableLoadAttackProbe, DISABLED_KnockThenMoves) {
     for (double period : {0.001, 0.002, 0.005, 0.01, 0.02, 0.05}) {
@@ -213,6 +287,119 @@ TEST(DcTableLoadAttackProbe, DISABLED_DeadEncoderRightAfterAnUnexplainedCount) {
         }
     }
     std::printf("worst %.2f mm\n", worst);
+}
+
+// PROBE: a held load, then a move; the load removed at the move's start (or kept); the encoder
+// dead 0.3 s into the move. Also the seed-signed law with loads just above friction, a jam
+// under a load, anti-windup off under a load near the current limit.
+TEST(DcTableLoadAttackProbe, DISABLED_StaleHoldAndOthers) {
+    double worst = 0.0;
+    for (double load : {-30.0, -25.0, -10.0, -5.0, 5.0, 10.0, 25.0, 30.0}) {
+        for (int removeAt : {0, 1, 2}) {  // 0 kept, 1 removed at the move's start, 2 at 0.2 s
+            for (int dir : {+1, -1}) {
+                for (double feed : {0.05, 0.3, 1.0}) {
+                    MachineProfile profile = test::tableProfileForMoves();
+                    XySessionMake made = makeXySession(profile, 1, {150, 150});
+                    XySession& s = *made.session;
+                    auto& table = dynamic_cast<SimDcTable&>(s.plant());
+                    XyController& c = s.controller();
+                    s.runUntil([] { return false; }, 0.05);
+                    table.axis(0).setLoadPercent(load);
+                    s.runUntil([&] { return inAlarm(s); }, 2.0);
+                    if (inAlarm(s)) {
+                        std::printf("load %.0f: alarm %d while holding\n", load,
+                                    static_cast<int>(c.status().lastAlarm));
+                        break;
+                    }
+                    if (removeAt == 1) table.axis(0).setLoadPercent(0.0);
+                    c.moveTo({150.0 + 120.0 * dir, 150}, feed);
+                    s.runUntil([&] { return inAlarm(s); }, 0.2);
+                    if (removeAt == 2) table.axis(0).setLoadPercent(0.0);
+                    s.runUntil([&] { return inAlarm(s); }, 0.1);
+                    const double atFault = table.positionMm(0);
+                    table.setEncoderStuck(0, true);
+                    const double t0 = s.elapsedS();
+                    s.runUntil([&] { return inAlarm(s); }, 30.0);
+                    const double dt = s.elapsedS() - t0;
+                    table.axis(0).setLoadPercent(0.0);
+                    s.runUntil([] { return false; }, 1.0);
+                    const double rest = std::abs(table.positionMm(0) - atFault);
+                    worst = std::max(worst, rest);
+                    std::printf(
+                        "held %+.0f remove %d dir %+d F%.0f: alarm %d after %.3f s, %.2f mm%s\n",
+                        load, removeAt, dir, feed * 100, static_cast<int>(c.status().lastAlarm), dt,
+                        rest, rest > 20.0 ? "  <<<" : "");
+                }
+            }
+        }
+    }
+    std::printf("stale hold worst %.2f mm\n", worst);
+    // The seed-signed law, a load just above friction at rest: any alarm within 10 s?
+    for (DcLaw law : {DcLaw::SeedSigned, DcLaw::Seed, DcLaw::Engineered}) {
+        for (double mass : {0.1, 1.0, 3.0, 20.0}) {
+            for (double load : {3.1, 3.5, 4.0, 5.0, 6.0, -6.0, 10.0}) {
+                MachineProfile profile = test::tableProfileForMoves(law);
+                profile.dcTable.massFactor = mass;
+                XySessionMake made = makeXySession(profile, 1, {150, 150});
+                XySession& s = *made.session;
+                auto& table = dynamic_cast<SimDcTable&>(s.plant());
+                s.runUntil([] { return false; }, 0.05);
+                table.axis(1).setLoadPercent(load);
+                s.runUntil([&] { return inAlarm(s); }, 10.0);
+                std::printf(
+                    "law %d mass %.1f load %.1f at rest: alarm %d at %.3f s, y off %.3f mm, drive "
+                    "%.2f\n",
+                    static_cast<int>(law), mass, load,
+                    static_cast<int>(s.controller().status().lastAlarm), s.elapsedS(),
+                    table.positionMm(1) - 150.0, table.axis(1).state().drivePercent);
+            }
+        }
+    }
+    // A jam under a load, at rest and in a move.
+    for (double load : {0.0, 5.0, -5.0, 25.0}) {
+        for (int moving : {0, 1}) {
+            MachineProfile profile = test::tableProfileForMoves();
+            XySessionMake made = makeXySession(profile, 1, {150, 150});
+            XySession& s = *made.session;
+            auto& table = dynamic_cast<SimDcTable&>(s.plant());
+            s.runUntil([] { return false; }, 0.05);
+            table.axis(0).setLoadPercent(load);
+            s.runUntil([&] { return inAlarm(s); }, 1.0);
+            if (moving) {
+                s.controller().moveTo({250, 150}, 0.5);
+                s.runUntil([] { return false; }, 0.3);
+            }
+            table.setJammed(0, true);
+            const double t0 = s.elapsedS();
+            const bool a = s.runUntil([&] { return inAlarm(s); }, 10.0);
+            std::printf("jam load %.0f moving %d: alarm %d (%d) after %.3f s\n", load, moving,
+                        static_cast<int>(s.controller().status().lastAlarm), a, s.elapsedS() - t0);
+        }
+    }
+    // Anti-windup off, loads near the current limit, held then removed.
+    for (double load : {20.0, 28.0, 30.0, 32.0, 34.0, -30.0}) {
+        MachineProfile profile = test::tableProfileForMoves();
+        XySessionMake made = makeXySession(profile, 1, {150, 150});
+        XySession& s = *made.session;
+        auto& table = dynamic_cast<SimDcTable&>(s.plant());
+        dynamic_cast<DcTableMotion&>(s.controller().motion()).setAntiWindup(false);
+        s.runUntil([] { return false; }, 0.05);
+        table.axis(0).setLoadPercent(load);
+        s.runUntil([&] { return inAlarm(s); }, 3.0);
+        const int a1 = static_cast<int>(s.controller().status().lastAlarm);
+        const double off1 = table.positionMm(0) - 150.0;
+        table.axis(0).setLoadPercent(0.0);
+        double peak = 0.0;
+        for (int i = 0; i < 600 && !inAlarm(s); ++i) {
+            s.step();
+            peak = std::max(peak, std::abs(table.positionMm(0) - 150.0));
+        }
+        std::printf(
+            "antiwindup off load %.0f: alarm %d held at %.3f; removed: alarm %d peak %.3f end %.3f "
+            "drive %.2f\n",
+            load, a1, off1, static_cast<int>(s.controller().status().lastAlarm), peak,
+            table.positionMm(0) - 150.0, table.axis(0).state().drivePercent);
+    }
 }
 
 }  // namespace
