@@ -13,9 +13,12 @@ namespace {
 /// the step's settling predicted outside 15 % in 6 of 200 at 1 x (worst 0.76), 1 at 2 x (0.78),
 /// 2 at 4 x (0.84); 8 x made the identification's positioned return ring.
 constexpr double kSettleIntegralBoost = 4.0;
-/// Periods in the window before a push out of it reads as a load, not as the approach's
-/// overshoot passing through. Chosen: the table's own in-position time (4 periods, 20 ms).
-constexpr int kRestingTicks = 4;
+/// Time in the window, s, after which the integral is dropped, and a push out of the window
+/// reads as a load, not as the approach's overshoot passing through. Chosen: the table's own
+/// in-position time (dc_table_motion.cpp: 20 ms, 4 periods at 5 ms, 1 at 20 ms; counted in
+/// periods, a 20 ms period kept the approach's integral 80 ms past "in position" and a move
+/// reported done rang 0.67 mm off its target, DcTableLoadAttack).
+constexpr double kRestingS = 0.02;
 }  // namespace
 
 DcAxisLoop::DcAxisLoop(const DcAxisParams& axis, double clampPercent, DcLaw law,
@@ -27,16 +30,23 @@ void DcAxisLoop::reset() {
     integral_ = 0.0;
     u_ = 0.0;
     loadSeen_ = false;
+    restingS_ = 0.0;
     restingTicks_ = 0;
 }
 
 void DcAxisLoop::setPhase(Phase p) {
-    // Pushed out of the window after resting in it (not a move's overshoot passing through):
-    // something pushes the axis while its drive rests, a load.
-    if (phase_ == Phase::InPosition && p == Phase::Settling && restingTicks_ > kRestingTicks)
+    // Pushed out of the window after resting in it, its integral dropped (not a move's
+    // overshoot passing through): something pushes the axis while its drive rests, a load.
+    // At least two periods: at a long period (20 ms) one sample in the window is the
+    // in-position time, and a heavy payload's ring passes through it in one (DcTableLoadAttack).
+    if (phase_ == Phase::InPosition && p == Phase::Settling && rested() && restingTicks_ >= 2)
         loadSeen_ = true;
-    restingTicks_ = p == Phase::InPosition ? restingTicks_ + 1 : 0;
+    if (p != Phase::InPosition) restingS_ = 0.0, restingTicks_ = 0;
     phase_ = p;
+}
+
+bool DcAxisLoop::rested() const {
+    return restingS_ >= kRestingS - 1e-9;
 }
 
 double DcAxisLoop::update(double setpointMm, double velocityMmS, double accelMmS2,
@@ -69,8 +79,9 @@ double DcAxisLoop::update(double setpointMm, double velocityMmS, double accelMmS
         // held where the window is, not let go to push the axis out again.
         // Until the axis has rested in the window for the in-position time, the integral is
         // kept too: a load that pushes it straight out again is met by what the integral had.
-        if (loadSeen_ || restingTicks_ <= kRestingTicks)
-            return u_ = std::clamp(g.ki * integral_, -clamp_, clamp_);
+        restingS_ += dtS;
+        ++restingTicks_;
+        if (loadSeen_ || !rested()) return u_ = std::clamp(g.ki * integral_, -clamp_, clamp_);
         integral_ = 0.0;
         return u_ = 0.0;
     }

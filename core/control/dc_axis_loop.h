@@ -75,8 +75,11 @@ class DcAxisLoop {
     double integral_ = 0.0;   ///< engineered: integral of e, mm.s
     double u_ = 0.0;
     Phase phase_ = Phase::Tracking;
+    /// The axis has rested in its window for the in-position time (kRestingS).
+    bool rested() const;
     bool loadSeen_ = false;  ///< see loadSeen()
-    int restingTicks_ = 0;   ///< consecutive periods in Phase::InPosition
+    double restingS_ = 0.0;  ///< s in Phase::InPosition without a break
+    int restingTicks_ = 0;   ///< periods in Phase::InPosition without a break
 };
 
 }  // namespace trilho

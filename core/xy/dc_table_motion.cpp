@@ -219,13 +219,15 @@ bool DcTableMotion::checkEncoder(std::size_t k, std::int64_t counted, double dtS
     // A drive the way of the load's holding drive first holds the load (issue 33 item 7): only
     // what it adds runs the axis. Never the other way: a load it does not know of makes the
     // model slower, never faster, than the axis, so no evidence can raise a false alarm.
-    if (loadSizingS_[k] > 0.0) {
-        // A load pushed the axis and the count could not size it (learnLoad): the check takes
-        // the drive the loop has grown since as what holds it, for a bounded time.
-        loadHoldPercent_[k] = u;
-        loadSizingS_[k] = std::max(0.0, loadSizingS_[k] - dtS);
-    }
-    const double hold = loadHoldPercent_[k];
+    // A load pushed the axis at rest and the count could not size it (learnLoad): the check
+    // takes the drive the loop has grown since as what holds it, for a bounded time, and only
+    // at rest. The size is never kept: no count confirmed it, and a move (or the window's end)
+    // goes back to what the counts said (a knock's sized hold kept into a move blinded the
+    // check to a dead encoder for good: 162 mm, DcTableLoadAttack).
+    if (phase_ == Phase::Moving) loadSizingS_[k] = 0.0;
+    const bool sizing = loadSizingS_[k] > 0.0;
+    loadSizingS_[k] = std::max(0.0, loadSizingS_[k] - dtS);
+    const double hold = sizing ? u : loadHoldPercent_[k];
     const double push = hold != 0.0 && u * hold > 0.0 ? std::abs(u) - std::abs(hold) : std::abs(u);
     const double over = std::max(0.0, push - kStallDeadBandFriction * a.coulombPercent);
     const double target = over > 0.0 ? std::copysign(over * a.noLoadSpeedMmS / 100.0, u) : 0.0;

@@ -79,10 +79,10 @@ TEST_F(CliTrace, TheBytesAreThoseOfTheFormerWriter) {
           program("mesa_xy_quadrado.G")},
          0,
          // Issue 21 items 5-6: the table's loop finishes each move sooner; issue 33 item 7: it
-         // keeps its integral for the in-position time (4 periods), and the square ends 55 ms
-         // sooner (13.190 s).
-         165762,
-         "cb707f532d336b1492b1f84cea281720df474f07cdc29a61a00fd9c418937e48"},
+         // keeps its integral's drive (0.05 %) for the in-position time before dropping it, 3
+         // periods at each of the square's 11 stops (33 rows), and ends at the same 13.245 s.
+         166415,
+         "1d79b2a81a7fd2a9d581e713381596b7077120f07ec0e4b56ee07a489d9791e0"},
         {{QStringLiteral("--machine"), QStringLiteral("xy_plotter"), program("plotter_quadrado.G")},
          0,
          113024,

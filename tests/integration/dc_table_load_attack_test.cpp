@@ -24,12 +24,12 @@ bool inAlarm(XySession& s) {
 /// The bound XyTableFaults.AStuckEncoderStopsTheAxisWithin20mmAtEveryFeed states, mm.
 constexpr double kDeadEncoderBoundMm = 20.0;
 
-// DEFECT (bf79620, learnLoad / kLoadSizingS): a knock at rest (a load of 8 % for the one count
-// it takes, then gone) makes a count the drive could not have made, and the check follows the
-// drive as the load's for 0.5 s. A move begun at once with the encoder of that axis dead (at
-// 0 and 0.1 s into it): the drive the loop grows against the frozen count is taken as the
-// load's, the model never runs, and at the window's end the "hold" is the drive then (the 50 %
-// clamp), so the model stays blind for good: only the following error (alarm 3, 5 mm of a
+// Found by attack on bf79620, fixed (the sized hold only at rest, never kept): a knock at rest (a
+// load of 8 % for the one count it takes, then gone) makes a count the drive could not have made,
+// and the check follows the drive as the load's for 0.5 s. A move begun at once with the encoder of
+// that axis dead (at 0 and 0.1 s into it): the drive the loop grows against the frozen count is
+// taken as the load's, the model never runs, and at the window's end the "hold" is the drive then
+// (the 50 % clamp), so the model stays blind for good: only the following error (alarm 3, 5 mm of a
 // slow set point) stops it, after up to 1.1 s and 160 mm at 188 mm/s. Before bf79620 the same
 // runs stopped within 7.9 mm (alarm 16).
 TEST(DcTableLoadAttack, ADeadEncoderAtTheStartOfAMoveRightAfterAKnockIsCaughtWithin20mm) {
@@ -68,12 +68,12 @@ TEST(DcTableLoadAttack, ADeadEncoderAtTheStartOfAMoveRightAfterAKnockIsCaughtWit
                 worst);
 }
 
-// DEFECT (bf79620, learnLoad never runs in a move): a load of 25-30 % held at rest teaches the
-// check a holding drive of about the load's; the load then goes (the workpiece is lifted off)
-// as a move starts the way of that holding drive, on a level table. learnLoad does not run
-// while the profile moves, so the whole move's drive in that direction is discounted by a
-// load that is no longer there, and an encoder that dies 0.3 s into the move at F5 is caught
-// only after 23-30 mm of travel, past the 20 mm the check states for a level table.
+// Found by attack on bf79620, fixed (learnLoad learns from the counts of a move too): a load of
+// 25-30 % held at rest teaches the check a holding drive of about the load's; the load then goes
+// (the workpiece is lifted off) as a move starts the way of that holding drive, on a level table.
+// learnLoad does not run while the profile moves, so the whole move's drive in that direction is
+// discounted by a load that is no longer there, and an encoder that dies 0.3 s into the move at F5
+// is caught only after 23-30 mm of travel, past the 20 mm the check states for a level table.
 TEST(DcTableLoadAttack, ALoadGoneAtTheStartOfAMoveDoesNotBlindTheDeadEncoderCheck) {
     double worst = 0.0;
     for (double load : {25.0, 30.0}) {
@@ -106,12 +106,12 @@ TEST(DcTableLoadAttack, ALoadGoneAtTheStartOfAMoveDoesNotBlindTheDeadEncoderChec
                 worst);
 }
 
-// DEFECT (bf79620, kRestingTicks counts periods, not the in-position time): at a 20 ms period
-// (dcTable.samplePeriodS may be 1-50 ms) the in-position time is one period, but the integral
-// is kept for four (80 ms); a payload x3 passing through the window for one sample is declared
-// in position (the motion idle, the move done) and, the approach's integral kept, rings on
-// after it: up to 0.67 mm from the target (6 counts) with no move in progress. Before bf79620
-// the same moves stayed within 0.15 mm once done.
+// Found by attack on bf79620, fixed (the resting time in seconds, and two periods before a push out
+// reads as a load): at a 20 ms period (dcTable.samplePeriodS may be 1-50 ms) the in-position time
+// is one period, but the integral is kept for four (80 ms); a payload x3 passing through the window
+// for one sample is declared in position (the motion idle, the move done) and, the approach's
+// integral kept, rings on after it: up to 0.67 mm from the target (6 counts) with no move in
+// progress. Before bf79620 the same moves stayed within 0.15 mm once done.
 TEST(DcTableLoadAttack, AtA20msPeriodAMoveDoneStaysWithinTwoCountsOfItsTarget) {
     MachineProfile profile = test::tableProfileForMoves();
     profile.dcTable.massFactor = 3.0;

@@ -127,12 +127,12 @@ TEST(DcAxisLoop, InPositionDropsTheApproachsIntegral) {
     loop.setPhase(DcAxisLoop::Phase::Settling);
     for (int i = 0; i < 50; ++i)
         loop.update(count, 0.0, 0.0, 0.0, dt);  // a count short for 0.25 s
-    // In the window: the integral's drive is kept, frozen, for the in-position time (4
-    // periods), then dropped.
+    // In the window: the integral's drive is kept, frozen, until the axis has rested there for
+    // the in-position time (20 ms: the fourth period of 5 ms), then dropped.
     loop.setPhase(DcAxisLoop::Phase::InPosition);
     const double kept = loop.update(0.0, 0.0, 0.0, 0.0, dt);
     EXPECT_GT(kept, 3.0);  // a count short for 0.25 s at 4 x ki: 40 x 0.106 = 4.2 %
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < 2; ++i) {
         loop.setPhase(DcAxisLoop::Phase::InPosition);
         EXPECT_EQ(loop.update(0.0, 0.0, 0.0, 0.0, dt), kept);
     }
@@ -172,6 +172,21 @@ TEST(DcAxisLoop, ALoadThatPushesTheAxisOutOfItsWindowIsHeldByTheIntegral) {
     }
     loop.reset();  // a cut forgets the load
     EXPECT_FALSE(loop.loadSeen());
+    // At a 20 ms period the in-position time is one period: dropped at once, as before.
+    DcAxisLoop slow(t.x, t.pwmClampPercent, DcLaw::Engineered, step);
+    slow.setPhase(DcAxisLoop::Phase::Settling);
+    for (int i = 0; i < 10; ++i)
+        slow.update(count, 0.0, 0.0, 0.0, 0.02);
+    slow.setPhase(DcAxisLoop::Phase::InPosition);
+    EXPECT_EQ(slow.update(0.0, 0.0, 0.0, 0.0, 0.02), 0.0);
+    slow.setPhase(DcAxisLoop::Phase::Settling);  // one sample in the window: passing through
+    EXPECT_FALSE(slow.loadSeen());
+    for (int i = 0; i < 2; ++i) {
+        slow.setPhase(DcAxisLoop::Phase::InPosition);
+        EXPECT_EQ(slow.update(0.0, 0.0, 0.0, 0.0, 0.02), 0.0);
+    }
+    slow.setPhase(DcAxisLoop::Phase::Settling);  // pushed out after resting two: a load
+    EXPECT_TRUE(slow.loadSeen());
 }
 
 TEST(SimDcAxis, SteadySpeedAndEncoderQuantisation) {
