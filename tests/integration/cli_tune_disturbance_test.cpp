@@ -217,6 +217,44 @@ TEST(CliTuneDisturbance, OnTheDcTableATorquePerAxis) {
     EXPECT_TRUE(o[QStringLiteral("steady_deviation_mm")].isNull());
 }
 
+// docs/teaching.md lesson 20's table: 10 % on Y, the figures it prints.
+TEST(CliTuneDisturbance, Lesson20TheDcTablesTable) {
+    auto run = [](const QStringList& more) {
+        const CliResult r = runCli(
+            QStringList{QStringLiteral("tune"), QStringLiteral("disturbance"),
+                        QStringLiteral("--machine"), QStringLiteral("xy_dc_table"),
+                        QStringLiteral("--axis"), QStringLiteral("y"),
+                        QStringLiteral("--torque-pct"), QStringLiteral("10"),
+                        QStringLiteral("--json")} +
+            more);
+        return QJsonDocument::fromJson(r.out.toUtf8()).object();
+    };
+    auto num = [](const QJsonObject& o, const char* key) {
+        return o[QLatin1String(key)].toDouble(std::nan(""));
+    };
+    QJsonObject o = run({});
+    EXPECT_NEAR(num(o, "peak_deviation_mm"), 0.300, 0.0005);
+    EXPECT_NEAR(num(o, "recovery_time_s"), 0.205, 1e-9);
+    EXPECT_EQ(num(o, "steady_deviation_mm"), 0.0);
+    o = run({QStringLiteral("--ki"), QStringLiteral("10")});
+    EXPECT_NEAR(num(o, "peak_deviation_mm"), 0.400, 0.0005);
+    EXPECT_NEAR(num(o, "recovery_time_s"), 0.590, 1e-9);
+    o = run({QStringLiteral("--ki"), QStringLiteral("0")});
+    EXPECT_NEAR(num(o, "steady_deviation_mm"), 0.400, 0.0005);
+    EXPECT_NEAR(num(o, "proportional_deviation_mm"), 0.471, 0.0005);
+    EXPECT_TRUE(o[QStringLiteral("recovery_time_s")].isNull());
+    o = run({QStringLiteral("--ki"), QStringLiteral("0"), QStringLiteral("--while"),
+             QStringLiteral("move")});
+    EXPECT_NEAR(num(o, "peak_deviation_mm"), 1.001, 0.0005);
+    EXPECT_NEAR(num(o, "steady_deviation_mm"), 0.755, 0.0005);
+    o = run({QStringLiteral("--law"), QStringLiteral("seed-signed")});
+    EXPECT_EQ(o[QStringLiteral("law")].toString(), QStringLiteral("seed-signed"));
+    EXPECT_NEAR(num(o, "steady_deviation_mm"), 3.90, 0.005);
+    o = run({QStringLiteral("--law"), QStringLiteral("seed")});
+    EXPECT_NEAR(num(o, "peak_deviation_mm"), 25.2, 0.05);
+    EXPECT_TRUE(o[QStringLiteral("abort_reason")].toString().contains(QLatin1String("alarm 3")));
+}
+
 TEST(CliTuneDisturbance, TextSaysTheThreeNumbers) {
     const CliResult r =
         runCli({QStringLiteral("tune"), QStringLiteral("disturbance"), QStringLiteral("--force-n"),
