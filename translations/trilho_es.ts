@@ -1020,6 +1020,10 @@
 <context>
     <name>trilho::ui::DisturbanceView</name>
     <message>
+        <source>Set the load torque and when it comes, then Run: the window&apos;s axis, law, gains, period, mass and seed are used. Try Ki 0, then Ki 40.</source>
+        <translation>Defina el par de carga y cuándo llega, luego Ejecutar: se usan el eje, la ley, las ganancias, el período, la masa y la semilla de la ventana. Pruebe Ki 0, luego Ki 40.</translation>
+    </message>
+    <message>
         <source>Set the load and when it comes, then Run: the window&apos;s law, gains, period, mass and seed are used. Try Ki 0, then Ki 5.</source>
         <translation>Defina la carga y cuándo llega, luego Ejecutar: se usan la ley, las ganancias, el período, la masa y la semilla de la ventana. Pruebe Ki 0, luego Ki 5.</translation>
     </message>
@@ -1034,6 +1038,10 @@
     <message>
         <source>No metrics: %1</source>
         <translation>Sin métricas: %1</translation>
+    </message>
+    <message>
+        <source>Load %1 % of the stall torque on axis %2 at %3 s, Kp %4, Ki %5, Kff %6&lt;br&gt;</source>
+        <translation>Carga del %1 % del par de arranque en el eje %2 a los %3 s, Kp %4, Ki %5, Kff %6&lt;br&gt;</translation>
     </message>
     <message>
         <source>Load %1 N at %2 s, Kp %3, Ki %4, Kd %5&lt;br&gt;</source>
@@ -1060,12 +1068,24 @@
         <translation>Desviación en régimen: &lt;b&gt;%1 mm&lt;/b&gt; (media de los últimos %2 s)&lt;br&gt;</translation>
     </message>
     <message>
+        <source>A PWM drive, no speed loop: with Ki 0 the loop rests about %1 mm off, where its drive less friction and a duty step meets the load, give or take friction&apos;s band</source>
+        <translation>Accionamiento PWM, sin lazo de velocidad: con Ki 0 el lazo se detiene a unos %1 mm, donde su accionamiento menos la fricción y un paso de ciclo iguala la carga, más o menos la banda de la fricción</translation>
+    </message>
+    <message>
+        <source>A PWM drive, no speed loop: the motor&apos;s back EMF is its stiffness</source>
+        <translation>Accionamiento PWM, sin lazo de velocidad: la fuerza contraelectromotriz del motor es su rigidez</translation>
+    </message>
+    <message>
         <source>Amplifier stiffness %1 N per mm/s: with Ki 0 the loop settles where Kp&apos;s drive gives back the speed the load adds, %2 mm</source>
         <translation>Rigidez del amplificador %1 N por mm/s: con Ki 0 el lazo se asienta donde el accionamiento de Kp devuelve la velocidad que la carga añade, %2 mm</translation>
     </message>
     <message>
         <source>The amplifier is an ideal speed source: no load slows it</source>
         <translation>El amplificador es una fuente de velocidad ideal: ninguna carga lo frena</translation>
+    </message>
+    <message>
+        <source>Load torque on the axis</source>
+        <translation>Par de carga en el eje</translation>
     </message>
     <message>
         <source>Load on the platform</source>
@@ -1098,6 +1118,10 @@
     <message>
         <source>deviation (mm)</source>
         <translation>desviación (mm)</translation>
+    </message>
+    <message>
+        <source>load (% of stall torque)</source>
+        <translation>carga (% del par de arranque)</translation>
     </message>
     <message>
         <source>load (N)</source>

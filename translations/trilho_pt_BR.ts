@@ -1020,6 +1020,10 @@
 <context>
     <name>trilho::ui::DisturbanceView</name>
     <message>
+        <source>Set the load torque and when it comes, then Run: the window&apos;s axis, law, gains, period, mass and seed are used. Try Ki 0, then Ki 40.</source>
+        <translation>Defina o torque de carga e quando ele vem, depois Executar: usam-se o eixo, a lei, os ganhos, o período, a massa e a semente da janela. Experimente Ki 0, depois Ki 40.</translation>
+    </message>
+    <message>
         <source>Set the load and when it comes, then Run: the window&apos;s law, gains, period, mass and seed are used. Try Ki 0, then Ki 5.</source>
         <translation>Defina a carga e quando ela vem, depois Executar: usam-se a lei, os ganhos, o período, a massa e a semente da janela. Experimente Ki 0, depois Ki 5.</translation>
     </message>
@@ -1034,6 +1038,10 @@
     <message>
         <source>No metrics: %1</source>
         <translation>Sem métricas: %1</translation>
+    </message>
+    <message>
+        <source>Load %1 % of the stall torque on axis %2 at %3 s, Kp %4, Ki %5, Kff %6&lt;br&gt;</source>
+        <translation>Carga de %1 % do torque de partida no eixo %2 em %3 s, Kp %4, Ki %5, Kff %6&lt;br&gt;</translation>
     </message>
     <message>
         <source>Load %1 N at %2 s, Kp %3, Ki %4, Kd %5&lt;br&gt;</source>
@@ -1060,12 +1068,24 @@
         <translation>Desvio em regime: &lt;b&gt;%1 mm&lt;/b&gt; (média dos últimos %2 s)&lt;br&gt;</translation>
     </message>
     <message>
+        <source>A PWM drive, no speed loop: with Ki 0 the loop rests about %1 mm off, where its drive less friction and a duty step meets the load, give or take friction&apos;s band</source>
+        <translation>Acionamento PWM, sem malha de velocidade: com Ki 0 a malha para cerca de %1 mm fora, onde seu acionamento menos o atrito e um passo de ciclo encontra a carga, mais ou menos a faixa do atrito</translation>
+    </message>
+    <message>
+        <source>A PWM drive, no speed loop: the motor&apos;s back EMF is its stiffness</source>
+        <translation>Acionamento PWM, sem malha de velocidade: a força contraeletromotriz do motor é sua rigidez</translation>
+    </message>
+    <message>
         <source>Amplifier stiffness %1 N per mm/s: with Ki 0 the loop settles where Kp&apos;s drive gives back the speed the load adds, %2 mm</source>
         <translation>Rigidez do amplificador %1 N por mm/s: com Ki 0 a malha para onde o acionamento de Kp devolve a velocidade que a carga acrescenta, %2 mm</translation>
     </message>
     <message>
         <source>The amplifier is an ideal speed source: no load slows it</source>
         <translation>O amplificador é uma fonte de velocidade ideal: nenhuma carga o desacelera</translation>
+    </message>
+    <message>
+        <source>Load torque on the axis</source>
+        <translation>Torque de carga no eixo</translation>
     </message>
     <message>
         <source>Load on the platform</source>
@@ -1098,6 +1118,10 @@
     <message>
         <source>deviation (mm)</source>
         <translation>desvio (mm)</translation>
+    </message>
+    <message>
+        <source>load (% of stall torque)</source>
+        <translation>carga (% do torque de partida)</translation>
     </message>
     <message>
         <source>load (N)</source>
