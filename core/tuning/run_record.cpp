@@ -113,6 +113,7 @@ QJsonObject stepMetricsToJson(const StepMetrics& m) {
     o[QStringLiteral("peak_mm")] = number(m.peakMm);
     o[QStringLiteral("peak_time_s")] = number(m.peakTimeS);
     o[QStringLiteral("steady_state_error_counts")] = number(m.steadyStateErrorCounts);
+    o[QStringLiteral("final_error_mm")] = number(m.finalErrorMm);
     o[QStringLiteral("iae")] = number(m.iae);
     o[QStringLiteral("itae")] = number(m.itae);
     o[QStringLiteral("ise")] = number(m.ise);

@@ -131,6 +131,7 @@ StepMetrics measureStep(const StepSignals& s) {
                                    ? kNaN
                                    : (s.commandedTargetMm ? m.targetMm : sp[n - 1]) - x[n - 1];
     m.steadyStateErrorCounts *= s.countsPerMm;
+    m.finalErrorMm = (s.commandedTargetMm ? m.targetMm : sp[n - 1]) - x[n - 1];
     m.iae = iae, m.itae = itae, m.ise = ise;
     m.ok = true;
     return m;

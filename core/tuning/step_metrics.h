@@ -63,6 +63,9 @@ struct StepMetrics {
     /// (target - position) x counts/mm at the end; with a commanded target, NaN when the
     /// response never settled within the 2 % band (no steady state was reached).
     double steadyStateErrorCounts = 0.0;
+    /// (target - position) at the last sample, mm, settled or not: where the run ended (a law
+    /// that stops short, the seed's, never settles, and says so here).
+    double finalErrorMm = 0.0;
     double iae = 0.0;                  ///< mm.s
     double itae = 0.0;                 ///< mm.s^2
     double ise = 0.0;                  ///< mm^2.s

@@ -124,6 +124,15 @@ TEST(CliTuneDcTable, StepRunsEachOfTheTablesThreeLaws) {
     EXPECT_NEAR(so[QStringLiteral("peak_mm")].toDouble(), 8.8995, 1e-4);
     EXPECT_TRUE(so[QStringLiteral("rise_time_s")].isNull());
     EXPECT_TRUE(so[QStringLiteral("settling_time_s")].isNull());
+    // Where it ended, said (the report said only "not reached" for the steady state, and "ok"):
+    // 10 - 8.8995 mm short at the last sample, in the JSON and the text.
+    EXPECT_NEAR(so[QStringLiteral("final_error_mm")].toDouble(), 10.0 - 8.8995, 1e-4);
+    EXPECT_TRUE(so[QStringLiteral("steady_state_error_counts")].isNull());
+    const CliResult seedText =
+        runCli(table("step", "x", {QStringLiteral("--amplitude"), QStringLiteral("10"),
+                                   QStringLiteral("--law"), QStringLiteral("seed")}));
+    EXPECT_TRUE(seedText.out.contains(QLatin1String("final error (last sample)    1.1005 mm")))
+        << seedText.out.toStdString();
     // The same gains on the signed error: closer (9.54 mm) but friction holds it outside the
     // window until the test's time ends (exit 3).
     const CliResult signedRun = step("seed-signed", "0.005");

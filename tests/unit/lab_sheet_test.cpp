@@ -78,7 +78,7 @@ TEST(LabSheet, RowsAreTheMetricsOwnAndABareTraceSaysNotRecorded) {
     ASSERT_TRUE(sheet.runs[0].metrics.ok);
     const std::vector<LabSheetRow> rows = labSheetRows(sheet);
     const std::vector<StepMetricLine> lines = stepMetricLines(sheet.runs[0].metrics);
-    ASSERT_EQ(lines.size(), 13u);
+    ASSERT_EQ(lines.size(), 14u);
     std::size_t metric = 0;
     for (const LabSheetRow& row : rows) {
         ASSERT_EQ(row.cells.size(), 1u);
@@ -93,7 +93,7 @@ TEST(LabSheet, RowsAreTheMetricsOwnAndABareTraceSaysNotRecorded) {
         EXPECT_EQ(row.cells[0], lines[metric].value);
         ++metric;
     }
-    EXPECT_EQ(metric, 13u);
+    EXPECT_EQ(metric, 14u);
     EXPECT_EQ(rows.back().cells[0], stepMetricLines(sheet.runs[0].metrics).back().value);
     EXPECT_EQ(labSheetMachines(sheet), QStringLiteral("not recorded"));
 }
@@ -110,7 +110,7 @@ TEST(LabSheet, ARunWithNoStepFirstKeepsTheOthersMetricRows) {
         EXPECT_EQ(row.cells[0], QStringLiteral("no step"));
         EXPECT_NE(row.cells[1], QStringLiteral("no step"));
     }
-    EXPECT_EQ(metricRows, 13);
+    EXPECT_EQ(metricRows, 14);
 }
 
 TEST(LabSheet, AMillionTicksAreDrawnWithTheirOneTickPeak) {

@@ -151,7 +151,7 @@ class WorkbenchLabSheetTest : public QObject {
                 QVERIFY2(out.contains(line), qPrintable(line + out));
             }
         }
-        QCOMPARE(metricRows, 13);
+        QCOMPARE(metricRows, 14);  // with the final error (last sample)
         // Lesson 1's figures (docs/teaching.md): 580 ms rise at 10 ms, 3.86 % over at 1 ms.
         QVERIFY(out.contains(QStringLiteral("  rise time 10-90 %            0.5800 s\n")));
         QVERIFY(out.contains(QStringLiteral("  overshoot                    3.860 %\n")));

@@ -28,6 +28,7 @@ std::vector<StepMetricLine> stepMetricLines(const StepMetrics& m) {
     row("peak (from the start)",
         QStringLiteral("%1 mm at %2 s").arg(fmt(m.peakMm, 4), fmt(m.peakTimeS, 4)), "");
     row("steady-state error", fmt(m.steadyStateErrorCounts, 2), "counts");
+    row("final error (last sample)", fmt(m.finalErrorMm, 4), "mm");
     row("IAE", fmt(m.iae, 6), "mm.s");
     row("ITAE", fmt(m.itae, 6), "mm.s2");
     row("ISE", fmt(m.ise, 6), "mm2.s");
