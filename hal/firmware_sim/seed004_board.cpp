@@ -41,6 +41,7 @@ std::unique_ptr<Seed004Board> Seed004Board::load(const Seed004BoardOptions& o, s
     if (!chip) return nullptr;
     std::unique_ptr<Seed004Board> b(new Seed004Board(o.plant, o.plantSeed));
     b->chip_ = std::move(chip);
+    b->keepOcrWrites_ = o.keepOcrWrites;
     avr_t* avr = b->chip_->core();
     avr->sleep = &noSleep;
     b->uart_ = std::make_unique<UartLine>(*b->chip_, o.lineBaud);
@@ -172,6 +173,7 @@ std::uint64_t Seed004Board::onStep(avr_t*, std::uint64_t when, void* self) {
 
 void Seed004Board::onOcrWrite(avr_t*, std::uint16_t address, std::uint8_t, void* self) {
     auto* b = static_cast<Seed004Board*>(self);
+    if (!b->keepOcrWrites_) return;
     const int channel = address == kOcr1A ? 0 : 1;
     b->ocrWrites_.push_back({b->chip_->cycle(),
                              channel,

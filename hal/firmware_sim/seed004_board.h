@@ -34,6 +34,10 @@ struct Seed004BoardOptions {
     DcTableParams plant;  ///< the table (its axes' mechanics)
     std::uint64_t plantSeed = 1;  ///< SimDcTable's friction spread
     double stepS = 25e-6;         ///< plant step, s (one encoder count is >= 0.7 ms at 150 mm/s)
+    /// Keep every OCR1A / OCR1B write (ocrWrites()), for a test that reads the law's output:
+    /// 33 bytes each, some 23 MB an hour of a running board, so off for a board that runs on
+    /// (trilho-device).
+    bool keepOcrWrites = false;
 };
 
 /// A write of OCR1A (channel 0, x) or OCR1B (channel 1, y) by the program.
@@ -76,7 +80,8 @@ class Seed004Board {
     std::uint16_t icr1() const;
     /// Rising edges put on INT4 (0) / INT6 (1).
     std::uint64_t encoderEdges(int axis) const { return edges_[static_cast<std::size_t>(axis)]; }
-    /// Every OCR1A / OCR1B write, in order (the law's output, sample by sample).
+    /// Every OCR1A / OCR1B write, in order (the law's output, sample by sample); empty unless
+    /// the options asked to keep them.
     const std::vector<OcrWrite>& ocrWrites() const { return ocrWrites_; }
 
   private:
@@ -98,6 +103,7 @@ class Seed004Board {
     std::array<bool, 2> encoderBLevel_{};
     std::array<std::uint64_t, 2> edges_{};
     std::vector<OcrWrite> ocrWrites_;
+    bool keepOcrWrites_ = false;
 };
 
 }  // namespace trilho

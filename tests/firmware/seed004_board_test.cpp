@@ -17,6 +17,7 @@ using namespace trilho;
 namespace {
 std::unique_ptr<Seed004Board> boot(const char* elf, double baud = 9600.0) {
     Seed004BoardOptions o;
+    o.keepOcrWrites = true;  // the law's output, read below
     o.elfPath = elf;
     o.lineBaud = baud;
     std::string error;
@@ -400,6 +401,21 @@ TEST(Seed004Attack, BadRunTimesAndOptionsAreRefused) {
     o.lineBaud = 0.0;
     EXPECT_FALSE(Seed004Board::load(o, &error));
     EXPECT_NE(error.find("line rate"), std::string::npos) << error;
+}
+
+// A board that runs on (trilho-device) keeps no log of the law's writes: it grew by 33 bytes a
+// write, some 23 MB an hour. A move's writes happen (the duty changes) and none is kept.
+TEST(Seed004Attack, ABoardThatRunsOnKeepsNoLogOfItsWrites) {
+    Seed004BoardOptions o;
+    o.elfPath = TRILHO_SEED004_ELF;
+    std::string error;
+    auto b = Seed004Board::load(o, &error);
+    ASSERT_TRUE(b) << error;
+    ASSERT_TRUE(b->runFor(0.1));
+    sendPaced(*b, {0, 180, 0, 120});
+    ASSERT_TRUE(b->runFor(0.5));
+    EXPECT_GT(b->ocr(0), 0u);  // the X loop drives
+    EXPECT_TRUE(b->ocrWrites().empty());
 }
 
 // A host at another rate than the program's UBRR0 (trilho-device --baud 19200 against the

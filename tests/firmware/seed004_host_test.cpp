@@ -20,6 +20,7 @@ namespace {
 
 std::unique_ptr<Seed004Board> bootMain() {
     Seed004BoardOptions o;
+    o.keepOcrWrites = true;  // the law's output, read below
     o.elfPath = TRILHO_SEED004_ELF;
     std::string error;
     auto b = Seed004Board::load(o, &error);

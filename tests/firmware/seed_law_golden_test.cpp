@@ -82,6 +82,7 @@ LoopRun trilhoSeedLaw(const MachineProfile& profile) {
 
 LoopRun firmware(const MachineProfile& profile) {
     Seed004BoardOptions o;
+    o.keepOcrWrites = true;  // the law's output, read below
     o.elfPath = TRILHO_SEED004_ELF;
     o.plant = profile.dcTable;
     o.plantSeed = 1;
@@ -218,6 +219,7 @@ std::vector<ChipMove> firmwareMoves(const MachineProfile& profile,
                                     const std::vector<std::array<int, 2>>& targets,
                                     std::vector<BoardState>* states = nullptr) {
     Seed004BoardOptions o;
+    o.keepOcrWrites = true;  // the law's output, read below
     o.elfPath = TRILHO_SEED004_ELF;
     o.plant = profile.dcTable;
     o.plantSeed = 1;
