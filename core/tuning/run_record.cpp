@@ -123,6 +123,7 @@ QJsonObject stepMetricsToJson(const StepMetrics& m) {
         m.saturationKnown ? number(m.saturatedTimeS) : QJsonValue(QJsonValue::Null);
     o[QStringLiteral("longest_saturation_s")] =
         m.saturationKnown ? number(m.longestSaturationS) : QJsonValue(QJsonValue::Null);
+    o[QStringLiteral("saturated_after_settling_s")] = number(m.saturatedAfterSettlingS);
     return o;
 }
 

@@ -132,6 +132,13 @@ StepMetrics measureStep(const StepSignals& s) {
                                    : (s.commandedTargetMm ? m.targetMm : sp[n - 1]) - x[n - 1];
     m.steadyStateErrorCounts *= s.countsPerMm;
     m.finalErrorMm = (s.commandedTargetMm ? m.targetMm : sp[n - 1]) - x[n - 1];
+    m.saturatedAfterSettlingS = kNaN;
+    if (m.saturationKnown && !std::isnan(m.settlingTimeS)) {
+        m.saturatedAfterSettlingS = 0.0;
+        for (std::size_t k = 0; k + 1 < n; ++k)
+            if (s.saturated[k] && t[k] - m.stepTimeS >= m.settlingTimeS)
+                m.saturatedAfterSettlingS += t[k + 1] - t[k];
+    }
     m.iae = iae, m.itae = itae, m.ise = ise;
     m.ok = true;
     return m;

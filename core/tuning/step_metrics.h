@@ -74,6 +74,10 @@ struct StepMetrics {
     bool saturationKnown = false;  ///< the signals carried a saturation channel
     double saturatedTimeS = 0.0;   ///< sum of the periods that began saturated
     double longestSaturationS = 0.0;
+    /// Of saturatedTimeS, the periods after the response settled (2 %), s; NaN when it never
+    /// settled or saturation was not recorded. A loop that settles and still drives its clamp is
+    /// chattering at rest (a limit cycle the clamp bounds), which the position alone hides.
+    double saturatedAfterSettlingS = 0.0;
 };
 
 /// The fraction used for the settling band (step_info's SettlingTimeThreshold).

@@ -72,6 +72,31 @@ TEST_F(CliTune, StepAndMetricsOfItsTraceGiveTheSameNumbers) {
     EXPECT_LE(a.value(QStringLiteral("overshoot_pct")).toDouble() * 0.1 * 22.8, 1.0);
 }
 
+// docs/teaching.md lesson 13: at Kp 160 the rail's loop settles within a count while its drive
+// chatters between its clamps (a limit cycle); the report said only "time saturated 0.3530 s".
+// It now says how much of it came after the response settled; the tuned gains have none.
+TEST_F(CliTune, ADriveThatChattersAtRestIsSaid) {
+    const QString base = dir.filePath(QStringLiteral("k160.csv"));
+    CliResult r =
+        runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--amplitude"),
+                QStringLiteral("10"), QStringLiteral("--kp"), QStringLiteral("160"),
+                QStringLiteral("--trace"), base});
+    EXPECT_EQ(r.exit, 0) << r.err.toStdString();
+    EXPECT_TRUE(
+        r.out.contains(QLatin1String("time saturated               0.3530 s (0.3400 s after "
+                                     "settling: the drive chatters at rest)")))
+        << r.out.toStdString();
+    // The trace read back says the same (the saturation channel is in the CSV).
+    r = runCli({QStringLiteral("tune"), QStringLiteral("metrics"), base, QStringLiteral("--json")});
+    EXPECT_EQ(r.exit, 0) << r.err.toStdString();
+    const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+    EXPECT_NEAR(o[QStringLiteral("saturated_after_settling_s")].toDouble(), 0.34, 1e-9);
+    r = runCli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--amplitude"),
+                QStringLiteral("10"), QStringLiteral("--json")});
+    const QJsonObject tuned = QJsonDocument::fromJson(r.out.toUtf8()).object();
+    EXPECT_EQ(tuned[QStringLiteral("saturated_after_settling_s")].toDouble(), 0.0);
+}
+
 TEST_F(CliTune, MetricsReadTheTracesRunWrites) {
     const QString prog =
         trilho::test::writeIn(dir, QStringLiteral("m.G"), "N10 G1 X20 F50\nN20 M2\n");

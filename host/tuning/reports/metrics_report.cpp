@@ -34,8 +34,13 @@ std::vector<StepMetricLine> stepMetricLines(const StepMetrics& m) {
     row("ISE", fmt(m.ise, 6), "mm2.s");
     row("following error max", fmt(m.followingErrorMaxMm, 4), "mm");
     row("following error RMS", fmt(m.followingErrorRmsMm, 4), "mm");
-    row("time saturated",
-        m.saturationKnown ? fmt(m.saturatedTimeS, 4) : QStringLiteral("not recorded"), "s");
+    QString saturated = m.saturationKnown ? fmt(m.saturatedTimeS, 4) + QStringLiteral(" s")
+                                          : QStringLiteral("not recorded");
+    // Saturated after it settled: the drive chatters at rest (the position alone hides it).
+    if (m.saturationKnown && m.saturatedAfterSettlingS > 0.0)
+        saturated += QStringLiteral(" (%1 s after settling: the drive chatters at rest)")
+                         .arg(fmt(m.saturatedAfterSettlingS, 4));
+    row("time saturated", saturated, "");
     return lines;
 }
 
