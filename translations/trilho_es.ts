@@ -2454,6 +2454,10 @@
 <context>
     <name>trilho::ui::PolesView</name>
     <message>
+        <source>Seed 004&apos;s law as written has no poles: it drives by |e| with the move&apos;s direction bit fixed, not a linear loop (past the target it drives on). Its signed reading, with the same b0 and b1, has them.</source>
+        <translation>La ley del seed 004 tal como escrita no tiene polos: acciona por |e| con el bit de dirección del movimiento fijo, no es un lazo lineal (pasado el objetivo, sigue accionando). Su lectura con signo, con los mismos b0 y b1, los tiene.</translation>
+    </message>
+    <message>
         <source>Identify the plant to see the closed loop&apos;s poles and zeros for the gains in the boxes.</source>
         <translation>Identifique la planta para ver los polos y ceros del lazo cerrado con las ganancias de las casillas.</translation>
     </message>
@@ -3453,10 +3457,6 @@
     <message>
         <source>Seed 004: u = 100 (b0 e + b1 e_prev) % PWM, e in rad of the motor, per tick: 100 (b0 + b1) is its proportional gain, -100 b1 a difference of e per tick</source>
         <translation>Seed 004: u = 100 (b0 e + b1 e_ant) % de PWM, e en rad del motor, por período: 100 (b0 + b1) es su ganancia proporcional, -100 b1 una diferencia de e por período</translation>
-    </message>
-    <message>
-        <source>Seed 004&apos;s law as written has no poles: it drives by |e| with the move&apos;s direction bit fixed, not a linear loop (past the target it drives on). Its signed reading, with the same b0 and b1, has them.</source>
-        <translation>La ley del seed 004 tal como escrita no tiene polos: acciona por |e| con el bit de dirección del movimiento fijo, no es un lazo lineal (pasado el objetivo, sigue accionando). Su lectura con signo, con los mismos b0 y b1, los tiene.</translation>
     </message>
     <message>
         <source>1996</source>

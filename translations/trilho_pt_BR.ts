@@ -2454,6 +2454,10 @@
 <context>
     <name>trilho::ui::PolesView</name>
     <message>
+        <source>Seed 004&apos;s law as written has no poles: it drives by |e| with the move&apos;s direction bit fixed, not a linear loop (past the target it drives on). Its signed reading, with the same b0 and b1, has them.</source>
+        <translation>A lei do seed 004 como escrita não tem polos: aciona por |e| com o bit de direção do movimento fixo, não é uma malha linear (passado o alvo, segue acionando). Sua leitura com sinal, com os mesmos b0 e b1, tem.</translation>
+    </message>
+    <message>
         <source>Identify the plant to see the closed loop&apos;s poles and zeros for the gains in the boxes.</source>
         <translation>Identifique a planta para ver os polos e zeros da malha fechada com os ganhos das caixas.</translation>
     </message>
@@ -3453,10 +3457,6 @@
     <message>
         <source>Seed 004: u = 100 (b0 e + b1 e_prev) % PWM, e in rad of the motor, per tick: 100 (b0 + b1) is its proportional gain, -100 b1 a difference of e per tick</source>
         <translation>Seed 004: u = 100 (b0 e + b1 e_ant) % de PWM, e em rad do motor, por período: 100 (b0 + b1) é seu ganho proporcional, -100 b1 uma diferença de e por período</translation>
-    </message>
-    <message>
-        <source>Seed 004&apos;s law as written has no poles: it drives by |e| with the move&apos;s direction bit fixed, not a linear loop (past the target it drives on). Its signed reading, with the same b0 and b1, has them.</source>
-        <translation>A lei do seed 004 como escrita não tem polos: aciona por |e| com o bit de direção do movimento fixo, não é uma malha linear (passado o alvo, segue acionando). Sua leitura com sinal, com os mesmos b0 e b1, tem.</translation>
     </message>
     <message>
         <source>1996</source>
