@@ -3770,10 +3770,6 @@
         <translation>Máquina simulada</translation>
     </message>
     <message>
-        <source>%1 at %2 bit/s: %3 - packets %4, RESENDs %5, timeouts %6</source>
-        <translation>%1 a %2 bit/s: %3 - paquetes %4, RESENDs %5, tiempos agotados %6</translation>
-    </message>
-    <message>
         <source>LINK LOST</source>
         <translation>ENLACE PERDIDO</translation>
     </message>
@@ -3782,8 +3778,16 @@
         <translation>enlace activo</translation>
     </message>
     <message>
+        <source>port open; the seed&apos;s board answers nothing: position planned, unconfirmed</source>
+        <translation>puerto abierto; la placa del seed no responde nada: posición planificada, sin confirmar</translation>
+    </message>
+    <message>
         <source>port open, no answer yet</source>
         <translation>puerto abierto, aún sin respuesta</translation>
+    </message>
+    <message>
+        <source>%1 at %2 bit/s: %3 - packets %4, RESENDs %5, timeouts %6</source>
+        <translation>%1 a %2 bit/s: %3 - paquetes %4, RESENDs %5, tiempos agotados %6</translation>
     </message>
     <message>
         <source>Connection</source>
@@ -3901,12 +3905,20 @@
         <translation>consigna x</translation>
     </message>
     <message>
+        <source>x planned (unconfirmed)</source>
+        <translation>posición x planificada (sin confirmar)</translation>
+    </message>
+    <message>
         <source>x position</source>
         <translation>posición x</translation>
     </message>
     <message>
         <source>y set point</source>
         <translation>consigna y</translation>
+    </message>
+    <message>
+        <source>y planned (unconfirmed)</source>
+        <translation>posición y planificada (sin confirmar)</translation>
     </message>
     <message>
         <source>y position</source>

@@ -3770,10 +3770,6 @@
         <translation>Máquina simulada</translation>
     </message>
     <message>
-        <source>%1 at %2 bit/s: %3 - packets %4, RESENDs %5, timeouts %6</source>
-        <translation>%1 a %2 bit/s: %3 - pacotes %4, RESENDs %5, tempos esgotados %6</translation>
-    </message>
-    <message>
         <source>LINK LOST</source>
         <translation>LIGAÇÃO PERDIDA</translation>
     </message>
@@ -3782,8 +3778,16 @@
         <translation>ligação ativa</translation>
     </message>
     <message>
+        <source>port open; the seed&apos;s board answers nothing: position planned, unconfirmed</source>
+        <translation>porta aberta; a placa do seed não responde nada: posição planejada, não confirmada</translation>
+    </message>
+    <message>
         <source>port open, no answer yet</source>
         <translation>porta aberta, ainda sem resposta</translation>
+    </message>
+    <message>
+        <source>%1 at %2 bit/s: %3 - packets %4, RESENDs %5, timeouts %6</source>
+        <translation>%1 a %2 bit/s: %3 - pacotes %4, RESENDs %5, tempos esgotados %6</translation>
     </message>
     <message>
         <source>Connection</source>
@@ -3901,12 +3905,20 @@
         <translation>ajuste x</translation>
     </message>
     <message>
+        <source>x planned (unconfirmed)</source>
+        <translation>posição x planejada (não confirmada)</translation>
+    </message>
+    <message>
         <source>x position</source>
         <translation>posição x</translation>
     </message>
     <message>
         <source>y set point</source>
         <translation>ajuste y</translation>
+    </message>
+    <message>
+        <source>y planned (unconfirmed)</source>
+        <translation>posição y planejada (não confirmada)</translation>
     </message>
     <message>
         <source>y position</source>
