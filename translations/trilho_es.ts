@@ -2454,6 +2454,10 @@
 <context>
     <name>trilho::ui::PolesView</name>
     <message>
+        <source>Seed 004&apos;s law as written has no poles: it drives by |e| with the move&apos;s direction bit fixed, not a linear loop (past the target it drives on). Its signed reading, with the same b0 and b1, has them.</source>
+        <translation>La ley del seed 004 tal como escrita no tiene polos: acciona por |e| con el bit de dirección del movimiento fijo, no es un lazo lineal (pasado el objetivo, sigue accionando). Su lectura con signo, con los mismos b0 y b1, los tiene.</translation>
+    </message>
+    <message>
         <source>Identify the plant to see the closed loop&apos;s poles and zeros for the gains in the boxes.</source>
         <translation>Identifique la planta para ver los polos y ceros del lazo cerrado con las ganancias de las casillas.</translation>
     </message>
@@ -3455,10 +3459,6 @@
         <translation>Seed 004: u = 100 (b0 e + b1 e_ant) % de PWM, e en rad del motor, por período: 100 (b0 + b1) es su ganancia proporcional, -100 b1 una diferencia de e por período</translation>
     </message>
     <message>
-        <source>Seed 004&apos;s law as written has no poles: it drives by |e| with the move&apos;s direction bit fixed, not a linear loop (past the target it drives on). Its signed reading, with the same b0 and b1, has them.</source>
-        <translation>La ley del seed 004 tal como escrita no tiene polos: acciona por |e| con el bit de dirección del movimiento fijo, no es un lazo lineal (pasado el objetivo, sigue accionando). Su lectura con signo, con los mismos b0 y b1, los tiene.</translation>
-    </message>
-    <message>
         <source>1996</source>
         <translation>1996</translation>
     </message>
@@ -3770,10 +3770,6 @@
         <translation>Máquina simulada</translation>
     </message>
     <message>
-        <source>%1 at %2 bit/s: %3 - packets %4, RESENDs %5, timeouts %6</source>
-        <translation>%1 a %2 bit/s: %3 - paquetes %4, RESENDs %5, tiempos agotados %6</translation>
-    </message>
-    <message>
         <source>LINK LOST</source>
         <translation>ENLACE PERDIDO</translation>
     </message>
@@ -3782,8 +3778,16 @@
         <translation>enlace activo</translation>
     </message>
     <message>
+        <source>port open; the seed&apos;s board answers nothing: position planned, unconfirmed</source>
+        <translation>puerto abierto; la placa del seed no responde nada: posición planificada, sin confirmar</translation>
+    </message>
+    <message>
         <source>port open, no answer yet</source>
         <translation>puerto abierto, aún sin respuesta</translation>
+    </message>
+    <message>
+        <source>%1 at %2 bit/s: %3 - packets %4, RESENDs %5, timeouts %6</source>
+        <translation>%1 a %2 bit/s: %3 - paquetes %4, RESENDs %5, tiempos agotados %6</translation>
     </message>
     <message>
         <source>Connection</source>
@@ -3901,12 +3905,20 @@
         <translation>consigna x</translation>
     </message>
     <message>
+        <source>x planned (unconfirmed)</source>
+        <translation>posición x planificada (sin confirmar)</translation>
+    </message>
+    <message>
         <source>x position</source>
         <translation>posición x</translation>
     </message>
     <message>
         <source>y set point</source>
         <translation>consigna y</translation>
+    </message>
+    <message>
+        <source>y planned (unconfirmed)</source>
+        <translation>posición y planificada (sin confirmar)</translation>
     </message>
     <message>
         <source>y position</source>

@@ -2454,6 +2454,10 @@
 <context>
     <name>trilho::ui::PolesView</name>
     <message>
+        <source>Seed 004&apos;s law as written has no poles: it drives by |e| with the move&apos;s direction bit fixed, not a linear loop (past the target it drives on). Its signed reading, with the same b0 and b1, has them.</source>
+        <translation>A lei do seed 004 como escrita não tem polos: aciona por |e| com o bit de direção do movimento fixo, não é uma malha linear (passado o alvo, segue acionando). Sua leitura com sinal, com os mesmos b0 e b1, tem.</translation>
+    </message>
+    <message>
         <source>Identify the plant to see the closed loop&apos;s poles and zeros for the gains in the boxes.</source>
         <translation>Identifique a planta para ver os polos e zeros da malha fechada com os ganhos das caixas.</translation>
     </message>
@@ -3455,10 +3459,6 @@
         <translation>Seed 004: u = 100 (b0 e + b1 e_ant) % de PWM, e em rad do motor, por período: 100 (b0 + b1) é seu ganho proporcional, -100 b1 uma diferença de e por período</translation>
     </message>
     <message>
-        <source>Seed 004&apos;s law as written has no poles: it drives by |e| with the move&apos;s direction bit fixed, not a linear loop (past the target it drives on). Its signed reading, with the same b0 and b1, has them.</source>
-        <translation>A lei do seed 004 como escrita não tem polos: aciona por |e| com o bit de direção do movimento fixo, não é uma malha linear (passado o alvo, segue acionando). Sua leitura com sinal, com os mesmos b0 e b1, tem.</translation>
-    </message>
-    <message>
         <source>1996</source>
         <translation>1996</translation>
     </message>
@@ -3770,10 +3770,6 @@
         <translation>Máquina simulada</translation>
     </message>
     <message>
-        <source>%1 at %2 bit/s: %3 - packets %4, RESENDs %5, timeouts %6</source>
-        <translation>%1 a %2 bit/s: %3 - pacotes %4, RESENDs %5, tempos esgotados %6</translation>
-    </message>
-    <message>
         <source>LINK LOST</source>
         <translation>LIGAÇÃO PERDIDA</translation>
     </message>
@@ -3782,8 +3778,16 @@
         <translation>ligação ativa</translation>
     </message>
     <message>
+        <source>port open; the seed&apos;s board answers nothing: position planned, unconfirmed</source>
+        <translation>porta aberta; a placa do seed não responde nada: posição planejada, não confirmada</translation>
+    </message>
+    <message>
         <source>port open, no answer yet</source>
         <translation>porta aberta, ainda sem resposta</translation>
+    </message>
+    <message>
+        <source>%1 at %2 bit/s: %3 - packets %4, RESENDs %5, timeouts %6</source>
+        <translation>%1 a %2 bit/s: %3 - pacotes %4, RESENDs %5, tempos esgotados %6</translation>
     </message>
     <message>
         <source>Connection</source>
@@ -3901,12 +3905,20 @@
         <translation>ajuste x</translation>
     </message>
     <message>
+        <source>x planned (unconfirmed)</source>
+        <translation>posição x planejada (não confirmada)</translation>
+    </message>
+    <message>
         <source>x position</source>
         <translation>posição x</translation>
     </message>
     <message>
         <source>y set point</source>
         <translation>ajuste y</translation>
+    </message>
+    <message>
+        <source>y planned (unconfirmed)</source>
+        <translation>posição y planejada (não confirmada)</translation>
     </message>
     <message>
         <source>y position</source>

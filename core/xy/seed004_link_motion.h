@@ -32,6 +32,7 @@ class Seed004LinkMotion final : public SerialLinkMotion {
     std::uint64_t timeouts() const override { return 0; }
     /// The seed's board never answers: "link up" would be a guess.
     bool boardAnswered() const override { return false; }
+    bool boardEverAnswers() const override { return false; }
     const Seed004Host& host() const { return host_; }
 
   private:

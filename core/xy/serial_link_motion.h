@@ -50,6 +50,9 @@ class SerialLinkMotion : public XyMotion {
     /// The board has answered something since the line was opened (the link is more than an
     /// open port).
     virtual bool boardAnswered() const = 0;
+    /// The board's protocol answers at all. Seed 004's board answers nothing, ever: "no answer
+    /// yet" would promise one; its positions are planned, unconfirmed.
+    virtual bool boardEverAnswers() const { return true; }
 
     /// Why the link failed; empty while it works.
     std::string linkError() const { return !lost_.empty() ? lost_ : hostError(); }

@@ -1,6 +1,9 @@
 // The XY machines' screens (issue 11), offscreen, in virtual time: the link runs without its
 // thread and each test advances the machine itself, so every figure is repeatable.
+#include <pty.h>
 #include <qcustomplot.h>
+#include <termios.h>
+#include <unistd.h>
 #include <QAction>
 #include <QApplication>
 #include <QCheckBox>
@@ -749,6 +752,80 @@ class XyScreensTest : public QObject {
                  qPrintable(w.linkLabel()->text()));
         device.terminate();
         device.waitForFinished(5000);
+    }
+
+    // Issue 32 item 4 at the screens: the DC table on seed 004's own board (law "seed"), which
+    // answers nothing. The status bar says so, not "no answer yet" (none ever comes), and the
+    // position plot's legend calls the planned position planned, not a measured "x position".
+    void seedBoardOnALineSaysItsPositionIsPlannedNotMeasured() {
+        int master = -1, slave = -1;
+        char name[256] = {};
+        termios raw{};
+        ::cfmakeraw(&raw);
+        QCOMPARE(::openpty(&master, &slave, name, &raw, nullptr), 0);
+        // The seed's board, which reads its 4 bytes a move and says nothing: this end of the
+        // pair, read by nobody (a move is 4 bytes; the terminal holds kilobytes).
+        const BoardLink made =
+            boardLink(shipped("xy_dc_table_seed.json"), QString::fromLatin1(name));
+        QVERIFY2(made.link != nullptr, qPrintable(made.error));
+        XyLink& link = *made.link;
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        XyMainWindow w(link, settings);
+        w.setDeviceLink(made.board, QString::fromLatin1(name), 9600);
+        w.show();
+        const auto said = [&] { return w.linkLabel()->text(); };
+        QVERIFY2(!said().contains(QStringLiteral("no answer yet")), qPrintable(said()));
+        QVERIFY2(said().contains(QStringLiteral("the seed's board answers nothing")),
+                 qPrintable(said()));
+        QVERIFY2(said().contains(QStringLiteral("planned, unconfirmed")), qPrintable(said()));
+        // A move: the position shown from then on is the planned one.
+        w.tablePanel()->xBox()->setValue(12);
+        w.tablePanel()->yBox()->setValue(8);
+        w.tablePanel()->sendButton()->click();
+        QTRY_VERIFY_WITH_TIMEOUT(link.status().positionBasis == XyPositionBasis::Planned, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(w.plots()->pointCount() > 0, 5000);
+        QVERIFY2(w.positionLabel()->text().contains(QStringLiteral("planned, unconfirmed")),
+                 qPrintable(w.positionLabel()->text()));
+        auto* position = w.plots()->findChild<QCustomPlot*>();
+        QVERIFY(position);
+        QStringList names;
+        for (int i = 0; i < position->graphCount(); ++i)
+            names << position->graph(i)->name();
+        QVERIFY2(names.contains(QStringLiteral("x planned (unconfirmed)")),
+                 qPrintable(names.join('|')));
+        QVERIFY2(names.contains(QStringLiteral("y planned (unconfirmed)")),
+                 qPrintable(names.join('|')));
+        QVERIFY2(!names.contains(QStringLiteral("x position")), qPrintable(names.join('|')));
+        QVERIFY2(!names.contains(QStringLiteral("y position")), qPrintable(names.join('|')));
+        QVERIFY2(said().contains(QStringLiteral("the seed's board answers nothing")),
+                 qPrintable(said()));
+        // In another language the legend still says planned.
+        QVERIFY(installLanguage(QStringLiteral("pt_BR")));
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+        const QString xName = position->graph(1)->name();
+        QVERIFY(installLanguage(QStringLiteral("en")));
+        QCOMPARE(xName, QStringLiteral("posição x planejada (não confirmada)"));
+        ::close(slave);
+        ::close(master);
+    }
+
+    // The table whose positions are known (here the simulated one) keeps the measured names.
+    void aKnownPositionIsNamedPositionInThePlot() {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        auto link = virtualLink(shipped("xy_dc_table.json"));
+        XyMainWindow w(*link, settings);
+        link->advance(0.2);
+        QVERIFY(link->status().positionBasis == XyPositionBasis::Known);
+        auto* position = w.plots()->findChild<QCustomPlot*>();
+        QVERIFY(position);
+        QStringList names;
+        for (int i = 0; i < position->graphCount(); ++i)
+            names << position->graph(i)->name();
+        QVERIFY2(names.contains(QStringLiteral("x position")), qPrintable(names.join('|')));
+        QVERIFY2(names.contains(QStringLiteral("y position")), qPrintable(names.join('|')));
+        QVERIFY2(!names.join('|').contains(QStringLiteral("planned")), qPrintable(names.join('|')));
     }
 
     void xyScreenServesTheDncLinkWithItsYAxis() {

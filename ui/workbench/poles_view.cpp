@@ -81,17 +81,17 @@ void PolesView::clearModel() {
 
 void PolesView::setLoop(const DiscreteLoopSpec& spec) {
     spec_ = spec;
-    refused_.clear();
+    seedLawAsWritten_ = false;
     recompute();
 }
 
-void PolesView::setLoopRefused(const QString& why) {
-    refused_ = why;
+void PolesView::setSeedLawAsWritten() {
+    seedLawAsWritten_ = true;
     recompute();
 }
 
 void PolesView::recompute() {
-    if (!model_ || !(spec_.periodS > 0.0) || !refused_.isEmpty()) {
+    if (!model_ || !(spec_.periodS > 0.0) || seedLawAsWritten_) {
         poles_ = {};
         locus_ = {};
     } else {
@@ -104,7 +104,11 @@ void PolesView::recompute() {
 }
 
 QString PolesView::summaryText() const {
-    if (!refused_.isEmpty()) return refused_.toHtmlEscaped();
+    if (seedLawAsWritten_)
+        return tr("Seed 004's law as written has no poles: it drives by |e| with the move's "
+                  "direction bit fixed, not a linear loop (past the target it drives on). Its "
+                  "signed reading, with the same b0 and b1, has them.")
+            .toHtmlEscaped();
     if (!model_)
         return tr(
             "Identify the plant to see the closed loop's poles and zeros for the gains in "

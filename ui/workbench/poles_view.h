@@ -27,9 +27,10 @@ class PolesView : public QWidget {
     /// The law, gains and period of the boxes, the engineered law's velocity filter, and on a
     /// DC table axis its screw and seed gains (spec.model is ignored: the view's own).
     void setLoop(const DiscreteLoopSpec& spec);
-    /// A law without poles (seed 004's as written, |e| with a fixed direction bit): none are
-    /// shown, the page says why. The next setLoop shows poles again.
-    void setLoopRefused(const QString& why);
+    /// Seed 004's law as written (|e| with a fixed direction bit) has no poles: none are shown,
+    /// the page says why, in the screen's language (the view makes the text, so a language
+    /// change retranslates it). The next setLoop shows poles again.
+    void setSeedLawAsWritten();
     bool hasModel() const { return model_.has_value(); }
     /// The model the poles are of, when one was accepted (the lab sheet prints it).
     const std::optional<RailModel>& model() const { return model_; }
@@ -52,7 +53,7 @@ class PolesView : public QWidget {
     DiscreteLoopSpec spec_;
     ClosedLoopPoles poles_;
     RootLocus locus_;
-    QString refused_;  ///< why the law has no poles (empty: it has)
+    bool seedLawAsWritten_ = false;  ///< the law has no poles (seed 004's as written)
 };
 
 }  // namespace ui

@@ -605,10 +605,7 @@ void WorkbenchWindow::updatePoles() {
             axis_->currentData().toInt() == 'y' ? profile_.dcTable.y : profile_.dcTable.x;
         const DcLaw dcLaw = tableLawIn(law_);
         if (dcLaw == DcLaw::Seed) {
-            polesView_->setLoopRefused(
-                tr("Seed 004's law as written has no poles: it drives by |e| with the move's "
-                   "direction bit fixed, not a linear loop (past the target it drives on). Its "
-                   "signed reading, with the same b0 and b1, has them."));
+            polesView_->setSeedLawAsWritten();  // the page says why, in its language
             return;
         }
         spec.dcTableAxis = true;

@@ -776,6 +776,7 @@ void XyMainWindow::onUpdate(const std::vector<XyTraceRow>& rows,
     // No tool drawn where it is not known (a board on a line before homing or its answer).
     view_->setTool({s.x.positionMm, s.y.positionMm}, s.pen,
                    status.positionBasis != XyPositionBasis::Unknown);
+    plots_->setPositionBasis(status.positionBasis);  // the legend names what the line is
     const QString position = positionText(status);
     if (position_->text() != position) position_->setText(position);
     state_->setText(stateText(status.state));
@@ -859,13 +860,18 @@ void XyMainWindow::showLinkState() {
         return;
     }
     const bool up = deviceLink_->linkUp();
-    // "link up" once the board has answered: an open port is no board.
+    // "link up" once the board has answered: an open port is no board. Seed 004's board never
+    // answers: no "yet", and what the screen shows of it is the plan.
+    const QString state = !up                            ? tr("LINK LOST")
+                          : deviceLink_->boardAnswered() ? tr("link up")
+                          : !deviceLink_->boardEverAnswers()
+                              ? tr("port open; the seed's board answers nothing: position "
+                                   "planned, unconfirmed")
+                              : tr("port open, no answer yet");
     QString text = tr("%1 at %2 bit/s: %3 - packets %4, RESENDs %5, timeouts %6")
                        .arg(port_)
                        .arg(baud_)
-                       .arg(!up                            ? tr("LINK LOST")
-                            : deviceLink_->boardAnswered() ? tr("link up")
-                                                           : tr("port open, no answer yet"))
+                       .arg(state)
                        .arg(deviceLink_->packetsSent())
                        .arg(deviceLink_->resends())
                        .arg(deviceLink_->timeouts());

@@ -75,6 +75,14 @@ void XyPlots::addSample(double tS, const XySample& s) {
     drawAxes(std::max(0.0, from), std::max(kWindowS, tS));
 }
 
+void XyPlots::setPositionBasis(XyPositionBasis basis) {
+    // Unknown draws nothing (no sample is added): the lines drawn keep the name of what they
+    // are. Called on every update, 50 times a second: the legend is set on a change only.
+    if (basis == basis_ || basis == XyPositionBasis::Unknown) return;
+    basis_ = basis;
+    retranslate();
+}
+
 void XyPlots::drawAxes(double from, double to) {
     for (QCustomPlot* p : {position_, velocity_}) {
         p->xAxis->setRange(from, to);
@@ -127,9 +135,11 @@ void XyPlots::changeEvent(QEvent* e) {
 
 void XyPlots::retranslate() {
     xSet_->setName(tr("x set point"));
-    xPos_->setName(tr("x position"));
+    // A planned position is no measurement: the legend says which it is.
+    const bool planned = basis_ == XyPositionBasis::Planned;
+    xPos_->setName(planned ? tr("x planned (unconfirmed)") : tr("x position"));
     ySet_->setName(tr("y set point"));
-    yPos_->setName(tr("y position"));
+    yPos_->setName(planned ? tr("y planned (unconfirmed)") : tr("y position"));
     xVel_->setName(tr("x speed"));
     yVel_->setName(tr("y speed"));
     position_->yAxis->setLabel(tr("position (mm)"));

@@ -19,6 +19,11 @@ class XyPlots : public QWidget {
   public:
     explicit XyPlots(QWidget* parent = nullptr);
     void addSample(double tS, const XySample& s);
+    /// What the position lines rest on: Planned (seed 004's board, which answers nothing) names
+    /// them "x planned (unconfirmed)", not the measured "x position". Unknown changes nothing
+    /// (nothing is drawn then).
+    void setPositionBasis(XyPositionBasis basis);
+    XyPositionBasis positionBasis() const { return basis_; }
     void clear();
     /// Points held by the position plot's x graph (tests).
     int pointCount() const;
@@ -46,6 +51,7 @@ class XyPlots : public QWidget {
     QCustomPlot *position_, *velocity_;
     TimelineStrip* strip_;
     bool held_ = false;  ///< showing a moment, not the live end
+    XyPositionBasis basis_ = XyPositionBasis::Known;
     QCPGraph *xSet_, *xPos_, *ySet_, *yPos_, *xVel_, *yVel_;
     double lastT_ = 0.0;
     double lastReplotT_ = -1.0;
