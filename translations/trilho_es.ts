@@ -3909,6 +3909,10 @@
         <translation>posición x planificada (sin confirmar)</translation>
     </message>
     <message>
+        <source>x: the board&apos;s last set point</source>
+        <translation>x: la última consigna de la placa</translation>
+    </message>
+    <message>
         <source>x position</source>
         <translation>posición x</translation>
     </message>
@@ -3921,16 +3925,28 @@
         <translation>posición y planificada (sin confirmar)</translation>
     </message>
     <message>
+        <source>y: the board&apos;s last set point</source>
+        <translation>y: la última consigna de la placa</translation>
+    </message>
+    <message>
         <source>y position</source>
         <translation>posición y</translation>
     </message>
     <message>
-        <source>x speed</source>
-        <translation>velocidad x</translation>
+        <source>x set-point speed</source>
+        <translation>velocidad de la consigna x</translation>
     </message>
     <message>
-        <source>y speed</source>
-        <translation>velocidad y</translation>
+        <source>x speed: not reported on a line</source>
+        <translation>velocidad x: no informada en la línea</translation>
+    </message>
+    <message>
+        <source>y set-point speed</source>
+        <translation>velocidad de la consigna y</translation>
+    </message>
+    <message>
+        <source>y speed: not reported on a line</source>
+        <translation>velocidad y: no informada en la línea</translation>
     </message>
     <message>
         <source>position (mm)</source>

@@ -3909,6 +3909,10 @@
         <translation>posição x planejada (não confirmada)</translation>
     </message>
     <message>
+        <source>x: the board&apos;s last set point</source>
+        <translation>x: o último ajuste da placa</translation>
+    </message>
+    <message>
         <source>x position</source>
         <translation>posição x</translation>
     </message>
@@ -3921,16 +3925,28 @@
         <translation>posição y planejada (não confirmada)</translation>
     </message>
     <message>
+        <source>y: the board&apos;s last set point</source>
+        <translation>y: o último ajuste da placa</translation>
+    </message>
+    <message>
         <source>y position</source>
         <translation>posição y</translation>
     </message>
     <message>
-        <source>x speed</source>
-        <translation>velocidade x</translation>
+        <source>x set-point speed</source>
+        <translation>velocidade do ajuste x</translation>
     </message>
     <message>
-        <source>y speed</source>
-        <translation>velocidade y</translation>
+        <source>x speed: not reported on a line</source>
+        <translation>velocidade x: não informada na linha</translation>
+    </message>
+    <message>
+        <source>y set-point speed</source>
+        <translation>velocidade do ajuste y</translation>
+    </message>
+    <message>
+        <source>y speed: not reported on a line</source>
+        <translation>velocidade y: não informada na linha</translation>
     </message>
     <message>
         <source>position (mm)</source>

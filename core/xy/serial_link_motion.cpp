@@ -65,6 +65,7 @@ XyPositionBasis SerialLinkMotion::positionBasis() const {
 
 XySample SerialLinkMotion::sample() const {
     XySample s;
+    s.velocityKnown = false;  // the host sends set points; no one reports a speed
     s.x.setpointMm = commanded_.x;
     s.y.setpointMm = commanded_.y;
     s.x.positionMm = confirmed_.x;

@@ -29,6 +29,9 @@ enum class PenState : std::uint8_t { None, Up, Down };
 struct XySample {
     XyAxisSample x, y;
     PenState pen = PenState::None;
+    /// False: the velocities are no figure (a board on a serial line: its host plans no
+    /// profile of its own and the board reports none), not a speed of 0.
+    bool velocityKnown = true;
 };
 
 /// What the position shown rests on (issue 30 item 7). A simulated plant is made with the

@@ -51,7 +51,8 @@ ControllerStatus asRailStatus(const XyStatus& x) {
     s.servo.positionMm = known ? x.sample.x.positionMm : none;
     s.servo.setpointMm = known ? x.sample.x.setpointMm : none;
     s.servo.errorMm = s.servo.setpointMm - s.servo.positionMm;
-    s.servo.velocityMmS = known ? x.sample.x.velocityMmS : none;
+    // A board on a line reports no speed: no value, not 0 mm/s.
+    s.servo.velocityMmS = known && x.sample.velocityKnown ? x.sample.x.velocityMmS : none;
     s.lastCommandSeq = x.lastCommandSeq;
     return s;
 }
@@ -61,7 +62,9 @@ YAxisReadout yAxisOf(const XyStatus& x) {
         const double none = std::numeric_limits<double>::quiet_NaN();
         return {none, none, none};
     }
-    return {x.sample.y.positionMm, x.sample.y.setpointMm, x.sample.y.velocityMmS};
+    return {
+        x.sample.y.positionMm, x.sample.y.setpointMm,
+        x.sample.velocityKnown ? x.sample.y.velocityMmS : std::numeric_limits<double>::quiet_NaN()};
 }
 
 bool xyTakes(CommandKind kind) {

@@ -172,6 +172,13 @@ TEST(DncXy, APositionNotYetKnownReadsNaNNeverZero) {
     x.positionBasis = XyPositionBasis::BoardLastSet;
     x.sample.x.positionMm = 150.0;
     EXPECT_EQ(asRailStatus(x).servo.positionMm, 150.0);
+    // A board on a line reports no speed (its sample says so): no value, not 0 mm/s, while
+    // its position is known.
+    x.positionBasis = XyPositionBasis::Known;
+    x.sample.velocityKnown = false;
+    EXPECT_TRUE(std::isnan(asRailStatus(x).servo.velocityMmS));
+    EXPECT_TRUE(std::isnan(yAxisOf(x).velocityMmS));
+    EXPECT_EQ(yAxisOf(x).positionMm, 0.0);
 }
 
 }  // namespace

@@ -800,6 +800,12 @@ class XyScreensTest : public QObject {
         QVERIFY2(!names.contains(QStringLiteral("y position")), qPrintable(names.join('|')));
         QVERIFY2(said().contains(QStringLiteral("the seed's board answers nothing")),
                  qPrintable(said()));
+        // The speed plot: no one reports a speed on a line; no flat 0 is drawn as if it were.
+        auto* speed = w.plots()->findChildren<QCustomPlot*>().value(1);
+        QVERIFY(speed);
+        QCOMPARE(speed->graph(0)->name(), QStringLiteral("x speed: not reported on a line"));
+        QCOMPARE(speed->graph(0)->dataCount(), 0);
+        QCOMPARE(speed->graph(1)->dataCount(), 0);
         // In another language the legend still says planned.
         QVERIFY(installLanguage(QStringLiteral("pt_BR")));
         QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
@@ -826,6 +832,12 @@ class XyScreensTest : public QObject {
         QVERIFY2(names.contains(QStringLiteral("x position")), qPrintable(names.join('|')));
         QVERIFY2(names.contains(QStringLiteral("y position")), qPrintable(names.join('|')));
         QVERIFY2(!names.join('|').contains(QStringLiteral("planned")), qPrintable(names.join('|')));
+        // Its speed plot is the set point's speed (the plan's), named so, and drawn.
+        auto* speed = w.plots()->findChildren<QCustomPlot*>().value(1);
+        QVERIFY(speed);
+        QCOMPARE(speed->graph(0)->name(), QStringLiteral("x set-point speed"));
+        QCOMPARE(speed->graph(1)->name(), QStringLiteral("y set-point speed"));
+        QVERIFY(speed->graph(0)->dataCount() > 0);
     }
 
     void xyScreenServesTheDncLinkWithItsYAxis() {

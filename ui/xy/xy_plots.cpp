@@ -56,8 +56,15 @@ void XyPlots::addSample(double tS, const XySample& s) {
     xPos_->addData(tS, s.x.positionMm);
     ySet_->addData(tS, s.y.setpointMm);
     yPos_->addData(tS, s.y.positionMm);
-    xVel_->addData(tS, s.x.velocityMmS);
-    yVel_->addData(tS, s.y.velocityMmS);
+    // A speed no one reports is no 0 drawn: the line is left empty and the legend says why.
+    if (s.velocityKnown != velocityKnown_) {
+        velocityKnown_ = s.velocityKnown;
+        retranslate();
+    }
+    if (s.velocityKnown) {
+        xVel_->addData(tS, s.x.velocityMmS);
+        yVel_->addData(tS, s.y.velocityMmS);
+    }
     if (tS - lastReplotT_ < 0.04 && lastReplotT_ >= 0) return;  // 25 Hz is enough to read
     lastReplotT_ = tS;
     const double from = tS - kWindowS;
@@ -137,11 +144,19 @@ void XyPlots::retranslate() {
     xSet_->setName(tr("x set point"));
     // A planned position is no measurement: the legend says which it is.
     const bool planned = basis_ == XyPositionBasis::Planned;
-    xPos_->setName(planned ? tr("x planned (unconfirmed)") : tr("x position"));
+    const bool lastSet = basis_ == XyPositionBasis::BoardLastSet;
+    xPos_->setName(planned   ? tr("x planned (unconfirmed)")
+                   : lastSet ? tr("x: the board's last set point")
+                             : tr("x position"));
     ySet_->setName(tr("y set point"));
-    yPos_->setName(planned ? tr("y planned (unconfirmed)") : tr("y position"));
-    xVel_->setName(tr("x speed"));
-    yVel_->setName(tr("y speed"));
+    yPos_->setName(planned   ? tr("y planned (unconfirmed)")
+                   : lastSet ? tr("y: the board's last set point")
+                             : tr("y position"));
+    // The set point's speed (the plan's, or the plotter's step rate): no measurement.
+    xVel_->setName(velocityKnown_ ? tr("x set-point speed")
+                                  : tr("x speed: not reported on a line"));
+    yVel_->setName(velocityKnown_ ? tr("y set-point speed")
+                                  : tr("y speed: not reported on a line"));
     position_->yAxis->setLabel(tr("position (mm)"));
     velocity_->yAxis->setLabel(tr("speed (mm/s)"));
     velocity_->xAxis->setLabel(QStringLiteral("t (s)"));

@@ -52,6 +52,7 @@ class XyPlots : public QWidget {
     TimelineStrip* strip_;
     bool held_ = false;  ///< showing a moment, not the live end
     XyPositionBasis basis_ = XyPositionBasis::Known;
+    bool velocityKnown_ = true;  ///< the last sample's velocityKnown
     QCPGraph *xSet_, *xPos_, *ySet_, *yPos_, *xVel_, *yVel_;
     double lastT_ = 0.0;
     double lastReplotT_ = -1.0;
