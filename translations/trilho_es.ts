@@ -2588,6 +2588,10 @@
 <context>
     <name>trilho::ui::PredictionView</name>
     <message>
+        <source>Seed 004&apos;s law as written is not a linear loop (|e| with the move&apos;s direction bit): no prediction. Run its step instead.</source>
+        <translation>La ley del seed 004 tal como está escrita no es un lazo lineal (|e| con el bit de dirección del movimiento): no hay predicción. Ejecute su escalón.</translation>
+    </message>
+    <message>
         <source>Identify the plant to see the step the model predicts for the gains in the boxes; drag a gain&apos;s slider to move it.</source>
         <translation>Identifique la planta para ver el escalón que el modelo predice para las ganancias de las casillas; arrastre el control deslizante de una ganancia para moverlo.</translation>
     </message>

@@ -2588,6 +2588,10 @@
 <context>
     <name>trilho::ui::PredictionView</name>
     <message>
+        <source>Seed 004&apos;s law as written is not a linear loop (|e| with the move&apos;s direction bit): no prediction. Run its step instead.</source>
+        <translation>A lei do seed 004 como escrita não é uma malha linear (|e| com o bit de direção do movimento): não há previsão. Execute o seu degrau.</translation>
+    </message>
+    <message>
         <source>Identify the plant to see the step the model predicts for the gains in the boxes; drag a gain&apos;s slider to move it.</source>
         <translation>Identifique a planta para ver o degrau que o modelo prevê para os ganhos nas caixas; arraste o controle deslizante de um ganho para movê-lo.</translation>
     </message>

@@ -48,12 +48,20 @@ void PredictionView::setLoop(const std::optional<RailModel>& model, const Discre
         (model && (model->speedGainMmSPerCode != spec_.model.speedGainMmSPerCode ||
                    model->timeConstantS != spec_.model.timeConstantS));
     hasModel_ = model.has_value();
+    seedLaw_ = false;
     spec_ = spec;
     if (model) spec_.model = *model;
     amplitudeMm_ = amplitudeMm;
     prediction_ =
         hasModel_ ? predictStepOnModel(spec_, amplitudeMm_, kPredictS) : ModelStepPrediction{};
     if (modelChanged) reference_ = {};  // another plant: the old curve is of no use
+    redraw();
+}
+
+void PredictionView::setSeedLawAsWritten() {
+    seedLaw_ = true;
+    prediction_ = {};
+    reference_ = {};
     redraw();
 }
 
@@ -68,6 +76,10 @@ void PredictionView::changeEvent(QEvent* e) {
 }
 
 QString PredictionView::summaryText() const {
+    if (seedLaw_)
+        return tr(
+            "Seed 004's law as written is not a linear loop (|e| with the move's direction "
+            "bit): no prediction. Run its step instead.");
     if (!hasModel_)
         return tr(
             "Identify the plant to see the step the model predicts for the gains in the "

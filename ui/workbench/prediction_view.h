@@ -24,6 +24,9 @@ class PredictionView : public QWidget {
     /// and the step, mm. Recomputes and redraws.
     void setLoop(const std::optional<RailModel>& model, const DiscreteLoopSpec& spec,
                  double amplitudeMm);
+    /// Seed 004's law as written: |e| with a fixed direction bit is not a linear loop, so
+    /// there is nothing to predict (the Poles page says the same); the curves are cleared.
+    void setSeedLawAsWritten();
     /// The response now becomes the grey reference (a slider was pressed).
     void keepReference();
     const ModelStepPrediction& prediction() const { return prediction_; }
@@ -40,6 +43,7 @@ class PredictionView : public QWidget {
     QLabel* summary_;
     QCustomPlot* plot_;
     bool hasModel_ = false;
+    bool seedLaw_ = false;  ///< setSeedLawAsWritten() until the next setLoop()
     DiscreteLoopSpec spec_;
     double amplitudeMm_ = 10.0;
     ModelStepPrediction prediction_;

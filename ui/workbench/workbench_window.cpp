@@ -606,6 +606,7 @@ void WorkbenchWindow::updatePoles() {
         const DcLaw dcLaw = tableLawIn(law_);
         if (dcLaw == DcLaw::Seed) {
             polesView_->setSeedLawAsWritten();  // the page says why, in its language
+            predictionView_->setSeedLawAsWritten();
             return;
         }
         spec.dcTableAxis = true;
