@@ -75,6 +75,16 @@ std::vector<LabSheetRow> labSheetRows(const LabSheet& sheet) {
         return QStringLiteral("x %1").arg(plain(c.massFactor));
     });
     conditionRow("test", [](const RunConditions& c) { return testText(c); });
+    // The teaching switches (issue 33 item 9): a run made with one off is another experiment,
+    // and the sheet says which.
+    conditionRow("teaching switches", [](const RunConditions& c) {
+        QStringList off;
+        if (!c.antiWindup) off << QStringLiteral("anti-windup off");
+        if (c.encoderNoiseCounts != 0)
+            off << QStringLiteral("encoder noise +-%1 counts").arg(c.encoderNoiseCounts);
+        if (!c.dacQuantisation) off << QStringLiteral("DAC quantisation off");
+        return off.isEmpty() ? QStringLiteral("as the machine") : off.join(QStringLiteral("; "));
+    });
     conditionRow("seed", [](const RunConditions& c) { return QString::number(c.seed); });
     conditionRow("ran at", [](const RunConditions& c) {
         return c.date.isEmpty() ? QStringLiteral("not recorded") : c.date;

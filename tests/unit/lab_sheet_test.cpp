@@ -72,6 +72,31 @@ TEST(LabSheet, TicksAreRound) {
     EXPECT_TRUE(labSheetTicks(0.0, std::nan(""), 8).empty());
 }
 
+// The teaching switches a run was made with are on its sheet (a run with anti-windup off is
+// another experiment than the machine's): "as the machine" when none is switched.
+TEST(LabSheet, TheTeachingSwitchesOfEachRunAreSaid) {
+    LabSheet sheet;
+    auto plain = stepRecord(1000, 0.001, 10.0);
+    plain->hasConditions = true;
+    auto switched = stepRecord(1000, 0.001, 10.0);
+    switched->hasConditions = true;
+    switched->conditions.antiWindup = false;
+    switched->conditions.encoderNoiseCounts = 2;
+    switched->conditions.dacQuantisation = false;
+    sheet.runs.push_back(runOf(plain, 0));
+    sheet.runs.push_back(runOf(switched, 1));
+    bool found = false;
+    for (const LabSheetRow& row : labSheetRows(sheet)) {
+        if (row.name != QLatin1String("teaching switches")) continue;
+        found = true;
+        ASSERT_EQ(row.cells.size(), 2u);
+        EXPECT_EQ(row.cells[0], QStringLiteral("as the machine"));
+        EXPECT_EQ(row.cells[1], QStringLiteral("anti-windup off; encoder noise +-2 counts; DAC "
+                                               "quantisation off"));
+    }
+    EXPECT_TRUE(found);
+}
+
 TEST(LabSheet, RowsAreTheMetricsOwnAndABareTraceSaysNotRecorded) {
     LabSheet sheet;
     sheet.runs.push_back(runOf(stepRecord(1000, 0.001, 10.0), 0));
