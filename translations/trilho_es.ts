@@ -3794,6 +3794,10 @@
         <translation>%1 a %2 bit/s: %3 - paquetes %4, RESENDs %5, tiempos agotados %6</translation>
     </message>
     <message>
+        <source>%1 at %2 bit/s: %3 - set points sent %4 (no acknowledgement)</source>
+        <translation>%1 a %2 bit/s: %3 - consignas enviadas %4 (sin confirmación)</translation>
+    </message>
+    <message>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>

@@ -3794,6 +3794,10 @@
         <translation>%1 a %2 bit/s: %3 - pacotes %4, RESENDs %5, tempos esgotados %6</translation>
     </message>
     <message>
+        <source>%1 at %2 bit/s: %3 - set points sent %4 (no acknowledgement)</source>
+        <translation>%1 a %2 bit/s: %3 - ajustes enviados %4 (sem confirmação)</translation>
+    </message>
+    <message>
         <source>Connection</source>
         <translation>Conexão</translation>
     </message>

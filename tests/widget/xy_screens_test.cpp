@@ -800,6 +800,10 @@ class XyScreensTest : public QObject {
         QVERIFY2(!names.contains(QStringLiteral("y position")), qPrintable(names.join('|')));
         QVERIFY2(said().contains(QStringLiteral("the seed's board answers nothing")),
                  qPrintable(said()));
+        // No RESEND or timeout counts for a protocol that has no answer: the set points sent.
+        QVERIFY2(said().contains(QStringLiteral("set points sent 1 (no acknowledgement)")) &&
+                     !said().contains(QStringLiteral("RESENDs")),
+                 qPrintable(said()));
         // The speed plot: no one reports a speed on a line; no flat 0 is drawn as if it were.
         auto* speed = w.plots()->findChildren<QCustomPlot*>().value(1);
         QVERIFY(speed);

@@ -868,13 +868,20 @@ void XyMainWindow::showLinkState() {
                               ? tr("port open; the seed's board answers nothing: position "
                                    "planned, unconfirmed")
                               : tr("port open, no answer yet");
-    QString text = tr("%1 at %2 bit/s: %3 - packets %4, RESENDs %5, timeouts %6")
-                       .arg(port_)
-                       .arg(baud_)
-                       .arg(state)
-                       .arg(deviceLink_->packetsSent())
-                       .arg(deviceLink_->resends())
-                       .arg(deviceLink_->timeouts());
+    // A protocol with no answer has no RESEND and no timeout to count: its 0s would say nothing.
+    QString text = deviceLink_->boardEverAnswers()
+                       ? tr("%1 at %2 bit/s: %3 - packets %4, RESENDs %5, timeouts %6")
+                             .arg(port_)
+                             .arg(baud_)
+                             .arg(state)
+                             .arg(deviceLink_->packetsSent())
+                             .arg(deviceLink_->resends())
+                             .arg(deviceLink_->timeouts())
+                       : tr("%1 at %2 bit/s: %3 - set points sent %4 (no acknowledgement)")
+                             .arg(port_)
+                             .arg(baud_)
+                             .arg(state)
+                             .arg(deviceLink_->packetsSent());
     linkLabel_->setText(text);
     linkLabel_->setToolTip(up ? QString() : QString::fromStdString(deviceLink_->linkError()));
     style(up ? QString() : QStringLiteral("background:#c0161b;color:white;padding:1px 4px;"));
