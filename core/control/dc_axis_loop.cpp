@@ -13,12 +13,10 @@ namespace {
 /// the step's settling predicted outside 15 % in 6 of 200 at 1 x (worst 0.76), 1 at 2 x (0.78),
 /// 2 at 4 x (0.84); 8 x made the identification's positioned return ring.
 constexpr double kSettleIntegralBoost = 4.0;
-/// Time in the window, s, after which the integral is dropped, and a push out of the window
-/// reads as a load, not as the approach's overshoot passing through. Chosen: the table's own
-/// in-position time (dc_table_motion.cpp: 20 ms, 4 periods at 5 ms, 1 at 20 ms; counted in
-/// periods, a 20 ms period kept the approach's integral 80 ms past "in position" and a move
-/// reported done rang 0.67 mm off its target, DcTableLoadAttack).
-constexpr double kRestingS = 0.02;
+/// Time in the window with no drive, s, after which the axis is at rest, and a push out of the
+/// window reads as a load. Chosen: with the drive at 0 friction (3 %) stops a x20 payload
+/// (tau 0.6 s) from a count's crossing speed in under 20 ms; 0.25 s leaves a wide margin.
+constexpr double kRestedS = 0.25;
 }  // namespace
 
 DcAxisLoop::DcAxisLoop(const DcAxisParams& axis, double clampPercent, DcLaw law,
@@ -31,27 +29,30 @@ void DcAxisLoop::reset() {
     u_ = 0.0;
     loadSeen_ = false;
     restingS_ = 0.0;
-    restingTicks_ = 0;
+    droppedDrive_ = 0.0;
+    pushedOut_ = false;
 }
 
 void DcAxisLoop::setPhase(Phase p) {
-    // Pushed out of the window after resting in it, its integral dropped (not a move's
-    // overshoot passing through): something pushes the axis while its drive rests, a load.
-    // At least two periods: at a long period (20 ms) one sample in the window is the
-    // in-position time, and a heavy payload's ring passes through it in one (DcTableLoadAttack).
-    if (phase_ == Phase::InPosition && p == Phase::Settling && rested() && restingTicks_ >= 2)
-        loadSeen_ = true;
-    if (p != Phase::InPosition) restingS_ = 0.0, restingTicks_ = 0;
+    // Out of the window after resting in it with no drive long enough to be at rest (a heavy
+    // payload coasting on its back EMF crosses the window's count in more than the 20 ms of
+    // the in-position time): something pushes the axis, a load.
+    if (phase_ == Phase::InPosition && p == Phase::Settling) {
+        if (restingS_ >= kRestedS - 1e-9) loadSeen_ = true;
+        pushedOut_ = true;  // sooner: update() reads which way it went (Phase::Settling)
+    }
+    if (p != Phase::InPosition) restingS_ = 0.0;
     phase_ = p;
-}
-
-bool DcAxisLoop::rested() const {
-    return restingS_ >= kRestingS - 1e-9;
 }
 
 double DcAxisLoop::update(double setpointMm, double velocityMmS, double accelMmS2,
                           double positionMm, double dtS) {
     const double eMm = setpointMm - positionMm;
+    // Which way the axis last went (the count's steps): a window entered one way and left the
+    // other with no drive is a reversal no friction or back EMF makes.
+    const int way = positionMm > lastPositionMm_ ? 1 : positionMm < lastPositionMm_ ? -1 : 0;
+    lastPositionMm_ = positionMm;
+    if (way != 0) lastWay_ = way;
     if (law_ == DcLaw::Seed) {
         // Seed 004: error_act_x = fabs(arr_sp1[contador] - 0.314 pulsos_x) (rad);
         // salida_x = (0.198 error_act_x - 0.179982 error_ant_x) x 100, limited to min..max
@@ -77,14 +78,34 @@ double DcAxisLoop::update(double setpointMm, double velocityMmS, double accelMmS
         // window (issue 33 item 7: a torque on the axis, met by the integral on the way back)
         // the integral is the load's: it is kept, frozen, and so is its drive, so the load is
         // held where the window is, not let go to push the axis out again.
-        // Until the axis has rested in the window for the in-position time, the integral is
-        // kept too: a load that pushes it straight out again is met by what the integral had.
+        if (restingS_ == 0.0) {
+            // This period's sample is the window's first: the way it came in, and the drive it
+            // came in under (the last written).
+            entryWay_ = lastWay_;
+            entryDrive_ = u_;
+        }
         restingS_ += dtS;
-        ++restingTicks_;
-        if (loadSeen_ || !rested()) return u_ = std::clamp(g.ki * integral_, -clamp_, clamp_);
+        if (loadSeen_) return u_ = std::clamp(g.ki * integral_, -clamp_, clamp_);
+        if (integral_ != 0.0) droppedDrive_ = g.ki * integral_;
         integral_ = 0.0;
         return u_ = 0.0;
     }
+    if (pushedOut_ && phase_ == Phase::Settling) {
+        // Out of the window the way it came in from, its drive at 0 since: reversed, and only a
+        // load reverses an axis with no drive (friction and the back EMF only slow it; an
+        // overshoot leaves ahead). What the dropped integral held against it was the load's:
+        // given back. (Keeping the integral 20 ms in the window for every move, or taking any
+        // exit after 20 ms for a load, made payloads x5 and x8 under the stock gains ring up to
+        // the over-current trip: 7 and 4 more of 84 seeded programs.)
+        // Came in driven the way it went (not braking: a period's braking may reverse it
+        // before the window's first sample, at 20 ms a heavy payload's ring did).
+        if (way != 0 && way == -entryWay_ && entryDrive_ * entryWay_ > 0.0) {
+            loadSeen_ = true;
+            if (droppedDrive_ * eMm > 0.0 && g.ki != 0.0) integral_ = droppedDrive_ / g.ki;
+        }
+    }
+    pushedOut_ = false;
+    if (phase_ == Phase::Tracking) droppedDrive_ = 0.0;
     // Friction opposes the motion the loop asks for: the profile's while it moves. Once the
     // profile has ended (Settling: its velocity is 0, the axis outside the window) it is the
     // error's, so the feedback still sees the frictionless plant and closes the last counts at

@@ -53,14 +53,17 @@ class DcAxisLoop {
                      ///< it to jump the axis a count past its target (a limit cycle), and what
                      ///< it gathered on the approach does not push the next correction (a
                      ///< knock, the next move) the way the axis last came. Once something
-                     ///< pushed the axis out of the window while it rested there (a load,
-                     ///< loadSeen()) the integral is the load's: it is kept, frozen, and drives
-                     ///< on, so the load is held
+                     ///< pushed the axis out of the window while it rested there, or at once
+                     ///< the way the dropped integral pushed against (a load, loadSeen()),
+                     ///< the integral is the load's: it is kept, frozen, and drives on, so the
+                     ///< load is held
     };
     void setPhase(Phase p);
     /// The axis was pushed out of its window while it rested there (a load; until reset()):
     /// InPosition then keeps the integral's drive, however small, to hold it.
     bool loadSeen() const { return loadSeen_; }
+    /// In the window, holding a load with the integral's frozen drive (output()).
+    bool holdingLoad() const { return loadSeen_ && phase_ == Phase::InPosition; }
     DcLaw law() const { return law_; }
     double output() const { return u_; }
 
@@ -75,11 +78,15 @@ class DcAxisLoop {
     double integral_ = 0.0;   ///< engineered: integral of e, mm.s
     double u_ = 0.0;
     Phase phase_ = Phase::Tracking;
-    /// The axis has rested in its window for the in-position time (kRestingS).
-    bool rested() const;
-    bool loadSeen_ = false;  ///< see loadSeen()
-    double restingS_ = 0.0;  ///< s in Phase::InPosition without a break
-    int restingTicks_ = 0;   ///< periods in Phase::InPosition without a break
+    bool loadSeen_ = false;        ///< see loadSeen()
+    double restingS_ = 0.0;        ///< s in Phase::InPosition without a break
+    double lastPositionMm_ = 0.0;  ///< the last update's measured position
+    int lastWay_ = 0;              ///< +1 / -1: the way the measured position last changed
+    int entryWay_ = 0;             ///< lastWay_ when the axis entered its window
+    double entryDrive_ = 0.0;      ///< the drive, %, it entered the window under
+    /// The integral's drive, %, dropped at the last entry into the window (0 from a new move).
+    double droppedDrive_ = 0.0;
+    bool pushedOut_ = false;  ///< setPhase() moved InPosition -> Settling this period
 };
 
 }  // namespace trilho

@@ -227,7 +227,11 @@ bool DcTableMotion::checkEncoder(std::size_t k, std::int64_t counted, double dtS
     if (phase_ == Phase::Moving) loadSizingS_[k] = 0.0;
     const bool sizing = loadSizingS_[k] > 0.0;
     loadSizingS_[k] = std::max(0.0, loadSizingS_[k] - dtS);
-    const double hold = sizing ? u : loadHoldPercent_[k];
+    // The loop holding a load in the window with its integral's frozen drive: the axis came
+    // to rest under it, and it does not change; it runs no model (an encoder that dies then
+    // changes nothing while the load stays; docs/limits.md says what it cannot see).
+    const bool held = loops_[k].holdingLoad() && u == loops_[k].output();
+    const double hold = sizing || held ? u : loadHoldPercent_[k];
     const double push = hold != 0.0 && u * hold > 0.0 ? std::abs(u) - std::abs(hold) : std::abs(u);
     const double over = std::max(0.0, push - kStallDeadBandFriction * a.coulombPercent);
     const double target = over > 0.0 ? std::copysign(over * a.noLoadSpeedMmS / 100.0, u) : 0.0;
