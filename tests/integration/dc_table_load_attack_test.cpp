@@ -106,8 +106,8 @@ TEST(DcTableLoadAttack, ALoadGoneAtTheStartOfAMoveDoesNotBlindTheDeadEncoderChec
                 worst);
 }
 
-// Found by attack on bf79620, fixed (the resting time in seconds, and two periods before a push out
-// reads as a load): at a 20 ms period (dcTable.samplePeriodS may be 1-50 ms) the in-position time
+// Found by attack on bf79620, fixed (the integral dropped at once in the window unless a load
+// was seen, on physical evidence only): at a 20 ms period (dcTable.samplePeriodS may be 1-50 ms) the in-position time
 // is one period, but the integral is kept for four (80 ms); a payload x3 passing through the window
 // for one sample is declared in position (the motion idle, the move done) and, the approach's
 // integral kept, rings on after it: up to 0.67 mm from the target (6 counts) with no move in
