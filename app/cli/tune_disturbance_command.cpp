@@ -73,8 +73,7 @@ int tuneDisturbanceCommand(const QStringList& args) {
     const QCommandLineOption startOpt(
         QStringLiteral("start"), QStringLiteral("Where the platform starts, mm from the centre."),
         QStringLiteral("MM"), QStringLiteral("-1000"));
-    const QCommandLineOption lawOpt(
-        QStringLiteral("law"), lawOptionHelp(), QStringLiteral("LAW"));
+    const QCommandLineOption lawOpt(QStringLiteral("law"), lawOptionHelp(), QStringLiteral("LAW"));
     const GainOptions gainOpts = gainOptions();
     const QCommandLineOption periodOpt(
         QStringLiteral("period"),
@@ -169,9 +168,9 @@ int tuneDisturbanceCommand(const QStringList& args) {
     std::optional<LoopLaw> chosen;
     if (table) spec.tableLaw = spec.profile.dcTable.law;
     if (auto m = readLaw(parser, lawOpt, table, chosen, spec.tableLaw)) return usage(*m);
-    const LoopLaw law = chosen                 ? *chosen
-                        : table                ? tableStepLaw(spec.profile.dcTable.law)
-                                               : spec.profile.loop.law;
+    const LoopLaw law = chosen  ? *chosen
+                        : table ? tableStepLaw(spec.profile.dcTable.law)
+                                : spec.profile.loop.law;
     spec.law = law;
     TuningGains gains = profileGains(spec.profile, spec.axis, law);
     const bool seedLaw = table && law == LoopLaw::Classic;

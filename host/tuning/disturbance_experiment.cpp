@@ -136,9 +136,8 @@ DisturbanceTestResult runTable(const DisturbanceTestSpec& spec, DisturbanceTestR
             return refuse(std::move(r), QStringLiteral("a gain is not a number within 1e6"));
     MachineProfile profile = base;
     profile.dcTable.massFactor *= spec.massFactor;
-    profile.dcTable.law = spec.tableLaw && tableStepLaw(*spec.tableLaw) == r.law
-                              ? *spec.tableLaw
-                              : tableDcLaw(r.law);
+    profile.dcTable.law =
+        spec.tableLaw && tableStepLaw(*spec.tableLaw) == r.law ? *spec.tableLaw : tableDcLaw(r.law);
     DcAxisParams& ax = spec.axis == 'x' ? profile.dcTable.x : profile.dcTable.y;
     if (r.law == LoopLaw::Classic)
         ax.classic = {r.gains.b0, r.gains.b1};

@@ -40,7 +40,7 @@ struct DisturbanceTestSpec {
     /// and must still be at its constant speed when the test ends (refused otherwise).
     double speedFraction = 0.1;
     double startMm = -1000.0;
-    std::optional<LoopLaw> law;        ///< default: the profile's
+    std::optional<LoopLaw> law;  ///< default: the profile's
     /// The DC table: which of its laws (law Classic: seed or seed-signed; default: the
     /// profile's when it is one of them, else seed-signed, as tableDcLaw).
     std::optional<DcLaw> tableLaw;

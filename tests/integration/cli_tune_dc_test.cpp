@@ -128,9 +128,9 @@ TEST(CliTuneDcTable, StepRunsEachOfTheTablesThreeLaws) {
     // 10 - 8.8995 mm short at the last sample, in the JSON and the text.
     EXPECT_NEAR(so[QStringLiteral("final_error_mm")].toDouble(), 10.0 - 8.8995, 1e-4);
     EXPECT_TRUE(so[QStringLiteral("steady_state_error_counts")].isNull());
-    const CliResult seedText =
-        runCli(table("step", "x", {QStringLiteral("--amplitude"), QStringLiteral("10"),
-                                   QStringLiteral("--law"), QStringLiteral("seed")}));
+    const CliResult seedText = runCli(table("step", "x",
+                                            {QStringLiteral("--amplitude"), QStringLiteral("10"),
+                                             QStringLiteral("--law"), QStringLiteral("seed")}));
     EXPECT_TRUE(seedText.out.contains(QLatin1String("final error (last sample)    1.1005 mm")))
         << seedText.out.toStdString();
     // The same gains on the signed error: closer (9.54 mm) but friction holds it outside the

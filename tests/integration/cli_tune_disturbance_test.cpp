@@ -221,11 +221,10 @@ TEST(CliTuneDisturbance, OnTheDcTableATorquePerAxis) {
 TEST(CliTuneDisturbance, Lesson20TheDcTablesTable) {
     auto run = [](const QStringList& more) {
         const CliResult r = runCli(
-            QStringList{QStringLiteral("tune"), QStringLiteral("disturbance"),
-                        QStringLiteral("--machine"), QStringLiteral("xy_dc_table"),
-                        QStringLiteral("--axis"), QStringLiteral("y"),
-                        QStringLiteral("--torque-pct"), QStringLiteral("10"),
-                        QStringLiteral("--json")} +
+            QStringList{
+                QStringLiteral("tune"), QStringLiteral("disturbance"), QStringLiteral("--machine"),
+                QStringLiteral("xy_dc_table"), QStringLiteral("--axis"), QStringLiteral("y"),
+                QStringLiteral("--torque-pct"), QStringLiteral("10"), QStringLiteral("--json")} +
             more);
         return QJsonDocument::fromJson(r.out.toUtf8()).object();
     };

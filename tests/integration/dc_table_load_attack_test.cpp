@@ -1,12 +1,12 @@
-// Attack probes on the DC table under a load (commit bf79620): what the machine does after a
-// knock, at rest on a level table, at short and long periods, with a dead encoder at the start
-// of a move. Virtual time; figures printed.
+// Attacks on the DC table under a load (commit bf79620, each a defect found and fixed): a dead
+// encoder right after a knock, a dead encoder after a held load went, a move reported done at a
+// 20 ms period. Virtual time; figures printed. (The sweeps that found them were probes, removed
+// once these stood: their figures are in the stop's note.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <string>
 
 #include "core/xy/dc_table_motion.h"
@@ -23,6 +23,19 @@ bool inAlarm(XySession& s) {
 
 /// The bound XyTableFaults.AStuckEncoderStopsTheAxisWithin20mmAtEveryFeed states, mm.
 constexpr double kDeadEncoderBoundMm = 20.0;
+
+/// X's encoder dies now: alarm 16 must come, and the axis must come to rest within the bound of
+/// where it was. Returns how far it rested from there, mm (the worst case's figure).
+double deadEncoderRest(XySession& s, SimDcTable& table) {
+    const double atFault = table.positionMm(0);
+    table.setEncoderStuck(0, true);
+    EXPECT_TRUE(s.runUntil([&] { return inAlarm(s); }, 30.0));
+    EXPECT_EQ(s.controller().status().lastAlarm, AlarmCode::EncoderStalled);
+    s.runUntil([] { return false; }, 1.0);  // to rest
+    const double rest = std::abs(table.positionMm(0) - atFault);
+    EXPECT_LT(rest, kDeadEncoderBoundMm);
+    return rest;
+}
 
 // Found by attack on bf79620, fixed (the sized hold only at rest, never kept): a knock at rest (a
 // load of 8 % for the one count it takes, then gone) makes a count the drive could not have made,
@@ -53,14 +66,7 @@ TEST(DcTableLoadAttack, ADeadEncoderAtTheStartOfAMoveRightAfterAKnockIsCaughtWit
                 ASSERT_FALSE(inAlarm(s));
                 c.moveTo({150.0 + 140.0 * dir, 150}, feed);
                 s.runUntil([&] { return inAlarm(s); }, delay);
-                const double atFault = table.positionMm(0);
-                table.setEncoderStuck(0, true);
-                ASSERT_TRUE(s.runUntil([&] { return inAlarm(s); }, 30.0));
-                EXPECT_EQ(c.status().lastAlarm, AlarmCode::EncoderStalled);
-                s.runUntil([] { return false; }, 1.0);  // to rest
-                const double rest = std::abs(table.positionMm(0) - atFault);
-                EXPECT_LT(rest, kDeadEncoderBoundMm);
-                worst = std::max(worst, rest);
+                worst = std::max(worst, deadEncoderRest(s, table));
             }
         }
     }
@@ -92,14 +98,7 @@ TEST(DcTableLoadAttack, ALoadGoneAtTheStartOfAMoveDoesNotBlindTheDeadEncoderChec
             c.moveTo({150.0 - 120.0 * sign, 150}, 0.05);  // the way the holding drive pushes
             s.runUntil([&] { return inAlarm(s); }, 0.3);
             ASSERT_FALSE(inAlarm(s));
-            const double atFault = table.positionMm(0);
-            table.setEncoderStuck(0, true);
-            ASSERT_TRUE(s.runUntil([&] { return inAlarm(s); }, 30.0));
-            EXPECT_EQ(c.status().lastAlarm, AlarmCode::EncoderStalled);
-            s.runUntil([] { return false; }, 1.0);
-            const double rest = std::abs(table.positionMm(0) - atFault);
-            EXPECT_LT(rest, kDeadEncoderBoundMm);
-            worst = std::max(worst, rest);
+            worst = std::max(worst, deadEncoderRest(s, table));
         }
     }
     std::printf("dead encoder after a held load went: at rest at most %.2f mm from the fault\n",
@@ -107,11 +106,11 @@ TEST(DcTableLoadAttack, ALoadGoneAtTheStartOfAMoveDoesNotBlindTheDeadEncoderChec
 }
 
 // Found by attack on bf79620, fixed (the integral dropped at once in the window unless a load
-// was seen, on physical evidence only): at a 20 ms period (dcTable.samplePeriodS may be 1-50 ms) the in-position time
-// is one period, but the integral is kept for four (80 ms); a payload x3 passing through the window
-// for one sample is declared in position (the motion idle, the move done) and, the approach's
-// integral kept, rings on after it: up to 0.67 mm from the target (6 counts) with no move in
-// progress. Before bf79620 the same moves stayed within 0.15 mm once done.
+// was seen, on physical evidence only): at a 20 ms period (dcTable.samplePeriodS may be 1-50 ms)
+// the in-position time is one period, but the integral is kept for four (80 ms); a payload x3
+// passing through the window for one sample is declared in position (the motion idle, the move
+// done) and, the approach's integral kept, rings on after it: up to 0.67 mm from the target (6
+// counts) with no move in progress. Before bf79620 the same moves stayed within 0.15 mm once done.
 TEST(DcTableLoadAttack, AtA20msPeriodAMoveDoneStaysWithinTwoCountsOfItsTarget) {
     MachineProfile profile = test::tableProfileForMoves();
     profile.dcTable.massFactor = 3.0;
@@ -140,266 +139,6 @@ TEST(DcTableLoadAttack, AtA20msPeriodAMoveDoneStaysWithinTwoCountsOfItsTarget) {
         worst = std::max(worst, off);
     }
     std::printf("20 ms period, x3: at most %.3f mm from the target after done\n", worst);
-}
-
-// PROBE: moves, then idle: does the count change at rest (limit cycle), alarm, end outside window.
-TEST(DcTableLoadAttackProbe, DISABLED_KnockThenMoves) {
-    for (double period : {0.001, 0.002, 0.005, 0.01, 0.02, 0.05}) {
-        for (double mass : {0.1, 0.5, 1.0, 3.0, 8.0, 20.0}) {
-            for (double knock : {0.0, 10.0, -10.0, 25.0}) {
-                MachineProfile profile = test::tableProfileForMoves();
-                profile.dcTable.massFactor = mass;
-                profile.dcTable.samplePeriodS = period;
-                XySessionMake made = makeXySession(profile, 1, {150, 150});
-                XySession& s = *made.session;
-                auto& table = dynamic_cast<SimDcTable&>(s.plant());
-                s.runUntil([] { return false; }, 0.1);
-                if (knock != 0.0) {
-                    table.axis(0).setLoadPercent(knock);
-                    s.runUntil([] { return false; }, 0.05);
-                    table.axis(0).setLoadPercent(0.0);
-                    s.runUntil([&] { return inAlarm(s); }, 2.0);
-                }
-                int alarms = 0, restMoves = 0, outside = 0;
-                double worstOff = 0.0, worstDrive = 0.0;
-                const XyPoint targets[] = {{160, 150},    {150.3, 150}, {100, 120},
-                                           {100.05, 120}, {180, 170},   {179.9, 170.1}};
-                for (XyPoint t : targets) {
-                    if (inAlarm(s)) break;
-                    s.controller().moveTo(t, 0.3);
-                    s.runUntil([&] { return inAlarm(s) || !s.controller().motion().busy(); }, 20.0);
-                    if (inAlarm(s)) {
-                        ++alarms;
-                        break;
-                    }
-                    const std::uint16_t c0 = table.readEncoder(0), c1 = table.readEncoder(1);
-                    double maxDrive = 0.0;
-                    for (int i = 0; i < static_cast<int>(1.0 / period); ++i) {
-                        s.step();
-                        maxDrive = std::max({maxDrive, std::abs(table.axis(0).state().drivePercent),
-                                             std::abs(table.axis(1).state().drivePercent)});
-                    }
-                    worstDrive = std::max(worstDrive, maxDrive);
-                    if (table.readEncoder(0) != c0 || table.readEncoder(1) != c1) ++restMoves;
-                    const double off = std::max(std::abs(table.positionMm(0) - t.x),
-                                                std::abs(table.positionMm(1) - t.y));
-                    worstOff = std::max(worstOff, off);
-                    if (off > 0.106 * 1.5) ++outside;
-                }
-                std::printf(
-                    "T=%5.3f m=%5.1f knock=%5.1f alarm=%d(%d) restcount=%d outside=%d "
-                    "worstOff=%.3f restDrive=%.2f\n",
-                    period, mass, knock, alarms,
-                    static_cast<int>(s.controller().status().lastAlarm), restMoves, outside,
-                    worstOff, worstDrive);
-            }
-        }
-    }
-}
-
-// PROBE: a move at period/mass; once the motion says done, per-tick trace for 0.5 s.
-TEST(DcTableLoadAttackProbe, DISABLED_TraceAfterDone) {
-    const double period = std::getenv("P") ? std::atof(std::getenv("P")) : 0.02;
-    const double mass = std::getenv("M") ? std::atof(std::getenv("M")) : 3.0;
-    const double knock = std::getenv("K") ? std::atof(std::getenv("K")) : 0.0;
-    MachineProfile profile = test::tableProfileForMoves();
-    profile.dcTable.massFactor = mass;
-    profile.dcTable.samplePeriodS = period;
-    XySessionMake made = makeXySession(profile, 1, {150, 150});
-    XySession& s = *made.session;
-    auto& table = dynamic_cast<SimDcTable&>(s.plant());
-    s.runUntil([] { return false; }, 0.1);
-    if (knock != 0.0) {
-        table.axis(0).setLoadPercent(knock);
-        s.runUntil([] { return false; }, 0.05);
-        table.axis(0).setLoadPercent(0.0);
-        s.runUntil([&] { return inAlarm(s); }, 2.0);
-    }
-    const XyPoint targets[] = {{160, 150},    {150.3, 150}, {100, 120},
-                               {100.05, 120}, {180, 170},   {179.9, 170.1}};
-    for (XyPoint t : targets) {
-        s.controller().moveTo(t, 0.3);
-        s.runUntil([&] { return inAlarm(s) || !s.controller().motion().busy(); }, 20.0);
-        std::printf("-- move to (%.2f, %.2f) done at %.3f s alarm %d\n", t.x, t.y, s.elapsedS(),
-                    static_cast<int>(s.controller().status().lastAlarm));
-        for (int i = 0; i < static_cast<int>(0.5 / period); ++i) {
-            s.step();
-            std::printf("%.3f x %.3f (e %.3f) u %.2f | y %.3f (e %.3f) u %.2f busy %d\n",
-                        s.elapsedS(), table.positionMm(0), t.x - table.positionMm(0),
-                        table.axis(0).state().drivePercent, table.positionMm(1),
-                        t.y - table.positionMm(1), table.axis(1).state().drivePercent,
-                        s.controller().motion().busy() ? 1 : 0);
-        }
-    }
-}
-
-// PROBE: something that makes a count the drive could not have made (a knock, or a move's
-// overshoot while settling), then at once a move with the encoder dead from its start (or
-// stuckDelay into it): distance at rest from the fault, time to alarm, alarm.
-TEST(DcTableLoadAttackProbe, DISABLED_DeadEncoderRightAfterAnUnexplainedCount) {
-    double worst = 0.0;
-    for (int pre = 0; pre < 3; ++pre) {  // 0 nothing, 1 knock, 2 a move just before
-        for (double mass : {0.5, 1.0, 3.0}) {
-            for (double feed : {0.01, 0.03, 0.1, 0.3, 1.0}) {
-                for (int dir : {+1, -1}) {
-                    for (double delay : {0.0, 0.1, 0.3}) {
-                        MachineProfile profile = test::tableProfileForMoves();
-                        profile.dcTable.massFactor = mass;
-                        XySessionMake made = makeXySession(profile, 1, {150, 150});
-                        XySession& s = *made.session;
-                        auto& table = dynamic_cast<SimDcTable&>(s.plant());
-                        XyController& c = s.controller();
-                        s.runUntil([] { return false; }, 0.1);
-                        if (pre == 1) {
-                            const std::uint16_t before = table.readEncoder(0);
-                            table.axis(0).setLoadPercent(8.0 * dir);
-                            s.runUntil([&] { return table.readEncoder(0) != before; }, 1.0);
-                            table.axis(0).setLoadPercent(0.0);
-                            s.step();
-                        } else if (pre == 2) {
-                            c.moveTo({150.0 - 20.0 * dir, 150}, 0.5);
-                            s.runUntil([&] { return inAlarm(s) || !c.motion().busy(); }, 10.0);
-                        }
-                        if (inAlarm(s)) {
-                            std::printf("pre-alarm\n");
-                            continue;
-                        }
-                        c.moveTo(
-                            {150.0 + 140.0 * dir * (pre == 2 ? -1 : 1) * (pre == 2 ? -1 : 1), 150},
-                            feed);
-                        s.runUntil([&] { return inAlarm(s); }, delay);
-                        const double atFault = table.positionMm(0);
-                        table.setEncoderStuck(0, true);
-                        const double t0 = s.elapsedS();
-                        s.runUntil([&] { return inAlarm(s); }, 30.0);
-                        const double dt = s.elapsedS() - t0;
-                        s.runUntil([] { return false; }, 1.0);
-                        const double rest = std::abs(table.positionMm(0) - atFault);
-                        worst = std::max(worst, rest);
-                        std::printf(
-                            "pre %d mass %.1f feed %.2f dir %+d delay %.1f: alarm %d after %.3f s, "
-                            "at rest %.2f mm from the fault%s\n",
-                            pre, mass, feed, dir, delay, static_cast<int>(c.status().lastAlarm), dt,
-                            rest, rest > 20.0 ? "  <<<" : "");
-                    }
-                }
-            }
-        }
-    }
-    std::printf("worst %.2f mm\n", worst);
-}
-
-// PROBE: a held load, then a move; the load removed at the move's start (or kept); the encoder
-// dead 0.3 s into the move. Also the seed-signed law with loads just above friction, a jam
-// under a load, anti-windup off under a load near the current limit.
-TEST(DcTableLoadAttackProbe, DISABLED_StaleHoldAndOthers) {
-    double worst = 0.0;
-    for (double load : {-30.0, -25.0, -10.0, -5.0, 5.0, 10.0, 25.0, 30.0}) {
-        for (int removeAt : {0, 1, 2}) {  // 0 kept, 1 removed at the move's start, 2 at 0.2 s
-            for (int dir : {+1, -1}) {
-                for (double feed : {0.05, 0.3, 1.0}) {
-                    MachineProfile profile = test::tableProfileForMoves();
-                    XySessionMake made = makeXySession(profile, 1, {150, 150});
-                    XySession& s = *made.session;
-                    auto& table = dynamic_cast<SimDcTable&>(s.plant());
-                    XyController& c = s.controller();
-                    s.runUntil([] { return false; }, 0.05);
-                    table.axis(0).setLoadPercent(load);
-                    s.runUntil([&] { return inAlarm(s); }, 2.0);
-                    if (inAlarm(s)) {
-                        std::printf("load %.0f: alarm %d while holding\n", load,
-                                    static_cast<int>(c.status().lastAlarm));
-                        break;
-                    }
-                    if (removeAt == 1) table.axis(0).setLoadPercent(0.0);
-                    c.moveTo({150.0 + 120.0 * dir, 150}, feed);
-                    s.runUntil([&] { return inAlarm(s); }, 0.2);
-                    if (removeAt == 2) table.axis(0).setLoadPercent(0.0);
-                    s.runUntil([&] { return inAlarm(s); }, 0.1);
-                    const double atFault = table.positionMm(0);
-                    table.setEncoderStuck(0, true);
-                    const double t0 = s.elapsedS();
-                    s.runUntil([&] { return inAlarm(s); }, 30.0);
-                    const double dt = s.elapsedS() - t0;
-                    table.axis(0).setLoadPercent(0.0);
-                    s.runUntil([] { return false; }, 1.0);
-                    const double rest = std::abs(table.positionMm(0) - atFault);
-                    worst = std::max(worst, rest);
-                    std::printf(
-                        "held %+.0f remove %d dir %+d F%.0f: alarm %d after %.3f s, %.2f mm%s\n",
-                        load, removeAt, dir, feed * 100, static_cast<int>(c.status().lastAlarm), dt,
-                        rest, rest > 20.0 ? "  <<<" : "");
-                }
-            }
-        }
-    }
-    std::printf("stale hold worst %.2f mm\n", worst);
-    // The seed-signed law, a load just above friction at rest: any alarm within 10 s?
-    for (DcLaw law : {DcLaw::SeedSigned, DcLaw::Seed, DcLaw::Engineered}) {
-        for (double mass : {0.1, 1.0, 3.0, 20.0}) {
-            for (double load : {3.1, 3.5, 4.0, 5.0, 6.0, -6.0, 10.0}) {
-                MachineProfile profile = test::tableProfileForMoves(law);
-                profile.dcTable.massFactor = mass;
-                XySessionMake made = makeXySession(profile, 1, {150, 150});
-                XySession& s = *made.session;
-                auto& table = dynamic_cast<SimDcTable&>(s.plant());
-                s.runUntil([] { return false; }, 0.05);
-                table.axis(1).setLoadPercent(load);
-                s.runUntil([&] { return inAlarm(s); }, 10.0);
-                std::printf(
-                    "law %d mass %.1f load %.1f at rest: alarm %d at %.3f s, y off %.3f mm, drive "
-                    "%.2f\n",
-                    static_cast<int>(law), mass, load,
-                    static_cast<int>(s.controller().status().lastAlarm), s.elapsedS(),
-                    table.positionMm(1) - 150.0, table.axis(1).state().drivePercent);
-            }
-        }
-    }
-    // A jam under a load, at rest and in a move.
-    for (double load : {0.0, 5.0, -5.0, 25.0}) {
-        for (int moving : {0, 1}) {
-            MachineProfile profile = test::tableProfileForMoves();
-            XySessionMake made = makeXySession(profile, 1, {150, 150});
-            XySession& s = *made.session;
-            auto& table = dynamic_cast<SimDcTable&>(s.plant());
-            s.runUntil([] { return false; }, 0.05);
-            table.axis(0).setLoadPercent(load);
-            s.runUntil([&] { return inAlarm(s); }, 1.0);
-            if (moving) {
-                s.controller().moveTo({250, 150}, 0.5);
-                s.runUntil([] { return false; }, 0.3);
-            }
-            table.setJammed(0, true);
-            const double t0 = s.elapsedS();
-            const bool a = s.runUntil([&] { return inAlarm(s); }, 10.0);
-            std::printf("jam load %.0f moving %d: alarm %d (%d) after %.3f s\n", load, moving,
-                        static_cast<int>(s.controller().status().lastAlarm), a, s.elapsedS() - t0);
-        }
-    }
-    // Anti-windup off, loads near the current limit, held then removed.
-    for (double load : {20.0, 28.0, 30.0, 32.0, 34.0, -30.0}) {
-        MachineProfile profile = test::tableProfileForMoves();
-        XySessionMake made = makeXySession(profile, 1, {150, 150});
-        XySession& s = *made.session;
-        auto& table = dynamic_cast<SimDcTable&>(s.plant());
-        dynamic_cast<DcTableMotion&>(s.controller().motion()).setAntiWindup(false);
-        s.runUntil([] { return false; }, 0.05);
-        table.axis(0).setLoadPercent(load);
-        s.runUntil([&] { return inAlarm(s); }, 3.0);
-        const int a1 = static_cast<int>(s.controller().status().lastAlarm);
-        const double off1 = table.positionMm(0) - 150.0;
-        table.axis(0).setLoadPercent(0.0);
-        double peak = 0.0;
-        for (int i = 0; i < 600 && !inAlarm(s); ++i) {
-            s.step();
-            peak = std::max(peak, std::abs(table.positionMm(0) - 150.0));
-        }
-        std::printf(
-            "antiwindup off load %.0f: alarm %d held at %.3f; removed: alarm %d peak %.3f end %.3f "
-            "drive %.2f\n",
-            load, a1, off1, static_cast<int>(s.controller().status().lastAlarm), peak,
-            table.positionMm(0) - 150.0, table.axis(0).state().drivePercent);
-    }
 }
 
 }  // namespace

@@ -817,12 +817,11 @@ class WorkbenchTest : public QObject {
         const DisturbanceTestResult& r = *view->result();
         QVERIFY2(r.ok(), qPrintable(r.abortReason));
         QCOMPARE(r.trace.loadN.back(), 10.0);  // the y axis' torque, in %
-        const QJsonObject o = cli({QStringLiteral("tune"), QStringLiteral("disturbance"),
-                                   QStringLiteral("--machine"), QStringLiteral("xy_dc_table"),
-                                   QStringLiteral("--axis"), QStringLiteral("y"),
-                                   QStringLiteral("--torque-pct"), QStringLiteral("10"),
-                                   QStringLiteral("--ki"), QStringLiteral("0"),
-                                   QStringLiteral("--json")});
+        const QJsonObject o =
+            cli({QStringLiteral("tune"), QStringLiteral("disturbance"), QStringLiteral("--machine"),
+                 QStringLiteral("xy_dc_table"), QStringLiteral("--axis"), QStringLiteral("y"),
+                 QStringLiteral("--torque-pct"), QStringLiteral("10"), QStringLiteral("--ki"),
+                 QStringLiteral("0"), QStringLiteral("--json")});
         QVERIFY2(!o.isEmpty(), "trilho-cli tune disturbance printed no JSON");
         QCOMPARE(o[QStringLiteral("axis")].toString(), QStringLiteral("y"));
         QCOMPARE(r.metrics.peakDeviationMm, o[QStringLiteral("peak_deviation_mm")].toDouble());
@@ -831,7 +830,8 @@ class WorkbenchTest : public QObject {
         QVERIFY(std::isnan(r.metrics.recoveryTimeS));
         const QString text = view->metricsLabel()->text();
         QVERIFY2(text.contains(QStringLiteral("on axis y")), qPrintable(text));
-        QVERIFY2(text.contains(QString::number(r.proportionalDeviationMm, 'f', 3)), qPrintable(text));
+        QVERIFY2(text.contains(QString::number(r.proportionalDeviationMm, 'f', 3)),
+                 qPrintable(text));
         // The profile's Ki: back on its count (0.1 mm on Y).
         w.findChild<QDoubleSpinBox*>(QStringLiteral("ki"))->setValue(40.0);
         view->runButton()->click();

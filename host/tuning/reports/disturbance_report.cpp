@@ -28,8 +28,8 @@ QJsonObject disturbanceReportJson(const DisturbanceReport& r) {
                                ? *r.spec.tableLaw
                                : tableDcLaw(res.law);
     o[QStringLiteral("law")] =
-        table ? QString::fromLatin1(dcLawName(tableLaw).data(),
-                                    static_cast<qsizetype>(dcLawName(tableLaw).size()))
+        table                         ? QString::fromLatin1(dcLawName(tableLaw).data(),
+                                                            static_cast<qsizetype>(dcLawName(tableLaw).size()))
         : res.law == LoopLaw::Classic ? QStringLiteral("classic")
                                       : QStringLiteral("engineered");
     if (table && res.law == LoopLaw::Classic) {  // seed 004's law: its b0, b1 per rad
