@@ -18,6 +18,7 @@
 
 #include "core/tuning/run_record.h"
 #include "tests/support/widget_test_main.h"
+#include "tests/support/workbench_runs.h"
 #include "translations/i18n.h"
 #include "ui/workbench/poles_view.h"
 #include "ui/workbench/workbench_window.h"
@@ -28,15 +29,9 @@ using namespace trilho::ui;
 class WorkbenchDcLawTest : public QObject {
     Q_OBJECT
 
-    static bool waitRun(WorkbenchWindow& w) {
-        QSignalSpy done(&w, &WorkbenchWindow::runFinished);
-        return done.wait(60000);
-    }
+    static bool waitRun(WorkbenchWindow& w) { return test::waitRun(w); }
     static QJsonObject cli(const QStringList& args) {
-        QProcess p;
-        p.start(QStringLiteral(TRILHO_CLI), args);
-        if (!p.waitForFinished(60000)) return {};
-        return QJsonDocument::fromJson(p.readAllStandardOutput()).object();
+        return test::cliJson(QStringLiteral(TRILHO_CLI), args);
     }
     static QJsonObject cliStep(const char* law, const char* period) {
         return cli({QStringLiteral("tune"), QStringLiteral("step"), QStringLiteral("--machine"),

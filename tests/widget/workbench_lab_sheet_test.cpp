@@ -23,6 +23,7 @@
 
 #include "host/labsheet/lab_sheet.h"
 #include "tests/support/widget_test_main.h"
+#include "tests/support/workbench_runs.h"
 #include "translations/i18n.h"
 #include "ui/workbench/poles_view.h"
 #include "ui/workbench/workbench_lab_sheet.h"
@@ -84,10 +85,7 @@ void typeAndSave(QFileDialog* d, const QString& path) {
 class WorkbenchLabSheetTest : public QObject {
     Q_OBJECT
 
-    static bool waitRun(WorkbenchWindow& w) {
-        QSignalSpy done(&w, &WorkbenchWindow::runFinished);
-        return done.wait(60000);
-    }
+    static bool waitRun(WorkbenchWindow& w) { return test::waitRun(w); }
     /// Lesson 1 on the screens: the 1996 law, 100 mm, at 10 ms and at 1 ms.
     static bool lessonOne(WorkbenchWindow& w) {
         w.findChild<QComboBox*>(QStringLiteral("law"))->setCurrentIndex(1);

@@ -15,6 +15,7 @@
 #include <cmath>
 
 #include "tests/support/widget_test_main.h"
+#include "tests/support/workbench_runs.h"
 #include "translations/i18n.h"
 #include "ui/workbench/log_gain_slider.h"
 #include "ui/workbench/poles_view.h"
@@ -28,10 +29,7 @@ using namespace trilho::ui;
 class WorkbenchSlidersTest : public QObject {
     Q_OBJECT
 
-    static bool waitRun(WorkbenchWindow& w) {
-        QSignalSpy done(&w, &WorkbenchWindow::runFinished);
-        return done.wait(60000);
-    }
+    static bool waitRun(WorkbenchWindow& w) { return test::waitRun(w); }
 
   private slots:
     void initTestCase() { installLanguage(QStringLiteral("en")); }

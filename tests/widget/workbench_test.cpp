@@ -30,6 +30,7 @@
 
 #include "core/timeline/events_file.h"
 #include "tests/support/widget_test_main.h"
+#include "tests/support/workbench_runs.h"
 #include "translations/i18n.h"
 #include "ui/background_pool.h"
 #include "ui/workbench/disturbance_view.h"
@@ -47,15 +48,9 @@ using namespace trilho::ui;
 class WorkbenchTest : public QObject {
     Q_OBJECT
 
-    static bool waitRun(WorkbenchWindow& w) {
-        QSignalSpy done(&w, &WorkbenchWindow::runFinished);
-        return done.wait(60000);
-    }
+    static bool waitRun(WorkbenchWindow& w) { return test::waitRun(w); }
     static QJsonObject cli(const QStringList& args) {
-        QProcess p;
-        p.start(QStringLiteral(TRILHO_CLI), args);
-        if (!p.waitForFinished(60000)) return {};
-        return QJsonDocument::fromJson(p.readAllStandardOutput()).object();
+        return test::cliJson(QStringLiteral(TRILHO_CLI), args);
     }
 
   private slots:
